@@ -1,0 +1,252 @@
+//! Diagnostics: what every stage reports, and how it is shown.
+//!
+//! Stages push [`Diagnostic`]s into a [`Diagnostics`] sink and carry on where
+//! recovery makes sense. Rendering (terminal text with carets, or JSON for
+//! editors and build tools) happens once, at the edge, against the
+//! [`SourceMap`].
+
+use codespan_reporting::diagnostic::{Diagnostic as CsDiagnostic, Label};
+use codespan_reporting::term::{self, termcolor::WriteColor};
+use serde::Serialize;
+
+use crate::source::{SourceMap, Span};
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Severity {
+    Error,
+    Warning,
+    /// A bug in umbrac itself (for example naga rejecting IR that umbrac built).
+    Bug,
+}
+
+#[derive(Clone, Debug)]
+pub struct Diagnostic {
+    pub severity: Severity,
+    pub message: String,
+    /// The main location; `None` for errors with no place in the source
+    /// (an unreadable input file, say).
+    pub span: Option<Span>,
+    /// Text under the caret at `span`.
+    pub label: String,
+    /// Further locations with their own text.
+    pub secondary: Vec<(Span, String)>,
+    /// Trailing `= note:` / `= help:` lines.
+    pub notes: Vec<String>,
+}
+
+impl Diagnostic {
+    pub fn error(message: impl Into<String>, span: Span) -> Self {
+        Diagnostic {
+            severity: Severity::Error,
+            message: message.into(),
+            span: Some(span),
+            label: String::new(),
+            secondary: Vec::new(),
+            notes: Vec::new(),
+        }
+    }
+
+    /// An error that has no location in any source file.
+    pub fn error_nowhere(message: impl Into<String>) -> Self {
+        Diagnostic { span: None, ..Diagnostic::error(message, Span::default()) }
+    }
+
+    pub fn bug(message: impl Into<String>, span: Option<Span>) -> Self {
+        Diagnostic { severity: Severity::Bug, span, ..Diagnostic::error(message, Span::default()) }
+    }
+
+    pub fn warning(message: impl Into<String>, span: Span) -> Self {
+        Diagnostic { severity: Severity::Warning, ..Diagnostic::error(message, span) }
+    }
+
+    pub fn with_label(mut self, label: impl Into<String>) -> Self {
+        self.label = label.into();
+        self
+    }
+
+    pub fn with_secondary(mut self, span: Span, label: impl Into<String>) -> Self {
+        self.secondary.push((span, label.into()));
+        self
+    }
+
+    pub fn with_note(mut self, note: impl Into<String>) -> Self {
+        self.notes.push(note.into());
+        self
+    }
+
+    pub fn is_error(&self) -> bool {
+        matches!(self.severity, Severity::Error | Severity::Bug)
+    }
+
+    fn to_codespan(&self, map: &SourceMap) -> CsDiagnostic<usize> {
+        let mut d = match self.severity {
+            Severity::Error => CsDiagnostic::error(),
+            Severity::Warning => CsDiagnostic::warning(),
+            Severity::Bug => CsDiagnostic::bug(),
+        };
+        let msg = match self.severity {
+            Severity::Bug => format!("internal compiler error: {}", self.message),
+            _ => self.message.clone(),
+        };
+        d = d.with_message(msg);
+        let mut labels = Vec::new();
+        if let Some((file, range)) = self.span.and_then(|s| map.locate(s)) {
+            labels.push(Label::primary(file, range).with_message(self.label.clone()));
+        }
+        for (span, text) in &self.secondary {
+            if let Some((file, range)) = map.locate(*span) {
+                labels.push(Label::secondary(file, range).with_message(text.clone()));
+            }
+        }
+        let mut notes = self.notes.clone();
+        if let Some(span) = self.span {
+            for site in map.include_chain(span) {
+                if let Some((file, line, col)) = map.line_col(site) {
+                    notes.push(format!("included from {}:{}:{}", map.file(file).name, line, col));
+                }
+            }
+        }
+        d.with_labels(labels).with_notes(notes)
+    }
+
+    /// Writes the diagnostic as codespan-reporting text (file:line:col, the
+    /// source line and a caret).
+    pub fn emit(&self, map: &SourceMap, out: &mut dyn WriteColor) {
+        let config = term::Config::default();
+        // Rendering can only fail on an I/O error of `out` itself.
+        let _ = term::emit_to_write_style(out, &config, map, &self.to_codespan(map));
+    }
+
+    /// The diagnostic rendered to plain text (no colour).
+    pub fn render(&self, map: &SourceMap) -> String {
+        let mut buf = term::termcolor::NoColor::new(Vec::new());
+        self.emit(map, &mut buf);
+        String::from_utf8_lossy(&buf.into_inner()).into_owned()
+    }
+
+    /// The machine-readable form used by `--message-format json`.
+    pub fn to_json(&self, map: &SourceMap) -> JsonDiagnostic {
+        let loc = |span: Span| {
+            map.locate(span).and_then(|(file, range)| {
+                let (_, line, column) = map.line_col(span)?;
+                let (_, end_line, end_column) = map.line_col(Span::new(span.end, span.end))?;
+                Some(JsonLocation {
+                    file: map.file(file).name.clone(),
+                    line,
+                    column,
+                    end_line,
+                    end_column,
+                    byte_start: range.start,
+                    byte_end: range.end,
+                })
+            })
+        };
+        JsonDiagnostic {
+            severity: self.severity,
+            message: self.message.clone(),
+            location: self.span.and_then(loc),
+            label: self.label.clone(),
+            related: self
+                .secondary
+                .iter()
+                .filter_map(|(s, m)| loc(*s).map(|l| JsonRelated { location: l, message: m.clone() }))
+                .collect(),
+            notes: self.notes.clone(),
+            include_chain: self.span.map(|s| map.include_chain(s).into_iter().filter_map(loc).collect()).unwrap_or_default(),
+            rendered: self.render(map),
+        }
+    }
+}
+
+#[derive(Debug, Serialize)]
+pub struct JsonLocation {
+    pub file: String,
+    pub line: usize,
+    pub column: usize,
+    pub end_line: usize,
+    pub end_column: usize,
+    pub byte_start: usize,
+    pub byte_end: usize,
+}
+
+#[derive(Debug, Serialize)]
+pub struct JsonRelated {
+    pub location: JsonLocation,
+    pub message: String,
+}
+
+#[derive(Debug, Serialize)]
+pub struct JsonDiagnostic {
+    pub severity: Severity,
+    pub message: String,
+    pub location: Option<JsonLocation>,
+    pub label: String,
+    pub related: Vec<JsonRelated>,
+    pub notes: Vec<String>,
+    pub include_chain: Vec<JsonLocation>,
+    pub rendered: String,
+}
+
+/// Where stages put their diagnostics. Caps the number of errors kept so a
+/// pathological input cannot flood the output.
+#[derive(Debug, Default)]
+pub struct Diagnostics {
+    list: Vec<Diagnostic>,
+    suppressed: usize,
+}
+
+impl Diagnostics {
+    pub const MAX_ERRORS: usize = 50;
+
+    pub fn new() -> Self {
+        Self::default()
+    }
+
+    pub fn push(&mut self, d: Diagnostic) {
+        if d.is_error() && self.error_count() >= Self::MAX_ERRORS {
+            self.suppressed += 1;
+        } else {
+            self.list.push(d);
+        }
+    }
+
+    pub fn extend(&mut self, ds: impl IntoIterator<Item = Diagnostic>) {
+        for d in ds {
+            self.push(d);
+        }
+    }
+
+    pub fn error_count(&self) -> usize {
+        self.list.iter().filter(|d| d.is_error()).count()
+    }
+
+    pub fn has_errors(&self) -> bool {
+        self.list.iter().any(|d| d.is_error())
+    }
+
+    /// Errors dropped past [`Self::MAX_ERRORS`].
+    pub fn suppressed(&self) -> usize {
+        self.suppressed
+    }
+
+    pub fn iter(&self) -> impl Iterator<Item = &Diagnostic> {
+        self.list.iter()
+    }
+
+    pub fn into_vec(self) -> Vec<Diagnostic> {
+        self.list
+    }
+}
+
+/// The closest candidate to a misspelt name, for "did you mean" help.
+pub fn suggest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
+    let mut best: Option<(&str, f64)> = None;
+    for c in candidates {
+        let score = strsim::jaro_winkler(name, c);
+        if score > 0.8 && best.is_none_or(|(_, s)| score > s) {
+            best = Some((c, score));
+        }
+    }
+    best.map(|(c, _)| c)
+}

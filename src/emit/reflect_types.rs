@@ -1,0 +1,129 @@
+//! The reflection manifest: everything a host needs to bind a compiled
+//! shader file on every target. Serialised as `STEM.reflect.json`.
+//!
+//! Binding model (the same for every target, see docs/targets.md):
+//! - every `@uniform` value that is not a sampler is one uniform block: a
+//!   struct-typed uniform is a block with the struct's fields as members, a
+//!   loose value (`var @uniform u_model : float4x4`) is a block with that one
+//!   member;
+//! - every sampler is a texture plus (on WGSL/SPIR-V) a separate sampler
+//!   binding; on GL it is one `sampler*` uniform on a texture unit.
+
+use serde::{Deserialize, Serialize};
+
+/// Bumped when the JSON shape changes incompatibly.
+pub const REFLECTION_FORMAT: u32 = 1;
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Reflection {
+    pub format: u32,
+    /// The input file's name as given to the compiler.
+    pub source: String,
+    /// `"portable"` (WGSL/SPIR-V adapted to GL conventions: the host flips
+    /// the final image and uses clockwise front faces) or `"native"`.
+    pub conventions: String,
+    pub entry_points: Vec<EntryPoint>,
+    pub uniform_blocks: Vec<UniformBlock>,
+    pub samplers: Vec<Sampler>,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct EntryPoint {
+    /// Entry point name (the `def` name, or `[vertex_program(name = "...")]`).
+    pub name: String,
+    /// `"vertex"` or `"fragment"`.
+    pub stage: String,
+    /// Output file names per target, e.g. `{"glsl330": "main_vs.330.vert"}`.
+    pub files: std::collections::BTreeMap<String, String>,
+    /// Vertex attributes (vertex stage) or varyings read (fragment stage),
+    /// sorted by location.
+    pub inputs: Vec<Io>,
+    /// Varyings written (vertex stage) or colour outputs (fragment stage).
+    pub outputs: Vec<Io>,
+    /// Builtins read or written, by their DSL names (`gl_Position`, ...).
+    pub builtins: Vec<String>,
+    /// Names of the uniform blocks (`UniformBlock::name`) this stage uses.
+    pub uniform_blocks: Vec<String>,
+    /// Names of the samplers (`Sampler::name`) this stage uses.
+    pub samplers: Vec<String>,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Io {
+    /// The DSL global's name.
+    pub name: String,
+    pub location: u32,
+    /// DSL type, e.g. `float3`.
+    #[serde(rename = "type")]
+    pub ty: String,
+    /// wgpu vertex format name for vertex attributes, e.g. `Float32x3`.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub vertex_format: Option<String>,
+    /// Byte size of one element of this type in a tightly packed vertex buffer.
+    pub size: u32,
+    /// `"perspective"` or `"flat"` for varyings.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub interpolation: Option<String>,
+    /// The identifier the GLSL output uses for it (both GLSL profiles).
+    pub glsl_name: String,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct UniformBlock {
+    /// The DSL global's name.
+    pub name: String,
+    /// DSL type of the global.
+    #[serde(rename = "type")]
+    pub ty: String,
+    /// Block size in bytes (std140 on GL, the identical WGSL uniform layout
+    /// on WGSL/SPIR-V), rounded up to 16.
+    pub size: u32,
+    pub group: u32,
+    pub binding: u32,
+    /// The uniform block's name in GLSL (bind with glGetUniformBlockIndex +
+    /// glUniformBlockBinding); the same in every stage.
+    pub glsl_block: String,
+    /// Members with byte offsets. A loose value is one member at offset 0.
+    pub members: Vec<Member>,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Member {
+    pub name: String,
+    #[serde(rename = "type")]
+    pub ty: String,
+    pub offset: u32,
+    pub size: u32,
+    /// Stride between elements for arrays.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub array_stride: Option<u32>,
+    /// Stride between columns for matrices.
+    #[serde(skip_serializing_if = "Option::is_none", default)]
+    pub matrix_stride: Option<u32>,
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Sampler {
+    /// The DSL global's name; also its `uniform sampler*` name in GLSL.
+    pub name: String,
+    /// DSL type, e.g. `sampler2DShadow`.
+    #[serde(rename = "type")]
+    pub ty: String,
+    /// The identifier the GLSL output uses (set its texture unit with
+    /// glUniform1i on this name).
+    pub glsl_name: String,
+    /// GL texture unit: `@stage = N`, or assigned in declaration order.
+    pub texture_unit: u32,
+    pub group: u32,
+    /// WGSL/SPIR-V binding of the texture.
+    pub texture_binding: u32,
+    /// WGSL/SPIR-V binding of the sampler (a comparison sampler for shadow
+    /// samplers).
+    pub sampler_binding: u32,
+    /// `"2d"`, `"2d-array"`, `"3d"`, `"cube"`.
+    pub dimension: String,
+    /// `"float"`, `"depth"`, `"sint"`, `"uint"`.
+    pub sample_type: String,
+    /// Whether the sampler must be a comparison sampler.
+    pub comparison: bool,
+}

@@ -1,0 +1,1 @@
+//! Writing outputs to disk atomically.

@@ -1,0 +1,249 @@
+//! The syntax tree the parser hands to semantic analysis.
+//!
+//! It holds only what the shaders need: every shader global (`var` with
+//! `@uniform`, `@in`, `@out` or `@inout`), the functions annotated
+//! `[vertex_program]` / `[fragment_program]`, and the functions, `let`
+//! constants and structs they reach. Host code is skipped by the parser and
+//! never appears here. Every node carries a [`Span`].
+
+use crate::source::Span;
+
+#[derive(Clone, Debug, PartialEq)]
+pub struct Ident {
+    pub name: String,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, Default)]
+pub struct Program {
+    /// Items in source order.
+    pub items: Vec<Item>,
+}
+
+#[derive(Clone, Debug)]
+pub enum Item {
+    Global(GlobalVar),
+    Const(ConstDecl),
+    Function(FunctionDecl),
+    Struct(StructDecl),
+}
+
+/// `[name]` or `[name(key = value, flag, ...)]` before a `def` or `struct`.
+#[derive(Clone, Debug)]
+pub struct Annotation {
+    pub name: Ident,
+    pub args: Vec<AnnotationArg>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug)]
+pub struct AnnotationArg {
+    pub name: Ident,
+    /// `None` for a bare flag.
+    pub value: Option<Expr>,
+}
+
+/// `var @uniform @location = 1 name : type [= init]` at top level.
+#[derive(Clone, Debug)]
+pub struct GlobalVar {
+    pub qualifiers: Vec<Qualifier>,
+    pub name: Ident,
+    pub ty: TypeExpr,
+    pub init: Option<Expr>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug)]
+pub struct Qualifier {
+    pub kind: QualifierKind,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug, PartialEq)]
+pub enum QualifierKind {
+    Uniform,
+    In,
+    Out,
+    InOut,
+    /// `@location = N`, or bare `@location` (`None`: the compiler assigns it).
+    Location(Option<i64>),
+    /// `@stage = N`: the texture unit of a sampler.
+    Stage(i64),
+    /// Any other `@name [= value]`; semantic analysis reports it.
+    Other(String),
+}
+
+/// `let NAME [: type] = value` at top level.
+#[derive(Clone, Debug)]
+pub struct ConstDecl {
+    pub name: Ident,
+    pub ty: Option<TypeExpr>,
+    pub value: Expr,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug)]
+pub struct FunctionDecl {
+    pub annotations: Vec<Annotation>,
+    pub name: Ident,
+    pub params: Vec<Param>,
+    /// `None` for `def f { ... }` / `def f(...) { ... }` with no `: type`.
+    pub ret: Option<TypeExpr>,
+    pub body: Block,
+    pub span: Span,
+}
+
+/// One parameter. `def f(a, b : float3; uv : float2)` gives three params.
+#[derive(Clone, Debug)]
+pub struct Param {
+    pub name: Ident,
+    pub ty: TypeExpr,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug)]
+pub struct StructDecl {
+    pub annotations: Vec<Annotation>,
+    pub name: Ident,
+    pub fields: Vec<Field>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug)]
+pub struct Field {
+    pub name: Ident,
+    pub ty: TypeExpr,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug)]
+pub struct TypeExpr {
+    pub kind: TypeExprKind,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug)]
+pub enum TypeExprKind {
+    /// `float3`, `sampler2DShadow`, `MyStruct`, ...
+    Named(Ident),
+    /// `T[N]`.
+    Array(Box<TypeExpr>, Box<Expr>),
+}
+
+#[derive(Clone, Debug)]
+pub struct Block {
+    pub stmts: Vec<Stmt>,
+    pub span: Span,
+}
+
+#[derive(Clone, Debug)]
+pub struct Stmt {
+    pub kind: StmtKind,
+    pub span: Span,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AssignOp {
+    Set,
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Mod,
+    BitAnd,
+    BitOr,
+    BitXor,
+    Shl,
+    Shr,
+}
+
+#[derive(Clone, Debug)]
+pub enum StmtKind {
+    /// `let` (immutable) or `var` (mutable); several names share the type
+    /// and initialiser (`var a, b : int`).
+    Local { mutable: bool, names: Vec<Ident>, ty: Option<TypeExpr>, init: Option<Expr> },
+    Assign { target: Expr, op: AssignOp, value: Expr },
+    /// An expression statement: a call, `i++`, `--j`.
+    Expr(Expr),
+    If { cond: Expr, then: Block, elifs: Vec<(Expr, Block)>, otherwise: Option<Block> },
+    While { cond: Expr, body: Block },
+    /// `for (var in iter) body`; `iter` is an expression such as `range(a, b)`.
+    For { var: Ident, iter: Expr, body: Block },
+    Return(Option<Expr>),
+    Break,
+    Continue,
+    Block(Block),
+}
+
+#[derive(Clone, Debug)]
+pub struct Expr {
+    pub kind: ExprKind,
+    pub span: Span,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum UnaryOp {
+    Neg,
+    Plus,
+    Not,
+    BitNot,
+    PreInc,
+    PreDec,
+    PostInc,
+    PostDec,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum BinaryOp {
+    Add,
+    Sub,
+    Mul,
+    Div,
+    Mod,
+    Eq,
+    Ne,
+    Lt,
+    Le,
+    Gt,
+    Ge,
+    And,
+    Or,
+    /// `^^`, logical exclusive or.
+    Xor,
+    BitAnd,
+    BitOr,
+    BitXor,
+    Shl,
+    Shr,
+}
+
+/// Suffix of an integer literal.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum IntSuffix {
+    /// No suffix: `int`.
+    None,
+    /// `u` / `U`: `uint`.
+    Unsigned,
+}
+
+#[derive(Clone, Debug)]
+pub enum ExprKind {
+    Int(u64, IntSuffix),
+    Float(f64),
+    Bool(bool),
+    Name(Ident),
+    Unary(UnaryOp, Box<Expr>),
+    Binary(BinaryOp, Box<Expr>, Box<Expr>),
+    /// `cond ? a : b`
+    Ternary(Box<Expr>, Box<Expr>, Box<Expr>),
+    /// `name(args)`: functions, builtins, constructors (`float3(...)`,
+    /// `MyStruct(...)`), casts (`float(i)`).
+    Call { callee: Ident, args: Vec<Expr> },
+    /// `base.name`: struct fields and swizzles.
+    Field(Box<Expr>, Ident),
+    Index(Box<Expr>, Box<Expr>),
+    /// `[a, b, c]` (no element type) or `fixed_array<T>(a, b, c)`.
+    Array { elem: Option<TypeExpr>, items: Vec<Expr> },
+    /// `(e)`: kept so diagnostics can point at the whole parenthesised text.
+    Paren(Box<Expr>),
+}
