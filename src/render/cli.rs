@@ -45,8 +45,9 @@ pub enum ViewArg {
 #[command(about = "Render the shadow scene from a shader program with wgpu (headless)")]
 pub struct RenderArgs {
     /// The scene program: a .das file compiled in process (default
-    /// shaders/shadow.das), or a .wgsl file with the scene's binding model
-    /// (see --reflection).
+    /// shaders/shadow.das), or a ready .wgsl / .spv file with the scene's
+    /// binding model (see --reflection; a .spv file always goes to the
+    /// driver unchanged, as with --via spirv).
     pub file: Option<PathBuf>,
     /// Output PNG for a single frame.
     #[arg(long, short, default_value = "frame.png")]
@@ -78,7 +79,7 @@ pub struct RenderArgs {
     /// What to write.
     #[arg(long, value_enum, default_value_t)]
     pub view: ViewArg,
-    /// Reflection JSON for a .wgsl FILE (default: the hand port's binding model).
+    /// Reflection JSON for a .wgsl or .spv FILE (default: the hand port's binding model).
     #[arg(long, value_name = "JSON")]
     pub reflection: Option<PathBuf>,
     /// Write the CPU ray-cast reference instead of rendering on the GPU.
@@ -128,11 +129,17 @@ fn view(args: &RenderArgs) -> View {
 
 /// Loads the program named on the command line.
 pub fn load_program(file: Option<&Path>, reflection: Option<&Path>, via: Via) -> Result<ShaderSet, String> {
-    if let Some(path) = file.filter(|p| p.extension().is_some_and(|e| e == "wgsl")) {
-        if via != Via::Wgsl {
-            return Err(format!("{} is WGSL; --via spirv needs a .das program", path.display()));
-        }
-        let text = std::fs::read_to_string(path).map_err(|e| format!("reading {}: {e}", path.display()))?;
+    let ext = file.and_then(|p| p.extension()).and_then(|e| e.to_str());
+    if let (Some(path), Some(ext @ ("wgsl" | "spv"))) = (file, ext) {
+        let code = if ext == "wgsl" {
+            if via != Via::Wgsl {
+                return Err(format!("{} is WGSL; --via spirv needs a .das or .spv program", path.display()));
+            }
+            ShaderCode::Wgsl(std::fs::read_to_string(path).map_err(|e| format!("reading {}: {e}", path.display()))?)
+        } else {
+            let bytes = std::fs::read(path).map_err(|e| format!("reading {}: {e}", path.display()))?;
+            ShaderCode::spirv_from_bytes(&bytes).map_err(|e| format!("{}: {e}", path.display()))?
+        };
         let refl = match reflection {
             Some(r) => {
                 let json = std::fs::read_to_string(r).map_err(|e| format!("reading {}: {e}", r.display()))?;
@@ -140,7 +147,7 @@ pub fn load_program(file: Option<&Path>, reflection: Option<&Path>, via: Via) ->
             }
             None => hand::reflection(),
         };
-        return Ok(ShaderSet::single(path.display().to_string(), ShaderCode::Wgsl(text), refl));
+        return Ok(ShaderSet::single(path.display().to_string(), code, refl));
     }
     let opts = crate::Options { targets: vec![via.target()], ..Default::default() };
     let compilation = match file {
