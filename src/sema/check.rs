@@ -83,8 +83,10 @@ fn entry_name(f: &ast::FunctionDecl) -> String {
     for a in &f.annotations {
         for arg in &a.args {
             if arg.name.name == "name" {
-                if let Some(ast::Expr { kind: ast::ExprKind::Name(id), .. }) = &arg.value {
-                    return id.name.clone();
+                match &arg.value {
+                    Some(ast::Expr { kind: ast::ExprKind::Str(s), .. }) => return s.clone(),
+                    Some(ast::Expr { kind: ast::ExprKind::Name(id), .. }) => return id.name.clone(),
+                    _ => {}
                 }
             }
         }
@@ -981,6 +983,10 @@ impl<'a, 'd> Checker<'a, 'd> {
                 }
             }
             ast::ExprKind::Bool(b) => mk(ExprKind::Bool(*b), BOOL),
+            ast::ExprKind::Str(_) => {
+                self.diags.push(Diagnostic::error("strings are not shader values", span));
+                err_expr(span)
+            }
             ast::ExprKind::Paren(inner) => {
                 let mut x = self.check_expr(cx, inner);
                 x.span = span;

@@ -123,6 +123,7 @@ fn eval(e: &Expr, env: &dyn ConstEnv, depth: usize) -> Result<(ConstValue, Ty), 
             Ok((ConstValue::Composite(vals.into_iter().map(|v| v.0).collect()), Ty::Array(Box::new(first), n)))
         }
         ExprKind::Field(..) | ExprKind::Index(..) => Err(not_const(e, "field or element access")),
+        ExprKind::Str(_) => Err(Diagnostic::error("strings are not shader values", e.span)),
     }
 }
 
