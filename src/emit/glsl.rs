@@ -159,15 +159,26 @@ pub fn write_entry(lowered: &Lowered, ep: &EntryInterface, profile: Profile) -> 
         names.samplers.insert(mapping.texture.index(), name.clone());
     }
 
+    // Attributes, varyings and colour outputs are named by location
+    // (`_p2vs_location0`, `_vs2fs_location1`, `_fs2p_location0`): naga
+    // reports only those it wrote without `layout(location)`, so the names
+    // are formed here and checked against the text.
     let (in_prefix, out_prefix) = match ep.stage {
         naga::ShaderStage::Vertex => ("_p2vs_location", "_vs2fs_location"),
         _ => ("_vs2fs_location", "_fs2p_location"),
     };
-    for (name, loc) in &info.varying {
-        if name.starts_with(in_prefix) {
-            names.inputs.insert(loc.location, name.clone());
-        } else if name.starts_with(out_prefix) {
-            names.outputs.insert(loc.location, name.clone());
+    for (vars, prefix, map) in [(&ep.inputs, in_prefix, &mut names.inputs), (&ep.outputs, out_prefix, &mut names.outputs)] {
+        for var in vars {
+            let name = format!("{prefix}{}", var.location);
+            if !text::contains_ident(&out, &name) {
+                return Err(bug(format!("`{}` (location {}) is not declared as `{name}`", var.name, var.location)));
+            }
+            if let Some(loc) = info.varying.get(&name) {
+                if loc.location != var.location {
+                    return Err(bug(format!("`{name}` has location {}, expected {}", loc.location, var.location)));
+                }
+            }
+            map.insert(var.location, name);
         }
     }
 

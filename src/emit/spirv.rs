@@ -1,6 +1,6 @@
 //! SPIR-V: one module per input file (every entry point), from `Lowered::gpu`.
 
-use naga::back::spv::{Options, WriterFlags};
+use naga::back::spv::{BindingInfo, Options, WriterFlags};
 use naga::proc::{BoundsCheckPolicies, BoundsCheckPolicy};
 
 use super::guard;
@@ -12,9 +12,10 @@ use crate::lower::Lowered;
 /// - No `ADJUST_COORDINATE_SPACE` (naga's default): the lowering has already
 ///   adapted clip space for Vulkan in portable conventions, and in native
 ///   conventions the author wants the code as written.
-/// - `fake_missing_bindings: false`: every resource of `gpu` has a binding;
-///   one without is a lowering bug and must fail here, not become a
-///   made-up binding in the output.
+/// - `fake_missing_bindings: false` with an explicit identity binding map
+///   (group -> descriptor set, binding -> binding) of the resources that
+///   have bindings: a resource without one is a lowering bug and must fail
+///   here, not silently take whatever naga would make up.
 /// - `DEBUG` names (OpName) keep the source names of globals, functions and
 ///   struct members for tools and drivers' messages. `LABEL_VARYINGS` is left
 ///   off: some drivers treat those names as semantic.
@@ -24,8 +25,15 @@ use crate::lower::Lowered;
 ///   in Vulkan without robustness features, and these are the cheapest
 ///   policies that make every target read the same defined value.
 /// - SPIR-V 1.0, so any Vulkan 1.0 driver takes it.
-pub fn options() -> Options<'static> {
+pub fn options(module: &naga::Module) -> Options<'static> {
+    let binding_map = module
+        .global_variables
+        .iter()
+        .filter_map(|(_, g)| g.binding)
+        .map(|rb| (rb, BindingInfo { descriptor_set: rb.group, binding: rb.binding, binding_array_size: None }))
+        .collect();
     Options {
+        binding_map,
         lang_version: (1, 0),
         flags: WriterFlags::DEBUG,
         fake_missing_bindings: false,
@@ -41,7 +49,7 @@ pub fn options() -> Options<'static> {
 }
 
 pub fn write(lowered: &Lowered) -> Result<Vec<u32>, Diagnostic> {
-    let options = options();
+    let options = options(&lowered.gpu);
     guard("the SPIR-V writer", || {
         naga::back::spv::write_vec(&lowered.gpu, &lowered.gpu_info, &options, None).map_err(|e| e.to_string())
     })
