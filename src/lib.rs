@@ -14,6 +14,7 @@
 
 pub mod diag;
 pub mod emit;
+pub mod golden;
 pub mod lower;
 pub mod output;
 pub mod sema;

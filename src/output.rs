@@ -1,1 +1,192 @@
 //! Writing outputs to disk atomically.
+//!
+//! [`write_artifacts`] writes one compilation's files as a unit:
+//! 1. the output directory is created if missing (with its parents, like
+//!    `mkdir -p`; build scripts and `-o build/shaders` expect that);
+//! 2. every destination is checked: an existing path that is not a regular
+//!    file (a directory, say) is an error before anything is written;
+//! 3. each file is written to a temporary file in the destination directory
+//!    and fsynced;
+//! 4. the temporaries are renamed over the destinations. Should a rename
+//!    fail part-way, the files already replaced are restored from their
+//!    previous contents (or removed, if they are new), so a failed write
+//!    leaves the directory as it was.
+//!
+//! Each rename is atomic, so a reader (or a crash) never sees a half-written
+//! file. Temporaries are removed on every error path.
+
+use std::fmt;
+use std::io::Write;
+use std::path::{Path, PathBuf};
+
+use crate::Artifact;
+
+/// Why outputs could not be written. Nothing was changed on disk.
+#[derive(Debug)]
+pub struct OutputError {
+    pub path: PathBuf,
+    pub message: String,
+}
+
+impl fmt::Display for OutputError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "cannot write `{}`: {}", self.path.display(), self.message)
+    }
+}
+
+impl std::error::Error for OutputError {}
+
+fn err(path: &Path, message: impl Into<String>) -> OutputError {
+    OutputError { path: path.to_path_buf(), message: message.into() }
+}
+
+/// Writes every artifact into `dir`, all or nothing (see the module docs).
+pub fn write_artifacts(dir: &Path, artifacts: &[Artifact]) -> Result<(), OutputError> {
+    // Names come from entry point names; refuse anything that is not a
+    // plain file name so nothing is ever written outside `dir`.
+    for a in artifacts {
+        let n = &a.file_name;
+        if n.is_empty() || n == "." || n == ".." || n.contains(['/', '\\', '\0']) {
+            return Err(err(&dir.join(n), "not a plain file name"));
+        }
+    }
+    let mut seen = std::collections::HashSet::new();
+    for a in artifacts {
+        if !seen.insert(&a.file_name) {
+            return Err(err(&dir.join(&a.file_name), "two outputs have this name"));
+        }
+    }
+
+    match std::fs::metadata(dir) {
+        Ok(m) if m.is_dir() => {}
+        Ok(_) => return Err(err(dir, "the output path exists and is not a directory")),
+        Err(_) => std::fs::create_dir_all(dir).map_err(|e| err(dir, format!("cannot create the output directory: {e}")))?,
+    }
+
+    // Previous contents of each destination, for rollback.
+    let mut previous: Vec<Option<Vec<u8>>> = Vec::with_capacity(artifacts.len());
+    for a in artifacts {
+        let dest = dir.join(&a.file_name);
+        match std::fs::symlink_metadata(&dest) {
+            Ok(m) if m.is_file() => previous.push(Some(std::fs::read(&dest).map_err(|e| err(&dest, e.to_string()))?)),
+            Ok(_) => return Err(err(&dest, "exists and is not a regular file")),
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => previous.push(None),
+            Err(e) => return Err(err(&dest, e.to_string())),
+        }
+    }
+
+    // Write and fsync every temporary before touching any destination.
+    // A `NamedTempFile` deletes itself when dropped, so every early return
+    // below cleans up.
+    let mut temps = Vec::with_capacity(artifacts.len());
+    for a in artifacts {
+        let dest = dir.join(&a.file_name);
+        let temp = write_temp(dir, &a.contents).map_err(|e| err(&dest, e.to_string()))?;
+        temps.push(temp);
+    }
+
+    let mut done: Vec<usize> = Vec::new();
+    for (i, temp) in temps.into_iter().enumerate() {
+        let dest = dir.join(&artifacts[i].file_name);
+        if let Err(e) = temp.persist(&dest) {
+            drop(e.file); // removes the temporary
+            rollback(dir, artifacts, &previous, &done);
+            return Err(err(&dest, e.error.to_string()));
+        }
+        done.push(i);
+    }
+    sync_dir(dir);
+    Ok(())
+}
+
+fn write_temp(dir: &Path, contents: &[u8]) -> std::io::Result<tempfile::NamedTempFile> {
+    let mut temp = tempfile::Builder::new().prefix(".umbrac-").suffix(".tmp").tempfile_in(dir)?;
+    temp.write_all(contents)?;
+    // Temporaries are created 0600; outputs are ordinary readable files.
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::PermissionsExt;
+        temp.as_file().set_permissions(std::fs::Permissions::from_mode(0o644))?;
+    }
+    temp.as_file().sync_all()?;
+    Ok(temp)
+}
+
+/// Puts back what the destinations in `done` held before.
+fn rollback(dir: &Path, artifacts: &[Artifact], previous: &[Option<Vec<u8>>], done: &[usize]) {
+    for &i in done {
+        let dest = dir.join(&artifacts[i].file_name);
+        match &previous[i] {
+            Some(old) => {
+                if let Ok(t) = write_temp(dir, old) {
+                    let _ = t.persist(&dest);
+                }
+            }
+            None => {
+                let _ = std::fs::remove_file(&dest);
+            }
+        }
+    }
+    sync_dir(dir);
+}
+
+/// Makes the renames durable (best effort; not every platform can open a
+/// directory).
+fn sync_dir(dir: &Path) {
+    if let Ok(d) = std::fs::File::open(dir) {
+        let _ = d.sync_all();
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn art(name: &str, text: &str) -> Artifact {
+        Artifact { file_name: name.into(), target: None, entry: None, contents: text.as_bytes().to_vec() }
+    }
+
+    fn listing(dir: &Path) -> Vec<String> {
+        let mut v: Vec<String> = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+        v.sort();
+        v
+    }
+
+    #[test]
+    fn writes_and_replaces() {
+        let d = tempfile::tempdir().unwrap();
+        write_artifacts(d.path(), &[art("a.wgsl", "one"), art("b.json", "two")]).unwrap();
+        write_artifacts(d.path(), &[art("a.wgsl", "three")]).unwrap();
+        assert_eq!(std::fs::read_to_string(d.path().join("a.wgsl")).unwrap(), "three");
+        assert_eq!(listing(d.path()), ["a.wgsl", "b.json"]);
+    }
+
+    #[test]
+    fn a_directory_in_the_way_changes_nothing() {
+        let d = tempfile::tempdir().unwrap();
+        std::fs::write(d.path().join("a.wgsl"), "old").unwrap();
+        std::fs::create_dir(d.path().join("b.spv")).unwrap();
+        let e = write_artifacts(d.path(), &[art("a.wgsl", "new"), art("b.spv", "x"), art("c.json", "y")]).unwrap_err();
+        assert!(e.to_string().contains("b.spv"), "{e}");
+        assert_eq!(std::fs::read_to_string(d.path().join("a.wgsl")).unwrap(), "old");
+        assert_eq!(listing(d.path()), ["a.wgsl", "b.spv"]);
+    }
+
+    #[test]
+    fn refuses_paths() {
+        let d = tempfile::tempdir().unwrap();
+        assert!(write_artifacts(d.path(), &[art("../x", "")]).is_err());
+        assert!(write_artifacts(d.path(), &[art("a", ""), art("a", "")]).is_err());
+        assert!(listing(d.path()).is_empty());
+    }
+
+    #[test]
+    fn creates_missing_directories_but_not_over_files() {
+        let d = tempfile::tempdir().unwrap();
+        write_artifacts(&d.path().join("x/y"), &[art("a", "1")]).unwrap();
+        assert_eq!(std::fs::read_to_string(d.path().join("x/y/a")).unwrap(), "1");
+        std::fs::write(d.path().join("f"), "").unwrap();
+        let e = write_artifacts(&d.path().join("f"), &[art("a", "1")]).unwrap_err();
+        assert!(e.message.contains("not a directory"), "{e}");
+    }
+}

@@ -1,12 +1,207 @@
 //! Emission: validated naga modules to target text, and the reflection manifest.
+//!
+//! - [`glsl`]: GLSL 330 core and GLSL ES 3.00, one file per entry point, from
+//!   `Lowered::gl`, with stable uniform block names and the ES sampler
+//!   precision preamble.
+//! - [`wgsl`]: one WGSL module from `Lowered::gpu`, keeping the module's
+//!   diagnostic filters (naga's WGSL writer drops them).
+//! - [`spirv`]: one SPIR-V module from `Lowered::gpu`, every entry point.
+//! - [`reflect`]: the JSON manifest (`STEM.reflect.json`), with uniform block
+//!   layouts checked against GLSL's std140 rules.
+//!
+//! Either every requested artifact is produced or none is: any backend
+//! failure is a [`Diagnostic::bug`] naming the target and entry point.
 
+pub mod glsl;
+pub mod reflect;
 pub mod reflect_types;
+pub mod spirv;
+pub mod wgsl;
+
+use std::panic::{catch_unwind, AssertUnwindSafe};
 
 use crate::diag::Diagnostic;
 use crate::lower::Lowered;
 use crate::{Artifact, Reflection, Target};
 
 /// Emits every requested target plus the reflection manifest.
-pub fn emit(_lowered: &Lowered, _stem: &str, _source_name: &str, _targets: &[Target]) -> Result<(Vec<Artifact>, Reflection), Diagnostic> {
-    Err(Diagnostic::bug("emitter not written yet", None))
+///
+/// `stem` names the per-module outputs (`STEM.wgsl`, `STEM.spv`,
+/// `STEM.reflect.json`); `source_name` is recorded in the manifest. An empty
+/// `targets` means all targets.
+pub fn emit(lowered: &Lowered, stem: &str, source_name: &str, targets: &[Target]) -> Result<(Vec<Artifact>, Reflection), Diagnostic> {
+    let mut targets: Vec<Target> = if targets.is_empty() { Target::ALL.to_vec() } else { targets.to_vec() };
+    targets.sort();
+    targets.dedup();
+
+    check_consistency(lowered)?;
+
+    // Layouts first: a uniform that GLSL would lay out differently from
+    // WGSL is a user-facing error, reported before anything is written.
+    let glsl_wanted = targets.iter().any(|t| matches!(t, Target::Glsl330 | Target::Gles300));
+    let layouts = reflect::uniform_layouts(lowered, glsl_wanted)?;
+
+    let mut artifacts = Vec::new();
+
+    // GLSL: the names a GL host needs come from the GLSL writer itself, so
+    // it runs (for GLSL 330) even when no GLSL target is requested.
+    let mut glsl_names: Vec<glsl::EntryNames> = Vec::new();
+    for ep in &lowered.interface.entry_points {
+        let (text, names) = glsl::write_entry(lowered, ep, glsl::Profile::Desktop330)?;
+        if targets.contains(&Target::Glsl330) {
+            artifacts.push(Artifact {
+                file_name: glsl::file_name(&ep.name, ep.stage, glsl::Profile::Desktop330),
+                target: Some(Target::Glsl330),
+                entry: Some(ep.name.clone()),
+                contents: text.into_bytes(),
+            });
+        }
+        if targets.contains(&Target::Gles300) {
+            let (text, es_names) = glsl::write_entry(lowered, ep, glsl::Profile::Es300)?;
+            if es_names != names {
+                return Err(Diagnostic::bug(
+                    format!("GLSL 330 and GLSL ES 3.00 outputs of entry point `{}` disagree on identifier names", ep.name),
+                    None,
+                ));
+            }
+            artifacts.push(Artifact {
+                file_name: glsl::file_name(&ep.name, ep.stage, glsl::Profile::Es300),
+                target: Some(Target::Gles300),
+                entry: Some(ep.name.clone()),
+                contents: text.into_bytes(),
+            });
+        }
+        glsl_names.push(names);
+    }
+
+    if targets.contains(&Target::Wgsl) {
+        let text = wgsl::write(lowered)?;
+        artifacts.push(Artifact { file_name: format!("{stem}.wgsl"), target: Some(Target::Wgsl), entry: None, contents: text.into_bytes() });
+    }
+    if targets.contains(&Target::Spirv) {
+        let words = spirv::write(lowered)?;
+        let contents = words.iter().flat_map(|w| w.to_le_bytes()).collect();
+        artifacts.push(Artifact { file_name: format!("{stem}.spv"), target: Some(Target::Spirv), entry: None, contents });
+    }
+
+    let reflection = reflect::build(lowered, stem, source_name, &targets, &glsl_names, &layouts)?;
+    let mut json = serde_json::to_string_pretty(&reflection)
+        .map_err(|e| Diagnostic::bug(format!("cannot serialise the reflection manifest: {e}"), None))?;
+    json.push('\n');
+    artifacts.push(Artifact { file_name: reflect::file_name(stem), target: None, entry: None, contents: json.into_bytes() });
+
+    Ok((artifacts, reflection))
+}
+
+/// The two modules and the interface must describe the same entry points;
+/// anything else is a lowering bug that would make the outputs disagree.
+fn check_consistency(lowered: &Lowered) -> Result<(), Diagnostic> {
+    let (gl, gpu) = (&lowered.gl, &lowered.gpu);
+    if gl.entry_points.len() != gpu.entry_points.len() || gl.global_variables.len() != gpu.global_variables.len() {
+        return Err(Diagnostic::bug("the GL and GPU modules have different entry points or globals", None));
+    }
+    for ep in &lowered.interface.entry_points {
+        for (which, module) in [("gl", gl), ("gpu", gpu)] {
+            match module.entry_points.get(ep.index) {
+                Some(m) if m.name == ep.name && m.stage == ep.stage => {}
+                _ => {
+                    return Err(Diagnostic::bug(
+                        format!("entry point `{}` (index {}) is missing from the {which} module", ep.name, ep.index),
+                        None,
+                    ))
+                }
+            }
+        }
+        if !matches!(ep.stage, naga::ShaderStage::Vertex | naga::ShaderStage::Fragment) {
+            return Err(Diagnostic::bug(format!("entry point `{}` has unsupported stage {:?}", ep.name, ep.stage), None));
+        }
+    }
+    for r in &lowered.interface.resources {
+        let ok = |h: naga::Handle<naga::GlobalVariable>| gl.global_variables.try_get(h).is_ok() && gpu.global_variables.try_get(h).is_ok();
+        if !ok(r.global) || r.sampler_global.is_some_and(|s| !ok(s)) {
+            return Err(Diagnostic::bug(format!("resource `{}` refers to a global that does not exist", r.name), Some(r.span)));
+        }
+    }
+    Ok(())
+}
+
+/// Runs a naga backend, turning a panic inside it into a bug diagnostic.
+/// naga documents that its writers may panic on IR they do not support;
+/// that must never take the compiler (or a build script) down.
+pub(crate) fn guard<T>(what: &str, f: impl FnOnce() -> Result<T, String>) -> Result<T, Diagnostic> {
+    match catch_unwind(AssertUnwindSafe(f)) {
+        Ok(Ok(v)) => Ok(v),
+        Ok(Err(e)) => Err(Diagnostic::bug(format!("{what} failed: {e}"), None)),
+        Err(payload) => {
+            let msg = payload
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| payload.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "unknown panic".into());
+            Err(Diagnostic::bug(format!("{what} panicked: {msg}"), None))
+        }
+    }
+}
+
+/// Identifier-level text helpers for post-processing generated code.
+pub(crate) mod text {
+    fn is_ident_char(c: u8) -> bool {
+        c.is_ascii_alphanumeric() || c == b'_'
+    }
+
+    /// Every identifier-like token in `s` with its byte range.
+    pub fn idents(s: &str) -> impl Iterator<Item = (usize, usize)> + '_ {
+        let b = s.as_bytes();
+        let mut i = 0;
+        std::iter::from_fn(move || {
+            while i < b.len() {
+                if is_ident_char(b[i]) {
+                    let start = i;
+                    while i < b.len() && is_ident_char(b[i]) {
+                        i += 1;
+                    }
+                    // Numbers (`1.0`, `0u`) are not identifiers.
+                    if !b[start].is_ascii_digit() {
+                        return Some((start, i));
+                    }
+                } else {
+                    i += 1;
+                }
+            }
+            None
+        })
+    }
+
+    pub fn contains_ident(s: &str, name: &str) -> bool {
+        idents(s).any(|(a, b)| &s[a..b] == name)
+    }
+
+    /// Replaces whole identifiers equal to `from` with `to`.
+    pub fn replace_ident(s: &str, from: &str, to: &str) -> String {
+        let mut out = String::with_capacity(s.len() + 16);
+        let mut last = 0;
+        for (a, b) in idents(s) {
+            if &s[a..b] == from {
+                out.push_str(&s[last..a]);
+                out.push_str(to);
+                last = b;
+            }
+        }
+        out.push_str(&s[last..]);
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::text::*;
+
+    #[test]
+    fn whole_identifier_replacement() {
+        let s = "uniform a_block_0Vertex { mat4 a; }; x = a_block_0Vertex1 + a_block_0Vertex; 1.0e_block_0Vertex";
+        let r = replace_ident(s, "a_block_0Vertex", "a_block");
+        assert_eq!(r, "uniform a_block { mat4 a; }; x = a_block_0Vertex1 + a_block; 1.0e_block_0Vertex");
+        assert!(contains_ident(s, "a"));
+        assert!(!contains_ident(s, "mat"));
+    }
 }

@@ -12,7 +12,14 @@
 //! Both modules have the same globals, types and entry points in the same
 //! order, so a handle or index from one is valid in the other.
 
+mod func;
+mod module;
+
+use crate::diag::Diagnostic;
+use crate::sema::{self, BuiltinVar, GlobalKind, Scalar, Ty};
 use crate::source::Span;
+use func::{FnBuilder, FnKind};
+use module::{GlobalSlot, ModuleBuilder};
 
 /// How WGSL/SPIR-V outputs treat clip space and framebuffer orientation.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -180,6 +187,171 @@ pub struct Lowered {
     pub interface: Interface,
 }
 
-pub fn lower(_program: &crate::sema::Program, _conventions: Conventions) -> Result<Lowered, crate::diag::Diagnostic> {
-    Err(crate::diag::Diagnostic::bug("lowering not written yet", None))
+/// Which module is being built.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Flavor {
+    /// For the GLSL backends: no bindings, GL conventions.
+    Gl,
+    /// For WGSL and SPIR-V: bindings, and the clip-space adaptation when
+    /// the conventions are portable.
+    Gpu(Conventions),
+}
+
+/// Lowers a checked program into the two validated modules.
+pub fn lower(program: &crate::sema::Program, conventions: Conventions) -> Result<Lowered, crate::diag::Diagnostic> {
+    let (gl, _) = build(program, Flavor::Gl)?;
+    let gl_info = module::validate(&gl, Flavor::Gl)?;
+    let (gpu, mut interface) = build(program, Flavor::Gpu(conventions))?;
+    let gpu_info = module::validate(&gpu, Flavor::Gpu(conventions))?;
+    interface.conventions = conventions;
+    Ok(Lowered { gl, gl_info, gpu, gpu_info, interface })
+}
+
+fn build(p: &sema::Program, flavor: Flavor) -> Result<(naga::Module, Interface), Diagnostic> {
+    let mut m = ModuleBuilder::new(p, flavor);
+    m.allow_nonuniform_derivatives();
+    m.declare_consts();
+    m.declare_globals();
+    for f in &p.functions {
+        let mut b = FnBuilder::new(&mut m, &f.name, &f.locals, FnKind::Helper);
+        for i in 0..f.params {
+            b.add_param(i);
+        }
+        let mut body = b.block(&f.body);
+        let ret = (f.ret != Ty::Void).then(|| naga::FunctionResult { ty: b.m.ty(&f.ret), binding: None });
+        if ret.is_none() {
+            naga::proc::ensure_block_returns(&mut body);
+        }
+        let func = b.finish(body, ret);
+        let h = m.module.functions.append(func, f.span.into());
+        m.functions.push(h);
+    }
+    let mut entries = Vec::new();
+    for (index, ep) in p.entry_points.iter().enumerate() {
+        entries.push(lower_entry(&mut m, ep, index)?);
+    }
+    let interface = Interface { conventions: Conventions::default(), resources: m.resources.clone(), entry_points: entries };
+    Ok((m.module, interface))
+}
+
+fn interpolation(ty: &Ty) -> (Option<naga::Interpolation>, Option<naga::Sampling>) {
+    match ty.scalar() {
+        Some(Scalar::Float) => (Some(naga::Interpolation::Perspective), Some(naga::Sampling::Center)),
+        _ => (Some(naga::Interpolation::Flat), None),
+    }
+}
+
+fn location(location: u32, interp: (Option<naga::Interpolation>, Option<naga::Sampling>)) -> naga::Binding {
+    naga::Binding::Location { location, interpolation: interp.0, sampling: interp.1, blend_src: None, per_primitive: false }
+}
+
+fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: usize) -> Result<EntryInterface, Diagnostic> {
+    use naga::ShaderStage::{Fragment, Vertex};
+    let p = m.p;
+    let stage = ep.stage;
+    let mut iface = EntryInterface { name: ep.name.clone(), stage, index, inputs: Vec::new(), outputs: Vec::new(), builtins: Vec::new(), resources: Vec::new() };
+    // Arguments: inputs this entry point reaches, by location then builtins.
+    let mut args: Vec<(sema::GlobalId, naga::Binding, naga::Handle<naga::Type>, bool)> = Vec::new();
+    let mut outs: Vec<(Option<naga::Handle<naga::GlobalVariable>>, Option<BuiltinVar>, naga::Handle<naga::Type>, naga::Binding, String)> = Vec::new();
+    if stage == Vertex {
+        let pos_global = p.globals.iter().position(|g| matches!(g.kind, GlobalKind::Builtin(BuiltinVar::Position))).filter(|g| ep.func.uses.contains_key(g));
+        let ty = m.ty(&BuiltinVar::Position.ty());
+        let global = pos_global.map(|g| match m.globals[g] {
+            GlobalSlot::Var(h) => h,
+            GlobalSlot::Sampler { image, .. } => image,
+        });
+        outs.push((global, Some(BuiltinVar::Position), ty, naga::Binding::BuiltIn(naga::BuiltIn::Position { invariant: false }), "gl_Position".into()));
+    }
+    let mut seen_out: std::collections::HashMap<u32, Span> = std::collections::HashMap::new();
+    for (&gid, &use_span) in &ep.func.uses {
+        let g = &p.globals[gid];
+        if let Some(&r) = m.resource_of.get(&gid) {
+            iface.resources.push(r);
+            continue;
+        }
+        let GlobalSlot::Var(h) = m.globals[gid] else { continue };
+        if let GlobalKind::Builtin(b) = g.kind {
+            iface.builtins.push(b.name().to_string());
+        }
+        let ty = m.ty(&g.ty);
+        if func::is_stage_input(&g.kind, stage) {
+            let (binding, arg_ty, to_int) = match g.kind {
+                GlobalKind::Io { location: l, .. } => {
+                    let interp = if stage == Fragment { interpolation(&g.ty) } else { (None, None) };
+                    let dsl_type = module::show_ty(p, &g.ty);
+                    iface.inputs.push(IoVar { name: g.name.clone(), location: l, ty, dsl_type, interpolation: interp.0 });
+                    (location(l, interp), ty, false)
+                }
+                GlobalKind::Builtin(b) => {
+                    let u32_ty = m.ty(&Ty::Scalar(Scalar::Uint));
+                    match b {
+                        BuiltinVar::FragCoord => (naga::Binding::BuiltIn(naga::BuiltIn::Position { invariant: false }), ty, false),
+                        BuiltinVar::FrontFacing => (naga::Binding::BuiltIn(naga::BuiltIn::FrontFacing), ty, false),
+                        BuiltinVar::PointCoord => (naga::Binding::BuiltIn(naga::BuiltIn::PointCoord), ty, false),
+                        BuiltinVar::VertexId => (naga::Binding::BuiltIn(naga::BuiltIn::VertexIndex), u32_ty, true),
+                        BuiltinVar::InstanceId => (naga::Binding::BuiltIn(naga::BuiltIn::InstanceIndex), u32_ty, true),
+                        _ => continue,
+                    }
+                }
+                _ => continue,
+            };
+            let _ = h;
+            args.push((gid, binding, arg_ty, to_int));
+        } else if func::is_stage_output(&g.kind, stage) {
+            match g.kind {
+                GlobalKind::Io { location: l, .. } => {
+                    if let Some(prev) = seen_out.insert(l, g.span) {
+                        return Err(Diagnostic::error(format!("entry point `{}` writes two outputs at location {l}", ep.name), use_span)
+                            .with_secondary(prev, "this output also uses it")
+                            .with_note("`@out` and `@inout` variables written by one vertex entry point share the output locations"));
+                    }
+                    let interp = if stage == Vertex { interpolation(&g.ty) } else { (None, None) };
+                    let dsl_type = module::show_ty(p, &g.ty);
+                    iface.outputs.push(IoVar { name: g.name.clone(), location: l, ty, dsl_type, interpolation: interp.0 });
+                    outs.push((Some(h), None, ty, location(l, interp), g.name.clone()));
+                }
+                GlobalKind::Builtin(b) => {
+                    let bi = match b {
+                        BuiltinVar::PointSize => naga::BuiltIn::PointSize,
+                        BuiltinVar::FragDepth => naga::BuiltIn::FragDepth,
+                        _ => continue,
+                    };
+                    outs.push((Some(h), Some(b), ty, naga::Binding::BuiltIn(bi), b.name().to_string()));
+                }
+                _ => {}
+            }
+        }
+    }
+    iface.inputs.sort_by_key(|v| v.location);
+    iface.outputs.sort_by_key(|v| v.location);
+    let result_ty = (!outs.is_empty()).then(|| m.struct_type(&format!("{}_out", ep.name), outs.iter().map(|o| (o.4.clone(), o.2, Some(o.3.clone()))).collect()));
+    let members = outs.iter().map(|o| (o.0, o.1, o.2)).collect();
+    let kind = FnKind::Entry(func::EntryOutputs { result_ty, members, stage });
+    let mut b = FnBuilder::new(m, &ep.name, &ep.func.locals, kind);
+    let mut body = naga::Block::new();
+    for (i, (gid, binding, ty, to_int)) in args.iter().enumerate() {
+        let g = &p.globals[*gid];
+        b.func.arguments.push(naga::FunctionArgument { name: Some(format!("in_{}", g.name.trim_start_matches("gl_"))), ty: *ty, binding: Some(binding.clone()) });
+        let GlobalSlot::Var(h) = b.m.globals[*gid] else { continue };
+        b.store_argument(&mut body, h, i as u32, *to_int, g.span);
+    }
+    b.stmts_into(&ep.func.body.as_slice(), &mut body);
+    if !matches!(body.last(), Some(naga::Statement::Return { .. })) {
+        let end = Span::new(ep.func.span.end.saturating_sub(1), ep.func.span.end);
+        b.entry_return(&mut body, end);
+    }
+    let result = result_ty.map(|ty| naga::FunctionResult { ty, binding: None });
+    let function = b.finish(body, result);
+    m.module.entry_points.push(naga::EntryPoint {
+        name: ep.name.clone(),
+        stage,
+        early_depth_test: None,
+        workgroup_size: [0; 3],
+        workgroup_size_overrides: None,
+        function,
+        mesh_info: None,
+        task_payload: None,
+        incoming_ray_payload: None,
+    });
+    Ok(iface)
 }

@@ -1,11 +1,16 @@
 //! Semantic analysis: name resolution and type checking.
+//!
+//! Input: the parser's [`ast::Program`](crate::syntax::ast::Program).
+//! Output: a [`Program`] in which every name is resolved, every expression
+//! typed, and every rule of the language checked, so that lowering cannot
+//! meet a user error.
 
-use crate::diag::Diagnostics;
-use crate::syntax::ast;
+pub mod builtins;
+mod check;
+pub mod consts;
+pub mod tree;
+pub mod types;
 
-#[derive(Debug)]
-pub struct Program {}
-
-pub fn check(_program: &ast::Program, _diags: &mut Diagnostics) -> Option<Program> {
-    None
-}
+pub use check::{check, MAX_ARRAY_LEN, MAX_DEPTH, MAX_LOCATIONS};
+pub use tree::*;
+pub use types::{Scalar, Ty};

@@ -246,4 +246,7 @@ pub enum ExprKind {
     Array { elem: Option<TypeExpr>, items: Vec<Expr> },
     /// `(e)`: kept so diagnostics can point at the whole parenthesised text.
     Paren(Box<Expr>),
+    /// A string literal, escapes resolved. The parser produces it only as an
+    /// annotation argument value (`[vertex_program(name = "x")]`).
+    Str(String),
 }

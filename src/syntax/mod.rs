@@ -1,17 +1,32 @@
 //! The front end's text stages: preprocessing, lexing and parsing.
 //!
 //! `parse` reads the root file (already in the `SourceMap`), runs the
-//! preprocessor (which adds every `#include`d file to the map), lexes,
-//! splits the file into top-level items, keeps the shader globals and the
-//! entry points with everything they reach, and parses those into the
-//! [`ast::Program`]. Host code is skipped without being parsed.
+//! preprocessor (which lexes each file once and adds every `#include`d file
+//! to the map), splits the token stream into top-level items, keeps the
+//! shader globals and the entry points with everything they reach, and
+//! parses those into the [`ast::Program`]. Host code is skipped without
+//! being parsed, and nothing in it is ever reported.
+//!
+//! - [`token`]: token kinds (no text; text is `map.slice(span)`)
+//! - [`lexer`]: bytes to tokens, never failing
+//! - [`preprocess`]: `#include`, `#define`, `#ifdef` ... on tokens
+//! - [`items`]: top-level splitting and reachability
+//! - [`parser`]: recursive descent over one selected item
 
 pub mod ast;
+pub mod items;
+pub mod lexer;
+pub mod parser;
+pub mod preprocess;
+pub mod token;
 
 use std::path::{Path, PathBuf};
 
 use crate::diag::{Diagnostic, Diagnostics};
-use crate::source::{FileId, SourceMap};
+use crate::source::{FileId, SourceMap, Span};
+
+pub use parser::MAX_DEPTH;
+pub use preprocess::{MAX_FILE_SIZE, MAX_INCLUDE_DEPTH};
 
 #[derive(Clone, Debug, Default)]
 pub struct ParseOptions {
@@ -22,13 +37,56 @@ pub struct ParseOptions {
     pub allow_outside_includes: bool,
 }
 
-/// Reads a source file as UTF-8 text.
+/// Reads a source file as UTF-8 text (at most [`MAX_FILE_SIZE`] bytes).
 pub fn read_source(path: &Path) -> Result<String, Diagnostic> {
-    let bytes = std::fs::read(path).map_err(|e| Diagnostic::error_nowhere(format!("cannot read `{}`: {e}", path.display())))?;
-    String::from_utf8(bytes).map_err(|e| Diagnostic::error_nowhere(format!("`{}` is not UTF-8 text: {e}", path.display())))
+    let cannot = |e: std::io::Error| Diagnostic::error_nowhere(format!("cannot read `{}`: {e}", path.display()));
+    let meta = std::fs::metadata(path).map_err(cannot)?;
+    if meta.len() > MAX_FILE_SIZE as u64 {
+        return Err(too_large(path, meta.len()));
+    }
+    let bytes = std::fs::read(path).map_err(cannot)?;
+    if bytes.len() > MAX_FILE_SIZE {
+        return Err(too_large(path, bytes.len() as u64));
+    }
+    String::from_utf8(bytes).map_err(|e| {
+        Diagnostic::error_nowhere(format!("`{}` is not UTF-8 text", path.display()))
+            .with_note(format!("invalid byte at offset {}", e.utf8_error().valid_up_to()))
+    })
 }
 
-pub fn parse(_map: &mut SourceMap, _root: FileId, _opts: &ParseOptions, diags: &mut Diagnostics) -> ast::Program {
-    diags.push(Diagnostic::error_nowhere("parser not written yet"));
-    ast::Program::default()
+fn too_large(path: &Path, len: u64) -> Diagnostic {
+    Diagnostic::error_nowhere(format!("`{}` is too large: {len} bytes (limit {MAX_FILE_SIZE} bytes)", path.display()))
+}
+
+/// Preprocesses, splits and parses the root file and what it includes.
+pub fn parse(map: &mut SourceMap, root: FileId, opts: &ParseOptions, diags: &mut Diagnostics) -> ast::Program {
+    let root_span = {
+        let f = map.file(root);
+        if f.text.len() > MAX_FILE_SIZE {
+            let msg = format!("`{}` is too large: {} bytes (limit {MAX_FILE_SIZE} bytes)", f.name, f.text.len());
+            diags.push(Diagnostic::error_nowhere(msg));
+            return ast::Program::default();
+        }
+        Span::new(f.base, f.base)
+    };
+    let toks = preprocess::preprocess(map, root, opts, diags);
+    let map: &SourceMap = map;
+    let raw = items::split(&toks, map);
+    let selected = items::select(&raw, &toks, map, &opts.entries, root_span, diags);
+    let mut program = ast::Program::default();
+    for i in selected {
+        let item = &raw[i];
+        // Lexing errors count only inside items that are parsed.
+        for t in &toks[item.range()] {
+            if let token::TokKind::Error(e) = t.kind {
+                let what = match e {
+                    token::LexError::BadChar => format!("unexpected character `{}`", map.slice(t.span).escape_debug()),
+                    _ => e.message().to_string(),
+                };
+                diags.push(Diagnostic::error(what, t.span).with_label(e.message()));
+            }
+        }
+        program.items.extend(parser::parse_item(&toks, item, map, diags));
+    }
+    program
 }

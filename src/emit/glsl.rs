@@ -1,0 +1,241 @@
+//! GLSL 330 core and GLSL ES 3.00, one file per entry point.
+//!
+//! naga's GLSL writer runs on `Lowered::gl`, whose resource globals carry no
+//! binding, so its namer gives samplers and uniform instances their source
+//! names. Two things are then fixed up in the text:
+//! - uniform blocks: naga names them `<type>_block_<N><Stage>`, which differs
+//!   between the stages of one program and is meaningless to a host. Each is
+//!   renamed to `<instance>_block` (`u_model_block`), identical in every
+//!   stage; a rename that would collide with another identifier is refused.
+//! - ES 3.00: after naga's `precision highp float; precision highp int;`,
+//!   a `precision highp T;` line for every sampler type the shader uses that
+//!   ES 3.00 gives no default precision (`sampler2DShadow`, ...).
+//!
+//! Writer flags are empty: the default (`ADJUST_COORDINATE_SPACE`) would flip
+//! y and rewrite z, but the DSL already is GL-convention code.
+
+use std::collections::{BTreeMap, BTreeSet};
+use std::fmt::Write as _;
+
+use naga::back::glsl::{Options, PipelineOptions, Version, WriterFlags};
+use naga::proc::{BoundsCheckPolicies, BoundsCheckPolicy};
+
+use super::{guard, text};
+use crate::diag::Diagnostic;
+use crate::lower::{EntryInterface, Lowered};
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Profile {
+    Desktop330,
+    Es300,
+}
+
+impl Profile {
+    fn version(self) -> Version {
+        match self {
+            Profile::Desktop330 => Version::Desktop(330),
+            // `is_webgl` only changes multiview (unused: the DSL has none)
+            // and drops `invariant gl_FragCoord`, which WebGL2 rejects and
+            // native ES does not need; so one ES file serves both WebGL2 and
+            // native GLES 3.x.
+            Profile::Es300 => Version::Embedded { version: 300, is_webgl: true },
+        }
+    }
+
+    fn label(self) -> &'static str {
+        match self {
+            Profile::Desktop330 => "GLSL 330",
+            Profile::Es300 => "GLSL ES 3.00",
+        }
+    }
+
+    fn infix(self) -> &'static str {
+        match self {
+            Profile::Desktop330 => "330",
+            Profile::Es300 => "300es",
+        }
+    }
+}
+
+/// `main_vs.330.vert`, `main_fs.300es.frag`.
+pub fn file_name(entry: &str, stage: naga::ShaderStage, profile: Profile) -> String {
+    let ext = match stage {
+        naga::ShaderStage::Fragment => "frag",
+        _ => "vert",
+    };
+    format!("{entry}.{}.{ext}", profile.infix())
+}
+
+/// The identifiers one GLSL entry point uses for what a host binds.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct EntryNames {
+    /// Uniform global (handle index) -> uniform block name.
+    pub blocks: BTreeMap<usize, String>,
+    /// Texture global (handle index) -> `uniform sampler*` name.
+    pub samplers: BTreeMap<usize, String>,
+    /// Location -> name of each `in` (vertex attributes or varyings).
+    pub inputs: BTreeMap<u32, String>,
+    /// Location -> name of each `out` (varyings or colour outputs).
+    pub outputs: BTreeMap<u32, String>,
+}
+
+/// ES 3.00 types that have no default precision (GLSL ES 3.00 §4.5.4) and
+/// that naga can write. `sampler2D` and `samplerCube` have one.
+const ES_NO_DEFAULT_PRECISION: &[&str] = &[
+    "sampler3D",
+    "sampler2DShadow",
+    "samplerCubeShadow",
+    "sampler2DArray",
+    "sampler2DArrayShadow",
+    "isampler2D",
+    "isampler3D",
+    "isamplerCube",
+    "isampler2DArray",
+    "usampler2D",
+    "usampler3D",
+    "usamplerCube",
+    "usampler2DArray",
+];
+
+/// Bounds checks for GLSL. Indexing arrays, vectors and matrices (also in
+/// uniform blocks) is clamped (`Restrict`): an out-of-range index in GLSL is
+/// undefined behaviour, and clamping is cheap and matches what WebGPU
+/// guarantees, so every target reads the same element. Image loads stay
+/// unchecked: the checked forms need `textureQueryLevels`, which ES 3.00
+/// lacks.
+fn policies() -> BoundsCheckPolicies {
+    BoundsCheckPolicies {
+        index: BoundsCheckPolicy::Restrict,
+        buffer: BoundsCheckPolicy::Restrict,
+        image_load: BoundsCheckPolicy::Unchecked,
+        binding_array: BoundsCheckPolicy::Unchecked,
+    }
+}
+
+/// Writes one entry point of `lowered.gl` and fixes up its names.
+pub fn write_entry(lowered: &Lowered, ep: &EntryInterface, profile: Profile) -> Result<(String, EntryNames), Diagnostic> {
+    let what = format!("the {} writer for entry point `{}`", profile.label(), ep.name);
+    let (raw, info) = guard(&what, || {
+        let options = Options {
+            version: profile.version(),
+            writer_flags: WriterFlags::empty(),
+            binding_map: Default::default(),
+            zero_initialize_workgroup_memory: false,
+        };
+        let pipeline = PipelineOptions { shader_stage: ep.stage, entry_point: ep.name.clone(), multiview: None };
+        let mut out = String::new();
+        let mut writer = naga::back::glsl::Writer::new(&mut out, &lowered.gl, &lowered.gl_info, &options, &pipeline, policies())
+            .map_err(|e| e.to_string())?;
+        let info = writer.write().map_err(|e| e.to_string())?;
+        drop(writer);
+        Ok((out, info))
+    })?;
+    let bug = |msg: String| Diagnostic::bug(format!("{} output of entry point `{}`: {msg}", profile.label(), ep.name), None);
+
+    let mut out = raw.clone();
+    let mut names = EntryNames::default();
+
+    // Uniform blocks, in handle order so the result is deterministic.
+    let mut uniforms: Vec<_> = info.uniforms.iter().collect();
+    uniforms.sort_by_key(|(h, _)| h.index());
+    let mut new_names = BTreeSet::new();
+    for (handle, naga_block) in uniforms {
+        let instance = block_instance(&raw, naga_block).ok_or_else(|| bug(format!("cannot find uniform block `{naga_block}`")))?;
+        let new = format!("{}_block", instance.trim_end_matches('_'));
+        if text::contains_ident(&raw, &new) {
+            return Err(bug(format!("renaming uniform block `{naga_block}` to `{new}` would collide with an identifier of the same name")));
+        }
+        if !new_names.insert(new.clone()) {
+            return Err(bug(format!("two uniform blocks would both be named `{new}`")));
+        }
+        out = text::replace_ident(&out, naga_block, &new);
+        names.blocks.insert(handle.index(), new);
+    }
+
+    for (name, mapping) in &info.texture_mapping {
+        if !text::contains_ident(&out, name) {
+            return Err(bug(format!("sampler `{name}` reported by naga is not in the text")));
+        }
+        names.samplers.insert(mapping.texture.index(), name.clone());
+    }
+
+    // Attributes, varyings and colour outputs are named by location
+    // (`_p2vs_location0`, `_vs2fs_location1`, `_fs2p_location0`): naga
+    // reports only those it wrote without `layout(location)`, so the names
+    // are formed here and checked against the text.
+    let (in_prefix, out_prefix) = match ep.stage {
+        naga::ShaderStage::Vertex => ("_p2vs_location", "_vs2fs_location"),
+        _ => ("_vs2fs_location", "_fs2p_location"),
+    };
+    for (vars, prefix, map) in [(&ep.inputs, in_prefix, &mut names.inputs), (&ep.outputs, out_prefix, &mut names.outputs)] {
+        for var in vars {
+            let name = format!("{prefix}{}", var.location);
+            if !text::contains_ident(&out, &name) {
+                return Err(bug(format!("`{}` (location {}) is not declared as `{name}`", var.name, var.location)));
+            }
+            if let Some(loc) = info.varying.get(&name) {
+                if loc.location != var.location {
+                    return Err(bug(format!("`{name}` has location {}, expected {}", loc.location, var.location)));
+                }
+            }
+            map.insert(var.location, name);
+        }
+    }
+
+    if profile == Profile::Es300 {
+        out = add_es_precision(&out).ok_or_else(|| bug("no `precision highp int;` line to extend".into()))?;
+    }
+    Ok((out, names))
+}
+
+/// The instance name declared inside `uniform BLOCK { T name; };`.
+fn block_instance<'a>(src: &'a str, block: &str) -> Option<&'a str> {
+    let (start, end) = text::idents(src).find(|&(a, b)| &src[a..b] == block)?;
+    debug_assert!(start < end);
+    let rest = &src[end..];
+    let open = rest.find('{')?;
+    let body = &rest[open + 1..];
+    let decl = &body[..body.find(';')?];
+    let decl = decl.split('[').next()?;
+    let name = decl.split_whitespace().last()?;
+    Some(name)
+}
+
+/// Adds `precision highp T;` for every no-default-precision type the text
+/// uses, right after naga's `precision highp int;`.
+fn add_es_precision(src: &str) -> Option<String> {
+    const ANCHOR: &str = "precision highp int;\n";
+    let at = src.find(ANCHOR)? + ANCHOR.len();
+    let used: BTreeSet<&str> = text::idents(src).map(|(a, b)| &src[a..b]).collect();
+    let mut lines = String::new();
+    for ty in ES_NO_DEFAULT_PRECISION {
+        if used.contains(ty) {
+            let _ = writeln!(lines, "precision highp {ty};");
+        }
+    }
+    let mut out = String::with_capacity(src.len() + lines.len());
+    out.push_str(&src[..at]);
+    out.push_str(&lines);
+    out.push_str(&src[at..]);
+    Some(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn finds_block_instances() {
+        let s = "layout(std140) uniform mat4x4_block_0Vertex { highp mat4 u_model; };\nuniform X_block_1Vertex { vec4 arr[4]; };";
+        assert_eq!(block_instance(s, "mat4x4_block_0Vertex"), Some("u_model"));
+        assert_eq!(block_instance(s, "X_block_1Vertex"), Some("arr"));
+        assert_eq!(block_instance(s, "nope"), None);
+    }
+
+    #[test]
+    fn es_precision_goes_after_int() {
+        let s = "#version 300 es\n\nprecision highp float;\nprecision highp int;\n\nuniform highp sampler2DShadow s;\nuniform highp isampler2D t;\n";
+        let out = add_es_precision(s).unwrap();
+        assert!(out.contains("precision highp int;\nprecision highp sampler2DShadow;\nprecision highp isampler2D;\n\nuniform"));
+    }
+}

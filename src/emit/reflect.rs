@@ -1,0 +1,383 @@
+//! The reflection manifest (`STEM.reflect.json`), built from the interface,
+//! naga's `Layouter` on `Lowered::gpu`, and the names the GLSL writer used.
+//!
+//! Uniform block layouts: the WGSL uniform layout of the `gpu` module is the
+//! one reported. GLSL declares the same blocks `layout(std140)` without
+//! explicit offsets, so the driver computes std140 itself; every block is
+//! therefore checked member by member against std140, and where the two
+//! differ (a `floatCx2` matrix: std140 pads its columns to 16 bytes, WGSL
+//! packs them in 8) the compile stops with an error instead of emitting
+//! shaders that disagree about their own buffers.
+
+use std::collections::BTreeMap;
+
+use naga::proc::Layouter;
+use naga::{ArraySize, Handle, Module, ScalarKind, ShaderStage, Type, TypeInner, VectorSize};
+
+use super::glsl::{self, EntryNames};
+use super::reflect_types::{EntryPoint, Io, Member, Reflection, Sampler, UniformBlock, REFLECTION_FORMAT};
+use crate::diag::Diagnostic;
+use crate::lower::{EntryInterface, IoVar, Lowered, ResourceKind, SamplerKind};
+use crate::Target;
+
+pub fn file_name(stem: &str) -> String {
+    format!("{stem}.reflect.json")
+}
+
+/// The layout of one uniform block.
+#[derive(Clone, Debug)]
+pub struct BlockLayout {
+    pub size: u32,
+    pub members: Vec<Member>,
+}
+
+fn round_up(align: u32, x: u32) -> u32 {
+    x.div_ceil(align.max(1)) * align.max(1)
+}
+
+/// Layouts of every uniform resource (indexed like `interface.resources`;
+/// `None` for samplers). With `check_std140`, a block whose std140 layout
+/// would differ from its WGSL layout is an error.
+pub fn uniform_layouts(lowered: &Lowered, check_std140: bool) -> Result<Vec<Option<BlockLayout>>, Diagnostic> {
+    let module = &lowered.gpu;
+    let mut layouter = Layouter::default();
+    layouter
+        .update(module.to_ctx())
+        .map_err(|e| Diagnostic::bug(format!("cannot lay out the types of the GPU module: {e}"), None))?;
+
+    let mut out = Vec::with_capacity(lowered.interface.resources.len());
+    for r in &lowered.interface.resources {
+        let ResourceKind::Uniform { ty, dsl_type } = &r.kind else {
+            out.push(None);
+            continue;
+        };
+        let Ok(t) = module.types.get_handle(*ty) else {
+            return Err(Diagnostic::bug(format!("uniform `{}` has a type that is not in the GPU module", r.name), Some(r.span)));
+        };
+        if check_std140 {
+            if let Err(why) = std140(module, *ty, &r.name) {
+                return Err(Diagnostic::error(format!("uniform `{}` cannot have the same layout in GLSL and in WGSL/SPIR-V", r.name), r.span)
+                    .with_label(why)
+                    .with_note("GLSL lays uniform blocks out by std140 rules, which pad each column of a matrix with 2 rows to 16 bytes; WGSL packs such columns in 8 bytes")
+                    .with_note("help: use a float4 (or a float4x4 / float3x3) instead, or compile without the GLSL targets"));
+            }
+        }
+        let members = match &t.inner {
+            TypeInner::Struct { members, .. } => members
+                .iter()
+                .enumerate()
+                .map(|(i, m)| member(module, &layouter, m.name.clone().unwrap_or_else(|| format!("_{i}")), dsl_name(module, m.ty), m.ty, m.offset))
+                .collect(),
+            _ => vec![member(module, &layouter, r.name.clone(), dsl_type.clone(), *ty, 0)],
+        };
+        out.push(Some(BlockLayout { size: round_up(16, layouter[*ty].size), members }));
+    }
+    Ok(out)
+}
+
+fn member(module: &Module, layouter: &Layouter, name: String, ty_name: String, ty: Handle<Type>, offset: u32) -> Member {
+    let inner = &module.types[ty].inner;
+    Member {
+        name,
+        ty: ty_name,
+        offset,
+        size: layouter[ty].size,
+        array_stride: match *inner {
+            TypeInner::Array { stride, .. } => Some(stride),
+            _ => None,
+        },
+        matrix_stride: match *inner {
+            TypeInner::Matrix { rows, scalar, .. } => Some(vec_align(rows, scalar.width as u32)),
+            _ => None,
+        },
+    }
+}
+
+fn vec_align(size: VectorSize, width: u32) -> u32 {
+    match size {
+        VectorSize::Bi => 2 * width,
+        _ => 4 * width,
+    }
+}
+
+/// std140 size and alignment of `ty`, or why its explicit layout in the IR
+/// (struct offsets, array strides, matrix column strides) differs from it.
+fn std140(module: &Module, ty: Handle<Type>, path: &str) -> Result<(u32, u32), String> {
+    let t = &module.types[ty];
+    match t.inner {
+        TypeInner::Scalar(s) if s.kind != ScalarKind::Bool => Ok((s.width as u32, s.width as u32)),
+        TypeInner::Vector { size, scalar } if scalar.kind != ScalarKind::Bool => {
+            let w = scalar.width as u32;
+            Ok((size as u32 * w, vec_align(size, w)))
+        }
+        TypeInner::Matrix { columns, rows, scalar } => {
+            if rows == VectorSize::Bi {
+                return Err(format!("`{path}` is a {}: std140 column stride 16, WGSL column stride 8", dsl_name(module, ty)));
+            }
+            let _ = scalar;
+            Ok((columns as u32 * 16, 16))
+        }
+        TypeInner::Array { base, size: ArraySize::Constant(n), stride } => {
+            let (bs, ba) = std140(module, base, &format!("{path}[]"))?;
+            let align = round_up(16, ba);
+            let std_stride = round_up(align, bs);
+            if std_stride != stride {
+                return Err(format!("`{path}`: std140 array stride {std_stride}, WGSL array stride {stride}"));
+            }
+            Ok((n.get() * stride, align))
+        }
+        TypeInner::Struct { ref members, .. } => {
+            let mut end = 0;
+            let mut align = 16;
+            for (i, m) in members.iter().enumerate() {
+                let name = m.name.clone().unwrap_or_else(|| format!("_{i}"));
+                let (ms, ma) = std140(module, m.ty, &format!("{path}.{name}"))?;
+                let offset = round_up(ma, end);
+                if offset != m.offset {
+                    return Err(format!("`{path}.{name}`: std140 offset {offset}, WGSL offset {}", m.offset));
+                }
+                end = offset + ms;
+                align = align.max(ma);
+            }
+            let align = round_up(16, align);
+            Ok((round_up(align, end), align))
+        }
+        _ => Err(format!("`{path}` has type {}, which cannot be in a uniform block", dsl_name(module, ty))),
+    }
+}
+
+/// The DSL spelling of a naga type (`float3`, `float4x4`, `Light`, `float[4]`).
+pub fn dsl_name(module: &Module, ty: Handle<Type>) -> String {
+    let t = &module.types[ty];
+    let scalar = |k: ScalarKind| match k {
+        ScalarKind::Float | ScalarKind::AbstractFloat => "float",
+        ScalarKind::Sint | ScalarKind::AbstractInt => "int",
+        ScalarKind::Uint => "uint",
+        ScalarKind::Bool => "bool",
+    };
+    match t.inner {
+        TypeInner::Scalar(s) => scalar(s.kind).to_string(),
+        TypeInner::Vector { size, scalar: s } => format!("{}{}", scalar(s.kind), size as u32),
+        TypeInner::Matrix { columns, rows, .. } => format!("float{}x{}", columns as u32, rows as u32),
+        TypeInner::Array { base, size: ArraySize::Constant(n), .. } => format!("{}[{n}]", dsl_name(module, base)),
+        TypeInner::Struct { .. } => t.name.clone().unwrap_or_else(|| "struct".into()),
+        _ => t.name.clone().unwrap_or_else(|| format!("{:?}", t.inner)),
+    }
+}
+
+/// wgpu's name for a vertex attribute of this type, and its packed size.
+fn vertex_format(module: &Module, ty: Handle<Type>) -> (Option<String>, u32) {
+    let (kind, n, width) = match module.types[ty].inner {
+        TypeInner::Scalar(s) => (s.kind, 1, s.width as u32),
+        TypeInner::Vector { size, scalar } => (scalar.kind, size as u32, scalar.width as u32),
+        TypeInner::Matrix { columns, rows, scalar } => return (None, columns as u32 * rows as u32 * scalar.width as u32),
+        _ => return (None, 0),
+    };
+    let base = match (kind, width) {
+        (ScalarKind::Float, 4) => "Float32",
+        (ScalarKind::Sint, 4) => "Sint32",
+        (ScalarKind::Uint, 4) => "Uint32",
+        _ => return (None, n * width),
+    };
+    let name = if n == 1 { base.to_string() } else { format!("{base}x{n}") };
+    (Some(name), n * width)
+}
+
+fn stage_name(stage: ShaderStage) -> &'static str {
+    match stage {
+        ShaderStage::Vertex => "vertex",
+        ShaderStage::Fragment => "fragment",
+        _ => "compute",
+    }
+}
+
+/// Builds the manifest. `glsl_names[i]` holds the GLSL identifiers of
+/// `interface.entry_points[i]`.
+pub fn build(
+    lowered: &Lowered,
+    stem: &str,
+    source_name: &str,
+    targets: &[Target],
+    glsl_names: &[EntryNames],
+    layouts: &[Option<BlockLayout>],
+) -> Result<Reflection, Diagnostic> {
+    let iface = &lowered.interface;
+    let module = &lowered.gpu;
+
+    // GLSL names of each resource, agreed by every entry point using it.
+    let mut res_glsl: BTreeMap<usize, String> = BTreeMap::new();
+    for (ep, names) in iface.entry_points.iter().zip(glsl_names) {
+        let mut declared: Vec<(usize, &String)> = names.blocks.iter().chain(names.samplers.iter()).map(|(g, n)| (*g, n)).collect();
+        declared.sort();
+        for (global, name) in declared {
+            let Some(ri) = iface.resources.iter().position(|r| r.global.index() == global) else {
+                return Err(Diagnostic::bug(format!("GLSL of `{}` declares `{name}`, which is no resource of the interface", ep.name), None));
+            };
+            if !ep.resources.contains(&ri) {
+                return Err(Diagnostic::bug(
+                    format!("GLSL of `{}` declares `{name}`, but the interface does not list it as used by that entry point", ep.name),
+                    None,
+                ));
+            }
+            match res_glsl.get(&ri) {
+                Some(prev) if prev != name => {
+                    return Err(Diagnostic::bug(format!("resource `{}` has GLSL names `{prev}` and `{name}` in different stages", iface.resources[ri].name), None))
+                }
+                _ => {
+                    res_glsl.insert(ri, name.clone());
+                }
+            }
+        }
+    }
+
+    let mut uniform_blocks = Vec::new();
+    let mut samplers = Vec::new();
+    let mut next_unit = 0;
+    for (ri, r) in iface.resources.iter().enumerate() {
+        match &r.kind {
+            ResourceKind::Uniform { dsl_type, .. } => {
+                let Some(Some(layout)) = layouts.get(ri) else {
+                    return Err(Diagnostic::bug(format!("no layout for uniform `{}`", r.name), Some(r.span)));
+                };
+                uniform_blocks.push(UniformBlock {
+                    name: r.name.clone(),
+                    ty: dsl_type.clone(),
+                    size: layout.size,
+                    group: r.group,
+                    binding: r.binding,
+                    glsl_block: res_glsl.get(&ri).cloned().unwrap_or_else(|| format!("{}_block", r.name)),
+                    members: layout.members.clone(),
+                });
+            }
+            ResourceKind::Sampler(kind) => {
+                let Some(sampler_binding) = r.sampler_binding else {
+                    return Err(Diagnostic::bug(format!("sampler `{}` has no sampler binding", r.name), Some(r.span)));
+                };
+                let texture_unit = r.texture_unit.unwrap_or(next_unit);
+                next_unit = next_unit.max(texture_unit + 1);
+                samplers.push(Sampler {
+                    name: r.name.clone(),
+                    ty: kind.name().to_string(),
+                    glsl_name: res_glsl.get(&ri).cloned().unwrap_or_else(|| r.name.clone()),
+                    texture_unit,
+                    group: r.group,
+                    texture_binding: r.binding,
+                    sampler_binding,
+                    dimension: dimension(*kind).into(),
+                    sample_type: sample_type(*kind).into(),
+                    comparison: kind.is_shadow(),
+                });
+            }
+        }
+    }
+
+    let mut entry_points = Vec::new();
+    for (ep, names) in iface.entry_points.iter().zip(glsl_names) {
+        entry_points.push(entry_point(module, ep, names, stem, targets, iface)?);
+    }
+
+    Ok(Reflection {
+        format: REFLECTION_FORMAT,
+        source: source_name.to_string(),
+        conventions: iface.conventions.as_str().to_string(),
+        entry_points,
+        uniform_blocks,
+        samplers,
+    })
+}
+
+fn entry_point(
+    module: &Module,
+    ep: &EntryInterface,
+    names: &EntryNames,
+    stem: &str,
+    targets: &[Target],
+    iface: &crate::lower::Interface,
+) -> Result<EntryPoint, Diagnostic> {
+    let mut files = BTreeMap::new();
+    for t in targets {
+        let f = match t {
+            Target::Glsl330 => glsl::file_name(&ep.name, ep.stage, glsl::Profile::Desktop330),
+            Target::Gles300 => glsl::file_name(&ep.name, ep.stage, glsl::Profile::Es300),
+            Target::Wgsl => format!("{stem}.wgsl"),
+            Target::Spirv => format!("{stem}.spv"),
+        };
+        files.insert(t.name().to_string(), f);
+    }
+    let vertex = ep.stage == ShaderStage::Vertex;
+    let io = |vars: &[IoVar], glsl: &BTreeMap<u32, String>, attributes: bool, varyings: bool| -> Result<Vec<Io>, Diagnostic> {
+        let mut v = vars
+            .iter()
+            .map(|var| {
+                let (format, size) = vertex_format(module, var.ty);
+                let glsl_name = glsl.get(&var.location).cloned().ok_or_else(|| {
+                    Diagnostic::bug(format!("GLSL of `{}` has no variable for `{}` at location {}", ep.name, var.name, var.location), None)
+                })?;
+                Ok(Io {
+                    name: var.name.clone(),
+                    location: var.location,
+                    ty: var.dsl_type.clone(),
+                    vertex_format: if attributes { format } else { None },
+                    size,
+                    interpolation: if varyings {
+                        Some(
+                            match var.interpolation.unwrap_or(naga::Interpolation::Perspective) {
+                                naga::Interpolation::Flat => "flat",
+                                naga::Interpolation::Linear => "linear",
+                                _ => "perspective",
+                            }
+                            .to_string(),
+                        )
+                    } else {
+                        None
+                    },
+                    glsl_name,
+                })
+            })
+            .collect::<Result<Vec<_>, Diagnostic>>()?;
+        v.sort_by_key(|io| io.location);
+        Ok(v)
+    };
+    let inputs = io(&ep.inputs, &names.inputs, vertex, !vertex)?;
+    let outputs = io(&ep.outputs, &names.outputs, false, vertex)?;
+
+    let mut uniform_blocks = Vec::new();
+    let mut samplers = Vec::new();
+    for &ri in &ep.resources {
+        let Some(r) = iface.resources.get(ri) else {
+            return Err(Diagnostic::bug(format!("entry point `{}` uses resource #{ri}, which does not exist", ep.name), None));
+        };
+        match r.kind {
+            ResourceKind::Uniform { .. } => uniform_blocks.push(r.name.clone()),
+            ResourceKind::Sampler(_) => samplers.push(r.name.clone()),
+        }
+    }
+    Ok(EntryPoint {
+        name: ep.name.clone(),
+        stage: stage_name(ep.stage).into(),
+        files,
+        inputs,
+        outputs,
+        builtins: ep.builtins.clone(),
+        uniform_blocks,
+        samplers,
+    })
+}
+
+fn dimension(kind: SamplerKind) -> &'static str {
+    match kind.dim() {
+        naga::ImageDimension::D3 => "3d",
+        naga::ImageDimension::Cube => "cube",
+        _ if kind.is_array() => "2d-array",
+        _ => "2d",
+    }
+}
+
+fn sample_type(kind: SamplerKind) -> &'static str {
+    match kind.image_class() {
+        naga::ImageClass::Depth { .. } => "depth",
+        naga::ImageClass::Sampled { kind: ScalarKind::Sint, .. } => "sint",
+        naga::ImageClass::Sampled { kind: ScalarKind::Uint, .. } => "uint",
+        _ => "float",
+    }
+}

@@ -1,0 +1,56 @@
+//! SPIR-V: one module per input file (every entry point), from `Lowered::gpu`.
+
+use naga::back::spv::{BindingInfo, Options, WriterFlags};
+use naga::proc::{BoundsCheckPolicies, BoundsCheckPolicy};
+
+use super::guard;
+use crate::diag::Diagnostic;
+use crate::lower::Lowered;
+
+/// The writer options.
+///
+/// - No `ADJUST_COORDINATE_SPACE` (naga's default): the lowering has already
+///   adapted clip space for Vulkan in portable conventions, and in native
+///   conventions the author wants the code as written.
+/// - `fake_missing_bindings: false` with an explicit identity binding map
+///   (group -> descriptor set, binding -> binding) of the resources that
+///   have bindings: a resource without one is a lowering bug and must fail
+///   here, not silently take whatever naga would make up.
+/// - `DEBUG` names (OpName) keep the source names of globals, functions and
+///   struct members for tools and drivers' messages. `LABEL_VARYINGS` is left
+///   off: some drivers treat those names as semantic.
+/// - Bounds checks: `Restrict` (clamp the index) for arrays, vectors,
+///   matrices and buffers; `ReadZeroSkipWrite` for image loads (what WebGPU
+///   requires of texel fetches). Out-of-range access is undefined behaviour
+///   in Vulkan without robustness features, and these are the cheapest
+///   policies that make every target read the same defined value.
+/// - SPIR-V 1.0, so any Vulkan 1.0 driver takes it.
+pub fn options(module: &naga::Module) -> Options<'static> {
+    let binding_map = module
+        .global_variables
+        .iter()
+        .filter_map(|(_, g)| g.binding)
+        .map(|rb| (rb, BindingInfo { descriptor_set: rb.group, binding: rb.binding, binding_array_size: None }))
+        .collect();
+    Options {
+        binding_map,
+        lang_version: (1, 0),
+        flags: WriterFlags::DEBUG,
+        fake_missing_bindings: false,
+        bounds_check_policies: BoundsCheckPolicies {
+            index: BoundsCheckPolicy::Restrict,
+            buffer: BoundsCheckPolicy::Restrict,
+            image_load: BoundsCheckPolicy::ReadZeroSkipWrite,
+            binding_array: BoundsCheckPolicy::Restrict,
+        },
+        debug_info: None,
+        ..Options::default()
+    }
+}
+
+pub fn write(lowered: &Lowered) -> Result<Vec<u32>, Diagnostic> {
+    let options = options(&lowered.gpu);
+    guard("the SPIR-V writer", || {
+        naga::back::spv::write_vec(&lowered.gpu, &lowered.gpu_info, &options, None).map_err(|e| e.to_string())
+    })
+}

@@ -1,0 +1,762 @@
+//! Function bodies: checked statements and expressions to naga IR.
+//!
+//! Expressions that naga wants covered by `Statement::Emit` are appended
+//! while the emitter runs; the others (literals, constants, variables,
+//! arguments, call results) are appended with the emitter paused. Every
+//! statement push flushes the pending range first.
+
+use naga::{Block, Expression as E, Handle, Statement};
+
+use super::module::{naga_scalar, vector_size, GlobalSlot, ModuleBuilder};
+use super::Flavor;
+use crate::sema::builtins::Builtin;
+use crate::sema::{self, BuiltinVar, Expr, ExprKind, GlobalKind, IoKind, Scalar, Stmt, Ty};
+use crate::syntax::ast::{BinaryOp, UnaryOp};
+
+/// How a sema local lives in naga.
+#[derive(Clone, Copy)]
+enum LocalSlot {
+    /// A `var`, loop counter or parameter copy: a function-local variable.
+    Var(Handle<naga::LocalVariable>),
+    /// A `let` or an unmodified parameter: an expression.
+    Value(Handle<E>),
+    Unset,
+}
+
+/// What a `return` does in this function.
+pub enum FnKind {
+    Helper,
+    /// An entry point: `return` builds the output struct from the private
+    /// copies of its outputs.
+    Entry(EntryOutputs),
+}
+
+/// The entry point's outputs, in result-struct member order.
+pub struct EntryOutputs {
+    pub result_ty: Option<Handle<naga::Type>>,
+    /// Private globals, one per member.
+    /// `None` for an output the shader never writes (gl_Position of a
+    /// vertex shader that ignores it): zero.
+    pub members: Vec<(Option<Handle<naga::GlobalVariable>>, Option<BuiltinVar>, Handle<naga::Type>)>,
+    pub stage: naga::ShaderStage,
+}
+
+pub struct FnBuilder<'m, 'p> {
+    pub m: &'m mut ModuleBuilder<'p>,
+    pub func: naga::Function,
+    emitter: naga::proc::Emitter,
+    locals: Vec<LocalSlot>,
+    sema_locals: &'p [sema::Local],
+    kind: FnKind,
+    /// Emit ranges closed by `append_plain`, waiting for the next statement.
+    pending: Vec<(Statement, naga::Span)>,
+}
+
+fn span(s: crate::source::Span) -> naga::Span {
+    s.into()
+}
+
+impl<'m, 'p> FnBuilder<'m, 'p> {
+    pub fn new(m: &'m mut ModuleBuilder<'p>, name: &str, sema_locals: &'p [sema::Local], kind: FnKind) -> Self {
+        let func = naga::Function { name: Some(name.to_string()), ..Default::default() };
+        let mut b = FnBuilder { m, func, emitter: Default::default(), locals: vec![LocalSlot::Unset; sema_locals.len()], sema_locals, kind, pending: Vec::new() };
+        b.emitter.start(&b.func.expressions);
+        b
+    }
+
+    /// Declares parameter `i` as a function argument. Parameters are
+    /// immutable, so the argument expression serves directly.
+    pub fn add_param(&mut self, i: usize) {
+        let l = &self.sema_locals[i];
+        let ty = self.m.ty(&l.ty);
+        let idx = self.func.arguments.len() as u32;
+        self.func.arguments.push(naga::FunctionArgument { name: Some(l.name.clone()), ty, binding: None });
+        let h = self.append_plain(E::FunctionArgument(idx), l.span);
+        self.locals[i] = LocalSlot::Value(h);
+    }
+
+    /// Appends an expression that must not be emitted.
+    fn append_plain(&mut self, e: E, s: crate::source::Span) -> Handle<E> {
+        // Close the running range, append outside it, and start again.
+        let pending = self.emitter.finish(&self.func.expressions);
+        let h = self.func.expressions.append(e, span(s));
+        self.emitter.start(&self.func.expressions);
+        if let Some((stmt, sp)) = pending {
+            // The range ends before `h`; it is pushed with the next statement.
+            self.pending.push((stmt, sp));
+        }
+        h
+    }
+
+    /// Appends an expression that must be emitted.
+    fn append(&mut self, e: E, s: crate::source::Span) -> Handle<E> {
+        self.func.expressions.append(e, span(s))
+    }
+
+    /// Pushes a statement after flushing pending emit ranges.
+    fn push(&mut self, block: &mut Block, stmt: Statement, s: crate::source::Span) {
+        self.flush(block);
+        block.push(stmt, span(s));
+    }
+
+    fn flush(&mut self, block: &mut Block) {
+        for (stmt, sp) in self.pending.drain(..) {
+            block.push(stmt, sp);
+        }
+        if let Some((stmt, sp)) = self.emitter.finish(&self.func.expressions) {
+            block.push(stmt, sp);
+        }
+        self.emitter.start(&self.func.expressions);
+    }
+
+    pub fn finish(mut self, mut body: Block, ret: Option<naga::FunctionResult>) -> naga::Function {
+        self.flush(&mut body);
+        let _ = self.emitter.finish(&self.func.expressions);
+        self.func.body = body;
+        self.func.result = ret;
+        self.func
+    }
+
+    // ------------------------------------------------------------ statements
+
+    /// Lowers statements onto the end of `block`.
+    pub fn stmts_into(&mut self, stmts: &[Stmt], block: &mut Block) {
+        for s in stmts {
+            self.stmt(s, block);
+        }
+        self.flush(block);
+    }
+
+    /// Entry prologue: copies argument `index` into a private global,
+    /// converting builtin `u32` indices to the DSL's `int`.
+    pub fn store_argument(&mut self, block: &mut Block, global: Handle<naga::GlobalVariable>, index: u32, to_int: bool, s: crate::source::Span) {
+        let ptr = self.append_plain(E::GlobalVariable(global), s);
+        let mut v = self.append_plain(E::FunctionArgument(index), s);
+        if to_int {
+            v = self.convert(v, &Ty::Scalar(Scalar::Uint), Scalar::Int, s);
+        }
+        self.push(block, Statement::Store { pointer: ptr, value: v }, s);
+    }
+
+    pub fn block(&mut self, stmts: &[Stmt]) -> Block {
+        let mut b = Block::new();
+        for s in stmts {
+            self.stmt(s, &mut b);
+        }
+        self.flush(&mut b);
+        b
+    }
+
+    /// The epilogue of an entry point: build and return its outputs.
+    pub fn entry_return(&mut self, block: &mut Block, s: crate::source::Span) {
+        let FnKind::Entry(outs) = &self.kind else {
+            self.push(block, Statement::Return { value: None }, s);
+            return;
+        };
+        let Some(result_ty) = outs.result_ty else {
+            self.push(block, Statement::Return { value: None }, s);
+            return;
+        };
+        let members: Vec<_> = outs.members.clone();
+        let stage = outs.stage;
+        let adapt = self.m.flavor == Flavor::Gpu(super::Conventions::Portable) && stage == naga::ShaderStage::Vertex;
+        let mut comps = Vec::new();
+        for (g, builtin, ty) in members {
+            let mut v = match g {
+                Some(g) => {
+                    let ptr = self.append_plain(E::GlobalVariable(g), s);
+                    self.append(E::Load { pointer: ptr }, s)
+                }
+                None => self.append_plain(E::ZeroValue(ty), s),
+            };
+            if adapt && builtin == Some(BuiltinVar::Position) {
+                v = self.adapt_clip_space(v, s);
+            }
+            comps.push(v);
+        }
+        let value = self.append(E::Compose { ty: result_ty, components: comps }, s);
+        self.push(block, Statement::Return { value: Some(value) }, s);
+    }
+
+    /// GL clip space to WebGPU/Vulkan: z' = (z + w) / 2, y' = -y.
+    fn adapt_clip_space(&mut self, p: Handle<E>, s: crate::source::Span) -> Handle<E> {
+        let x = self.append(E::AccessIndex { base: p, index: 0 }, s);
+        let y = self.append(E::AccessIndex { base: p, index: 1 }, s);
+        let z = self.append(E::AccessIndex { base: p, index: 2 }, s);
+        let w = self.append(E::AccessIndex { base: p, index: 3 }, s);
+        let ny = self.append(E::Unary { op: naga::UnaryOperator::Negate, expr: y }, s);
+        let zw = self.append(E::Binary { op: naga::BinaryOperator::Add, left: z, right: w }, s);
+        let half = self.append_plain(E::Literal(naga::Literal::F32(0.5)), s);
+        let nz = self.append(E::Binary { op: naga::BinaryOperator::Multiply, left: zw, right: half }, s);
+        let ty = self.m.ty(&Ty::Vector(Scalar::Float, 4));
+        self.append(E::Compose { ty, components: vec![x, ny, nz, w] }, s)
+    }
+
+    fn stmt(&mut self, s: &Stmt, block: &mut Block) {
+        match s {
+            Stmt::Local { local, init, span: sp } => {
+                let l = &self.sema_locals[*local];
+                if l.mutable {
+                    let ty = self.m.ty(&l.ty);
+                    let var = self.func.local_variables.append(naga::LocalVariable { name: Some(l.name.clone()), ty, init: None }, span(l.span));
+                    self.locals[*local] = LocalSlot::Var(var);
+                    let ptr = self.append_plain(E::LocalVariable(var), *sp);
+                    let value = match init {
+                        Some(e) => self.expr(e, block),
+                        None => self.append_plain(E::ZeroValue(ty), *sp),
+                    };
+                    self.push(block, Statement::Store { pointer: ptr, value }, *sp);
+                } else if let Some(e) = init {
+                    let h = self.expr(e, block);
+                    if !self.func.named_expressions.contains_key(&h) && self.is_emitted(h) {
+                        self.func.named_expressions.insert(h, l.name.clone());
+                    }
+                    self.locals[*local] = LocalSlot::Value(h);
+                }
+            }
+            Stmt::Assign { target, op, value, span: sp } => self.assign(target, *op, value, *sp, block),
+            Stmt::Expr(e) => {
+                if let ExprKind::Call(fid, args) = &e.kind {
+                    let args: Vec<Handle<E>> = args.iter().map(|a| self.expr(a, block)).collect();
+                    let function = self.m.functions[*fid];
+                    let result = (e.ty != Ty::Void).then(|| self.append_plain(E::CallResult(function), e.span));
+                    self.push(block, Statement::Call { function, arguments: args, result }, e.span);
+                } else {
+                    self.expr(e, block);
+                }
+            }
+            Stmt::If { cond, then, otherwise, span: sp } => {
+                if let ExprKind::Bool(true) = cond.kind {
+                    // A plain nested block.
+                    let inner = self.block_in(then, block);
+                    self.push(block, Statement::Block(inner), *sp);
+                    return;
+                }
+                let c = self.expr(cond, block);
+                self.flush(block);
+                let accept = self.block(then);
+                let reject = self.block(otherwise);
+                self.push(block, Statement::If { condition: c, accept, reject }, *sp);
+            }
+            Stmt::While { cond, body, span: sp } => {
+                self.flush(block);
+                let mut lb = Block::new();
+                let c = self.expr(cond, &mut lb);
+                let not_c = self.append(E::Unary { op: naga::UnaryOperator::LogicalNot, expr: c }, cond.span);
+                self.flush(&mut lb);
+                let mut brk = Block::new();
+                brk.push(Statement::Break, span(*sp));
+                lb.push(Statement::If { condition: not_c, accept: brk, reject: Block::new() }, span(cond.span));
+                for st in body {
+                    self.stmt(st, &mut lb);
+                }
+                self.flush(&mut lb);
+                self.push(block, Statement::Loop { body: lb, continuing: Block::new(), break_if: None }, *sp);
+            }
+            Stmt::For { var, start, end, body, span: sp } => {
+                let l = &self.sema_locals[*var];
+                let ty = self.m.ty(&l.ty);
+                let v = self.func.local_variables.append(naga::LocalVariable { name: Some(l.name.clone()), ty, init: None }, span(l.span));
+                self.locals[*var] = LocalSlot::Var(v);
+                let ptr = self.append_plain(E::LocalVariable(v), *sp);
+                let s0 = self.expr(start, block);
+                self.push(block, Statement::Store { pointer: ptr, value: s0 }, start.span);
+                // The bound is evaluated once, before the loop.
+                let e0 = self.expr(end, block);
+                self.flush(block);
+                let mut lb = Block::new();
+                let cur = self.append(E::Load { pointer: ptr }, *sp);
+                let more = self.append(E::Binary { op: naga::BinaryOperator::Less, left: cur, right: e0 }, end.span);
+                let done = self.append(E::Unary { op: naga::UnaryOperator::LogicalNot, expr: more }, end.span);
+                self.flush(&mut lb);
+                let mut brk = Block::new();
+                brk.push(Statement::Break, span(*sp));
+                lb.push(Statement::If { condition: done, accept: brk, reject: Block::new() }, span(end.span));
+                for st in body {
+                    self.stmt(st, &mut lb);
+                }
+                self.flush(&mut lb);
+                let mut cont = Block::new();
+                let cur2 = self.append(E::Load { pointer: ptr }, *sp);
+                let one = match l.ty {
+                    Ty::Scalar(Scalar::Uint) => naga::Literal::U32(1),
+                    _ => naga::Literal::I32(1),
+                };
+                let one = self.append_plain(E::Literal(one), *sp);
+                let next = self.append(E::Binary { op: naga::BinaryOperator::Add, left: cur2, right: one }, *sp);
+                self.push(&mut cont, Statement::Store { pointer: ptr, value: next }, *sp);
+                self.flush(&mut cont);
+                self.push(block, Statement::Loop { body: lb, continuing: cont, break_if: None }, *sp);
+            }
+            Stmt::Return(value, sp) => match (&self.kind, value) {
+                (FnKind::Entry(_), _) => self.entry_return(block, *sp),
+                (FnKind::Helper, v) => {
+                    let value = v.as_ref().map(|e| self.expr(e, block));
+                    self.push(block, Statement::Return { value }, *sp);
+                }
+            },
+            Stmt::Break(sp) => self.push(block, Statement::Break, *sp),
+            Stmt::Continue(sp) => self.push(block, Statement::Continue, *sp),
+            Stmt::Discard(sp) => self.push(block, Statement::Kill, *sp),
+        }
+    }
+
+    fn block_in(&mut self, stmts: &[Stmt], outer: &mut Block) -> Block {
+        self.flush(outer);
+        self.block(stmts)
+    }
+
+    fn is_emitted(&self, h: Handle<E>) -> bool {
+        !matches!(
+            self.func.expressions[h],
+            E::Literal(_) | E::Constant(_) | E::ZeroValue(_) | E::FunctionArgument(_) | E::GlobalVariable(_) | E::LocalVariable(_) | E::CallResult(_)
+        )
+    }
+
+    fn assign(&mut self, target: &Expr, op: Option<BinaryOp>, value: &Expr, sp: crate::source::Span, block: &mut Block) {
+        // A multi-component swizzle is written as a whole-vector store.
+        if let ExprKind::Swizzle(base, comps) = &target.kind {
+            if comps.len() > 1 {
+                let Some(base_ptr) = self.pointer(base, block) else { return };
+                let old = self.append(E::Load { pointer: base_ptr }, sp);
+                let mut new = self.expr(value, block);
+                if let Some(op) = op {
+                    let cur = self.swizzle(old, comps, target.span);
+                    new = self.binary(op, cur, &target.ty, new, &value.ty, sp);
+                }
+                let width = base.ty.width().unwrap_or(4);
+                let mut parts = Vec::new();
+                for i in 0..width {
+                    let part = match comps.iter().position(|&c| c == i) {
+                        Some(k) => self.append(E::AccessIndex { base: new, index: k as u32 }, sp),
+                        None => self.append(E::AccessIndex { base: old, index: i as u32 }, sp),
+                    };
+                    parts.push(part);
+                }
+                let ty = self.m.ty(&base.ty);
+                let whole = self.append(E::Compose { ty, components: parts }, sp);
+                self.push(block, Statement::Store { pointer: base_ptr, value: whole }, sp);
+                return;
+            }
+        }
+        let Some(ptr) = self.pointer(target, block) else { return };
+        let mut v = self.expr(value, block);
+        if let Some(op) = op {
+            let cur = self.append(E::Load { pointer: ptr }, sp);
+            v = self.binary(op, cur, &target.ty, v, &value.ty, sp);
+        }
+        self.push(block, Statement::Store { pointer: ptr, value: v }, sp);
+    }
+
+    // ------------------------------------------------------------ expressions
+
+    /// A pointer to a place (variable, field, element, one component), if
+    /// `e` is one.
+    fn pointer(&mut self, e: &Expr, block: &mut Block) -> Option<Handle<E>> {
+        match &e.kind {
+            ExprKind::Local(id) => match self.locals[*id] {
+                LocalSlot::Var(v) => Some(self.append_plain(E::LocalVariable(v), e.span)),
+                _ => None,
+            },
+            ExprKind::Global(g) => match self.m.globals[*g] {
+                GlobalSlot::Var(h) => Some(self.append_plain(E::GlobalVariable(h), e.span)),
+                GlobalSlot::Sampler { .. } => None,
+            },
+            ExprKind::Field(base, idx) => {
+                let b = self.pointer(base, block)?;
+                Some(self.append(E::AccessIndex { base: b, index: *idx }, e.span))
+            }
+            ExprKind::Swizzle(base, comps) if comps.len() == 1 => {
+                let b = self.pointer(base, block)?;
+                Some(self.append(E::AccessIndex { base: b, index: comps[0] as u32 }, e.span))
+            }
+            ExprKind::Index(base, index) => {
+                let b = self.pointer(base, block)?;
+                Some(match index.kind {
+                    ExprKind::Int(k) if k >= 0 => self.append(E::AccessIndex { base: b, index: k as u32 }, e.span),
+                    ExprKind::Uint(k) => self.append(E::AccessIndex { base: b, index: k as u32 }, e.span),
+                    _ => {
+                        let i = self.expr(index, block);
+                        self.append(E::Access { base: b, index: i }, e.span)
+                    }
+                })
+            }
+            _ => None,
+        }
+    }
+
+    fn literal(&mut self, l: naga::Literal, s: crate::source::Span) -> Handle<E> {
+        self.append_plain(E::Literal(l), s)
+    }
+
+    /// Broadcasts a scalar to the vector shape of `to` (no-op otherwise).
+    fn splat_to(&mut self, h: Handle<E>, from: &Ty, to: &Ty, s: crate::source::Span) -> Handle<E> {
+        match (from, to) {
+            (Ty::Scalar(_), Ty::Vector(_, n)) => self.append(E::Splat { size: vector_size(*n), value: h }, s),
+            _ => h,
+        }
+    }
+
+    fn swizzle(&mut self, v: Handle<E>, comps: &[u8], s: crate::source::Span) -> Handle<E> {
+        if comps.len() == 1 {
+            return self.append(E::AccessIndex { base: v, index: comps[0] as u32 }, s);
+        }
+        let mut pattern = [naga::SwizzleComponent::X; 4];
+        for (i, &c) in comps.iter().enumerate() {
+            pattern[i] = naga::SwizzleComponent::XYZW[c as usize];
+        }
+        self.append(E::Swizzle { size: vector_size(comps.len() as u8), vector: v, pattern }, s)
+    }
+
+    pub fn expr(&mut self, e: &Expr, block: &mut Block) -> Handle<E> {
+        let s = e.span;
+        match &e.kind {
+            ExprKind::Float(v) => self.literal(naga::Literal::F32(*v as f32), s),
+            ExprKind::Int(v) => self.literal(naga::Literal::I32(*v as i32), s),
+            ExprKind::Uint(v) => self.literal(naga::Literal::U32(*v as u32), s),
+            ExprKind::Bool(v) => self.literal(naga::Literal::Bool(*v), s),
+            ExprKind::Const(c) => {
+                let h = self.m.consts[*c];
+                self.append_plain(E::Constant(h), s)
+            }
+            ExprKind::Local(id) => match self.locals[*id] {
+                LocalSlot::Value(h) => h,
+                LocalSlot::Var(v) => {
+                    let p = self.append_plain(E::LocalVariable(v), s);
+                    self.append(E::Load { pointer: p }, s)
+                }
+                LocalSlot::Unset => {
+                    let ty = self.m.ty(&e.ty);
+                    self.append_plain(E::ZeroValue(ty), s)
+                }
+            },
+            ExprKind::Global(_) | ExprKind::Field(..) | ExprKind::Index(..) if self.is_place(e) => {
+                let p = self.pointer(e, block).expect("is_place checked");
+                self.append(E::Load { pointer: p }, s)
+            }
+            ExprKind::Swizzle(base, comps) => {
+                if comps.len() == 1 && self.is_place(base) {
+                    let p = self.pointer(e, block).expect("is_place checked");
+                    return self.append(E::Load { pointer: p }, s);
+                }
+                let v = self.expr(base, block);
+                self.swizzle(v, comps, s)
+            }
+            ExprKind::Global(_) => {
+                // Samplers are only used through texture builtins.
+                let ty = self.m.ty(&e.ty);
+                self.append_plain(E::ZeroValue(ty), s)
+            }
+            ExprKind::Field(base, idx) => {
+                let b = self.expr(base, block);
+                self.append(E::AccessIndex { base: b, index: *idx }, s)
+            }
+            ExprKind::Index(base, index) => {
+                let b = self.expr(base, block);
+                let i = self.expr(index, block);
+                self.append(E::Access { base: b, index: i }, s)
+            }
+            ExprKind::Unary(op, x) => {
+                let v = self.expr(x, block);
+                let op = match op {
+                    UnaryOp::Neg => naga::UnaryOperator::Negate,
+                    UnaryOp::Not => naga::UnaryOperator::LogicalNot,
+                    UnaryOp::BitNot => naga::UnaryOperator::BitwiseNot,
+                    _ => return v,
+                };
+                self.append(E::Unary { op, expr: v }, s)
+            }
+            ExprKind::Binary(op, l, r) => {
+                let lh = self.expr(l, block);
+                let rh = self.expr(r, block);
+                self.binary(*op, lh, &l.ty, rh, &r.ty, s)
+            }
+            ExprKind::Select { cond, accept, reject } => {
+                let c = self.expr(cond, block);
+                let a = self.expr(accept, block);
+                let r = self.expr(reject, block);
+                self.append(E::Select { condition: c, accept: a, reject: r }, s)
+            }
+            ExprKind::Call(fid, args) => {
+                let args: Vec<Handle<E>> = args.iter().map(|a| self.expr(a, block)).collect();
+                let function = self.m.functions[*fid];
+                let result = self.append_plain(E::CallResult(function), s);
+                self.push(block, Statement::Call { function, arguments: args, result: Some(result) }, s);
+                result
+            }
+            ExprKind::Builtin(b, args) => self.builtin(*b, args, &e.ty, s, block),
+            ExprKind::Construct(args) => self.construct(&e.ty, args, s, block),
+        }
+    }
+
+    fn is_place(&self, e: &Expr) -> bool {
+        match &e.kind {
+            ExprKind::Local(id) => matches!(self.locals[*id], LocalSlot::Var(_)),
+            ExprKind::Global(g) => matches!(self.m.globals[*g], GlobalSlot::Var(_)),
+            ExprKind::Field(b, _) | ExprKind::Index(b, _) => self.is_place(b),
+            ExprKind::Swizzle(b, c) => c.len() == 1 && self.is_place(b),
+            _ => false,
+        }
+    }
+
+    /// `l op r` with GLSL semantics on naga: scalars splatted where naga
+    /// wants equal shapes, float `%` as GLSL `mod`, vector `==` reduced.
+    pub fn binary(&mut self, op: BinaryOp, l: Handle<E>, lt: &Ty, r: Handle<E>, rt: &Ty, s: crate::source::Span) -> Handle<E> {
+        use naga::BinaryOperator as Bo;
+        let vec_ty = if matches!(lt, Ty::Vector(..)) { lt.clone() } else { rt.clone() };
+        let (mut l, mut r) = (l, r);
+        let needs_same_shape = !matches!(op, BinaryOp::Mul | BinaryOp::Shl | BinaryOp::Shr);
+        if needs_same_shape || (op == BinaryOp::Mul && matches!((lt, rt), (Ty::Scalar(_), Ty::Scalar(_)))) {
+            l = self.splat_to(l, lt, &vec_ty, s);
+            r = self.splat_to(r, rt, &vec_ty, s);
+        }
+        let bo = match op {
+            BinaryOp::Add => Bo::Add,
+            BinaryOp::Sub => Bo::Subtract,
+            BinaryOp::Mul => Bo::Multiply,
+            BinaryOp::Div => Bo::Divide,
+            BinaryOp::Mod => {
+                if lt.scalar() == Some(Scalar::Float) {
+                    // GLSL mod: x - y * floor(x / y).
+                    let q = self.append(E::Binary { op: Bo::Divide, left: l, right: r }, s);
+                    let f = self.append(E::Math { fun: naga::MathFunction::Floor, arg: q, arg1: None, arg2: None, arg3: None }, s);
+                    let m = self.append(E::Binary { op: Bo::Multiply, left: r, right: f }, s);
+                    return self.append(E::Binary { op: Bo::Subtract, left: l, right: m }, s);
+                }
+                Bo::Modulo
+            }
+            BinaryOp::Eq | BinaryOp::Ne => {
+                let bo = if op == BinaryOp::Eq { Bo::Equal } else { Bo::NotEqual };
+                let c = self.append(E::Binary { op: bo, left: l, right: r }, s);
+                if matches!(lt, Ty::Vector(..)) {
+                    let fun = if op == BinaryOp::Eq { naga::RelationalFunction::All } else { naga::RelationalFunction::Any };
+                    return self.append(E::Relational { fun, argument: c }, s);
+                }
+                return c;
+            }
+            BinaryOp::Lt => Bo::Less,
+            BinaryOp::Le => Bo::LessEqual,
+            BinaryOp::Gt => Bo::Greater,
+            BinaryOp::Ge => Bo::GreaterEqual,
+            BinaryOp::And => Bo::LogicalAnd,
+            BinaryOp::Or => Bo::LogicalOr,
+            BinaryOp::Xor => Bo::NotEqual,
+            BinaryOp::BitAnd => Bo::And,
+            BinaryOp::BitOr => Bo::InclusiveOr,
+            BinaryOp::BitXor => Bo::ExclusiveOr,
+            BinaryOp::Shl | BinaryOp::Shr => {
+                // naga (like WGSL) wants an unsigned shift amount.
+                if rt.scalar() == Some(Scalar::Int) {
+                    r = self.append(E::As { expr: r, kind: naga::ScalarKind::Uint, convert: Some(4) }, s);
+                }
+                if op == BinaryOp::Shl {
+                    Bo::ShiftLeft
+                } else {
+                    Bo::ShiftRight
+                }
+            }
+        };
+        self.append(E::Binary { op: bo, left: l, right: r }, s)
+    }
+
+    fn math(&mut self, fun: naga::MathFunction, args: &[Handle<E>], s: crate::source::Span) -> Handle<E> {
+        self.append(E::Math { fun, arg: args[0], arg1: args.get(1).copied(), arg2: args.get(2).copied(), arg3: args.get(3).copied() }, s)
+    }
+
+    fn convert(&mut self, h: Handle<E>, from: &Ty, to: Scalar, s: crate::source::Span) -> Handle<E> {
+        if from.scalar() == Some(to) {
+            return h;
+        }
+        let width = if to == Scalar::Bool { 1 } else { 4 };
+        self.append(E::As { expr: h, kind: naga_scalar(to).kind, convert: Some(width) }, s)
+    }
+
+    fn builtin(&mut self, b: Builtin, args: &[Expr], ret: &Ty, s: crate::source::Span, block: &mut Block) -> Handle<E> {
+        use naga::MathFunction as Mf;
+        if matches!(b, Builtin::Texture | Builtin::TextureLod | Builtin::TextureCompare | Builtin::TextureProj | Builtin::TexelFetch | Builtin::TextureSize) {
+            return self.texture(b, args, ret, s, block);
+        }
+        let mut hs: Vec<Handle<E>> = args.iter().map(|a| self.expr(a, block)).collect();
+        match b {
+            Builtin::Math(fun) => {
+                // Scalars of a vector call are broadcast (min(v, 0.0), mix(a, b, t), step(0.5, v)).
+                if matches!(ret, Ty::Vector(..)) && !matches!(fun, Mf::Cross) {
+                    for (h, a) in hs.iter_mut().zip(args) {
+                        *h = self.splat_to(*h, &a.ty, ret, s);
+                    }
+                }
+                self.math(fun, &hs, s)
+            }
+            Builtin::Saturate => self.math(Mf::Saturate, &hs, s),
+            Builtin::Rcp => {
+                let one = self.literal(naga::Literal::F32(1.0), s);
+                let one = self.splat_to(one, &Ty::Scalar(Scalar::Float), ret, s);
+                self.append(E::Binary { op: naga::BinaryOperator::Divide, left: one, right: hs[0] }, s)
+            }
+            Builtin::Mod => self.binary(BinaryOp::Mod, hs[0], &args[0].ty, hs[1], &args[1].ty, s),
+            Builtin::Any => self.append(E::Relational { fun: naga::RelationalFunction::Any, argument: hs[0] }, s),
+            Builtin::All => self.append(E::Relational { fun: naga::RelationalFunction::All, argument: hs[0] }, s),
+            Builtin::Not => self.append(E::Unary { op: naga::UnaryOperator::LogicalNot, expr: hs[0] }, s),
+            Builtin::Compare(op) => {
+                use naga::BinaryOperator as Bo;
+                let bo = match op {
+                    BinaryOp::Lt => Bo::Less,
+                    BinaryOp::Le => Bo::LessEqual,
+                    BinaryOp::Gt => Bo::Greater,
+                    BinaryOp::Ge => Bo::GreaterEqual,
+                    BinaryOp::Eq => Bo::Equal,
+                    _ => Bo::NotEqual,
+                };
+                self.append(E::Binary { op: bo, left: hs[0], right: hs[1] }, s)
+            }
+            Builtin::Derivative(axis, ctrl) => self.append(E::Derivative { axis, ctrl, expr: hs[0] }, s),
+            _ => unreachable!("texture builtins handled above"),
+        }
+    }
+
+    fn texture(&mut self, b: Builtin, args: &[Expr], ret: &Ty, s: crate::source::Span, block: &mut Block) -> Handle<E> {
+        let ExprKind::Global(g) = args[0].kind else { unreachable!("sema checks the sampler argument") };
+        let GlobalSlot::Sampler { image, sampler } = self.m.globals[g] else { unreachable!("sema checks the sampler argument") };
+        let GlobalKind::Sampler { kind, .. } = self.m.p.globals[g].kind else { unreachable!("sema checks the sampler argument") };
+        let img = self.append_plain(E::GlobalVariable(image), args[0].span);
+        let rest: Vec<Handle<E>> = args[1..].iter().map(|a| self.expr(a, block)).collect();
+        let f32s = Ty::Scalar(Scalar::Float);
+        // Split an array coordinate into uv and a rounded integer layer.
+        let split_layer = |this: &mut Self, coord: Handle<E>| -> (Handle<E>, Option<Handle<E>>) {
+            if !kind.is_array() {
+                return (coord, None);
+            }
+            let uv = this.swizzle(coord, &[0, 1], s);
+            let layer = this.append(E::AccessIndex { base: coord, index: 2 }, s);
+            let layer = this.math(naga::MathFunction::Round, &[layer], s);
+            let layer = this.convert(layer, &f32s, Scalar::Int, s);
+            (uv, Some(layer))
+        };
+        match b {
+            Builtin::Texture | Builtin::TextureLod | Builtin::TextureCompare | Builtin::TextureProj => {
+                let smp = self.append_plain(E::GlobalVariable(sampler), args[0].span);
+                let (coordinate, array_index, depth_ref) = if b == Builtin::TextureProj {
+                    let v = rest[0];
+                    let n = args[1].ty.width().unwrap_or(4);
+                    let q = self.append(E::AccessIndex { base: v, index: n as u32 - 1 }, s);
+                    let xy = self.swizzle(v, &[0, 1], s);
+                    let q2 = self.append(E::Splat { size: naga::VectorSize::Bi, value: q }, s);
+                    let uv = self.append(E::Binary { op: naga::BinaryOperator::Divide, left: xy, right: q2 }, s);
+                    let dref = if kind.is_shadow() {
+                        let z = self.append(E::AccessIndex { base: v, index: 2 }, s);
+                        Some(self.append(E::Binary { op: naga::BinaryOperator::Divide, left: z, right: q }, s))
+                    } else {
+                        None
+                    };
+                    (uv, None, dref)
+                } else {
+                    let (c, layer) = split_layer(self, rest[0]);
+                    let dref = (b == Builtin::TextureCompare).then(|| rest[1]);
+                    (c, layer, dref)
+                };
+                let level = match b {
+                    Builtin::TextureLod => naga::SampleLevel::Exact(rest[1]),
+                    Builtin::Texture if rest.len() == 2 => naga::SampleLevel::Bias(rest[1]),
+                    _ => naga::SampleLevel::Auto,
+                };
+                self.append(
+                    E::ImageSample { image: img, sampler: smp, gather: None, coordinate, array_index, offset: None, level, depth_ref, clamp_to_edge: false },
+                    s,
+                )
+            }
+            Builtin::TexelFetch => {
+                let (coordinate, array_index) = if kind.is_array() {
+                    let c = rest[0];
+                    let xy = self.swizzle(c, &[0, 1], s);
+                    let layer = self.append(E::AccessIndex { base: c, index: 2 }, s);
+                    (xy, Some(layer))
+                } else {
+                    (rest[0], None)
+                };
+                self.append(E::ImageLoad { image: img, coordinate, array_index, sample: None, level: Some(rest[1]) }, s)
+            }
+            Builtin::TextureSize => {
+                let size = self.append(E::ImageQuery { image: img, query: naga::ImageQuery::Size { level: Some(rest[0]) } }, s);
+                let dims = if kind.dim() == naga::ImageDimension::D3 { 3 } else { 2 };
+                let size = self.convert(size, &Ty::Vector(Scalar::Uint, dims), Scalar::Int, s);
+                if kind.is_array() {
+                    let layers = self.append(E::ImageQuery { image: img, query: naga::ImageQuery::NumLayers }, s);
+                    let layers = self.convert(layers, &Ty::Scalar(Scalar::Uint), Scalar::Int, s);
+                    let ty = self.m.ty(ret);
+                    return self.append(E::Compose { ty, components: vec![size, layers] }, s);
+                }
+                size
+            }
+            _ => unreachable!("only texture builtins"),
+        }
+    }
+
+    fn construct(&mut self, ty: &Ty, args: &[Expr], s: crate::source::Span, block: &mut Block) -> Handle<E> {
+        let hs: Vec<Handle<E>> = args.iter().map(|a| self.expr(a, block)).collect();
+        match ty {
+            Ty::Scalar(to) => self.convert(hs[0], &args[0].ty, *to, s),
+            Ty::Vector(to, n) => {
+                if hs.len() == 1 {
+                    let v = self.convert(hs[0], &args[0].ty, *to, s);
+                    return match args[0].ty {
+                        Ty::Scalar(_) => self.append(E::Splat { size: vector_size(*n), value: v }, s),
+                        Ty::Vector(_, m) if m > *n => {
+                            let comps: Vec<u8> = (0..*n).collect();
+                            self.swizzle(v, &comps, s)
+                        }
+                        _ => v,
+                    };
+                }
+                let comps: Vec<Handle<E>> = hs.iter().zip(args).map(|(h, a)| self.convert(*h, &a.ty, *to, s)).collect();
+                let t = self.m.ty(ty);
+                self.append(E::Compose { ty: t, components: comps }, s)
+            }
+            Ty::Matrix(c, r) => {
+                let t = self.m.ty(ty);
+                if hs.len() == 1 && args[0].ty == *ty {
+                    return hs[0];
+                }
+                let col_ty = self.m.ty(&Ty::Vector(Scalar::Float, *r));
+                let cols: Vec<Handle<E>> = if hs.len() == *c as usize && matches!(args[0].ty, Ty::Vector(..)) {
+                    hs
+                } else if hs.len() == 1 {
+                    // A diagonal matrix.
+                    let zero = self.literal(naga::Literal::F32(0.0), s);
+                    (0..*c)
+                        .map(|i| {
+                            let comps = (0..*r).map(|j| if i == j { hs[0] } else { zero }).collect();
+                            self.append(E::Compose { ty: col_ty, components: comps }, s)
+                        })
+                        .collect()
+                } else {
+                    hs.chunks(*r as usize).map(|col| self.append(E::Compose { ty: col_ty, components: col.to_vec() }, s)).collect()
+                };
+                self.append(E::Compose { ty: t, components: cols }, s)
+            }
+            _ => {
+                let t = self.m.ty(ty);
+                self.append(E::Compose { ty: t, components: hs }, s)
+            }
+        }
+    }
+}
+
+/// Whether an interface global is read (an input) in this stage.
+pub fn is_stage_input(kind: &GlobalKind, stage: naga::ShaderStage) -> bool {
+    match kind {
+        GlobalKind::Io { kind: IoKind::In, .. } => true,
+        GlobalKind::Io { kind: IoKind::InOut, .. } => stage == naga::ShaderStage::Fragment,
+        GlobalKind::Builtin(b) => !b.is_output(),
+        _ => false,
+    }
+}
+
+/// Whether an interface global is written (an output) in this stage.
+pub fn is_stage_output(kind: &GlobalKind, stage: naga::ShaderStage) -> bool {
+    match kind {
+        GlobalKind::Io { kind: IoKind::Out, .. } => true,
+        GlobalKind::Io { kind: IoKind::InOut, .. } => stage == naga::ShaderStage::Vertex,
+        GlobalKind::Builtin(b) => b.is_output(),
+        _ => false,
+    }
+}

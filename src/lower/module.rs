@@ -1,0 +1,308 @@
+//! Module-level lowering: types, constants, globals, and validation.
+
+use std::collections::HashMap;
+
+use naga::{Handle, Module, Type, TypeInner};
+
+use super::Flavor;
+use crate::diag::Diagnostic;
+use crate::lower::{Resource, ResourceKind};
+use crate::sema::{self, ConstValue, GlobalKind, Scalar, Ty};
+use crate::source::Span;
+
+/// How one sema global lives in the naga module.
+#[derive(Clone, Copy, Debug)]
+pub enum GlobalSlot {
+    /// A uniform (Uniform space) or an interface/builtin copy (Private space).
+    Var(Handle<naga::GlobalVariable>),
+    /// A sampler: the image and the sampler halves.
+    Sampler { image: Handle<naga::GlobalVariable>, sampler: Handle<naga::GlobalVariable> },
+}
+
+pub struct ModuleBuilder<'p> {
+    pub p: &'p sema::Program,
+    pub module: Module,
+    pub flavor: Flavor,
+    types: HashMap<Ty, Handle<Type>>,
+    layouter: naga::proc::Layouter,
+    pub globals: Vec<GlobalSlot>,
+    pub consts: Vec<Handle<naga::Constant>>,
+    pub functions: Vec<Handle<naga::Function>>,
+    pub resources: Vec<Resource>,
+    /// Index into `resources` per sema global, for resources.
+    pub resource_of: HashMap<sema::GlobalId, usize>,
+}
+
+pub fn naga_scalar(s: Scalar) -> naga::Scalar {
+    match s {
+        Scalar::Float => naga::Scalar::F32,
+        Scalar::Int => naga::Scalar::I32,
+        Scalar::Uint => naga::Scalar::U32,
+        Scalar::Bool => naga::Scalar::BOOL,
+    }
+}
+
+pub fn vector_size(n: u8) -> naga::VectorSize {
+    match n {
+        2 => naga::VectorSize::Bi,
+        3 => naga::VectorSize::Tri,
+        _ => naga::VectorSize::Quad,
+    }
+}
+
+impl<'p> ModuleBuilder<'p> {
+    pub fn new(p: &'p sema::Program, flavor: Flavor) -> Self {
+        ModuleBuilder {
+            p,
+            module: Module::default(),
+            flavor,
+            types: HashMap::new(),
+            layouter: naga::proc::Layouter::default(),
+            globals: Vec::new(),
+            consts: Vec::new(),
+            functions: Vec::new(),
+            resources: Vec::new(),
+            resource_of: HashMap::new(),
+        }
+    }
+
+    fn add_type(&mut self, name: Option<String>, inner: TypeInner) -> Handle<Type> {
+        self.module.types.insert(Type { name, inner }, naga::Span::UNDEFINED)
+    }
+
+    fn layout(&mut self, ty: Handle<Type>) -> naga::proc::TypeLayout {
+        // The layouter only ever appends; types are never removed.
+        if self.layouter.update(self.module.to_ctx()).is_err() {
+            return naga::proc::TypeLayout { size: 0, alignment: naga::proc::Alignment::ONE };
+        }
+        self.layouter[ty]
+    }
+
+    /// The naga type of a DSL type (value types only).
+    pub fn ty(&mut self, ty: &Ty) -> Handle<Type> {
+        if let Some(&h) = self.types.get(ty) {
+            return h;
+        }
+        let h = match ty {
+            Ty::Scalar(s) => self.add_type(None, TypeInner::Scalar(naga_scalar(*s))),
+            Ty::Vector(s, n) => self.add_type(None, TypeInner::Vector { size: vector_size(*n), scalar: naga_scalar(*s) }),
+            Ty::Matrix(c, r) => self.add_type(None, TypeInner::Matrix { columns: vector_size(*c), rows: vector_size(*r), scalar: naga::Scalar::F32 }),
+            Ty::Array(elem, n) => {
+                let base = self.ty(elem);
+                let stride = self.layout(base).to_stride();
+                let size = naga::ArraySize::Constant(std::num::NonZeroU32::new(*n).unwrap_or(std::num::NonZeroU32::MIN));
+                self.add_type(None, TypeInner::Array { base, size, stride })
+            }
+            Ty::Struct(id) => {
+                let def = &self.p.structs[*id];
+                let fields: Vec<(String, Ty)> = def.fields.iter().map(|(n, t, _)| (n.clone(), t.clone())).collect();
+                let name = def.name.clone();
+                let members = fields.into_iter().map(|(n, t)| (n, self.ty(&t), None)).collect();
+                self.struct_type(&name, members)
+            }
+            // Samplers, void and error never reach here: sema only lets
+            // value types into variables and expressions that have types.
+            Ty::Sampler(_) | Ty::Void | Ty::Error => self.add_type(None, TypeInner::Scalar(naga::Scalar::F32)),
+        };
+        self.types.insert(ty.clone(), h);
+        h
+    }
+
+    /// A struct type with the natural (WGSL) layout.
+    pub fn struct_type(&mut self, name: &str, fields: Vec<(String, Handle<Type>, Option<naga::Binding>)>) -> Handle<Type> {
+        let mut members = Vec::new();
+        let mut offset = 0u32;
+        let mut align = naga::proc::Alignment::ONE;
+        for (fname, mty, binding) in fields {
+            let layout = self.layout(mty);
+            offset = layout.alignment.round_up(offset);
+            align = align.max(layout.alignment);
+            members.push(naga::StructMember { name: Some(fname), ty: mty, binding, offset });
+            offset += layout.size;
+        }
+        let span = align.round_up(offset);
+        self.add_type(Some(name.to_string()), TypeInner::Struct { members, span })
+    }
+
+    /// Appends a constant value to the global expression arena.
+    fn const_expr(&mut self, v: &ConstValue, ty: &Ty) -> Handle<naga::Expression> {
+        let expr = match (v, ty) {
+            (ConstValue::Float(f), _) => naga::Expression::Literal(naga::Literal::F32(*f as f32)),
+            (ConstValue::Int(i), _) => naga::Expression::Literal(naga::Literal::I32(*i as i32)),
+            (ConstValue::Uint(u), _) => naga::Expression::Literal(naga::Literal::U32(*u as u32)),
+            (ConstValue::Bool(b), _) => naga::Expression::Literal(naga::Literal::Bool(*b)),
+            (ConstValue::Composite(cs), ty) => {
+                let elem_tys: Vec<Ty> = match ty {
+                    Ty::Vector(s, n) => vec![Ty::Scalar(*s); *n as usize],
+                    Ty::Matrix(c, r) => vec![Ty::Vector(Scalar::Float, *r); *c as usize],
+                    Ty::Array(e, n) => vec![(**e).clone(); *n as usize],
+                    Ty::Struct(id) => self.p.structs[*id].fields.iter().map(|f| f.1.clone()).collect(),
+                    _ => Vec::new(),
+                };
+                let components = cs.iter().zip(&elem_tys).map(|(c, t)| self.const_expr(c, t)).collect();
+                let ty = self.ty(ty);
+                naga::Expression::Compose { ty, components }
+            }
+        };
+        self.module.global_expressions.append(expr, naga::Span::UNDEFINED)
+    }
+
+    pub fn declare_consts(&mut self) {
+        for k in &self.p.consts {
+            let init = self.const_expr(&k.value, &k.ty);
+            let ty = self.ty(&k.ty);
+            let h = self.module.constants.append(naga::Constant { name: Some(k.name.clone()), ty, init }, k.span.into());
+            self.consts.push(h);
+        }
+    }
+
+    /// Declares every sema global; resources get bindings in declaration order.
+    pub fn declare_globals(&mut self) {
+        let mut next_binding = 0u32;
+        let with_binding = self.flavor != Flavor::Gl;
+        for (gid, g) in self.p.globals.iter().enumerate() {
+            let span: naga::Span = g.span.into();
+            let slot = match &g.kind {
+                GlobalKind::Uniform => {
+                    let ty = self.ty(&g.ty);
+                    let binding = next_binding;
+                    next_binding += 1;
+                    let h = self.module.global_variables.append(
+                        naga::GlobalVariable {
+                            name: Some(g.name.clone()),
+                            space: naga::AddressSpace::Uniform,
+                            binding: with_binding.then_some(naga::ResourceBinding { group: 0, binding }),
+                            ty,
+                            init: None,
+                            memory_decorations: naga::MemoryDecorations::empty(),
+                        },
+                        span,
+                    );
+                    let dsl_type = show_ty(self.p, &g.ty);
+                    self.resource_of.insert(gid, self.resources.len());
+                    self.resources.push(Resource {
+                        name: g.name.clone(),
+                        span: g.span,
+                        kind: ResourceKind::Uniform { ty, dsl_type },
+                        global: h,
+                        sampler_global: None,
+                        group: 0,
+                        binding,
+                        sampler_binding: None,
+                        texture_unit: None,
+                    });
+                    GlobalSlot::Var(h)
+                }
+                GlobalKind::Sampler { kind, texture_unit } => {
+                    let image_ty = self.add_type(None, TypeInner::Image { dim: kind.dim(), arrayed: kind.is_array(), class: kind.image_class() });
+                    let sampler_ty = self.add_type(None, TypeInner::Sampler { comparison: kind.is_shadow() });
+                    let (tb, sb) = (next_binding, next_binding + 1);
+                    next_binding += 2;
+                    let image = self.module.global_variables.append(
+                        naga::GlobalVariable {
+                            name: Some(g.name.clone()),
+                            space: naga::AddressSpace::Handle,
+                            binding: with_binding.then_some(naga::ResourceBinding { group: 0, binding: tb }),
+                            ty: image_ty,
+                            init: None,
+                            memory_decorations: naga::MemoryDecorations::empty(),
+                        },
+                        span,
+                    );
+                    let sampler = self.module.global_variables.append(
+                        naga::GlobalVariable {
+                            name: Some(format!("{}_sampler", g.name)),
+                            space: naga::AddressSpace::Handle,
+                            binding: with_binding.then_some(naga::ResourceBinding { group: 0, binding: sb }),
+                            ty: sampler_ty,
+                            init: None,
+                            memory_decorations: naga::MemoryDecorations::empty(),
+                        },
+                        span,
+                    );
+                    self.resource_of.insert(gid, self.resources.len());
+                    self.resources.push(Resource {
+                        name: g.name.clone(),
+                        span: g.span,
+                        kind: ResourceKind::Sampler(*kind),
+                        global: image,
+                        sampler_global: Some(sampler),
+                        group: 0,
+                        binding: tb,
+                        sampler_binding: Some(sb),
+                        texture_unit: Some(*texture_unit),
+                    });
+                    GlobalSlot::Sampler { image, sampler }
+                }
+                GlobalKind::Io { .. } | GlobalKind::Builtin(_) => {
+                    let ty = self.ty(&g.ty);
+                    let h = self.module.global_variables.append(
+                        naga::GlobalVariable {
+                            name: Some(g.name.clone()),
+                            space: naga::AddressSpace::Private,
+                            binding: None,
+                            ty,
+                            init: None,
+                            memory_decorations: naga::MemoryDecorations::empty(),
+                        },
+                        span,
+                    );
+                    GlobalSlot::Var(h)
+                }
+            };
+            self.globals.push(slot);
+        }
+    }
+
+    /// Turns implicit-LOD sampling in non-uniform control flow from an
+    /// error into an accepted construct, as GLSL has it (docs/targets.md).
+    pub fn allow_nonuniform_derivatives(&mut self) {
+        use naga::diagnostic_filter::{DiagnosticFilter, DiagnosticFilterNode, FilterableTriggeringRule, Severity, StandardFilterableTriggeringRule};
+        let node = self.module.diagnostic_filters.append(
+            DiagnosticFilterNode {
+                inner: DiagnosticFilter {
+                    new_severity: Severity::Off,
+                    triggering_rule: FilterableTriggeringRule::Standard(StandardFilterableTriggeringRule::DerivativeUniformity),
+                },
+                parent: None,
+            },
+            naga::Span::UNDEFINED,
+        );
+        self.module.diagnostic_filter_leaf = Some(node);
+    }
+}
+
+/// Validates a finished module; a failure is an internal compiler error
+/// located at the span naga reports.
+pub fn validate(module: &Module, flavor: Flavor) -> Result<naga::valid::ModuleInfo, Diagnostic> {
+    use naga::valid::{Capabilities, ValidationFlags, Validator};
+    let (flags, caps) = match flavor {
+        Flavor::Gl => (ValidationFlags::all() - ValidationFlags::BINDINGS, naga::back::glsl::supported_capabilities()),
+        Flavor::Gpu(_) => (ValidationFlags::all(), Capabilities::default()),
+    };
+    Validator::new(flags, caps).validate(module).map_err(|e| {
+        let span = e.spans().next().map(|(s, _)| Span::from(*s)).filter(|s| !s.is_empty());
+        let mut msg = e.as_inner().to_string();
+        let mut src: Option<&dyn std::error::Error> = std::error::Error::source(e.as_inner());
+        while let Some(s) = src {
+            msg.push_str(&format!(": {s}"));
+            src = s.source();
+        }
+        let which = match flavor {
+            Flavor::Gl => "GLSL",
+            Flavor::Gpu(_) => "WGSL/SPIR-V",
+        };
+        let mut d = Diagnostic::bug(format!("naga rejected the IR built for the {which} targets: {msg}"), span);
+        for (_, label) in e.spans().skip(1).take(3) {
+            if !label.is_empty() {
+                d = d.with_note(label.clone());
+            }
+        }
+        d.with_note("this is a bug in umbrac; no output was written")
+    })
+}
+
+pub fn show_ty(p: &sema::Program, ty: &Ty) -> String {
+    let names = p.struct_names();
+    crate::sema::types::TyDisplay { ty, struct_names: &names }.to_string()
+}

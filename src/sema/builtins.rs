@@ -1,0 +1,282 @@
+//! The builtin function table: names, signatures, and what each lowers to.
+//!
+//! Signatures are written in a small pattern language so that one table
+//! both checks calls and prints the expected signatures in errors:
+//! - `G`: float or floatN (every `G` in one signature is the same type)
+//! - `N`: a numeric scalar or vector, any scalar type (all `N` alike); `S`
+//!   is the scalar of that `N`
+//! - `I`: int or intN / uint or uintN (all `I` alike)
+//! - `B`: boolN; `V`: a numeric vector whose `B` result has the same width
+//! - `f`, `i`, `b`: float, int, bool; `f2`, `f3`, `f4`: float vectors
+
+use super::types::{Scalar, Ty, BOOL, FLOAT};
+use naga::MathFunction as Mf;
+
+/// What a builtin call lowers to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Builtin {
+    /// A naga math function; scalar arguments of vector calls are splatted.
+    Math(Mf),
+    /// `saturate(x)`: clamp(x, 0, 1).
+    Saturate,
+    /// `rcp(x)`: 1 / x.
+    Rcp,
+    /// GLSL `mod`: x - y * floor(x / y).
+    Mod,
+    /// `any`, `all` on bool vectors.
+    Any,
+    All,
+    /// `not` on a bool vector.
+    Not,
+    /// `lessThan`, `equal`, ... on vectors: component-wise comparison.
+    Compare(crate::syntax::ast::BinaryOp),
+    Derivative(naga::DerivativeAxis, naga::DerivativeControl),
+    /// `texture(s, uv)` / `texture(s, uv, bias)`.
+    Texture,
+    TextureLod,
+    /// `textureCompare(s, uv, ref)`: depth compare on a shadow sampler.
+    TextureCompare,
+    /// `textureProj(s, uvq)`: uv / q, then `texture`; on a shadow sampler,
+    /// `textureProj(s, uvzq)` compares z / q.
+    TextureProj,
+    TexelFetch,
+    TextureSize,
+}
+
+/// One overload: argument patterns and result pattern.
+struct Sig {
+    args: &'static [&'static str],
+    ret: &'static str,
+}
+
+macro_rules! sigs {
+    ($($ret:literal <- [$($a:literal),*]);* $(;)?) => {
+        &[$(Sig { args: &[$($a),*], ret: $ret }),*]
+    };
+}
+
+struct Entry {
+    name: &'static str,
+    builtin: Builtin,
+    sigs: &'static [Sig],
+}
+
+const UNARY_G: &[Sig] = sigs!["G" <- ["G"]];
+const BINARY_G: &[Sig] = sigs!["G" <- ["G", "G"]];
+
+const TABLE: &[Entry] = &[
+    Entry { name: "sin", builtin: Builtin::Math(Mf::Sin), sigs: UNARY_G },
+    Entry { name: "cos", builtin: Builtin::Math(Mf::Cos), sigs: UNARY_G },
+    Entry { name: "tan", builtin: Builtin::Math(Mf::Tan), sigs: UNARY_G },
+    Entry { name: "asin", builtin: Builtin::Math(Mf::Asin), sigs: UNARY_G },
+    Entry { name: "acos", builtin: Builtin::Math(Mf::Acos), sigs: UNARY_G },
+    Entry { name: "atan", builtin: Builtin::Math(Mf::Atan), sigs: UNARY_G },
+    Entry { name: "atan2", builtin: Builtin::Math(Mf::Atan2), sigs: BINARY_G },
+    Entry { name: "sinh", builtin: Builtin::Math(Mf::Sinh), sigs: UNARY_G },
+    Entry { name: "cosh", builtin: Builtin::Math(Mf::Cosh), sigs: UNARY_G },
+    Entry { name: "tanh", builtin: Builtin::Math(Mf::Tanh), sigs: UNARY_G },
+    Entry { name: "radians", builtin: Builtin::Math(Mf::Radians), sigs: UNARY_G },
+    Entry { name: "degrees", builtin: Builtin::Math(Mf::Degrees), sigs: UNARY_G },
+    Entry { name: "exp", builtin: Builtin::Math(Mf::Exp), sigs: UNARY_G },
+    Entry { name: "exp2", builtin: Builtin::Math(Mf::Exp2), sigs: UNARY_G },
+    Entry { name: "log", builtin: Builtin::Math(Mf::Log), sigs: UNARY_G },
+    Entry { name: "log2", builtin: Builtin::Math(Mf::Log2), sigs: UNARY_G },
+    Entry { name: "sqrt", builtin: Builtin::Math(Mf::Sqrt), sigs: UNARY_G },
+    Entry { name: "inversesqrt", builtin: Builtin::Math(Mf::InverseSqrt), sigs: UNARY_G },
+    Entry { name: "rsqrt", builtin: Builtin::Math(Mf::InverseSqrt), sigs: UNARY_G },
+    Entry { name: "floor", builtin: Builtin::Math(Mf::Floor), sigs: UNARY_G },
+    Entry { name: "ceil", builtin: Builtin::Math(Mf::Ceil), sigs: UNARY_G },
+    Entry { name: "fract", builtin: Builtin::Math(Mf::Fract), sigs: UNARY_G },
+    Entry { name: "trunc", builtin: Builtin::Math(Mf::Trunc), sigs: UNARY_G },
+    Entry { name: "round", builtin: Builtin::Math(Mf::Round), sigs: UNARY_G },
+    Entry { name: "roundEven", builtin: Builtin::Math(Mf::Round), sigs: UNARY_G },
+    Entry { name: "abs", builtin: Builtin::Math(Mf::Abs), sigs: sigs!["N" <- ["N"]] },
+    Entry { name: "sign", builtin: Builtin::Math(Mf::Sign), sigs: sigs!["N" <- ["N"]] },
+    Entry { name: "min", builtin: Builtin::Math(Mf::Min), sigs: sigs!["N" <- ["N", "N"]; "N" <- ["N", "S"]] },
+    Entry { name: "max", builtin: Builtin::Math(Mf::Max), sigs: sigs!["N" <- ["N", "N"]; "N" <- ["N", "S"]] },
+    Entry { name: "clamp", builtin: Builtin::Math(Mf::Clamp), sigs: sigs!["N" <- ["N", "N", "N"]; "N" <- ["N", "S", "S"]] },
+    Entry { name: "saturate", builtin: Builtin::Saturate, sigs: UNARY_G },
+    Entry { name: "rcp", builtin: Builtin::Rcp, sigs: UNARY_G },
+    Entry { name: "mix", builtin: Builtin::Math(Mf::Mix), sigs: sigs!["G" <- ["G", "G", "G"]; "G" <- ["G", "G", "f"]] },
+    Entry { name: "lerp", builtin: Builtin::Math(Mf::Mix), sigs: sigs!["G" <- ["G", "G", "G"]; "G" <- ["G", "G", "f"]] },
+    Entry { name: "step", builtin: Builtin::Math(Mf::Step), sigs: sigs!["G" <- ["G", "G"]; "G" <- ["f", "G"]] },
+    Entry { name: "smoothstep", builtin: Builtin::Math(Mf::SmoothStep), sigs: sigs!["G" <- ["G", "G", "G"]; "G" <- ["f", "f", "G"]] },
+    Entry { name: "pow", builtin: Builtin::Math(Mf::Pow), sigs: BINARY_G },
+    Entry { name: "mod", builtin: Builtin::Mod, sigs: sigs!["G" <- ["G", "G"]; "G" <- ["G", "f"]] },
+    Entry { name: "fma", builtin: Builtin::Math(Mf::Fma), sigs: sigs!["G" <- ["G", "G", "G"]] },
+    Entry { name: "length", builtin: Builtin::Math(Mf::Length), sigs: sigs!["f" <- ["G"]] },
+    Entry { name: "distance", builtin: Builtin::Math(Mf::Distance), sigs: sigs!["f" <- ["G", "G"]] },
+    Entry { name: "dot", builtin: Builtin::Math(Mf::Dot), sigs: sigs!["f" <- ["G", "G"]] },
+    Entry { name: "cross", builtin: Builtin::Math(Mf::Cross), sigs: sigs!["f3" <- ["f3", "f3"]] },
+    Entry { name: "normalize", builtin: Builtin::Math(Mf::Normalize), sigs: UNARY_G },
+    Entry { name: "reflect", builtin: Builtin::Math(Mf::Reflect), sigs: BINARY_G },
+    Entry { name: "refract", builtin: Builtin::Math(Mf::Refract), sigs: sigs!["G" <- ["G", "G", "f"]] },
+    Entry { name: "faceforward", builtin: Builtin::Math(Mf::FaceForward), sigs: sigs!["G" <- ["G", "G", "G"]] },
+    Entry { name: "transpose", builtin: Builtin::Math(Mf::Transpose), sigs: sigs!["M" <- ["M"]] },
+    Entry { name: "determinant", builtin: Builtin::Math(Mf::Determinant), sigs: sigs!["f" <- ["M"]] },
+    Entry { name: "any", builtin: Builtin::Any, sigs: sigs!["b" <- ["B"]] },
+    Entry { name: "all", builtin: Builtin::All, sigs: sigs!["b" <- ["B"]] },
+    Entry { name: "not", builtin: Builtin::Not, sigs: sigs!["B" <- ["B"]] },
+    Entry { name: "lessThan", builtin: Builtin::Compare(crate::syntax::ast::BinaryOp::Lt), sigs: sigs!["B" <- ["V", "V"]] },
+    Entry { name: "lessThanEqual", builtin: Builtin::Compare(crate::syntax::ast::BinaryOp::Le), sigs: sigs!["B" <- ["V", "V"]] },
+    Entry { name: "greaterThan", builtin: Builtin::Compare(crate::syntax::ast::BinaryOp::Gt), sigs: sigs!["B" <- ["V", "V"]] },
+    Entry { name: "greaterThanEqual", builtin: Builtin::Compare(crate::syntax::ast::BinaryOp::Ge), sigs: sigs!["B" <- ["V", "V"]] },
+    Entry { name: "equal", builtin: Builtin::Compare(crate::syntax::ast::BinaryOp::Eq), sigs: sigs!["B" <- ["V", "V"]] },
+    Entry { name: "notEqual", builtin: Builtin::Compare(crate::syntax::ast::BinaryOp::Ne), sigs: sigs!["B" <- ["V", "V"]] },
+    Entry {
+        name: "dFdx",
+        builtin: Builtin::Derivative(naga::DerivativeAxis::X, naga::DerivativeControl::None),
+        sigs: UNARY_G,
+    },
+    Entry {
+        name: "dFdy",
+        builtin: Builtin::Derivative(naga::DerivativeAxis::Y, naga::DerivativeControl::None),
+        sigs: UNARY_G,
+    },
+    Entry {
+        name: "fwidth",
+        builtin: Builtin::Derivative(naga::DerivativeAxis::Width, naga::DerivativeControl::None),
+        sigs: UNARY_G,
+    },
+];
+
+/// Texture builtins: checked by `check_texture_call` (their signatures depend
+/// on the sampler type).
+pub const TEXTURE_FUNCTIONS: &[(&str, Builtin)] = &[
+    ("texture", Builtin::Texture),
+    ("textureLod", Builtin::TextureLod),
+    ("textureCompare", Builtin::TextureCompare),
+    ("textureProj", Builtin::TextureProj),
+    ("texelFetch", Builtin::TexelFetch),
+    ("textureSize", Builtin::TextureSize),
+];
+
+/// Every builtin function name, for "did you mean" suggestions.
+pub fn all_names() -> impl Iterator<Item = &'static str> {
+    TABLE.iter().map(|e| e.name).chain(TEXTURE_FUNCTIONS.iter().map(|(n, _)| *n))
+}
+
+pub fn is_builtin(name: &str) -> bool {
+    all_names().any(|n| n == name)
+}
+
+/// Resolves a call of a non-texture builtin by argument types.
+/// `Ok(None)`: not a builtin of this table. `Err(signatures)`: no overload fits.
+pub fn resolve(name: &str, args: &[Ty]) -> Result<Option<(Builtin, Ty)>, Vec<String>> {
+    let entries: Vec<&Entry> = TABLE.iter().filter(|e| e.name == name).collect();
+    if entries.is_empty() {
+        return Ok(None);
+    }
+    for e in &entries {
+        for sig in e.sigs {
+            if let Some(ret) = match_sig(sig, args) {
+                return Ok(Some((e.builtin, ret)));
+            }
+        }
+    }
+    Err(entries.iter().flat_map(|e| e.sigs.iter().map(move |s| format_sig(e.name, s))).collect())
+}
+
+/// Bindings of the pattern variables while matching one signature.
+#[derive(Default)]
+struct Bind {
+    g: Option<u8>,
+    n: Option<(Scalar, u8)>,
+    v: Option<(Scalar, u8)>,
+    b: Option<u8>,
+    m: Option<(u8, u8)>,
+}
+
+fn match_one(pat: &str, ty: &Ty, bind: &mut Bind) -> bool {
+    fn unify<T: PartialEq + Copy>(slot: &mut Option<T>, v: T) -> bool {
+        match *slot {
+            Some(old) => old == v,
+            None => {
+                *slot = Some(v);
+                true
+            }
+        }
+    }
+    match pat {
+        "G" => match *ty {
+            Ty::Scalar(Scalar::Float) => unify(&mut bind.g, 1),
+            Ty::Vector(Scalar::Float, n) => unify(&mut bind.g, n),
+            _ => false,
+        },
+        "N" => match (ty.scalar(), ty.width()) {
+            (Some(s), Some(w)) if s.is_numeric() => unify(&mut bind.n, (s, w)),
+            _ => false,
+        },
+        "S" => match *ty {
+            Ty::Scalar(s) if s.is_numeric() => bind.n.is_none_or(|(ns, _)| ns == s),
+            _ => false,
+        },
+        "V" => match *ty {
+            Ty::Vector(s, n) if s.is_numeric() || s == Scalar::Bool => unify(&mut bind.v, (s, n)),
+            _ => false,
+        },
+        "B" => match *ty {
+            Ty::Vector(Scalar::Bool, n) => unify(&mut bind.b, n),
+            _ => false,
+        },
+        "M" => match *ty {
+            Ty::Matrix(c, r) => unify(&mut bind.m, (c, r)),
+            _ => false,
+        },
+        "f" => *ty == FLOAT,
+        "b" => *ty == BOOL,
+        "f3" => *ty == Ty::Vector(Scalar::Float, 3),
+        _ => false,
+    }
+}
+
+fn match_sig(sig: &Sig, args: &[Ty]) -> Option<Ty> {
+    if sig.args.len() != args.len() {
+        return None;
+    }
+    let mut bind = Bind::default();
+    // Two passes so that `S` sees `N` bound by a later argument too.
+    for _ in 0..2 {
+        for (p, a) in sig.args.iter().zip(args) {
+            if !match_one(p, a, &mut bind) {
+                return None;
+            }
+        }
+    }
+    Some(match sig.ret {
+        "G" => Ty::vec(Scalar::Float, bind.g?),
+        "N" => {
+            let (s, w) = bind.n?;
+            Ty::vec(s, w)
+        }
+        "B" => Ty::Vector(Scalar::Bool, bind.b.or(bind.v.map(|v| v.1))?),
+        "M" => {
+            let (c, r) = bind.m?;
+            Ty::Matrix(r, c)
+        }
+        "f" => FLOAT,
+        "b" => BOOL,
+        "f3" => Ty::Vector(Scalar::Float, 3),
+        _ => return None,
+    })
+}
+
+fn pattern_text(p: &str) -> &'static str {
+    match p {
+        "G" => "floatN",
+        "N" => "T",
+        "S" => "scalar of T",
+        "V" => "vecN",
+        "B" => "boolN",
+        "M" => "floatCxR",
+        "f" => "float",
+        "b" => "bool",
+        "f3" => "float3",
+        _ => "?",
+    }
+}
+
+fn format_sig(name: &str, sig: &Sig) -> String {
+    let args: Vec<&str> = sig.args.iter().map(|a| pattern_text(a)).collect();
+    format!("{name}({}) : {}", args.join(", "), pattern_text(sig.ret))
+}

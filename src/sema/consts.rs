@@ -1,0 +1,317 @@
+//! Compile-time evaluation of top-level `let` constants and array lengths.
+//!
+//! Constants become naga constants, whose initialisers must be constant
+//! expressions; evaluating them here keeps the IR simple (literals and
+//! composes) and catches overflow and division by zero with a location.
+
+use super::tree::ConstValue;
+use super::types::{Scalar, Ty, BOOL, FLOAT, INT, UINT};
+use crate::diag::Diagnostic;
+use crate::syntax::ast::{BinaryOp, Expr, ExprKind, IntSuffix, UnaryOp};
+
+/// What the evaluator may look up.
+pub trait ConstEnv {
+    /// An already evaluated constant.
+    fn lookup(&self, name: &str) -> Option<(ConstValue, Ty)>;
+    /// A struct type and its field types.
+    fn struct_type(&self, name: &str) -> Option<(Ty, Vec<Ty>)>;
+}
+
+/// Every name an expression mentions (so the constants it uses can be
+/// evaluated first).
+pub fn collect_names(e: &Expr, out: &mut Vec<String>) {
+    collect_names_depth(e, out, 0)
+}
+
+fn collect_names_depth(e: &Expr, out: &mut Vec<String>, depth: usize) {
+    if depth > super::check::MAX_DEPTH {
+        return;
+    }
+    let d = depth + 1;
+    match &e.kind {
+        ExprKind::Name(id) => out.push(id.name.clone()),
+        ExprKind::Unary(_, x) | ExprKind::Paren(x) | ExprKind::Field(x, _) => collect_names_depth(x, out, d),
+        ExprKind::Binary(_, a, b) | ExprKind::Index(a, b) => {
+            collect_names_depth(a, out, d);
+            collect_names_depth(b, out, d);
+        }
+        ExprKind::Ternary(a, b, c) => {
+            collect_names_depth(a, out, d);
+            collect_names_depth(b, out, d);
+            collect_names_depth(c, out, d);
+        }
+        ExprKind::Call { args, .. } | ExprKind::Array { items: args, .. } => args.iter().for_each(|a| collect_names_depth(a, out, d)),
+        _ => {}
+    }
+}
+
+fn not_const(e: &Expr, what: &str) -> Diagnostic {
+    Diagnostic::error(format!("{what} is not a constant expression"), e.span)
+        .with_note("top-level `let` values and array lengths must be computable at compile time: literals, other constants, arithmetic and constructors")
+}
+
+pub fn eval_const(e: &Expr, env: &dyn ConstEnv) -> Result<(ConstValue, Ty), Diagnostic> {
+    eval(e, env, 0)
+}
+
+fn eval(e: &Expr, env: &dyn ConstEnv, depth: usize) -> Result<(ConstValue, Ty), Diagnostic> {
+    if depth > super::check::MAX_DEPTH {
+        return Err(Diagnostic::error(format!("constant expression nests deeper than the limit of {}", super::check::MAX_DEPTH), e.span));
+    }
+    let d = depth + 1;
+    match &e.kind {
+        ExprKind::Int(v, IntSuffix::None) => {
+            let v = i32::try_from(*v).map_err(|_| Diagnostic::error(format!("integer literal {v} does not fit in `int`"), e.span))?;
+            Ok((ConstValue::Int(v as i64), INT))
+        }
+        ExprKind::Int(v, IntSuffix::Unsigned) => {
+            let v = u32::try_from(*v).map_err(|_| Diagnostic::error(format!("integer literal {v} does not fit in `uint`"), e.span))?;
+            Ok((ConstValue::Uint(v as u64), UINT))
+        }
+        ExprKind::Float(v) => Ok((ConstValue::Float(*v), FLOAT)),
+        ExprKind::Bool(b) => Ok((ConstValue::Bool(*b), BOOL)),
+        ExprKind::Paren(x) => eval(x, env, d),
+        ExprKind::Name(id) => env.lookup(&id.name).ok_or_else(|| not_const(e, &format!("`{}`", id.name))),
+        ExprKind::Unary(op, x) => {
+            if let (UnaryOp::Neg, ExprKind::Int(2147483648, IntSuffix::None)) = (op, &x.kind) {
+                return Ok((ConstValue::Int(i32::MIN as i64), INT));
+            }
+            let (v, ty) = eval(x, env, d)?;
+            let r = map_components(&v, &mut |c| match (op, c) {
+                (UnaryOp::Neg, ConstValue::Float(f)) => Some(ConstValue::Float(-f)),
+                (UnaryOp::Neg, ConstValue::Int(i)) => (*i as i32).checked_neg().map(|n| ConstValue::Int(n as i64)),
+                (UnaryOp::Plus, c) => Some(c.clone()),
+                (UnaryOp::Not, ConstValue::Bool(b)) => Some(ConstValue::Bool(!b)),
+                (UnaryOp::BitNot, ConstValue::Int(i)) => Some(ConstValue::Int(!(*i as i32) as i64)),
+                (UnaryOp::BitNot, ConstValue::Uint(u)) => Some(ConstValue::Uint(!(*u as u32) as u64)),
+                _ => None,
+            });
+            r.map(|v| (v, ty)).ok_or_else(|| not_const(e, "this operation"))
+        }
+        ExprKind::Binary(op, a, b) => {
+            let (va, ta) = eval(a, env, d)?;
+            let (vb, tb) = eval(b, env, d)?;
+            binary(*op, &va, &ta, &vb, &tb).map_err(|msg| Diagnostic::error(msg, e.span))
+        }
+        ExprKind::Ternary(c, a, b) => match eval(c, env, d)? {
+            (ConstValue::Bool(true), _) => eval(a, env, d),
+            (ConstValue::Bool(false), _) => eval(b, env, d),
+            _ => Err(not_const(e, "this condition")),
+        },
+        ExprKind::Call { callee, args } => {
+            let vals = args.iter().map(|a| eval(a, env, d)).collect::<Result<Vec<_>, _>>()?;
+            if let Some(ty) = Ty::from_builtin_name(&callee.name) {
+                return construct(&ty, vals).map(|v| (v, ty.clone())).ok_or_else(|| Diagnostic::error(format!("wrong arguments for `{}(...)` in a constant", callee.name), e.span));
+            }
+            if let Some((ty, fields)) = env.struct_type(&callee.name) {
+                if fields.len() != vals.len() || fields.iter().zip(&vals).any(|(f, (_, t))| f != t) {
+                    return Err(Diagnostic::error(format!("wrong arguments for `{}(...)` in a constant", callee.name), e.span));
+                }
+                return Ok((ConstValue::Composite(vals.into_iter().map(|v| v.0).collect()), ty));
+            }
+            Err(not_const(e, &format!("a call of `{}`", callee.name)))
+        }
+        ExprKind::Array { items, .. } => {
+            let vals = items.iter().map(|a| eval(a, env, d)).collect::<Result<Vec<_>, _>>()?;
+            let Some(first) = vals.first().map(|v| v.1.clone()) else {
+                return Err(Diagnostic::error("an empty array has no type", e.span));
+            };
+            if vals.iter().any(|v| v.1 != first) {
+                return Err(Diagnostic::error("array elements have different types", e.span));
+            }
+            let n = vals.len() as u32;
+            Ok((ConstValue::Composite(vals.into_iter().map(|v| v.0).collect()), Ty::Array(Box::new(first), n)))
+        }
+        ExprKind::Field(..) | ExprKind::Index(..) => Err(not_const(e, "field or element access")),
+        ExprKind::Str(_) => Err(Diagnostic::error("strings are not shader values", e.span)),
+    }
+}
+
+/// Applies `f` to every scalar of a value.
+fn map_components(v: &ConstValue, f: &mut dyn FnMut(&ConstValue) -> Option<ConstValue>) -> Option<ConstValue> {
+    match v {
+        ConstValue::Composite(cs) => cs.iter().map(|c| map_components(c, f)).collect::<Option<Vec<_>>>().map(ConstValue::Composite),
+        c => f(c),
+    }
+}
+
+fn scalars(v: &ConstValue) -> Vec<ConstValue> {
+    match v {
+        ConstValue::Composite(cs) => cs.iter().flat_map(scalars).collect(),
+        c => vec![c.clone()],
+    }
+}
+
+fn convert(c: &ConstValue, to: Scalar) -> Option<ConstValue> {
+    let f = match *c {
+        ConstValue::Float(f) => f,
+        ConstValue::Int(i) => i as f64,
+        ConstValue::Uint(u) => u as f64,
+        ConstValue::Bool(b) => b as u8 as f64,
+        ConstValue::Composite(_) => return None,
+    };
+    Some(match to {
+        Scalar::Float => ConstValue::Float(f),
+        Scalar::Int => ConstValue::Int(match *c {
+            ConstValue::Uint(u) => u as u32 as i32 as i64,
+            _ => f as i32 as i64,
+        }),
+        Scalar::Uint => ConstValue::Uint(match *c {
+            ConstValue::Int(i) => i as i32 as u32 as u64,
+            _ => f as u32 as u64,
+        }),
+        Scalar::Bool => ConstValue::Bool(f != 0.0),
+    })
+}
+
+fn construct(ty: &Ty, vals: Vec<(ConstValue, Ty)>) -> Option<ConstValue> {
+    let flat: Vec<ConstValue> = vals.iter().flat_map(|v| scalars(&v.0)).collect();
+    match *ty {
+        Ty::Scalar(s) => (flat.len() == 1 && vals.len() == 1).then(|| convert(&flat[0], s)).flatten(),
+        Ty::Vector(s, n) => {
+            let n = n as usize;
+            let comps: Vec<ConstValue> = if flat.len() == 1 {
+                vec![flat[0].clone(); n]
+            } else if vals.len() == 1 && flat.len() >= n {
+                flat[..n].to_vec()
+            } else if flat.len() == n {
+                flat
+            } else {
+                return None;
+            };
+            comps.iter().map(|c| convert(c, s)).collect::<Option<Vec<_>>>().map(ConstValue::Composite)
+        }
+        Ty::Matrix(c, r) => {
+            let (c, r) = (c as usize, r as usize);
+            let flat: Vec<ConstValue> = if flat.len() == 1 {
+                (0..c * r).map(|i| if i / r == i % r { flat[0].clone() } else { ConstValue::Float(0.0) }).collect()
+            } else if flat.len() == c * r {
+                flat
+            } else {
+                return None;
+            };
+            let flat = flat.iter().map(|x| convert(x, Scalar::Float)).collect::<Option<Vec<_>>>()?;
+            Some(ConstValue::Composite(flat.chunks(r).map(|col| ConstValue::Composite(col.to_vec())).collect()))
+        }
+        _ => None,
+    }
+}
+
+fn binary(op: BinaryOp, a: &ConstValue, ta: &Ty, b: &ConstValue, tb: &Ty) -> Result<(ConstValue, Ty), String> {
+    use BinaryOp::*;
+    let mismatch = || format!("type mismatch in constant: `{:?}` and `{:?}` operands", ta, tb);
+    if matches!(ta, Ty::Matrix(..) | Ty::Array(..) | Ty::Struct(_)) || matches!(tb, Ty::Matrix(..) | Ty::Array(..) | Ty::Struct(_)) {
+        return Err("matrix, array and struct arithmetic is not supported in constants".into());
+    }
+    if ta.scalar() != tb.scalar() {
+        return Err(mismatch());
+    }
+    let (wa, wb) = (ta.width().unwrap_or(1), tb.width().unwrap_or(1));
+    if wa != wb && wa != 1 && wb != 1 {
+        return Err(mismatch());
+    }
+    let w = wa.max(wb) as usize;
+    let sa = scalars(a);
+    let sb = scalars(b);
+    let get = |s: &Vec<ConstValue>, i: usize| if s.len() == 1 { s[0].clone() } else { s[i].clone() };
+    let result_ty = if wa >= wb { ta.clone() } else { tb.clone() };
+    let cmp = matches!(op, Eq | Ne | Lt | Le | Gt | Ge | And | Or | Xor);
+    if cmp && w != 1 {
+        return Err("vector comparisons are not supported in constants".into());
+    }
+    let mut out = Vec::with_capacity(w);
+    for i in 0..w {
+        let (x, y) = (get(&sa, i), get(&sb, i));
+        let v = match (x, y) {
+            (ConstValue::Float(x), ConstValue::Float(y)) => match op {
+                Add => ConstValue::Float(x + y),
+                Sub => ConstValue::Float(x - y),
+                Mul => ConstValue::Float(x * y),
+                Div => ConstValue::Float(x / y),
+                Mod => ConstValue::Float(x - y * (x / y).floor()),
+                Eq => ConstValue::Bool(x == y),
+                Ne => ConstValue::Bool(x != y),
+                Lt => ConstValue::Bool(x < y),
+                Le => ConstValue::Bool(x <= y),
+                Gt => ConstValue::Bool(x > y),
+                Ge => ConstValue::Bool(x >= y),
+                _ => return Err(mismatch()),
+            },
+            (ConstValue::Int(x), ConstValue::Int(y)) => {
+                let (x, y) = (x as i32, y as i32);
+                let r = match op {
+                    Add => x.checked_add(y),
+                    Sub => x.checked_sub(y),
+                    Mul => x.checked_mul(y),
+                    Div => x.checked_div(y),
+                    Mod => x.checked_rem(y),
+                    BitAnd => Some(x & y),
+                    BitOr => Some(x | y),
+                    BitXor => Some(x ^ y),
+                    Shl => x.checked_shl(y as u32),
+                    Shr => x.checked_shr(y as u32),
+                    Eq | Ne | Lt | Le | Gt | Ge => {
+                        let b = match op {
+                            Eq => x == y,
+                            Ne => x != y,
+                            Lt => x < y,
+                            Le => x <= y,
+                            Gt => x > y,
+                            _ => x >= y,
+                        };
+                        out.push(ConstValue::Bool(b));
+                        continue;
+                    }
+                    _ => return Err(mismatch()),
+                };
+                ConstValue::Int(r.ok_or("integer overflow or division by zero in constant")? as i64)
+            }
+            (ConstValue::Uint(x), ConstValue::Uint(y)) => {
+                let (x, y) = (x as u32, y as u32);
+                let r = match op {
+                    Add => x.checked_add(y),
+                    Sub => x.checked_sub(y),
+                    Mul => x.checked_mul(y),
+                    Div => x.checked_div(y),
+                    Mod => x.checked_rem(y),
+                    BitAnd => Some(x & y),
+                    BitOr => Some(x | y),
+                    BitXor => Some(x ^ y),
+                    Shl => x.checked_shl(y),
+                    Shr => x.checked_shr(y),
+                    Eq | Ne | Lt | Le | Gt | Ge => {
+                        let b = match op {
+                            Eq => x == y,
+                            Ne => x != y,
+                            Lt => x < y,
+                            Le => x <= y,
+                            Gt => x > y,
+                            _ => x >= y,
+                        };
+                        out.push(ConstValue::Bool(b));
+                        continue;
+                    }
+                    _ => return Err(mismatch()),
+                };
+                ConstValue::Uint(r.ok_or("integer overflow or division by zero in constant")? as u64)
+            }
+            (ConstValue::Bool(x), ConstValue::Bool(y)) => match op {
+                And => ConstValue::Bool(x && y),
+                Or => ConstValue::Bool(x || y),
+                Xor | Ne => ConstValue::Bool(x != y),
+                Eq => ConstValue::Bool(x == y),
+                _ => return Err(mismatch()),
+            },
+            _ => return Err(mismatch()),
+        };
+        out.push(v);
+    }
+    if cmp {
+        return Ok((out.pop().expect("one component"), BOOL));
+    }
+    if w == 1 {
+        Ok((out.pop().expect("one component"), result_ty))
+    } else {
+        Ok((ConstValue::Composite(out), result_ty))
+    }
+}

@@ -1,0 +1,243 @@
+//! The checked program: every name resolved, every expression typed.
+//! Lowering walks this and never has to report a user error.
+
+use super::builtins::Builtin;
+use super::types::Ty;
+use crate::lower::SamplerKind;
+use crate::source::Span;
+use crate::syntax::ast::{BinaryOp, UnaryOp};
+
+pub type GlobalId = usize;
+pub type ConstId = usize;
+pub type FuncId = usize;
+pub type LocalId = usize;
+
+#[derive(Debug, Default)]
+pub struct Program {
+    pub structs: Vec<StructDef>,
+    pub globals: Vec<Global>,
+    pub consts: Vec<Const>,
+    /// Helper functions, callees before callers.
+    pub functions: Vec<Function>,
+    pub entry_points: Vec<EntryPoint>,
+}
+
+impl Program {
+    pub fn struct_names(&self) -> Vec<String> {
+        self.structs.iter().map(|s| s.name.clone()).collect()
+    }
+}
+
+#[derive(Debug)]
+pub struct StructDef {
+    pub name: String,
+    pub fields: Vec<(String, Ty, Span)>,
+    pub span: Span,
+}
+
+/// Builtin variables (`gl_*`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub enum BuiltinVar {
+    Position,
+    PointSize,
+    FragDepth,
+    FragCoord,
+    FrontFacing,
+    PointCoord,
+    VertexId,
+    InstanceId,
+}
+
+impl BuiltinVar {
+    pub fn name(self) -> &'static str {
+        match self {
+            BuiltinVar::Position => "gl_Position",
+            BuiltinVar::PointSize => "gl_PointSize",
+            BuiltinVar::FragDepth => "gl_FragDepth",
+            BuiltinVar::FragCoord => "gl_FragCoord",
+            BuiltinVar::FrontFacing => "gl_FrontFacing",
+            BuiltinVar::PointCoord => "gl_PointCoord",
+            BuiltinVar::VertexId => "gl_VertexID",
+            BuiltinVar::InstanceId => "gl_InstanceID",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<BuiltinVar> {
+        Some(match name {
+            "gl_Position" => BuiltinVar::Position,
+            "gl_PointSize" => BuiltinVar::PointSize,
+            "gl_FragDepth" => BuiltinVar::FragDepth,
+            "gl_FragCoord" => BuiltinVar::FragCoord,
+            "gl_FrontFacing" => BuiltinVar::FrontFacing,
+            "gl_PointCoord" => BuiltinVar::PointCoord,
+            "gl_VertexID" | "gl_VertexIndex" => BuiltinVar::VertexId,
+            "gl_InstanceID" | "gl_InstanceIndex" => BuiltinVar::InstanceId,
+            _ => return None,
+        })
+    }
+
+    pub const NAMES: [&'static str; 10] = [
+        "gl_Position",
+        "gl_PointSize",
+        "gl_FragDepth",
+        "gl_FragCoord",
+        "gl_FrontFacing",
+        "gl_PointCoord",
+        "gl_VertexID",
+        "gl_VertexIndex",
+        "gl_InstanceID",
+        "gl_InstanceIndex",
+    ];
+
+    pub fn ty(self) -> Ty {
+        use super::types::*;
+        match self {
+            BuiltinVar::Position | BuiltinVar::FragCoord => Ty::Vector(Scalar::Float, 4),
+            BuiltinVar::PointSize | BuiltinVar::FragDepth => FLOAT,
+            BuiltinVar::FrontFacing => BOOL,
+            BuiltinVar::PointCoord => Ty::Vector(Scalar::Float, 2),
+            BuiltinVar::VertexId | BuiltinVar::InstanceId => INT,
+        }
+    }
+
+    /// Written by the shader (an output) rather than read.
+    pub fn is_output(self) -> bool {
+        matches!(self, BuiltinVar::Position | BuiltinVar::PointSize | BuiltinVar::FragDepth)
+    }
+
+    /// The stage it belongs to.
+    pub fn stage(self) -> naga::ShaderStage {
+        match self {
+            BuiltinVar::Position | BuiltinVar::PointSize | BuiltinVar::VertexId | BuiltinVar::InstanceId => naga::ShaderStage::Vertex,
+            _ => naga::ShaderStage::Fragment,
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum IoKind {
+    /// `@in`: a vertex attribute, or a fragment-stage input.
+    In,
+    /// `@out`: a fragment output (or a vertex output).
+    Out,
+    /// `@inout`: a varying, written by the vertex stage, read by the fragment stage.
+    InOut,
+}
+
+#[derive(Clone, Debug)]
+pub enum GlobalKind {
+    Uniform,
+    Sampler { kind: SamplerKind, texture_unit: u32 },
+    Io { kind: IoKind, location: u32 },
+    Builtin(BuiltinVar),
+}
+
+#[derive(Clone, Debug)]
+pub struct Global {
+    pub name: String,
+    pub ty: Ty,
+    pub kind: GlobalKind,
+    pub span: Span,
+}
+
+/// A compile-time value of a top-level `let`.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ConstValue {
+    Float(f64),
+    Int(i64),
+    Uint(u64),
+    Bool(bool),
+    /// Vector, matrix (columns), array or struct components.
+    Composite(Vec<ConstValue>),
+}
+
+#[derive(Clone, Debug)]
+pub struct Const {
+    pub name: String,
+    pub ty: Ty,
+    pub value: ConstValue,
+    pub span: Span,
+}
+
+#[derive(Debug)]
+pub struct Local {
+    pub name: String,
+    pub ty: Ty,
+    pub mutable: bool,
+    pub span: Span,
+}
+
+#[derive(Debug)]
+pub struct Function {
+    pub name: String,
+    /// The first `params` locals are the parameters.
+    pub params: usize,
+    pub locals: Vec<Local>,
+    pub ret: Ty,
+    pub body: Vec<Stmt>,
+    pub span: Span,
+    /// Globals this function and everything it calls touch, each with the
+    /// span of one use (for stage errors).
+    pub uses: std::collections::BTreeMap<GlobalId, Span>,
+    /// A `discard()` or derivative reached from this function (fragment only).
+    pub fragment_only: Option<(Span, &'static str)>,
+}
+
+#[derive(Debug)]
+pub struct EntryPoint {
+    pub name: String,
+    pub stage: naga::ShaderStage,
+    /// The body, with no parameters and no result.
+    pub func: Function,
+}
+
+#[derive(Debug)]
+pub struct Expr {
+    pub kind: ExprKind,
+    pub ty: Ty,
+    pub span: Span,
+}
+
+#[derive(Debug)]
+pub enum ExprKind {
+    Float(f64),
+    Int(i64),
+    Uint(u64),
+    Bool(bool),
+    Local(LocalId),
+    Global(GlobalId),
+    Const(ConstId),
+    Unary(UnaryOp, Box<Expr>),
+    /// Operands already have matching shapes where naga needs them (a
+    /// scalar operand of a vector op is splatted in lowering).
+    Binary(BinaryOp, Box<Expr>, Box<Expr>),
+    Select { cond: Box<Expr>, accept: Box<Expr>, reject: Box<Expr> },
+    Call(FuncId, Vec<Expr>),
+    Builtin(Builtin, Vec<Expr>),
+    /// Constructor of `Expr::ty` from the arguments: splat, per-component
+    /// conversion, concatenation of scalars and vectors, matrices from
+    /// columns or scalars, structs, arrays.
+    Construct(Vec<Expr>),
+    /// Swizzle with 1 to 4 components (1 = a single component).
+    Swizzle(Box<Expr>, Vec<u8>),
+    /// Struct field by index.
+    Field(Box<Expr>, u32),
+    Index(Box<Expr>, Box<Expr>),
+}
+
+#[derive(Debug)]
+pub enum Stmt {
+    /// `var` (stored in a local variable) or `let` (a named value).
+    Local { local: LocalId, init: Option<Expr>, span: Span },
+    /// `target op= value`; `op` is `None` for plain `=`.
+    Assign { target: Expr, op: Option<BinaryOp>, value: Expr, span: Span },
+    Expr(Expr),
+    If { cond: Expr, then: Vec<Stmt>, otherwise: Vec<Stmt>, span: Span },
+    While { cond: Expr, body: Vec<Stmt>, span: Span },
+    /// `for (var in range(start, end))`, counting up by one.
+    For { var: LocalId, start: Expr, end: Expr, body: Vec<Stmt>, span: Span },
+    Return(Option<Expr>, Span),
+    Break(Span),
+    Continue(Span),
+    Discard(Span),
+}

@@ -1,0 +1,132 @@
+//! The DSL's types.
+
+use std::fmt;
+
+use crate::lower::SamplerKind;
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Scalar {
+    Float,
+    Int,
+    Uint,
+    Bool,
+}
+
+impl Scalar {
+    pub fn name(self) -> &'static str {
+        match self {
+            Scalar::Float => "float",
+            Scalar::Int => "int",
+            Scalar::Uint => "uint",
+            Scalar::Bool => "bool",
+        }
+    }
+
+    pub fn is_numeric(self) -> bool {
+        self != Scalar::Bool
+    }
+
+    pub fn is_integer(self) -> bool {
+        matches!(self, Scalar::Int | Scalar::Uint)
+    }
+}
+
+/// Index of a struct in `sema::Program::structs`.
+pub type StructId = usize;
+
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub enum Ty {
+    Scalar(Scalar),
+    /// 2, 3 or 4 components.
+    Vector(Scalar, u8),
+    /// Float matrix: columns, rows.
+    Matrix(u8, u8),
+    Array(Box<Ty>, u32),
+    Struct(StructId),
+    Sampler(SamplerKind),
+    /// The type of a call to a function without a result.
+    Void,
+    /// Stands in after an error so one mistake does not cascade.
+    Error,
+}
+
+pub const FLOAT: Ty = Ty::Scalar(Scalar::Float);
+pub const INT: Ty = Ty::Scalar(Scalar::Int);
+pub const UINT: Ty = Ty::Scalar(Scalar::Uint);
+pub const BOOL: Ty = Ty::Scalar(Scalar::Bool);
+
+impl Ty {
+    /// A scalar or vector of `scalar` with `n` components (1 = scalar).
+    pub fn vec(scalar: Scalar, n: u8) -> Ty {
+        if n == 1 {
+            Ty::Scalar(scalar)
+        } else {
+            Ty::Vector(scalar, n)
+        }
+    }
+
+    /// The scalar of a scalar, vector or matrix.
+    pub fn scalar(&self) -> Option<Scalar> {
+        match *self {
+            Ty::Scalar(s) | Ty::Vector(s, _) => Some(s),
+            Ty::Matrix(..) => Some(Scalar::Float),
+            _ => None,
+        }
+    }
+
+    /// Component count of a scalar (1) or vector.
+    pub fn width(&self) -> Option<u8> {
+        match *self {
+            Ty::Scalar(_) => Some(1),
+            Ty::Vector(_, n) => Some(n),
+            _ => None,
+        }
+    }
+
+    pub fn is_error(&self) -> bool {
+        matches!(self, Ty::Error)
+    }
+
+    /// Whether values of this type can be stored in variables, passed and returned.
+    pub fn is_value(&self) -> bool {
+        !matches!(self, Ty::Sampler(_) | Ty::Void)
+    }
+
+    /// Parses a builtin type name (`float3`, `int`, `float4x4`, `sampler2D`).
+    pub fn from_builtin_name(name: &str) -> Option<Ty> {
+        if let Some(k) = SamplerKind::from_name(name) {
+            return Some(Ty::Sampler(k));
+        }
+        let (base, scalar) = [("float", Scalar::Float), ("int", Scalar::Int), ("uint", Scalar::Uint), ("bool", Scalar::Bool)]
+            .into_iter()
+            .find(|(p, _)| name.starts_with(p))?;
+        let rest = &name[base.len()..];
+        match rest.as_bytes() {
+            [] => Some(Ty::Scalar(scalar)),
+            [n @ b'2'..=b'4'] => Some(Ty::Vector(scalar, n - b'0')),
+            [c @ b'2'..=b'4', b'x', r @ b'2'..=b'4'] if scalar == Scalar::Float => Some(Ty::Matrix(c - b'0', r - b'0')),
+            _ => None,
+        }
+    }
+}
+
+/// Displays a type by its DSL spelling; struct names come from the program.
+pub struct TyDisplay<'a> {
+    pub ty: &'a Ty,
+    pub struct_names: &'a [String],
+}
+
+impl fmt::Display for TyDisplay<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.ty {
+            Ty::Scalar(s) => f.write_str(s.name()),
+            Ty::Vector(s, n) => write!(f, "{}{}", s.name(), n),
+            Ty::Matrix(c, r) => write!(f, "float{c}x{r}"),
+            Ty::Array(elem, n) => write!(f, "{}[{}]", TyDisplay { ty: elem, struct_names: self.struct_names }, n),
+            Ty::Struct(id) => f.write_str(self.struct_names.get(*id).map(|s| s.as_str()).unwrap_or("<struct>")),
+            Ty::Sampler(k) => f.write_str(k.name()),
+            Ty::Void => f.write_str("void"),
+            Ty::Error => f.write_str("{error}"),
+        }
+    }
+}

@@ -1,0 +1,472 @@
+//! Top-level splitting and reachability.
+//!
+//! The token stream of a whole daslang file is cut into top-level items by
+//! balanced `()[]{}` without parsing them. Then the shader part is picked:
+//! every global `var` with a shader qualifier (`@uniform`, `@in`, `@out`,
+//! `@inout`), every `def` annotated `[vertex_program]` or
+//! `[fragment_program]` (filtered by the requested entries), and the
+//! `let` constants, functions and structs those reach by name. Nothing else
+//! is parsed, so host code can hold anything.
+
+use std::collections::{HashMap, HashSet};
+use std::ops::Range;
+
+use super::token::{Kw, TokKind, Token, P};
+use crate::diag::{suggest, Diagnostic, Diagnostics};
+use crate::source::{SourceMap, Span};
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ItemKind {
+    Def,
+    Struct,
+    Class,
+    Var,
+    Let,
+    /// `options`, `require`, `enum`, `typedef`, ... : never parsed.
+    Other,
+}
+
+#[derive(Clone, Debug)]
+pub struct RawItem {
+    pub kind: ItemKind,
+    /// The `[...]` annotation groups before the item (empty when none).
+    pub annots: Range<usize>,
+    /// From the item's first token to its end, including the line break
+    /// that ends a line item.
+    pub body: Range<usize>,
+    /// Token indices of the names the item declares.
+    pub names: Vec<usize>,
+    /// A `var` with `@uniform`, `@in`, `@out` or `@inout`.
+    pub shader_global: bool,
+    /// A `def` annotated `[vertex_program]` or `[fragment_program]`.
+    pub entry: bool,
+}
+
+impl RawItem {
+    /// All of the item's tokens, annotations included.
+    pub fn range(&self) -> Range<usize> {
+        if self.annots.is_empty() {
+            self.body.clone()
+        } else {
+            self.annots.start..self.body.end
+        }
+    }
+}
+
+const MODIFIERS: &[&str] = &["public", "private", "static", "override", "abstract", "sealed", "template", "inscope", "shared", "unsafe"];
+
+fn closer_of(t: &Token) -> Option<P> {
+    match t.kind {
+        TokKind::P(P::LParen) => Some(P::RParen),
+        TokKind::P(P::LBracket | P::QuestionBracket) => Some(P::RBracket),
+        TokKind::P(P::LBrace) => Some(P::RBrace),
+        _ => None,
+    }
+}
+
+/// Whether a line break after `t` continues the item (after an operator,
+/// `,`, `=`, an opener...). Tokens that commonly end host type names
+/// (`>`, `&`, `?`) end the line.
+fn continues(t: &Token) -> bool {
+    match t.kind {
+        TokKind::P(p) => !matches!(
+            p,
+            P::RParen
+                | P::RBracket
+                | P::RBrace
+                | P::Semi
+                | P::PlusPlus
+                | P::MinusMinus
+                | P::Question
+                | P::Dot
+                | P::Hash
+                | P::Amp
+                | P::Gt
+                | P::Shr
+                | P::Rotr
+        ),
+        _ => false,
+    }
+}
+
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Mode {
+    /// One bracket group starting at the first token.
+    Group,
+    /// To the end of the line (at depth 0), through balanced brackets.
+    Line,
+    /// Like `Line`, but a `{ ... }` body may start on a later line; the
+    /// item ends after the body's closing brace.
+    Body,
+}
+
+/// Whether the tokens from `k` (a line start inside an unclosed bracket)
+/// begin a new top-level function: `def`, or annotations then `def`. Used
+/// to stop an item with a missing `}` from swallowing the rest of the file.
+fn starts_new_def(toks: &[Token], mut k: usize) -> bool {
+    let limit = (k + 64).min(toks.len());
+    while k < limit {
+        match toks[k].kind {
+            TokKind::Kw(Kw::Def) => return true,
+            TokKind::P(P::LBracket) => {
+                let mut depth = 0usize;
+                while k < limit {
+                    match toks[k].kind {
+                        TokKind::P(P::LBracket) => depth += 1,
+                        TokKind::P(P::RBracket) => {
+                            depth -= 1;
+                            if depth == 0 {
+                                break;
+                            }
+                        }
+                        _ => {}
+                    }
+                    k += 1;
+                }
+                k += 1;
+            }
+            TokKind::Newline => k += 1,
+            _ => return false,
+        }
+    }
+    false
+}
+
+/// The end (exclusive) of the item starting at `start`.
+fn scan(toks: &[Token], start: usize, mode: Mode, guard_defs: bool) -> usize {
+    let n = toks.len();
+    let mut stack: Vec<P> = Vec::new();
+    let mut j = start;
+    while j < n {
+        let t = &toks[j];
+        if let Some(c) = closer_of(t) {
+            stack.push(c);
+        } else if let TokKind::P(p @ (P::RParen | P::RBracket | P::RBrace)) = t.kind {
+            if stack.is_empty() {
+                if p == P::RBrace || mode == Mode::Group {
+                    return j; // closes something outside this item
+                }
+            } else if let Some(pos) = stack.iter().rposition(|&c| c == p) {
+                stack.truncate(pos);
+                if stack.is_empty() && (mode == Mode::Group || (mode == Mode::Body && p == P::RBrace)) {
+                    return j + 1;
+                }
+            }
+        } else if t.kind == TokKind::Newline {
+            if stack.is_empty() {
+                if mode != Mode::Group && !(j > start && continues(&toks[j - 1])) {
+                    if mode == Mode::Body {
+                        // `def f(...) : T` with `{` on a later line.
+                        let mut k = j + 1;
+                        while k < n && toks[k].kind == TokKind::Newline {
+                            k += 1;
+                        }
+                        if k < n && toks[k].is(P::LBrace) {
+                            j = k;
+                            continue;
+                        }
+                    }
+                    return j + 1;
+                }
+            } else if guard_defs && starts_new_def(toks, j + 1) {
+                return j + 1;
+            }
+        }
+        j += 1;
+    }
+    n
+}
+
+fn is_modifier(map: &SourceMap, toks: &[Token], k: usize) -> bool {
+    toks[k].kind == TokKind::Ident
+        && toks.get(k + 1).is_some_and(|t| t.kind == TokKind::Ident)
+        && MODIFIERS.contains(&map.slice(toks[k].span))
+}
+
+/// Splits a preprocessed token stream into top-level items.
+pub fn split(toks: &[Token], map: &SourceMap) -> Vec<RawItem> {
+    let mut items = Vec::new();
+    let n = toks.len();
+    let mut i = 0;
+    while i < n {
+        match toks[i].kind {
+            TokKind::Newline | TokKind::P(P::Semi | P::RParen | P::RBracket | P::RBrace) => {
+                i += 1;
+                continue;
+            }
+            _ => {}
+        }
+        let astart = i;
+        while i < n && toks[i].is(P::LBracket) {
+            i = scan(toks, i, Mode::Group, true).max(i + 1);
+            while i < n && toks[i].kind == TokKind::Newline {
+                i += 1;
+            }
+        }
+        let annots = astart..i;
+        if i >= n {
+            break;
+        }
+        let kind = match toks[i].kind {
+            TokKind::Kw(Kw::Def) => ItemKind::Def,
+            TokKind::Kw(Kw::Struct) => ItemKind::Struct,
+            TokKind::Kw(Kw::Class) => ItemKind::Class,
+            TokKind::Kw(Kw::Var) => ItemKind::Var,
+            TokKind::Kw(Kw::Let) => ItemKind::Let,
+            _ => ItemKind::Other,
+        };
+        let end = match kind {
+            ItemKind::Def => scan(toks, i, Mode::Body, true),
+            ItemKind::Struct | ItemKind::Class => scan(toks, i, Mode::Body, false),
+            _ => scan(toks, i, Mode::Line, true),
+        }
+        .max(i + 1);
+        let mut item =
+            RawItem { kind, annots, body: i..end, names: Vec::new(), shader_global: false, entry: false };
+        let mut k = i + 1;
+        match kind {
+            ItemKind::Def | ItemKind::Struct | ItemKind::Class => {
+                while k < end && is_modifier(map, toks, k) {
+                    k += 1;
+                }
+                if k < end && toks[k].kind == TokKind::Ident {
+                    item.names.push(k);
+                }
+                if kind == ItemKind::Def {
+                    item.entry = item.annots.clone().any(|a| {
+                        toks[a].kind == TokKind::Ident
+                            && a > 0
+                            && matches!(toks[a - 1].kind, TokKind::P(P::LBracket | P::Comma))
+                            && matches!(map.slice(toks[a].span), "vertex_program" | "fragment_program")
+                    });
+                }
+            }
+            ItemKind::Var | ItemKind::Let => {
+                loop {
+                    if k < end && is_modifier(map, toks, k) {
+                        k += 1;
+                    } else if k + 1 < end && toks[k].is(P::At) {
+                        let q = &toks[k + 1];
+                        if q.kind == TokKind::Kw(Kw::In)
+                            || (q.kind == TokKind::Ident && matches!(map.slice(q.span), "uniform" | "out" | "inout"))
+                        {
+                            item.shader_global = kind == ItemKind::Var;
+                        }
+                        k += 2;
+                        if k + 1 < end && toks[k].is(P::Eq) {
+                            k += 2;
+                        }
+                    } else {
+                        break;
+                    }
+                }
+                while k < end && toks[k].kind == TokKind::Ident {
+                    item.names.push(k);
+                    if k + 2 < end && toks[k + 1].is(P::Comma) {
+                        k += 2;
+                    } else {
+                        break;
+                    }
+                }
+            }
+            ItemKind::Other => {}
+        }
+        items.push(item);
+        i = end;
+    }
+    items
+}
+
+/// Names declared inside an item (locals, loop variables, parameters):
+/// a use of one of these does not pull in a top-level item.
+fn local_names<'m>(toks: &[Token], item: &RawItem, map: &'m SourceMap) -> HashSet<&'m str> {
+    let mut set: HashSet<&str> = item.names.iter().map(|&k| map.slice(toks[k].span)).collect();
+    let r = item.body.clone();
+    if matches!(item.kind, ItemKind::Struct | ItemKind::Class) {
+        // Field names: `a, b : T`.
+        for k in r {
+            if toks[k].kind == TokKind::Ident && toks.get(k + 1).is_some_and(|t| t.is(P::Colon) || t.is(P::Comma)) {
+                set.insert(map.slice(toks[k].span));
+            }
+        }
+        return set;
+    }
+    if item.kind != ItemKind::Def {
+        return set;
+    }
+    // Parameters: `def name(a, b : T; c : U)`.
+    if let Some(&name) = item.names.first() {
+        if toks.get(name + 1).is_some_and(|t| t.is(P::LParen)) {
+            let mut depth = 0usize;
+            let mut k = name + 1;
+            while k < r.end {
+                match toks[k].kind {
+                    TokKind::P(P::LParen | P::LBracket) => depth += 1,
+                    TokKind::P(P::RParen | P::RBracket) => {
+                        depth -= 1;
+                        if depth == 0 {
+                            break;
+                        }
+                    }
+                    TokKind::Ident if depth == 1 => {
+                        if toks.get(k + 1).is_some_and(|t| t.is(P::Comma) || t.is(P::Colon)) {
+                            set.insert(map.slice(toks[k].span));
+                        }
+                    }
+                    _ => {}
+                }
+                k += 1;
+            }
+        }
+    }
+    for k in r.clone() {
+        match toks[k].kind {
+            TokKind::Kw(Kw::Let | Kw::Var) => {
+                let mut m = k + 1;
+                while m < r.end && toks[m].kind == TokKind::Ident {
+                    set.insert(map.slice(toks[m].span));
+                    if m + 2 < r.end && toks[m + 1].is(P::Comma) {
+                        m += 2;
+                    } else {
+                        break;
+                    }
+                }
+            }
+            TokKind::Kw(Kw::For) => {
+                let mut m = k + 1;
+                while m < r.end && m < k + 16 {
+                    match toks[m].kind {
+                        TokKind::Ident => {
+                            set.insert(map.slice(toks[m].span));
+                        }
+                        TokKind::P(P::LParen | P::Comma) => {}
+                        _ => break,
+                    }
+                    m += 1;
+                }
+            }
+            _ => {}
+        }
+    }
+    set
+}
+
+/// The `name = "..."` argument of an entry point's annotation, if any.
+fn entry_alias<'m>(toks: &[Token], item: &RawItem, map: &'m SourceMap) -> Option<&'m str> {
+    let a = item.annots.clone();
+    for k in a.clone() {
+        if toks[k].kind == TokKind::Ident
+            && map.slice(toks[k].span) == "name"
+            && k + 2 < a.end
+            && toks[k + 1].is(P::Eq)
+            && toks[k + 2].kind == TokKind::Str
+        {
+            let s = map.slice(toks[k + 2].span);
+            return s.get(1..s.len().saturating_sub(1));
+        }
+    }
+    None
+}
+
+/// Picks the items to parse: indices into `items`, in source order.
+pub fn select(
+    items: &[RawItem],
+    toks: &[Token],
+    map: &SourceMap,
+    entries: &[String],
+    root_span: Span,
+    diags: &mut Diagnostics,
+) -> Vec<usize> {
+    let name_of = |item: &RawItem| item.names.first().map(|&k| map.slice(toks[k].span)).unwrap_or("");
+    let all_entries: Vec<usize> = (0..items.len()).filter(|&i| items[i].entry).collect();
+    if all_entries.is_empty() {
+        if !diags.has_errors() {
+            diags.push(
+                Diagnostic::error("no entry points: no function is annotated `[vertex_program]` or `[fragment_program]`", root_span)
+                    .with_label("in this file")
+                    .with_note("help: annotate a shader function, e.g. `[vertex_program]` on the line before `def main_vs {`"),
+            );
+        }
+        return Vec::new();
+    }
+    let mut wanted: Vec<usize> = Vec::new();
+    if entries.is_empty() {
+        wanted = all_entries.clone();
+    } else {
+        for req in entries {
+            let hits: Vec<usize> = all_entries
+                .iter()
+                .copied()
+                .filter(|&i| name_of(&items[i]) == req || entry_alias(toks, &items[i], map) == Some(req.as_str()))
+                .collect();
+            if hits.is_empty() {
+                let names: Vec<&str> = all_entries.iter().map(|&i| name_of(&items[i])).collect();
+                let mut d = Diagnostic::error(format!("unknown entry point `{req}`"), root_span)
+                    .with_label("requested with --entry")
+                    .with_note(format!("available entry points: {}", names.join(", ")));
+                if let Some(s) = suggest(req, names.iter().copied()) {
+                    d = d.with_note(format!("help: did you mean `{s}`?"));
+                }
+                diags.push(d);
+            }
+            wanted.extend(hits);
+        }
+    }
+
+    let mut by_name: HashMap<&str, Vec<usize>> = HashMap::new();
+    for (i, item) in items.iter().enumerate() {
+        match item.kind {
+            ItemKind::Def | ItemKind::Struct | ItemKind::Class if !item.entry => {
+                if let Some(&k) = item.names.first() {
+                    by_name.entry(map.slice(toks[k].span)).or_default().push(i);
+                }
+            }
+            ItemKind::Let => {
+                for &k in &item.names {
+                    by_name.entry(map.slice(toks[k].span)).or_default().push(i);
+                }
+            }
+            _ => {}
+        }
+    }
+
+    let mut selected = vec![false; items.len()];
+    let mut work: Vec<usize> = Vec::new();
+    for (i, item) in items.iter().enumerate() {
+        if item.shader_global {
+            selected[i] = true;
+            work.push(i);
+        }
+    }
+    for i in wanted {
+        if !selected[i] {
+            selected[i] = true;
+            work.push(i);
+        }
+    }
+    while let Some(i) = work.pop() {
+        let item = &items[i];
+        let locals = local_names(toks, item, map);
+        for k in item.range() {
+            if toks[k].kind != TokKind::Ident {
+                continue;
+            }
+            if k > 0 && matches!(toks[k - 1].kind, TokKind::P(P::Dot | P::QuestionDot | P::Arrow | P::ColonColon)) {
+                continue;
+            }
+            let name = map.slice(toks[k].span);
+            if locals.contains(name) {
+                continue;
+            }
+            if let Some(targets) = by_name.get(name) {
+                for &t in targets {
+                    if !selected[t] {
+                        selected[t] = true;
+                        work.push(t);
+                    }
+                }
+            }
+        }
+    }
+    (0..items.len()).filter(|&i| selected[i]).collect()
+}

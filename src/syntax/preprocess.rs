@@ -1,0 +1,501 @@
+//! The token-based preprocessor.
+//!
+//! Each file is lexed once. A line whose first token is `#` is a directive:
+//! `#include "file"`, `#define NAME [value]`, `#undef`, `#ifdef`, `#ifndef`,
+//! `#else`, `#endif`. Other lines pass through, with defined identifiers
+//! replaced by their value tokens (which keep the spans of the `#define`'s
+//! text). `-D` definitions are `#define` lines in a virtual file named
+//! `<command-line>`, so their tokens have spans too. Every included file is
+//! added to the [`SourceMap`] with the span of its `#include` directive, so
+//! diagnostics show the include chain.
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+use std::rc::Rc;
+
+use super::lexer::lex;
+use super::parser::unescape;
+use super::token::{TokKind, Token, P};
+use super::ParseOptions;
+use crate::diag::{Diagnostic, Diagnostics};
+use crate::source::{FileId, SourceMap, Span};
+
+/// Deepest `#include` nesting.
+pub const MAX_INCLUDE_DEPTH: usize = 64;
+/// Largest single source file.
+pub const MAX_FILE_SIZE: usize = 16 * 1024 * 1024;
+/// Largest total of all files read (an include may be read many times).
+pub const MAX_TOTAL_SIZE: usize = 64 * 1024 * 1024;
+/// Most tokens after preprocessing (bounds macro expansion).
+pub const MAX_TOKENS: usize = 16 * 1024 * 1024;
+/// Deepest macro-within-macro expansion.
+const MAX_EXPANSION_DEPTH: usize = 64;
+
+struct Macro {
+    value: Rc<[Token]>,
+}
+
+#[derive(Clone, Copy)]
+struct Cond {
+    /// The `#ifdef`/`#ifndef` directive.
+    span: Span,
+    /// Whether the enclosing region is live.
+    parent_active: bool,
+    /// Whether the current branch's condition holds.
+    taking: bool,
+    else_span: Option<Span>,
+}
+
+impl Cond {
+    fn active(&self) -> bool {
+        self.parent_active && self.taking
+    }
+}
+
+struct Pp<'a> {
+    map: &'a mut SourceMap,
+    opts: &'a ParseOptions,
+    diags: &'a mut Diagnostics,
+    defines: HashMap<String, Macro>,
+    out: Vec<Token>,
+    /// Canonical paths of the files being processed, outermost first, with
+    /// the display name of each.
+    stack: Vec<(PathBuf, String)>,
+    /// Canonical directories includes may come from.
+    allowed: Vec<PathBuf>,
+    total_size: usize,
+    overflowed: bool,
+}
+
+/// Preprocesses the root file (already in the map) and returns the token
+/// stream of the whole translation unit, ending in a `Newline`.
+pub fn preprocess(map: &mut SourceMap, root: FileId, opts: &ParseOptions, diags: &mut Diagnostics) -> Vec<Token> {
+    let root_path = map.file(root).path.clone();
+    let root_name = map.file(root).name.clone();
+    let root_dir = root_path.as_deref().map(parent_dir).unwrap_or_else(|| PathBuf::from("."));
+    let mut allowed = Vec::new();
+    for d in std::iter::once(&root_dir).chain(opts.include_dirs.iter()) {
+        if let Ok(c) = std::fs::canonicalize(d) {
+            allowed.push(c);
+        }
+    }
+    let mut stack = Vec::new();
+    if let Some(c) = root_path.as_deref().and_then(|p| std::fs::canonicalize(p).ok()) {
+        stack.push((c, root_name));
+    }
+    let total_size = map.file(root).text.len();
+    let mut pp = Pp {
+        map,
+        opts,
+        diags,
+        defines: HashMap::new(),
+        out: Vec::with_capacity(total_size / 4 + 16),
+        stack,
+        allowed,
+        total_size,
+        overflowed: false,
+    };
+    if !opts.defines.is_empty() {
+        let mut text = String::new();
+        for (name, value) in &opts.defines {
+            let clean = |s: &str| s.replace(['\n', '\r'], " ");
+            match value {
+                Some(v) => text.push_str(&format!("#define {} {}\n", clean(name), clean(v))),
+                None => text.push_str(&format!("#define {} 1\n", clean(name))),
+            }
+        }
+        let id = pp.map.add("<command-line>", None, text, None);
+        pp.file(id, 0);
+        // Only definitions come from the command line; drop its newlines.
+        pp.out.clear();
+    }
+    pp.file(root, 0);
+    pp.out
+}
+
+/// The directory of a path, `.` for a bare file name.
+fn parent_dir(p: &Path) -> PathBuf {
+    match p.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+        _ => PathBuf::from("."),
+    }
+}
+
+fn is_newline(t: &Token) -> bool {
+    t.kind == TokKind::Newline
+}
+
+impl Pp<'_> {
+    fn push_out(&mut self, t: Token) {
+        if self.out.len() >= MAX_TOKENS {
+            if !self.overflowed {
+                self.overflowed = true;
+                self.diags.push(
+                    Diagnostic::error(format!("the program is too large after preprocessing (limit {MAX_TOKENS} tokens)"), t.span)
+                        .with_label("limit reached here")
+                        .with_note("a #define that expands to several copies of another can grow exponentially"),
+                );
+            }
+            return;
+        }
+        if t.kind == TokKind::Newline && matches!(self.out.last(), Some(l) if l.kind == TokKind::Newline) {
+            return;
+        }
+        self.out.push(t);
+    }
+
+    fn text(&self, t: &Token) -> &str {
+        self.map.slice(t.span)
+    }
+
+    fn file(&mut self, id: FileId, depth: usize) {
+        let mut toks = Vec::new();
+        {
+            let f = self.map.file(id);
+            lex(&f.text, f.base, &mut toks);
+        }
+        let end_span = {
+            let s = self.map.file(id).span();
+            Span::new(s.end, s.end)
+        };
+        let mut conds: Vec<Cond> = Vec::new();
+        let mut i = 0;
+        let n = toks.len();
+        let mut line_start = true;
+        while i < n {
+            let t = toks[i];
+            if line_start && t.is(P::Hash) {
+                let mut j = i + 1;
+                while j < n && !is_newline(&toks[j]) {
+                    j += 1;
+                }
+                self.directive(&toks[i..j], &mut conds, id, depth);
+                i = j;
+                continue;
+            }
+            line_start = is_newline(&t);
+            let active = conds.last().is_none_or(Cond::active);
+            if !active {
+                i += 1;
+                continue;
+            }
+            if t.kind == TokKind::Ident && !self.defines.is_empty() {
+                let mut active_names = Vec::new();
+                self.expand(t, &mut active_names);
+            } else {
+                self.push_out(t);
+            }
+            i += 1;
+        }
+        for c in conds.iter().rev() {
+            let what = self.map.slice(c.span).to_string();
+            self.diags.push(
+                Diagnostic::error(format!("unterminated `{what}`"), c.span)
+                    .with_label("this conditional has no matching #endif")
+                    .with_secondary(end_span, "the file ends here")
+                    .with_note("add `#endif` before the end of the file"),
+            );
+        }
+        self.push_out(Token::new(TokKind::Newline, end_span));
+    }
+
+    /// Pushes `t`, or the expansion of the macro it names. `active` holds
+    /// the macros being expanded (a macro is not expanded inside itself).
+    fn expand(&mut self, t: Token, active: &mut Vec<String>) {
+        let value = match self.defines.get(self.map.slice(t.span)) {
+            Some(m) if !active.iter().any(|a| a == self.map.slice(t.span)) => m.value.clone(),
+            _ => {
+                self.push_out(t);
+                return;
+            }
+        };
+        if active.len() >= MAX_EXPANSION_DEPTH {
+            let msg = format!("macro expansion nested too deeply (limit {MAX_EXPANSION_DEPTH})");
+            self.diags.push(Diagnostic::error(msg, t.span).with_label("while expanding this"));
+            return;
+        }
+        active.push(self.map.slice(t.span).to_string());
+        for v in value.iter() {
+            if v.kind == TokKind::Ident {
+                self.expand(*v, active);
+            } else {
+                self.push_out(*v);
+            }
+            if self.overflowed {
+                break;
+            }
+        }
+        active.pop();
+    }
+
+    fn directive(&mut self, line: &[Token], conds: &mut Vec<Cond>, file: FileId, depth: usize) {
+        let span = line[0].span.to(line[line.len() - 1].span);
+        let Some(name_tok) = line.get(1) else {
+            return; // a lone `#` is a null directive
+        };
+        let name = self.text(name_tok).to_string();
+        let active = conds.last().is_none_or(Cond::active);
+        let args = &line[2..];
+        let head = line[0].span.to(name_tok.span);
+        match name.as_str() {
+            "ifdef" | "ifndef" => {
+                let mut taking = false;
+                if active {
+                    if let Some(id) = self.one_ident(args, &name, head) {
+                        taking = self.defines.contains_key(self.text(&id)) == (name == "ifdef");
+                    }
+                }
+                conds.push(Cond { span: head, parent_active: active, taking, else_span: None });
+            }
+            // Not supported, but counted so that nesting in skipped text stays right.
+            "if" => {
+                if active {
+                    self.diags.push(
+                        Diagnostic::error("`#if` is not supported", head)
+                            .with_label("unsupported directive")
+                            .with_note("help: use `#ifdef NAME` or `#ifndef NAME`"),
+                    );
+                }
+                conds.push(Cond { span: head, parent_active: active, taking: false, else_span: None });
+            }
+            "else" => match conds.last_mut() {
+                None => self.stray(head, "#else"),
+                Some(c) => {
+                    if let Some(prev) = c.else_span {
+                        self.diags.push(
+                            Diagnostic::error("`#else` after `#else`", head)
+                                .with_label("second #else")
+                                .with_secondary(prev, "first #else here")
+                                .with_secondary(c.span, "for this conditional"),
+                        );
+                    } else {
+                        c.else_span = Some(head);
+                        c.taking = !c.taking;
+                        if c.parent_active {
+                            self.no_args(args, "#else");
+                        }
+                    }
+                }
+            },
+            "endif" => match conds.pop() {
+                None => self.stray(head, "#endif"),
+                Some(c) => {
+                    if c.parent_active {
+                        self.no_args(args, "#endif");
+                    }
+                }
+            },
+            _ if !active => {}
+            "define" => {
+                let Some(id) = args.first() else {
+                    self.diags.push(Diagnostic::error("expected a macro name after `#define`", head).with_label("no name"));
+                    return;
+                };
+                if id.kind != TokKind::Ident {
+                    let what = self.text(id).to_string();
+                    self.diags.push(
+                        Diagnostic::error(format!("`{what}` is not a valid macro name"), id.span)
+                            .with_label("expected an identifier")
+                            .with_note("a macro name is a letter or `_` followed by letters, digits and `_`; keywords cannot be defined"),
+                    );
+                    return;
+                }
+                let key = self.text(id).to_string();
+                self.defines.insert(key, Macro { value: args[1..].into() });
+            }
+            "undef" => {
+                if let Some(id) = self.one_ident(args, "undef", head) {
+                    let key = self.text(&id).to_string();
+                    self.defines.remove(&key);
+                }
+            }
+            "include" => self.include(args, span, head, file, depth),
+            _ => {
+                let msg = if name == "elif" {
+                    format!("`#{name}` is not supported")
+                } else {
+                    format!("unknown preprocessor directive `#{name}`")
+                };
+                self.diags.push(
+                    Diagnostic::error(msg, head)
+                        .with_label("unknown directive")
+                        .with_note("the directives are #include, #define, #undef, #ifdef, #ifndef, #else and #endif"),
+                );
+            }
+        }
+    }
+
+    fn stray(&mut self, span: Span, what: &str) {
+        self.diags.push(
+            Diagnostic::error(format!("`{what}` without a matching `#ifdef` or `#ifndef`"), span)
+                .with_label(format!("stray {what}")),
+        );
+    }
+
+    fn no_args(&mut self, args: &[Token], what: &str) {
+        if let Some(first) = args.first() {
+            let span = first.span.to(args[args.len() - 1].span);
+            self.diags.push(Diagnostic::error(format!("unexpected text after `{what}`"), span).with_label("expected the end of the line"));
+        }
+    }
+
+    fn one_ident(&mut self, args: &[Token], what: &str, head: Span) -> Option<Token> {
+        match args.first() {
+            Some(t) if t.kind == TokKind::Ident => {
+                if args.len() > 1 {
+                    let what = format!("#{what} {}", self.text(t));
+                    self.no_args(&args[1..], &what);
+                }
+                Some(*t)
+            }
+            Some(t) => {
+                let msg = format!("expected a macro name after `#{what}`, found `{}`", self.text(t));
+                self.diags.push(Diagnostic::error(msg, t.span).with_label("expected an identifier"));
+                None
+            }
+            None => {
+                self.diags.push(Diagnostic::error(format!("expected a macro name after `#{what}`"), head).with_label("no name"));
+                None
+            }
+        }
+    }
+
+    fn include(&mut self, args: &[Token], span: Span, head: Span, file: FileId, depth: usize) {
+        let target = match args.first() {
+            Some(t) if t.kind == TokKind::Str => *t,
+            Some(t) => {
+                let msg = format!("expected a file name in double quotes after `#include`, found `{}`", self.text(t));
+                self.diags.push(Diagnostic::error(msg, t.span).with_label("expected \"file\""));
+                return;
+            }
+            None => {
+                self.diags.push(
+                    Diagnostic::error("expected a file name in double quotes after `#include`", head).with_label("no file name"),
+                );
+                return;
+            }
+        };
+        if args.len() > 1 {
+            self.no_args(&args[1..], "#include \"...\"");
+        }
+        let raw = self.text(&target);
+        let name = unescape(raw.get(1..raw.len().saturating_sub(1)).unwrap_or(""));
+        if name.is_empty() {
+            self.diags.push(Diagnostic::error("empty file name in `#include`", target.span).with_label("empty"));
+            return;
+        }
+        if depth + 1 > MAX_INCLUDE_DEPTH {
+            self.diags.push(
+                Diagnostic::error(format!("`#include` nested too deeply (limit {MAX_INCLUDE_DEPTH})"), span)
+                    .with_label("this include exceeds the nesting limit"),
+            );
+            return;
+        }
+
+        // Resolve: the including file's directory, then each -I directory.
+        let mut searched = Vec::new();
+        let mut problems = Vec::new();
+        let name_path = Path::new(&name);
+        let mut dirs: Vec<PathBuf> = Vec::new();
+        if name_path.is_absolute() {
+            dirs.push(PathBuf::new());
+        } else {
+            if let Some(p) = &self.map.file(file).path {
+                dirs.push(parent_dir(p));
+            }
+            dirs.extend(self.opts.include_dirs.iter().cloned());
+        }
+        let mut found = None;
+        for d in dirs {
+            let cand = if d.as_os_str().is_empty() { name_path.to_path_buf() } else { d.join(name_path) };
+            match std::fs::metadata(&cand) {
+                Ok(m) if m.is_file() => {
+                    found = Some(cand);
+                    break;
+                }
+                Ok(_) => problems.push(format!("`{}` is not a file", cand.display())),
+                Err(e) if e.kind() == std::io::ErrorKind::NotFound => {}
+                Err(e) => problems.push(format!("`{}`: {e}", cand.display())),
+            }
+            searched.push(cand);
+        }
+        let Some(path) = found else {
+            let mut d = Diagnostic::error(format!("cannot find include file `{name}`"), target.span).with_label("not found");
+            for p in &searched {
+                d = d.with_note(format!("searched `{}`", p.display()));
+            }
+            for p in problems {
+                d = d.with_note(p);
+            }
+            if self.opts.include_dirs.is_empty() && !name_path.is_absolute() {
+                d = d.with_note("help: add a directory to search with `-I DIR`");
+            }
+            self.diags.push(d);
+            return;
+        };
+        let canon = match std::fs::canonicalize(&path) {
+            Ok(c) => c,
+            Err(e) => {
+                let msg = format!("cannot resolve include file `{}`: {e}", path.display());
+                self.diags.push(Diagnostic::error(msg, target.span).with_label("cannot resolve"));
+                return;
+            }
+        };
+        if !self.opts.allow_outside_includes && !self.allowed.iter().any(|a| canon.starts_with(a)) {
+            let mut d = Diagnostic::error(
+                format!("`#include \"{name}\"` reaches outside the input's directory and the include directories"),
+                target.span,
+            )
+            .with_label("outside the allowed directories")
+            .with_note(format!("it resolves to `{}`", canon.display()));
+            for a in &self.allowed {
+                d = d.with_note(format!("allowed: `{}`", a.display()));
+            }
+            d = d.with_note("help: add its directory with `-I DIR`, or pass `--allow-outside-includes` to permit it");
+            self.diags.push(d);
+            return;
+        }
+        if let Some(pos) = self.stack.iter().position(|(p, _)| *p == canon) {
+            let mut chain: Vec<String> = self.stack[pos..].iter().map(|(_, n)| n.clone()).collect();
+            chain.push(self.stack[pos].1.clone());
+            let d = Diagnostic::error(format!("include cycle: `{}` includes itself", self.stack[pos].1), target.span)
+                .with_label("this include closes the cycle")
+                .with_note(format!("cycle: {}", chain.join(" -> ")));
+            self.diags.push(d);
+            return;
+        }
+        let bytes = match std::fs::read(&path) {
+            Ok(b) => b,
+            Err(e) => {
+                let msg = format!("cannot read include file `{}`: {e}", path.display());
+                self.diags.push(Diagnostic::error(msg, target.span).with_label("unreadable"));
+                return;
+            }
+        };
+        if bytes.len() > MAX_FILE_SIZE {
+            let msg = format!("include file `{}` is too large ({} bytes; limit {MAX_FILE_SIZE})", path.display(), bytes.len());
+            self.diags.push(Diagnostic::error(msg, target.span).with_label("too large"));
+            return;
+        }
+        self.total_size += bytes.len();
+        if self.total_size > MAX_TOTAL_SIZE {
+            let msg = format!("too much source text read through includes (limit {MAX_TOTAL_SIZE} bytes)");
+            self.diags.push(Diagnostic::error(msg, target.span).with_label("limit reached at this include"));
+            return;
+        }
+        let text = match String::from_utf8(bytes) {
+            Ok(t) => t,
+            Err(e) => {
+                let msg = format!("include file `{}` is not UTF-8 text", path.display());
+                let note = format!("invalid byte at offset {}", e.utf8_error().valid_up_to());
+                self.diags.push(Diagnostic::error(msg, target.span).with_label("not UTF-8").with_note(note));
+                return;
+            }
+        };
+        let display = path.display().to_string();
+        let id = self.map.add(display.clone(), Some(path), text, Some(span));
+        self.stack.push((canon, display));
+        self.file(id, depth + 1);
+        self.stack.pop();
+    }
+}

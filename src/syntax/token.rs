@@ -1,0 +1,312 @@
+//! Tokens: small `Copy` values carrying a kind and a global [`Span`].
+//!
+//! A token holds no text. Its text is `map.slice(token.span)`, which also
+//! works for tokens substituted by a `#define` (they keep the span of the
+//! define's value) and for `-D` values (they live in the `<command-line>`
+//! virtual file).
+
+use crate::source::Span;
+
+/// The keywords the front end needs to recognise. Every other daslang
+/// keyword lexes as an identifier; shader code never uses them and host
+/// code is only split, not parsed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Kw {
+    Def,
+    Var,
+    Let,
+    Struct,
+    Class,
+    If,
+    Elif,
+    Else,
+    While,
+    For,
+    In,
+    Return,
+    Break,
+    Continue,
+    True,
+    False,
+}
+
+impl Kw {
+    pub fn from_str(s: &str) -> Option<Kw> {
+        Some(match s {
+            "def" => Kw::Def,
+            "var" => Kw::Var,
+            "let" => Kw::Let,
+            "struct" => Kw::Struct,
+            "class" => Kw::Class,
+            "if" => Kw::If,
+            "elif" => Kw::Elif,
+            "else" => Kw::Else,
+            "while" => Kw::While,
+            "for" => Kw::For,
+            "in" => Kw::In,
+            "return" => Kw::Return,
+            "break" => Kw::Break,
+            "continue" => Kw::Continue,
+            "true" => Kw::True,
+            "false" => Kw::False,
+            _ => return None,
+        })
+    }
+
+    pub fn as_str(self) -> &'static str {
+        match self {
+            Kw::Def => "def",
+            Kw::Var => "var",
+            Kw::Let => "let",
+            Kw::Struct => "struct",
+            Kw::Class => "class",
+            Kw::If => "if",
+            Kw::Elif => "elif",
+            Kw::Else => "else",
+            Kw::While => "while",
+            Kw::For => "for",
+            Kw::In => "in",
+            Kw::Return => "return",
+            Kw::Break => "break",
+            Kw::Continue => "continue",
+            Kw::True => "true",
+            Kw::False => "false",
+        }
+    }
+}
+
+/// Punctuation, including the host-only operators, so that host code
+/// splits cleanly.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum P {
+    LParen,
+    RParen,
+    LBracket,
+    RBracket,
+    LBrace,
+    RBrace,
+    Comma,
+    Semi,
+    Colon,
+    ColonColon,
+    ColonEq,
+    Dot,
+    DotDot,
+    Ellipsis,
+    Question,
+    QuestionDot,
+    QuestionBracket,
+    QuestionQuestion,
+    At,
+    AtAt,
+    Hash,
+    Dollar,
+    Eq,
+    EqEq,
+    FatArrow,
+    Bang,
+    BangEq,
+    Lt,
+    Le,
+    Gt,
+    Ge,
+    Shl,
+    Shr,
+    ShlEq,
+    ShrEq,
+    Rotl,
+    Rotr,
+    RotlEq,
+    RotrEq,
+    LArrow,
+    LPipe,
+    RPipe,
+    Plus,
+    PlusEq,
+    PlusPlus,
+    Minus,
+    MinusEq,
+    MinusMinus,
+    Arrow,
+    Star,
+    StarEq,
+    Slash,
+    SlashEq,
+    Percent,
+    PercentEq,
+    Amp,
+    AmpAmp,
+    AmpEq,
+    AmpAmpEq,
+    Pipe,
+    PipePipe,
+    PipeEq,
+    PipePipeEq,
+    Caret,
+    CaretCaret,
+    CaretEq,
+    CaretCaretEq,
+    Tilde,
+}
+
+impl P {
+    pub fn as_str(self) -> &'static str {
+        use P::*;
+        match self {
+            LParen => "(",
+            RParen => ")",
+            LBracket => "[",
+            RBracket => "]",
+            LBrace => "{",
+            RBrace => "}",
+            Comma => ",",
+            Semi => ";",
+            Colon => ":",
+            ColonColon => "::",
+            ColonEq => ":=",
+            Dot => ".",
+            DotDot => "..",
+            Ellipsis => "...",
+            Question => "?",
+            QuestionDot => "?.",
+            QuestionBracket => "?[",
+            QuestionQuestion => "??",
+            At => "@",
+            AtAt => "@@",
+            Hash => "#",
+            Dollar => "$",
+            Eq => "=",
+            EqEq => "==",
+            FatArrow => "=>",
+            Bang => "!",
+            BangEq => "!=",
+            Lt => "<",
+            Le => "<=",
+            Gt => ">",
+            Ge => ">=",
+            Shl => "<<",
+            Shr => ">>",
+            ShlEq => "<<=",
+            ShrEq => ">>=",
+            Rotl => "<<<",
+            Rotr => ">>>",
+            RotlEq => "<<<=",
+            RotrEq => ">>>=",
+            LArrow => "<-",
+            LPipe => "<|",
+            RPipe => "|>",
+            Plus => "+",
+            PlusEq => "+=",
+            PlusPlus => "++",
+            Minus => "-",
+            MinusEq => "-=",
+            MinusMinus => "--",
+            Arrow => "->",
+            Star => "*",
+            StarEq => "*=",
+            Slash => "/",
+            SlashEq => "/=",
+            Percent => "%",
+            PercentEq => "%=",
+            Amp => "&",
+            AmpAmp => "&&",
+            AmpEq => "&=",
+            AmpAmpEq => "&&=",
+            Pipe => "|",
+            PipePipe => "||",
+            PipeEq => "|=",
+            PipePipeEq => "||=",
+            Caret => "^",
+            CaretCaret => "^^",
+            CaretEq => "^=",
+            CaretCaretEq => "^^=",
+            Tilde => "~",
+        }
+    }
+
+    /// The token in single quotes, for messages: `')'`.
+    pub fn quoted(self) -> &'static str {
+        use P::*;
+        match self {
+            LParen => "'('",
+            RParen => "')'",
+            LBracket => "'['",
+            RBracket => "']'",
+            LBrace => "'{'",
+            RBrace => "'}'",
+            Comma => "','",
+            Colon => "':'",
+            Lt => "'<'",
+            Gt => "'>'",
+            Eq => "'='",
+            _ => "a different token",
+        }
+    }
+
+    /// Tokens after which a line break does not end a statement or an item:
+    /// binary and assignment operators, `,`, `=`, `:` and openers.
+    pub fn continues_line(self) -> bool {
+        use P::*;
+        !matches!(self, RParen | RBracket | RBrace | Semi | PlusPlus | MinusMinus | Question | Dot | Hash)
+    }
+}
+
+/// Why a piece of text is not a token. Reported only when the token lies
+/// inside an item that is parsed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum LexError {
+    /// A character that is not part of daslang's syntax.
+    BadChar,
+    UnterminatedString,
+    UnterminatedChar,
+    UnterminatedComment,
+}
+
+impl LexError {
+    pub fn message(self) -> &'static str {
+        match self {
+            LexError::BadChar => "unexpected character",
+            LexError::UnterminatedString => "unterminated string literal",
+            LexError::UnterminatedChar => "unterminated character literal",
+            LexError::UnterminatedComment => "unterminated block comment",
+        }
+    }
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TokKind {
+    Ident,
+    Kw(Kw),
+    /// Decimal or hex integer, possibly with a suffix (`1u`, `0xffu`).
+    Int,
+    /// A literal with a fraction or an exponent, possibly with a suffix.
+    Float,
+    Str,
+    Char,
+    P(P),
+    /// One or more line breaks (statement terminator).
+    Newline,
+    Error(LexError),
+    /// End of the token range being parsed.
+    Eof,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Token {
+    pub kind: TokKind,
+    pub span: Span,
+}
+
+impl Token {
+    pub const fn new(kind: TokKind, span: Span) -> Self {
+        Token { kind, span }
+    }
+
+    pub fn is(&self, p: P) -> bool {
+        self.kind == TokKind::P(p)
+    }
+
+    pub fn is_kw(&self, k: Kw) -> bool {
+        self.kind == TokKind::Kw(k)
+    }
+}

@@ -1,0 +1,154 @@
+#version 300 es
+
+precision highp float;
+precision highp int;
+precision highp sampler2DShadow;
+
+struct shadow_vs_out {
+    vec4 gen_gl_Position;
+};
+struct shadow_fs_out {
+    vec4 f_FragColor;
+};
+struct main_vs_out {
+    vec4 gen_gl_Position;
+    vec3 v_world_pos;
+    vec3 v_world_normal;
+    vec4 v_light_space;
+};
+struct main_fs_out {
+    vec4 f_FragColor;
+};
+const float SHADOW_MAP_SIZE = 1024.0;
+const int PCF_RADIUS = 1;
+
+layout(std140) uniform u_light_dir_block { vec3 u_light_dir; };
+
+layout(std140) uniform u_cam_pos_block { vec3 u_cam_pos; };
+
+layout(std140) uniform u_is_floor_block { float u_is_floor; };
+
+uniform highp sampler2DShadow shadow_map;
+
+vec3 v_world_pos = vec3(0.0);
+
+vec3 v_world_normal = vec3(0.0);
+
+vec4 v_light_space = vec4(0.0);
+
+vec4 f_FragColor = vec4(0.0);
+
+smooth in vec3 _vs2fs_location0;
+smooth in vec3 _vs2fs_location1;
+smooth in vec4 _vs2fs_location2;
+layout(location = 0) out vec4 _fs2p_location0;
+
+float sun_visibility(vec2 uv, float depth) {
+    float lit_1 = 0.0;
+    float taps = 0.0;
+    int y = 0;
+    int x = 0;
+    float step_ = (1.0 / SHADOW_MAP_SIZE);
+    lit_1 = 0.0;
+    taps = 0.0;
+    y = -(PCF_RADIUS);
+    bool loop_init = true;
+    while(true) {
+        if (!loop_init) {
+            int _e49 = y;
+            y = (_e49 + 1);
+        }
+        loop_init = false;
+        int _e15 = y;
+        if (!((_e15 < (PCF_RADIUS + 1)))) {
+            break;
+        }
+        x = -(PCF_RADIUS);
+        bool loop_init_1 = true;
+        while(true) {
+            if (!loop_init_1) {
+                int _e46 = x;
+                x = (_e46 + 1);
+            }
+            loop_init_1 = false;
+            int _e24 = x;
+            if (!((_e24 < (PCF_RADIUS + 1)))) {
+                break;
+            }
+            int _e30 = x;
+            int _e32 = y;
+            float _e39 = texture(shadow_map, vec3((uv + (vec2(float(_e30), float(_e32)) * step_)), depth));
+            float _e40 = lit_1;
+            lit_1 = (_e40 + _e39);
+            float _e44 = taps;
+            taps = (_e44 + 1.0);
+        }
+    }
+    float _e53 = lit_1;
+    float _e55 = taps;
+    return (_e53 / _e55);
+}
+
+vec3 floor_albedo(vec3 p) {
+    float cell = (floor(((p.x * 0.5) + 100.0)) + floor(((p.z * 0.5) + 100.0)));
+    float odd = (cell - (2.0 * floor((cell * 0.5))));
+    float shade = ((odd < 0.5) ? 0.85 : 0.3);
+    return (vec3(shade) * vec3(0.8, 0.82, 0.88));
+}
+
+void main() {
+    vec3 in_v_world_pos = _vs2fs_location0;
+    vec3 in_v_world_normal = _vs2fs_location1;
+    vec4 in_v_light_space = _vs2fs_location2;
+    float lit = 0.0;
+    vec3 albedo = vec3(0.0);
+    float gloss = 0.0;
+    v_world_pos = in_v_world_pos;
+    v_world_normal = in_v_world_normal;
+    v_light_space = in_v_light_space;
+    vec3 _e7 = v_world_normal;
+    vec3 n = normalize(_e7);
+    vec3 _e10 = u_light_dir;
+    vec3 l = normalize(_e10);
+    vec3 _e13 = u_cam_pos;
+    vec3 _e15 = v_world_pos;
+    vec3 v = normalize((_e13 - _e15));
+    float ndotl = max(dot(n, l), 0.0);
+    float _e23 = v_light_space.w;
+    float clip_w = max(_e23, 0.0001);
+    vec4 _e27 = v_light_space;
+    vec3 ndc = (_e27.xyz / vec3(clip_w));
+    vec2 uv_1 = ((ndc.xy * 0.5) + vec2(0.5));
+    float depth_1 = ((ndc.z * 0.5) + 0.5);
+    float bias = max((0.0025 * (1.0 - ndotl)), 0.0008);
+    float _e50 = sun_visibility(uv_1, (depth_1 - bias));
+    lit = _e50;
+    if ((ndotl < 0.05)) {
+        lit = 0.0;
+    }
+    float up = ((n.y * 0.5) + 0.5);
+    vec3 ambient = mix(vec3(0.1, 0.09, 0.08), vec3(0.3, 0.34, 0.42), vec3(up));
+    vec3 sun_color = vec3(1.3, 1.15, 0.9);
+    albedo = vec3(0.85, 0.45, 0.3);
+    gloss = 0.5;
+    float _e82 = u_is_floor;
+    if ((_e82 > 0.5)) {
+        vec3 _e87 = v_world_pos;
+        vec3 _e88 = floor_albedo(_e87);
+        albedo = _e88;
+        gloss = 0.15;
+    }
+    vec3 h = normalize((l + v));
+    float _e99 = lit;
+    float _e102 = gloss;
+    float spec = ((pow(max(dot(n, h), 0.0), 48.0) * _e99) * _e102);
+    vec3 _e105 = albedo;
+    float _e107 = lit;
+    vec3 color = ((_e105 * (ambient + (sun_color * (ndotl * _e107)))) + vec3(spec));
+    f_FragColor = vec4(color, 1.0);
+    vec4 _e118 = f_FragColor;
+    main_fs_out _tmp_return = main_fs_out(_e118);
+    _fs2p_location0 = _tmp_return.f_FragColor;
+    return;
+}
+

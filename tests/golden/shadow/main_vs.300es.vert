@@ -1,0 +1,85 @@
+#version 300 es
+
+precision highp float;
+precision highp int;
+
+struct shadow_vs_out {
+    vec4 gen_gl_Position;
+};
+struct shadow_fs_out {
+    vec4 f_FragColor;
+};
+struct main_vs_out {
+    vec4 gen_gl_Position;
+    vec3 v_world_pos;
+    vec3 v_world_normal;
+    vec4 v_light_space;
+};
+struct main_fs_out {
+    vec4 f_FragColor;
+};
+const float SHADOW_MAP_SIZE = 1024.0;
+const int PCF_RADIUS = 1;
+
+layout(std140) uniform u_light_vp_block { mat4x4 u_light_vp; };
+
+layout(std140) uniform u_model_block { mat4x4 u_model; };
+
+layout(std140) uniform u_view_block { mat4x4 u_view; };
+
+layout(std140) uniform u_proj_block { mat4x4 u_proj; };
+
+vec3 a_pos = vec3(0.0);
+
+vec3 a_normal = vec3(0.0);
+
+vec3 v_world_pos = vec3(0.0);
+
+vec3 v_world_normal = vec3(0.0);
+
+vec4 v_light_space = vec4(0.0);
+
+vec4 gen_gl_Position = vec4(0.0);
+
+layout(location = 0) in vec3 _p2vs_location0;
+layout(location = 1) in vec3 _p2vs_location1;
+smooth out vec3 _vs2fs_location0;
+smooth out vec3 _vs2fs_location1;
+smooth out vec4 _vs2fs_location2;
+
+vec3 floor_albedo(vec3 p) {
+    float cell = (floor(((p.x * 0.5) + 100.0)) + floor(((p.z * 0.5) + 100.0)));
+    float odd = (cell - (2.0 * floor((cell * 0.5))));
+    float shade = ((odd < 0.5) ? 0.85 : 0.3);
+    return (vec3(shade) * vec3(0.8, 0.82, 0.88));
+}
+
+void main() {
+    vec3 in_a_pos_1 = _p2vs_location0;
+    vec3 in_a_normal = _p2vs_location1;
+    a_pos = in_a_pos_1;
+    a_normal = in_a_normal;
+    mat4x4 _e5 = u_model;
+    vec3 _e7 = a_pos;
+    vec4 world = (_e5 * vec4(_e7, 1.0));
+    v_world_pos = world.xyz;
+    mat4x4 _e15 = u_model;
+    vec3 _e17 = a_normal;
+    v_world_normal = (_e15 * vec4(_e17, 0.0)).xyz;
+    mat4x4 _e24 = u_light_vp;
+    v_light_space = (_e24 * world);
+    mat4x4 _e28 = u_proj;
+    mat4x4 _e30 = u_view;
+    gen_gl_Position = (_e28 * (_e30 * world));
+    vec4 _e34 = gen_gl_Position;
+    vec3 _e36 = v_world_pos;
+    vec3 _e38 = v_world_normal;
+    vec4 _e40 = v_light_space;
+    main_vs_out _tmp_return = main_vs_out(_e34, _e36, _e38, _e40);
+    gl_Position = _tmp_return.gen_gl_Position;
+    _vs2fs_location0 = _tmp_return.v_world_pos;
+    _vs2fs_location1 = _tmp_return.v_world_normal;
+    _vs2fs_location2 = _tmp_return.v_light_space;
+    return;
+}
+

@@ -1,0 +1,49 @@
+#version 330 core
+struct shadow_vs_out {
+    vec4 gen_gl_Position;
+};
+struct shadow_fs_out {
+    vec4 f_FragColor;
+};
+struct main_vs_out {
+    vec4 gen_gl_Position;
+    vec3 v_world_pos;
+    vec3 v_world_normal;
+    vec4 v_light_space;
+};
+struct main_fs_out {
+    vec4 f_FragColor;
+};
+const float SHADOW_MAP_SIZE = 1024.0;
+const int PCF_RADIUS = 1;
+
+layout(std140) uniform u_light_vp_block { mat4x4 u_light_vp; };
+
+layout(std140) uniform u_model_block { mat4x4 u_model; };
+
+vec3 a_pos = vec3(0.0);
+
+vec4 gen_gl_Position = vec4(0.0);
+
+layout(location = 0) in vec3 _p2vs_location0;
+
+vec3 floor_albedo(vec3 p) {
+    float cell = (floor(((p.x * 0.5) + 100.0)) + floor(((p.z * 0.5) + 100.0)));
+    float odd = (cell - (2.0 * floor((cell * 0.5))));
+    float shade = ((odd < 0.5) ? 0.85 : 0.3);
+    return (vec3(shade) * vec3(0.8, 0.82, 0.88));
+}
+
+void main() {
+    vec3 in_a_pos = _p2vs_location0;
+    a_pos = in_a_pos;
+    mat4x4 _e4 = u_light_vp;
+    mat4x4 _e6 = u_model;
+    vec3 _e8 = a_pos;
+    gen_gl_Position = (_e4 * (_e6 * vec4(_e8, 1.0)));
+    vec4 _e14 = gen_gl_Position;
+    shadow_vs_out _tmp_return = shadow_vs_out(_e14);
+    gl_Position = _tmp_return.gen_gl_Position;
+    return;
+}
+

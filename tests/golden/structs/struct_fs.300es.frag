@@ -1,0 +1,54 @@
+#version 300 es
+
+precision highp float;
+precision highp int;
+
+struct Light {
+    vec3 dir;
+    float intensity;
+    vec4 color;
+};
+struct Material {
+    vec3 albedo;
+    float roughness;
+};
+struct struct_vs_out {
+    vec4 gen_gl_Position;
+    vec3 v_normal;
+};
+struct struct_fs_out {
+    vec4 f_color;
+};
+layout(std140) uniform light_block { Light light; };
+
+vec3 v_normal = vec3(0.0);
+
+vec4 f_color = vec4(0.0);
+
+smooth in vec3 _vs2fs_location0;
+layout(location = 0) out vec4 _fs2p_location0;
+
+vec3 shade(Material m_1, vec3 n, Light l) {
+    float ndotl = clamp(dot(n, -(l.dir)), 0.0, 1.0);
+    return ((m_1.albedo * l.color.xyz) * (ndotl * l.intensity));
+}
+
+void main() {
+    vec3 in_v_normal = _vs2fs_location0;
+    Material m = Material(vec3(0.0), 0.0);
+    v_normal = in_v_normal;
+    m = Material(vec3(0.0), 0.0);
+    m.albedo = vec3(0.8, 0.6, 0.4);
+    m.roughness = 0.5;
+    Material _e14 = m;
+    vec3 _e16 = v_normal;
+    Light _e19 = light;
+    vec3 _e20 = shade(_e14, normalize(_e16), _e19);
+    float _e24 = m.roughness;
+    f_color = vec4((_e20 + vec3((_e24 * 0.1))), 1.0);
+    vec4 _e32 = f_color;
+    struct_fs_out _tmp_return = struct_fs_out(_e32);
+    _fs2p_location0 = _tmp_return.f_color;
+    return;
+}
+

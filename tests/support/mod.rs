@@ -1,0 +1,257 @@
+//! Helpers shared by the integration tests.
+//!
+//! - [`fake_lowered`]: a `Lowered` built from WGSL, shaped like the real
+//!   lowering's output, so emitter tests do not depend on the front end.
+//! - Validator runners: `glslangValidator` (each GLSL file, and each
+//!   vertex+fragment pair linked) and `spirv-val`. A missing tool fails the
+//!   test when `CI=true` and skips it (with a message) otherwise.
+#![allow(dead_code)]
+
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+use naga::valid::{Capabilities, ValidationFlags, Validator};
+use umbrac::emit::reflect::dsl_name;
+use umbrac::lower::{EntryInterface, Interface, IoVar, Resource, ResourceKind, SamplerKind};
+use umbrac::{Artifact, Conventions, Lowered, Reflection, Span};
+
+/// Parses WGSL written in GL conventions into the two modules the lowering
+/// hands the emitter: `gpu` as written (every resource bound), and `gl`, a
+/// copy with resource bindings cleared and validated without
+/// `ValidationFlags::BINDINGS`. Texture `X` pairs with sampler `X_sampler`.
+pub fn fake_lowered(src: &str) -> Lowered {
+    let gpu = naga::front::wgsl::parse_str(src).unwrap_or_else(|e| panic!("test WGSL does not parse:\n{}", e.emit_to_string(src)));
+    let gpu_info = Validator::new(ValidationFlags::all(), Capabilities::default())
+        .validate(&gpu)
+        .unwrap_or_else(|e| panic!("test WGSL does not validate:\n{}", e.emit_to_string(src)));
+    let mut gl = gpu.clone();
+    for (_, g) in gl.global_variables.iter_mut() {
+        if matches!(g.space, naga::AddressSpace::Uniform | naga::AddressSpace::Handle | naga::AddressSpace::Storage { .. }) {
+            g.binding = None;
+        }
+    }
+    let gl_info = Validator::new(ValidationFlags::all() - ValidationFlags::BINDINGS, naga::back::glsl::supported_capabilities())
+        .validate(&gl)
+        .unwrap_or_else(|e| panic!("GL copy does not validate:\n{}", e.emit_to_string(src)));
+    let interface = interface_of(&gpu, &gpu_info);
+    Lowered { gl, gl_info, gpu, gpu_info, interface }
+}
+
+fn sampler_kind(inner: &naga::TypeInner) -> Option<SamplerKind> {
+    use naga::{ImageClass as C, ImageDimension as D, ScalarKind as K};
+    let naga::TypeInner::Image { dim, arrayed, class } = *inner else { return None };
+    Some(match (dim, arrayed, class) {
+        (D::D2, false, C::Depth { .. }) => SamplerKind::Sampler2DShadow,
+        (D::D2, true, C::Depth { .. }) => SamplerKind::Sampler2DArrayShadow,
+        (D::Cube, false, C::Depth { .. }) => SamplerKind::SamplerCubeShadow,
+        (D::D2, false, C::Sampled { kind: K::Sint, .. }) => SamplerKind::ISampler2D,
+        (D::D2, false, C::Sampled { kind: K::Uint, .. }) => SamplerKind::USampler2D,
+        (D::D2, false, C::Sampled { .. }) => SamplerKind::Sampler2D,
+        (D::D2, true, C::Sampled { .. }) => SamplerKind::Sampler2DArray,
+        (D::D3, false, C::Sampled { .. }) => SamplerKind::Sampler3D,
+        (D::Cube, false, C::Sampled { .. }) => SamplerKind::SamplerCube,
+        _ => return None,
+    })
+}
+
+fn builtin_name(b: naga::BuiltIn, output: bool) -> String {
+    match b {
+        naga::BuiltIn::Position { .. } if output => "gl_Position".into(),
+        naga::BuiltIn::Position { .. } => "gl_FragCoord".into(),
+        naga::BuiltIn::FrontFacing => "gl_FrontFacing".into(),
+        naga::BuiltIn::VertexIndex => "gl_VertexIndex".into(),
+        naga::BuiltIn::InstanceIndex => "gl_InstanceIndex".into(),
+        naga::BuiltIn::FragDepth => "gl_FragDepth".into(),
+        naga::BuiltIn::PointSize => "gl_PointSize".into(),
+        other => format!("{other:?}"),
+    }
+}
+
+fn interface_of(m: &naga::Module, info: &naga::valid::ModuleInfo) -> Interface {
+    let mut resources = Vec::new();
+    let mut unit = 0;
+    for (h, g) in m.global_variables.iter() {
+        let name = g.name.clone().unwrap_or_default();
+        let (group, binding) = g.binding.as_ref().map(|b| (b.group, b.binding)).unwrap_or((0, 0));
+        let kind = match g.space {
+            naga::AddressSpace::Uniform => ResourceKind::Uniform { ty: g.ty, dsl_type: dsl_name(m, g.ty) },
+            naga::AddressSpace::Handle => match sampler_kind(&m.types[g.ty].inner) {
+                Some(k) => ResourceKind::Sampler(k),
+                None => continue,
+            },
+            _ => continue,
+        };
+        let mut r = Resource {
+            name: name.clone(),
+            span: Span::default(),
+            kind,
+            global: h,
+            sampler_global: None,
+            group,
+            binding,
+            sampler_binding: None,
+            texture_unit: None,
+        };
+        if let ResourceKind::Sampler(_) = r.kind {
+            let (sh, sg) = m
+                .global_variables
+                .iter()
+                .find(|(_, s)| s.name.as_deref() == Some(&format!("{name}_sampler")))
+                .unwrap_or_else(|| panic!("texture `{name}` needs a sampler `{name}_sampler`"));
+            r.sampler_global = Some(sh);
+            r.sampler_binding = sg.binding.as_ref().map(|b| b.binding);
+            r.texture_unit = Some(unit);
+            unit += 1;
+        }
+        resources.push(r);
+    }
+
+    let mut entry_points = Vec::new();
+    for (index, ep) in m.entry_points.iter().enumerate() {
+        let mut e = EntryInterface {
+            name: ep.name.clone(),
+            stage: ep.stage,
+            index,
+            inputs: vec![],
+            outputs: vec![],
+            builtins: vec![],
+            resources: vec![],
+        };
+        let visit = |name: Option<&String>, ty, binding: Option<&naga::Binding>, output: bool, e: &mut EntryInterface| match binding {
+            Some(naga::Binding::Location { location, interpolation, .. }) => {
+                let v = IoVar { name: name.cloned().unwrap_or_default(), location: *location, ty, dsl_type: dsl_name(m, ty), interpolation: *interpolation };
+                if output { e.outputs.push(v) } else { e.inputs.push(v) }
+            }
+            Some(naga::Binding::BuiltIn(b)) => e.builtins.push(builtin_name(*b, output)),
+            None => {}
+        };
+        for arg in &ep.function.arguments {
+            if let naga::TypeInner::Struct { members, .. } = &m.types[arg.ty].inner {
+                for mem in members {
+                    visit(mem.name.as_ref(), mem.ty, mem.binding.as_ref(), false, &mut e);
+                }
+            } else {
+                visit(arg.name.as_ref(), arg.ty, arg.binding.as_ref(), false, &mut e);
+            }
+        }
+        if let Some(res) = &ep.function.result {
+            if let naga::TypeInner::Struct { members, .. } = &m.types[res.ty].inner {
+                for mem in members {
+                    visit(mem.name.as_ref(), mem.ty, mem.binding.as_ref(), true, &mut e);
+                }
+            } else {
+                visit(None, res.ty, res.binding.as_ref(), true, &mut e);
+            }
+        }
+        let usage = info.get_entry_point(index);
+        for (ri, r) in resources.iter().enumerate() {
+            if !usage[r.global].is_empty() {
+                e.resources.push(ri);
+            }
+        }
+        entry_points.push(e);
+    }
+    Interface { conventions: Conventions::Portable, resources, entry_points }
+}
+
+/// Whether `tool` can run. Missing: a failure under `CI=true`, else a
+/// printed skip.
+pub fn require_tool(tool: &str) -> bool {
+    if Command::new(tool).arg("--version").output().is_ok() {
+        return true;
+    }
+    if std::env::var("CI").as_deref() == Ok("true") {
+        panic!("`{tool}` is required (CI=true) but cannot be run; install glslang-tools and spirv-tools");
+    }
+    eprintln!("skipping: `{tool}` not found (apt-get install glslang-tools spirv-tools)");
+    false
+}
+
+fn run(cmd: &mut Command) -> Result<(), String> {
+    let out = cmd.output().map_err(|e| format!("cannot run {cmd:?}: {e}"))?;
+    if out.status.success() {
+        Ok(())
+    } else {
+        Err(format!("{cmd:?} failed:\n{}{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr)))
+    }
+}
+
+/// `glslangValidator FILE` (stage from the extension, profile from `#version`).
+pub fn glslang(path: &Path) -> Result<(), String> {
+    run(Command::new("glslangValidator").arg(path))
+}
+
+/// `glslangValidator -l VERT FRAG`: compiles and links one program.
+pub fn glslang_link(vert: &Path, frag: &Path) -> Result<(), String> {
+    run(Command::new("glslangValidator").arg("-l").arg(vert).arg(frag))
+}
+
+/// `spirv-val --target-env vulkan1.0 FILE`.
+pub fn spirv_val(path: &Path) -> Result<(), String> {
+    run(Command::new("spirv-val").args(["--target-env", "vulkan1.0"]).arg(path))
+}
+
+/// Writes artifacts into `dir` (plainly; atomicity is tested elsewhere).
+pub fn write_all(dir: &Path, artifacts: &[Artifact]) -> Vec<PathBuf> {
+    artifacts
+        .iter()
+        .map(|a| {
+            let p = dir.join(&a.file_name);
+            std::fs::write(&p, &a.contents).unwrap();
+            p
+        })
+        .collect()
+}
+
+/// Vertex/fragment pairs whose interfaces match: every fragment input has a
+/// vertex output at the same location with the same type.
+pub fn link_pairs(r: &Reflection) -> Vec<(String, String)> {
+    let mut pairs = Vec::new();
+    for v in r.entry_points.iter().filter(|e| e.stage == "vertex") {
+        for f in r.entry_points.iter().filter(|e| e.stage == "fragment") {
+            if f.inputs.iter().all(|i| v.outputs.iter().any(|o| o.location == i.location && o.ty == i.ty)) {
+                pairs.push((v.name.clone(), f.name.clone()));
+            }
+        }
+    }
+    pairs
+}
+
+/// Runs every validator on outputs written to `dir`: glslangValidator on
+/// each GLSL file and on each linkable pair per profile, spirv-val on each
+/// .spv. Returns the number of validator runs (0 when tools are missing
+/// outside CI).
+pub fn validate_dir(dir: &Path, r: &Reflection) -> usize {
+    let mut runs = 0;
+    let mut failures = Vec::new();
+    let files: Vec<PathBuf> = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().path()).collect();
+    if require_tool("glslangValidator") {
+        for f in files.iter().filter(|p| matches!(p.extension().and_then(|e| e.to_str()), Some("vert" | "frag"))) {
+            runs += 1;
+            if let Err(e) = glslang(f) {
+                failures.push(e);
+            }
+        }
+        for (v, f) in link_pairs(r) {
+            for infix in ["330", "300es"] {
+                let (vp, fp) = (dir.join(format!("{v}.{infix}.vert")), dir.join(format!("{f}.{infix}.frag")));
+                if vp.exists() && fp.exists() {
+                    runs += 1;
+                    if let Err(e) = glslang_link(&vp, &fp) {
+                        failures.push(e);
+                    }
+                }
+            }
+        }
+    }
+    if require_tool("spirv-val") {
+        for f in files.iter().filter(|p| p.extension().and_then(|e| e.to_str()) == Some("spv")) {
+            runs += 1;
+            if let Err(e) = spirv_val(f) {
+                failures.push(e);
+            }
+        }
+    }
+    assert!(failures.is_empty(), "validator failures:\n{}", failures.join("\n"));
+    runs
+}
