@@ -24,7 +24,8 @@ use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 
 use umbrac::render::image_ops::{self, DiffStats};
-use umbrac::render::{hand, reference, Backend, FrameParams, Program, RenderError, Renderer, ShaderCode, ShaderSet, View};
+use umbrac::render::{hand, reference, Backend, FrameParams, Program, RenderError, Renderer, ShaderCode, ShaderSet, Via, View};
+use umbrac::{Conventions, Options};
 
 const W: u32 = 160;
 const H: u32 = 120;
@@ -105,6 +106,128 @@ fn check(r: &Renderer, program: &Program, t: f32, name: &str) -> Check {
     c
 }
 
+/// The project's scene program.
+const SCENE: &str = include_str!("../shaders/shadow.das");
+
+/// Compiles DSL text in process and picks the output the GPU gets.
+fn compiled(name: &str, text: &str, via: Via, conventions: Conventions) -> ShaderSet {
+    let opts = Options { targets: vec![via.target()], conventions, ..Default::default() };
+    let c = umbrac::compile_source(name, text, &opts);
+    let Some(result) = c.result.as_ref().filter(|_| !c.has_errors()) else {
+        panic!("{name} did not compile:\n{}", c.render_diagnostics());
+    };
+    ShaderSet::from_compiled(name, result, via).unwrap()
+}
+
+fn scene(via: Via) -> ShaderSet {
+    compiled("shaders/shadow.das", SCENE, via, Conventions::Portable)
+}
+
+#[test]
+fn compiled_program_matches_the_reference() {
+    let Some(r) = renderer() else { return };
+    let program = r.prepare(&scene(Via::Wgsl)).unwrap();
+    for t in TIMES {
+        let c = check(r, &program, t, "compiled");
+        assert!(c.passes(), "t = {t}: {c}");
+    }
+}
+
+#[test]
+fn compiled_spirv_and_wgsl_give_the_same_image() {
+    let Some(r) = renderer() else { return };
+    if !r.supports_passthrough() {
+        assert!(!on_ci(), "CI=true and {} lacks PASSTHROUGH_SHADERS", r.adapter_name());
+        eprintln!("skipping: {} lacks PASSTHROUGH_SHADERS", r.adapter_name());
+        return;
+    }
+    let wgsl = r.prepare(&scene(Via::Wgsl)).unwrap();
+    let spirv = r.prepare(&scene(Via::Spirv)).unwrap();
+    for t in [0.5, 3.0] {
+        let p = FrameParams::new(t, W, H);
+        let a = r.draw(&wgsl, &p).unwrap();
+        let b = r.draw(&spirv, &p).unwrap();
+        let stats = image_ops::diff(&a, &b, 1);
+        eprintln!("compiled wgsl vs spirv t={t}: {stats}");
+        assert!(stats.fraction_over <= 0.001, "t = {t}: {stats}");
+    }
+    let c = check(r, &spirv, 2.0, "compiled_spirv");
+    assert!(c.passes(), "{c}");
+}
+
+#[test]
+fn native_conventions_fail_the_check() {
+    let Some(r) = renderer() else { return };
+    // GL-convention code compiled without the clip-space adaptation: the
+    // shadow map's near half is clipped and its rows are mirrored.
+    let set = compiled("shaders/shadow.das", SCENE, Via::Wgsl, Conventions::Native);
+    assert_eq!(set.reflection.conventions, "native");
+    let program = r.prepare(&set).unwrap();
+    for t in TIMES {
+        let c = check(r, &program, t, "compiled_native");
+        assert!(!c.passes(), "native conventions at t = {t} passed: {c}");
+    }
+}
+
+#[test]
+fn reordered_and_struct_uniforms_render_the_same() {
+    let Some(r) = renderer() else { return };
+    let p = FrameParams::new(2.0, W, H);
+    let usual = r.render(&scene(Via::Wgsl), &p).unwrap();
+
+    // The uniform declarations in reverse order: every binding moves.
+    let lines: Vec<&str> = SCENE.lines().collect();
+    let is_uniform = |l: &&str| l.starts_with("var @uniform");
+    let uniforms: Vec<&str> = lines.iter().copied().filter(is_uniform).collect();
+    let first = lines.iter().position(|l| is_uniform(l)).unwrap();
+    let mut reordered: Vec<&str> = lines.iter().copied().filter(|l| !is_uniform(l)).collect();
+    for (i, u) in uniforms.iter().rev().enumerate() {
+        reordered.insert(first + i, u);
+    }
+    let reordered = reordered.join("\n");
+    let set = compiled("reordered.das", &reordered, Via::Wgsl, Conventions::Portable);
+    assert_eq!(set.reflection.uniform_blocks[0].name, "u_is_floor");
+    assert_eq!(set.reflection.samplers[0].texture_binding, 0, "the shadow map now comes first");
+    let image = r.render(&set, &p).unwrap();
+    assert_eq!(image_ops::diff(&usual, &image, 0).over, 0, "reordered uniforms changed the picture");
+
+    // The fragment program's values as one struct block, members in
+    // another order than their uses: bound by member name and offset.
+    let mut text = SCENE.to_string();
+    for name in ["u_light_dir", "u_cam_pos", "u_is_floor"] {
+        let decl = SCENE.lines().find(|l| l.starts_with(&format!("var @uniform {name} "))).unwrap();
+        text = text.replace(decl, "");
+        text = text.replace(name, &format!("lighting.{name}"));
+    }
+    let text = format!(
+        "struct Lighting {{\n    u_is_floor : float\n    u_cam_pos : float3\n    u_light_dir : float3\n}}\nvar @uniform lighting : Lighting\n{text}"
+    )
+    .replace("lighting.u_is_floor : float", "u_is_floor : float")
+    .replace("lighting.u_cam_pos : float3", "u_cam_pos : float3")
+    .replace("lighting.u_light_dir : float3", "u_light_dir : float3");
+    let set = compiled("struct.das", &text, Via::Wgsl, Conventions::Portable);
+    let block = set.reflection.uniform_blocks.iter().find(|b| b.name == "lighting").expect("a `lighting` block");
+    assert_eq!(block.members.len(), 3);
+    let image = r.render(&set, &p).unwrap();
+    let stats = image_ops::diff(&usual, &image, 0);
+    assert_eq!(stats.over, 0, "a struct block changed the picture: {stats}");
+}
+
+#[test]
+fn the_tutorial_itself_renders() {
+    let Some(r) = renderer() else { return };
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/reference/08_shadow.das");
+    let Ok(text) = std::fs::read_to_string(&path) else {
+        eprintln!("skipping: {} is not here", path.display());
+        return;
+    };
+    let program = r.prepare(&compiled("08_shadow.das", &text, Via::Wgsl, Conventions::Portable)).unwrap();
+    for t in [1.0, 4.0] {
+        let c = check(r, &program, t, "tutorial");
+        assert!(c.passes(), "t = {t}: {c}");
+    }
+}
+
 #[test]
 fn hand_port_matches_the_reference() {
     let Some(r) = renderer() else { return };
@@ -144,7 +267,7 @@ fn lighting_alone_matches_the_reference() {
 #[test]
 fn shadow_follows_the_sun() {
     let Some(r) = renderer() else { return };
-    let program = r.prepare(&hand::shader_set()).unwrap();
+    let program = r.prepare(&scene(Via::Wgsl)).unwrap();
     let times = [0.0, 1.5, 3.0, 4.5, 6.0];
     let checks: Vec<Check> = times.iter().map(|&t| check(r, &program, t, "sun")).collect();
     let mut previous: Option<((f64, f64), (f64, f64))> = None;
@@ -218,7 +341,7 @@ fn shadow_map_view_matches_the_reference() {
     let Some(r) = renderer() else { return };
     let mut p = FrameParams::new(2.5, W, H).with_view(View::ShadowMap);
     p.shadow_size = 256;
-    let gpu = r.render(&hand::shader_set(), &p).unwrap();
+    let gpu = r.render(&scene(Via::Wgsl), &p).unwrap();
     let cpu = reference::render(&p);
     assert_eq!(gpu.dimensions(), (256, 256));
     let stats = image_ops::diff(&gpu, &cpu, DELTA);
@@ -242,6 +365,42 @@ fn programs_that_do_not_fit_are_clear_errors() {
     assert!(matches!(err, RenderError::Interface(_)), "{text}");
     assert!(text.contains("no `u_model` uniform"), "{text}");
     assert!(text.contains("no `a_pos` vertex input in `main_vs`"), "{text}");
+
+    // A program that compiles but is not this scene's.
+    let other = r#"
+var @uniform u_light_vp : float4x4
+var @uniform u_tint : float4
+var @in @location = 0 a_position : float3
+var @out f_FragColor : float4
+[vertex_program]
+def shadow_vs {
+    gl_Position = u_light_vp * float4(a_position, 1.0)
+}
+[fragment_program]
+def shadow_fs {
+    f_FragColor = u_tint
+}
+[vertex_program]
+def main_vs {
+    gl_Position = u_light_vp * float4(a_position, 1.0)
+}
+[fragment_program]
+def main_fs {
+    f_FragColor = u_tint
+}
+"#;
+    let err = r.prepare(&compiled("other.das", other, Via::Wgsl, Conventions::Portable)).err().expect("refused");
+    let text = err.to_string();
+    eprintln!("{text}");
+    for needle in [
+        "no `u_model` uniform",
+        "no `u_proj` uniform",
+        "uniform `u_tint` is not a value the scene sets",
+        "vertex input `a_position` of `main_vs` is not in the scene's meshes",
+        "no `a_pos` vertex input in `shadow_vs`",
+    ] {
+        assert!(text.contains(needle), "missing {needle:?} in:\n{text}");
+    }
 
     let broken = ShaderSet::single("broken.wgsl", ShaderCode::Wgsl("fn oops( {".into()), hand::reflection());
     let err = r.prepare(&broken).err().expect("WGSL that does not parse must be refused");
