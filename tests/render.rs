@@ -15,10 +15,13 @@
 //!   frame rendered with an empty shadow map) of GPU and reference must
 //!   overlap with an intersection-over-union of at least `MIN_SHADOW_IOU`
 //!   = 0.9.
+//!
 //! Measured on lavapipe with the hand port: 0.05 - 0.31 % differing
 //! (shadow-edge pixels, where 3x3 PCF softens what the reference decides
 //! exactly), IoU 0.98 - 0.99. A mirrored shadow measures 23 - 34 % and IoU
 //! below 0.13; a missing one 1.3 - 7 % and IoU 0.
+
+#![cfg(feature = "render")]
 
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
@@ -179,7 +182,7 @@ fn reordered_and_struct_uniforms_render_the_same() {
     let lines: Vec<&str> = SCENE.lines().collect();
     let is_uniform = |l: &&str| l.starts_with("var @uniform");
     let uniforms: Vec<&str> = lines.iter().copied().filter(is_uniform).collect();
-    let first = lines.iter().position(|l| is_uniform(l)).unwrap();
+    let first = lines.iter().position(is_uniform).unwrap();
     let mut reordered: Vec<&str> = lines.iter().copied().filter(|l| !is_uniform(l)).collect();
     for (i, u) in uniforms.iter().rev().enumerate() {
         reordered.insert(first + i, u);
@@ -425,6 +428,7 @@ fn gl_backend_agrees_with_vulkan() {
     assert!(stats.fraction_over <= 0.002, "{stats}");
 }
 
+#[cfg(feature = "cli")]
 mod cli {
     use super::*;
     use clap::Parser;
@@ -467,4 +471,27 @@ mod cli {
         let hand = concat!(env!("CARGO_MANIFEST_DIR"), "/shaders/hand/shadow.wgsl");
         assert_eq!(run(&args(&[hand, "--via", "spirv"])), 1);
     }
+}
+
+#[test]
+fn hand_reflection_matches_the_compilers() {
+    // The hand port claims the compiler's binding model; hold it to that.
+    let c = umbrac::compile_source("shaders/shadow.das", SCENE, &Options::default());
+    let compiled = &c.result.as_ref().expect("the scene compiles").reflection;
+    let hand = hand::reflection();
+    assert_eq!(hand.uniform_blocks, compiled.uniform_blocks);
+    assert_eq!(hand.samplers, compiled.samplers);
+    assert_eq!(hand.conventions, compiled.conventions);
+    let key = |r: &umbrac::Reflection| -> Vec<_> {
+        r.entry_points
+            .iter()
+            .map(|e| {
+                let io = |v: &[umbrac::emit::reflect_types::Io]| -> Vec<_> {
+                    v.iter().map(|i| (i.name.clone(), i.location, i.ty.clone(), i.vertex_format.clone())).collect()
+                };
+                (e.name.clone(), e.stage.clone(), io(&e.inputs), io(&e.outputs), e.uniform_blocks.clone(), e.samplers.clone())
+            })
+            .collect()
+    };
+    assert_eq!(key(&hand), key(compiled));
 }

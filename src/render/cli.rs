@@ -178,7 +178,7 @@ fn execute(args: &RenderArgs) -> Result<(), String> {
         return Err(format!("--shadow-size {} must be between 1 and 16384", args.shadow_size));
     }
     if let Some(n) = args.frames {
-        if n == 0 || !(args.fps > 0.0) {
+        if n == 0 || args.fps.is_nan() || args.fps <= 0.0 {
             return Err("--frames needs N >= 1 and --fps above 0".into());
         }
     }

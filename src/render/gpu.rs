@@ -94,7 +94,7 @@ impl ShaderCode {
 
     /// SPIR-V words from little-endian bytes.
     pub fn spirv_from_bytes(bytes: &[u8]) -> Result<ShaderCode, String> {
-        if bytes.len() % 4 != 0 || bytes.len() < 20 {
+        if !bytes.len().is_multiple_of(4) || bytes.len() < 20 {
             return Err(format!("{} bytes is not a SPIR-V module", bytes.len()));
         }
         let words: Vec<u32> = bytes.chunks_exact(4).map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect();
@@ -500,7 +500,7 @@ impl Renderer {
         let value = f();
         let errors: Vec<wgpu::Error> = [internal.pop(), memory.pop(), validation.pop()]
             .into_iter()
-            .filter_map(|fut| pollster::block_on(fut))
+            .filter_map(pollster::block_on)
             .collect();
         let mut uncaptured = self.uncaptured.lock().unwrap_or_else(|p| p.into_inner());
         let mut messages: Vec<String> = errors.iter().map(|e| e.to_string()).collect();
