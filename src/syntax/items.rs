@@ -308,10 +308,8 @@ fn local_names<'m>(toks: &[Token], item: &RawItem, map: &'m SourceMap) -> HashSe
                             break;
                         }
                     }
-                    TokKind::Ident if depth == 1 => {
-                        if toks.get(k + 1).is_some_and(|t| t.is(P::Comma) || t.is(P::Colon)) {
-                            set.insert(map.slice(toks[k].span));
-                        }
+                    TokKind::Ident if depth == 1 && toks.get(k + 1).is_some_and(|t| t.is(P::Comma) || t.is(P::Colon)) => {
+                        set.insert(map.slice(toks[k].span));
                     }
                     _ => {}
                 }

@@ -79,7 +79,7 @@ impl<'a> Lexer<'a> {
                         j += 1;
                     }
                     self.i = j;
-                    let kind = match Kw::from_str(&self.text[start..j]) {
+                    let kind = match Kw::from_name(&self.text[start..j]) {
                         Some(k) => TokKind::Kw(k),
                         None => TokKind::Ident,
                     };
