@@ -187,7 +187,7 @@ fn shadow_vs_declares_only_what_it_uses() {
     );
     let ins: Vec<&str> = vs.lines().filter(|l| l.contains(" in ")).collect();
     assert_eq!(ins, ["layout(location = 0) in vec3 _p2vs_location0;"], "{vs}");
-    for other in ["u_view", "u_proj", "u_light_dir", "u_cam_pos", "u_is_floor", "shadow_map", "a_normal"] {
+    for other in ["u_view", "u_proj", "u_light_dir", "u_cam_pos", "u_is_floor", "shadow_map", "a_normal", "main_vs_out", "sun_visibility"] {
         assert!(!vs.contains(other), "{other} in shadow_vs:\n{vs}");
     }
     // No y flip or z rewrite in GL outputs.
