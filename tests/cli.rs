@@ -1,8 +1,7 @@
 //! Tests of the `umbrac` binary: exit codes, `-o -`, JSON diagnostics and
 //! atomic outputs.
 //!
-//! Tests that need a successful compile of a real `.das` file are marked
-//! `#[ignore = "needs the parser and lowering"]` until the front end lands.
+//! Tests of successful compiles use the project's own programs.
 
 mod support;
 
@@ -192,7 +191,6 @@ fn shadow_das() -> PathBuf {
 }
 
 #[test]
-#[ignore = "needs the parser and lowering"]
 fn compile_writes_every_output() {
     let d = tempfile::tempdir().unwrap();
     let o = umbrac(&["compile", shadow_das().to_str().unwrap(), "-o", "out"], d.path());
@@ -214,7 +212,6 @@ fn compile_writes_every_output() {
 }
 
 #[test]
-#[ignore = "needs the parser and lowering"]
 fn default_output_directory_is_the_current_one() {
     let d = tempfile::tempdir().unwrap();
     let o = umbrac(&["compile", shadow_das().to_str().unwrap(), "--target", "wgsl"], d.path());
@@ -225,7 +222,6 @@ fn default_output_directory_is_the_current_one() {
 }
 
 #[test]
-#[ignore = "needs the parser and lowering"]
 fn stdout_output() {
     let d = tempfile::tempdir().unwrap();
     let das = shadow_das();
@@ -244,7 +240,6 @@ fn stdout_output() {
 }
 
 #[test]
-#[ignore = "needs the parser and lowering"]
 fn check_and_reflect_write_nothing() {
     let d = tempfile::tempdir().unwrap();
     let das = shadow_das();
@@ -258,7 +253,6 @@ fn check_and_reflect_write_nothing() {
 }
 
 #[test]
-#[ignore = "needs the parser and lowering"]
 fn cli_write_failure_keeps_old_outputs() {
     let d = tempfile::tempdir().unwrap();
     let das = shadow_das();
@@ -276,7 +270,6 @@ fn cli_write_failure_keeps_old_outputs() {
 }
 
 #[test]
-#[ignore = "needs the parser and lowering"]
 fn parallel_files_failed_one_writes_nothing() {
     let d = tempfile::tempdir().unwrap();
     std::fs::write(d.path().join("bad.das"), BAD).unwrap();
@@ -289,7 +282,6 @@ fn parallel_files_failed_one_writes_nothing() {
 }
 
 #[test]
-#[ignore = "needs the parser and lowering"]
 fn syntax_error_json_has_a_location() {
     let d = tempfile::tempdir().unwrap();
     std::fs::write(d.path().join("bad.das"), BAD).unwrap();
@@ -298,11 +290,10 @@ fn syntax_error_json_has_a_location() {
     let first: serde_json::Value = serde_json::from_str(stdout(&o).lines().next().unwrap()).unwrap();
     assert_eq!(first["severity"], "error");
     assert_eq!(first["location"]["file"], "bad.das");
-    assert_eq!(first["location"]["line"], 3);
+    assert_eq!(first["location"]["line"], 4, "reported at the token that ends the unclosed call");
 }
 
 #[test]
-#[ignore = "needs the parser and lowering"]
 fn reference_tutorial_compiles_and_validates() {
     let reference = repo().join("../shared/reference/08_shadow.das");
     if !reference.exists() {
