@@ -1,1 +1,382 @@
-fn main(){}
+//! The `umbrac` command line.
+//!
+//! ```text
+//! umbrac compile FILE... [--target glsl330|gles300|wgsl|spirv|all]... [-o DIR]
+//!                [-D NAME[=VALUE]]... [-I DIR]... [--entry NAME]...
+//!                [--conventions portable|native] [--allow-outside-includes]
+//!                [--message-format human|json]
+//! umbrac check FILE...      (compile for every target, write nothing)
+//! umbrac reflect FILE       (print the reflection manifest)
+//! umbrac render ...         (feature `render`)
+//! ```
+//!
+//! Exit status: 0 success, 1 compile error (or outputs that cannot be
+//! written), 2 bad usage, 3 internal compiler error.
+//!
+//! Several FILEs compile in parallel; each file's outputs are written
+//! atomically and only if that file compiled without errors. `-o -` prints
+//! the single text output of a single FILE to stdout (the manifest is not
+//! printed; use `umbrac reflect` for it). Diagnostics go to stderr as
+//! codespan-reporting text, or with `--message-format json` to stdout, one
+//! JSON object per line.
+
+use std::io::{IsTerminal, Write};
+use std::path::{Path, PathBuf};
+use std::process::ExitCode;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
+
+use clap::{Args, Parser, Subcommand, ValueEnum};
+use codespan_reporting::term::termcolor::{ColorChoice, StandardStream};
+use umbrac::{Compilation, Conventions, Diagnostic, Options, Severity, SourceMap, Target};
+
+const EXIT_ERROR: u8 = 1;
+const EXIT_USAGE: u8 = 2;
+const EXIT_BUG: u8 = 3;
+
+#[derive(Parser, Debug)]
+#[command(name = "umbrac", version, about = "Compiles daslang shaders to GLSL 330, GLSL ES 3.00, WGSL and SPIR-V")]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand, Debug)]
+enum Command {
+    /// Compile shader files and write the outputs.
+    Compile(CompileArgs),
+    /// Compile for every target and report diagnostics; write nothing.
+    Check(CheckArgs),
+    /// Print the reflection manifest of a shader file.
+    Reflect(ReflectArgs),
+    /// Render the shadow scene from compiled shaders.
+    #[cfg(feature = "render")]
+    Render(umbrac::render::cli::RenderArgs),
+}
+
+#[derive(Args, Debug)]
+struct CompileArgs {
+    /// Input files.
+    #[arg(required = true, value_name = "FILE")]
+    files: Vec<PathBuf>,
+    /// Targets to emit (repeatable); default: all.
+    #[arg(long = "target", value_enum, value_name = "TARGET")]
+    targets: Vec<TargetArg>,
+    /// Output directory (created if missing), or `-` for stdout; default: the current directory.
+    #[arg(short = 'o', value_name = "DIR")]
+    out: Option<PathBuf>,
+    #[command(flatten)]
+    common: CommonArgs,
+}
+
+#[derive(Args, Debug)]
+struct CheckArgs {
+    #[arg(required = true, value_name = "FILE")]
+    files: Vec<PathBuf>,
+    #[command(flatten)]
+    common: CommonArgs,
+}
+
+#[derive(Args, Debug)]
+struct ReflectArgs {
+    #[arg(value_name = "FILE")]
+    file: PathBuf,
+    #[command(flatten)]
+    common: CommonArgs,
+}
+
+#[derive(Args, Debug)]
+struct CommonArgs {
+    /// Define a preprocessor name (repeatable).
+    #[arg(short = 'D', value_name = "NAME[=VALUE]", value_parser = parse_define)]
+    defines: Vec<Define>,
+    /// Add an include directory (repeatable).
+    #[arg(short = 'I', value_name = "DIR")]
+    include_dirs: Vec<PathBuf>,
+    /// Compile only this entry point (repeatable); default: all.
+    #[arg(long = "entry", value_name = "NAME")]
+    entries: Vec<String>,
+    /// Clip-space conventions of the WGSL and SPIR-V outputs.
+    #[arg(long, value_enum, default_value_t = ConventionsArg::Portable)]
+    conventions: ConventionsArg,
+    /// Let #include reach files outside the input's directory and the -I directories.
+    #[arg(long)]
+    allow_outside_includes: bool,
+    /// How diagnostics are printed.
+    #[arg(long, value_enum, default_value_t = MessageFormat::Human)]
+    message_format: MessageFormat,
+}
+
+#[derive(Clone, Debug)]
+struct Define(String, Option<String>);
+
+fn parse_define(s: &str) -> Result<Define, String> {
+    let (name, value) = match s.split_once('=') {
+        Some((n, v)) => (n, Some(v.to_string())),
+        None => (s, None),
+    };
+    let ok = name.chars().next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_') && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+    if !ok {
+        return Err(format!("`{name}` is not a valid preprocessor name"));
+    }
+    Ok(Define(name.to_string(), value))
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum TargetArg {
+    #[value(name = "glsl330")]
+    Glsl330,
+    #[value(name = "gles300")]
+    Gles300,
+    #[value(name = "wgsl")]
+    Wgsl,
+    #[value(name = "spirv")]
+    Spirv,
+    #[value(name = "all")]
+    All,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum ConventionsArg {
+    Portable,
+    Native,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum MessageFormat {
+    Human,
+    Json,
+}
+
+impl CommonArgs {
+    fn options(&self, targets: Vec<Target>) -> Options {
+        Options {
+            targets,
+            defines: self.defines.iter().map(|d| (d.0.clone(), d.1.clone())).collect(),
+            include_dirs: self.include_dirs.clone(),
+            entries: self.entries.clone(),
+            conventions: match self.conventions {
+                ConventionsArg::Portable => Conventions::Portable,
+                ConventionsArg::Native => Conventions::Native,
+            },
+            allow_outside_includes: self.allow_outside_includes,
+        }
+    }
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse(); // bad usage: clap prints it and exits with 2
+    let code = match cli.command {
+        Command::Compile(args) => compile(&args),
+        Command::Check(args) => check(&args),
+        Command::Reflect(args) => reflect(&args),
+        #[cfg(feature = "render")]
+        Command::Render(args) => umbrac::render::cli::run(&args).clamp(0, 255) as u8,
+    };
+    ExitCode::from(code)
+}
+
+/// Prints diagnostics in the chosen format.
+struct Reporter {
+    format: MessageFormat,
+    stderr: StandardStream,
+}
+
+impl Reporter {
+    fn new(format: MessageFormat) -> Self {
+        let color = if std::io::stderr().is_terminal() { ColorChoice::Auto } else { ColorChoice::Never };
+        Reporter { format, stderr: StandardStream::stderr(color) }
+    }
+
+    fn diagnostic(&mut self, d: &Diagnostic, map: &SourceMap) {
+        match self.format {
+            MessageFormat::Human => d.emit(map, &mut self.stderr),
+            MessageFormat::Json => {
+                if let Ok(line) = serde_json::to_string(&d.to_json(map)) {
+                    let mut out = std::io::stdout().lock();
+                    let _ = writeln!(out, "{line}");
+                }
+            }
+        }
+    }
+
+    /// A diagnostic that belongs to no source file (I/O errors, usage).
+    fn plain(&mut self, d: &Diagnostic) {
+        self.diagnostic(d, &SourceMap::new());
+    }
+
+    fn compilation(&mut self, c: &Compilation) {
+        for d in &c.diagnostics {
+            self.diagnostic(d, &c.sources);
+        }
+        if c.suppressed_errors > 0 {
+            self.diagnostic(&Diagnostic::error_nowhere(format!("{} more errors not shown", c.suppressed_errors)), &c.sources);
+        }
+        // A failed compilation always says why.
+        if c.result.is_none() && !c.diagnostics.iter().any(|d| d.is_error()) {
+            self.plain(&Diagnostic::bug("compilation failed without a diagnostic", None));
+        }
+    }
+}
+
+fn exit_code(c: &Compilation) -> u8 {
+    if c.diagnostics.iter().any(|d| d.severity == Severity::Bug) || (c.result.is_none() && !c.diagnostics.iter().any(|d| d.is_error())) {
+        EXIT_BUG
+    } else if c.has_errors() {
+        EXIT_ERROR
+    } else {
+        0
+    }
+}
+
+fn usage_error(msg: &str) -> u8 {
+    eprintln!("error: {msg}");
+    eprintln!("\nFor more information, try '--help'.");
+    EXIT_USAGE
+}
+
+/// Compiles every file, in parallel, each on a worker thread with a large
+/// stack. A panic in one compilation becomes an internal error for that file.
+fn compile_all(files: &[PathBuf], opts: &Options) -> Vec<Compilation> {
+    let results: Vec<Mutex<Option<Compilation>>> = files.iter().map(|_| Mutex::new(None)).collect();
+    let next = AtomicUsize::new(0);
+    let workers = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1).min(files.len()).max(1);
+    std::thread::scope(|s| {
+        for _ in 0..workers {
+            let spawned = std::thread::Builder::new().stack_size(64 << 20).spawn_scoped(s, || loop {
+                let i = next.fetch_add(1, Ordering::Relaxed);
+                let Some(path) = files.get(i) else { break };
+                let c = std::panic::catch_unwind(|| umbrac::compile_file(path, opts)).unwrap_or_else(|_| panicked(path));
+                if let Ok(mut slot) = results[i].lock() {
+                    *slot = Some(c);
+                }
+            });
+            if spawned.is_err() {
+                break; // the files left are compiled below, on this thread
+            }
+        }
+    });
+    results
+        .into_iter()
+        .zip(files)
+        .map(|(m, path)| m.into_inner().ok().flatten().unwrap_or_else(|| umbrac::compile_file(path, opts)))
+        .collect()
+}
+
+fn panicked(path: &Path) -> Compilation {
+    Compilation {
+        sources: SourceMap::new(),
+        diagnostics: vec![Diagnostic::bug(format!("the compiler panicked while compiling `{}`", path.display()), None)],
+        suppressed_errors: 0,
+        result: None,
+    }
+}
+
+fn targets_of(args: &[TargetArg]) -> Vec<Target> {
+    let mut t: Vec<Target> = Vec::new();
+    for a in args {
+        match a {
+            TargetArg::Glsl330 => t.push(Target::Glsl330),
+            TargetArg::Gles300 => t.push(Target::Gles300),
+            TargetArg::Wgsl => t.push(Target::Wgsl),
+            TargetArg::Spirv => t.push(Target::Spirv),
+            TargetArg::All => t.extend(Target::ALL),
+        }
+    }
+    t.sort();
+    t.dedup();
+    if t.is_empty() {
+        Target::ALL.to_vec()
+    } else {
+        t
+    }
+}
+
+fn compile(args: &CompileArgs) -> u8 {
+    let targets = targets_of(&args.targets);
+    let to_stdout = args.out.as_deref() == Some(Path::new("-"));
+    if to_stdout {
+        if args.files.len() != 1 {
+            return usage_error("`-o -` prints one output to stdout; give exactly one FILE");
+        }
+        if targets.contains(&Target::Spirv) {
+            return usage_error("`-o -` prints one text output; SPIR-V is binary (choose one --target of glsl330, gles300, wgsl)");
+        }
+    }
+    let opts = args.common.options(targets);
+    let comps = compile_all(&args.files, &opts);
+
+    let mut reporter = Reporter::new(args.common.message_format);
+    let mut code = 0;
+    let dir = args.out.clone().unwrap_or_else(|| PathBuf::from("."));
+    let mut written: Vec<(String, &Path)> = Vec::new();
+    for (path, c) in args.files.iter().zip(&comps) {
+        reporter.compilation(c);
+        code = code.max(exit_code(c));
+        let Some(result) = c.result.as_ref().filter(|_| !c.has_errors()) else { continue };
+
+        if to_stdout {
+            let outputs: Vec<_> = result.artifacts.iter().filter(|a| a.target.is_some()).collect();
+            if outputs.len() != 1 {
+                let names: Vec<_> = outputs.iter().map(|a| a.file_name.as_str()).collect();
+                return usage_error(&format!(
+                    "`-o -` needs exactly one output, but this compile has {} ({}); narrow it with --target and --entry",
+                    outputs.len(),
+                    names.join(", ")
+                ));
+            }
+            let mut out = std::io::stdout().lock();
+            let _ = out.write_all(&outputs[0].contents).and_then(|_| out.flush());
+            continue;
+        }
+
+        if let Some(a) = result.artifacts.iter().find(|a| written.iter().any(|(n, _)| n == &a.file_name)) {
+            let (_, other) = written.iter().find(|(n, _)| n == &a.file_name).expect("found above");
+            reporter.plain(&Diagnostic::error_nowhere(format!(
+                "`{}` is an output of both `{}` and `{}`; nothing was written for `{}` (compile them into different directories)",
+                a.file_name,
+                other.display(),
+                path.display(),
+                path.display()
+            )));
+            code = code.max(EXIT_ERROR);
+            continue;
+        }
+        match umbrac::output::write_artifacts(&dir, &result.artifacts) {
+            Ok(()) => written.extend(result.artifacts.iter().map(|a| (a.file_name.clone(), path.as_path()))),
+            Err(e) => {
+                reporter.plain(&Diagnostic::error_nowhere(format!("{e}; no output of `{}` was changed", path.display())));
+                code = code.max(EXIT_ERROR);
+            }
+        }
+    }
+    code
+}
+
+fn check(args: &CheckArgs) -> u8 {
+    let opts = args.common.options(Target::ALL.to_vec());
+    let comps = compile_all(&args.files, &opts);
+    let mut reporter = Reporter::new(args.common.message_format);
+    let mut code = 0;
+    for c in &comps {
+        reporter.compilation(c);
+        code = code.max(exit_code(c));
+    }
+    code
+}
+
+fn reflect(args: &ReflectArgs) -> u8 {
+    let opts = args.common.options(Target::ALL.to_vec());
+    let comps = compile_all(std::slice::from_ref(&args.file), &opts);
+    let c = &comps[0];
+    let mut reporter = Reporter::new(args.common.message_format);
+    reporter.compilation(c);
+    let code = exit_code(c);
+    if let Some(result) = c.result.as_ref().filter(|_| code == 0) {
+        if let Some(manifest) = result.artifacts.iter().find(|a| a.target.is_none()) {
+            let mut out = std::io::stdout().lock();
+            let _ = out.write_all(&manifest.contents).and_then(|_| out.flush());
+        }
+    }
+    code
+}

@@ -187,7 +187,7 @@ fn shadow_vs_declares_only_what_it_uses() {
     );
     let ins: Vec<&str> = vs.lines().filter(|l| l.contains(" in ")).collect();
     assert_eq!(ins, ["layout(location = 0) in vec3 _p2vs_location0;"], "{vs}");
-    for other in ["u_view", "u_proj", "u_light_dir", "u_cam_pos", "u_is_floor", "shadow_map", "a_normal"] {
+    for other in ["u_view", "u_proj", "u_light_dir", "u_cam_pos", "u_is_floor", "shadow_map", "a_normal", "main_vs_out", "sun_visibility"] {
         assert!(!vs.contains(other), "{other} in shadow_vs:\n{vs}");
     }
     // No y flip or z rewrite in GL outputs.
@@ -441,4 +441,37 @@ var<private> u_model_block: vec4<f32>;
     let err = emit::emit(&lowered, "c", "c.das", &[Target::Glsl330]).unwrap_err();
     assert_eq!(err.severity, Severity::Bug);
     assert!(err.message.contains("collide"), "{err:?}");
+}
+
+/// What the preamble guards against: an ES sampler2DShadow with neither a
+/// default precision nor a qualifier on its declaration is rejected. naga
+/// also qualifies the declaration (`uniform highp sampler2DShadow`), so the
+/// preamble is what keeps the file valid wherever a sampler type is spelled
+/// without one; with the preamble the unqualified form compiles.
+#[test]
+fn glslang_needs_the_es_precision_line() {
+    if !support::require_tool("glslangValidator") {
+        return;
+    }
+    let (arts, _) = emit_all(SHADOW);
+    let fs = text(&arts, "main_fs.300es.frag");
+    let unqualified = fs.replace("uniform highp sampler2DShadow", "uniform sampler2DShadow");
+    let dir = tempfile::tempdir().unwrap();
+    let with = dir.path().join("with.frag");
+    let without = dir.path().join("without.frag");
+    std::fs::write(&with, &unqualified).unwrap();
+    std::fs::write(&without, unqualified.replace("precision highp sampler2DShadow;\n", "")).unwrap();
+    support::glslang(&with).unwrap();
+    let err = support::glslang(&without).unwrap_err();
+    assert!(err.contains("precision"), "{err}");
+}
+
+/// Writes the shadow scene's outputs to `$UMBRAC_DUMP` for inspection.
+#[test]
+fn dump_when_asked() {
+    if let Ok(dir) = std::env::var("UMBRAC_DUMP") {
+        let (arts, _) = emit_all(SHADOW);
+        std::fs::create_dir_all(&dir).unwrap();
+        support::write_all(std::path::Path::new(&dir), &arts);
+    }
 }

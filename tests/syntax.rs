@@ -402,6 +402,31 @@ fn garbage_never_panics() {
     }
 }
 
+#[test]
+fn token_soup_never_panics() {
+    // A deterministic pseudo-random mix of daslang fragments.
+    let parts = [
+        "var", "let", "def", "struct", "[vertex_program]", "[fragment_program]", "@uniform", "@in", "@location", "=", "==", "(",
+        ")", "[", "]", "{", "}", "\n", ";", ",", ":", "?", "x", "float4", "1", "1.5", "0x", "1e", ".", "+", "-", "*", "++",
+        "if", "elif", "else", "for", "in", "while", "return", "\"", "'", "/*", "*/", "//", "#ifdef A", "#endif", "#define A (",
+        "§", "\0", "fixed_array<", ">", "<-", ":=", "@@", "$", "1.0d", "9999999999999999999999",
+    ];
+    let mut state = 0x2545_f491_4f6c_dd1du64;
+    for _ in 0..3000 {
+        let mut s = String::new();
+        for _ in 0..(state % 60) {
+            state ^= state << 13;
+            state ^= state >> 7;
+            state ^= state << 17;
+            s.push_str(parts[(state % parts.len() as u64) as usize]);
+            s.push(if state & 0x100 != 0 { ' ' } else { '\n' });
+        }
+        let _ = parse_str(&s);
+        let _ = parse_str(&fs(&s));
+        state = state.wrapping_add(0x9e37_79b9_7f4a_7c15);
+    }
+}
+
 // ---------------------------------------------------------------- preprocessor
 
 struct Dir {

@@ -11,6 +11,10 @@
 //!   a `precision highp T;` line for every sampler type the shader uses that
 //!   ES 3.00 gives no default precision (`sampler2DShadow`, ...).
 //!
+//! Each file is written from a copy of `gl` reduced to its one entry point
+//! (`naga::compact`), so it declares only the structs, functions and globals
+//! that entry point reaches, not the other stages' output structs.
+//!
 //! Writer flags are empty: the default (`ADJUST_COORDINATE_SPACE`) would flip
 //! y and rewrite z, but the DSL already is GL-convention code.
 
@@ -115,6 +119,7 @@ fn policies() -> BoundsCheckPolicies {
 /// Writes one entry point of `lowered.gl` and fixes up its names.
 pub fn write_entry(lowered: &Lowered, ep: &EntryInterface, profile: Profile) -> Result<(String, EntryNames), Diagnostic> {
     let what = format!("the {} writer for entry point `{}`", profile.label(), ep.name);
+    let (module, module_info, to_original) = entry_module(lowered, ep)?;
     let (raw, info) = guard(&what, || {
         let options = Options {
             version: profile.version(),
@@ -124,7 +129,7 @@ pub fn write_entry(lowered: &Lowered, ep: &EntryInterface, profile: Profile) -> 
         };
         let pipeline = PipelineOptions { shader_stage: ep.stage, entry_point: ep.name.clone(), multiview: None };
         let mut out = String::new();
-        let mut writer = naga::back::glsl::Writer::new(&mut out, &lowered.gl, &lowered.gl_info, &options, &pipeline, policies())
+        let mut writer = naga::back::glsl::Writer::new(&mut out, &module, &module_info, &options, &pipeline, policies())
             .map_err(|e| e.to_string())?;
         let info = writer.write().map_err(|e| e.to_string())?;
         drop(writer);
@@ -149,14 +154,14 @@ pub fn write_entry(lowered: &Lowered, ep: &EntryInterface, profile: Profile) -> 
             return Err(bug(format!("two uniform blocks would both be named `{new}`")));
         }
         out = text::replace_ident(&out, naga_block, &new);
-        names.blocks.insert(handle.index(), new);
+        names.blocks.insert(to_original(*handle)?, new);
     }
 
     for (name, mapping) in &info.texture_mapping {
         if !text::contains_ident(&out, name) {
             return Err(bug(format!("sampler `{name}` reported by naga is not in the text")));
         }
-        names.samplers.insert(mapping.texture.index(), name.clone());
+        names.samplers.insert(to_original(mapping.texture)?, name.clone());
     }
 
     // Attributes, varyings and colour outputs are named by location
@@ -186,6 +191,48 @@ pub fn write_entry(lowered: &Lowered, ep: &EntryInterface, profile: Profile) -> 
         out = add_es_precision(&out).ok_or_else(|| bug("no `precision highp int;` line to extend".into()))?;
     }
     Ok((out, names))
+}
+
+type GlobalMap = Box<dyn Fn(naga::Handle<naga::GlobalVariable>) -> Result<usize, Diagnostic>>;
+
+/// A copy of `lowered.gl` holding only `ep` and what it reaches, validated
+/// afresh, and a map from its globals back to `gl`'s global indices (by
+/// name: compaction renumbers handles but keeps names, which the lowering
+/// makes unique).
+fn entry_module(lowered: &Lowered, ep: &EntryInterface) -> Result<(naga::Module, naga::valid::ModuleInfo, GlobalMap), Diagnostic> {
+    let what = format!("reducing the GL module to entry point `{}`", ep.name);
+    let (module, info) = guard(&what, || {
+        let mut module = lowered.gl.clone();
+        let keep = ep.index;
+        let mut i = 0;
+        module.entry_points.retain(|_| {
+            i += 1;
+            i - 1 == keep
+        });
+        naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
+        let info = naga::valid::Validator::new(
+            naga::valid::ValidationFlags::all() - naga::valid::ValidationFlags::BINDINGS,
+            naga::back::glsl::supported_capabilities(),
+        )
+        .validate(&module)
+        .map_err(|e| format!("{e:?}"))?;
+        Ok((module, info))
+    })?;
+    let mut map = BTreeMap::new();
+    for (h, g) in module.global_variables.iter() {
+        let original = lowered.gl.global_variables.iter().filter(|(_, o)| o.name.is_some() && o.name == g.name && o.space == g.space).map(|(oh, _)| oh.index());
+        let found: Vec<usize> = original.collect();
+        if let [one] = found[..] {
+            map.insert(h.index(), one);
+        }
+    }
+    let ep_name = ep.name.clone();
+    let to_original: GlobalMap = Box::new(move |h| {
+        map.get(&h.index()).copied().ok_or_else(|| {
+            Diagnostic::bug(format!("a global of entry point `{ep_name}` has no unique name to match it with the GL module"), None)
+        })
+    });
+    Ok((module, info, to_original))
 }
 
 /// The instance name declared inside `uniform BLOCK { T name; };`.

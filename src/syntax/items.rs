@@ -9,11 +9,32 @@
 //! is parsed, so host code can hold anything.
 
 use std::collections::{HashMap, HashSet};
+use std::hash::{BuildHasherDefault, Hasher};
 use std::ops::Range;
 
 use super::token::{Kw, TokKind, Token, P};
 use crate::diag::{suggest, Diagnostic, Diagnostics};
 use crate::source::{SourceMap, Span};
+
+/// FNV-1a: names are short, and SipHash dominated selection time.
+#[derive(Default)]
+struct Fnv(u64);
+
+impl Hasher for Fnv {
+    fn finish(&self) -> u64 {
+        self.0
+    }
+
+    fn write(&mut self, bytes: &[u8]) {
+        let mut h = if self.0 == 0 { 0xcbf2_9ce4_8422_2325 } else { self.0 };
+        for &b in bytes {
+            h = (h ^ b as u64).wrapping_mul(0x0100_0000_01b3);
+        }
+        self.0 = h;
+    }
+}
+
+type FnvBuild = BuildHasherDefault<Fnv>;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ItemKind {
@@ -279,8 +300,8 @@ pub fn split(toks: &[Token], map: &SourceMap) -> Vec<RawItem> {
 
 /// Names declared inside an item (locals, loop variables, parameters):
 /// a use of one of these does not pull in a top-level item.
-fn local_names<'m>(toks: &[Token], item: &RawItem, map: &'m SourceMap) -> HashSet<&'m str> {
-    let mut set: HashSet<&str> = item.names.iter().map(|&k| map.slice(toks[k].span)).collect();
+fn local_names<'m>(toks: &[Token], item: &RawItem, map: &'m SourceMap) -> HashSet<&'m str, FnvBuild> {
+    let mut set: HashSet<&str, FnvBuild> = item.names.iter().map(|&k| map.slice(toks[k].span)).collect();
     let r = item.body.clone();
     if matches!(item.kind, ItemKind::Struct | ItemKind::Class) {
         // Field names: `a, b : T`.
@@ -308,10 +329,8 @@ fn local_names<'m>(toks: &[Token], item: &RawItem, map: &'m SourceMap) -> HashSe
                             break;
                         }
                     }
-                    TokKind::Ident if depth == 1 => {
-                        if toks.get(k + 1).is_some_and(|t| t.is(P::Comma) || t.is(P::Colon)) {
-                            set.insert(map.slice(toks[k].span));
-                        }
+                    TokKind::Ident if depth == 1 && toks.get(k + 1).is_some_and(|t| t.is(P::Comma) || t.is(P::Colon)) => {
+                        set.insert(map.slice(toks[k].span));
                     }
                     _ => {}
                 }
@@ -413,7 +432,7 @@ pub fn select(
         }
     }
 
-    let mut by_name: HashMap<&str, Vec<usize>> = HashMap::new();
+    let mut by_name: HashMap<&str, Vec<usize>, FnvBuild> = HashMap::default();
     for (i, item) in items.iter().enumerate() {
         match item.kind {
             ItemKind::Def | ItemKind::Struct | ItemKind::Class if !item.entry => {

@@ -64,9 +64,11 @@ impl<'a> Lexer<'a> {
                     }
                 }
                 b'/' if self.at(start + 1) == b'/' => {
-                    while self.i < n && self.b[self.i] != b'\n' {
-                        self.i += 1;
-                    }
+                    // `str::find` with a char uses memchr.
+                    self.i = match self.text[start..].find('\n') {
+                        Some(k) => start + k,
+                        None => n,
+                    };
                 }
                 b'/' if self.at(start + 1) == b'*' => self.block_comment(),
                 b'0'..=b'9' => self.number(),
@@ -79,7 +81,7 @@ impl<'a> Lexer<'a> {
                         j += 1;
                     }
                     self.i = j;
-                    let kind = match Kw::from_str(&self.text[start..j]) {
+                    let kind = match Kw::from_name(&self.text[start..j]) {
                         Some(k) => TokKind::Kw(k),
                         None => TokKind::Ident,
                     };

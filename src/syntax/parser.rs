@@ -899,7 +899,7 @@ impl<'a> Parser<'a> {
 
     // ---- expressions ----
 
-    pub fn expr(&mut self) -> PResult<Expr> {
+    fn expr(&mut self) -> PResult<Expr> {
         let t = self.peek();
         self.enter(t)?;
         let r = self.ternary();

@@ -28,6 +28,8 @@ pub const MAX_FILE_SIZE: usize = 16 * 1024 * 1024;
 pub const MAX_TOTAL_SIZE: usize = 64 * 1024 * 1024;
 /// Most tokens after preprocessing (bounds macro expansion).
 pub const MAX_TOKENS: usize = 16 * 1024 * 1024;
+/// Most `#include` directives followed in one compilation.
+pub const MAX_INCLUDES: usize = 4096;
 /// Deepest macro-within-macro expansion.
 const MAX_EXPANSION_DEPTH: usize = 64;
 
@@ -64,6 +66,7 @@ struct Pp<'a> {
     /// Canonical directories includes may come from.
     allowed: Vec<PathBuf>,
     total_size: usize,
+    includes: usize,
     overflowed: bool,
 }
 
@@ -93,6 +96,7 @@ pub fn preprocess(map: &mut SourceMap, root: FileId, opts: &ParseOptions, diags:
         stack,
         allowed,
         total_size,
+        includes: 0,
         overflowed: false,
     };
     if !opts.defines.is_empty() {
@@ -382,6 +386,14 @@ impl Pp<'_> {
         let name = unescape(raw.get(1..raw.len().saturating_sub(1)).unwrap_or(""));
         if name.is_empty() {
             self.diags.push(Diagnostic::error("empty file name in `#include`", target.span).with_label("empty"));
+            return;
+        }
+        self.includes += 1;
+        if self.includes > MAX_INCLUDES {
+            if self.includes == MAX_INCLUDES + 1 {
+                let msg = format!("too many `#include`s (limit {MAX_INCLUDES})");
+                self.diags.push(Diagnostic::error(msg, span).with_label("limit reached at this include"));
+            }
             return;
         }
         if depth + 1 > MAX_INCLUDE_DEPTH {

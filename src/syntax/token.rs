@@ -31,7 +31,7 @@ pub enum Kw {
 }
 
 impl Kw {
-    pub fn from_str(s: &str) -> Option<Kw> {
+    pub fn from_name(s: &str) -> Option<Kw> {
         Some(match s {
             "def" => Kw::Def,
             "var" => Kw::Var,

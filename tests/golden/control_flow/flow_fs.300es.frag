@@ -3,10 +3,6 @@
 precision highp float;
 precision highp int;
 
-struct flow_vs_out {
-    vec4 gen_gl_Position;
-    vec2 v_uv;
-};
 struct flow_fs_out {
     vec4 f_color;
 };

@@ -1,8 +1,4 @@
 #version 330 core
-struct flow_vs_out {
-    vec4 gen_gl_Position;
-    vec2 v_uv;
-};
 struct flow_fs_out {
     vec4 f_color;
 };

@@ -3,9 +3,6 @@ struct flow_vs_out {
     vec4 gen_gl_Position;
     vec2 v_uv;
 };
-struct flow_fs_out {
-    vec4 f_color;
-};
 vec2 a_pos = vec2(0.0);
 
 vec2 v_uv = vec2(0.0);
@@ -14,22 +11,6 @@ vec4 gen_gl_Position = vec4(0.0);
 
 layout(location = 0) in vec2 _p2vs_location0;
 smooth out vec2 _vs2fs_location0;
-
-int band(float x) {
-    if ((x < 0.25)) {
-        return 0;
-    } else {
-        if ((x < 0.5)) {
-            return 1;
-        } else {
-            if ((x < 0.75)) {
-                return 2;
-            } else {
-                return 3;
-            }
-        }
-    }
-}
 
 void main() {
     vec2 in_a_pos = _p2vs_location0;

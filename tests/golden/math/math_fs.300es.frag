@@ -3,11 +3,6 @@
 precision highp float;
 precision highp int;
 
-struct math_vs_out {
-    vec4 gen_gl_Position;
-    vec2 v_uv;
-    int v_id;
-};
 struct math_fs_out {
     vec4 f_color;
 };

@@ -1,9 +1,4 @@
 #version 330 core
-struct math_vs_out {
-    vec4 gen_gl_Position;
-    vec2 v_uv;
-    int v_id;
-};
 struct math_fs_out {
     vec4 f_color;
 };

@@ -8,9 +8,6 @@ struct math_vs_out {
     vec2 v_uv;
     int v_id;
 };
-struct math_fs_out {
-    vec4 f_color;
-};
 const vec2 OFFSETS[4] = vec2[4](vec2(-1.0, 0.0), vec2(1.0, 0.0), vec2(0.0, -1.0), vec2(0.0, 1.0));
 const float TAU = 6.2831855;
 
@@ -27,12 +24,6 @@ vec4 gen_gl_Position = vec4(0.0);
 layout(location = 0) in vec2 _p2vs_location0;
 smooth out vec2 _vs2fs_location0;
 flat out int _vs2fs_location1;
-
-mat2x2 rotate(float a) {
-    float c = cos(a);
-    float s = sin(a);
-    return mat2x2(vec2(c, s), vec2(-(s), c));
-}
 
 void main() {
     vec2 in_a_pos = _p2vs_location0;

@@ -3,12 +3,6 @@
 precision highp float;
 precision highp int;
 
-struct gbuffer_vs_out {
-    vec4 gen_gl_Position;
-    vec3 v_normal;
-    vec2 v_uv;
-    float v_depth;
-};
 struct gbuffer_fs_out {
     vec4 g_albedo;
     vec4 g_normal;

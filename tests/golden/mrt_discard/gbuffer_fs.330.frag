@@ -1,10 +1,4 @@
 #version 330 core
-struct gbuffer_vs_out {
-    vec4 gen_gl_Position;
-    vec3 v_normal;
-    vec2 v_uv;
-    float v_depth;
-};
 struct gbuffer_fs_out {
     vec4 g_albedo;
     vec4 g_normal;

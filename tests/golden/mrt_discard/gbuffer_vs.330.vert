@@ -7,11 +7,6 @@ struct gbuffer_vs_out {
     vec2 v_uv;
     float v_depth;
 };
-struct gbuffer_fs_out {
-    vec4 g_albedo;
-    vec4 g_normal;
-    vec4 g_depth;
-};
 layout(std140) uniform u_view_proj_block { mat4x4 u_view_proj; };
 
 vec3 a_pos = vec3(0.0);

@@ -3,10 +3,6 @@
 precision highp float;
 precision highp int;
 
-struct pp_vs_out {
-    vec4 gen_gl_Position;
-    vec3 v_normal;
-};
 struct pp_fs_out {
     vec4 f_color;
 };

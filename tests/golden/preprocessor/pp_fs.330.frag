@@ -1,8 +1,4 @@
 #version 330 core
-struct pp_vs_out {
-    vec4 gen_gl_Position;
-    vec3 v_normal;
-};
 struct pp_fs_out {
     vec4 f_color;
 };

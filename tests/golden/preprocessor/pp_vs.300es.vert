@@ -7,9 +7,6 @@ struct pp_vs_out {
     vec4 gen_gl_Position;
     vec3 v_normal;
 };
-struct pp_fs_out {
-    vec4 f_color;
-};
 layout(std140) uniform u_mvp_block { mat4x4 u_mvp; };
 
 vec3 a_pos = vec3(0.0);
@@ -23,10 +20,6 @@ vec4 gen_gl_Position = vec4(0.0);
 layout(location = 0) in vec3 _p2vs_location0;
 layout(location = 1) in vec3 _p2vs_location1;
 smooth out vec3 _vs2fs_location0;
-
-float lambert(vec3 n, vec3 l) {
-    return (max(dot(n, l), 0.0) + 0.15);
-}
 
 void main() {
     vec3 in_a_pos = _p2vs_location0;

@@ -4,18 +4,6 @@ precision highp float;
 precision highp int;
 precision highp sampler2DShadow;
 
-struct shadow_vs_out {
-    vec4 gen_gl_Position;
-};
-struct shadow_fs_out {
-    vec4 f_FragColor;
-};
-struct main_vs_out {
-    vec4 gen_gl_Position;
-    vec3 v_world_pos;
-    vec3 v_world_normal;
-    vec4 v_light_space;
-};
 struct main_fs_out {
     vec4 f_FragColor;
 };

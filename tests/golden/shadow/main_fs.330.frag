@@ -1,16 +1,4 @@
 #version 330 core
-struct shadow_vs_out {
-    vec4 gen_gl_Position;
-};
-struct shadow_fs_out {
-    vec4 f_FragColor;
-};
-struct main_vs_out {
-    vec4 gen_gl_Position;
-    vec3 v_world_pos;
-    vec3 v_world_normal;
-    vec4 v_light_space;
-};
 struct main_fs_out {
     vec4 f_FragColor;
 };

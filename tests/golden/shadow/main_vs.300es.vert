@@ -3,20 +3,11 @@
 precision highp float;
 precision highp int;
 
-struct shadow_vs_out {
-    vec4 gen_gl_Position;
-};
-struct shadow_fs_out {
-    vec4 f_FragColor;
-};
 struct main_vs_out {
     vec4 gen_gl_Position;
     vec3 v_world_pos;
     vec3 v_world_normal;
     vec4 v_light_space;
-};
-struct main_fs_out {
-    vec4 f_FragColor;
 };
 const float SHADOW_MAP_SIZE = 1024.0;
 const int PCF_RADIUS = 1;
@@ -47,17 +38,10 @@ smooth out vec3 _vs2fs_location0;
 smooth out vec3 _vs2fs_location1;
 smooth out vec4 _vs2fs_location2;
 
-vec3 floor_albedo(vec3 p) {
-    float cell = (floor(((p.x * 0.5) + 100.0)) + floor(((p.z * 0.5) + 100.0)));
-    float odd = (cell - (2.0 * floor((cell * 0.5))));
-    float shade = ((odd < 0.5) ? 0.85 : 0.3);
-    return (vec3(shade) * vec3(0.8, 0.82, 0.88));
-}
-
 void main() {
-    vec3 in_a_pos_1 = _p2vs_location0;
+    vec3 in_a_pos = _p2vs_location0;
     vec3 in_a_normal = _p2vs_location1;
-    a_pos = in_a_pos_1;
+    a_pos = in_a_pos;
     a_normal = in_a_normal;
     mat4x4 _e5 = u_model;
     vec3 _e7 = a_pos;

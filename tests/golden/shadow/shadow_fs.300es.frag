@@ -3,19 +3,7 @@
 precision highp float;
 precision highp int;
 
-struct shadow_vs_out {
-    vec4 gen_gl_Position;
-};
 struct shadow_fs_out {
-    vec4 f_FragColor;
-};
-struct main_vs_out {
-    vec4 gen_gl_Position;
-    vec3 v_world_pos;
-    vec3 v_world_normal;
-    vec4 v_light_space;
-};
-struct main_fs_out {
     vec4 f_FragColor;
 };
 const float SHADOW_MAP_SIZE = 1024.0;
@@ -24,13 +12,6 @@ const int PCF_RADIUS = 1;
 vec4 f_FragColor = vec4(0.0);
 
 layout(location = 0) out vec4 _fs2p_location0;
-
-vec3 floor_albedo(vec3 p) {
-    float cell = (floor(((p.x * 0.5) + 100.0)) + floor(((p.z * 0.5) + 100.0)));
-    float odd = (cell - (2.0 * floor((cell * 0.5))));
-    float shade = ((odd < 0.5) ? 0.85 : 0.3);
-    return (vec3(shade) * vec3(0.8, 0.82, 0.88));
-}
 
 void main() {
     f_FragColor = vec4(1.0);

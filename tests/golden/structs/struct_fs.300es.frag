@@ -12,10 +12,6 @@ struct Material {
     vec3 albedo;
     float roughness;
 };
-struct struct_vs_out {
-    vec4 gen_gl_Position;
-    vec3 v_normal;
-};
 struct struct_fs_out {
     vec4 f_color;
 };

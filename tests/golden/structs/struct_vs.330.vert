@@ -1,19 +1,7 @@
 #version 330 core
-struct Light {
-    vec3 dir;
-    float intensity;
-    vec4 color;
-};
-struct Material {
-    vec3 albedo;
-    float roughness;
-};
 struct struct_vs_out {
     vec4 gen_gl_Position;
     vec3 v_normal;
-};
-struct struct_fs_out {
-    vec4 f_color;
 };
 layout(std140) uniform u_mvp_block { mat4x4 u_mvp; };
 
@@ -28,11 +16,6 @@ vec4 gen_gl_Position = vec4(0.0);
 layout(location = 0) in vec3 _p2vs_location0;
 layout(location = 1) in vec3 _p2vs_location1;
 smooth out vec3 _vs2fs_location0;
-
-vec3 shade(Material m_1, vec3 n, Light l) {
-    float ndotl = clamp(dot(n, -(l.dir)), 0.0, 1.0);
-    return ((m_1.albedo * l.color.xyz) * (ndotl * l.intensity));
-}
 
 void main() {
     vec3 in_a_pos = _p2vs_location0;

@@ -9,11 +9,6 @@ precision highp sampler2DArray;
 precision highp sampler2DArrayShadow;
 precision highp isampler2D;
 
-struct tex_vs_out {
-    vec4 gen_gl_Position;
-    vec2 v_uv;
-    vec3 v_dir;
-};
 struct tex_fs_out {
     vec4 f_color;
 };

@@ -1,9 +1,4 @@
 #version 330 core
-struct tex_vs_out {
-    vec4 gen_gl_Position;
-    vec2 v_uv;
-    vec3 v_dir;
-};
 struct tex_fs_out {
     vec4 f_color;
 };

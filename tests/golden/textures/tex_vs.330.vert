@@ -4,9 +4,6 @@ struct tex_vs_out {
     vec2 v_uv;
     vec3 v_dir;
 };
-struct tex_fs_out {
-    vec4 f_color;
-};
 vec3 a_pos = vec3(0.0);
 
 vec2 v_uv = vec2(0.0);

@@ -1,0 +1,312 @@
+//! Tests of the `umbrac` binary: exit codes, `-o -`, JSON diagnostics and
+//! atomic outputs.
+//!
+//! Tests of successful compiles use the project's own programs.
+
+mod support;
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn umbrac(args: &[&str], cwd: &Path) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_umbrac")).args(args).current_dir(cwd).output().expect("run umbrac")
+}
+
+fn code(o: &Output) -> i32 {
+    o.status.code().expect("exited normally (no signal, no panic abort)")
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+/// Every file under `dir` with its bytes.
+fn snapshot(dir: &Path) -> BTreeMap<PathBuf, Vec<u8>> {
+    let mut m = BTreeMap::new();
+    for e in std::fs::read_dir(dir).unwrap() {
+        let p = e.unwrap().path();
+        if p.is_dir() {
+            m.insert(p.clone(), b"<dir>".to_vec());
+            m.extend(snapshot(&p));
+        } else {
+            m.insert(p.clone(), std::fs::read(&p).unwrap());
+        }
+    }
+    m
+}
+
+fn repo() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+const BAD: &str = "[vertex_program]\ndef vs {\n    gl_Position = float4(1.0, 2.0\n}\n";
+
+#[test]
+fn usage_errors_exit_2() {
+    let d = tempfile::tempdir().unwrap();
+    for args in [
+        &["compile"][..],
+        &["compile", "a.das", "--target", "hlsl"],
+        &["compile", "a.das", "--conventions", "sideways"],
+        &["compile", "a.das", "-D", "1abc"],
+        &["compile", "a.das", "b.das", "-o", "-"],
+        &["compile", "a.das", "--target", "spirv", "-o", "-"],
+        &["compile", "a.das", "-o", "-"],
+        &["frobnicate"],
+        &["reflect"],
+    ] {
+        let o = umbrac(args, d.path());
+        assert_eq!(code(&o), 2, "{args:?}: {}", stderr(&o));
+        assert!(stderr(&o).contains("error"), "{args:?}: {}", stderr(&o));
+    }
+    assert!(snapshot(d.path()).is_empty(), "usage errors write nothing");
+}
+
+#[test]
+fn help_and_version_exit_0() {
+    let d = tempfile::tempdir().unwrap();
+    for args in [&["--help"][..], &["--version"], &["compile", "--help"]] {
+        assert_eq!(code(&umbrac(args, d.path())), 0, "{args:?}");
+    }
+    let help = stdout(&umbrac(&["compile", "--help"], d.path()));
+    for flag in ["--target", "-o", "-D", "-I", "--entry", "--conventions", "--allow-outside-includes", "--message-format"] {
+        assert!(help.contains(flag), "{flag} missing from help:\n{help}");
+    }
+}
+
+#[test]
+fn missing_input_is_a_compile_error() {
+    let d = tempfile::tempdir().unwrap();
+    let o = umbrac(&["compile", "nope.das", "-o", "out"], d.path());
+    assert_eq!(code(&o), 1, "{}", stderr(&o));
+    assert!(stderr(&o).contains("nope.das"), "{}", stderr(&o));
+    assert!(!d.path().join("out").exists(), "no output directory for a failed compile");
+    let o = umbrac(&["reflect", "nope.das"], d.path());
+    assert_eq!(code(&o), 1);
+    assert!(o.stdout.is_empty());
+    let o = umbrac(&["check", "nope.das"], d.path());
+    assert_eq!(code(&o), 1);
+}
+
+#[test]
+fn json_diagnostics_shape() {
+    let d = tempfile::tempdir().unwrap();
+    std::fs::write(d.path().join("bad.das"), BAD).unwrap();
+    let o = umbrac(&["check", "nope.das", "bad.das", "--message-format", "json"], d.path());
+    assert_eq!(code(&o), 1, "{}", stderr(&o));
+    let lines: Vec<&str> = std::str::from_utf8(&o.stdout).unwrap().lines().collect();
+    assert!(lines.len() >= 2, "one JSON object per diagnostic per line: {lines:?}");
+    for line in lines {
+        let v: serde_json::Value = serde_json::from_str(line).unwrap_or_else(|e| panic!("not JSON ({e}): {line}"));
+        let obj = v.as_object().unwrap();
+        for key in ["severity", "message", "location", "label", "related", "notes", "include_chain", "rendered"] {
+            assert!(obj.contains_key(key), "{key} missing: {line}");
+        }
+        assert!(["error", "warning", "bug"].contains(&obj["severity"].as_str().unwrap()), "{line}");
+        assert!(obj["rendered"].as_str().unwrap().contains(obj["message"].as_str().unwrap()));
+        if let Some(loc) = obj["location"].as_object() {
+            for key in ["file", "line", "column", "end_line", "end_column", "byte_start", "byte_end"] {
+                assert!(loc.contains_key(key), "{key} missing: {line}");
+            }
+        }
+    }
+    // Human output goes to stderr instead, and stdout stays empty.
+    let o = umbrac(&["check", "nope.das"], d.path());
+    assert!(o.stdout.is_empty());
+    assert!(stderr(&o).contains("error"), "{}", stderr(&o));
+}
+
+/// A failing compile leaves existing outputs byte-identical and creates no
+/// files.
+#[test]
+fn failed_compile_changes_nothing() {
+    let d = tempfile::tempdir().unwrap();
+    let out = d.path().join("out");
+    std::fs::create_dir(&out).unwrap();
+    for (name, text) in [("bad.wgsl", "old wgsl"), ("bad.reflect.json", "{}\n"), ("vs.330.vert", "old glsl")] {
+        std::fs::write(out.join(name), text).unwrap();
+    }
+    std::fs::write(d.path().join("bad.das"), BAD).unwrap();
+    let before = snapshot(d.path());
+    let o = umbrac(&["compile", "bad.das", "-o", "out"], d.path());
+    assert_eq!(code(&o), 1, "{}", stderr(&o));
+    assert_eq!(snapshot(d.path()), before);
+}
+
+/// A write that fails part-way (a directory where an output file must go)
+/// leaves every previous output as it was and no temporary files behind.
+/// Uses real emitter outputs through the library.
+#[test]
+fn write_failure_keeps_old_outputs() {
+    let lowered = support::fake_lowered(
+        r#"
+@group(0) @binding(0) var<uniform> u_model: mat4x4<f32>;
+@vertex fn vs(@location(0) p: vec4<f32>) -> @builtin(position) vec4<f32> { return u_model * p; }
+@fragment fn fs() -> @location(0) vec4<f32> { return vec4<f32>(1.0); }
+"#,
+    );
+    let (arts, _) = umbrac::emit::emit(&lowered, "s", "s.das", &[]).unwrap();
+    let d = tempfile::tempdir().unwrap();
+    for a in &arts {
+        std::fs::write(d.path().join(&a.file_name), format!("old {}", a.file_name)).unwrap();
+    }
+    // The SPIR-V output's path is taken by a directory.
+    std::fs::remove_file(d.path().join("s.spv")).unwrap();
+    std::fs::create_dir(d.path().join("s.spv")).unwrap();
+    let before = snapshot(d.path());
+    let e = umbrac::output::write_artifacts(d.path(), &arts).unwrap_err();
+    assert!(e.to_string().contains("s.spv"), "{e}");
+    assert_eq!(snapshot(d.path()), before);
+
+    // With the obstacle gone the same write succeeds and replaces everything.
+    std::fs::remove_dir(d.path().join("s.spv")).unwrap();
+    umbrac::output::write_artifacts(d.path(), &arts).unwrap();
+    for a in &arts {
+        assert_eq!(std::fs::read(d.path().join(&a.file_name)).unwrap(), a.contents, "{}", a.file_name);
+    }
+    assert_eq!(snapshot(d.path()).len(), arts.len(), "no temporaries left");
+}
+
+#[test]
+fn unwritable_output_directory_is_a_clear_error() {
+    let d = tempfile::tempdir().unwrap();
+    std::fs::write(d.path().join("file"), "").unwrap();
+    let lowered = support::fake_lowered("@fragment fn fs() -> @location(0) vec4<f32> { return vec4<f32>(1.0); }");
+    let (arts, _) = umbrac::emit::emit(&lowered, "s", "s.das", &[]).unwrap();
+    let e = umbrac::output::write_artifacts(&d.path().join("file"), &arts).unwrap_err();
+    assert!(e.to_string().contains("not a directory"), "{e}");
+    let e = umbrac::output::write_artifacts(&d.path().join("file/sub"), &arts).unwrap_err();
+    assert!(e.to_string().contains("cannot create the output directory"), "{e}");
+}
+
+// ---- needs a working front end ----
+
+fn shadow_das() -> PathBuf {
+    repo().join("shaders/shadow.das")
+}
+
+#[test]
+fn compile_writes_every_output() {
+    let d = tempfile::tempdir().unwrap();
+    let o = umbrac(&["compile", shadow_das().to_str().unwrap(), "-o", "out"], d.path());
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let out = d.path().join("out");
+    for ep in ["shadow_vs", "main_vs"] {
+        assert!(out.join(format!("{ep}.330.vert")).exists());
+        assert!(out.join(format!("{ep}.300es.vert")).exists());
+    }
+    for ep in ["shadow_fs", "main_fs"] {
+        assert!(out.join(format!("{ep}.330.frag")).exists());
+        assert!(out.join(format!("{ep}.300es.frag")).exists());
+    }
+    for f in ["shadow.wgsl", "shadow.spv", "shadow.reflect.json"] {
+        assert!(out.join(f).exists(), "{f}");
+    }
+    let refl: umbrac::Reflection = serde_json::from_slice(&std::fs::read(out.join("shadow.reflect.json")).unwrap()).unwrap();
+    support::validate_dir(&out, &refl);
+}
+
+#[test]
+fn default_output_directory_is_the_current_one() {
+    let d = tempfile::tempdir().unwrap();
+    let o = umbrac(&["compile", shadow_das().to_str().unwrap(), "--target", "wgsl"], d.path());
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let mut names: Vec<_> = snapshot(d.path()).into_keys().map(|p| p.file_name().unwrap().to_string_lossy().into_owned()).collect();
+    names.sort();
+    assert_eq!(names, ["shadow.reflect.json", "shadow.wgsl"]);
+}
+
+#[test]
+fn stdout_output() {
+    let d = tempfile::tempdir().unwrap();
+    let das = shadow_das();
+    let das = das.to_str().unwrap();
+    let o = umbrac(&["compile", das, "--target", "wgsl", "-o", "-"], d.path());
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    assert!(stdout(&o).contains("@vertex"), "{}", stdout(&o));
+    let o = umbrac(&["compile", das, "--target", "gles300", "--entry", "main_fs", "-o", "-"], d.path());
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    assert!(stdout(&o).starts_with("#version 300 es\n"));
+    // Four GLSL files cannot go to one stdout.
+    let o = umbrac(&["compile", das, "--target", "glsl330", "-o", "-"], d.path());
+    assert_eq!(code(&o), 2, "{}", stderr(&o));
+    assert!(o.stdout.is_empty());
+    assert!(snapshot(d.path()).is_empty(), "-o - writes no files");
+}
+
+#[test]
+fn check_and_reflect_write_nothing() {
+    let d = tempfile::tempdir().unwrap();
+    let das = shadow_das();
+    let o = umbrac(&["check", das.to_str().unwrap()], d.path());
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let o = umbrac(&["reflect", das.to_str().unwrap()], d.path());
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let refl: umbrac::Reflection = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(refl.entry_points.len(), 4);
+    assert!(snapshot(d.path()).is_empty());
+}
+
+#[test]
+fn cli_write_failure_keeps_old_outputs() {
+    let d = tempfile::tempdir().unwrap();
+    let das = shadow_das();
+    let o = umbrac(&["compile", das.to_str().unwrap(), "-o", "out"], d.path());
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let out = d.path().join("out");
+    std::fs::remove_file(out.join("shadow.spv")).unwrap();
+    std::fs::create_dir(out.join("shadow.spv")).unwrap();
+    std::fs::write(out.join("main_fs.330.frag"), "previous").unwrap();
+    let before = snapshot(d.path());
+    let o = umbrac(&["compile", das.to_str().unwrap(), "-o", "out"], d.path());
+    assert_eq!(code(&o), 1, "{}", stderr(&o));
+    assert!(stderr(&o).contains("shadow.spv"), "{}", stderr(&o));
+    assert_eq!(snapshot(d.path()), before);
+}
+
+#[test]
+fn parallel_files_failed_one_writes_nothing() {
+    let d = tempfile::tempdir().unwrap();
+    std::fs::write(d.path().join("bad.das"), BAD).unwrap();
+    let das = shadow_das();
+    let o = umbrac(&["compile", das.to_str().unwrap(), "bad.das", "-o", "out", "--target", "wgsl"], d.path());
+    assert_eq!(code(&o), 1, "{}", stderr(&o));
+    let out = d.path().join("out");
+    assert!(out.join("shadow.wgsl").exists());
+    assert!(!out.join("bad.wgsl").exists() && !out.join("bad.reflect.json").exists());
+}
+
+#[test]
+fn syntax_error_json_has_a_location() {
+    let d = tempfile::tempdir().unwrap();
+    std::fs::write(d.path().join("bad.das"), BAD).unwrap();
+    let o = umbrac(&["check", "bad.das", "--message-format", "json"], d.path());
+    assert_eq!(code(&o), 1);
+    let first: serde_json::Value = serde_json::from_str(stdout(&o).lines().next().unwrap()).unwrap();
+    assert_eq!(first["severity"], "error");
+    assert_eq!(first["location"]["file"], "bad.das");
+    assert_eq!(first["location"]["line"], 4, "reported at the token that ends the unclosed call");
+}
+
+#[test]
+fn reference_tutorial_compiles_and_validates() {
+    let reference = repo().join("../shared/reference/08_shadow.das");
+    if !reference.exists() {
+        eprintln!("skipping: {} not found", reference.display());
+        return;
+    }
+    let d = tempfile::tempdir().unwrap();
+    let o = umbrac(&["compile", reference.to_str().unwrap(), "-o", "out"], d.path());
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let out = d.path().join("out");
+    let refl: umbrac::Reflection = serde_json::from_slice(&std::fs::read(out.join("08_shadow.reflect.json")).unwrap()).unwrap();
+    let mut names: Vec<_> = refl.entry_points.iter().map(|e| e.name.as_str()).collect();
+    names.sort();
+    assert_eq!(names, ["main_fs", "main_vs", "shadow_fs", "shadow_vs"]);
+    support::validate_dir(&out, &refl);
+}
