@@ -205,6 +205,36 @@ pub fn write_entry(lowered: &Lowered, ep: &EntryInterface, profile: Profile) -> 
     Ok((out, names))
 }
 
+/// Constants read by any function or entry point, directly or through
+/// another constant's initialiser.
+fn used_constants(module: &naga::Module) -> std::collections::HashSet<naga::Handle<naga::Constant>> {
+    let mut used = std::collections::HashSet::new();
+    let mut work = Vec::new();
+    let functions = module.functions.iter().map(|(_, f)| f).chain(module.entry_points.iter().map(|e| &e.function));
+    for f in functions {
+        for (_, e) in f.expressions.iter() {
+            if let naga::Expression::Constant(c) = *e {
+                work.push(c);
+            }
+        }
+    }
+    while let Some(c) = work.pop() {
+        if !used.insert(c) {
+            continue;
+        }
+        let mut exprs = vec![module.constants[c].init];
+        while let Some(h) = exprs.pop() {
+            match &module.global_expressions[h] {
+                naga::Expression::Constant(c2) => work.push(*c2),
+                naga::Expression::Compose { components, .. } => exprs.extend(components.iter().copied()),
+                naga::Expression::Splat { value, .. } => exprs.push(*value),
+                _ => {}
+            }
+        }
+    }
+    used
+}
+
 type GlobalMap = Box<dyn Fn(naga::Handle<naga::GlobalVariable>) -> Result<usize, Diagnostic>>;
 
 /// A copy of `lowered.gl` holding only `ep` and what it reaches, validated
@@ -222,6 +252,19 @@ fn entry_module(lowered: &Lowered, ep: &EntryInterface) -> Result<(naga::Module,
             i - 1 == keep
         });
         naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
+        // Compaction keeps every named constant; drop the ones this entry
+        // point never reads by unnaming them and compacting once more.
+        let used = used_constants(&module);
+        let mut dropped = false;
+        for (h, c) in module.constants.iter_mut() {
+            if !used.contains(&h) {
+                c.name = None;
+                dropped = true;
+            }
+        }
+        if dropped {
+            naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
+        }
         let info = naga::valid::Validator::new(
             naga::valid::ValidationFlags::all() - naga::valid::ValidationFlags::BINDINGS,
             naga::back::glsl::supported_capabilities(),
