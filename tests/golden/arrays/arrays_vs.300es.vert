@@ -9,8 +9,6 @@ struct arrays_vs_out {
     int v_id;
 };
 const int RING[4] = int[4](3, 1, 4, 1);
-const vec3 COLORS[3] = vec3[3](vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), vec3(0.0, 0.0, 1.0));
-const float WEIGHTS[5] = float[5](0.227027, 0.1945946, 0.1216216, 0.054054, 0.016216);
 
 vec2 a_pos = vec2(0.0);
 

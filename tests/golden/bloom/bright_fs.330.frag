@@ -2,8 +2,6 @@
 struct bright_fs_out {
     vec4 f_color;
 };
-const float WEIGHTS[5] = float[5](0.227027, 0.1945946, 0.1216216, 0.054054, 0.016216);
-
 layout(std140) uniform u_threshold_block { vec4 u_threshold; };
 
 uniform sampler2D hdr_scene;

@@ -2,8 +2,6 @@
 struct composite_fs_out {
     vec4 f_color;
 };
-const float WEIGHTS[5] = float[5](0.227027, 0.1945946, 0.1216216, 0.054054, 0.016216);
-
 layout(std140) uniform u_exposure_block { float u_exposure; };
 
 layout(std140) uniform u_bloom_strength_block { float u_bloom_strength; };

@@ -7,8 +7,6 @@ struct fullscreen_vs_out {
     vec4 gen_gl_Position;
     vec2 v_uv;
 };
-const float WEIGHTS[5] = float[5](0.227027, 0.1945946, 0.1216216, 0.054054, 0.016216);
-
 vec2 v_uv = vec2(0.0);
 
 int gen_gl_VertexID = 0;

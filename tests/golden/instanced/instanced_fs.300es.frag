@@ -6,8 +6,6 @@ precision highp int;
 struct instanced_fs_out {
     vec4 f_color;
 };
-const int MAX_INSTANCES = 64;
-
 vec4 v_color = vec4(0.0);
 
 vec3 v_normal = vec3(0.0);

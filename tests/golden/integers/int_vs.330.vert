@@ -4,12 +4,6 @@ struct int_vs_out {
     ivec2 v_cell;
     uint v_hash;
 };
-const int NEG_MOD = -1;
-const int NEG_DIV = -3;
-const uint WRAP = 4294967295u;
-const int TRUNC = -2;
-const float FMOD = 0.5;
-
 layout(std140) uniform u_seed_block { uint u_seed; };
 
 vec2 a_pos = vec2(0.0);

@@ -8,8 +8,6 @@ struct pcf_vs_out {
     vec3 v_normal;
     vec4 v_light_pos;
 };
-const int PCF_RADIUS = 2;
-
 layout(std140) uniform u_model_block { mat4x4 u_model; };
 
 layout(std140) uniform u_view_proj_block { mat4x4 u_view_proj; };

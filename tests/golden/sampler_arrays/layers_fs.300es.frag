@@ -7,8 +7,6 @@ precision highp sampler2DShadow;
 struct layers_fs_out {
     vec4 f_color;
 };
-const int DETAIL = 2;
-
 uniform highp sampler2D layers_0;
 
 uniform highp sampler2D layers_1;

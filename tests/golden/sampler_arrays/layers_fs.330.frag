@@ -2,8 +2,6 @@
 struct layers_fs_out {
     vec4 f_color;
 };
-const int DETAIL = 2;
-
 uniform sampler2D layers_0;
 
 uniform sampler2D layers_1;

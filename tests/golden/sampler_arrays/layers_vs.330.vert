@@ -3,8 +3,6 @@ struct layers_vs_out {
     vec4 gen_gl_Position;
     vec2 v_uv;
 };
-const int DETAIL = 2;
-
 vec2 a_pos = vec2(0.0);
 
 vec2 v_uv = vec2(0.0);
