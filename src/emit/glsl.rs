@@ -161,7 +161,19 @@ pub fn write_entry(lowered: &Lowered, ep: &EntryInterface, profile: Profile) -> 
         if !text::contains_ident(&out, name) {
             return Err(bug(format!("sampler `{name}` reported by naga is not in the text")));
         }
-        names.samplers.insert(to_original(mapping.texture)?, name.clone());
+        let original = to_original(mapping.texture)?;
+        // naga's namer appends `_` to names ending in a digit (`layers_0`,
+        // an element of a sampler array, becomes `layers_0_`); give the
+        // sampler back its own name where nothing else uses it.
+        let source = lowered.gl.global_variables.iter().nth(original).and_then(|(_, g)| g.name.clone());
+        let mut final_name = name.clone();
+        if let Some(src) = source {
+            if *name == format!("{src}_") && src.ends_with(|c: char| c.is_ascii_digit()) && !text::contains_ident(&out, &src) {
+                out = text::replace_ident(&out, name, &src);
+                final_name = src;
+            }
+        }
+        names.samplers.insert(original, final_name);
     }
 
     // Attributes, varyings and colour outputs are named by location
