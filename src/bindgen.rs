@@ -179,6 +179,9 @@ fn str_lit(s: &str) -> String {
     if s.contains('\r') || s.chars().any(|c| c.is_control() && c != '\n' && c != '\t') {
         return format!("{s:?}");
     }
+    if !s.contains(['"', '\\', '\n']) {
+        return format!("\"{s}\"");
+    }
     let mut hashes = String::from("#");
     while s.contains(&format!("\"{hashes}")) {
         hashes.push('#');
@@ -733,6 +736,7 @@ mod tests {
         assert_eq!(ident("type"), "r#type");
         assert_eq!(ident("self"), "self_");
         assert_eq!(str_lit("a\"#b"), "r##\"a\"#b\"##");
+        assert_eq!(str_lit("plain"), "\"plain\"");
         assert_eq!(vertex_field_type("Float32x3").as_deref(), Some("[f32; 3]"));
         assert_eq!(vertex_field_type("Uint32").as_deref(), Some("u32"));
     }

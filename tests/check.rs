@@ -90,7 +90,7 @@ fn bindgen_writes_the_module_and_reflect_prints_the_manifest() {
         "pub const WGSL: &str",
         "pub const SPIRV: &[u32] = &[",
         "0x07230203,",
-        "pub const GLSL_BLOCK: &str = r#\"u_light_dir_block\"#;",
+        "pub const GLSL_BLOCK: &str = \"u_light_dir_block\";",
         "pub const TEXTURE_UNIT: u32 = 0;",
         "pub const VERTEX_BUFFER_LAYOUT: wgpu::VertexBufferLayout<'static>",
         "#[cfg(feature = \"wgpu\")]",
