@@ -26,8 +26,8 @@
 //!
 //! Compile errors are printed in full (codespan text with file:line:col) on
 //! stderr, which cargo shows for a failed build script, and as one
-//! `cargo:warning=` line each; [`Build::run`] then panics with a short
-//! summary so `cargo build` fails. [`Build::compile`] returns the error
+//! `cargo:warning=` line each; [`Build::run`] then prints a short summary
+//! and exits with status 1, so `cargo build` fails. [`Build::compile`] returns the error
 //! instead.
 
 use std::fmt;
@@ -181,12 +181,16 @@ impl Build {
         self
     }
 
-    /// Runs the build; on failure prints the diagnostics and panics with a
-    /// summary, which fails `cargo build`.
+    /// Runs the build; on failure prints the diagnostics and a summary and
+    /// exits with status 1, which fails `cargo build` (a panic would add a
+    /// backtrace into umbrac's sources to what cargo shows).
     pub fn run(self) -> Output {
         match self.compile() {
             Ok(o) => o,
-            Err(e) => panic!("{}", e.summary),
+            Err(e) => {
+                eprintln!("error: {}", e.summary);
+                std::process::exit(1)
+            }
         }
     }
 
@@ -230,7 +234,9 @@ impl Build {
         let mut built = Vec::new();
         let mut modules = Vec::new();
         for (v, c) in variants.iter().zip(&comps) {
-            let files_read = c.files_read();
+            let mut files_read = c.files_read();
+            let mut seen = std::collections::HashSet::new();
+            files_read.retain(|f| seen.insert(f.clone()));
             for f in &files_read {
                 self.cargo(&format!("rerun-if-changed={}", f.display()));
             }
