@@ -12,6 +12,8 @@
 //! Both modules have the same globals, types and entry points in the same
 //! order, so a handle or index from one is valid in the other.
 
+#[cfg(debug_assertions)]
+mod fault;
 mod func;
 mod module;
 
@@ -202,9 +204,17 @@ pub fn lower(program: &crate::sema::Program, conventions: Conventions) -> Result
     let (gl, _) = build(program, Flavor::Gl)?;
     let gl_info = module::validate(&gl, Flavor::Gl)?;
     let (gpu, mut interface) = build(program, Flavor::Gpu(conventions))?;
+    #[cfg(debug_assertions)]
+    let gpu = fault::inject(gpu);
     let gpu_info = module::validate(&gpu, Flavor::Gpu(conventions))?;
     interface.conventions = conventions;
     Ok(Lowered { gl, gl_info, gpu, gpu_info, interface })
+}
+
+/// Validates a module the way [`lower`] validates its own output: a failure
+/// is an internal compiler error at the span naga reports.
+pub fn validate(module: &naga::Module, flavor: Flavor) -> Result<naga::valid::ModuleInfo, Diagnostic> {
+    module::validate(module, flavor)
 }
 
 fn build(p: &sema::Program, flavor: Flavor) -> Result<(naga::Module, Interface), Diagnostic> {

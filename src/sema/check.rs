@@ -5,7 +5,7 @@
 //! checked on first use, so helper functions land in the output callees
 //! first, as naga requires, and recursion is found on the way.
 
-use std::collections::{BTreeMap, HashMap};
+use std::collections::{BTreeMap, HashMap, HashSet};
 
 use super::builtins::{self, Builtin};
 use super::consts::{eval_const, ConstEnv};
@@ -20,8 +20,16 @@ use crate::syntax::ast::{self, BinaryOp, UnaryOp};
 pub const MAX_ARRAY_LEN: u64 = 65_536;
 /// Highest `@location` accepted (exclusive).
 pub const MAX_LOCATIONS: u32 = 16;
-/// Nesting depth of expressions and blocks the checker follows.
+/// Nesting depth of expressions and blocks the checker follows. A call of a
+/// helper function that is checked on first use starts the callee at the
+/// caller's depth plus [`CALL_DEPTH`], so chains of calls count too.
 pub const MAX_DEPTH: usize = 256;
+/// Depth one level of calls adds (the checker recurses into the callee).
+pub const CALL_DEPTH: usize = 4;
+/// Longest chain of constants defined in terms of each other.
+pub const MAX_CONST_CHAIN: usize = 64;
+/// Deepest nesting of struct and array types (`S { t : T[2] }` is 2).
+pub const MAX_TYPE_DEPTH: usize = 32;
 
 pub fn check(program: &ast::Program, diags: &mut Diagnostics) -> Option<Program> {
     let mut c = Checker::new(program, diags);
@@ -76,10 +84,14 @@ struct Checker<'a, 'd> {
     consts: HashMap<String, ConstId>,
     const_decls: HashMap<String, &'a ast::ConstDecl>,
     const_in_progress: Vec<String>,
+    /// Constants already reported as wrong: their uses report nothing more.
+    failed_consts: HashSet<String>,
     funcs: HashMap<String, FuncState>,
     fn_decls: Vec<&'a ast::FunctionDecl>,
     entry_decls: Vec<(&'a ast::FunctionDecl, naga::ShaderStage)>,
     builtin_vars: HashMap<BuiltinVar, GlobalId>,
+    /// Depth at which the next helper function checked on first use starts.
+    call_depth: usize,
 }
 
 fn is_entry(f: &ast::FunctionDecl) -> Option<naga::ShaderStage> {
@@ -116,10 +128,12 @@ impl<'a, 'd> Checker<'a, 'd> {
             consts: HashMap::new(),
             const_decls: HashMap::new(),
             const_in_progress: Vec::new(),
+            failed_consts: HashSet::new(),
             funcs: HashMap::new(),
             fn_decls: Vec::new(),
             entry_decls: Vec::new(),
             builtin_vars: HashMap::new(),
+            call_depth: 0,
         }
     }
 
@@ -204,27 +218,88 @@ impl<'a, 'd> Checker<'a, 'd> {
         self.declare_globals(&mut seen);
     }
 
+    /// Finds structs that contain themselves and structs nested deeper than
+    /// [`MAX_TYPE_DEPTH`], reporting each and clearing its fields so later
+    /// passes (which recurse through types) stay finite and shallow.
     fn check_struct_recursion(&mut self) {
-        fn contains(structs: &[StructDef], ty: &Ty, target: StructId, depth: usize) -> bool {
-            if depth > structs.len() + 1 {
-                return true;
-            }
+        // Struct ids a type mentions, looking through arrays, with the array
+        // levels on the way.
+        fn edges(ty: &Ty, arrays: usize, out: &mut Vec<(StructId, usize)>) -> usize {
             match ty {
-                Ty::Struct(id) => *id == target || structs[*id].fields.iter().any(|(_, t, _)| contains(structs, t, target, depth + 1)),
-                Ty::Array(elem, _) => contains(structs, elem, target, depth + 1),
-                _ => false,
+                Ty::Struct(id) => {
+                    out.push((*id, arrays));
+                    0
+                }
+                Ty::Array(elem, _) => edges(elem, arrays + 1, out),
+                _ => arrays,
             }
         }
-        for id in 0..self.out.structs.len() {
-            let recursive = self.out.structs[id].fields.iter().any(|(_, t, _)| contains(&self.out.structs, t, id, 0));
-            if recursive {
-                let s = &self.out.structs[id];
-                let d = Diagnostic::error(format!("struct `{}` contains itself", s.name), s.span);
-                self.diags.push(d);
-                // Break the cycle so later passes terminate.
-                for f in &mut self.out.structs[id].fields {
-                    f.1 = Ty::Error;
+        #[derive(Clone, Copy, PartialEq)]
+        enum State {
+            New,
+            Open,
+            Done(usize),
+        }
+        let n = self.out.structs.len();
+        let mut state = vec![State::New; n];
+        let mut bad: Vec<(StructId, bool)> = Vec::new();
+        // Iterative depth-first search: (struct, index of the next field edge).
+        for root in 0..n {
+            if state[root] != State::New {
+                continue;
+            }
+            let mut stack: Vec<(StructId, Vec<(StructId, usize)>, usize, usize)> = Vec::new();
+            let push = |id: StructId, structs: &[StructDef], state: &mut [State]| {
+                let mut es = Vec::new();
+                let mut depth = 1;
+                for (_, t, _) in &structs[id].fields {
+                    depth = depth.max(1 + edges(t, 0, &mut es));
                 }
+                state[id] = State::Open;
+                (id, es, 0, depth)
+            };
+            stack.push(push(root, &self.out.structs, &mut state));
+            while let Some(top) = stack.last_mut() {
+                let (id, es, next, depth) = top;
+                if let Some(&(child, arrays)) = es.get(*next) {
+                    *next += 1;
+                    match state[child] {
+                        State::Done(d) => *depth = (*depth).max(1 + arrays + d),
+                        State::Open => {
+                            if !bad.iter().any(|(b, _)| *b == child) {
+                                bad.push((child, true));
+                            }
+                        }
+                        State::New => {
+                            let frame = push(child, &self.out.structs, &mut state);
+                            stack.push(frame);
+                        }
+                    }
+                    continue;
+                }
+                let (id, d) = (*id, *depth);
+                state[id] = State::Done(d);
+                stack.pop();
+                if d > MAX_TYPE_DEPTH && !bad.iter().any(|(b, _)| *b == id) {
+                    bad.push((id, false));
+                }
+                if let Some(parent) = stack.last_mut() {
+                    let arrays = parent.1[parent.2 - 1].1;
+                    parent.3 = parent.3.max(1 + arrays + d);
+                }
+            }
+        }
+        bad.sort();
+        for (id, cycle) in bad {
+            let s = &self.out.structs[id];
+            let d = if cycle {
+                Diagnostic::error(format!("struct `{}` contains itself", s.name), s.span)
+            } else {
+                Diagnostic::error(format!("struct `{}` nests struct and array types deeper than the limit of {MAX_TYPE_DEPTH}", s.name), s.span)
+            };
+            self.diags.push(d);
+            for f in &mut self.out.structs[id].fields {
+                f.1 = Ty::Error;
             }
         }
     }
@@ -556,28 +631,45 @@ impl<'a, 'd> Checker<'a, 'd> {
         if let Some(&id) = self.consts.get(name) {
             return Some(id);
         }
+        if self.failed_consts.contains(name) {
+            return None;
+        }
         let decl = *self.const_decls.get(name)?;
         if self.const_in_progress.iter().any(|n| n == name) {
             let d = Diagnostic::error(format!("constant `{name}` depends on itself"), use_span).with_secondary(decl.name.span, "defined here");
             self.diags.push(d);
             return None;
         }
+        if self.const_in_progress.len() >= MAX_CONST_CHAIN {
+            let d = Diagnostic::error(format!("constants are defined in terms of each other too deeply (limit {MAX_CONST_CHAIN})"), decl.name.span)
+                .with_label("the limit is reached at this constant");
+            self.diags.push(d);
+            self.failed_consts.insert(name.to_string());
+            return None;
+        }
         // Constants this one names are evaluated first.
         let mut names = Vec::new();
         super::consts::collect_names(&decl.value, &mut names);
         self.const_in_progress.push(name.to_string());
+        let mut deps_ok = true;
         for n in names {
             if n != name && self.const_decls.contains_key(&n) {
-                self.const_id(&n, use_span);
+                deps_ok &= self.const_id(&n, use_span).is_some();
             }
         }
-        let value = eval_const(&decl.value, &ConstEnvAdapter { c: self });
+        // A constant built from a wrong one is wrong too, but that was
+        // reported already.
+        let value = if deps_ok { Some(eval_const(&decl.value, &ConstEnvAdapter { c: self })) } else { None };
         self.const_in_progress.pop();
         let (value, ty) = match value {
-            Ok(v) => v,
-            Err(d) => {
+            Some(Ok(v)) => v,
+            Some(Err(d)) => {
                 self.diags.push(d);
-                self.const_decls.remove(name);
+                self.failed_consts.insert(name.to_string());
+                return None;
+            }
+            None => {
+                self.failed_consts.insert(name.to_string());
                 return None;
             }
         };
@@ -589,6 +681,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                     decl.value.span,
                 );
                 self.diags.push(d);
+                self.failed_consts.insert(name.to_string());
                 return None;
             }
         }
@@ -672,6 +765,13 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
             FuncState::Unchecked(idx) => {
                 let decl = self.fn_decls[*idx];
+                if self.call_depth > MAX_DEPTH {
+                    let d = Diagnostic::error(format!("calls nest too deeply (limit {MAX_DEPTH} levels of nested calls, expressions and blocks)"), call_span)
+                        .with_secondary(decl.name.span, "this function is called at the limit");
+                    self.diags.push(d);
+                    self.funcs.insert(name.to_string(), FuncState::Failed);
+                    return None;
+                }
                 self.funcs.insert(name.to_string(), FuncState::InProgress(decl.name.span));
                 match self.check_function(decl, None) {
                     Some(f) => {
@@ -707,7 +807,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             fragment_only: None,
             implicit_lod: false,
             callees: Default::default(),
-            depth: 0,
+            depth: if entry.is_some() { 0 } else { self.call_depth },
         };
         for p in &decl.params {
             let ty = self.resolve_type(&p.ty);
@@ -1381,6 +1481,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             return err_expr(span);
         }
         if self.funcs.contains_key(name) {
+            self.call_depth = cx.depth + CALL_DEPTH;
             let Some(fid) = self.function_id(name, callee.span) else { return err_expr(span) };
             let f = &self.out.functions[fid];
             let params: Vec<Ty> = f.locals[..f.params].iter().map(|l| l.ty.clone()).collect();
