@@ -379,7 +379,8 @@ fn compile(args: &CompileArgs) -> u8 {
             continue;
         }
 
-        let out_dir = dir.join(sub);
+        // `dir.join("")` would add a trailing separator.
+        let out_dir = if sub.as_os_str().is_empty() { dir.clone() } else { dir.join(sub) };
         if let Some(a) = result.artifacts.iter().find(|a| written.iter().any(|(n, _)| *n == out_dir.join(&a.file_name))) {
             let (_, other) = written.iter().find(|(n, _)| *n == out_dir.join(&a.file_name)).expect("found above");
             reporter.plain(&Diagnostic::error_nowhere(format!(
