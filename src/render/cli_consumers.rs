@@ -92,6 +92,18 @@ pub(super) fn compare_backends(args: &RenderArgs, params: FrameParams) -> Result
         }
         results.push((c, status));
     }
+    // Where each differs from the first consumer that rendered (red: the
+    // difference x4), to look at.
+    let first = results.iter().find_map(|(c, s)| s.image().map(|i| (*c, i.clone())));
+    if let Some((base, base_image)) = first {
+        for (c, s) in results.iter().filter(|(c, _)| *c != base) {
+            if let Some(image) = s.image() {
+                let path = stem.with_extension(format!("{}.diff.png", c.name()));
+                image_ops::save_png(&image_ops::diff_image(&base_image, image, None), &path)?;
+            }
+        }
+        eprintln!("wrote OUT.CONSUMER.diff.png: each consumer's difference from {}", base.name());
+    }
     let pairs = consumers::pairwise(&results, &params, DELTA);
     println!();
     print!("{}", consumers::table(&pairs, DELTA));
