@@ -68,7 +68,7 @@ fn eval(e: &Expr, env: &dyn ConstEnv, depth: usize) -> Result<(ConstValue, Ty), 
             let v = u32::try_from(*v).map_err(|_| Diagnostic::error(format!("integer literal {v} does not fit in `uint`"), e.span))?;
             Ok((ConstValue::Uint(v as u64), UINT))
         }
-        ExprKind::Float(v) => Ok((ConstValue::Float(*v), FLOAT)),
+        ExprKind::Float(v) => Ok((ConstValue::Float(*v as f32 as f64), FLOAT)),
         ExprKind::Bool(b) => Ok((ConstValue::Bool(*b), BOOL)),
         ExprKind::Paren(x) => eval(x, env, d),
         ExprKind::Name(id) => env.lookup(&id.name).ok_or_else(|| not_const(e, &format!("`{}`", id.name))),
@@ -142,7 +142,13 @@ fn scalars(v: &ConstValue) -> Vec<ConstValue> {
     }
 }
 
-fn convert(c: &ConstValue, to: Scalar) -> Option<ConstValue> {
+/// A scalar conversion as the constructors `float(x)`, `int(x)`, `uint(x)`,
+/// `bool(x)` define it: int <-> uint keep the bits (two's complement);
+/// float -> int/uint truncates toward zero and saturates at the type's
+/// range, NaN giving 0 (what WGSL defines; GLSL and SPIR-V leave
+/// out-of-range conversions undefined); to float rounds to nearest f32;
+/// to bool is `!= 0`.
+pub fn convert(c: &ConstValue, to: Scalar) -> Option<ConstValue> {
     let f = match *c {
         ConstValue::Float(f) => f,
         ConstValue::Int(i) => i as f64,
@@ -151,14 +157,14 @@ fn convert(c: &ConstValue, to: Scalar) -> Option<ConstValue> {
         ConstValue::Composite(_) => return None,
     };
     Some(match to {
-        Scalar::Float => ConstValue::Float(f),
+        Scalar::Float => ConstValue::Float(f as f32 as f64),
         Scalar::Int => ConstValue::Int(match *c {
             ConstValue::Uint(u) => u as u32 as i32 as i64,
-            _ => f as i32 as i64,
+            _ => f as f32 as i32 as i64,
         }),
         Scalar::Uint => ConstValue::Uint(match *c {
             ConstValue::Int(i) => i as i32 as u32 as u64,
-            _ => f as u32 as u64,
+            _ => f as f32 as u32 as u64,
         }),
         Scalar::Bool => ConstValue::Bool(f != 0.0),
     })
@@ -223,20 +229,26 @@ fn binary(op: BinaryOp, a: &ConstValue, ta: &Ty, b: &ConstValue, tb: &Ty) -> Res
     for i in 0..w {
         let (x, y) = (get(&sa, i), get(&sb, i));
         let v = match (x, y) {
-            (ConstValue::Float(x), ConstValue::Float(y)) => match op {
-                Add => ConstValue::Float(x + y),
-                Sub => ConstValue::Float(x - y),
-                Mul => ConstValue::Float(x * y),
-                Div => ConstValue::Float(x / y),
-                Mod => ConstValue::Float(x - y * (x / y).floor()),
-                Eq => ConstValue::Bool(x == y),
-                Ne => ConstValue::Bool(x != y),
-                Lt => ConstValue::Bool(x < y),
-                Le => ConstValue::Bool(x <= y),
-                Gt => ConstValue::Bool(x > y),
-                Ge => ConstValue::Bool(x >= y),
-                _ => return Err(mismatch()),
-            },
+            (ConstValue::Float(x), ConstValue::Float(y)) => {
+                // In f32, one rounding per operation, as the GPU computes.
+                let (x, y) = (x as f32, y as f32);
+                let f = |v: f32| ConstValue::Float(v as f64);
+                match op {
+                    Add => f(x + y),
+                    Sub => f(x - y),
+                    Mul => f(x * y),
+                    Div => f(x / y),
+                    // GLSL mod: x - y * floor(x / y).
+                    Mod => f(x - y * (x / y).floor()),
+                    Eq => ConstValue::Bool(x == y),
+                    Ne => ConstValue::Bool(x != y),
+                    Lt => ConstValue::Bool(x < y),
+                    Le => ConstValue::Bool(x <= y),
+                    Gt => ConstValue::Bool(x > y),
+                    Ge => ConstValue::Bool(x >= y),
+                    _ => return Err(mismatch()),
+                }
+            }
             (ConstValue::Int(x), ConstValue::Int(y)) => {
                 let (x, y) = (x as i32, y as i32);
                 let r = match op {
