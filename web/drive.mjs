@@ -21,9 +21,9 @@ const args = [
   '--headless', '--no-sandbox', '--disable-gpu',
   '--disable-background-networking', '--disable-component-update',
   '--disable-sync', '--no-first-run',
-  // With the GPU off, WebGL runs on SwiftShader, which chromium only
-  // allows for WebGL when asked to.
-  '--enable-unsafe-swiftshader',
+  // With the GPU off, WebGL2 runs on SwiftShader (ANGLE on its Vulkan). If a
+  // later chromium refuses WebGL without a GPU, add
+  // '--enable-unsafe-swiftshader'; chromium 156 headless does not need it.
 ];
 
 let result;
