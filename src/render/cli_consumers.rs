@@ -104,6 +104,10 @@ pub(super) fn compare_backends(args: &RenderArgs, params: FrameParams) -> Result
         }
         eprintln!("wrote OUT.CONSUMER.diff.png: each consumer's difference from {}", base.name());
     }
+    let all: Vec<&image::RgbaImage> = results.iter().filter_map(|(_, s)| s.image()).collect();
+    let strip = stem.with_extension("all.png");
+    image_ops::save_png(&image_ops::side_by_side(&all), &strip)?;
+    eprintln!("wrote {}: every rendered image, left to right in the order above", strip.display());
     let pairs = consumers::pairwise(&results, &params, DELTA);
     println!();
     print!("{}", consumers::table(&pairs, DELTA));
