@@ -130,8 +130,19 @@ fn is_identifier(s: &str) -> bool {
 }
 
 /// A DSL name as a Rust identifier: keywords become raw identifiers; the
-/// few that cannot be raw get a trailing underscore.
+/// few that cannot be raw get a trailing underscore; an element of a
+/// sampler array (`layers[0]`) becomes `layers_0`, as in GLSL.
 fn ident(name: &str) -> String {
+    let mut cleaned: String = name.chars().map(|c| if c.is_ascii_alphanumeric() || c == '_' { c } else { '_' }).collect();
+    if cleaned != name {
+        while cleaned.len() > 1 && cleaned.ends_with('_') {
+            cleaned.pop();
+        }
+    }
+    if !cleaned.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_') {
+        cleaned.insert(0, '_');
+    }
+    let name = cleaned.as_str();
     if matches!(name, "self" | "Self" | "super" | "crate" | "_") {
         format!("{name}_")
     } else if KEYWORDS.contains(&name) {
