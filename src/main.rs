@@ -5,8 +5,10 @@
 //!                [-D NAME[=VALUE]]... [-I DIR]... [--entry NAME]...
 //!                [--conventions portable|native] [--allow-outside-includes]
 //!                [--message-format human|json]
+//! umbrac compile --check FILE|DIR... [-o DIR]   (compare with DIR, write nothing)
 //! umbrac check FILE|DIR...  (compile for every target, write nothing)
 //! umbrac reflect FILE       (print the reflection manifest)
+//! umbrac bindgen FILE [-o bindings.rs] [--module NAME] [--no-bytemuck]
 //! umbrac render ...         (feature `render`)
 //! ```
 //!
@@ -51,6 +53,8 @@ enum Command {
     Check(CheckArgs),
     /// Print the reflection manifest of a shader file.
     Reflect(ReflectArgs),
+    /// Write the Rust bindings module of a shader file (what umbrac::build generates).
+    Bindgen(BindgenArgs),
     /// Render the shadow scene from compiled shaders.
     #[cfg(feature = "render")]
     Render(umbrac::render::cli::RenderArgs),
@@ -69,6 +73,10 @@ struct CompileArgs {
     /// Output directory (created if missing), or `-` for stdout; default: the current directory.
     #[arg(short = 'o', value_name = "DIR")]
     out: Option<PathBuf>,
+    /// Compare with the files already in the output directory instead of
+    /// writing: print a unified diff per difference, exit 1 if any.
+    #[arg(long)]
+    check: bool,
     #[command(flatten)]
     common: CommonArgs,
 }
@@ -86,6 +94,23 @@ struct CheckArgs {
 struct ReflectArgs {
     #[arg(value_name = "FILE")]
     file: PathBuf,
+    #[command(flatten)]
+    common: CommonArgs,
+}
+
+#[derive(Args, Debug)]
+struct BindgenArgs {
+    #[arg(value_name = "FILE")]
+    file: PathBuf,
+    /// Output file; default: stdout.
+    #[arg(short = 'o', value_name = "FILE")]
+    out: Option<PathBuf>,
+    /// The module's name; default: the input's stem.
+    #[arg(long, value_name = "NAME")]
+    module: Option<String>,
+    /// Do not derive bytemuck::Pod/Zeroable.
+    #[arg(long)]
+    no_bytemuck: bool,
     #[command(flatten)]
     common: CommonArgs,
 }
@@ -175,6 +200,7 @@ fn main() -> ExitCode {
         Command::Compile(args) => compile(&args),
         Command::Check(args) => check(&args),
         Command::Reflect(args) => reflect(&args),
+        Command::Bindgen(args) => bindgen(&args),
         #[cfg(feature = "render")]
         Command::Render(args) => umbrac::render::cli::run(&args).clamp(0, 255) as u8,
     };
@@ -339,10 +365,16 @@ fn targets_of(args: &[TargetArg]) -> Vec<Target> {
 fn compile(args: &CompileArgs) -> u8 {
     let targets = targets_of(&args.targets);
     let to_stdout = args.out.as_deref() == Some(Path::new("-"));
+    if args.check && to_stdout {
+        return usage_error("`--check` compares with the files in a directory; give `-o DIR`");
+    }
     let inputs = match expand_inputs(&args.files) {
         Ok(i) => i,
         Err(e) => return usage_error(&e),
     };
+    if args.check {
+        return compile_check(args, targets, &inputs);
+    }
     let files: Vec<PathBuf> = inputs.iter().map(|(f, _)| f.clone()).collect();
     if to_stdout {
         if files.len() != 1 {
@@ -434,4 +466,91 @@ fn reflect(args: &ReflectArgs) -> u8 {
         }
     }
     code
+}
+
+/// `compile --check`: every difference between the outputs and the files in
+/// the directory, as unified diffs on stdout; nothing is written.
+fn compile_check(args: &CompileArgs, targets: Vec<Target>, inputs: &[(PathBuf, PathBuf)]) -> u8 {
+    let opts = args.common.options(targets);
+    let files: Vec<PathBuf> = inputs.iter().map(|(f, _)| f.clone()).collect();
+    let comps = compile_all(&files, &opts);
+    let mut reporter = Reporter::new(args.common.message_format);
+    let mut code = 0;
+    let dir = args.out.clone().unwrap_or_else(|| PathBuf::from("."));
+    // The outputs expected in each directory (a DIR input mirrors its
+    // subdirectories under -o, as `compile` writes them).
+    let mut expected: std::collections::BTreeMap<PathBuf, Vec<umbrac::Artifact>> = Default::default();
+    for ((_, sub), c) in inputs.iter().zip(&comps) {
+        reporter.compilation(c);
+        code = code.max(exit_code(c));
+        let out_dir = if sub.as_os_str().is_empty() { dir.clone() } else { dir.join(sub) };
+        let slot = expected.entry(out_dir).or_default();
+        if let Some(result) = c.result.as_ref().filter(|_| !c.has_errors()) {
+            slot.extend(result.artifacts.iter().cloned());
+        }
+    }
+    let mut diffs = Vec::new();
+    for (d, artifacts) in &expected {
+        match umbrac::golden::compare(artifacts, d) {
+            Ok(found) => diffs.extend(found),
+            Err(e) => {
+                reporter.plain(&Diagnostic::error_nowhere(format!("cannot read `{}`: {e}", d.display())));
+                return code.max(EXIT_ERROR);
+            }
+        }
+    }
+    // With a failed input its outputs are unknown, so none is called stale.
+    let diffs: Vec<_> = diffs.into_iter().filter(|d| code == 0 || !matches!(d, umbrac::golden::Difference::Stale { .. })).collect();
+    let mut out = std::io::stdout().lock();
+    for d in &diffs {
+        let _ = write!(out, "{d}");
+    }
+    let _ = out.flush();
+    if !diffs.is_empty() {
+        eprintln!("error: {} file(s) in `{}` differ from the compiler's output", diffs.len(), dir.display());
+        code = code.max(EXIT_ERROR);
+    }
+    code
+}
+
+fn bindgen(args: &BindgenArgs) -> u8 {
+    let opts = args.common.options(Target::ALL.to_vec());
+    let comps = compile_all(std::slice::from_ref(&args.file), &opts);
+    let c = &comps[0];
+    let mut reporter = Reporter::new(args.common.message_format);
+    reporter.compilation(c);
+    let code = exit_code(c);
+    let Some(result) = c.result.as_ref().filter(|_| code == 0) else { return code };
+    let bopts = umbrac::bindgen::BindgenOptions { module_name: args.module.clone(), bytemuck: !args.no_bytemuck, sources: true };
+    let text = match umbrac::bindgen::generate(result, &bopts) {
+        Ok(t) => t,
+        Err(e) => {
+            reporter.plain(&Diagnostic::error_nowhere(e));
+            return EXIT_ERROR;
+        }
+    };
+    match args.out.as_deref() {
+        None => {
+            let mut out = std::io::stdout().lock();
+            let _ = out.write_all(text.as_bytes()).and_then(|_| out.flush());
+            0
+        }
+        Some(path) if path == Path::new("-") => {
+            let mut out = std::io::stdout().lock();
+            let _ = out.write_all(text.as_bytes()).and_then(|_| out.flush());
+            0
+        }
+        Some(path) => {
+            let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+            let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+            let a = umbrac::Artifact { file_name: name, target: None, entry: None, contents: text.into_bytes() };
+            match umbrac::output::write_artifacts(dir, &[a]) {
+                Ok(()) => 0,
+                Err(e) => {
+                    reporter.plain(&Diagnostic::error_nowhere(e.to_string()));
+                    EXIT_ERROR
+                }
+            }
+        }
+    }
 }

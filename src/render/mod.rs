@@ -20,15 +20,22 @@
 //! # Ok::<(), umbrac::render::RenderError>(())
 //! ```
 
+pub mod consumers;
+#[cfg(feature = "gl")]
+pub mod gl;
+pub mod glsl_set;
 pub mod gpu;
 pub mod hand;
 pub mod image_ops;
 pub mod interface;
 pub mod reference;
 pub mod scene;
+pub mod webgl;
 
 #[cfg(feature = "cli")]
 pub mod cli;
+#[cfg(feature = "cli")]
+mod cli_consumers;
 
 pub use gpu::{Backend, Program, RenderError, Renderer, ShaderCode, ShaderSet, Via};
 pub use scene::{FrameParams, View};
