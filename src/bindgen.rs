@@ -130,19 +130,12 @@ fn is_identifier(s: &str) -> bool {
 }
 
 /// A DSL name as a Rust identifier: keywords become raw identifiers; the
-/// few that cannot be raw get a trailing underscore; an element of a
-/// sampler array (`layers[0]`) becomes `layers_0`, as in GLSL.
+/// few that cannot be raw get a trailing underscore.
 fn ident(name: &str) -> String {
-    let mut cleaned: String = name.chars().map(|c| if c.is_ascii_alphanumeric() || c == '_' { c } else { '_' }).collect();
-    if cleaned != name {
-        while cleaned.len() > 1 && cleaned.ends_with('_') {
-            cleaned.pop();
-        }
-    }
-    if !cleaned.starts_with(|c: char| c.is_ascii_alphabetic() || c == '_') {
-        cleaned.insert(0, '_');
-    }
-    let name = cleaned.as_str();
+    // An element of a sampler array is reflected as `t[0]`: `t_0`.
+    let sanitized: String = name.chars().map(|c| if c.is_ascii_alphanumeric() || c == '_' { c } else { '_' }).collect();
+    let name = if sanitized != name { sanitized.trim_end_matches('_').to_string() } else { sanitized };
+    let name = name.as_str();
     if matches!(name, "self" | "Self" | "super" | "crate" | "_") {
         format!("{name}_")
     } else if KEYWORDS.contains(&name) {
