@@ -652,7 +652,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
         match b {
             Builtin::Math(fun) => {
                 // Scalars of a vector call are broadcast (min(v, 0.0), mix(a, b, t), step(0.5, v)).
-                if matches!(ret, Ty::Vector(..)) && !matches!(fun, Mf::Cross) {
+                if matches!(ret, Ty::Vector(..)) && !matches!(fun, Mf::Cross | Mf::Refract) {
                     for (h, a) in hs.iter_mut().zip(args) {
                         *h = self.splat_to(*h, &a.ty, ret, s);
                     }

@@ -1250,7 +1250,21 @@ impl<'a, 'd> Checker<'a, 'd> {
                     return err_expr(span);
                 }
                 match self.binary_type(*op, &l.ty, &r.ty, span) {
-                    Some(ty) => mk(ExprKind::Binary(*op, Box::new(l), Box::new(r)), ty),
+                    Some(ty) => {
+                        // Constant operands make a constant expression in the
+                        // WGSL output, which WGSL evaluates at shader creation
+                        // and rejects on overflow, division by zero or a
+                        // non-finite result: report those here.
+                        if let (Some(a), Some(b)) = (self.literal_value(&l), self.literal_value(&r)) {
+                            if let Err(msg) = super::consts::binary(*op, &a, &l.ty, &b, &r.ty) {
+                                if !msg.contains("not supported") && !msg.contains("mismatch") {
+                                    self.diags.push(Diagnostic::error(msg, span).with_note("both operands are constants, so this is evaluated at compile time"));
+                                    return err_expr(span);
+                                }
+                            }
+                        }
+                        mk(ExprKind::Binary(*op, Box::new(l), Box::new(r)), ty)
+                    }
                     None => err_expr(span),
                 }
             }
@@ -1346,6 +1360,17 @@ impl<'a, 'd> Checker<'a, 'd> {
                 let ty = Ty::Array(Box::new(elem_ty), xs.len() as u32);
                 mk(ExprKind::Construct(xs), ty)
             }
+        }
+    }
+
+    /// The value of a literal or named scalar constant.
+    fn literal_value(&self, e: &Expr) -> Option<ConstValue> {
+        match &e.kind {
+            ExprKind::Int(v) => Some(ConstValue::Int(*v)),
+            ExprKind::Uint(v) => Some(ConstValue::Uint(*v)),
+            ExprKind::Float(v) => Some(ConstValue::Float(*v as f32 as f64)),
+            ExprKind::Const(c) if matches!(self.out.consts[*c].ty, Ty::Scalar(_)) => Some(self.out.consts[*c].value.clone()),
+            _ => None,
         }
     }
 
