@@ -30,6 +30,7 @@ pub mod image_ops;
 pub mod interface;
 pub mod reference;
 pub mod scene;
+pub mod techniques;
 pub mod webgl;
 
 #[cfg(feature = "cli")]
