@@ -1,12 +1,12 @@
 //! The `umbrac` command line.
 //!
 //! ```text
-//! umbrac compile FILE... [--target glsl330|gles300|wgsl|spirv|all]... [-o DIR]
+//! umbrac compile FILE|DIR... [--target glsl330|gles300|wgsl|spirv|all]... [-o DIR]
 //!                [-D NAME[=VALUE]]... [-I DIR]... [--entry NAME]...
 //!                [--conventions portable|native] [--allow-outside-includes]
 //!                [--message-format human|json]
-//! umbrac compile --check FILE... [-o DIR]   (compare with DIR, write nothing)
-//! umbrac check FILE...      (compile for every target, write nothing)
+//! umbrac compile --check FILE|DIR... [-o DIR]   (compare with DIR, write nothing)
+//! umbrac check FILE|DIR...  (compile for every target, write nothing)
 //! umbrac reflect FILE       (print the reflection manifest)
 //! umbrac bindgen FILE [-o bindings.rs] [--module NAME] [--no-bytemuck]
 //! umbrac render ...         (feature `render`)
@@ -15,7 +15,9 @@
 //! Exit status: 0 success, 1 compile error (or outputs that cannot be
 //! written), 2 bad usage, 3 internal compiler error.
 //!
-//! Several FILEs compile in parallel; each file's outputs are written
+//! A DIR stands for every `.das` file under it (recursively, skipping
+//! `include` and hidden directories), its outputs in the same relative
+//! subdirectory of `-o DIR`. Several FILEs compile in parallel; each file's outputs are written
 //! atomically and only if that file compiled without errors. `-o -` prints
 //! the single text output of a single FILE to stdout (the manifest is not
 //! printed; use `umbrac reflect` for it). Diagnostics go to stderr as
@@ -60,8 +62,10 @@ enum Command {
 
 #[derive(Args, Debug)]
 struct CompileArgs {
-    /// Input files.
-    #[arg(required = true, value_name = "FILE")]
+    /// Input files, or directories: every `.das` file under a directory
+    /// (recursively, skipping directories named `include` and hidden ones),
+    /// with outputs in the same relative subdirectory of the output directory.
+    #[arg(required = true, value_name = "FILE|DIR")]
     files: Vec<PathBuf>,
     /// Targets to emit (repeatable); default: all.
     #[arg(long = "target", value_enum, value_name = "TARGET")]
@@ -79,7 +83,8 @@ struct CompileArgs {
 
 #[derive(Args, Debug)]
 struct CheckArgs {
-    #[arg(required = true, value_name = "FILE")]
+    /// Input files or directories (as for `compile`).
+    #[arg(required = true, value_name = "FILE|DIR")]
     files: Vec<PathBuf>,
     #[command(flatten)]
     common: CommonArgs,
@@ -261,6 +266,45 @@ fn usage_error(msg: &str) -> u8 {
     EXIT_USAGE
 }
 
+/// The files to compile: each FILE as given, and every `.das` file under
+/// each DIR (sorted; directories named `include` hold shared includes and
+/// hidden directories are skipped), each with the subdirectory its outputs
+/// go to (relative to the output directory).
+fn expand_inputs(inputs: &[PathBuf]) -> Result<Vec<(PathBuf, PathBuf)>, String> {
+    let mut out = Vec::new();
+    for input in inputs {
+        if !input.is_dir() {
+            out.push((input.clone(), PathBuf::new()));
+            continue;
+        }
+        let mut found = Vec::new();
+        let mut dirs = vec![input.clone()];
+        while let Some(d) = dirs.pop() {
+            let entries = std::fs::read_dir(&d).map_err(|e| format!("cannot read directory `{}`: {e}", d.display()))?;
+            for e in entries {
+                let p = e.map_err(|e| format!("cannot read directory `{}`: {e}", d.display()))?.path();
+                let name = p.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+                if p.is_dir() {
+                    if name != "include" && !name.starts_with('.') {
+                        dirs.push(p);
+                    }
+                } else if p.extension().is_some_and(|x| x == "das") {
+                    found.push(p);
+                }
+            }
+        }
+        if found.is_empty() {
+            return Err(format!("no `.das` files under `{}`", input.display()));
+        }
+        found.sort();
+        for f in found {
+            let sub = f.parent().and_then(|p| p.strip_prefix(input).ok()).map(Path::to_path_buf).unwrap_or_default();
+            out.push((f, sub));
+        }
+    }
+    Ok(out)
+}
+
 /// Compiles every file, in parallel, each on a worker thread with a large
 /// stack. A panic in one compilation becomes an internal error for that file.
 fn compile_all(files: &[PathBuf], opts: &Options) -> Vec<Compilation> {
@@ -324,11 +368,16 @@ fn compile(args: &CompileArgs) -> u8 {
     if args.check && to_stdout {
         return usage_error("`--check` compares with the files in a directory; give `-o DIR`");
     }
+    let inputs = match expand_inputs(&args.files) {
+        Ok(i) => i,
+        Err(e) => return usage_error(&e),
+    };
     if args.check {
-        return compile_check(args, targets);
+        return compile_check(args, targets, &inputs);
     }
+    let files: Vec<PathBuf> = inputs.iter().map(|(f, _)| f.clone()).collect();
     if to_stdout {
-        if args.files.len() != 1 {
+        if files.len() != 1 {
             return usage_error("`-o -` prints one output to stdout; give exactly one FILE");
         }
         if targets.contains(&Target::Spirv) {
@@ -336,13 +385,13 @@ fn compile(args: &CompileArgs) -> u8 {
         }
     }
     let opts = args.common.options(targets);
-    let comps = compile_all(&args.files, &opts);
+    let comps = compile_all(&files, &opts);
 
     let mut reporter = Reporter::new(args.common.message_format);
     let mut code = 0;
     let dir = args.out.clone().unwrap_or_else(|| PathBuf::from("."));
-    let mut written: Vec<(String, &Path)> = Vec::new();
-    for (path, c) in args.files.iter().zip(&comps) {
+    let mut written: Vec<(PathBuf, &Path)> = Vec::new();
+    for ((path, sub), c) in inputs.iter().zip(&comps) {
         reporter.compilation(c);
         code = code.max(exit_code(c));
         let Some(result) = c.result.as_ref().filter(|_| !c.has_errors()) else { continue };
@@ -362,8 +411,10 @@ fn compile(args: &CompileArgs) -> u8 {
             continue;
         }
 
-        if let Some(a) = result.artifacts.iter().find(|a| written.iter().any(|(n, _)| n == &a.file_name)) {
-            let (_, other) = written.iter().find(|(n, _)| n == &a.file_name).expect("found above");
+        // `dir.join("")` would add a trailing separator.
+        let out_dir = if sub.as_os_str().is_empty() { dir.clone() } else { dir.join(sub) };
+        if let Some(a) = result.artifacts.iter().find(|a| written.iter().any(|(n, _)| *n == out_dir.join(&a.file_name))) {
+            let (_, other) = written.iter().find(|(n, _)| *n == out_dir.join(&a.file_name)).expect("found above");
             reporter.plain(&Diagnostic::error_nowhere(format!(
                 "`{}` is an output of both `{}` and `{}`; nothing was written for `{}` (compile them into different directories)",
                 a.file_name,
@@ -374,8 +425,8 @@ fn compile(args: &CompileArgs) -> u8 {
             code = code.max(EXIT_ERROR);
             continue;
         }
-        match umbrac::output::write_artifacts(&dir, &result.artifacts) {
-            Ok(()) => written.extend(result.artifacts.iter().map(|a| (a.file_name.clone(), path.as_path()))),
+        match umbrac::output::write_artifacts(&out_dir, &result.artifacts) {
+            Ok(()) => written.extend(result.artifacts.iter().map(|a| (out_dir.join(&a.file_name), path.as_path()))),
             Err(e) => {
                 reporter.plain(&Diagnostic::error_nowhere(format!("{e}; no output of `{}` was changed", path.display())));
                 code = code.max(EXIT_ERROR);
@@ -387,7 +438,11 @@ fn compile(args: &CompileArgs) -> u8 {
 
 fn check(args: &CheckArgs) -> u8 {
     let opts = args.common.options(Target::ALL.to_vec());
-    let comps = compile_all(&args.files, &opts);
+    let files: Vec<PathBuf> = match expand_inputs(&args.files) {
+        Ok(i) => i.into_iter().map(|(f, _)| f).collect(),
+        Err(e) => return usage_error(&e),
+    };
+    let comps = compile_all(&files, &opts);
     let mut reporter = Reporter::new(args.common.message_format);
     let mut code = 0;
     for c in &comps {
@@ -415,27 +470,35 @@ fn reflect(args: &ReflectArgs) -> u8 {
 
 /// `compile --check`: every difference between the outputs and the files in
 /// the directory, as unified diffs on stdout; nothing is written.
-fn compile_check(args: &CompileArgs, targets: Vec<Target>) -> u8 {
+fn compile_check(args: &CompileArgs, targets: Vec<Target>, inputs: &[(PathBuf, PathBuf)]) -> u8 {
     let opts = args.common.options(targets);
-    let comps = compile_all(&args.files, &opts);
+    let files: Vec<PathBuf> = inputs.iter().map(|(f, _)| f.clone()).collect();
+    let comps = compile_all(&files, &opts);
     let mut reporter = Reporter::new(args.common.message_format);
     let mut code = 0;
-    let mut artifacts = Vec::new();
-    for c in &comps {
+    let dir = args.out.clone().unwrap_or_else(|| PathBuf::from("."));
+    // The outputs expected in each directory (a DIR input mirrors its
+    // subdirectories under -o, as `compile` writes them).
+    let mut expected: std::collections::BTreeMap<PathBuf, Vec<umbrac::Artifact>> = Default::default();
+    for ((_, sub), c) in inputs.iter().zip(&comps) {
         reporter.compilation(c);
         code = code.max(exit_code(c));
+        let out_dir = if sub.as_os_str().is_empty() { dir.clone() } else { dir.join(sub) };
+        let slot = expected.entry(out_dir).or_default();
         if let Some(result) = c.result.as_ref().filter(|_| !c.has_errors()) {
-            artifacts.extend(result.artifacts.iter().cloned());
+            slot.extend(result.artifacts.iter().cloned());
         }
     }
-    let dir = args.out.clone().unwrap_or_else(|| PathBuf::from("."));
-    let diffs = match umbrac::golden::compare(&artifacts, &dir) {
-        Ok(d) => d,
-        Err(e) => {
-            reporter.plain(&Diagnostic::error_nowhere(format!("cannot read `{}`: {e}", dir.display())));
-            return code.max(EXIT_ERROR);
+    let mut diffs = Vec::new();
+    for (d, artifacts) in &expected {
+        match umbrac::golden::compare(artifacts, d) {
+            Ok(found) => diffs.extend(found),
+            Err(e) => {
+                reporter.plain(&Diagnostic::error_nowhere(format!("cannot read `{}`: {e}", d.display())));
+                return code.max(EXIT_ERROR);
+            }
         }
-    };
+    }
     // With a failed input its outputs are unknown, so none is called stale.
     let diffs: Vec<_> = diffs.into_iter().filter(|d| code == 0 || !matches!(d, umbrac::golden::Difference::Stale { .. })).collect();
     let mut out = std::io::stdout().lock();

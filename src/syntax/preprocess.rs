@@ -499,7 +499,7 @@ impl Pp<'_> {
             Ok(t) => t,
             Err(e) => {
                 let msg = format!("include file `{}` is not UTF-8 text", path.display());
-                let note = format!("invalid byte at offset {}", e.utf8_error().valid_up_to());
+                let note = super::invalid_utf8_at(e.as_bytes(), e.utf8_error().valid_up_to());
                 self.diags.push(Diagnostic::error(msg, target.span).with_label("not UTF-8").with_note(note));
                 return;
             }
