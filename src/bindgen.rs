@@ -78,9 +78,7 @@ pub fn generate(compiled: &Compiled, opts: &BindgenOptions) -> Result<String, St
     let mut w = Writer { out: o, depth: 1 };
     w.line(&format!("/// The DSL file compiled: `{}`.", r.source));
     w.line(&format!("pub const SOURCE: &str = {};", str_lit(&r.source)));
-    w.line(&format!(
-        "/// `\"portable\"`: the WGSL/SPIR-V outputs take GL-convention matrices; flip the final image vertically and use clockwise front faces (docs/targets.md). `\"native\"`: nothing adapted."
-    ));
+    w.line("/// `\"portable\"`: the WGSL/SPIR-V outputs take GL-convention matrices; flip the final image vertically and use clockwise front faces (docs/targets.md). `\"native\"`: nothing adapted.");
     w.line(&format!("pub const CONVENTIONS: &str = {};", str_lit(&r.conventions)));
     if opts.sources {
         for a in &compiled.artifacts {
@@ -162,7 +160,7 @@ fn camel(name: &str) -> String {
         }
     }
     if s.is_empty() || s.starts_with(|c: char| c.is_ascii_digit()) {
-        s.insert_str(0, "T");
+        s.insert(0, 'T');
     }
     if s == "Self" {
         s.push('_');
