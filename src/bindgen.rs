@@ -130,6 +130,10 @@ fn is_identifier(s: &str) -> bool {
 /// A DSL name as a Rust identifier: keywords become raw identifiers; the
 /// few that cannot be raw get a trailing underscore.
 fn ident(name: &str) -> String {
+    // An element of a sampler array is reflected as `t[0]`: `t_0`.
+    let sanitized: String = name.chars().map(|c| if c.is_ascii_alphanumeric() || c == '_' { c } else { '_' }).collect();
+    let name = if sanitized != name { sanitized.trim_end_matches('_').to_string() } else { sanitized };
+    let name = name.as_str();
     if matches!(name, "self" | "Self" | "super" | "crate" | "_") {
         format!("{name}_")
     } else if KEYWORDS.contains(&name) {
