@@ -12,6 +12,8 @@
 //! [`source::SourceMap`]. Nothing is written to disk here; see
 //! [`output`] for atomic writes.
 
+pub mod bindgen;
+pub mod build;
 pub mod diag;
 pub mod emit;
 pub mod golden;

@@ -161,7 +161,19 @@ pub fn write_entry(lowered: &Lowered, ep: &EntryInterface, profile: Profile) -> 
         if !text::contains_ident(&out, name) {
             return Err(bug(format!("sampler `{name}` reported by naga is not in the text")));
         }
-        names.samplers.insert(to_original(mapping.texture)?, name.clone());
+        let original = to_original(mapping.texture)?;
+        // naga's namer appends `_` to names ending in a digit (`layers_0`,
+        // an element of a sampler array, becomes `layers_0_`); give the
+        // sampler back its own name where nothing else uses it.
+        let source = lowered.gl.global_variables.iter().nth(original).and_then(|(_, g)| g.name.clone());
+        let mut final_name = name.clone();
+        if let Some(src) = source {
+            if *name == format!("{src}_") && src.ends_with(|c: char| c.is_ascii_digit()) && !text::contains_ident(&out, &src) {
+                out = text::replace_ident(&out, name, &src);
+                final_name = src;
+            }
+        }
+        names.samplers.insert(original, final_name);
     }
 
     // Attributes, varyings and colour outputs are named by location
@@ -193,6 +205,36 @@ pub fn write_entry(lowered: &Lowered, ep: &EntryInterface, profile: Profile) -> 
     Ok((out, names))
 }
 
+/// Constants read by any function or entry point, directly or through
+/// another constant's initialiser.
+fn used_constants(module: &naga::Module) -> std::collections::HashSet<naga::Handle<naga::Constant>> {
+    let mut used = std::collections::HashSet::new();
+    let mut work = Vec::new();
+    let functions = module.functions.iter().map(|(_, f)| f).chain(module.entry_points.iter().map(|e| &e.function));
+    for f in functions {
+        for (_, e) in f.expressions.iter() {
+            if let naga::Expression::Constant(c) = *e {
+                work.push(c);
+            }
+        }
+    }
+    while let Some(c) = work.pop() {
+        if !used.insert(c) {
+            continue;
+        }
+        let mut exprs = vec![module.constants[c].init];
+        while let Some(h) = exprs.pop() {
+            match &module.global_expressions[h] {
+                naga::Expression::Constant(c2) => work.push(*c2),
+                naga::Expression::Compose { components, .. } => exprs.extend(components.iter().copied()),
+                naga::Expression::Splat { value, .. } => exprs.push(*value),
+                _ => {}
+            }
+        }
+    }
+    used
+}
+
 type GlobalMap = Box<dyn Fn(naga::Handle<naga::GlobalVariable>) -> Result<usize, Diagnostic>>;
 
 /// A copy of `lowered.gl` holding only `ep` and what it reaches, validated
@@ -210,6 +252,19 @@ fn entry_module(lowered: &Lowered, ep: &EntryInterface) -> Result<(naga::Module,
             i - 1 == keep
         });
         naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
+        // Compaction keeps every named constant; drop the ones this entry
+        // point never reads by unnaming them and compacting once more.
+        let used = used_constants(&module);
+        let mut dropped = false;
+        for (h, c) in module.constants.iter_mut() {
+            if !used.contains(&h) {
+                c.name = None;
+                dropped = true;
+            }
+        }
+        if dropped {
+            naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
+        }
         let info = naga::valid::Validator::new(
             naga::valid::ValidationFlags::all() - naga::valid::ValidationFlags::BINDINGS,
             naga::back::glsl::supported_capabilities(),

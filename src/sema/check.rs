@@ -42,6 +42,15 @@ pub fn check(program: &ast::Program, diags: &mut Diagnostics) -> Option<Program>
     }
 }
 
+/// Size and alignment of a type in a WGSL uniform block (natural layout) and
+/// under GLSL std140.
+struct UniformLayout {
+    size: u32,
+    align: u32,
+    std_size: u32,
+    std_align: u32,
+}
+
 enum FuncState {
     Unchecked(usize),
     InProgress(Span),
@@ -61,6 +70,8 @@ struct FnCtx {
     loop_depth: usize,
     uses: BTreeMap<GlobalId, Span>,
     fragment_only: Option<(Span, &'static str)>,
+    implicit_lod: bool,
+    callees: std::collections::BTreeSet<FuncId>,
     depth: usize,
 }
 
@@ -297,7 +308,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         // Explicit locations / texture units first, per interface class, so
         // automatic ones fill the gaps.
         let mut taken: HashMap<&'static str, HashMap<u32, Span>> = HashMap::new();
-        let mut pending_auto: Vec<(GlobalId, &'static str)> = Vec::new();
+        let mut pending_auto: Vec<(GlobalId, &'static str, u32)> = Vec::new();
         for item in &self.ast.items {
             let ast::Item::Global(g) = item else { continue };
             self.check_unique(seen, &g.name);
@@ -352,30 +363,49 @@ impl<'a, 'd> Checker<'a, 'd> {
                 continue;
             };
             let kind = match (class, &ty) {
-                ("uniform", Ty::Sampler(kind)) => {
+                ("uniform", Ty::Sampler(_)) | ("uniform", Ty::Array(..)) if ty.is_sampler_like() => {
+                    let (kind, count) = match &ty {
+                        Ty::Array(elem, n) => match **elem {
+                            Ty::Sampler(k) => (k, Some(*n)),
+                            _ => (SamplerKind::Sampler2D, Some(*n)),
+                        },
+                        Ty::Sampler(k) => (*k, None),
+                        _ => (SamplerKind::Sampler2D, None),
+                    };
+                    let n = count.unwrap_or(1);
                     if let Some((_, span)) = location {
                         self.diags.push(Diagnostic::error("`@location` does not apply to samplers; use `@stage = N` for the texture unit", span));
                     }
                     let unit = match stage {
-                        Some((s, span)) if !(0..32).contains(&s) => {
-                            self.diags.push(Diagnostic::error(format!("texture unit {s} is out of range (0..=31)"), span));
+                        Some((s, span)) if !(0..32).contains(&s) || s + n as i64 > 32 => {
+                            let msg = if n > 1 {
+                                format!("texture units {s}..{} are out of range (0..=31)", s + n as i64 - 1)
+                            } else {
+                                format!("texture unit {s} is out of range (0..=31)")
+                            };
+                            self.diags.push(Diagnostic::error(msg, span));
                             0
                         }
                         Some((s, span)) => {
                             let map = taken.entry("stage").or_default();
-                            if let Some(prev) = map.get(&(s as u32)) {
-                                let d = Diagnostic::error(format!("texture unit {s} is used twice"), span).with_secondary(*prev, "first used here");
-                                self.diags.push(d);
+                            for u in s as u32..s as u32 + n {
+                                if let Some(prev) = map.get(&u) {
+                                    let d = Diagnostic::error(format!("texture unit {u} is used twice"), span).with_secondary(*prev, "first used here");
+                                    self.diags.push(d);
+                                    break;
+                                }
                             }
-                            map.insert(s as u32, span);
+                            for u in s as u32..s as u32 + n {
+                                map.insert(u, span);
+                            }
                             s as u32
                         }
                         None => {
-                            pending_auto.push((self.out.globals.len(), "stage"));
+                            pending_auto.push((self.out.globals.len(), "stage", n));
                             0
                         }
                     };
-                    GlobalKind::Sampler { kind: *kind, texture_unit: unit }
+                    GlobalKind::Sampler { kind, texture_unit: unit, count }
                 }
                 ("uniform", _) => {
                     if let Some((_, span)) = location.or(stage) {
@@ -424,7 +454,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                             l as u32
                         }
                         None => {
-                            pending_auto.push((self.out.globals.len(), key));
+                            pending_auto.push((self.out.globals.len(), key, 1));
                             0
                         }
                     };
@@ -436,15 +466,19 @@ impl<'a, 'd> Checker<'a, 'd> {
             self.out.globals.push(Global { name: g.name.name.clone(), ty, kind, span: g.name.span });
         }
         // Automatic locations and units: the lowest free number, in declaration order.
-        for (gid, key) in pending_auto {
+        for (gid, key, count) in pending_auto {
             let map = taken.entry(key).or_default();
             let limit = if key == "stage" { 32 } else { MAX_LOCATIONS };
-            let Some(n) = (0..limit).find(|n| !map.contains_key(n)) else {
+            let Some(n) = (0..limit.saturating_sub(count - 1)).find(|n| (*n..n + count).all(|u| !map.contains_key(&u))) else {
                 let span = self.out.globals[gid].span;
-                self.diags.push(Diagnostic::error(format!("no free {} left (at most {limit})", if key == "stage" { "texture unit" } else { "location" }), span));
+                let what = if key == "stage" { "texture unit" } else { "location" };
+                let msg = if count > 1 { format!("no {count} consecutive free {what}s left (at most {limit})") } else { format!("no free {what} left (at most {limit})") };
+                self.diags.push(Diagnostic::error(msg, span));
                 continue;
             };
-            map.insert(n, self.out.globals[gid].span);
+            for u in n..n + count {
+                map.insert(u, self.out.globals[gid].span);
+            }
             match &mut self.out.globals[gid].kind {
                 GlobalKind::Sampler { texture_unit, .. } => *texture_unit = n,
                 GlobalKind::Io { location, .. } => *location = n,
@@ -455,26 +489,84 @@ impl<'a, 'd> Checker<'a, 'd> {
 
     /// Why a type cannot be a uniform block, if it cannot.
     fn uniform_type_problem(&self, ty: &Ty) -> Option<String> {
+        self.uniform_layout(ty, "").err()
+    }
+
+    /// The layout of `ty` in a uniform block, checked to be the same under
+    /// GLSL's std140 rules and WGSL's uniform rules (naga writes WGSL
+    /// structs without `@align`/`@size`, so the natural WGSL layout is the
+    /// one every target must share).
+    fn uniform_layout(&self, ty: &Ty, path: &str) -> Result<UniformLayout, String> {
+        let round = |a: u32, x: u32| x.div_ceil(a) * a;
         match ty {
             Ty::Scalar(Scalar::Bool) | Ty::Vector(Scalar::Bool, _) => {
-                Some("`bool` cannot live in a uniform block (it has no portable layout); use `int` or `uint`".into())
+                Err("`bool` cannot live in a uniform block (it has no portable layout); use `int` or `uint`".into())
             }
-            Ty::Matrix(_, 2) => Some(format!(
+            Ty::Scalar(_) => Ok(UniformLayout { size: 4, align: 4, std_size: 4, std_align: 4 }),
+            Ty::Vector(_, n) => {
+                let align = if *n == 2 { 8 } else { 16 };
+                Ok(UniformLayout { size: 4 * *n as u32, align, std_size: 4 * *n as u32, std_align: align })
+            }
+            Ty::Matrix(_, 2) => Err(format!(
                 "`{}` has different layouts in GLSL std140 and WGSL uniform blocks; use a float4 per column or a wider matrix",
                 self.show(ty)
             )),
-            Ty::Array(elem, _) => {
+            Ty::Matrix(c, _) => Ok(UniformLayout { size: 16 * *c as u32, align: 16, std_size: 16 * *c as u32, std_align: 16 }),
+            Ty::Array(elem, n) => {
                 if matches!(**elem, Ty::Scalar(_) | Ty::Vector(_, 2) | Ty::Vector(_, 3)) {
-                    Some(format!(
-                        "arrays of `{}` in a uniform block have a 16-byte element stride on every target; use float4 elements",
+                    return Err(format!(
+                        "arrays of `{}` in a uniform block have a 16-byte element stride in GLSL std140, which WGSL cannot express; use float4 (or int4, uint4) elements and pack several values into each",
                         self.show(elem)
-                    ))
-                } else {
-                    self.uniform_type_problem(elem)
+                    ));
                 }
+                let e = self.uniform_layout(elem, &format!("{path}[]"))?;
+                let stride = round(e.align, e.size);
+                let std_stride = round(16, e.std_size);
+                if stride % 16 != 0 || stride != std_stride {
+                    return Err(format!(
+                        "elements of `{}` are {stride} bytes apart in WGSL but {std_stride} in GLSL std140; pad `{}` to a multiple of 16 bytes (e.g. with a float4 field)",
+                        self.show(ty),
+                        self.show(elem)
+                    ));
+                }
+                Ok(UniformLayout { size: stride * n, align: e.align, std_size: std_stride * n, std_align: 16 })
             }
-            Ty::Struct(id) => self.out.structs[*id].fields.iter().find_map(|(_, t, _)| self.uniform_type_problem(t)),
-            _ => None,
+            Ty::Struct(id) => {
+                let def = &self.out.structs[*id];
+                let (mut end, mut std_end, mut align, mut std_align) = (0u32, 0u32, 1u32, 16u32);
+                let mut prev_struct: Option<(String, u32)> = None;
+                for (fname, fty, _) in &def.fields {
+                    let fpath = if path.is_empty() { format!("{}.{fname}", def.name) } else { format!("{path}.{fname}") };
+                    let m = self.uniform_layout(fty, &fpath).map_err(|e| if path.is_empty() && !e.contains('`') { format!("`{fpath}`: {e}") } else { e })?;
+                    // WGSL uniform rule: struct and array members start at multiples of 16.
+                    let member_align = if matches!(fty, Ty::Struct(_) | Ty::Array(..)) { round(16, m.align) } else { m.align };
+                    let off = round(m.align, end);
+                    let std_off = round(m.std_align, std_end);
+                    if off != std_off || off % member_align != 0 {
+                        return Err(format!(
+                            "field `{fname}` of `{}` would be at offset {off} in WGSL but {std_off} in GLSL std140; reorder or pad the fields so that every struct or array field starts at a multiple of 16 and every struct used in a uniform is a multiple of 16 bytes",
+                            def.name
+                        ));
+                    }
+                    if let Some((pname, min)) = prev_struct.take() {
+                        if off < min {
+                            return Err(format!(
+                                "field `{fname}` of `{}` follows struct field `{pname}` too closely for a WGSL uniform block; pad `{pname}`'s type to a multiple of 16 bytes",
+                                def.name
+                            ));
+                        }
+                    }
+                    if matches!(fty, Ty::Struct(_)) {
+                        prev_struct = Some((fname.clone(), off + round(16, m.size)));
+                    }
+                    end = off + m.size;
+                    std_end = std_off + m.std_size;
+                    align = align.max(m.align);
+                    std_align = std_align.max(round(16, m.std_align));
+                }
+                Ok(UniformLayout { size: round(align, end), align, std_size: round(std_align, std_end), std_align })
+            }
+            _ => Err(format!("`{}` cannot be in a uniform block", self.show(ty))),
         }
     }
 
@@ -520,8 +612,8 @@ impl<'a, 'd> Checker<'a, 'd> {
                         return Ty::Error;
                     }
                 };
-                if matches!(elem_ty, Ty::Sampler(_)) {
-                    self.diags.push(Diagnostic::error("arrays of samplers are not supported yet; declare one sampler per texture", t.span));
+                if matches!(elem_ty, Ty::Array(..)) && elem_ty.is_sampler_like() {
+                    self.diags.push(Diagnostic::error("arrays of arrays of samplers are not supported; use one array of samplers", t.span));
                     return Ty::Error;
                 }
                 if elem_ty.is_error() {
@@ -633,6 +725,32 @@ impl<'a, 'd> Checker<'a, 'd> {
             let d = Diagnostic::error(format!("{what} is only available in fragment entry points, and `{name}` is a vertex entry point"), span);
             self.diags.push(d);
         }
+        // Inputs and outputs of one entry point need distinct locations:
+        // `@in`/`@inout` inputs of a fragment entry point, `@inout`/`@out`
+        // outputs of a vertex entry point (transform feedback outputs).
+        let vertex = stage == naga::ShaderStage::Vertex;
+        let mut seen: HashMap<(bool, u32), GlobalId> = HashMap::new();
+        for (&gid, &span) in &func.uses {
+            let GlobalKind::Io { kind, location } = self.out.globals[gid].kind else { continue };
+            let output = match kind {
+                IoKind::In => false,
+                IoKind::Out => true,
+                IoKind::InOut => vertex,
+            };
+            if let Some(&prev) = seen.get(&(output, location)) {
+                let (a, b) = (&self.out.globals[prev], &self.out.globals[gid]);
+                let d = Diagnostic::error(
+                    format!("{} entry point `{name}` uses `{}` and `{}`, which are both {} at location {location}", stage_name(stage), a.name, b.name, if output { "outputs" } else { "inputs" }),
+                    span,
+                )
+                .with_secondary(a.span, format!("`{}` declared here", a.name))
+                .with_secondary(b.span, format!("`{}` declared here", b.name))
+                .with_note("`@in` and `@inout` share the input locations of a fragment entry point, `@inout` and `@out` the output locations of a vertex entry point; give one of them another `@location = N`");
+                self.diags.push(d);
+            } else {
+                seen.insert((output, location), gid);
+            }
+        }
     }
 
     /// Looks up (checking on first use) a helper function.
@@ -677,7 +795,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             Some(t) if entry.is_none() => self.resolve_type(t),
             _ => Ty::Void,
         };
-        if matches!(ret, Ty::Sampler(_)) {
+        if ret.is_sampler_like() {
             self.diags.push(Diagnostic::error("functions cannot return samplers", decl.ret.as_ref().map(|t| t.span).unwrap_or(decl.name.span)));
         }
         let mut cx = FnCtx {
@@ -687,11 +805,13 @@ impl<'a, 'd> Checker<'a, 'd> {
             loop_depth: 0,
             uses: BTreeMap::new(),
             fragment_only: None,
+            implicit_lod: false,
+            callees: Default::default(),
             depth: if entry.is_some() { 0 } else { self.call_depth },
         };
         for p in &decl.params {
             let ty = self.resolve_type(&p.ty);
-            if matches!(ty, Ty::Sampler(_)) {
+            if ty.is_sampler_like() {
                 let d = Diagnostic::error("sampler parameters are not supported yet; use the sampler global directly", p.ty.span);
                 self.diags.push(d);
             }
@@ -716,6 +836,8 @@ impl<'a, 'd> Checker<'a, 'd> {
             span: decl.span,
             uses: cx.uses,
             fragment_only: cx.fragment_only,
+            implicit_lod: cx.implicit_lod,
+            callees: cx.callees,
         })
     }
 
@@ -1128,7 +1250,21 @@ impl<'a, 'd> Checker<'a, 'd> {
                     return err_expr(span);
                 }
                 match self.binary_type(*op, &l.ty, &r.ty, span) {
-                    Some(ty) => mk(ExprKind::Binary(*op, Box::new(l), Box::new(r)), ty),
+                    Some(ty) => {
+                        // Constant operands make a constant expression in the
+                        // WGSL output, which WGSL evaluates at shader creation
+                        // and rejects on overflow, division by zero or a
+                        // non-finite result: report those here.
+                        if let (Some(a), Some(b)) = (self.literal_value(&l), self.literal_value(&r)) {
+                            if let Err(msg) = super::consts::binary(*op, &a, &l.ty, &b, &r.ty) {
+                                if !msg.contains("not supported") && !msg.contains("mismatch") {
+                                    self.diags.push(Diagnostic::error(msg, span).with_note("both operands are constants, so this is evaluated at compile time"));
+                                    return err_expr(span);
+                                }
+                            }
+                        }
+                        mk(ExprKind::Binary(*op, Box::new(l), Box::new(r)), ty)
+                    }
                     None => err_expr(span),
                 }
             }
@@ -1186,7 +1322,12 @@ impl<'a, 'd> Checker<'a, 'd> {
                         return err_expr(span);
                     }
                 };
-                if let ExprKind::Int(k) = i.kind {
+                let constant = match i.kind {
+                    ExprKind::Int(k) => Some(k),
+                    ExprKind::Uint(k) => Some(k as i64),
+                    _ => None,
+                };
+                if let Some(k) = constant {
                     if k < 0 || k as u64 >= len as u64 {
                         let d = Diagnostic::error(format!("index {k} is out of bounds for `{}` (length {len})", self.show(&b.ty)), i.span);
                         self.diags.push(d);
@@ -1219,6 +1360,17 @@ impl<'a, 'd> Checker<'a, 'd> {
                 let ty = Ty::Array(Box::new(elem_ty), xs.len() as u32);
                 mk(ExprKind::Construct(xs), ty)
             }
+        }
+    }
+
+    /// The value of a literal or named scalar constant.
+    fn literal_value(&self, e: &Expr) -> Option<ConstValue> {
+        match &e.kind {
+            ExprKind::Int(v) => Some(ConstValue::Int(*v)),
+            ExprKind::Uint(v) => Some(ConstValue::Uint(*v)),
+            ExprKind::Float(v) => Some(ConstValue::Float(*v as f32 as f64)),
+            ExprKind::Const(c) if matches!(self.out.consts[*c].ty, Ty::Scalar(_)) => Some(self.out.consts[*c].value.clone()),
+            _ => None,
         }
     }
 
@@ -1360,6 +1512,8 @@ impl<'a, 'd> Checker<'a, 'd> {
             if let Some(fo) = self.out.functions[fid].fragment_only {
                 cx.fragment_only.get_or_insert((span, fo.1));
             }
+            cx.implicit_lod |= self.out.functions[fid].implicit_lod;
+            cx.callees.insert(fid);
             return Expr { kind: ExprKind::Call(fid, xs), ty: ret, span };
         }
         if let Some((_, b)) = builtins::TEXTURE_FUNCTIONS.iter().find(|(n, _)| *n == name) {
@@ -1376,6 +1530,12 @@ impl<'a, 'd> Checker<'a, 'd> {
                     return err_expr(span);
                 }
                 Expr { kind: ExprKind::Builtin(b, xs), ty: ret, span }
+            }
+            Ok(None) if builtins::UNSUPPORTED.iter().any(|(n, _)| *n == name) => {
+                let why = builtins::UNSUPPORTED.iter().find(|(n, _)| *n == name).map(|(_, w)| *w).unwrap_or_default();
+                let d = Diagnostic::error(format!("`{name}` is not available in umbrac shaders"), callee.span).with_note(format!("help: {why}"));
+                self.diags.push(d);
+                err_expr(span)
             }
             Ok(None) => {
                 let mut d = Diagnostic::error(format!("unknown function `{name}`"), callee.span).with_label("not a function, builtin or type");
@@ -1477,6 +1637,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         };
         let kind = match (&first.ty, &first.kind) {
             (Ty::Sampler(k), ExprKind::Global(_)) => *k,
+            (Ty::Sampler(k), ExprKind::Index(base, _)) if matches!(base.kind, ExprKind::Global(_)) => *k,
             _ => {
                 let d = Diagnostic::error(format!("type mismatch: the first argument of `{name}` must be a sampler, found `{}`", self.show(&first.ty)), first.span);
                 self.diags.push(d);
@@ -1501,7 +1662,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             _ => Ty::Vector(Scalar::Int, 2),
         };
         let (sigs, ret): (Vec<Vec<Ty>>, Ty) = match b {
-            Builtin::Texture | Builtin::TextureLod if shadow => {
+            Builtin::Texture | Builtin::TextureLod | Builtin::TextureGrad if shadow => {
                 let d = Diagnostic::error(format!("`{name}` on shadow sampler `{}` is not supported", kind.name()), span)
                     .with_note("help: use textureCompare(sampler, uv, reference_depth) for a depth comparison");
                 self.diags.push(d);
@@ -1509,6 +1670,13 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
             Builtin::Texture => (vec![vec![coord.clone()], vec![coord.clone(), FLOAT]], texel),
             Builtin::TextureLod => (vec![vec![coord.clone(), FLOAT]], texel),
+            Builtin::TextureGrad => {
+                let grad = match kind.dim() {
+                    naga::ImageDimension::D2 => f2.clone(),
+                    _ => f3.clone(),
+                };
+                (vec![vec![coord.clone(), grad.clone(), grad]], texel)
+            }
             Builtin::TextureCompare => {
                 if !shadow {
                     let d = Diagnostic::error(format!("`textureCompare` needs a shadow sampler, but `{}` is a `{}`", self.sampler_name(first), kind.name()), first.span)
@@ -1558,14 +1726,16 @@ impl<'a, 'd> Checker<'a, 'd> {
             return err_expr(span);
         }
         if matches!(b, Builtin::Texture | Builtin::TextureProj | Builtin::TextureCompare) {
-            _cx.fragment_only.get_or_insert((span, "implicit-LOD sampling (texture, textureCompare, textureProj)"));
+            // Allowed in vertex entry points too: lowered with level 0 there.
+            _cx.implicit_lod = true;
         }
         Expr { kind: ExprKind::Builtin(b, xs), ty: ret, span }
     }
 
     fn sampler_name(&self, e: &Expr) -> String {
-        match e.kind {
-            ExprKind::Global(g) => self.out.globals[g].name.clone(),
+        match &e.kind {
+            ExprKind::Global(g) => self.out.globals[*g].name.clone(),
+            ExprKind::Index(b, _) => format!("{}[...]", self.sampler_name(b)),
             _ => "the sampler".into(),
         }
     }

@@ -1,0 +1,338 @@
+//! The shadow scene's host side: meshes, per-frame matrices and the uniform
+//! values each draw sets. All math is OpenGL-convention (right-handed view
+//! space, clip z in [-w, w]), exactly as the tutorial's host computes it; the
+//! shaders adapt to WebGPU/Vulkan clip space, the host does not.
+
+use glam::camera::rh::proj::opengl;
+use glam::camera::rh::view::look_at_mat4;
+use glam::{Mat4, Quat, Vec3};
+
+/// Half the floor's side: the floor spans [-5, 5] in x and z at y = 0.
+pub const FLOOR_HALF: f32 = 5.0;
+/// Height of the cube's centre.
+pub const CUBE_HOVER: f32 = 1.5;
+/// Uniform scale of the [-1, 1] cube.
+pub const CUBE_SCALE: f32 = 0.55;
+/// Spin rate about [`cube_axis`], radians per second.
+pub const CUBE_SPIN: f32 = 0.7;
+/// Half-extent of the sun's orthographic box (x and y).
+pub const LIGHT_BOX: f32 = 4.0;
+pub const LIGHT_NEAR: f32 = 0.1;
+pub const LIGHT_FAR: f32 = 20.0;
+/// Distance of the sun's eye from the origin.
+pub const LIGHT_DISTANCE: f32 = 8.0;
+pub const CAMERA_FOVY_DEG: f32 = 50.0;
+pub const CAMERA_NEAR: f32 = 0.1;
+pub const CAMERA_FAR: f32 = 50.0;
+/// Background colour (linear RGB written straight to a UNORM target).
+pub const CLEAR: [f64; 3] = [0.04, 0.05, 0.09];
+pub const DEFAULT_SHADOW_SIZE: u32 = 1024;
+
+/// What a render produces.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum View {
+    /// The lit, shadowed scene.
+    #[default]
+    Final,
+    /// The sun's depth texture as greyscale (near = dark).
+    ShadowMap,
+    /// The scene with every surface in sunlight: the main pass samples an
+    /// empty shadow map (cleared to the far plane), so only the N.L cut-off
+    /// darkens faces turned from the sun. `final` divided by `lit` isolates
+    /// the shadowing; comparing `lit` images isolates the lighting formula.
+    Lit,
+}
+
+impl View {
+    pub fn name(self) -> &'static str {
+        match self {
+            View::Final => "final",
+            View::ShadowMap => "shadow-map",
+            View::Lit => "lit",
+        }
+    }
+}
+
+/// One frame's request.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FrameParams {
+    /// Scene time in seconds.
+    pub time: f32,
+    pub width: u32,
+    pub height: u32,
+    /// Side of the square shadow map.
+    pub shadow_size: u32,
+    pub view: View,
+}
+
+impl FrameParams {
+    pub fn new(time: f32, width: u32, height: u32) -> FrameParams {
+        FrameParams { time, width, height, shadow_size: DEFAULT_SHADOW_SIZE, view: View::Final }
+    }
+
+    pub fn with_view(mut self, view: View) -> FrameParams {
+        self.view = view;
+        self
+    }
+
+    pub fn aspect(&self) -> f32 {
+        self.width as f32 / self.height.max(1) as f32
+    }
+}
+
+/// A vertex as the meshes store it: position then normal, 24 bytes.
+#[repr(C)]
+#[derive(Clone, Copy, Debug, PartialEq, bytemuck::Pod, bytemuck::Zeroable)]
+pub struct Vertex {
+    pub pos: [f32; 3],
+    pub normal: [f32; 3],
+}
+
+/// Byte offsets of the vertex fields, by the attribute names the scene's
+/// shaders use.
+pub const VERTEX_STRIDE: u64 = std::mem::size_of::<Vertex>() as u64;
+pub const ATTR_POS: &str = "a_pos";
+pub const ATTR_NORMAL: &str = "a_normal";
+
+/// Offset of a named vertex attribute in [`Vertex`].
+pub fn attribute_offset(name: &str) -> Option<u64> {
+    match name {
+        ATTR_POS => Some(0),
+        ATTR_NORMAL => Some(12),
+        _ => None,
+    }
+}
+
+pub struct Mesh {
+    pub vertices: Vec<Vertex>,
+    pub indices: Vec<u32>,
+}
+
+/// The [-1, 1] cube: 6 faces of 4 vertices, each with its face normal, two
+/// triangles per face wound counter-clockwise seen from outside.
+pub fn cube_mesh() -> Mesh {
+    // For each face: normal n and two in-face axes (u, v) with u x v = n, so
+    // corners n + su*u + sv*v in the order (+,+) (-,+) (-,-) (+,-) run CCW.
+    let faces: [([f32; 3], [f32; 3], [f32; 3]); 6] = [
+        ([0.0, 0.0, 1.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]),
+        ([1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]),
+        ([0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [1.0, 0.0, 0.0]),
+        ([-1.0, 0.0, 0.0], [0.0, 0.0, 1.0], [0.0, 1.0, 0.0]),
+        ([0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]),
+        ([0.0, 0.0, -1.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]),
+    ];
+    let mut vertices = Vec::with_capacity(24);
+    let mut indices = Vec::with_capacity(36);
+    for (n, u, v) in faces {
+        let (n, u, v) = (Vec3::from(n), Vec3::from(u), Vec3::from(v));
+        debug_assert!(u.cross(v).abs_diff_eq(n, 1e-6));
+        let base = vertices.len() as u32;
+        for (su, sv) in [(1.0, 1.0), (-1.0, 1.0), (-1.0, -1.0), (1.0, -1.0)] {
+            let p = n + u * su + v * sv;
+            vertices.push(Vertex { pos: p.into(), normal: n.into() });
+        }
+        indices.extend_from_slice(&[base, base + 1, base + 2, base + 2, base + 3, base]);
+    }
+    Mesh { vertices, indices }
+}
+
+/// The floor: a square of side `2 * FLOOR_HALF` at y = 0, normal +y, CCW seen
+/// from above.
+pub fn floor_mesh() -> Mesh {
+    let h = FLOOR_HALF;
+    let up = [0.0, 1.0, 0.0];
+    let corners = [[-h, 0.0, -h], [-h, 0.0, h], [h, 0.0, h], [h, 0.0, -h]];
+    Mesh {
+        vertices: corners.iter().map(|&pos| Vertex { pos, normal: up }).collect(),
+        indices: vec![0, 1, 2, 2, 3, 0],
+    }
+}
+
+/// The axis the cube spins about.
+pub fn cube_axis() -> Vec3 {
+    Vec3::new(0.3, 1.0, 0.2).normalize()
+}
+
+/// Object-to-world matrix of the cube at time `t`: translate * rotate * scale.
+pub fn cube_model(t: f32) -> Mat4 {
+    let rot = Quat::from_axis_angle(cube_axis(), t * CUBE_SPIN);
+    Mat4::from_scale_rotation_translation(Vec3::splat(CUBE_SCALE), rot, Vec3::new(0.0, CUBE_HOVER, 0.0))
+}
+
+/// Unit vector from the scene towards the sun at time `t`.
+pub fn light_dir(t: f32) -> Vec3 {
+    let yaw = t * 0.6;
+    Vec3::new(yaw.cos(), 1.4, yaw.sin()).normalize()
+}
+
+pub fn camera_pos(t: f32) -> Vec3 {
+    let a = t * 0.35;
+    Vec3::new(a.cos() * 5.0, 3.2, a.sin() * 5.0)
+}
+
+pub fn camera_target() -> Vec3 {
+    Vec3::new(0.0, CUBE_HOVER * 0.5, 0.0)
+}
+
+/// Everything the host computes once per frame.
+#[derive(Clone, Copy, Debug)]
+pub struct Frame {
+    pub light_dir: Vec3,
+    pub light_view: Mat4,
+    pub light_proj: Mat4,
+    pub light_vp: Mat4,
+    pub cam_pos: Vec3,
+    pub view: Mat4,
+    pub proj: Mat4,
+    pub cube_model: Mat4,
+}
+
+impl Frame {
+    pub fn at(t: f32, aspect: f32) -> Frame {
+        let light_dir = light_dir(t);
+        let light_view = look_at_mat4(light_dir * LIGHT_DISTANCE, Vec3::ZERO, Vec3::Y);
+        let light_proj = opengl::orthographic(-LIGHT_BOX, LIGHT_BOX, -LIGHT_BOX, LIGHT_BOX, LIGHT_NEAR, LIGHT_FAR);
+        let cam_pos = camera_pos(t);
+        let view = look_at_mat4(cam_pos, camera_target(), Vec3::Y);
+        let proj = opengl::perspective(CAMERA_FOVY_DEG.to_radians(), aspect, CAMERA_NEAR, CAMERA_FAR);
+        Frame {
+            light_dir,
+            light_view,
+            light_proj,
+            light_vp: light_proj * light_view,
+            cam_pos,
+            view,
+            proj,
+            cube_model: cube_model(t),
+        }
+    }
+
+    pub fn of(params: &FrameParams) -> Frame {
+        Frame::at(params.time, params.aspect())
+    }
+
+    /// The draws of either pass, in the tutorial's order: cube, then floor.
+    pub fn draws(&self) -> [Draw; 2] {
+        [
+            Draw { object: Object::Cube, model: self.cube_model, is_floor: 0.0 },
+            Draw { object: Object::Floor, model: Mat4::IDENTITY, is_floor: 1.0 },
+        ]
+    }
+
+    /// The value of a scene uniform for one draw, by its DSL name.
+    pub fn uniform(&self, name: &str, draw: &Draw) -> Option<UniformValue> {
+        Some(match name {
+            "u_light_vp" => UniformValue::Mat4(self.light_vp),
+            "u_model" => UniformValue::Mat4(draw.model),
+            "u_view" => UniformValue::Mat4(self.view),
+            "u_proj" => UniformValue::Mat4(self.proj),
+            "u_light_dir" => UniformValue::Vec3(self.light_dir),
+            "u_cam_pos" => UniformValue::Vec3(self.cam_pos),
+            "u_is_floor" => UniformValue::Float(draw.is_floor),
+            _ => return None,
+        })
+    }
+}
+
+/// Names of every uniform value the scene provides.
+pub const UNIFORM_NAMES: [&str; 7] =
+    ["u_light_vp", "u_model", "u_view", "u_proj", "u_light_dir", "u_cam_pos", "u_is_floor"];
+
+/// The DSL type of a scene uniform, by name.
+pub fn uniform_type(name: &str) -> Option<&'static str> {
+    let f = Frame::at(0.0, 1.0);
+    f.uniform(name, &f.draws()[0]).map(|v| v.dsl_type())
+}
+
+/// Uniforms a program must declare for the scene to draw anything sensible.
+pub const REQUIRED_UNIFORMS: [&str; 4] = ["u_model", "u_light_vp", "u_view", "u_proj"];
+
+/// Entry points the scene runs: (shadow pass vertex, fragment), (main pass vertex, fragment).
+pub const SHADOW_VS: &str = "shadow_vs";
+pub const SHADOW_FS: &str = "shadow_fs";
+pub const MAIN_VS: &str = "main_vs";
+pub const MAIN_FS: &str = "main_fs";
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Object {
+    Cube,
+    Floor,
+}
+
+#[derive(Clone, Copy, Debug)]
+pub struct Draw {
+    pub object: Object,
+    pub model: Mat4,
+    pub is_floor: f32,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum UniformValue {
+    Float(f32),
+    Vec3(Vec3),
+    Mat4(Mat4),
+}
+
+impl UniformValue {
+    /// The DSL type this value has.
+    pub fn dsl_type(&self) -> &'static str {
+        match self {
+            UniformValue::Float(_) => "float",
+            UniformValue::Vec3(_) => "float3",
+            UniformValue::Mat4(_) => "float4x4",
+        }
+    }
+
+    /// Writes the value at the start of `out` with the given matrix column
+    /// stride (16 for a std140 / WGSL `mat4x4<f32>`). Returns false if `out`
+    /// is too short.
+    pub fn write(&self, out: &mut [u8], matrix_stride: usize) -> bool {
+        let put = |out: &mut [u8], at: usize, vals: &[f32]| -> bool {
+            let bytes: &[u8] = bytemuck::cast_slice(vals);
+            match out.get_mut(at..at + bytes.len()) {
+                Some(dst) => {
+                    dst.copy_from_slice(bytes);
+                    true
+                }
+                None => false,
+            }
+        };
+        match self {
+            UniformValue::Float(f) => put(out, 0, &[*f]),
+            UniformValue::Vec3(v) => put(out, 0, &v.to_array()),
+            UniformValue::Mat4(m) => {
+                let cols = m.to_cols_array_2d();
+                cols.iter().enumerate().all(|(i, c)| put(out, i * matrix_stride, c))
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn cube_faces_wind_outwards() {
+        let m = cube_mesh();
+        assert_eq!(m.vertices.len(), 24);
+        for tri in m.indices.chunks(3) {
+            let [a, b, c] = [0, 1, 2].map(|i| Vec3::from(m.vertices[tri[i] as usize].pos));
+            let n = Vec3::from(m.vertices[tri[0] as usize].normal);
+            assert!((b - a).cross(c - a).dot(n) > 0.0);
+        }
+        let f = floor_mesh();
+        let [a, b, c] = [0, 1, 2].map(|i| Vec3::from(f.vertices[f.indices[i] as usize].pos));
+        assert!((b - a).cross(c - a).y > 0.0);
+    }
+
+    #[test]
+    fn gl_projection_maps_near_far_to_minus_one_one() {
+        let f = Frame::at(0.0, 4.0 / 3.0);
+        let eye = light_dir(0.0) * LIGHT_DISTANCE;
+        let near = f.light_vp * (eye - light_dir(0.0) * LIGHT_NEAR).extend(1.0);
+        let far = f.light_vp * (eye - light_dir(0.0) * LIGHT_FAR).extend(1.0);
+        assert!((near.z / near.w + 1.0).abs() < 1e-4);
+        assert!((far.z / far.w - 1.0).abs() < 1e-4);
+    }
+}
