@@ -13,7 +13,7 @@ use crate::render::gl::GlRenderer;
 use crate::render::glsl_set::GlslSet;
 use crate::render::scene::{self, FrameParams, Object};
 
-use super::{block_bytes, entry, sampler_layer, ShadowTarget, TechFrame, Technique, DRAWS, PASSES};
+use super::{block_bytes, entry, sampler_layer, ShadowTarget, TechFrame, Technique, DRAWS};
 
 struct Pass {
     program: glow::Program,
@@ -56,7 +56,8 @@ pub fn prepare(r: &GlRenderer, technique: Technique, compiled: &crate::Compiled)
             meshes.push((vb, ib, m.indices.len() as i32));
         }
         let mut passes = Vec::new();
-        for (vs, fs) in PASSES {
+        for (vs, fs) in technique.passes() {
+            let (vs, fs) = (vs.as_str(), fs.as_str());
             let mut shaders = Vec::new();
             for (stage, name) in [(glow::VERTEX_SHADER, vs), (glow::FRAGMENT_SHADER, fs)] {
                 let (file, text) = set.entry(name)?;

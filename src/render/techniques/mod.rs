@@ -304,5 +304,23 @@ pub fn entry<'r>(r: &'r Reflection, name: &str) -> Result<&'r crate::emit::refle
     r.entry_points.iter().find(|e| e.name == name).ok_or_else(|| format!("the program has no entry point `{name}`"))
 }
 
-/// Entry point names of the two passes.
-pub const PASSES: [(&str, &str); 2] = [(scene::SHADOW_VS, scene::SHADOW_FS), (scene::MAIN_VS, scene::MAIN_FS)];
+impl Technique {
+    /// The prefix of the program's entry point names.
+    pub fn entry_prefix(self) -> &'static str {
+        match self {
+            Technique::Rgba8Depth => "rgba8",
+            t => t.name(),
+        }
+    }
+
+    /// Entry points of the two passes: (shadow vs, fs), (main vs, fs), as
+    /// `PREFIX_shadow_vs` ... (one directory of programs needs distinct
+    /// entry names: each entry point is an output file of its own).
+    pub fn passes(self) -> [(String, String); 2] {
+        let p = self.entry_prefix();
+        [
+            (format!("{p}_{}", scene::SHADOW_VS), format!("{p}_{}", scene::SHADOW_FS)),
+            (format!("{p}_{}", scene::MAIN_VS), format!("{p}_{}", scene::MAIN_FS)),
+        ]
+    }
+}

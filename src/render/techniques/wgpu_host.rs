@@ -11,7 +11,7 @@ use crate::emit::reflect_types::Reflection;
 use crate::render::gpu::{Renderer, ShaderCode, ShaderSet, Via};
 use crate::render::scene::{self, FrameParams, Object};
 
-use super::{block_bytes, entry, sampler_layer, ShadowTarget, TechFrame, Technique, DRAWS, PASSES};
+use super::{block_bytes, entry, sampler_layer, ShadowTarget, TechFrame, Technique, DRAWS};
 
 const DEPTH: wgpu::TextureFormat = wgpu::TextureFormat::Depth32Float;
 const COLOR: wgpu::TextureFormat = wgpu::TextureFormat::Rgba8Unorm;
@@ -122,7 +122,8 @@ impl<'r> TechRenderer<'r> {
             .collect();
         let module = |name: &str| &modules[set.entry_module.get(name).copied().unwrap_or(0)];
         let mut passes = Vec::new();
-        for (i, &(vs, fs)) in PASSES.iter().enumerate() {
+        for (i, (vs, fs)) in technique.passes().iter().enumerate() {
+            let (vs, fs) = (vs.as_str(), fs.as_str());
             let shadow = i == 0;
             let (v, f) = (entry(r, vs)?, entry(r, fs)?);
             // Bindings this pass uses, by group.

@@ -1,21 +1,21 @@
 diagnostic(off, derivative_uniformity);
 
-struct shadow_vs_out {
+struct proj_shadow_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
 }
 
-struct shadow_fs_out {
+struct proj_shadow_fs_out {
     @location(0) f_FragColor: vec4<f32>,
 }
 
-struct main_vs_out {
+struct proj_main_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_world_pos: vec3<f32>,
     @location(1) v_world_normal: vec3<f32>,
     @location(2) v_shadow_coord: vec4<f32>,
 }
 
-struct main_fs_out {
+struct proj_main_fs_out {
     @location(0) f_FragColor: vec4<f32>,
 }
 
@@ -44,6 +44,25 @@ var shadow_map: texture_depth_2d;
 var shadow_map_sampler: sampler_comparison;
 var<private> v_shadow_coord: vec4<f32>;
 var<private> gl_Position: vec4<f32>;
+
+fn shadow_clip() -> vec4<f32> {
+    let _e1 = u_light_vp;
+    let _e3 = u_model;
+    let _e5 = a_pos;
+    return (_e1 * (_e3 * vec4<f32>(_e5, 1f)));
+}
+
+fn world_position() -> vec4<f32> {
+    let _e1 = u_model;
+    let _e3 = a_pos;
+    return (_e1 * vec4<f32>(_e3, 1f));
+}
+
+fn world_normal() -> vec3<f32> {
+    let _e1 = u_model;
+    let _e3 = a_normal;
+    return (_e1 * vec4<f32>(_e3, 0f)).xyz;
+}
 
 fn bias_matrix() -> mat4x4<f32> {
     return mat4x4<f32>(vec4<f32>(0.5f, 0f, 0f, 0f), vec4<f32>(0f, 0.5f, 0f, 0f), vec4<f32>(0f, 0f, 0.5f, 0f), vec4<f32>(0.5f, 0.5f, 0.5f, 1f));
@@ -104,49 +123,44 @@ fn sun_shade(visibility: f32) -> vec3<f32> {
 }
 
 @vertex 
-fn shadow_vs(@location(0) in_a_pos: vec3<f32>) -> shadow_vs_out {
+fn proj_shadow_vs(@location(0) in_a_pos: vec3<f32>) -> proj_shadow_vs_out {
     a_pos = in_a_pos;
-    let _e4 = u_light_vp;
-    let _e6 = u_model;
-    let _e8 = a_pos;
-    gl_Position = (_e4 * (_e6 * vec4<f32>(_e8, 1f)));
-    let _e14 = gl_Position;
-    return shadow_vs_out(vec4<f32>(_e14.x, -(_e14.y), ((_e14.z + _e14.w) * 0.5f), _e14.w));
+    let _e3 = shadow_clip();
+    gl_Position = _e3;
+    let _e5 = gl_Position;
+    return proj_shadow_vs_out(vec4<f32>(_e5.x, -(_e5.y), ((_e5.z + _e5.w) * 0.5f), _e5.w));
 }
 
 @fragment 
-fn shadow_fs() -> shadow_fs_out {
+fn proj_shadow_fs() -> proj_shadow_fs_out {
     f_FragColor = vec4(1f);
     let _e4 = f_FragColor;
-    return shadow_fs_out(_e4);
+    return proj_shadow_fs_out(_e4);
 }
 
 @vertex 
-fn main_vs(@location(0) in_a_pos_1: vec3<f32>, @location(1) in_a_normal: vec3<f32>) -> main_vs_out {
+fn proj_main_vs(@location(0) in_a_pos_1: vec3<f32>, @location(1) in_a_normal: vec3<f32>) -> proj_main_vs_out {
     a_pos = in_a_pos_1;
     a_normal = in_a_normal;
-    let _e5 = u_model;
-    let _e7 = a_pos;
-    let world = (_e5 * vec4<f32>(_e7, 1f));
-    v_world_pos = world.xyz;
-    let _e15 = u_model;
-    let _e17 = a_normal;
-    v_world_normal = (_e15 * vec4<f32>(_e17, 0f)).xyz;
-    let _e23 = bias_matrix();
-    let _e25 = u_light_vp;
-    v_shadow_coord = ((_e23 * _e25) * world);
-    let _e30 = u_proj;
-    let _e32 = u_view;
-    gl_Position = (_e30 * (_e32 * world));
-    let _e36 = gl_Position;
-    let _e47 = v_world_pos;
-    let _e49 = v_world_normal;
-    let _e51 = v_shadow_coord;
-    return main_vs_out(vec4<f32>(_e36.x, -(_e36.y), ((_e36.z + _e36.w) * 0.5f), _e36.w), _e47, _e49, _e51);
+    let _e4 = world_position();
+    v_world_pos = _e4.xyz;
+    let _e8 = world_normal();
+    v_world_normal = _e8;
+    let _e10 = bias_matrix();
+    let _e12 = u_light_vp;
+    v_shadow_coord = ((_e10 * _e12) * _e4);
+    let _e17 = u_proj;
+    let _e19 = u_view;
+    gl_Position = (_e17 * (_e19 * _e4));
+    let _e23 = gl_Position;
+    let _e34 = v_world_pos;
+    let _e36 = v_world_normal;
+    let _e38 = v_shadow_coord;
+    return proj_main_vs_out(vec4<f32>(_e23.x, -(_e23.y), ((_e23.z + _e23.w) * 0.5f), _e23.w), _e34, _e36, _e38);
 }
 
 @fragment 
-fn main_fs(@location(0) in_v_world_pos: vec3<f32>, @location(1) in_v_world_normal: vec3<f32>, @location(2) in_v_shadow_coord: vec4<f32>) -> main_fs_out {
+fn proj_main_fs(@location(0) in_v_world_pos: vec3<f32>, @location(1) in_v_world_normal: vec3<f32>, @location(2) in_v_shadow_coord: vec4<f32>) -> proj_main_fs_out {
     v_world_pos = in_v_world_pos;
     v_world_normal = in_v_world_normal;
     v_shadow_coord = in_v_shadow_coord;
@@ -158,5 +172,5 @@ fn main_fs(@location(0) in_v_world_pos: vec3<f32>, @location(1) in_v_world_norma
     let _e27 = sun_shade(_e26);
     f_FragColor = vec4<f32>(_e27, 1f);
     let _e31 = f_FragColor;
-    return main_fs_out(_e31);
+    return proj_main_fs_out(_e31);
 }

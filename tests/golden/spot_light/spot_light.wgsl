@@ -1,20 +1,20 @@
 diagnostic(off, derivative_uniformity);
 
-struct shadow_vs_out {
+struct spot_shadow_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
 }
 
-struct shadow_fs_out {
+struct spot_shadow_fs_out {
     @location(0) f_FragColor: vec4<f32>,
 }
 
-struct main_vs_out {
+struct spot_main_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_world_pos: vec3<f32>,
     @location(1) v_world_normal: vec3<f32>,
 }
 
-struct main_fs_out {
+struct spot_main_fs_out {
     @location(0) f_FragColor: vec4<f32>,
 }
 
@@ -49,6 +49,25 @@ var shadow_map: texture_2d<f32>;
 @group(0) @binding(9) 
 var shadow_map_sampler: sampler;
 var<private> gl_Position: vec4<f32>;
+
+fn shadow_clip() -> vec4<f32> {
+    let _e1 = u_light_vp;
+    let _e3 = u_model;
+    let _e5 = a_pos;
+    return (_e1 * (_e3 * vec4<f32>(_e5, 1f)));
+}
+
+fn world_position() -> vec4<f32> {
+    let _e1 = u_model;
+    let _e3 = a_pos;
+    return (_e1 * vec4<f32>(_e3, 1f));
+}
+
+fn world_normal() -> vec3<f32> {
+    let _e1 = u_model;
+    let _e3 = a_normal;
+    return (_e1 * vec4<f32>(_e3, 0f)).xyz;
+}
 
 fn cone(to_light: vec3<f32>) -> f32 {
     let _e5 = u_spot_dir;
@@ -93,45 +112,40 @@ fn hemisphere(n: vec3<f32>) -> vec3<f32> {
 }
 
 @vertex 
-fn shadow_vs(@location(0) in_a_pos: vec3<f32>) -> shadow_vs_out {
+fn spot_shadow_vs(@location(0) in_a_pos: vec3<f32>) -> spot_shadow_vs_out {
     a_pos = in_a_pos;
-    let _e4 = u_light_vp;
-    let _e6 = u_model;
-    let _e8 = a_pos;
-    gl_Position = (_e4 * (_e6 * vec4<f32>(_e8, 1f)));
-    let _e14 = gl_Position;
-    return shadow_vs_out(vec4<f32>(_e14.x, -(_e14.y), ((_e14.z + _e14.w) * 0.5f), _e14.w));
+    let _e3 = shadow_clip();
+    gl_Position = _e3;
+    let _e5 = gl_Position;
+    return spot_shadow_vs_out(vec4<f32>(_e5.x, -(_e5.y), ((_e5.z + _e5.w) * 0.5f), _e5.w));
 }
 
 @fragment 
-fn shadow_fs() -> shadow_fs_out {
+fn spot_shadow_fs() -> spot_shadow_fs_out {
     f_FragColor = vec4(1f);
     let _e4 = f_FragColor;
-    return shadow_fs_out(_e4);
+    return spot_shadow_fs_out(_e4);
 }
 
 @vertex 
-fn main_vs(@location(0) in_a_pos_1: vec3<f32>, @location(1) in_a_normal: vec3<f32>) -> main_vs_out {
+fn spot_main_vs(@location(0) in_a_pos_1: vec3<f32>, @location(1) in_a_normal: vec3<f32>) -> spot_main_vs_out {
     a_pos = in_a_pos_1;
     a_normal = in_a_normal;
-    let _e5 = u_model;
-    let _e7 = a_pos;
-    let world_1 = (_e5 * vec4<f32>(_e7, 1f));
-    v_world_pos = world_1.xyz;
-    let _e15 = u_model;
-    let _e17 = a_normal;
-    v_world_normal = (_e15 * vec4<f32>(_e17, 0f)).xyz;
-    let _e24 = u_proj;
-    let _e26 = u_view;
-    gl_Position = (_e24 * (_e26 * world_1));
-    let _e30 = gl_Position;
-    let _e41 = v_world_pos;
-    let _e43 = v_world_normal;
-    return main_vs_out(vec4<f32>(_e30.x, -(_e30.y), ((_e30.z + _e30.w) * 0.5f), _e30.w), _e41, _e43);
+    let _e4 = world_position();
+    v_world_pos = _e4.xyz;
+    let _e8 = world_normal();
+    v_world_normal = _e8;
+    let _e11 = u_proj;
+    let _e13 = u_view;
+    gl_Position = (_e11 * (_e13 * _e4));
+    let _e17 = gl_Position;
+    let _e28 = v_world_pos;
+    let _e30 = v_world_normal;
+    return spot_main_vs_out(vec4<f32>(_e17.x, -(_e17.y), ((_e17.z + _e17.w) * 0.5f), _e17.w), _e28, _e30);
 }
 
 @fragment 
-fn main_fs(@location(0) in_v_world_pos: vec3<f32>, @location(1) in_v_world_normal: vec3<f32>) -> main_fs_out {
+fn spot_main_fs(@location(0) in_v_world_pos: vec3<f32>, @location(1) in_v_world_normal: vec3<f32>) -> spot_main_fs_out {
     v_world_pos = in_v_world_pos;
     v_world_normal = in_v_world_normal;
     let _e5 = v_world_normal;
@@ -156,5 +170,5 @@ fn main_fs(@location(0) in_v_world_pos: vec3<f32>, @location(1) in_v_world_norma
     let rgb = ((_e44 * (_e45 + (color * (ndotl * light)))) + vec3((spec * light)));
     f_FragColor = vec4<f32>(rgb, 1f);
     let _e57 = f_FragColor;
-    return main_fs_out(_e57);
+    return spot_main_fs_out(_e57);
 }
