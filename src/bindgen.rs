@@ -78,9 +78,7 @@ pub fn generate(compiled: &Compiled, opts: &BindgenOptions) -> Result<String, St
     let mut w = Writer { out: o, depth: 1 };
     w.line(&format!("/// The DSL file compiled: `{}`.", r.source));
     w.line(&format!("pub const SOURCE: &str = {};", str_lit(&r.source)));
-    w.line(&format!(
-        "/// `\"portable\"`: the WGSL/SPIR-V outputs take GL-convention matrices; flip the final image vertically and use clockwise front faces (docs/targets.md). `\"native\"`: nothing adapted."
-    ));
+    w.line("/// `\"portable\"`: the WGSL/SPIR-V outputs take GL-convention matrices; flip the final image vertically and use clockwise front faces (docs/targets.md). `\"native\"`: nothing adapted.");
     w.line(&format!("pub const CONVENTIONS: &str = {};", str_lit(&r.conventions)));
     if opts.sources {
         for a in &compiled.artifacts {
@@ -132,6 +130,10 @@ fn is_identifier(s: &str) -> bool {
 /// A DSL name as a Rust identifier: keywords become raw identifiers; the
 /// few that cannot be raw get a trailing underscore.
 fn ident(name: &str) -> String {
+    // An element of a sampler array is reflected as `t[0]`: `t_0`.
+    let sanitized: String = name.chars().map(|c| if c.is_ascii_alphanumeric() || c == '_' { c } else { '_' }).collect();
+    let name = if sanitized != name { sanitized.trim_end_matches('_').to_string() } else { sanitized };
+    let name = name.as_str();
     if matches!(name, "self" | "Self" | "super" | "crate" | "_") {
         format!("{name}_")
     } else if KEYWORDS.contains(&name) {
@@ -139,6 +141,16 @@ fn ident(name: &str) -> String {
     } else {
         name.to_string()
     }
+}
+
+/// A resource name as a module name: `layers[0]` (an element of a sampler
+/// array) -> `layers_0`.
+fn module_ident(name: &str) -> String {
+    let mut s: String = name.chars().map(|c| if c.is_ascii_alphanumeric() || c == '_' { c } else { '_' }).collect();
+    while s.ends_with('_') && s.len() > 1 {
+        s.pop();
+    }
+    ident(&s)
 }
 
 /// `u_light_vp` -> `ULightVp`, `Light` -> `Light`, `float3` -> `Float3`.
@@ -152,7 +164,7 @@ fn camel(name: &str) -> String {
         }
     }
     if s.is_empty() || s.starts_with(|c: char| c.is_ascii_digit()) {
-        s.insert_str(0, "T");
+        s.insert(0, 'T');
     }
     if s == "Self" {
         s.push('_');
@@ -471,6 +483,18 @@ impl<'a> Gen<'a> {
         for ep in &r.entry_points {
             add(ident(&ep.name), format!("entry point `{}`", ep.name))?;
         }
+        let mut uniforms = BTreeMap::new();
+        for b in &r.uniform_blocks {
+            if let Some(prev) = uniforms.insert(module_ident(&b.name), &b.name) {
+                return Err(format!("uniforms `{prev}` and `{}` both become `uniforms::{}`; rename one", b.name, module_ident(&b.name)));
+            }
+        }
+        let mut samplers = BTreeMap::new();
+        for s in &r.samplers {
+            if let Some(prev) = samplers.insert(module_ident(&s.name), &s.name) {
+                return Err(format!("samplers `{prev}` and `{}` both become `samplers::{}`; rename one", s.name, module_ident(&s.name)));
+            }
+        }
         Ok(())
     }
 }
@@ -491,12 +515,12 @@ fn visibility(r: &Reflection, used: impl Fn(&crate::emit::reflect_types::EntryPo
 fn layout_entries(r: &Reflection) -> BTreeMap<u32, Vec<(u32, String)>> {
     let mut groups: BTreeMap<u32, Vec<(u32, String)>> = BTreeMap::new();
     for b in &r.uniform_blocks {
-        groups.entry(b.group).or_default().push((b.binding, format!("uniforms::{}::LAYOUT_ENTRY", ident(&b.name))));
+        groups.entry(b.group).or_default().push((b.binding, format!("uniforms::{}::LAYOUT_ENTRY", module_ident(&b.name))));
     }
     for s in &r.samplers {
         let e = groups.entry(s.group).or_default();
-        e.push((s.texture_binding, format!("samplers::{}::TEXTURE_LAYOUT_ENTRY", ident(&s.name))));
-        e.push((s.sampler_binding, format!("samplers::{}::SAMPLER_LAYOUT_ENTRY", ident(&s.name))));
+        e.push((s.texture_binding, format!("samplers::{}::TEXTURE_LAYOUT_ENTRY", module_ident(&s.name))));
+        e.push((s.sampler_binding, format!("samplers::{}::SAMPLER_LAYOUT_ENTRY", module_ident(&s.name))));
     }
     for v in groups.values_mut() {
         v.sort();
@@ -509,7 +533,7 @@ fn write_uniforms(w: &mut Writer, r: &Reflection, g: &Gen) {
     w.open("pub mod uniforms {");
     for b in &r.uniform_blocks {
         w.line(&format!("/// `var @uniform {} : {}`", b.name, b.ty));
-        w.open(&format!("pub mod {} {{", ident(&b.name)));
+        w.open(&format!("pub mod {} {{", module_ident(&b.name)));
         w.line("/// The host-side struct of this block.");
         w.line(&format!("pub type Block = super::super::{};", g.block_struct[&b.name]));
         w.line(&format!("pub const NAME: &str = {};", str_lit(&b.name)));
@@ -540,7 +564,7 @@ fn write_samplers(w: &mut Writer, r: &Reflection) {
     w.open("pub mod samplers {");
     for s in &r.samplers {
         w.line(&format!("/// `var @uniform {} : {}`", s.name, s.ty));
-        w.open(&format!("pub mod {} {{", ident(&s.name)));
+        w.open(&format!("pub mod {} {{", module_ident(&s.name)));
         w.line(&format!("pub const NAME: &str = {};", str_lit(&s.name)));
         w.line("/// The `uniform sampler*` name in GLSL: glUniform1i(location, TEXTURE_UNIT).");
         w.line(&format!("pub const GLSL_NAME: &str = {};", str_lit(&s.glsl_name)));
@@ -735,6 +759,7 @@ mod tests {
         assert_eq!(screaming("lightDir"), "LIGHT_DIR");
         assert_eq!(ident("type"), "r#type");
         assert_eq!(ident("self"), "self_");
+        assert_eq!(module_ident("layers[0]"), "layers_0");
         assert_eq!(str_lit("a\"#b"), "r##\"a\"#b\"##");
         assert_eq!(str_lit("plain"), "\"plain\"");
         assert_eq!(vertex_field_type("Float32x3").as_deref(), Some("[f32; 3]"));

@@ -2,13 +2,11 @@
 //!
 //! ```no_run
 //! // build.rs, with `[build-dependencies] umbrac = { version = "...", default-features = false }`
-//! fn main() {
-//!     umbrac::build::Build::new()
-//!         .file("shaders/scene.das")
-//!         .variant("shaders/scene.das", "scene_soft", &[("PCF_RADIUS", Some("2"))])
-//!         .include_dir("shaders/include")
-//!         .run();
-//! }
+//! umbrac::build::Build::new()
+//!     .file("shaders/scene.das")
+//!     .variant("shaders/scene.das", "scene_soft", &[("PCF_RADIUS", Some("2"))])
+//!     .include_dir("shaders/include")
+//!     .run();
 //! ```
 //!
 //! ```ignore

@@ -529,13 +529,8 @@ fn bindgen(args: &BindgenArgs) -> u8 {
             return EXIT_ERROR;
         }
     };
-    match args.out.as_deref() {
+    match args.out.as_deref().filter(|p| *p != Path::new("-")) {
         None => {
-            let mut out = std::io::stdout().lock();
-            let _ = out.write_all(text.as_bytes()).and_then(|_| out.flush());
-            0
-        }
-        Some(path) if path == Path::new("-") => {
             let mut out = std::io::stdout().lock();
             let _ = out.write_all(text.as_bytes()).and_then(|_| out.flush());
             0

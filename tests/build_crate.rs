@@ -122,6 +122,7 @@ fn main() {
 
 fn build_rs() -> String {
     let features = repo().join("shaders/features");
+    let programs = repo().join("shaders/programs");
     let shadow = repo().join("shaders/shadow.das");
     format!(
         r#"fn main() {{
@@ -133,6 +134,7 @@ fn build_rs() -> String {
         .file("shaders/layout.das")
         .file({shadow:?})
         .dir({features:?})
+        .dir({programs:?})
         .bytemuck(false)
         .run();
 }}

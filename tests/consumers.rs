@@ -207,7 +207,7 @@ fn es_sampler_precision_matters_in_webgl2() {
         Some(&reference::render_frame(&p).outside_shadow_map),
     );
     assert!(stats.fraction_over <= REF_MAX_FRACTION, "{stats}");
-    let err = tools.render(&gles_set().map_sources(without_any_sampler_precision), &p).err().expect("no precision compiled in WebGL2");
+    let err = tools.render(&gles_set().map_sources(without_any_sampler_precision), &p).expect_err("no precision compiled in WebGL2");
     eprintln!("webgl2: {err}");
     assert!(err.contains("main_fs") && err.contains("does not compile"), "{err}");
     assert!(err.to_lowercase().contains("precision"), "{err}");

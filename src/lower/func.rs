@@ -820,7 +820,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
                     coordinate: *coordinate,
                     array_index: *array_index,
                     offset: None,
-                    level: level.clone(),
+                    level: *level,
                     depth_ref: *depth_ref,
                     clamp_to_edge: false,
                 };

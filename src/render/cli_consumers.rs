@@ -2,9 +2,8 @@
 
 use std::path::Path;
 
-use super::cli::{frame_times, write_frames, RenderArgs};
+use super::cli::RenderArgs;
 use super::consumers::{self, Consumer, Programs, Status};
-use super::glsl_set::GlslSet;
 use super::image_ops;
 use super::scene::FrameParams;
 use crate::Target;
@@ -38,8 +37,9 @@ fn compile(file: Option<&Path>, targets: Vec<Target>) -> Result<(String, crate::
 
 #[cfg(feature = "gl")]
 pub(super) fn render_gl(args: &RenderArgs, params: FrameParams) -> Result<(), String> {
-    use super::cli::BackendArg;
+    use super::cli::{frame_times, write_frames, BackendArg};
     use super::gl::{GlApi, GlRenderer};
+    use super::glsl_set::GlslSet;
     let api = if args.backend == BackendArg::Gl330 { GlApi::Gl330 } else { GlApi::Gles300 };
     if args.via != super::cli::ViaArg::Wgsl {
         return Err(format!("--via picks what wgpu gets; --backend {} runs the {} files", api.name(), api.target().name()));
