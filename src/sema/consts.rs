@@ -224,11 +224,25 @@ fn binary(op: BinaryOp, a: &ConstValue, ta: &Ty, b: &ConstValue, tb: &Ty) -> Res
         let (x, y) = (get(&sa, i), get(&sb, i));
         let v = match (x, y) {
             (ConstValue::Float(x), ConstValue::Float(y)) => match op {
-                Add => ConstValue::Float(x + y),
-                Sub => ConstValue::Float(x - y),
-                Mul => ConstValue::Float(x * y),
-                Div => ConstValue::Float(x / y),
-                Mod => ConstValue::Float(x - y * (x / y).floor()),
+                Add | Sub | Mul | Div | Mod => {
+                    if matches!(op, Div | Mod) && y == 0.0 {
+                        return Err("division by zero in constant".into());
+                    }
+                    // f32 arithmetic: operands are f32 values, and each
+                    // result is rounded to f32 before the next operation
+                    // (exact for + - * / computed in f64, then rounded once).
+                    let r = match op {
+                        Add => x + y,
+                        Sub => x - y,
+                        Mul => x * y,
+                        Div => x / y,
+                        _ => x - y * ((x / y) as f32 as f64).floor(),
+                    } as f32;
+                    if !r.is_finite() {
+                        return Err("floating-point overflow in constant: the result does not fit in `float`".into());
+                    }
+                    ConstValue::Float(r as f64)
+                }
                 Eq => ConstValue::Bool(x == y),
                 Ne => ConstValue::Bool(x != y),
                 Lt => ConstValue::Bool(x < y),
