@@ -157,8 +157,14 @@ fn literal_rounding_is_direct_not_through_f64() {
 }
 
 fn errors_of(body: &str) -> String {
+    errors_using(body, "K")
+}
+
+/// Compiles `body` with the vertex program using `expr` (only what entry
+/// points reach is compiled) and returns the diagnostics.
+fn errors_using(body: &str, expr: &str) -> String {
     let src = format!(
-        "var @uniform u_x : float4\nvar @out f_color : float4\n{body}\n[vertex_program]\ndef vs {{\n    gl_Position = u_x * K\n}}\n[fragment_program]\ndef fs {{\n    f_color = u_x\n}}\n"
+        "var @uniform u_x : float4\nvar @out f_color : float4\n{body}\n[vertex_program]\ndef vs {{\n    gl_Position = u_x * {expr}\n}}\n[fragment_program]\ndef fs {{\n    f_color = u_x\n}}\n"
     );
     let c = compile_source("fold.das", &src, &Options::default());
     assert!(c.has_errors(), "expected an error for `{body}`, but it compiled");
@@ -192,11 +198,11 @@ fn folding_division_by_zero_is_an_error() {
 
 #[test]
 fn constant_indices_out_of_range_are_errors() {
-    let e = errors_of("let K = 1.0\nlet V = float3(1.0, 2.0, 3.0)\ndef pick() : float {\n    return V[3]\n}");
+    let e = errors_using("let V = float3(1.0, 2.0, 3.0)\ndef pick() : float {\n    return V[3]\n}", "pick()");
     assert!(e.contains("out of bounds") || e.contains("out of range"), "{e}");
-    let e = errors_of("let K = 1.0\nlet I = 4\ndef pick(v : float4) : float {\n    return v[I]\n}");
+    let e = errors_using("let I = 4\ndef pick(v : float4) : float {\n    return v[I]\n}", "pick(u_x)");
     assert!(e.contains("out of bounds") || e.contains("out of range"), "{e}");
-    let e = errors_of("let K = 1.0\ndef pick(v : float4) : float {\n    return v[-1]\n}");
+    let e = errors_using("def pick(v : float4) : float {\n    return v[-1]\n}", "pick(u_x)");
     assert!(e.contains("out of bounds") || e.contains("out of range"), "{e}");
 }
 

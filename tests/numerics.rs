@@ -91,14 +91,18 @@ fn count(m: impl Iterator<Item = bool>) -> usize {
 
 /// Sun 3 degrees above the horizon. The floor's N.L is sin 3 = 0.052, just
 /// over the shader's 0.05 cut-off, so the sun adds only about 12/255 to the
-/// floor: the masks use a 4/255 threshold.
+/// floor: the masks use a 4/255 threshold. At the tutorial's height the
+/// cube's shadow would start 10 units away, off the floor; the cube is
+/// lowered into the floor (`cube_lift`) so that its shadow starts at the
+/// contact, where depth bias makes light leak under a caster.
 #[test]
 fn grazing_sun_has_bounded_acne_and_leaking() {
     let Some(r) = renderer() else { return };
     let elevation = 3f32.to_radians();
     let dir = Vec3::new(elevation.cos() * 0.8, elevation.sin(), elevation.cos() * 0.6);
-    for (name, mut setup, max_acne, max_leak) in [("tutorial", Setup::default(), 0.02, 0.35), ("tuned", Setup::tuned(), 0.01, 0.10)] {
+    for (name, mut setup, max_acne, max_leak) in [("tutorial", Setup::default(), 0.01, 0.10), ("tuned", Setup::tuned(), 0.01, 0.10)] {
         setup.light = Light::SunDir(dir);
+        setup.cube_lift = -0.9;
         let prog = program(r, &setup, 1024);
         let o = render(r, &prog, params(2.0, setup), 4.0);
         let n = o.gpu_shadow.len();
@@ -186,7 +190,7 @@ fn large_world_renders_the_same_picture() {
 
 fn spot_setup(depth: DepthFormat) -> Setup {
     let mut s = Setup {
-        light: Light::Spot { pos: Vec3::new(1.2, 2.4, 1.0), target: Vec3::new(0.0, 1.0, 0.0), fov_deg: 70.0, near: 0.1, far: 20.0 },
+        light: Light::Spot { pos: Vec3::new(-1.2, 2.4, -1.0), target: Vec3::new(0.0, 1.0, 0.0), fov_deg: 70.0, near: 0.1, far: 20.0 },
         ..Setup::default()
     };
     s.shadow.depth = depth;
@@ -254,7 +258,7 @@ fn spot_light_behind_fragments_get_no_false_shadows() {
             "spot light, {}: {behind_n} floor pixels behind the light, {false_behind} of them shadowed; false shadows {false_all}, missed {missed} of {shadow_n}; vs reference {vs}",
             depth.name()
         );
-        assert!(behind_n > 500, "the view should show floor behind the light");
+        assert!(behind_n > 150, "the view should show floor behind the light");
         assert_eq!(false_behind, 0, "{}: false shadows behind the light", depth.name());
         assert!(shadow_n > 50, "the spot light should cast a visible shadow");
         assert!(false_all as f64 <= 0.05 * shadow_n as f64, "{}: {false_all} false shadow pixels", depth.name());

@@ -223,7 +223,7 @@ impl Frame {
         let t = params.time;
         let w = setup.world;
         let world = w.matrix();
-        let cube_model = world * cube_model(t);
+        let cube_model = world * Mat4::from_translation(Vec3::new(0.0, setup.cube_lift, 0.0)) * cube_model(t);
         let floor_model = world;
         let cam_pos = w.point(camera_pos(t));
         let view = look_at_mat4(cam_pos, w.point(camera_target()), Vec3::Y);

@@ -179,11 +179,14 @@ pub struct Setup {
     /// Checker cells per world unit times 2 (`CHECKER_FREQ` of
     /// shaders/shadow.das; 0.5 gives 2-unit cells).
     pub checker_freq: f32,
+    /// Moves the cube up (or, negative, down into the floor: a caster that
+    /// touches its receiver, the case where peter-panning shows).
+    pub cube_lift: f32,
 }
 
 impl Default for Setup {
     fn default() -> Setup {
-        Setup { shadow: ShadowOptions::default(), light: Light::default(), world: World::default(), checker_freq: 0.5 }
+        Setup { shadow: ShadowOptions::default(), light: Light::default(), world: World::default(), checker_freq: 0.5, cube_lift: 0.0 }
     }
 }
 
