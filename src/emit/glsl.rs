@@ -18,7 +18,7 @@
 //! Writer flags are empty: the default (`ADJUST_COORDINATE_SPACE`) would flip
 //! y and rewrite z, but the DSL already is GL-convention code.
 
-use std::collections::{BTreeMap, BTreeSet, HashMap, HashSet};
+use std::collections::{BTreeMap, BTreeSet};
 use std::fmt::Write as _;
 
 use naga::back::glsl::{Options, PipelineOptions, Version, WriterFlags};
@@ -161,13 +161,13 @@ pub fn write_entry_from(em: &EntryModule, ep: &EntryInterface, profile: Profile)
     let mut names = EntryNames::default();
     // Every identifier of the text, found in one scan: the checks below are
     // set lookups, and the renames one pass (each used to rescan the text).
-    let raw_idents: HashSet<&str> = text::idents(&raw).map(|(a, b)| &raw[a..b]).collect();
+    let raw_idents: text::IdentSet = text::idents(&raw).map(|(a, b)| &raw[a..b]).collect();
 
     // Uniform blocks, in handle order so the result is deterministic.
     let mut uniforms: Vec<_> = info.uniforms.iter().collect();
     uniforms.sort_by_key(|(h, _)| h.index());
     let mut new_names = BTreeSet::new();
-    let mut renames: HashMap<&str, String> = HashMap::new();
+    let mut renames = text::Renames::default();
     for (handle, naga_block) in uniforms {
         let instance = block_instance(&raw, naga_block).ok_or_else(|| bug(format!("cannot find uniform block `{naga_block}`")))?;
         let new = format!("{}_block", instance.trim_end_matches('_'));
@@ -279,7 +279,7 @@ fn block_instance<'a>(src: &'a str, block: &str) -> Option<&'a str> {
 /// uses, right after naga's `precision highp int;`.
 #[cfg(test)]
 fn add_es_precision(src: &str) -> Option<String> {
-    let used: HashSet<&str> = text::idents(src).map(|(a, b)| &src[a..b]).collect();
+    let used: text::IdentSet = text::idents(src).map(|(a, b)| &src[a..b]).collect();
     add_es_precision_with(src, |ty| used.contains(ty))
 }
 

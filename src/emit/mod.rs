@@ -146,6 +146,30 @@ pub(crate) fn guard<T>(what: &str, f: impl FnOnce() -> Result<T, String>) -> Res
 
 /// Identifier-level text helpers for post-processing generated code.
 pub(crate) mod text {
+    use std::collections::{HashMap, HashSet};
+    use std::hash::{BuildHasherDefault, Hasher};
+
+    /// FNV-1a: identifiers are short, and SipHash's setup cost dominated
+    /// the identifier sets of the GLSL fix-ups.
+    #[derive(Default)]
+    pub struct Fnv(u64);
+
+    impl Hasher for Fnv {
+        fn finish(&self) -> u64 {
+            self.0
+        }
+        fn write(&mut self, bytes: &[u8]) {
+            let mut h = if self.0 == 0 { 0xcbf2_9ce4_8422_2325 } else { self.0 };
+            for &b in bytes {
+                h = (h ^ b as u64).wrapping_mul(0x0100_0000_01b3);
+            }
+            self.0 = h;
+        }
+    }
+
+    pub type IdentSet<'a> = HashSet<&'a str, BuildHasherDefault<Fnv>>;
+    pub type Renames<'a> = HashMap<&'a str, String, BuildHasherDefault<Fnv>>;
+
     fn is_ident_char(c: u8) -> bool {
         c.is_ascii_alphanumeric() || c == b'_'
     }
@@ -180,7 +204,7 @@ pub(crate) mod text {
 
     /// Replaces every whole identifier that is a key of `renames` with its
     /// value, in one pass.
-    pub fn replace_idents(s: &str, renames: &std::collections::HashMap<&str, String>) -> String {
+    pub fn replace_idents(s: &str, renames: &Renames<'_>) -> String {
         if renames.is_empty() {
             return s.to_string();
         }
