@@ -8,29 +8,34 @@
 //!   per entry point, WGSL, SPIR-V, reflection);
 //! - `stages`: each stage of umbrac alone, to see where the time goes.
 //!
+//! Times are the benchmark thread's CPU time (the cores are shared with
+//! other jobs; wall time would count their turns too).
+//!
 //! docs/performance.md has the results and the ratios.
 
 #[path = "support/mod.rs"]
 mod support;
 
 use criterion::{criterion_group, criterion_main, Criterion};
+
+type C = Criterion<CpuTime>;
 use std::hint::black_box;
 use support::*;
 
-fn front_end(c: &mut Criterion) {
+fn front_end(c: &mut C) {
     let mut g = c.benchmark_group("front_end");
     g.bench_function("umbrac_das_to_validated_modules", |b| b.iter(|| umbrac_front_end(black_box(SHADOW_DAS))));
     g.bench_function("naga_wgsl_parse_validate", |b| b.iter(|| naga_front_end(black_box(SHADOW_WGSL))));
     g.finish();
 }
 
-fn all_targets(c: &mut Criterion) {
+fn all_targets(c: &mut C) {
     let mut g = c.benchmark_group("all_targets");
     g.bench_function("umbrac_shadow_all_outputs", |b| b.iter(|| umbrac_all_targets(black_box(SHADOW_DAS))));
     g.finish();
 }
 
-fn stages(c: &mut Criterion) {
+fn stages(c: &mut C) {
     let mut g = c.benchmark_group("stages");
     g.bench_function("syntax", |b| {
         b.iter(|| {
@@ -61,7 +66,8 @@ fn stages(c: &mut Criterion) {
 
 criterion_group! {
     name = benches;
-    config = Criterion::default()
+    // Thread CPU time, not wall time: the machine's cores are shared.
+    config = Criterion::default().with_measurement(CpuTime)
         .warm_up_time(std::time::Duration::from_millis(500))
         .measurement_time(std::time::Duration::from_secs(3))
         .sample_size(50);

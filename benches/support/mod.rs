@@ -3,7 +3,7 @@
 
 #![allow(dead_code)]
 
-use std::time::{Duration, Instant};
+use std::time::Duration;
 
 /// The project's scene program.
 pub const SHADOW_DAS: &str = include_str!("../../shaders/shadow.das");
@@ -91,6 +91,43 @@ pub fn scaled_source(factor: usize) -> String {
     s
 }
 
+/// CPU time of the calling thread (CLOCK_THREAD_CPUTIME_ID): what the work
+/// costs, without the time the scheduler gave the core to other processes.
+pub fn thread_cpu() -> Duration {
+    let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
+    // SAFETY: a valid pointer to a timespec; the clock id is a constant.
+    unsafe { libc::clock_gettime(libc::CLOCK_THREAD_CPUTIME_ID, &mut ts) };
+    Duration::new(ts.tv_sec as u64, ts.tv_nsec as u32)
+}
+
+/// A criterion measurement of thread CPU time.
+pub struct CpuTime;
+
+static WALL: criterion::measurement::WallTime = criterion::measurement::WallTime;
+
+impl criterion::measurement::Measurement for CpuTime {
+    type Intermediate = Duration;
+    type Value = Duration;
+    fn start(&self) -> Duration {
+        thread_cpu()
+    }
+    fn end(&self, i: Duration) -> Duration {
+        thread_cpu().saturating_sub(i)
+    }
+    fn add(&self, a: &Duration, b: &Duration) -> Duration {
+        *a + *b
+    }
+    fn zero(&self) -> Duration {
+        Duration::ZERO
+    }
+    fn to_f64(&self, v: &Duration) -> f64 {
+        v.as_nanos() as f64
+    }
+    fn formatter(&self) -> &dyn criterion::measurement::ValueFormatter {
+        criterion::measurement::Measurement::formatter(&WALL)
+    }
+}
+
 /// Timing of repeated runs of one thing.
 #[derive(Clone, Debug)]
 pub struct Timing {
@@ -122,18 +159,18 @@ impl Timing {
 }
 
 /// Runs `f` `warmup` times, then `samples` timed times (each sample
-/// `inner` calls, averaged).
+/// `inner` calls, averaged); thread CPU time.
 pub fn time<T>(warmup: usize, samples: usize, inner: usize, mut f: impl FnMut() -> T) -> Timing {
     for _ in 0..warmup {
         std::hint::black_box(f());
     }
     let samples = (0..samples)
         .map(|_| {
-            let t = Instant::now();
+            let t = thread_cpu();
             for _ in 0..inner {
                 std::hint::black_box(f());
             }
-            t.elapsed() / inner.max(1) as u32
+            thread_cpu().saturating_sub(t) / inner.max(1) as u32
         })
         .collect();
     Timing { samples }
