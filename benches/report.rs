@@ -138,7 +138,7 @@ fn plot_scaling(fe: &[(f64, f64)], all: &[(f64, f64)], fe_line: (f64, f64), all_
         .x_label_area_size(40)
         .y_label_area_size(56)
         .build_cartesian_2d(0.0..xmax, 0.0..ymax)?;
-    chart.configure_mesh().x_desc("source size (KB)").y_desc("median time (ms)").draw()?;
+    chart.configure_mesh().x_desc("source size (KB)").y_desc("median thread CPU time (ms)").draw()?;
     for (pts, line, colour, name) in [(all, all_line, RED, "all 10 outputs + reflection"), (fe, fe_line, BLUE, "front end (2 validated modules)")] {
         chart.draw_series(pts.iter().map(|&p| Circle::new(p, 4, colour.filled())))?.label(name).legend(move |(x, y)| Circle::new((x + 10, y), 4, colour.filled()));
         chart.draw_series(LineSeries::new([(0.0, line.1), (xmax, line.1 + line.0 * xmax)], colour.mix(0.5)))?;
