@@ -10,8 +10,11 @@ out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 [ -x "$bin" ] || cargo build --release --bin umbrac
 echo "## hyperfine: $bin compile $input -o $out"
-hyperfine --warmup 5 --runs 40 -N --export-markdown "$out/hf.md" "$bin compile $input -o $out/o" >/dev/null
+hyperfine --warmup 5 --runs 40 -N --export-markdown "$out/hf.md" --export-json "$out/hf.json" "$bin compile $input -o $out/o" >/dev/null
 cat "$out/hf.md"
+# CPU time of the process itself (user + system), which the load on the
+# shared cores does not inflate the way it inflates wall time.
+python3 -c "import json,sys; r=json.load(open(sys.argv[1]))['results'][0]; print('user %.2f ms, system %.2f ms (means); wall min %.1f ms, median %.1f ms' % (r['user']*1e3, r['system']*1e3, r['min']*1e3, r['median']*1e3))" "$out/hf.json"
 echo
 echo "## callgrind: instructions"
 valgrind --tool=callgrind --callgrind-out-file="$out/cg.out" "$bin" compile "$input" -o "$out/o" 2>"$out/cg.log"
