@@ -12,6 +12,8 @@
 //! [`source::SourceMap`]. Nothing is written to disk here; see
 //! [`output`] for atomic writes.
 
+pub mod bindgen;
+pub mod build;
 pub mod diag;
 pub mod emit;
 pub mod golden;
@@ -160,7 +162,7 @@ pub fn compile_file(path: &Path, opts: &Options) -> Compilation {
     match syntax::read_source(path) {
         Ok(text) => {
             let root = sources.add(name, Some(path.to_path_buf()), text, None);
-            run(sources, root, opts)
+            on_compiler_stack(move || run(sources, root, opts))
         }
         Err(d) => Compilation { sources, diagnostics: vec![d], suppressed_errors: 0, result: None },
     }
@@ -171,7 +173,51 @@ pub fn compile_file(path: &Path, opts: &Options) -> Compilation {
 pub fn compile_source(name: &str, text: &str, opts: &Options) -> Compilation {
     let mut sources = SourceMap::new();
     let root = sources.add(name, Some(PathBuf::from(name)), text.to_string(), None);
-    run(sources, root, opts)
+    on_compiler_stack(move || run(sources, root, opts))
+}
+
+/// Stack size of the thread each compilation runs on.
+///
+/// The stages recurse over the program's nesting, which the limits in
+/// [`syntax`] and [`sema`] bound, and naga's backends recurse over
+/// expression trees with large frames (about 44 KiB per level in the GLSL
+/// writer). The deepest program the limits accept needs under 8 MiB even
+/// in debug builds; the caller's stack may be as small as 2 MiB (test
+/// threads), so every compilation gets its own.
+pub const COMPILER_STACK_SIZE: usize = 64 << 20;
+
+/// Runs `job` on a thread with [`COMPILER_STACK_SIZE`] bytes of stack (on
+/// the current thread if none can be started). A panic, which would be a
+/// bug in umbrac, becomes an internal compiler error.
+fn on_compiler_stack(job: impl FnOnce() -> Compilation + Send) -> Compilation {
+    let mut job = Some(job);
+    let ran = std::thread::scope(|s| {
+        let thread = std::thread::Builder::new().name("umbrac".into()).stack_size(COMPILER_STACK_SIZE);
+        match thread.spawn_scoped(s, || job.take().map(|j| j())) {
+            Ok(handle) => Some(handle.join()),
+            Err(_) => None,
+        }
+    });
+    let result = match ran {
+        Some(joined) => joined,
+        None => std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| job.take().map(|j| j()))),
+    };
+    match result {
+        Ok(Some(c)) => c,
+        Ok(None) => panicked("the compilation did not run"),
+        Err(payload) => {
+            let msg = payload
+                .downcast_ref::<&str>()
+                .map(|s| s.to_string())
+                .or_else(|| payload.downcast_ref::<String>().cloned())
+                .unwrap_or_else(|| "unknown panic".into());
+            panicked(&format!("the compiler panicked: {msg}"))
+        }
+    }
+}
+
+fn panicked(msg: &str) -> Compilation {
+    Compilation { sources: SourceMap::new(), diagnostics: vec![Diagnostic::bug(msg, None)], suppressed_errors: 0, result: None }
 }
 
 /// The output stem of an input path: `shaders/shadow.das` -> `shadow`.

@@ -1,19 +1,23 @@
 //! The `umbrac` command line.
 //!
 //! ```text
-//! umbrac compile FILE... [--target glsl330|gles300|wgsl|spirv|all]... [-o DIR]
+//! umbrac compile FILE|DIR... [--target glsl330|gles300|wgsl|spirv|all]... [-o DIR]
 //!                [-D NAME[=VALUE]]... [-I DIR]... [--entry NAME]...
 //!                [--conventions portable|native] [--allow-outside-includes]
 //!                [--message-format human|json]
-//! umbrac check FILE...      (compile for every target, write nothing)
+//! umbrac compile --check FILE|DIR... [-o DIR]   (compare with DIR, write nothing)
+//! umbrac check FILE|DIR...  (compile for every target, write nothing)
 //! umbrac reflect FILE       (print the reflection manifest)
+//! umbrac bindgen FILE [-o bindings.rs] [--module NAME] [--no-bytemuck]
 //! umbrac render ...         (feature `render`)
 //! ```
 //!
 //! Exit status: 0 success, 1 compile error (or outputs that cannot be
 //! written), 2 bad usage, 3 internal compiler error.
 //!
-//! Several FILEs compile in parallel; each file's outputs are written
+//! A DIR stands for every `.das` file under it (recursively, skipping
+//! `include` and hidden directories), its outputs in the same relative
+//! subdirectory of `-o DIR`. Several FILEs compile in parallel; each file's outputs are written
 //! atomically and only if that file compiled without errors. `-o -` prints
 //! the single text output of a single FILE to stdout (the manifest is not
 //! printed; use `umbrac reflect` for it). Diagnostics go to stderr as
@@ -49,6 +53,8 @@ enum Command {
     Check(CheckArgs),
     /// Print the reflection manifest of a shader file.
     Reflect(ReflectArgs),
+    /// Write the Rust bindings module of a shader file (what umbrac::build generates).
+    Bindgen(BindgenArgs),
     /// Render the shadow scene from compiled shaders.
     #[cfg(feature = "render")]
     Render(umbrac::render::cli::RenderArgs),
@@ -56,8 +62,10 @@ enum Command {
 
 #[derive(Args, Debug)]
 struct CompileArgs {
-    /// Input files.
-    #[arg(required = true, value_name = "FILE")]
+    /// Input files, or directories: every `.das` file under a directory
+    /// (recursively, skipping directories named `include` and hidden ones),
+    /// with outputs in the same relative subdirectory of the output directory.
+    #[arg(required = true, value_name = "FILE|DIR")]
     files: Vec<PathBuf>,
     /// Targets to emit (repeatable); default: all.
     #[arg(long = "target", value_enum, value_name = "TARGET")]
@@ -65,13 +73,18 @@ struct CompileArgs {
     /// Output directory (created if missing), or `-` for stdout; default: the current directory.
     #[arg(short = 'o', value_name = "DIR")]
     out: Option<PathBuf>,
+    /// Compare with the files already in the output directory instead of
+    /// writing: print a unified diff per difference, exit 1 if any.
+    #[arg(long)]
+    check: bool,
     #[command(flatten)]
     common: CommonArgs,
 }
 
 #[derive(Args, Debug)]
 struct CheckArgs {
-    #[arg(required = true, value_name = "FILE")]
+    /// Input files or directories (as for `compile`).
+    #[arg(required = true, value_name = "FILE|DIR")]
     files: Vec<PathBuf>,
     #[command(flatten)]
     common: CommonArgs,
@@ -81,6 +94,23 @@ struct CheckArgs {
 struct ReflectArgs {
     #[arg(value_name = "FILE")]
     file: PathBuf,
+    #[command(flatten)]
+    common: CommonArgs,
+}
+
+#[derive(Args, Debug)]
+struct BindgenArgs {
+    #[arg(value_name = "FILE")]
+    file: PathBuf,
+    /// Output file; default: stdout.
+    #[arg(short = 'o', value_name = "FILE")]
+    out: Option<PathBuf>,
+    /// The module's name; default: the input's stem.
+    #[arg(long, value_name = "NAME")]
+    module: Option<String>,
+    /// Do not derive bytemuck::Pod/Zeroable.
+    #[arg(long)]
+    no_bytemuck: bool,
     #[command(flatten)]
     common: CommonArgs,
 }
@@ -170,6 +200,7 @@ fn main() -> ExitCode {
         Command::Compile(args) => compile(&args),
         Command::Check(args) => check(&args),
         Command::Reflect(args) => reflect(&args),
+        Command::Bindgen(args) => bindgen(&args),
         #[cfg(feature = "render")]
         Command::Render(args) => umbrac::render::cli::run(&args).clamp(0, 255) as u8,
     };
@@ -235,6 +266,45 @@ fn usage_error(msg: &str) -> u8 {
     EXIT_USAGE
 }
 
+/// The files to compile: each FILE as given, and every `.das` file under
+/// each DIR (sorted; directories named `include` hold shared includes and
+/// hidden directories are skipped), each with the subdirectory its outputs
+/// go to (relative to the output directory).
+fn expand_inputs(inputs: &[PathBuf]) -> Result<Vec<(PathBuf, PathBuf)>, String> {
+    let mut out = Vec::new();
+    for input in inputs {
+        if !input.is_dir() {
+            out.push((input.clone(), PathBuf::new()));
+            continue;
+        }
+        let mut found = Vec::new();
+        let mut dirs = vec![input.clone()];
+        while let Some(d) = dirs.pop() {
+            let entries = std::fs::read_dir(&d).map_err(|e| format!("cannot read directory `{}`: {e}", d.display()))?;
+            for e in entries {
+                let p = e.map_err(|e| format!("cannot read directory `{}`: {e}", d.display()))?.path();
+                let name = p.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+                if p.is_dir() {
+                    if name != "include" && !name.starts_with('.') {
+                        dirs.push(p);
+                    }
+                } else if p.extension().is_some_and(|x| x == "das") {
+                    found.push(p);
+                }
+            }
+        }
+        if found.is_empty() {
+            return Err(format!("no `.das` files under `{}`", input.display()));
+        }
+        found.sort();
+        for f in found {
+            let sub = f.parent().and_then(|p| p.strip_prefix(input).ok()).map(Path::to_path_buf).unwrap_or_default();
+            out.push((f, sub));
+        }
+    }
+    Ok(out)
+}
+
 /// Compiles every file, in parallel, each on a worker thread with a large
 /// stack. A panic in one compilation becomes an internal error for that file.
 fn compile_all(files: &[PathBuf], opts: &Options) -> Vec<Compilation> {
@@ -295,8 +365,19 @@ fn targets_of(args: &[TargetArg]) -> Vec<Target> {
 fn compile(args: &CompileArgs) -> u8 {
     let targets = targets_of(&args.targets);
     let to_stdout = args.out.as_deref() == Some(Path::new("-"));
+    if args.check && to_stdout {
+        return usage_error("`--check` compares with the files in a directory; give `-o DIR`");
+    }
+    let inputs = match expand_inputs(&args.files) {
+        Ok(i) => i,
+        Err(e) => return usage_error(&e),
+    };
+    if args.check {
+        return compile_check(args, targets, &inputs);
+    }
+    let files: Vec<PathBuf> = inputs.iter().map(|(f, _)| f.clone()).collect();
     if to_stdout {
-        if args.files.len() != 1 {
+        if files.len() != 1 {
             return usage_error("`-o -` prints one output to stdout; give exactly one FILE");
         }
         if targets.contains(&Target::Spirv) {
@@ -304,13 +385,13 @@ fn compile(args: &CompileArgs) -> u8 {
         }
     }
     let opts = args.common.options(targets);
-    let comps = compile_all(&args.files, &opts);
+    let comps = compile_all(&files, &opts);
 
     let mut reporter = Reporter::new(args.common.message_format);
     let mut code = 0;
     let dir = args.out.clone().unwrap_or_else(|| PathBuf::from("."));
-    let mut written: Vec<(String, &Path)> = Vec::new();
-    for (path, c) in args.files.iter().zip(&comps) {
+    let mut written: Vec<(PathBuf, &Path)> = Vec::new();
+    for ((path, sub), c) in inputs.iter().zip(&comps) {
         reporter.compilation(c);
         code = code.max(exit_code(c));
         let Some(result) = c.result.as_ref().filter(|_| !c.has_errors()) else { continue };
@@ -330,8 +411,10 @@ fn compile(args: &CompileArgs) -> u8 {
             continue;
         }
 
-        if let Some(a) = result.artifacts.iter().find(|a| written.iter().any(|(n, _)| n == &a.file_name)) {
-            let (_, other) = written.iter().find(|(n, _)| n == &a.file_name).expect("found above");
+        // `dir.join("")` would add a trailing separator.
+        let out_dir = if sub.as_os_str().is_empty() { dir.clone() } else { dir.join(sub) };
+        if let Some(a) = result.artifacts.iter().find(|a| written.iter().any(|(n, _)| *n == out_dir.join(&a.file_name))) {
+            let (_, other) = written.iter().find(|(n, _)| *n == out_dir.join(&a.file_name)).expect("found above");
             reporter.plain(&Diagnostic::error_nowhere(format!(
                 "`{}` is an output of both `{}` and `{}`; nothing was written for `{}` (compile them into different directories)",
                 a.file_name,
@@ -342,8 +425,8 @@ fn compile(args: &CompileArgs) -> u8 {
             code = code.max(EXIT_ERROR);
             continue;
         }
-        match umbrac::output::write_artifacts(&dir, &result.artifacts) {
-            Ok(()) => written.extend(result.artifacts.iter().map(|a| (a.file_name.clone(), path.as_path()))),
+        match umbrac::output::write_artifacts(&out_dir, &result.artifacts) {
+            Ok(()) => written.extend(result.artifacts.iter().map(|a| (out_dir.join(&a.file_name), path.as_path()))),
             Err(e) => {
                 reporter.plain(&Diagnostic::error_nowhere(format!("{e}; no output of `{}` was changed", path.display())));
                 code = code.max(EXIT_ERROR);
@@ -355,7 +438,11 @@ fn compile(args: &CompileArgs) -> u8 {
 
 fn check(args: &CheckArgs) -> u8 {
     let opts = args.common.options(Target::ALL.to_vec());
-    let comps = compile_all(&args.files, &opts);
+    let files: Vec<PathBuf> = match expand_inputs(&args.files) {
+        Ok(i) => i.into_iter().map(|(f, _)| f).collect(),
+        Err(e) => return usage_error(&e),
+    };
+    let comps = compile_all(&files, &opts);
     let mut reporter = Reporter::new(args.common.message_format);
     let mut code = 0;
     for c in &comps {
@@ -379,4 +466,86 @@ fn reflect(args: &ReflectArgs) -> u8 {
         }
     }
     code
+}
+
+/// `compile --check`: every difference between the outputs and the files in
+/// the directory, as unified diffs on stdout; nothing is written.
+fn compile_check(args: &CompileArgs, targets: Vec<Target>, inputs: &[(PathBuf, PathBuf)]) -> u8 {
+    let opts = args.common.options(targets);
+    let files: Vec<PathBuf> = inputs.iter().map(|(f, _)| f.clone()).collect();
+    let comps = compile_all(&files, &opts);
+    let mut reporter = Reporter::new(args.common.message_format);
+    let mut code = 0;
+    let dir = args.out.clone().unwrap_or_else(|| PathBuf::from("."));
+    // The outputs expected in each directory (a DIR input mirrors its
+    // subdirectories under -o, as `compile` writes them).
+    let mut expected: std::collections::BTreeMap<PathBuf, Vec<umbrac::Artifact>> = Default::default();
+    for ((_, sub), c) in inputs.iter().zip(&comps) {
+        reporter.compilation(c);
+        code = code.max(exit_code(c));
+        let out_dir = if sub.as_os_str().is_empty() { dir.clone() } else { dir.join(sub) };
+        let slot = expected.entry(out_dir).or_default();
+        if let Some(result) = c.result.as_ref().filter(|_| !c.has_errors()) {
+            slot.extend(result.artifacts.iter().cloned());
+        }
+    }
+    let mut diffs = Vec::new();
+    for (d, artifacts) in &expected {
+        match umbrac::golden::compare(artifacts, d) {
+            Ok(found) => diffs.extend(found),
+            Err(e) => {
+                reporter.plain(&Diagnostic::error_nowhere(format!("cannot read `{}`: {e}", d.display())));
+                return code.max(EXIT_ERROR);
+            }
+        }
+    }
+    // With a failed input its outputs are unknown, so none is called stale.
+    let diffs: Vec<_> = diffs.into_iter().filter(|d| code == 0 || !matches!(d, umbrac::golden::Difference::Stale { .. })).collect();
+    let mut out = std::io::stdout().lock();
+    for d in &diffs {
+        let _ = write!(out, "{d}");
+    }
+    let _ = out.flush();
+    if !diffs.is_empty() {
+        eprintln!("error: {} file(s) in `{}` differ from the compiler's output", diffs.len(), dir.display());
+        code = code.max(EXIT_ERROR);
+    }
+    code
+}
+
+fn bindgen(args: &BindgenArgs) -> u8 {
+    let opts = args.common.options(Target::ALL.to_vec());
+    let comps = compile_all(std::slice::from_ref(&args.file), &opts);
+    let c = &comps[0];
+    let mut reporter = Reporter::new(args.common.message_format);
+    reporter.compilation(c);
+    let code = exit_code(c);
+    let Some(result) = c.result.as_ref().filter(|_| code == 0) else { return code };
+    let bopts = umbrac::bindgen::BindgenOptions { module_name: args.module.clone(), bytemuck: !args.no_bytemuck, sources: true };
+    let text = match umbrac::bindgen::generate(result, &bopts) {
+        Ok(t) => t,
+        Err(e) => {
+            reporter.plain(&Diagnostic::error_nowhere(e));
+            return EXIT_ERROR;
+        }
+    };
+    match args.out.as_deref().filter(|p| *p != Path::new("-")) {
+        None => {
+            let mut out = std::io::stdout().lock();
+            let _ = out.write_all(text.as_bytes()).and_then(|_| out.flush());
+            0
+        }
+        Some(path) => {
+            let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+            let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+            let a = umbrac::Artifact { file_name: name, target: None, entry: None, contents: text.into_bytes() };
+            match umbrac::output::write_artifacts(dir, &[a]) {
+                Ok(()) => 0,
+                Err(e) => {
+                    reporter.plain(&Diagnostic::error_nowhere(e.to_string()));
+                    EXIT_ERROR
+                }
+            }
+        }
+    }
 }

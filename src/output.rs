@@ -13,7 +13,10 @@
 //!    leaves the directory as it was.
 //!
 //! Each rename is atomic, so a reader (or a crash) never sees a half-written
-//! file. Temporaries are removed on every error path.
+//! file. Temporaries are removed on every error path. They are named
+//! `.umbrac-PID-XXXXXX.tmp`: hidden, and never the name of an output. A
+//! process killed mid-write (SIGKILL, power loss) can leave one behind; the
+//! next write into the same directory removes those whose process is gone.
 
 use std::fmt;
 use std::io::Write;
@@ -63,6 +66,8 @@ pub fn write_artifacts(dir: &Path, artifacts: &[Artifact]) -> Result<(), OutputE
         Err(_) => std::fs::create_dir_all(dir).map_err(|e| err(dir, format!("cannot create the output directory: {e}")))?,
     }
 
+    remove_stale_temps(dir);
+
     // Previous contents of each destination, for rollback.
     let mut previous: Vec<Option<Vec<u8>>> = Vec::with_capacity(artifacts.len());
     for a in artifacts {
@@ -88,7 +93,14 @@ pub fn write_artifacts(dir: &Path, artifacts: &[Artifact]) -> Result<(), OutputE
     let mut done: Vec<usize> = Vec::new();
     for (i, temp) in temps.into_iter().enumerate() {
         let dest = dir.join(&artifacts[i].file_name);
-        if let Err(e) = temp.persist(&dest) {
+        #[cfg(test)]
+        let temp = match fault::rename_fails(i) {
+            Some(error) => Err(tempfile::PersistError { error, file: temp }),
+            None => Ok(temp),
+        };
+        #[cfg(not(test))]
+        let temp: Result<_, tempfile::PersistError> = Ok(temp);
+        if let Err(e) = temp.and_then(|t| t.persist(&dest)) {
             drop(e.file); // removes the temporary
             rollback(dir, artifacts, &previous, &done);
             return Err(err(&dest, e.error.to_string()));
@@ -99,8 +111,12 @@ pub fn write_artifacts(dir: &Path, artifacts: &[Artifact]) -> Result<(), OutputE
     Ok(())
 }
 
+const TEMP_PREFIX: &str = ".umbrac-";
+const TEMP_SUFFIX: &str = ".tmp";
+
 fn write_temp(dir: &Path, contents: &[u8]) -> std::io::Result<tempfile::NamedTempFile> {
-    let mut temp = tempfile::Builder::new().prefix(".umbrac-").suffix(".tmp").tempfile_in(dir)?;
+    let prefix = format!("{TEMP_PREFIX}{}-", std::process::id());
+    let mut temp = tempfile::Builder::new().prefix(&prefix).suffix(TEMP_SUFFIX).tempfile_in(dir)?;
     temp.write_all(contents)?;
     // Temporaries are created 0600; outputs are ordinary readable files.
     #[cfg(unix)]
@@ -110,6 +126,32 @@ fn write_temp(dir: &Path, contents: &[u8]) -> std::io::Result<tempfile::NamedTem
     }
     temp.as_file().sync_all()?;
     Ok(temp)
+}
+
+/// Removes temporaries left in `dir` by umbrac processes that no longer
+/// run (killed mid-write). Best effort: errors are ignored.
+fn remove_stale_temps(dir: &Path) {
+    let Ok(entries) = std::fs::read_dir(dir) else { return };
+    for e in entries.flatten() {
+        let name = e.file_name();
+        let Some(name) = name.to_str() else { continue };
+        let Some(rest) = name.strip_prefix(TEMP_PREFIX).and_then(|r| r.strip_suffix(TEMP_SUFFIX)) else { continue };
+        let Some(pid) = rest.split('-').next().and_then(|p| p.parse::<u32>().ok()) else { continue };
+        if pid != std::process::id() && !process_alive(pid, &e) {
+            let _ = std::fs::remove_file(e.path());
+        }
+    }
+}
+
+/// Whether the process that made a temporary may still be writing it.
+fn process_alive(pid: u32, temp: &std::fs::DirEntry) -> bool {
+    let proc_root = Path::new("/proc/self");
+    if proc_root.exists() {
+        return Path::new("/proc").join(pid.to_string()).exists();
+    }
+    // No /proc: only temporaries older than an hour count as abandoned.
+    let age = temp.metadata().ok().and_then(|m| m.modified().ok()).and_then(|t| t.elapsed().ok());
+    age.is_none_or(|a| a < std::time::Duration::from_secs(3600))
 }
 
 /// Puts back what the destinations in `done` held before.
@@ -135,6 +177,22 @@ fn rollback(dir: &Path, artifacts: &[Artifact], previous: &[Option<Vec<u8>>], do
 fn sync_dir(dir: &Path) {
     if let Ok(d) = std::fs::File::open(dir) {
         let _ = d.sync_all();
+    }
+}
+
+/// Test-only fault injection: make the rename of the N-th artifact fail, to
+/// exercise the rollback that a real failure (a full disk, a destination
+/// made read-only under our feet) would take.
+#[cfg(test)]
+mod fault {
+    use std::cell::Cell;
+
+    thread_local! {
+        pub static FAIL_RENAME: Cell<Option<usize>> = const { Cell::new(None) };
+    }
+
+    pub fn rename_fails(i: usize) -> Option<std::io::Error> {
+        (FAIL_RENAME.with(Cell::get) == Some(i)).then(|| std::io::Error::other("injected rename failure"))
     }
 }
 
@@ -188,5 +246,48 @@ mod tests {
         std::fs::write(d.path().join("f"), "").unwrap();
         let e = write_artifacts(&d.path().join("f"), &[art("a", "1")]).unwrap_err();
         assert!(e.message.contains("not a directory"), "{e}");
+    }
+
+    #[test]
+    fn a_rename_failing_mid_write_restores_every_output() {
+        let d = tempfile::tempdir().unwrap();
+        let old = [art("a.vert", "old a"), art("b.frag", "old b"), art("c.wgsl", "old c")];
+        write_artifacts(d.path(), &old).unwrap();
+        let new = [art("a.vert", "new a"), art("b.frag", "new b"), art("c.wgsl", "new c"), art("d.json", "new d")];
+        for fail_at in 0..new.len() {
+            fault::FAIL_RENAME.with(|f| f.set(Some(fail_at)));
+            let e = write_artifacts(d.path(), &new).unwrap_err();
+            fault::FAIL_RENAME.with(|f| f.set(None));
+            assert!(e.to_string().contains(&new[fail_at].file_name) && e.message.contains("injected"), "{e}");
+            // Byte-identical old outputs, no new ones, no temporaries.
+            assert_eq!(listing(d.path()), ["a.vert", "b.frag", "c.wgsl"], "failing rename #{fail_at}");
+            for a in &old {
+                assert_eq!(std::fs::read(d.path().join(&a.file_name)).unwrap(), a.contents, "failing rename #{fail_at}");
+            }
+        }
+        write_artifacts(d.path(), &new).unwrap();
+        assert_eq!(std::fs::read_to_string(d.path().join("b.frag")).unwrap(), "new b");
+    }
+
+    #[test]
+    fn temporaries_are_hidden_and_stale_ones_are_removed() {
+        let d = tempfile::tempdir().unwrap();
+        // A process id that cannot be running (above Linux's pid_max).
+        let stale = d.path().join(".umbrac-4294967294-abcdef.tmp");
+        std::fs::write(&stale, "half").unwrap();
+        // One of ours that is in use, and a user's file that looks similar.
+        let live = d.path().join(format!(".umbrac-{}-zzzzzz.tmp", std::process::id()));
+        std::fs::write(&live, "busy").unwrap();
+        std::fs::write(d.path().join("umbrac-1-x.tmp"), "user").unwrap();
+        write_artifacts(d.path(), &[art("a.wgsl", "1")]).unwrap();
+        let l = listing(d.path());
+        if Path::new("/proc/self").exists() {
+            assert!(!l.contains(&".umbrac-4294967294-abcdef.tmp".to_string()), "{l:?}");
+        }
+        assert!(l.contains(&live.file_name().unwrap().to_string_lossy().into_owned()), "{l:?}");
+        assert!(l.contains(&"umbrac-1-x.tmp".to_string()) && l.contains(&"a.wgsl".to_string()), "{l:?}");
+        let t = write_temp(d.path(), b"x").unwrap();
+        let name = t.path().file_name().unwrap().to_string_lossy().into_owned();
+        assert!(name.starts_with(&format!(".umbrac-{}-", std::process::id())) && name.ends_with(".tmp"), "{name}");
     }
 }

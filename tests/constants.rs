@@ -175,13 +175,13 @@ fn errors_using(body: &str, expr: &str) -> String {
 #[test]
 fn folding_overflow_is_an_error() {
     let e = errors_of("let K = 3.0e38 * 10.0");
-    assert!(e.contains("overflow"), "{e}");
+    assert!(e.contains("overflow") || e.contains("infinite"), "{e}");
     let e = errors_of("let K = float(2147483647 + 1)");
     assert!(e.contains("overflow"), "{e}");
     let e = errors_of("let K = 1.0e39");
-    assert!(e.contains("does not fit"), "{e}");
+    assert!(e.contains("out of range"), "{e}");
     let e = errors_of("let K = -3.0e38 - 3.0e38");
-    assert!(e.contains("overflow"), "{e}");
+    assert!(e.contains("overflow") || e.contains("infinite"), "{e}");
 }
 
 #[test]

@@ -118,7 +118,7 @@ fn policies() -> BoundsCheckPolicies {
 
 /// Writes one entry point of `lowered.gl` and fixes up its names.
 pub fn write_entry(lowered: &Lowered, ep: &EntryInterface, profile: Profile) -> Result<(String, EntryNames), Diagnostic> {
-    write_entry_from(&EntryModule::new(lowered, ep)?, ep, profile)
+    write_entry_from(lowered, &EntryModule::new(lowered, ep)?, ep, profile)
 }
 
 /// The reduced, validated GL module of one entry point: made once and
@@ -138,7 +138,7 @@ impl EntryModule {
 }
 
 /// [`write_entry`] from an [`EntryModule`] made for `ep`.
-pub fn write_entry_from(em: &EntryModule, ep: &EntryInterface, profile: Profile) -> Result<(String, EntryNames), Diagnostic> {
+pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface, profile: Profile) -> Result<(String, EntryNames), Diagnostic> {
     let what = format!("the {} writer for entry point `{}`", profile.label(), ep.name);
     let (module, module_info, to_original) = (&em.module, &em.info, &em.to_original);
     let (raw, info) = guard(&what, || {
@@ -188,7 +188,19 @@ pub fn write_entry_from(em: &EntryModule, ep: &EntryInterface, profile: Profile)
         if !out_has(name) {
             return Err(bug(format!("sampler `{name}` reported by naga is not in the text")));
         }
-        names.samplers.insert(to_original(mapping.texture)?, name.clone());
+        let original = to_original(mapping.texture)?;
+        // naga's namer appends `_` to names ending in a digit (`layers_0`,
+        // an element of a sampler array, becomes `layers_0_`); give the
+        // sampler back its own name where nothing else uses it.
+        let source = lowered.gl.global_variables.iter().nth(original).and_then(|(_, g)| g.name.clone());
+        let mut final_name = name.clone();
+        if let Some(src) = source {
+            if *name == format!("{src}_") && src.ends_with(|c: char| c.is_ascii_digit()) && !text::contains_ident(&out, &src) {
+                out = text::replace_ident(&out, name, &src);
+                final_name = src;
+            }
+        }
+        names.samplers.insert(original, final_name);
     }
 
     // Attributes, varyings and colour outputs are named by location
@@ -220,6 +232,36 @@ pub fn write_entry_from(em: &EntryModule, ep: &EntryInterface, profile: Profile)
     Ok((out, names))
 }
 
+/// Constants read by any function or entry point, directly or through
+/// another constant's initialiser.
+fn used_constants(module: &naga::Module) -> std::collections::HashSet<naga::Handle<naga::Constant>> {
+    let mut used = std::collections::HashSet::new();
+    let mut work = Vec::new();
+    let functions = module.functions.iter().map(|(_, f)| f).chain(module.entry_points.iter().map(|e| &e.function));
+    for f in functions {
+        for (_, e) in f.expressions.iter() {
+            if let naga::Expression::Constant(c) = *e {
+                work.push(c);
+            }
+        }
+    }
+    while let Some(c) = work.pop() {
+        if !used.insert(c) {
+            continue;
+        }
+        let mut exprs = vec![module.constants[c].init];
+        while let Some(h) = exprs.pop() {
+            match &module.global_expressions[h] {
+                naga::Expression::Constant(c2) => work.push(*c2),
+                naga::Expression::Compose { components, .. } => exprs.extend(components.iter().copied()),
+                naga::Expression::Splat { value, .. } => exprs.push(*value),
+                _ => {}
+            }
+        }
+    }
+    used
+}
+
 type GlobalMap = Box<dyn Fn(naga::Handle<naga::GlobalVariable>) -> Result<usize, Diagnostic>>;
 
 /// A copy of `lowered.gl` holding only `ep` and what it reaches, validated
@@ -237,6 +279,19 @@ fn entry_module(lowered: &Lowered, ep: &EntryInterface) -> Result<(naga::Module,
             i - 1 == keep
         });
         naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
+        // Compaction keeps every named constant; drop the ones this entry
+        // point never reads by unnaming them and compacting once more.
+        let used = used_constants(&module);
+        let mut dropped = false;
+        for (h, c) in module.constants.iter_mut() {
+            if !used.contains(&h) {
+                c.name = None;
+                dropped = true;
+            }
+        }
+        if dropped {
+            naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
+        }
         let info = naga::valid::Validator::new(
             naga::valid::ValidationFlags::all() - naga::valid::ValidationFlags::BINDINGS,
             naga::back::glsl::supported_capabilities(),

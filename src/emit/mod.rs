@@ -48,7 +48,7 @@ pub fn emit(lowered: &Lowered, stem: &str, source_name: &str, targets: &[Target]
     let mut glsl_names: Vec<glsl::EntryNames> = Vec::new();
     for ep in &lowered.interface.entry_points {
         let entry_module = glsl::EntryModule::new(lowered, ep)?;
-        let (text, names) = glsl::write_entry_from(&entry_module, ep, glsl::Profile::Desktop330)?;
+        let (text, names) = glsl::write_entry_from(lowered, &entry_module, ep, glsl::Profile::Desktop330)?;
         if targets.contains(&Target::Glsl330) {
             artifacts.push(Artifact {
                 file_name: glsl::file_name(&ep.name, ep.stage, glsl::Profile::Desktop330),
@@ -58,7 +58,7 @@ pub fn emit(lowered: &Lowered, stem: &str, source_name: &str, targets: &[Target]
             });
         }
         if targets.contains(&Target::Gles300) {
-            let (text, es_names) = glsl::write_entry_from(&entry_module, ep, glsl::Profile::Es300)?;
+            let (text, es_names) = glsl::write_entry_from(lowered, &entry_module, ep, glsl::Profile::Es300)?;
             if es_names != names {
                 return Err(Diagnostic::bug(
                     format!("GLSL 330 and GLSL ES 3.00 outputs of entry point `{}` disagree on identifier names", ep.name),

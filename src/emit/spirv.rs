@@ -49,7 +49,14 @@ pub fn options(module: &naga::Module) -> Options<'static> {
 }
 
 pub fn write(lowered: &Lowered) -> Result<Vec<u32>, Diagnostic> {
-    let options = options(&lowered.gpu);
+    let mut options = options(&lowered.gpu);
+    // The DSL's gl_PointSize is dropped from the GPU module (WGSL has no
+    // point size); Vulkan still needs a PointSize output to draw point
+    // lists, so the vertex entry points write 1.0, matching WebGPU.
+    let points = lowered.interface.entry_points.iter().any(|e| e.builtins.iter().any(|b| b == "gl_PointSize"));
+    if points {
+        options.flags |= WriterFlags::FORCE_POINT_SIZE;
+    }
     guard("the SPIR-V writer", || {
         naga::back::spv::write_vec(&lowered.gpu, &lowered.gpu_info, &options, None).map_err(|e| e.to_string())
     })

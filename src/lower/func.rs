@@ -13,6 +13,14 @@ use crate::sema::builtins::Builtin;
 use crate::sema::{self, BuiltinVar, Expr, ExprKind, GlobalKind, IoKind, Scalar, Stmt, Ty};
 use crate::syntax::ast::{BinaryOp, UnaryOp};
 
+/// A texture call with its image left open (so one call on an array of
+/// samplers can be applied to each element).
+enum TexOp {
+    Sample { coordinate: Handle<E>, array_index: Option<Handle<E>>, depth_ref: Option<Handle<E>>, level: naga::SampleLevel },
+    Load { coordinate: Handle<E>, array_index: Option<Handle<E>>, level: Handle<E> },
+    Size { level: Handle<E> },
+}
+
 /// How a sema local lives in naga.
 #[derive(Clone, Copy)]
 enum LocalSlot {
@@ -50,6 +58,10 @@ pub struct FnBuilder<'m, 'p> {
     kind: FnKind,
     /// Emit ranges closed by `append_plain`, waiting for the next statement.
     pending: Vec<(Statement, naga::Span)>,
+    /// Implicit-LOD sampling samples level 0 (vertex entry points and the
+    /// helpers lowered for them): naga, WGSL and SPIR-V allow implicit LOD
+    /// only in fragment shaders.
+    pub vertex_lod: bool,
 }
 
 fn span(s: crate::source::Span) -> naga::Span {
@@ -59,7 +71,7 @@ fn span(s: crate::source::Span) -> naga::Span {
 impl<'m, 'p> FnBuilder<'m, 'p> {
     pub fn new(m: &'m mut ModuleBuilder<'p>, name: &str, sema_locals: &'p [sema::Local], kind: FnKind) -> Self {
         let func = naga::Function { name: Some(name.to_string()), ..Default::default() };
-        let mut b = FnBuilder { m, func, emitter: Default::default(), locals: vec![LocalSlot::Unset; sema_locals.len()], sema_locals, kind, pending: Vec::new() };
+        let mut b = FnBuilder { m, func, emitter: Default::default(), locals: vec![LocalSlot::Unset; sema_locals.len()], sema_locals, kind, pending: Vec::new(), vertex_lod: false };
         b.emitter.start(&b.func.expressions);
         b
     }
@@ -136,6 +148,23 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
             v = self.convert(v, &Ty::Scalar(Scalar::Uint), Scalar::Int, s);
         }
         self.push(block, Statement::Store { pointer: ptr, value: v }, s);
+    }
+
+    /// Stores float2(0.5) into the private copy of `gl_PointCoord` (targets
+    /// without point sprites: the centre of a one-pixel point).
+    pub fn store_point_coord_default(&mut self, block: &mut Block, global: Handle<naga::GlobalVariable>, s: crate::source::Span) {
+        let ptr = self.append_plain(E::GlobalVariable(global), s);
+        let half = self.literal(naga::Literal::F32(0.5), s);
+        let v = self.append(E::Splat { size: naga::VectorSize::Bi, value: half }, s);
+        self.push(block, Statement::Store { pointer: ptr, value: v }, s);
+    }
+
+    /// The function a call of helper `fid` reaches from here.
+    fn callee(&self, fid: usize) -> Handle<naga::Function> {
+        match self.m.vertex_functions.get(fid) {
+            Some(Some(h)) if self.vertex_lod => *h,
+            _ => self.m.functions[fid],
+        }
     }
 
     pub fn block(&mut self, stmts: &[Stmt]) -> Block {
@@ -218,7 +247,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
             Stmt::Expr(e) => {
                 if let ExprKind::Call(fid, args) = &e.kind {
                     let args: Vec<Handle<E>> = args.iter().map(|a| self.expr(a, block)).collect();
-                    let function = self.m.functions[*fid];
+                    let function = self.callee(*fid);
                     let result = (e.ty != Ty::Void).then(|| self.append_plain(E::CallResult(function), e.span));
                     self.push(block, Statement::Call { function, arguments: args, result }, e.span);
                 } else {
@@ -453,7 +482,25 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
             }
             ExprKind::Index(base, index) => {
                 let b = self.expr(base, block);
+                let constant = match index.kind {
+                    ExprKind::Int(k) if k >= 0 => Some(k as u32),
+                    ExprKind::Uint(k) => Some(k as u32),
+                    _ => None,
+                };
+                if let Some(k) = constant {
+                    return self.append(E::AccessIndex { base: b, index: k }, s);
+                }
                 let i = self.expr(index, block);
+                if matches!(base.ty, Ty::Matrix(..)) {
+                    // naga indexes a matrix value only by a constant: spill
+                    // it to a local and index through the pointer.
+                    let ty = self.m.ty(&base.ty);
+                    let var = self.func.local_variables.append(naga::LocalVariable { name: None, ty, init: None }, span(s));
+                    let ptr = self.append_plain(E::LocalVariable(var), s);
+                    self.push(block, Statement::Store { pointer: ptr, value: b }, s);
+                    let col = self.append(E::Access { base: ptr, index: i }, s);
+                    return self.append(E::Load { pointer: col }, s);
+                }
                 self.append(E::Access { base: b, index: i }, s)
             }
             ExprKind::Unary(op, x) => {
@@ -475,11 +522,28 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
                 let c = self.expr(cond, block);
                 let a = self.expr(accept, block);
                 let r = self.expr(reject, block);
+                // naga's GLSL writer turns a vector-condition select into
+                // `mix`, which GLSL 330 / ES 300 have only for floats: select
+                // the components of int, uint and bool vectors one by one.
+                if let (Flavor::Gl, Ty::Vector(_, n), Some(sc)) = (self.m.flavor, &cond.ty, e.ty.scalar()) {
+                    if sc != Scalar::Float {
+                        let parts: Vec<Handle<E>> = (0..*n as u32)
+                            .map(|i| {
+                                let ci = self.append(E::AccessIndex { base: c, index: i }, s);
+                                let ai = self.append(E::AccessIndex { base: a, index: i }, s);
+                                let ri = self.append(E::AccessIndex { base: r, index: i }, s);
+                                self.append(E::Select { condition: ci, accept: ai, reject: ri }, s)
+                            })
+                            .collect();
+                        let ty = self.m.ty(&e.ty);
+                        return self.append(E::Compose { ty, components: parts }, s);
+                    }
+                }
                 self.append(E::Select { condition: c, accept: a, reject: r }, s)
             }
             ExprKind::Call(fid, args) => {
                 let args: Vec<Handle<E>> = args.iter().map(|a| self.expr(a, block)).collect();
-                let function = self.m.functions[*fid];
+                let function = self.callee(*fid);
                 let result = self.append_plain(E::CallResult(function), s);
                 self.push(block, Statement::Call { function, arguments: args, result: Some(result) }, s);
                 result
@@ -521,6 +585,14 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
                     let q = self.append(E::Binary { op: Bo::Divide, left: l, right: r }, s);
                     let f = self.append(E::Math { fun: naga::MathFunction::Floor, arg: q, arg1: None, arg2: None, arg3: None }, s);
                     let m = self.append(E::Binary { op: Bo::Multiply, left: r, right: f }, s);
+                    return self.append(E::Binary { op: Bo::Subtract, left: l, right: m }, s);
+                }
+                if lt.scalar() == Some(Scalar::Int) && self.m.flavor == Flavor::Gl {
+                    // GLSL leaves `%` with a negative operand undefined; the
+                    // DSL's (and WGSL's) truncated remainder is
+                    // x - y * (x / y) with division rounding toward zero.
+                    let q = self.append(E::Binary { op: Bo::Divide, left: l, right: r }, s);
+                    let m = self.append(E::Binary { op: Bo::Multiply, left: r, right: q }, s);
                     return self.append(E::Binary { op: Bo::Subtract, left: l, right: m }, s);
                 }
                 Bo::Modulo
@@ -573,14 +645,14 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
 
     fn builtin(&mut self, b: Builtin, args: &[Expr], ret: &Ty, s: crate::source::Span, block: &mut Block) -> Handle<E> {
         use naga::MathFunction as Mf;
-        if matches!(b, Builtin::Texture | Builtin::TextureLod | Builtin::TextureCompare | Builtin::TextureProj | Builtin::TexelFetch | Builtin::TextureSize) {
+        if matches!(b, Builtin::Texture | Builtin::TextureLod | Builtin::TextureGrad | Builtin::TextureCompare | Builtin::TextureProj | Builtin::TexelFetch | Builtin::TextureSize) {
             return self.texture(b, args, ret, s, block);
         }
         let mut hs: Vec<Handle<E>> = args.iter().map(|a| self.expr(a, block)).collect();
         match b {
             Builtin::Math(fun) => {
                 // Scalars of a vector call are broadcast (min(v, 0.0), mix(a, b, t), step(0.5, v)).
-                if matches!(ret, Ty::Vector(..)) && !matches!(fun, Mf::Cross) {
+                if matches!(ret, Ty::Vector(..)) && !matches!(fun, Mf::Cross | Mf::Refract) {
                     for (h, a) in hs.iter_mut().zip(args) {
                         *h = self.splat_to(*h, &a.ty, ret, s);
                     }
@@ -610,31 +682,72 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
                 self.append(E::Binary { op: bo, left: hs[0], right: hs[1] }, s)
             }
             Builtin::Derivative(axis, ctrl) => self.append(E::Derivative { axis, ctrl, expr: hs[0] }, s),
+            Builtin::Bitcast(to) => self.append(E::As { expr: hs[0], kind: naga_scalar(to).kind, convert: None }, s),
             _ => unreachable!("texture builtins handled above"),
         }
     }
 
     fn texture(&mut self, b: Builtin, args: &[Expr], ret: &Ty, s: crate::source::Span, block: &mut Block) -> Handle<E> {
-        let ExprKind::Global(g) = args[0].kind else { unreachable!("sema checks the sampler argument") };
-        let GlobalSlot::Sampler { image, sampler } = self.m.globals[g] else { unreachable!("sema checks the sampler argument") };
-        let GlobalKind::Sampler { kind, .. } = self.m.p.globals[g].kind else { unreachable!("sema checks the sampler argument") };
-        let img = self.append_plain(E::GlobalVariable(image), args[0].span);
-        let rest: Vec<Handle<E>> = args[1..].iter().map(|a| self.expr(a, block)).collect();
-        let f32s = Ty::Scalar(Scalar::Float);
-        // Split an array coordinate into uv and a rounded integer layer.
-        let split_layer = |this: &mut Self, coord: Handle<E>| -> (Handle<E>, Option<Handle<E>>) {
-            if !kind.is_array() {
-                return (coord, None);
-            }
-            let uv = this.swizzle(coord, &[0, 1], s);
-            let layer = this.append(E::AccessIndex { base: coord, index: 2 }, s);
-            let layer = this.math(naga::MathFunction::Round, &[layer], s);
-            let layer = this.convert(layer, &f32s, Scalar::Int, s);
-            (uv, Some(layer))
+        let (g, index) = match &args[0].kind {
+            ExprKind::Global(g) => (*g, None),
+            ExprKind::Index(base, i) => match base.kind {
+                ExprKind::Global(g) => (g, Some(&**i)),
+                _ => unreachable!("sema checks the sampler argument"),
+            },
+            _ => unreachable!("sema checks the sampler argument"),
         };
+        let GlobalSlot::Sampler { first, count } = self.m.globals[g] else { unreachable!("sema checks the sampler argument") };
+        let GlobalKind::Sampler { kind, .. } = self.m.p.globals[g].kind else { unreachable!("sema checks the sampler argument") };
+        let rest: Vec<Handle<E>> = args[1..].iter().map(|a| self.expr(a, block)).collect();
+        let op = self.texture_op(b, kind, &rest, args, s);
+        let constant = match index.map(|i| &i.kind) {
+            None => Some(0),
+            Some(ExprKind::Int(k)) => Some((*k).max(0) as u32),
+            Some(ExprKind::Uint(k)) => Some(*k as u32),
+            Some(ExprKind::Const(c)) => match self.m.p.consts[*c].value {
+                sema::ConstValue::Int(k) => Some(k.max(0) as u32),
+                sema::ConstValue::Uint(k) => Some(k as u32),
+                _ => None,
+            },
+            _ => None,
+        };
+        if let Some(k) = constant {
+            let (image, sampler) = self.m.sampler_elems[first + k.min(count - 1) as usize];
+            return self.texture_apply(&op, kind, image, sampler, ret, s);
+        }
+        // A dynamic index into an array of samplers: a switch over the
+        // elements (each a separate global), the index clamped like every
+        // other array index.
+        let index = index.expect("a dynamic index");
+        let mut i = self.expr(index, block);
+        i = self.convert(i, &index.ty, Scalar::Int, s);
+        let lo = self.literal(naga::Literal::I32(0), s);
+        let hi = self.literal(naga::Literal::I32(count as i32 - 1), s);
+        let i = self.math(naga::MathFunction::Clamp, &[i, lo, hi], s);
+        let ty = self.m.ty(ret);
+        let var = self.func.local_variables.append(naga::LocalVariable { name: Some("texel".into()), ty, init: None }, span(s));
+        self.flush(block);
+        let mut cases = Vec::new();
+        for k in 0..count {
+            let mut body = Block::new();
+            let (image, sampler) = self.m.sampler_elems[first + k as usize];
+            let v = self.texture_apply(&op, kind, image, sampler, ret, s);
+            let ptr = self.append_plain(E::LocalVariable(var), s);
+            self.push(&mut body, Statement::Store { pointer: ptr, value: v }, s);
+            let value = if k + 1 == count { naga::SwitchValue::Default } else { naga::SwitchValue::I32(k as i32) };
+            cases.push(naga::SwitchCase { value, body, fall_through: false });
+        }
+        self.push(block, Statement::Switch { selector: i, cases }, s);
+        let ptr = self.append_plain(E::LocalVariable(var), s);
+        self.append(E::Load { pointer: ptr }, s)
+    }
+
+    /// The image-independent part of a texture call: coordinates, level,
+    /// reference depth.
+    fn texture_op(&mut self, b: Builtin, kind: crate::lower::SamplerKind, rest: &[Handle<E>], args: &[Expr], s: crate::source::Span) -> TexOp {
+        let f32s = Ty::Scalar(Scalar::Float);
         match b {
-            Builtin::Texture | Builtin::TextureLod | Builtin::TextureCompare | Builtin::TextureProj => {
-                let smp = self.append_plain(E::GlobalVariable(sampler), args[0].span);
+            Builtin::Texture | Builtin::TextureLod | Builtin::TextureCompare | Builtin::TextureProj | Builtin::TextureGrad => {
                 let (coordinate, array_index, depth_ref) = if b == Builtin::TextureProj {
                     let v = rest[0];
                     let n = args[1].ty.width().unwrap_or(4);
@@ -649,34 +762,75 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
                         None
                     };
                     (uv, None, dref)
+                } else if kind.is_array() {
+                    // Split an array coordinate into uv and a rounded integer layer.
+                    let coord = rest[0];
+                    let uv = self.swizzle(coord, &[0, 1], s);
+                    let layer = self.append(E::AccessIndex { base: coord, index: 2 }, s);
+                    let layer = self.math(naga::MathFunction::Round, &[layer], s);
+                    let layer = self.convert(layer, &f32s, Scalar::Int, s);
+                    (uv, Some(layer), (b == Builtin::TextureCompare).then(|| rest[1]))
                 } else {
-                    let (c, layer) = split_layer(self, rest[0]);
-                    let dref = (b == Builtin::TextureCompare).then(|| rest[1]);
-                    (c, layer, dref)
+                    (rest[0], None, (b == Builtin::TextureCompare).then(|| rest[1]))
                 };
                 let level = match b {
                     Builtin::TextureLod => naga::SampleLevel::Exact(rest[1]),
+                    Builtin::TextureGrad => naga::SampleLevel::Gradient { x: rest[1], y: rest[2] },
+                    // No implicit derivatives outside fragment shaders: the
+                    // base level, plus the bias if one is given.
+                    Builtin::Texture if rest.len() == 2 && self.vertex_lod => naga::SampleLevel::Exact(rest[1]),
                     Builtin::Texture if rest.len() == 2 => naga::SampleLevel::Bias(rest[1]),
+                    _ if self.vertex_lod => naga::SampleLevel::Zero,
                     _ => naga::SampleLevel::Auto,
                 };
-                self.append(
-                    E::ImageSample { image: img, sampler: smp, gather: None, coordinate, array_index, offset: None, level, depth_ref, clamp_to_edge: false },
-                    s,
-                )
+                TexOp::Sample { coordinate, array_index, depth_ref, level }
             }
             Builtin::TexelFetch => {
-                let (coordinate, array_index) = if kind.is_array() {
+                if kind.is_array() {
                     let c = rest[0];
                     let xy = self.swizzle(c, &[0, 1], s);
                     let layer = self.append(E::AccessIndex { base: c, index: 2 }, s);
-                    (xy, Some(layer))
+                    TexOp::Load { coordinate: xy, array_index: Some(layer), level: rest[1] }
                 } else {
-                    (rest[0], None)
-                };
-                self.append(E::ImageLoad { image: img, coordinate, array_index, sample: None, level: Some(rest[1]) }, s)
+                    TexOp::Load { coordinate: rest[0], array_index: None, level: rest[1] }
+                }
             }
-            Builtin::TextureSize => {
-                let size = self.append(E::ImageQuery { image: img, query: naga::ImageQuery::Size { level: Some(rest[0]) } }, s);
+            _ => TexOp::Size { level: rest[0] },
+        }
+    }
+
+    /// A texture operation on one image/sampler pair.
+    fn texture_apply(
+        &mut self,
+        op: &TexOp,
+        kind: crate::lower::SamplerKind,
+        image: Handle<naga::GlobalVariable>,
+        sampler: Handle<naga::GlobalVariable>,
+        ret: &Ty,
+        s: crate::source::Span,
+    ) -> Handle<E> {
+        let img = self.append_plain(E::GlobalVariable(image), s);
+        match op {
+            TexOp::Sample { coordinate, array_index, depth_ref, level } => {
+                let smp = self.append_plain(E::GlobalVariable(sampler), s);
+                let e = E::ImageSample {
+                    image: img,
+                    sampler: smp,
+                    gather: None,
+                    coordinate: *coordinate,
+                    array_index: *array_index,
+                    offset: None,
+                    level: *level,
+                    depth_ref: *depth_ref,
+                    clamp_to_edge: false,
+                };
+                self.append(e, s)
+            }
+            TexOp::Load { coordinate, array_index, level } => {
+                self.append(E::ImageLoad { image: img, coordinate: *coordinate, array_index: *array_index, sample: None, level: Some(*level) }, s)
+            }
+            TexOp::Size { level } => {
+                let size = self.append(E::ImageQuery { image: img, query: naga::ImageQuery::Size { level: Some(*level) } }, s);
                 let dims = if kind.dim() == naga::ImageDimension::D3 { 3 } else { 2 };
                 let size = self.convert(size, &Ty::Vector(Scalar::Uint, dims), Scalar::Int, s);
                 if kind.is_array() {
@@ -687,7 +841,6 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
                 }
                 size
             }
-            _ => unreachable!("only texture builtins"),
         }
     }
 

@@ -12,6 +12,8 @@
 //! Both modules have the same globals, types and entry points in the same
 //! order, so a handle or index from one is valid in the other.
 
+#[cfg(debug_assertions)]
+mod fault;
 mod func;
 mod module;
 
@@ -202,9 +204,17 @@ pub fn lower(program: &crate::sema::Program, conventions: Conventions) -> Result
     let (gl, _) = build(program, Flavor::Gl)?;
     let gl_info = module::validate(&gl, Flavor::Gl)?;
     let (gpu, mut interface) = build(program, Flavor::Gpu(conventions))?;
+    #[cfg(debug_assertions)]
+    let gpu = fault::inject(gpu);
     let gpu_info = module::validate(&gpu, Flavor::Gpu(conventions))?;
     interface.conventions = conventions;
     Ok(Lowered { gl, gl_info, gpu, gpu_info, interface })
+}
+
+/// Validates a module the way [`lower`] validates its own output: a failure
+/// is an internal compiler error at the span naga reports.
+pub fn validate(module: &naga::Module, flavor: Flavor) -> Result<naga::valid::ModuleInfo, Diagnostic> {
+    module::validate(module, flavor)
 }
 
 fn build(p: &sema::Program, flavor: Flavor) -> Result<(naga::Module, Interface), Diagnostic> {
@@ -212,19 +222,15 @@ fn build(p: &sema::Program, flavor: Flavor) -> Result<(naga::Module, Interface),
     m.allow_nonuniform_derivatives();
     m.declare_consts();
     m.declare_globals();
-    for f in &p.functions {
-        let mut b = FnBuilder::new(&mut m, &f.name, &f.locals, FnKind::Helper);
-        for i in 0..f.params {
-            b.add_param(i);
-        }
-        let mut body = b.block(&f.body);
-        let ret = (f.ret != Ty::Void).then(|| naga::FunctionResult { ty: b.m.ty(&f.ret), binding: None });
-        if ret.is_none() {
-            naga::proc::ensure_block_returns(&mut body);
-        }
-        let func = b.finish(body, ret);
-        let h = m.module.functions.append(func, f.span.into());
+    // Implicit-LOD sampling means level 0 in a vertex entry point; a helper
+    // that samples and is reached from both stages is lowered twice.
+    let (from_vertex, from_fragment) = reach_by_stage(p);
+    for (fid, f) in p.functions.iter().enumerate() {
+        let vertex_only = f.implicit_lod && from_vertex[fid] && !from_fragment[fid];
+        let h = lower_helper(&mut m, f, &f.name, vertex_only);
         m.functions.push(h);
+        let copy = (f.implicit_lod && from_vertex[fid] && from_fragment[fid]).then(|| lower_helper(&mut m, f, &format!("{}_vertex", f.name), true));
+        m.vertex_functions.push(copy);
     }
     let mut entries = Vec::new();
     for (index, ep) in p.entry_points.iter().enumerate() {
@@ -232,6 +238,40 @@ fn build(p: &sema::Program, flavor: Flavor) -> Result<(naga::Module, Interface),
     }
     let interface = Interface { conventions: Conventions::default(), resources: m.resources.clone(), entry_points: entries };
     Ok((m.module, interface))
+}
+
+/// Lowers one helper function; `vertex_lod`: implicit-LOD sampling at level 0.
+fn lower_helper<'p>(m: &mut ModuleBuilder<'p>, f: &'p sema::Function, name: &str, vertex_lod: bool) -> naga::Handle<naga::Function> {
+    let mut b = FnBuilder::new(m, name, &f.locals, FnKind::Helper);
+    b.vertex_lod = vertex_lod;
+    for i in 0..f.params {
+        b.add_param(i);
+    }
+    let mut body = b.block(&f.body);
+    let ret = (f.ret != Ty::Void).then(|| naga::FunctionResult { ty: b.m.ty(&f.ret), binding: None });
+    if ret.is_none() {
+        naga::proc::ensure_block_returns(&mut body);
+    }
+    let func = b.finish(body, ret);
+    m.module.functions.append(func, f.span.into())
+}
+
+/// Which helper functions a vertex (first) and a fragment (second) entry
+/// point reach.
+fn reach_by_stage(p: &sema::Program) -> (Vec<bool>, Vec<bool>) {
+    let n = p.functions.len();
+    let (mut vertex, mut fragment) = (vec![false; n], vec![false; n]);
+    for ep in &p.entry_points {
+        let seen = if ep.stage == naga::ShaderStage::Vertex { &mut vertex } else { &mut fragment };
+        let mut stack: Vec<usize> = ep.func.callees.iter().copied().collect();
+        while let Some(f) = stack.pop() {
+            if f < n && !seen[f] {
+                seen[f] = true;
+                stack.extend(p.functions[f].callees.iter().copied());
+            }
+        }
+    }
+    (vertex, fragment)
 }
 
 fn interpolation(ty: &Ty) -> (Option<naga::Interpolation>, Option<naga::Sampling>) {
@@ -256,17 +296,18 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
     if stage == Vertex {
         let pos_global = p.globals.iter().position(|g| matches!(g.kind, GlobalKind::Builtin(BuiltinVar::Position))).filter(|g| ep.func.uses.contains_key(g));
         let ty = m.ty(&BuiltinVar::Position.ty());
-        let global = pos_global.map(|g| match m.globals[g] {
-            GlobalSlot::Var(h) => h,
-            GlobalSlot::Sampler { image, .. } => image,
+        let global = pos_global.and_then(|g| match m.globals[g] {
+            GlobalSlot::Var(h) => Some(h),
+            GlobalSlot::Sampler { .. } => None,
         });
         outs.push((global, Some(BuiltinVar::Position), ty, naga::Binding::BuiltIn(naga::BuiltIn::Position { invariant: false }), "gl_Position".into()));
     }
     let mut seen_out: std::collections::HashMap<u32, Span> = std::collections::HashMap::new();
+    let mut point_coord_default: Vec<(sema::GlobalId, Span)> = Vec::new();
     for (&gid, &use_span) in &ep.func.uses {
         let g = &p.globals[gid];
-        if let Some(&r) = m.resource_of.get(&gid) {
-            iface.resources.push(r);
+        if let Some(rs) = m.resource_of.get(&gid) {
+            iface.resources.extend(rs.iter().copied());
             continue;
         }
         let GlobalSlot::Var(h) = m.globals[gid] else { continue };
@@ -287,6 +328,12 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
                     match b {
                         BuiltinVar::FragCoord => (naga::Binding::BuiltIn(naga::BuiltIn::Position { invariant: false }), ty, false),
                         BuiltinVar::FrontFacing => (naga::Binding::BuiltIn(naga::BuiltIn::FrontFacing), ty, false),
+                        // WebGPU has no point sprites (points are one pixel):
+                        // the centre of the point on WGSL/SPIR-V.
+                        BuiltinVar::PointCoord if m.flavor != Flavor::Gl => {
+                            point_coord_default.push((gid, g.span));
+                            continue;
+                        }
                         BuiltinVar::PointCoord => (naga::Binding::BuiltIn(naga::BuiltIn::PointCoord), ty, false),
                         BuiltinVar::VertexId => (naga::Binding::BuiltIn(naga::BuiltIn::VertexIndex), u32_ty, true),
                         BuiltinVar::InstanceId => (naga::Binding::BuiltIn(naga::BuiltIn::InstanceIndex), u32_ty, true),
@@ -301,7 +348,8 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
             match g.kind {
                 GlobalKind::Io { location: l, .. } => {
                     if let Some(prev) = seen_out.insert(l, g.span) {
-                        return Err(Diagnostic::error(format!("entry point `{}` writes two outputs at location {l}", ep.name), use_span)
+                        // sema reports this as a user error first.
+                        return Err(Diagnostic::bug(format!("entry point `{}` writes two outputs at location {l}", ep.name), Some(use_span))
                             .with_secondary(prev, "this output also uses it")
                             .with_note("`@out` and `@inout` variables written by one vertex entry point share the output locations"));
                     }
@@ -312,6 +360,10 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
                 }
                 GlobalKind::Builtin(b) => {
                     let bi = match b {
+                        // WGSL has no point size; SPIR-V is written with
+                        // naga's FORCE_POINT_SIZE (1.0) instead, so both
+                        // draw one-pixel points (docs/targets.md).
+                        BuiltinVar::PointSize if m.flavor != Flavor::Gl => continue,
                         BuiltinVar::PointSize => naga::BuiltIn::PointSize,
                         BuiltinVar::FragDepth => naga::BuiltIn::FragDepth,
                         _ => continue,
@@ -328,7 +380,12 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
     let members = outs.iter().map(|o| (o.0, o.1, o.2)).collect();
     let kind = FnKind::Entry(func::EntryOutputs { result_ty, members, stage });
     let mut b = FnBuilder::new(m, &ep.name, &ep.func.locals, kind);
+    b.vertex_lod = stage == Vertex;
     let mut body = naga::Block::new();
+    for (gid, s) in point_coord_default {
+        let GlobalSlot::Var(h) = b.m.globals[gid] else { continue };
+        b.store_point_coord_default(&mut body, h, s);
+    }
     for (i, (gid, binding, ty, to_int)) in args.iter().enumerate() {
         let g = &p.globals[*gid];
         b.func.arguments.push(naga::FunctionArgument { name: Some(format!("in_{}", g.name.trim_start_matches("gl_"))), ty: *ty, binding: Some(binding.clone()) });

@@ -15,8 +15,10 @@ use crate::source::Span;
 pub enum GlobalSlot {
     /// A uniform (Uniform space) or an interface/builtin copy (Private space).
     Var(Handle<naga::GlobalVariable>),
-    /// A sampler: the image and the sampler halves.
-    Sampler { image: Handle<naga::GlobalVariable>, sampler: Handle<naga::GlobalVariable> },
+    /// A sampler or an array of samplers: `count` elements from `first` in
+    /// `ModuleBuilder::sampler_elems`, each a separate image and sampler
+    /// global (naga's GLSL writer cannot write binding arrays).
+    Sampler { first: usize, count: u32 },
 }
 
 pub struct ModuleBuilder<'p> {
@@ -28,9 +30,15 @@ pub struct ModuleBuilder<'p> {
     pub globals: Vec<GlobalSlot>,
     pub consts: Vec<Handle<naga::Constant>>,
     pub functions: Vec<Handle<naga::Function>>,
+    /// The level-0 copy of a helper that samples with implicit LOD, where a
+    /// vertex entry point reaches it and a fragment one does too.
+    pub vertex_functions: Vec<Option<Handle<naga::Function>>>,
     pub resources: Vec<Resource>,
-    /// Index into `resources` per sema global, for resources.
-    pub resource_of: HashMap<sema::GlobalId, usize>,
+    /// Indices into `resources` per sema global, for resources (one per
+    /// element of a sampler array).
+    pub resource_of: HashMap<sema::GlobalId, Vec<usize>>,
+    /// (image, sampler) globals of every sampler element.
+    pub sampler_elems: Vec<(Handle<naga::GlobalVariable>, Handle<naga::GlobalVariable>)>,
 }
 
 pub fn naga_scalar(s: Scalar) -> naga::Scalar {
@@ -61,8 +69,10 @@ impl<'p> ModuleBuilder<'p> {
             globals: Vec::new(),
             consts: Vec::new(),
             functions: Vec::new(),
+            vertex_functions: Vec::new(),
             resources: Vec::new(),
             resource_of: HashMap::new(),
+            sampler_elems: Vec::new(),
         }
     }
 
@@ -179,7 +189,7 @@ impl<'p> ModuleBuilder<'p> {
                         span,
                     );
                     let dsl_type = show_ty(self.p, &g.ty);
-                    self.resource_of.insert(gid, self.resources.len());
+                    self.resource_of.insert(gid, vec![self.resources.len()]);
                     self.resources.push(Resource {
                         name: g.name.clone(),
                         span: g.span,
@@ -193,46 +203,57 @@ impl<'p> ModuleBuilder<'p> {
                     });
                     GlobalSlot::Var(h)
                 }
-                GlobalKind::Sampler { kind, texture_unit } => {
+                GlobalKind::Sampler { kind, texture_unit, count } => {
                     let image_ty = self.add_type(None, TypeInner::Image { dim: kind.dim(), arrayed: kind.is_array(), class: kind.image_class() });
                     let sampler_ty = self.add_type(None, TypeInner::Sampler { comparison: kind.is_shadow() });
-                    let (tb, sb) = (next_binding, next_binding + 1);
-                    next_binding += 2;
-                    let image = self.module.global_variables.append(
-                        naga::GlobalVariable {
-                            name: Some(g.name.clone()),
-                            space: naga::AddressSpace::Handle,
-                            binding: with_binding.then_some(naga::ResourceBinding { group: 0, binding: tb }),
-                            ty: image_ty,
-                            init: None,
-                            memory_decorations: naga::MemoryDecorations::empty(),
-                        },
-                        span,
-                    );
-                    let sampler = self.module.global_variables.append(
-                        naga::GlobalVariable {
-                            name: Some(format!("{}_sampler", g.name)),
-                            space: naga::AddressSpace::Handle,
-                            binding: with_binding.then_some(naga::ResourceBinding { group: 0, binding: sb }),
-                            ty: sampler_ty,
-                            init: None,
-                            memory_decorations: naga::MemoryDecorations::empty(),
-                        },
-                        span,
-                    );
-                    self.resource_of.insert(gid, self.resources.len());
-                    self.resources.push(Resource {
-                        name: g.name.clone(),
-                        span: g.span,
-                        kind: ResourceKind::Sampler(*kind),
-                        global: image,
-                        sampler_global: Some(sampler),
-                        group: 0,
-                        binding: tb,
-                        sampler_binding: Some(sb),
-                        texture_unit: Some(*texture_unit),
-                    });
-                    GlobalSlot::Sampler { image, sampler }
+                    let first = self.sampler_elems.len();
+                    let mut indices = Vec::new();
+                    for i in 0..count.unwrap_or(1) {
+                        // An array element `texs[i]` is the global `texs_i`.
+                        let (name, gname) = match count {
+                            Some(_) => (format!("{}[{i}]", g.name), format!("{}_{i}", g.name)),
+                            None => (g.name.clone(), g.name.clone()),
+                        };
+                        let (tb, sb) = (next_binding, next_binding + 1);
+                        next_binding += 2;
+                        let image = self.module.global_variables.append(
+                            naga::GlobalVariable {
+                                name: Some(gname.clone()),
+                                space: naga::AddressSpace::Handle,
+                                binding: with_binding.then_some(naga::ResourceBinding { group: 0, binding: tb }),
+                                ty: image_ty,
+                                init: None,
+                                memory_decorations: naga::MemoryDecorations::empty(),
+                            },
+                            span,
+                        );
+                        let sampler = self.module.global_variables.append(
+                            naga::GlobalVariable {
+                                name: Some(format!("{gname}_sampler")),
+                                space: naga::AddressSpace::Handle,
+                                binding: with_binding.then_some(naga::ResourceBinding { group: 0, binding: sb }),
+                                ty: sampler_ty,
+                                init: None,
+                                memory_decorations: naga::MemoryDecorations::empty(),
+                            },
+                            span,
+                        );
+                        indices.push(self.resources.len());
+                        self.sampler_elems.push((image, sampler));
+                        self.resources.push(Resource {
+                            name,
+                            span: g.span,
+                            kind: ResourceKind::Sampler(*kind),
+                            global: image,
+                            sampler_global: Some(sampler),
+                            group: 0,
+                            binding: tb,
+                            sampler_binding: Some(sb),
+                            texture_unit: Some(*texture_unit + i),
+                        });
+                    }
+                    self.resource_of.insert(gid, indices);
+                    GlobalSlot::Sampler { first, count: count.unwrap_or(1) }
                 }
                 GlobalKind::Io { .. } | GlobalKind::Builtin(_) => {
                     let ty = self.ty(&g.ty);

@@ -27,6 +27,10 @@ pub enum BackendArg {
     Vulkan,
     /// wgpu's OpenGL backend through EGL.
     Gl,
+    /// The GLSL 330 output on an OpenGL 3.3 core context (EGL surfaceless, no wgpu).
+    Gl330,
+    /// The GLSL ES 3.00 output on an OpenGL ES 3.0 context (EGL surfaceless, no wgpu).
+    Gles300,
 }
 
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, clap::ValueEnum)]
@@ -92,6 +96,11 @@ pub struct RenderArgs {
     /// Shadow technique: --quality, --filter, --fit, --depth-format, --casters-only.
     #[command(flatten)]
     pub setup: super::setup_cli::SetupArgs,
+    /// Render one frame on every available consumer (wgpu Vulkan via WGSL
+    /// and SPIR-V, wgpu GL, GL 3.3, GLES 3.0, WebGL2, the CPU reference),
+    /// print their pairwise differences and write OUT.CONSUMER.png for each.
+    #[arg(long, conflicts_with_all = ["reference", "compare", "frames"])]
+    pub compare_backends: bool,
 }
 
 fn parse_size(s: &str) -> Result<(u32, u32), String> {
@@ -202,12 +211,16 @@ fn execute(args: &RenderArgs) -> Result<(), String> {
         return write_frames(args, &frames, |p| Ok(reference::render(p)), params);
     }
 
-    let defines = params.setup.defines(params.shadow_size);
-    let set = load_program_with(args.file.as_deref(), args.reflection.as_deref(), via(args), defines)?;
+    if args.compare_backends {
+        return super::cli_consumers::compare_backends(args, params);
+    }
     let backend = match args.backend {
         BackendArg::Vulkan => Backend::Vulkan,
         BackendArg::Gl => Backend::Gl,
+        BackendArg::Gl330 | BackendArg::Gles300 => return super::cli_consumers::render_gl(args, params),
     };
+    let defines = params.setup.defines(params.shadow_size);
+    let set = load_program_with(args.file.as_deref(), args.reflection.as_deref(), via(args), defines)?;
     let renderer = Renderer::new(backend).map_err(|e| e.to_string())?;
     let program = renderer.prepare(&set).map_err(|e| e.to_string())?;
     eprintln!("rendering {} ({} via {}) on {}", set.label, set.via().name(), backend.name(), renderer.adapter_name());
@@ -215,14 +228,14 @@ fn execute(args: &RenderArgs) -> Result<(), String> {
     write_frames(args, &frames, |p| renderer.draw(&program, p).map_err(|e: RenderError| e.to_string()), params)
 }
 
-fn frame_times(args: &RenderArgs) -> Vec<f32> {
+pub(super) fn frame_times(args: &RenderArgs) -> Vec<f32> {
     match args.frames {
         None => vec![args.time],
         Some(n) => (0..n).map(|i| args.time + i as f32 / args.fps).collect(),
     }
 }
 
-fn write_frames(
+pub(super) fn write_frames(
     args: &RenderArgs,
     times: &[f32],
     mut render: impl FnMut(&FrameParams) -> Result<image::RgbaImage, String>,

@@ -20,6 +20,10 @@
 //! # Ok::<(), umbrac::render::RenderError>(())
 //! ```
 
+pub mod consumers;
+#[cfg(feature = "gl")]
+pub mod gl;
+pub mod glsl_set;
 pub mod gpu;
 pub mod hand;
 pub mod image_ops;
@@ -28,11 +32,13 @@ pub mod reference;
 pub mod scene;
 pub mod setup;
 mod setup_gpu;
+pub mod webgl;
 
 #[cfg(feature = "cli")]
 pub mod cli;
 #[cfg(feature = "cli")]
 pub mod setup_cli;
+mod cli_consumers;
 
 pub use gpu::{Backend, Program, RenderError, Renderer, ShaderCode, ShaderSet, Via};
 pub use scene::{FrameParams, View};

@@ -34,6 +34,10 @@ pub enum Builtin {
     /// `texture(s, uv)` / `texture(s, uv, bias)`.
     Texture,
     TextureLod,
+    /// `textureGrad(s, uv, dPdx, dPdy)`.
+    TextureGrad,
+    /// `floatBitsToInt` and friends: reinterpret the bits as this scalar.
+    Bitcast(Scalar),
     /// `textureCompare(s, uv, ref)`: depth compare on a shadow sampler.
     TextureCompare,
     /// `textureProj(s, uvq)`: uv / q, then `texture`; on a shadow sampler,
@@ -123,6 +127,10 @@ const TABLE: &[Entry] = &[
     Entry { name: "greaterThanEqual", builtin: Builtin::Compare(crate::syntax::ast::BinaryOp::Ge), sigs: sigs!["B" <- ["V", "V"]] },
     Entry { name: "equal", builtin: Builtin::Compare(crate::syntax::ast::BinaryOp::Eq), sigs: sigs!["B" <- ["V", "V"]] },
     Entry { name: "notEqual", builtin: Builtin::Compare(crate::syntax::ast::BinaryOp::Ne), sigs: sigs!["B" <- ["V", "V"]] },
+    Entry { name: "floatBitsToInt", builtin: Builtin::Bitcast(Scalar::Int), sigs: sigs!["GI" <- ["G"]] },
+    Entry { name: "floatBitsToUint", builtin: Builtin::Bitcast(Scalar::Uint), sigs: sigs!["GU" <- ["G"]] },
+    Entry { name: "intBitsToFloat", builtin: Builtin::Bitcast(Scalar::Float), sigs: sigs!["G" <- ["GI"]] },
+    Entry { name: "uintBitsToFloat", builtin: Builtin::Bitcast(Scalar::Float), sigs: sigs!["G" <- ["GU"]] },
     Entry {
         name: "dFdx",
         builtin: Builtin::Derivative(naga::DerivativeAxis::X, naga::DerivativeControl::None),
@@ -145,10 +153,21 @@ const TABLE: &[Entry] = &[
 pub const TEXTURE_FUNCTIONS: &[(&str, Builtin)] = &[
     ("texture", Builtin::Texture),
     ("textureLod", Builtin::TextureLod),
+    ("textureGrad", Builtin::TextureGrad),
     ("textureCompare", Builtin::TextureCompare),
     ("textureProj", Builtin::TextureProj),
     ("texelFetch", Builtin::TexelFetch),
     ("textureSize", Builtin::TextureSize),
+];
+
+/// Names of GLSL functions the DSL deliberately lacks, with the reason and
+/// what to do instead.
+pub const UNSUPPORTED: &[(&str, &str)] = &[
+    ("inverse", "WGSL has no matrix inverse; compute the inverse on the host and pass it as a uniform"),
+    ("isnan", "WGSL has no isnan, and GPU compilers may assume that values are never NaN"),
+    ("isinf", "WGSL has no isinf; compare against a large bound instead"),
+    ("textureOffset", "not supported yet; add the offset to the coordinate (offset / float2(textureSize(s, 0)))"),
+    ("textureGather", "not supported yet"),
 ];
 
 /// Every builtin function name, for "did you mean" suggestions.
@@ -207,6 +226,16 @@ fn match_one(pat: &str, ty: &Ty, bind: &mut Bind) -> bool {
             (Some(s), Some(w)) if s.is_numeric() => unify(&mut bind.n, (s, w)),
             _ => false,
         },
+        "GI" => match *ty {
+            Ty::Scalar(Scalar::Int) => unify(&mut bind.g, 1),
+            Ty::Vector(Scalar::Int, n) => unify(&mut bind.g, n),
+            _ => false,
+        },
+        "GU" => match *ty {
+            Ty::Scalar(Scalar::Uint) => unify(&mut bind.g, 1),
+            Ty::Vector(Scalar::Uint, n) => unify(&mut bind.g, n),
+            _ => false,
+        },
         "S" => match *ty {
             Ty::Scalar(s) if s.is_numeric() => bind.n.is_none_or(|(ns, _)| ns == s),
             _ => false,
@@ -245,6 +274,8 @@ fn match_sig(sig: &Sig, args: &[Ty]) -> Option<Ty> {
     }
     Some(match sig.ret {
         "G" => Ty::vec(Scalar::Float, bind.g?),
+        "GI" => Ty::vec(Scalar::Int, bind.g?),
+        "GU" => Ty::vec(Scalar::Uint, bind.g?),
         "N" => {
             let (s, w) = bind.n?;
             Ty::vec(s, w)
@@ -264,6 +295,8 @@ fn match_sig(sig: &Sig, args: &[Ty]) -> Option<Ty> {
 fn pattern_text(p: &str) -> &'static str {
     match p {
         "G" => "floatN",
+        "GI" => "intN",
+        "GU" => "uintN",
         "N" => "T",
         "S" => "scalar of T",
         "V" => "vecN",

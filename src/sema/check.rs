@@ -5,7 +5,7 @@
 //! checked on first use, so helper functions land in the output callees
 //! first, as naga requires, and recursion is found on the way.
 
-use std::collections::{BTreeMap, HashMap};
+use std::collections::{BTreeMap, HashMap, HashSet};
 
 use super::builtins::{self, Builtin};
 use super::consts::{eval_const, ConstEnv};
@@ -20,8 +20,16 @@ use crate::syntax::ast::{self, BinaryOp, UnaryOp};
 pub const MAX_ARRAY_LEN: u64 = 65_536;
 /// Highest `@location` accepted (exclusive).
 pub const MAX_LOCATIONS: u32 = 16;
-/// Nesting depth of expressions and blocks the checker follows.
+/// Nesting depth of expressions and blocks the checker follows. A call of a
+/// helper function that is checked on first use starts the callee at the
+/// caller's depth plus [`CALL_DEPTH`], so chains of calls count too.
 pub const MAX_DEPTH: usize = 256;
+/// Depth one level of calls adds (the checker recurses into the callee).
+pub const CALL_DEPTH: usize = 4;
+/// Longest chain of constants defined in terms of each other.
+pub const MAX_CONST_CHAIN: usize = 64;
+/// Deepest nesting of struct and array types (`S { t : T[2] }` is 2).
+pub const MAX_TYPE_DEPTH: usize = 32;
 
 pub fn check(program: &ast::Program, diags: &mut Diagnostics) -> Option<Program> {
     let mut c = Checker::new(program, diags);
@@ -32,6 +40,15 @@ pub fn check(program: &ast::Program, diags: &mut Diagnostics) -> Option<Program>
     } else {
         Some(c.out)
     }
+}
+
+/// Size and alignment of a type in a WGSL uniform block (natural layout) and
+/// under GLSL std140.
+struct UniformLayout {
+    size: u32,
+    align: u32,
+    std_size: u32,
+    std_align: u32,
 }
 
 enum FuncState {
@@ -53,6 +70,8 @@ struct FnCtx {
     loop_depth: usize,
     uses: BTreeMap<GlobalId, Span>,
     fragment_only: Option<(Span, &'static str)>,
+    implicit_lod: bool,
+    callees: std::collections::BTreeSet<FuncId>,
     depth: usize,
 }
 
@@ -65,10 +84,14 @@ struct Checker<'a, 'd> {
     consts: HashMap<String, ConstId>,
     const_decls: HashMap<String, &'a ast::ConstDecl>,
     const_in_progress: Vec<String>,
+    /// Constants already reported as wrong: their uses report nothing more.
+    failed_consts: HashSet<String>,
     funcs: HashMap<String, FuncState>,
     fn_decls: Vec<&'a ast::FunctionDecl>,
     entry_decls: Vec<(&'a ast::FunctionDecl, naga::ShaderStage)>,
     builtin_vars: HashMap<BuiltinVar, GlobalId>,
+    /// Depth at which the next helper function checked on first use starts.
+    call_depth: usize,
 }
 
 fn is_entry(f: &ast::FunctionDecl) -> Option<naga::ShaderStage> {
@@ -105,10 +128,12 @@ impl<'a, 'd> Checker<'a, 'd> {
             consts: HashMap::new(),
             const_decls: HashMap::new(),
             const_in_progress: Vec::new(),
+            failed_consts: HashSet::new(),
             funcs: HashMap::new(),
             fn_decls: Vec::new(),
             entry_decls: Vec::new(),
             builtin_vars: HashMap::new(),
+            call_depth: 0,
         }
     }
 
@@ -193,27 +218,88 @@ impl<'a, 'd> Checker<'a, 'd> {
         self.declare_globals(&mut seen);
     }
 
+    /// Finds structs that contain themselves and structs nested deeper than
+    /// [`MAX_TYPE_DEPTH`], reporting each and clearing its fields so later
+    /// passes (which recurse through types) stay finite and shallow.
     fn check_struct_recursion(&mut self) {
-        fn contains(structs: &[StructDef], ty: &Ty, target: StructId, depth: usize) -> bool {
-            if depth > structs.len() + 1 {
-                return true;
-            }
+        // Struct ids a type mentions, looking through arrays, with the array
+        // levels on the way.
+        fn edges(ty: &Ty, arrays: usize, out: &mut Vec<(StructId, usize)>) -> usize {
             match ty {
-                Ty::Struct(id) => *id == target || structs[*id].fields.iter().any(|(_, t, _)| contains(structs, t, target, depth + 1)),
-                Ty::Array(elem, _) => contains(structs, elem, target, depth + 1),
-                _ => false,
+                Ty::Struct(id) => {
+                    out.push((*id, arrays));
+                    0
+                }
+                Ty::Array(elem, _) => edges(elem, arrays + 1, out),
+                _ => arrays,
             }
         }
-        for id in 0..self.out.structs.len() {
-            let recursive = self.out.structs[id].fields.iter().any(|(_, t, _)| contains(&self.out.structs, t, id, 0));
-            if recursive {
-                let s = &self.out.structs[id];
-                let d = Diagnostic::error(format!("struct `{}` contains itself", s.name), s.span);
-                self.diags.push(d);
-                // Break the cycle so later passes terminate.
-                for f in &mut self.out.structs[id].fields {
-                    f.1 = Ty::Error;
+        #[derive(Clone, Copy, PartialEq)]
+        enum State {
+            New,
+            Open,
+            Done(usize),
+        }
+        let n = self.out.structs.len();
+        let mut state = vec![State::New; n];
+        let mut bad: Vec<(StructId, bool)> = Vec::new();
+        // Iterative depth-first search: (struct, index of the next field edge).
+        for root in 0..n {
+            if state[root] != State::New {
+                continue;
+            }
+            let mut stack: Vec<(StructId, Vec<(StructId, usize)>, usize, usize)> = Vec::new();
+            let push = |id: StructId, structs: &[StructDef], state: &mut [State]| {
+                let mut es = Vec::new();
+                let mut depth = 1;
+                for (_, t, _) in &structs[id].fields {
+                    depth = depth.max(1 + edges(t, 0, &mut es));
                 }
+                state[id] = State::Open;
+                (id, es, 0, depth)
+            };
+            stack.push(push(root, &self.out.structs, &mut state));
+            while let Some(top) = stack.last_mut() {
+                let (id, es, next, depth) = top;
+                if let Some(&(child, arrays)) = es.get(*next) {
+                    *next += 1;
+                    match state[child] {
+                        State::Done(d) => *depth = (*depth).max(1 + arrays + d),
+                        State::Open => {
+                            if !bad.iter().any(|(b, _)| *b == child) {
+                                bad.push((child, true));
+                            }
+                        }
+                        State::New => {
+                            let frame = push(child, &self.out.structs, &mut state);
+                            stack.push(frame);
+                        }
+                    }
+                    continue;
+                }
+                let (id, d) = (*id, *depth);
+                state[id] = State::Done(d);
+                stack.pop();
+                if d > MAX_TYPE_DEPTH && !bad.iter().any(|(b, _)| *b == id) {
+                    bad.push((id, false));
+                }
+                if let Some(parent) = stack.last_mut() {
+                    let arrays = parent.1[parent.2 - 1].1;
+                    parent.3 = parent.3.max(1 + arrays + d);
+                }
+            }
+        }
+        bad.sort();
+        for (id, cycle) in bad {
+            let s = &self.out.structs[id];
+            let d = if cycle {
+                Diagnostic::error(format!("struct `{}` contains itself", s.name), s.span)
+            } else {
+                Diagnostic::error(format!("struct `{}` nests struct and array types deeper than the limit of {MAX_TYPE_DEPTH}", s.name), s.span)
+            };
+            self.diags.push(d);
+            for f in &mut self.out.structs[id].fields {
+                f.1 = Ty::Error;
             }
         }
     }
@@ -222,7 +308,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         // Explicit locations / texture units first, per interface class, so
         // automatic ones fill the gaps.
         let mut taken: HashMap<&'static str, HashMap<u32, Span>> = HashMap::new();
-        let mut pending_auto: Vec<(GlobalId, &'static str)> = Vec::new();
+        let mut pending_auto: Vec<(GlobalId, &'static str, u32)> = Vec::new();
         for item in &self.ast.items {
             let ast::Item::Global(g) = item else { continue };
             self.check_unique(seen, &g.name);
@@ -277,30 +363,49 @@ impl<'a, 'd> Checker<'a, 'd> {
                 continue;
             };
             let kind = match (class, &ty) {
-                ("uniform", Ty::Sampler(kind)) => {
+                ("uniform", Ty::Sampler(_)) | ("uniform", Ty::Array(..)) if ty.is_sampler_like() => {
+                    let (kind, count) = match &ty {
+                        Ty::Array(elem, n) => match **elem {
+                            Ty::Sampler(k) => (k, Some(*n)),
+                            _ => (SamplerKind::Sampler2D, Some(*n)),
+                        },
+                        Ty::Sampler(k) => (*k, None),
+                        _ => (SamplerKind::Sampler2D, None),
+                    };
+                    let n = count.unwrap_or(1);
                     if let Some((_, span)) = location {
                         self.diags.push(Diagnostic::error("`@location` does not apply to samplers; use `@stage = N` for the texture unit", span));
                     }
                     let unit = match stage {
-                        Some((s, span)) if !(0..32).contains(&s) => {
-                            self.diags.push(Diagnostic::error(format!("texture unit {s} is out of range (0..=31)"), span));
+                        Some((s, span)) if !(0..32).contains(&s) || s + n as i64 > 32 => {
+                            let msg = if n > 1 {
+                                format!("texture units {s}..{} are out of range (0..=31)", s + n as i64 - 1)
+                            } else {
+                                format!("texture unit {s} is out of range (0..=31)")
+                            };
+                            self.diags.push(Diagnostic::error(msg, span));
                             0
                         }
                         Some((s, span)) => {
                             let map = taken.entry("stage").or_default();
-                            if let Some(prev) = map.get(&(s as u32)) {
-                                let d = Diagnostic::error(format!("texture unit {s} is used twice"), span).with_secondary(*prev, "first used here");
-                                self.diags.push(d);
+                            for u in s as u32..s as u32 + n {
+                                if let Some(prev) = map.get(&u) {
+                                    let d = Diagnostic::error(format!("texture unit {u} is used twice"), span).with_secondary(*prev, "first used here");
+                                    self.diags.push(d);
+                                    break;
+                                }
                             }
-                            map.insert(s as u32, span);
+                            for u in s as u32..s as u32 + n {
+                                map.insert(u, span);
+                            }
                             s as u32
                         }
                         None => {
-                            pending_auto.push((self.out.globals.len(), "stage"));
+                            pending_auto.push((self.out.globals.len(), "stage", n));
                             0
                         }
                     };
-                    GlobalKind::Sampler { kind: *kind, texture_unit: unit }
+                    GlobalKind::Sampler { kind, texture_unit: unit, count }
                 }
                 ("uniform", _) => {
                     if let Some((_, span)) = location.or(stage) {
@@ -349,7 +454,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                             l as u32
                         }
                         None => {
-                            pending_auto.push((self.out.globals.len(), key));
+                            pending_auto.push((self.out.globals.len(), key, 1));
                             0
                         }
                     };
@@ -361,15 +466,19 @@ impl<'a, 'd> Checker<'a, 'd> {
             self.out.globals.push(Global { name: g.name.name.clone(), ty, kind, span: g.name.span });
         }
         // Automatic locations and units: the lowest free number, in declaration order.
-        for (gid, key) in pending_auto {
+        for (gid, key, count) in pending_auto {
             let map = taken.entry(key).or_default();
             let limit = if key == "stage" { 32 } else { MAX_LOCATIONS };
-            let Some(n) = (0..limit).find(|n| !map.contains_key(n)) else {
+            let Some(n) = (0..limit.saturating_sub(count - 1)).find(|n| (*n..n + count).all(|u| !map.contains_key(&u))) else {
                 let span = self.out.globals[gid].span;
-                self.diags.push(Diagnostic::error(format!("no free {} left (at most {limit})", if key == "stage" { "texture unit" } else { "location" }), span));
+                let what = if key == "stage" { "texture unit" } else { "location" };
+                let msg = if count > 1 { format!("no {count} consecutive free {what}s left (at most {limit})") } else { format!("no free {what} left (at most {limit})") };
+                self.diags.push(Diagnostic::error(msg, span));
                 continue;
             };
-            map.insert(n, self.out.globals[gid].span);
+            for u in n..n + count {
+                map.insert(u, self.out.globals[gid].span);
+            }
             match &mut self.out.globals[gid].kind {
                 GlobalKind::Sampler { texture_unit, .. } => *texture_unit = n,
                 GlobalKind::Io { location, .. } => *location = n,
@@ -380,26 +489,84 @@ impl<'a, 'd> Checker<'a, 'd> {
 
     /// Why a type cannot be a uniform block, if it cannot.
     fn uniform_type_problem(&self, ty: &Ty) -> Option<String> {
+        self.uniform_layout(ty, "").err()
+    }
+
+    /// The layout of `ty` in a uniform block, checked to be the same under
+    /// GLSL's std140 rules and WGSL's uniform rules (naga writes WGSL
+    /// structs without `@align`/`@size`, so the natural WGSL layout is the
+    /// one every target must share).
+    fn uniform_layout(&self, ty: &Ty, path: &str) -> Result<UniformLayout, String> {
+        let round = |a: u32, x: u32| x.div_ceil(a) * a;
         match ty {
             Ty::Scalar(Scalar::Bool) | Ty::Vector(Scalar::Bool, _) => {
-                Some("`bool` cannot live in a uniform block (it has no portable layout); use `int` or `uint`".into())
+                Err("`bool` cannot live in a uniform block (it has no portable layout); use `int` or `uint`".into())
             }
-            Ty::Matrix(_, 2) => Some(format!(
+            Ty::Scalar(_) => Ok(UniformLayout { size: 4, align: 4, std_size: 4, std_align: 4 }),
+            Ty::Vector(_, n) => {
+                let align = if *n == 2 { 8 } else { 16 };
+                Ok(UniformLayout { size: 4 * *n as u32, align, std_size: 4 * *n as u32, std_align: align })
+            }
+            Ty::Matrix(_, 2) => Err(format!(
                 "`{}` has different layouts in GLSL std140 and WGSL uniform blocks; use a float4 per column or a wider matrix",
                 self.show(ty)
             )),
-            Ty::Array(elem, _) => {
+            Ty::Matrix(c, _) => Ok(UniformLayout { size: 16 * *c as u32, align: 16, std_size: 16 * *c as u32, std_align: 16 }),
+            Ty::Array(elem, n) => {
                 if matches!(**elem, Ty::Scalar(_) | Ty::Vector(_, 2) | Ty::Vector(_, 3)) {
-                    Some(format!(
-                        "arrays of `{}` in a uniform block have a 16-byte element stride on every target; use float4 elements",
+                    return Err(format!(
+                        "arrays of `{}` in a uniform block have a 16-byte element stride in GLSL std140, which WGSL cannot express; use float4 (or int4, uint4) elements and pack several values into each",
                         self.show(elem)
-                    ))
-                } else {
-                    self.uniform_type_problem(elem)
+                    ));
                 }
+                let e = self.uniform_layout(elem, &format!("{path}[]"))?;
+                let stride = round(e.align, e.size);
+                let std_stride = round(16, e.std_size);
+                if stride % 16 != 0 || stride != std_stride {
+                    return Err(format!(
+                        "elements of `{}` are {stride} bytes apart in WGSL but {std_stride} in GLSL std140; pad `{}` to a multiple of 16 bytes (e.g. with a float4 field)",
+                        self.show(ty),
+                        self.show(elem)
+                    ));
+                }
+                Ok(UniformLayout { size: stride * n, align: e.align, std_size: std_stride * n, std_align: 16 })
             }
-            Ty::Struct(id) => self.out.structs[*id].fields.iter().find_map(|(_, t, _)| self.uniform_type_problem(t)),
-            _ => None,
+            Ty::Struct(id) => {
+                let def = &self.out.structs[*id];
+                let (mut end, mut std_end, mut align, mut std_align) = (0u32, 0u32, 1u32, 16u32);
+                let mut prev_struct: Option<(String, u32)> = None;
+                for (fname, fty, _) in &def.fields {
+                    let fpath = if path.is_empty() { format!("{}.{fname}", def.name) } else { format!("{path}.{fname}") };
+                    let m = self.uniform_layout(fty, &fpath).map_err(|e| if path.is_empty() && !e.contains('`') { format!("`{fpath}`: {e}") } else { e })?;
+                    // WGSL uniform rule: struct and array members start at multiples of 16.
+                    let member_align = if matches!(fty, Ty::Struct(_) | Ty::Array(..)) { round(16, m.align) } else { m.align };
+                    let off = round(m.align, end);
+                    let std_off = round(m.std_align, std_end);
+                    if off != std_off || off % member_align != 0 {
+                        return Err(format!(
+                            "field `{fname}` of `{}` would be at offset {off} in WGSL but {std_off} in GLSL std140; reorder or pad the fields so that every struct or array field starts at a multiple of 16 and every struct used in a uniform is a multiple of 16 bytes",
+                            def.name
+                        ));
+                    }
+                    if let Some((pname, min)) = prev_struct.take() {
+                        if off < min {
+                            return Err(format!(
+                                "field `{fname}` of `{}` follows struct field `{pname}` too closely for a WGSL uniform block; pad `{pname}`'s type to a multiple of 16 bytes",
+                                def.name
+                            ));
+                        }
+                    }
+                    if matches!(fty, Ty::Struct(_)) {
+                        prev_struct = Some((fname.clone(), off + round(16, m.size)));
+                    }
+                    end = off + m.size;
+                    std_end = std_off + m.std_size;
+                    align = align.max(m.align);
+                    std_align = std_align.max(round(16, m.std_align));
+                }
+                Ok(UniformLayout { size: round(align, end), align, std_size: round(std_align, std_end), std_align })
+            }
+            _ => Err(format!("`{}` cannot be in a uniform block", self.show(ty))),
         }
     }
 
@@ -445,8 +612,8 @@ impl<'a, 'd> Checker<'a, 'd> {
                         return Ty::Error;
                     }
                 };
-                if matches!(elem_ty, Ty::Sampler(_)) {
-                    self.diags.push(Diagnostic::error("arrays of samplers are not supported yet; declare one sampler per texture", t.span));
+                if matches!(elem_ty, Ty::Array(..)) && elem_ty.is_sampler_like() {
+                    self.diags.push(Diagnostic::error("arrays of arrays of samplers are not supported; use one array of samplers", t.span));
                     return Ty::Error;
                 }
                 if elem_ty.is_error() {
@@ -464,28 +631,45 @@ impl<'a, 'd> Checker<'a, 'd> {
         if let Some(&id) = self.consts.get(name) {
             return Some(id);
         }
+        if self.failed_consts.contains(name) {
+            return None;
+        }
         let decl = *self.const_decls.get(name)?;
         if self.const_in_progress.iter().any(|n| n == name) {
             let d = Diagnostic::error(format!("constant `{name}` depends on itself"), use_span).with_secondary(decl.name.span, "defined here");
             self.diags.push(d);
             return None;
         }
+        if self.const_in_progress.len() >= MAX_CONST_CHAIN {
+            let d = Diagnostic::error(format!("constants are defined in terms of each other too deeply (limit {MAX_CONST_CHAIN})"), decl.name.span)
+                .with_label("the limit is reached at this constant");
+            self.diags.push(d);
+            self.failed_consts.insert(name.to_string());
+            return None;
+        }
         // Constants this one names are evaluated first.
         let mut names = Vec::new();
         super::consts::collect_names(&decl.value, &mut names);
         self.const_in_progress.push(name.to_string());
+        let mut deps_ok = true;
         for n in names {
             if n != name && self.const_decls.contains_key(&n) {
-                self.const_id(&n, use_span);
+                deps_ok &= self.const_id(&n, use_span).is_some();
             }
         }
-        let value = eval_const(&decl.value, &ConstEnvAdapter { c: self });
+        // A constant built from a wrong one is wrong too, but that was
+        // reported already.
+        let value = if deps_ok { Some(eval_const(&decl.value, &ConstEnvAdapter { c: self })) } else { None };
         self.const_in_progress.pop();
         let (value, ty) = match value {
-            Ok(v) => v,
-            Err(d) => {
+            Some(Ok(v)) => v,
+            Some(Err(d)) => {
                 self.diags.push(d);
-                self.const_decls.remove(name);
+                self.failed_consts.insert(name.to_string());
+                return None;
+            }
+            None => {
+                self.failed_consts.insert(name.to_string());
                 return None;
             }
         };
@@ -497,6 +681,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                     decl.value.span,
                 );
                 self.diags.push(d);
+                self.failed_consts.insert(name.to_string());
                 return None;
             }
         }
@@ -540,6 +725,32 @@ impl<'a, 'd> Checker<'a, 'd> {
             let d = Diagnostic::error(format!("{what} is only available in fragment entry points, and `{name}` is a vertex entry point"), span);
             self.diags.push(d);
         }
+        // Inputs and outputs of one entry point need distinct locations:
+        // `@in`/`@inout` inputs of a fragment entry point, `@inout`/`@out`
+        // outputs of a vertex entry point (transform feedback outputs).
+        let vertex = stage == naga::ShaderStage::Vertex;
+        let mut seen: HashMap<(bool, u32), GlobalId> = HashMap::new();
+        for (&gid, &span) in &func.uses {
+            let GlobalKind::Io { kind, location } = self.out.globals[gid].kind else { continue };
+            let output = match kind {
+                IoKind::In => false,
+                IoKind::Out => true,
+                IoKind::InOut => vertex,
+            };
+            if let Some(&prev) = seen.get(&(output, location)) {
+                let (a, b) = (&self.out.globals[prev], &self.out.globals[gid]);
+                let d = Diagnostic::error(
+                    format!("{} entry point `{name}` uses `{}` and `{}`, which are both {} at location {location}", stage_name(stage), a.name, b.name, if output { "outputs" } else { "inputs" }),
+                    span,
+                )
+                .with_secondary(a.span, format!("`{}` declared here", a.name))
+                .with_secondary(b.span, format!("`{}` declared here", b.name))
+                .with_note("`@in` and `@inout` share the input locations of a fragment entry point, `@inout` and `@out` the output locations of a vertex entry point; give one of them another `@location = N`");
+                self.diags.push(d);
+            } else {
+                seen.insert((output, location), gid);
+            }
+        }
     }
 
     /// Looks up (checking on first use) a helper function.
@@ -554,6 +765,13 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
             FuncState::Unchecked(idx) => {
                 let decl = self.fn_decls[*idx];
+                if self.call_depth > MAX_DEPTH {
+                    let d = Diagnostic::error(format!("calls nest too deeply (limit {MAX_DEPTH} levels of nested calls, expressions and blocks)"), call_span)
+                        .with_secondary(decl.name.span, "this function is called at the limit");
+                    self.diags.push(d);
+                    self.funcs.insert(name.to_string(), FuncState::Failed);
+                    return None;
+                }
                 self.funcs.insert(name.to_string(), FuncState::InProgress(decl.name.span));
                 match self.check_function(decl, None) {
                     Some(f) => {
@@ -577,7 +795,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             Some(t) if entry.is_none() => self.resolve_type(t),
             _ => Ty::Void,
         };
-        if matches!(ret, Ty::Sampler(_)) {
+        if ret.is_sampler_like() {
             self.diags.push(Diagnostic::error("functions cannot return samplers", decl.ret.as_ref().map(|t| t.span).unwrap_or(decl.name.span)));
         }
         let mut cx = FnCtx {
@@ -587,11 +805,13 @@ impl<'a, 'd> Checker<'a, 'd> {
             loop_depth: 0,
             uses: BTreeMap::new(),
             fragment_only: None,
-            depth: 0,
+            implicit_lod: false,
+            callees: Default::default(),
+            depth: if entry.is_some() { 0 } else { self.call_depth },
         };
         for p in &decl.params {
             let ty = self.resolve_type(&p.ty);
-            if matches!(ty, Ty::Sampler(_)) {
+            if ty.is_sampler_like() {
                 let d = Diagnostic::error("sampler parameters are not supported yet; use the sampler global directly", p.ty.span);
                 self.diags.push(d);
             }
@@ -616,6 +836,8 @@ impl<'a, 'd> Checker<'a, 'd> {
             span: decl.span,
             uses: cx.uses,
             fragment_only: cx.fragment_only,
+            implicit_lod: cx.implicit_lod,
+            callees: cx.callees,
         })
     }
 
@@ -1028,7 +1250,21 @@ impl<'a, 'd> Checker<'a, 'd> {
                     return err_expr(span);
                 }
                 match self.binary_type(*op, &l.ty, &r.ty, span) {
-                    Some(ty) => mk(ExprKind::Binary(*op, Box::new(l), Box::new(r)), ty),
+                    Some(ty) => {
+                        // Constant operands make a constant expression in the
+                        // WGSL output, which WGSL evaluates at shader creation
+                        // and rejects on overflow, division by zero or a
+                        // non-finite result: report those here.
+                        if let (Some(a), Some(b)) = (self.literal_value(&l), self.literal_value(&r)) {
+                            if let Err(msg) = super::consts::binary(*op, &a, &l.ty, &b, &r.ty) {
+                                if !msg.contains("not supported") && !msg.contains("mismatch") {
+                                    self.diags.push(Diagnostic::error(msg, span).with_note("both operands are constants, so this is evaluated at compile time"));
+                                    return err_expr(span);
+                                }
+                            }
+                        }
+                        mk(ExprKind::Binary(*op, Box::new(l), Box::new(r)), ty)
+                    }
                     None => err_expr(span),
                 }
             }
@@ -1135,6 +1371,17 @@ impl<'a, 'd> Checker<'a, 'd> {
                 let ty = Ty::Array(Box::new(elem_ty), xs.len() as u32);
                 mk(ExprKind::Construct(xs), ty)
             }
+        }
+    }
+
+    /// The value of a literal or named scalar constant.
+    fn literal_value(&self, e: &Expr) -> Option<ConstValue> {
+        match &e.kind {
+            ExprKind::Int(v) => Some(ConstValue::Int(*v)),
+            ExprKind::Uint(v) => Some(ConstValue::Uint(*v)),
+            ExprKind::Float(v) => Some(ConstValue::Float(*v as f32 as f64)),
+            ExprKind::Const(c) if matches!(self.out.consts[*c].ty, Ty::Scalar(_)) => Some(self.out.consts[*c].value.clone()),
+            _ => None,
         }
     }
 
@@ -1245,6 +1492,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             return err_expr(span);
         }
         if self.funcs.contains_key(name) {
+            self.call_depth = cx.depth + CALL_DEPTH;
             let Some(fid) = self.function_id(name, callee.span) else { return err_expr(span) };
             let f = &self.out.functions[fid];
             let params: Vec<Ty> = f.locals[..f.params].iter().map(|l| l.ty.clone()).collect();
@@ -1275,6 +1523,8 @@ impl<'a, 'd> Checker<'a, 'd> {
             if let Some(fo) = self.out.functions[fid].fragment_only {
                 cx.fragment_only.get_or_insert((span, fo.1));
             }
+            cx.implicit_lod |= self.out.functions[fid].implicit_lod;
+            cx.callees.insert(fid);
             return Expr { kind: ExprKind::Call(fid, xs), ty: ret, span };
         }
         if let Some((_, b)) = builtins::TEXTURE_FUNCTIONS.iter().find(|(n, _)| *n == name) {
@@ -1291,6 +1541,12 @@ impl<'a, 'd> Checker<'a, 'd> {
                     return err_expr(span);
                 }
                 Expr { kind: ExprKind::Builtin(b, xs), ty: ret, span }
+            }
+            Ok(None) if builtins::UNSUPPORTED.iter().any(|(n, _)| *n == name) => {
+                let why = builtins::UNSUPPORTED.iter().find(|(n, _)| *n == name).map(|(_, w)| *w).unwrap_or_default();
+                let d = Diagnostic::error(format!("`{name}` is not available in umbrac shaders"), callee.span).with_note(format!("help: {why}"));
+                self.diags.push(d);
+                err_expr(span)
             }
             Ok(None) => {
                 let mut d = Diagnostic::error(format!("unknown function `{name}`"), callee.span).with_label("not a function, builtin or type");
@@ -1392,6 +1648,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         };
         let kind = match (&first.ty, &first.kind) {
             (Ty::Sampler(k), ExprKind::Global(_)) => *k,
+            (Ty::Sampler(k), ExprKind::Index(base, _)) if matches!(base.kind, ExprKind::Global(_)) => *k,
             _ => {
                 let d = Diagnostic::error(format!("type mismatch: the first argument of `{name}` must be a sampler, found `{}`", self.show(&first.ty)), first.span);
                 self.diags.push(d);
@@ -1416,7 +1673,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             _ => Ty::Vector(Scalar::Int, 2),
         };
         let (sigs, ret): (Vec<Vec<Ty>>, Ty) = match b {
-            Builtin::Texture | Builtin::TextureLod if shadow => {
+            Builtin::Texture | Builtin::TextureLod | Builtin::TextureGrad if shadow => {
                 let d = Diagnostic::error(format!("`{name}` on shadow sampler `{}` is not supported", kind.name()), span)
                     .with_note("help: use textureCompare(sampler, uv, reference_depth) for a depth comparison");
                 self.diags.push(d);
@@ -1424,6 +1681,13 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
             Builtin::Texture => (vec![vec![coord.clone()], vec![coord.clone(), FLOAT]], texel),
             Builtin::TextureLod => (vec![vec![coord.clone(), FLOAT]], texel),
+            Builtin::TextureGrad => {
+                let grad = match kind.dim() {
+                    naga::ImageDimension::D2 => f2.clone(),
+                    _ => f3.clone(),
+                };
+                (vec![vec![coord.clone(), grad.clone(), grad]], texel)
+            }
             Builtin::TextureCompare => {
                 if !shadow {
                     let d = Diagnostic::error(format!("`textureCompare` needs a shadow sampler, but `{}` is a `{}`", self.sampler_name(first), kind.name()), first.span)
@@ -1473,14 +1737,16 @@ impl<'a, 'd> Checker<'a, 'd> {
             return err_expr(span);
         }
         if matches!(b, Builtin::Texture | Builtin::TextureProj | Builtin::TextureCompare) {
-            _cx.fragment_only.get_or_insert((span, "implicit-LOD sampling (texture, textureCompare, textureProj)"));
+            // Allowed in vertex entry points too: lowered with level 0 there.
+            _cx.implicit_lod = true;
         }
         Expr { kind: ExprKind::Builtin(b, xs), ty: ret, span }
     }
 
     fn sampler_name(&self, e: &Expr) -> String {
-        match e.kind {
-            ExprKind::Global(g) => self.out.globals[g].name.clone(),
+        match &e.kind {
+            ExprKind::Global(g) => self.out.globals[*g].name.clone(),
+            ExprKind::Index(b, _) => format!("{}[...]", self.sampler_name(b)),
             _ => "the sampler".into(),
         }
     }

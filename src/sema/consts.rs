@@ -68,7 +68,7 @@ fn eval(e: &Expr, env: &dyn ConstEnv, depth: usize) -> Result<(ConstValue, Ty), 
             let v = u32::try_from(*v).map_err(|_| Diagnostic::error(format!("integer literal {v} does not fit in `uint`"), e.span))?;
             Ok((ConstValue::Uint(v as u64), UINT))
         }
-        ExprKind::Float(v) => Ok((ConstValue::Float(*v), FLOAT)),
+        ExprKind::Float(v) => Ok((ConstValue::Float(*v as f32 as f64), FLOAT)),
         ExprKind::Bool(b) => Ok((ConstValue::Bool(*b), BOOL)),
         ExprKind::Paren(x) => eval(x, env, d),
         ExprKind::Name(id) => env.lookup(&id.name).ok_or_else(|| not_const(e, &format!("`{}`", id.name))),
@@ -142,7 +142,14 @@ fn scalars(v: &ConstValue) -> Vec<ConstValue> {
     }
 }
 
-fn convert(c: &ConstValue, to: Scalar) -> Option<ConstValue> {
+/// A scalar conversion as the constructors `float(x)`, `int(x)`, `uint(x)`,
+/// `bool(x)` define it: int <-> uint keep the bits (two's complement);
+/// float -> int/uint truncates toward zero after clamping to the largest
+/// f32 values inside the type's range (2147483520.0, 4294967040.0; what
+/// WGSL defines and naga's WGSL and SPIR-V outputs compute; GLSL leaves
+/// out-of-range conversions undefined); to float rounds to nearest f32;
+/// to bool is `!= 0`.
+pub fn convert(c: &ConstValue, to: Scalar) -> Option<ConstValue> {
     let f = match *c {
         ConstValue::Float(f) => f,
         ConstValue::Int(i) => i as f64,
@@ -151,14 +158,15 @@ fn convert(c: &ConstValue, to: Scalar) -> Option<ConstValue> {
         ConstValue::Composite(_) => return None,
     };
     Some(match to {
-        Scalar::Float => ConstValue::Float(f),
+        Scalar::Float => ConstValue::Float(f as f32 as f64),
         Scalar::Int => ConstValue::Int(match *c {
             ConstValue::Uint(u) => u as u32 as i32 as i64,
-            _ => f as i32 as i64,
+            // WGSL: clamp to the f32 values that fit, then truncate.
+            _ => (f as f32).clamp(-2147483648.0, 2147483520.0) as i32 as i64,
         }),
         Scalar::Uint => ConstValue::Uint(match *c {
             ConstValue::Int(i) => i as i32 as u32 as u64,
-            _ => f as u32 as u64,
+            _ => (f as f32).clamp(0.0, 4294967040.0) as u32 as u64,
         }),
         Scalar::Bool => ConstValue::Bool(f != 0.0),
     })
@@ -197,9 +205,35 @@ fn construct(ty: &Ty, vals: Vec<(ConstValue, Ty)>) -> Option<ConstValue> {
     }
 }
 
-fn binary(op: BinaryOp, a: &ConstValue, ta: &Ty, b: &ConstValue, tb: &Ty) -> Result<(ConstValue, Ty), String> {
+pub fn binary(op: BinaryOp, a: &ConstValue, ta: &Ty, b: &ConstValue, tb: &Ty) -> Result<(ConstValue, Ty), String> {
     use BinaryOp::*;
-    let mismatch = || format!("type mismatch in constant: `{:?}` and `{:?}` operands", ta, tb);
+    let show = |t: &Ty| super::types::TyDisplay { ty: t, struct_names: &[] }.to_string();
+    let mismatch = || format!("type mismatch in constant: `{}` and `{}` operands", show(ta), show(tb));
+    if matches!(op, Shl | Shr) && ta.scalar().is_some_and(|s| s.is_integer()) && tb.scalar().is_some_and(|s| s.is_integer()) && ta.width() == tb.width() {
+        // The amount may be int or uint; the result has the left operand's type.
+        let amounts: Vec<i64> = scalars(b).iter().map(|c| match c {
+            ConstValue::Int(i) => *i,
+            ConstValue::Uint(u) => *u as i64,
+            _ => -1,
+        }).collect();
+        let values = scalars(a);
+        let mut out = Vec::new();
+        for (i, v) in values.iter().enumerate() {
+            let k = amounts[if amounts.len() == 1 { 0 } else { i }];
+            if !(0..32).contains(&k) {
+                return Err(format!("shift amount {k} is out of range (0..32) in constant: overflow"));
+            }
+            out.push(match (v, op) {
+                (ConstValue::Int(x), Shl) => ConstValue::Int(((*x as i32) << k) as i64),
+                (ConstValue::Int(x), _) => ConstValue::Int(((*x as i32) >> k) as i64),
+                (ConstValue::Uint(x), Shl) => ConstValue::Uint(((*x as u32) << k) as u64),
+                (ConstValue::Uint(x), _) => ConstValue::Uint(((*x as u32) >> k) as u64),
+                _ => return Err(mismatch()),
+            });
+        }
+        let v = if out.len() == 1 { out.pop().expect("one component") } else { ConstValue::Composite(out) };
+        return Ok((v, ta.clone()));
+    }
     if matches!(ta, Ty::Matrix(..) | Ty::Array(..) | Ty::Struct(_)) || matches!(tb, Ty::Matrix(..) | Ty::Array(..) | Ty::Struct(_)) {
         return Err("matrix, array and struct arithmetic is not supported in constants".into());
     }
@@ -223,34 +257,45 @@ fn binary(op: BinaryOp, a: &ConstValue, ta: &Ty, b: &ConstValue, tb: &Ty) -> Res
     for i in 0..w {
         let (x, y) = (get(&sa, i), get(&sb, i));
         let v = match (x, y) {
-            (ConstValue::Float(x), ConstValue::Float(y)) => match op {
-                Add | Sub | Mul | Div | Mod => {
-                    if matches!(op, Div | Mod) && y == 0.0 {
-                        return Err("division by zero in constant".into());
-                    }
-                    // f32 arithmetic: operands are f32 values, and each
-                    // result is rounded to f32 before the next operation
-                    // (exact for + - * / computed in f64, then rounded once).
-                    let r = match op {
-                        Add => x + y,
-                        Sub => x - y,
-                        Mul => x * y,
-                        Div => x / y,
-                        _ => x - y * ((x / y) as f32 as f64).floor(),
-                    } as f32;
-                    if !r.is_finite() {
-                        return Err("floating-point overflow in constant: the result does not fit in `float`".into());
-                    }
-                    ConstValue::Float(r as f64)
+            (ConstValue::Float(x), ConstValue::Float(y)) => {
+                // In f32, one rounding per operation, as the GPU computes.
+                let (x, y) = (x as f32, y as f32);
+                if matches!(op, Div | Mod) && y == 0.0 {
+                    return Err("division by zero in constant".into());
                 }
-                Eq => ConstValue::Bool(x == y),
-                Ne => ConstValue::Bool(x != y),
-                Lt => ConstValue::Bool(x < y),
-                Le => ConstValue::Bool(x <= y),
-                Gt => ConstValue::Bool(x > y),
-                Ge => ConstValue::Bool(x >= y),
-                _ => return Err(mismatch()),
-            },
+                let r = match op {
+                    Add => x + y,
+                    Sub => x - y,
+                    Mul => x * y,
+                    Div => x / y,
+                    // GLSL mod: x - y * floor(x / y).
+                    Mod => x - y * (x / y).floor(),
+                    _ => 0.0,
+                };
+                if !r.is_finite() {
+                    let what = if r.is_nan() { "NaN" } else { "infinite" };
+                    return Err(format!(
+                        "this constant is {what} in `float` ({x:?} {} {y:?}); constants must be finite: WGSL rejects non-finite constant expressions and naga non-finite literals",
+                        crate::sema::op_text(op)
+                    ));
+                }
+                let f = |v: f32| ConstValue::Float(v as f64);
+                match op {
+                    Add => f(x + y),
+                    Sub => f(x - y),
+                    Mul => f(x * y),
+                    Div => f(x / y),
+                    // GLSL mod: x - y * floor(x / y).
+                    Mod => f(x - y * (x / y).floor()),
+                    Eq => ConstValue::Bool(x == y),
+                    Ne => ConstValue::Bool(x != y),
+                    Lt => ConstValue::Bool(x < y),
+                    Le => ConstValue::Bool(x <= y),
+                    Gt => ConstValue::Bool(x > y),
+                    Ge => ConstValue::Bool(x >= y),
+                    _ => return Err(mismatch()),
+                }
+            }
             (ConstValue::Int(x), ConstValue::Int(y)) => {
                 let (x, y) = (x as i32, y as i32);
                 let r = match op {

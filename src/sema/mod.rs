@@ -11,6 +11,6 @@ pub mod consts;
 pub mod tree;
 pub mod types;
 
-pub use check::{check, MAX_ARRAY_LEN, MAX_DEPTH, MAX_LOCATIONS};
+pub use check::{check, op_text, MAX_ARRAY_LEN, MAX_DEPTH, MAX_LOCATIONS};
 pub use tree::*;
 pub use types::{Scalar, Ty};

@@ -127,7 +127,9 @@ pub enum IoKind {
 #[derive(Clone, Debug)]
 pub enum GlobalKind {
     Uniform,
-    Sampler { kind: SamplerKind, texture_unit: u32 },
+    /// A sampler, or an array of `count` samplers (`ty` is `T[count]`) on
+    /// consecutive texture units from `texture_unit`.
+    Sampler { kind: SamplerKind, texture_unit: u32, count: Option<u32> },
     Io { kind: IoKind, location: u32 },
     Builtin(BuiltinVar),
 }
@@ -181,6 +183,12 @@ pub struct Function {
     pub uses: std::collections::BTreeMap<GlobalId, Span>,
     /// A `discard()` or derivative reached from this function (fragment only).
     pub fragment_only: Option<(Span, &'static str)>,
+    /// Implicit-LOD sampling (`texture`, `textureCompare`, `textureProj`)
+    /// reached from this function: lowered with level 0 when a vertex entry
+    /// point reaches it.
+    pub implicit_lod: bool,
+    /// Helper functions called directly.
+    pub callees: std::collections::BTreeSet<FuncId>,
 }
 
 #[derive(Debug)]

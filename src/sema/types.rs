@@ -89,7 +89,20 @@ impl Ty {
 
     /// Whether values of this type can be stored in variables, passed and returned.
     pub fn is_value(&self) -> bool {
-        !matches!(self, Ty::Sampler(_) | Ty::Void)
+        match self {
+            Ty::Sampler(_) | Ty::Void => false,
+            Ty::Array(elem, _) => elem.is_value(),
+            _ => true,
+        }
+    }
+
+    /// A sampler or an array of samplers.
+    pub fn is_sampler_like(&self) -> bool {
+        match self {
+            Ty::Sampler(_) => true,
+            Ty::Array(elem, _) => elem.is_sampler_like(),
+            _ => false,
+        }
     }
 
     /// Parses a builtin type name (`float3`, `int`, `float4x4`, `sampler2D`).

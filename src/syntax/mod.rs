@@ -49,9 +49,24 @@ pub fn read_source(path: &Path) -> Result<String, Diagnostic> {
         return Err(too_large(path, bytes.len() as u64));
     }
     String::from_utf8(bytes).map_err(|e| {
-        Diagnostic::error_nowhere(format!("`{}` is not UTF-8 text", path.display()))
-            .with_note(format!("invalid byte at offset {}", e.utf8_error().valid_up_to()))
+        let at = invalid_utf8_at(e.as_bytes(), e.utf8_error().valid_up_to());
+        Diagnostic::error_nowhere(format!("`{}` is not UTF-8 text: {at}", path.display()))
+            .with_note("help: save the file as UTF-8")
     })
+}
+
+/// Where the first invalid byte of `bytes` is, for diagnostics:
+/// `invalid byte 0xFF at line 3, column 7 (byte offset 41)`. The column
+/// counts characters, like every other column umbrac reports.
+pub(crate) fn invalid_utf8_at(bytes: &[u8], valid_up_to: usize) -> String {
+    let valid_up_to = valid_up_to.min(bytes.len());
+    let before = &bytes[..valid_up_to];
+    let line_start = before.iter().rposition(|&b| b == b'\n').map_or(0, |k| k + 1);
+    let line = before.iter().filter(|&&b| b == b'\n').count() + 1;
+    // Everything before `valid_up_to` is valid UTF-8.
+    let column = std::str::from_utf8(&before[line_start..]).map_or(0, |s| s.chars().count()) + 1;
+    let byte = bytes.get(valid_up_to).copied().unwrap_or(0);
+    format!("invalid byte 0x{byte:02X} at line {line}, column {column} (byte offset {valid_up_to})")
 }
 
 fn too_large(path: &Path, len: u64) -> Diagnostic {

@@ -252,6 +252,7 @@ impl<'a> Parser<'a> {
             self.push(
                 Diagnostic::error(format!("nesting too deep (limit {MAX_DEPTH} nested expressions and blocks)"), at.span)
                     .with_label("the nesting limit is reached here")
+                    .with_note("each `(`, block, unary operator, operator of a chain like `a + b + c`, `.field`, `[index]` and `elif` is one level")
                     .with_note("help: split the expression or the block into smaller parts"),
             );
         }
@@ -653,8 +654,22 @@ impl<'a> Parser<'a> {
             return Err(());
         }
         self.bump();
-        let mut ty = TypeExpr { kind: TypeExprKind::Named(Ident { name: self.text(&t).to_string(), span: t.span }), span: t.span };
-        while let Some(open) = self.eat(P::LBracket) {
+        let ty = TypeExpr { kind: TypeExprKind::Named(Ident { name: self.text(&t).to_string(), span: t.span }), span: t.span };
+        let depth = self.depth;
+        let r = self.array_suffixes(ty);
+        self.depth = depth;
+        r
+    }
+
+    /// `[N][M]...` after a type name; each is a level of nesting.
+    fn array_suffixes(&mut self, mut ty: TypeExpr) -> PResult<TypeExpr> {
+        loop {
+            let open = self.peek();
+            if !open.is(P::LBracket) {
+                return Ok(ty);
+            }
+            self.enter(open)?;
+            self.bump();
             self.nl_skip += 1;
             self.open += 1;
             let size = self.expr()?;
@@ -663,7 +678,6 @@ impl<'a> Parser<'a> {
             self.open -= 1;
             ty = TypeExpr { span: ty.span.to(close.span), kind: TypeExprKind::Array(Box::new(ty), Box::new(size)) };
         }
-        Ok(ty)
     }
 
     // ---- statements ----
@@ -843,12 +857,23 @@ impl<'a> Parser<'a> {
         self.bump(); // `if`
         let cond = self.expr()?;
         let then = self.body()?;
+        // Later stages nest each `elif` inside the previous one's `else`.
+        let depth = self.depth;
+        let r = self.elifs(cond, then);
+        self.depth = depth;
+        r
+    }
+
+    fn elifs(&mut self, cond: Expr, then: Block) -> PResult<StmtKind> {
         let mut elifs = Vec::new();
         let mut otherwise = None;
         loop {
             let save = self.pos;
             self.skip_nl();
             let t = self.raw_peek();
+            if t.is_kw(Kw::Elif) || t.is_kw(Kw::Else) {
+                self.enter(t)?;
+            }
             if t.is_kw(Kw::Elif) {
                 self.bump();
                 let c = self.expr()?;
@@ -923,18 +948,28 @@ impl<'a> Parser<'a> {
 
     fn binary(&mut self, min: u8) -> PResult<Expr> {
         let mut lhs = self.unary()?;
-        loop {
+        // `a + b + c` parses in a loop but builds a left-deep tree, which
+        // later stages walk recursively: each operator counts as one level.
+        let mut levels = 0;
+        let r = loop {
             let t = self.peek();
-            let Some((op, prec)) = binop(&t) else { break };
+            let Some((op, prec)) = binop(&t) else { break Ok(lhs) };
             if prec < min {
-                break;
+                break Ok(lhs);
             }
+            if self.enter(t).is_err() {
+                break Err(());
+            }
+            levels += 1;
             self.bump();
             self.skip_nl();
-            let rhs = self.binary(prec + 1)?;
-            lhs = Expr { span: lhs.span.to(rhs.span), kind: ExprKind::Binary(op, Box::new(lhs), Box::new(rhs)) };
-        }
-        Ok(lhs)
+            match self.binary(prec + 1) {
+                Ok(rhs) => lhs = Expr { span: lhs.span.to(rhs.span), kind: ExprKind::Binary(op, Box::new(lhs), Box::new(rhs)) },
+                Err(()) => break Err(()),
+            }
+        };
+        self.depth -= levels;
+        r
     }
 
     fn unary(&mut self) -> PResult<Expr> {
@@ -957,9 +992,20 @@ impl<'a> Parser<'a> {
     }
 
     fn postfix(&mut self) -> PResult<Expr> {
-        let mut e = self.primary()?;
+        let e = self.primary()?;
+        // Like a chain of binary operators, each postfix operator is a level.
+        let depth = self.depth;
+        let r = self.postfix_ops(e);
+        self.depth = depth;
+        r
+    }
+
+    fn postfix_ops(&mut self, mut e: Expr) -> PResult<Expr> {
         loop {
             let t = self.peek();
+            if matches!(t.kind, TokKind::P(P::Dot | P::LBracket | P::PlusPlus | P::MinusMinus)) {
+                self.enter(t)?;
+            }
             e = match t.kind {
                 TokKind::P(P::Dot) => self.field_access(e)?,
                 TokKind::P(P::LBracket) => self.index(e, t)?,
@@ -1143,7 +1189,7 @@ impl<'a> Parser<'a> {
         // decimal near an f32 midpoint would round twice) and kept exactly.
         match body.parse::<f32>() {
             Ok(v) if v.is_infinite() => {
-                self.err(t, format!("float literal `{text}` does not fit in `float` (largest 3.4028235e38)"), "too large");
+                self.err(t, "float literal is out of range for `float`".to_string(), "too large for `float` (largest 3.4028235e38)");
                 Err(())
             }
             Ok(v) => Ok(Expr { kind: ExprKind::Float(v as f64), span: t.span }),

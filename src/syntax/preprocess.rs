@@ -27,7 +27,9 @@ pub const MAX_FILE_SIZE: usize = 16 * 1024 * 1024;
 /// Largest total of all files read (an include may be read many times).
 pub const MAX_TOTAL_SIZE: usize = 64 * 1024 * 1024;
 /// Most tokens after preprocessing (bounds macro expansion).
-pub const MAX_TOKENS: usize = 16 * 1024 * 1024;
+/// 4 Mi tokens (48 MiB) is far beyond any real shader and keeps an
+/// exponential `#define` bomb to about a second in a release build.
+pub const MAX_TOKENS: usize = 4 * 1024 * 1024;
 /// Most `#include` directives followed in one compilation.
 pub const MAX_INCLUDES: usize = 4096;
 /// Deepest macro-within-macro expansion.
@@ -35,6 +37,9 @@ const MAX_EXPANSION_DEPTH: usize = 64;
 
 struct Macro {
     value: Rc<[Token]>,
+    /// Unique per `#define`, so the macros being expanded are a list of
+    /// numbers rather than of names.
+    id: usize,
 }
 
 #[derive(Clone, Copy)]
@@ -68,6 +73,8 @@ struct Pp<'a> {
     total_size: usize,
     includes: usize,
     overflowed: bool,
+    /// `#define`s seen so far (the next macro's id).
+    macros_defined: usize,
 }
 
 /// Preprocesses the root file (already in the map) and returns the token
@@ -98,6 +105,7 @@ pub fn preprocess(map: &mut SourceMap, root: FileId, opts: &ParseOptions, diags:
         total_size,
         includes: 0,
         overflowed: false,
+        macros_defined: 0,
     };
     if !opts.defines.is_empty() {
         let mut text = String::new();
@@ -204,10 +212,11 @@ impl Pp<'_> {
     }
 
     /// Pushes `t`, or the expansion of the macro it names. `active` holds
-    /// the macros being expanded (a macro is not expanded inside itself).
-    fn expand(&mut self, t: Token, active: &mut Vec<String>) {
-        let value = match self.defines.get(self.map.slice(t.span)) {
-            Some(m) if !active.iter().any(|a| a == self.map.slice(t.span)) => m.value.clone(),
+    /// the ids of the macros being expanded (a macro is not expanded inside
+    /// itself).
+    fn expand(&mut self, t: Token, active: &mut Vec<usize>) {
+        let (id, value) = match self.defines.get(self.map.slice(t.span)) {
+            Some(m) if !active.contains(&m.id) => (m.id, m.value.clone()),
             _ => {
                 self.push_out(t);
                 return;
@@ -218,7 +227,7 @@ impl Pp<'_> {
             self.diags.push(Diagnostic::error(msg, t.span).with_label("while expanding this"));
             return;
         }
-        active.push(self.map.slice(t.span).to_string());
+        active.push(id);
         for v in value.iter() {
             if v.kind == TokKind::Ident {
                 self.expand(*v, active);
@@ -305,7 +314,8 @@ impl Pp<'_> {
                     return;
                 }
                 let key = self.text(id).to_string();
-                self.defines.insert(key, Macro { value: args[1..].into() });
+                self.macros_defined += 1;
+                self.defines.insert(key, Macro { value: args[1..].into(), id: self.macros_defined });
             }
             "undef" => {
                 if let Some(id) = self.one_ident(args, "undef", head) {
@@ -499,7 +509,7 @@ impl Pp<'_> {
             Ok(t) => t,
             Err(e) => {
                 let msg = format!("include file `{}` is not UTF-8 text", path.display());
-                let note = format!("invalid byte at offset {}", e.utf8_error().valid_up_to());
+                let note = super::invalid_utf8_at(e.as_bytes(), e.utf8_error().valid_up_to());
                 self.diags.push(Diagnostic::error(msg, target.span).with_label("not UTF-8").with_note(note));
                 return;
             }

@@ -52,15 +52,15 @@ void main() {
         int _e14 = i;
         i = (_e14 + 1);
         int _e17 = i;
-        if (((_e17 % 2) == 0)) {
+        if (((_e17 - (2 * (_e17 / 2))) == 0)) {
             continue;
         }
-        int _e25 = i;
-        float _e28 = acc;
-        acc = (_e28 + (1.0 / float(_e25)));
-        float _e31 = acc;
-        float _e33 = u_threshold;
-        if ((_e31 > _e33)) {
+        int _e27 = i;
+        float _e30 = acc;
+        acc = (_e30 + (1.0 / float(_e27)));
+        float _e33 = acc;
+        float _e35 = u_threshold;
+        if ((_e33 > _e35)) {
             break;
         }
     }
@@ -69,30 +69,30 @@ void main() {
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            int _e49 = k;
-            k = (_e49 + 1);
+            int _e51 = k;
+            k = (_e51 + 1);
         }
         loop_init = false;
-        int _e40 = k;
-        if (!((_e40 < 7))) {
+        int _e42 = k;
+        if (!((_e42 < 7))) {
             break;
         }
-        int _e45 = k;
-        uint _e47 = count;
-        count = (_e47 + uint(_e45));
+        int _e47 = k;
+        uint _e49 = count;
+        count = (_e49 + uint(_e47));
     }
-    float _e55 = v_uv.x;
-    int _e56 = band(_e55);
-    level = (float(_e56) / 3.0);
-    float _e63 = v_uv.y;
-    float _e69 = level;
-    level = (_e69 * ((_e63 > 0.5) ? 1.0 : 0.5));
-    float _e73 = acc;
-    float _e75 = level;
-    uint _e77 = count;
-    f_color = vec4(_e73, _e75, (float(_e77) / 20.0), 1.0);
-    vec4 _e84 = f_color;
-    flow_fs_out _tmp_return = flow_fs_out(_e84);
+    float _e57 = v_uv.x;
+    int _e58 = band(_e57);
+    level = (float(_e58) / 3.0);
+    float _e65 = v_uv.y;
+    float _e71 = level;
+    level = (_e71 * ((_e65 > 0.5) ? 1.0 : 0.5));
+    float _e75 = acc;
+    float _e77 = level;
+    uint _e79 = count;
+    f_color = vec4(_e75, _e77, (float(_e79) / 20.0), 1.0);
+    vec4 _e86 = f_color;
+    flow_fs_out _tmp_return = flow_fs_out(_e86);
     _fs2p_location0 = _tmp_return.f_color;
     return;
 }

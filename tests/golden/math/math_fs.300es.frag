@@ -80,11 +80,11 @@ void main() {
     float _e109 = col.x;
     col.x = clamp(mix(_e109, angle, 0.5), 0.0, 1.0);
     vec2 _e120 = p;
-    col.y = (smoothstep(0.2, 0.8, length(_e120)) * step(0.5, float((bits % 3))));
-    vec3 _e131 = col;
-    f_color = vec4(pow(_e131, vec3((1.0 / 2.2))), 1.0);
-    vec4 _e140 = f_color;
-    math_fs_out _tmp_return = math_fs_out(_e140);
+    col.y = (smoothstep(0.2, 0.8, length(_e120)) * step(0.5, float((bits - (3 * (bits / 3))))));
+    vec3 _e133 = col;
+    f_color = vec4(pow(_e133, vec3((1.0 / 2.2))), 1.0);
+    vec4 _e142 = f_color;
+    math_fs_out _tmp_return = math_fs_out(_e142);
     _fs2p_location0 = _tmp_return.f_color;
     return;
 }

@@ -8,9 +8,6 @@ struct math_vs_out {
     vec2 v_uv;
     int v_id;
 };
-const vec2 OFFSETS[4] = vec2[4](vec2(-1.0, 0.0), vec2(1.0, 0.0), vec2(0.0, -1.0), vec2(0.0, 1.0));
-const float TAU = 6.2831855;
-
 layout(std140) uniform u_frame_block { int u_frame; };
 
 vec2 a_pos = vec2(0.0);

@@ -58,9 +58,9 @@ float sun_visibility(vec2 uv, float depth) {
             if (!((_e24 < (PCF_RADIUS + 1)))) {
                 break;
             }
-            int _e30 = x;
-            int _e32 = y;
-            float _e39 = texture(shadow_map, vec3((uv + (vec2(float(_e30), float(_e32)) * step_)), depth));
+            int _e29 = x;
+            int _e31 = y;
+            float _e39 = texture(shadow_map, vec3((uv + (vec2(float(_e29), float(_e31)) * step_)), depth));
             float _e40 = lit_1;
             lit_1 = (_e40 + _e39);
             float _e44 = taps;

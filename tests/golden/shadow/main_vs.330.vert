@@ -5,9 +5,6 @@ struct main_vs_out {
     vec3 v_world_normal;
     vec4 v_light_space;
 };
-const float SHADOW_MAP_SIZE = 1024.0;
-const int PCF_RADIUS = 1;
-
 layout(std140) uniform u_light_vp_block { mat4x4 u_light_vp; };
 
 layout(std140) uniform u_model_block { mat4x4 u_model; };

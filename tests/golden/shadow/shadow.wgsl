@@ -69,9 +69,9 @@ fn sun_visibility(uv: vec2<f32>, depth: f32) -> f32 {
             if !((_e24 < (PCF_RADIUS + 1i))) {
                 break;
             }
-            let _e30 = x;
-            let _e32 = y;
-            let _e39 = textureSampleCompare(shadow_map, shadow_map_sampler, (uv + (vec2<f32>(f32(_e30), f32(_e32)) * step_)), depth);
+            let _e29 = x;
+            let _e31 = y;
+            let _e39 = textureSampleCompare(shadow_map, shadow_map_sampler, (uv + (vec2<f32>(f32(_e29), f32(_e31)) * step_)), depth);
             let _e40 = lit_1;
             lit_1 = (_e40 + _e39);
             let _e44 = taps;

@@ -6,9 +6,6 @@ precision highp int;
 struct shadow_fs_out {
     vec4 f_FragColor;
 };
-const float SHADOW_MAP_SIZE = 1024.0;
-const int PCF_RADIUS = 1;
-
 vec4 f_FragColor = vec4(0.0);
 
 layout(location = 0) out vec4 _fs2p_location0;

@@ -2,9 +2,6 @@
 struct shadow_vs_out {
     vec4 gen_gl_Position;
 };
-const float SHADOW_MAP_SIZE = 1024.0;
-const int PCF_RADIUS = 1;
-
 layout(std140) uniform u_light_vp_block { mat4x4 u_light_vp; };
 
 layout(std140) uniform u_model_block { mat4x4 u_model; };

@@ -1,0 +1,123 @@
+//! `umbrac render --backend gl330|gles300` and `--compare-backends`.
+
+use std::path::Path;
+
+use super::cli::RenderArgs;
+use super::consumers::{self, Consumer, Programs, Status};
+use super::image_ops;
+use super::scene::FrameParams;
+use crate::Target;
+
+const BUILTIN_PROGRAM: &str = include_str!("../../shaders/shadow.das");
+const DEFAULT_PROGRAM: &str = "shaders/shadow.das";
+
+/// The difference (out of 255) above which the comparison counts a pixel.
+pub const DELTA: u8 = 8;
+
+fn compile(file: Option<&Path>, targets: Vec<Target>) -> Result<(String, crate::Compiled), String> {
+    if let Some(ext @ ("wgsl" | "spv")) = file.and_then(|p| p.extension()).and_then(|e| e.to_str()) {
+        return Err(format!("the GL consumers run the compiler's GLSL: give a .das program, not a .{ext} file"));
+    }
+    let opts = crate::Options { targets, ..Default::default() };
+    let compilation = match file {
+        Some(path) => crate::compile_file(path, &opts),
+        None if Path::new(DEFAULT_PROGRAM).is_file() => crate::compile_file(Path::new(DEFAULT_PROGRAM), &opts),
+        None => crate::compile_source(DEFAULT_PROGRAM, BUILTIN_PROGRAM, &opts),
+    };
+    let name = file.map_or(DEFAULT_PROGRAM.to_string(), |p| p.display().to_string());
+    let diagnostics = compilation.render_diagnostics();
+    if !diagnostics.is_empty() {
+        eprint!("{diagnostics}");
+    }
+    match compilation.result {
+        Some(compiled) if !compilation.has_errors() => Ok((name, compiled)),
+        _ => Err(format!("{name} did not compile")),
+    }
+}
+
+#[cfg(feature = "gl")]
+pub(super) fn render_gl(args: &RenderArgs, params: FrameParams) -> Result<(), String> {
+    use super::cli::{frame_times, write_frames, BackendArg};
+    use super::gl::{GlApi, GlRenderer};
+    use super::glsl_set::GlslSet;
+    let api = if args.backend == BackendArg::Gl330 { GlApi::Gl330 } else { GlApi::Gles300 };
+    if args.via != super::cli::ViaArg::Wgsl {
+        return Err(format!("--via picks what wgpu gets; --backend {} runs the {} files", api.name(), api.target().name()));
+    }
+    let (name, compiled) = compile(args.file.as_deref(), vec![api.target()])?;
+    let set = GlslSet::from_compiled(name, &compiled, api.target())?;
+    let renderer = GlRenderer::new(api).map_err(|e| e.to_string())?;
+    let program = renderer.prepare(&set).map_err(|e| e.to_string())?;
+    eprintln!("rendering {} ({}) on {}", set.label, api.target().name(), renderer.adapter_name());
+    let times = frame_times(args);
+    let result = write_frames(args, &times, |p| renderer.draw(&program, p).map_err(|e| e.to_string()), params);
+    renderer.release(program);
+    result
+}
+
+#[cfg(not(feature = "gl"))]
+pub(super) fn render_gl(_: &RenderArgs, _: FrameParams) -> Result<(), String> {
+    Err("this umbrac was built without the `gl` feature (cargo build --features gl)".into())
+}
+
+pub(super) fn compare_backends(args: &RenderArgs, params: FrameParams) -> Result<(), String> {
+    let (name, compiled) = compile(args.file.as_deref(), Vec::new())?;
+    let programs = Programs::from_compiled(&name, &compiled)?;
+    eprintln!(
+        "{name} at t = {}, {}x{}, shadow map {}, view {}:",
+        params.time,
+        params.width,
+        params.height,
+        params.shadow_size,
+        params.view.name()
+    );
+    let stem = args.out.with_extension("");
+    let mut results = Vec::new();
+    let mut failed = Vec::new();
+    for c in Consumer::ALL {
+        let status = consumers::render(c, &programs, &params);
+        match &status {
+            Status::Rendered { image, device, ms } => {
+                let path = stem.with_extension(format!("{}.png", c.name()));
+                image_ops::save_png(image, &path)?;
+                println!("  {:<13} {} on {device}: {ms:.0} ms, {}", c.name(), c.description(), path.display());
+            }
+            Status::Unavailable { why, install } => {
+                println!("  {:<13} unavailable: {why}\n  {:<13} to install: {install}", c.name(), "");
+            }
+            Status::Failed(e) => {
+                println!("  {:<13} FAILED: {e}", c.name());
+                failed.push(c.name());
+            }
+        }
+        results.push((c, status));
+    }
+    // Where each differs from the first consumer that rendered (red: the
+    // difference x4), to look at.
+    let first = results.iter().find_map(|(c, s)| s.image().map(|i| (*c, i.clone())));
+    if let Some((base, base_image)) = first {
+        for (c, s) in results.iter().filter(|(c, _)| *c != base) {
+            if let Some(image) = s.image() {
+                let path = stem.with_extension(format!("{}.diff.png", c.name()));
+                image_ops::save_png(&image_ops::diff_image(&base_image, image, None), &path)?;
+            }
+        }
+        eprintln!("wrote OUT.CONSUMER.diff.png: each consumer's difference from {}", base.name());
+    }
+    let all: Vec<&image::RgbaImage> = results.iter().filter_map(|(_, s)| s.image()).collect();
+    let strip = stem.with_extension("all.png");
+    image_ops::save_png(&image_ops::side_by_side(&all), &strip)?;
+    eprintln!("wrote {}: every rendered image, left to right in the order above", strip.display());
+    let pairs = consumers::pairwise(&results, &params, DELTA);
+    println!();
+    print!("{}", consumers::table(&pairs, DELTA));
+    if pairs.iter().any(|p| p.masked) {
+        let skipped = params.width as usize * params.height as usize - pairs.iter().find(|p| p.masked).map_or(0, |p| p.stats.pixels);
+        println!("\n* pixels outside the sun's box skipped ({skipped}): the shadow map has no data there (docs/runner.md)");
+    }
+    if failed.is_empty() {
+        Ok(())
+    } else {
+        Err(format!("{} failed", failed.join(", ")))
+    }
+}

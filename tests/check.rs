@@ -1,0 +1,111 @@
+//! `umbrac compile --check`, `umbrac bindgen` and `umbrac reflect` from the
+//! command line.
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn umbrac(args: &[&str], cwd: &Path) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_umbrac")).args(args).current_dir(cwd).output().expect("run umbrac")
+}
+
+fn text(b: &[u8]) -> String {
+    String::from_utf8_lossy(b).into_owned()
+}
+
+fn repo() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+fn snapshot(dir: &Path) -> BTreeMap<PathBuf, Vec<u8>> {
+    std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().path()).map(|p| (p.clone(), std::fs::read(&p).unwrap())).collect()
+}
+
+#[test]
+fn check_passes_on_untouched_outputs_and_reports_a_one_character_change() {
+    let d = tempfile::tempdir().unwrap();
+    let shader = repo().join("shaders/shadow.das");
+    let shader = shader.to_str().unwrap();
+    let out = d.path().join("out");
+    let o = umbrac(&["compile", shader, "-o", out.to_str().unwrap()], d.path());
+    assert!(o.status.success(), "{}", text(&o.stderr));
+
+    // Untouched: exit 0, silent, nothing written.
+    let before = snapshot(&out);
+    let o = umbrac(&["compile", "--check", shader, "-o", out.to_str().unwrap()], d.path());
+    assert_eq!(o.status.code(), Some(0), "{}{}", text(&o.stdout), text(&o.stderr));
+    assert!(o.stdout.is_empty(), "{}", text(&o.stdout));
+    assert_eq!(snapshot(&out), before);
+
+    // One character changed in one emitted file: a unified diff of that line.
+    let wgsl = out.join("shadow.wgsl");
+    let original = std::fs::read_to_string(&wgsl).unwrap();
+    let changed = original.replacen("0.5", "0.6", 1);
+    assert_ne!(changed, original);
+    std::fs::write(&wgsl, &changed).unwrap();
+    // Also a missing and a stale output.
+    std::fs::remove_file(out.join("main_fs.300es.frag")).unwrap();
+    std::fs::write(out.join("old_vs.330.vert"), "void main() {}\n").unwrap();
+    let before = snapshot(&out);
+    let o = umbrac(&["compile", "--check", shader, "-o", out.to_str().unwrap()], d.path());
+    let stdout = text(&o.stdout);
+    assert_eq!(o.status.code(), Some(1), "{stdout}{}", text(&o.stderr));
+    assert!(stdout.contains("shadow.wgsl"), "{stdout}");
+    assert!(stdout.contains("@@"), "a unified diff hunk:\n{stdout}");
+    let minus: Vec<&str> = stdout.lines().filter(|l| l.starts_with('-') && !l.starts_with("---")).collect();
+    let plus: Vec<&str> = stdout.lines().filter(|l| l.starts_with('+') && !l.starts_with("+++")).collect();
+    assert_eq!((minus.len(), plus.len()), (1, 1), "exactly the changed line:\n{stdout}");
+    assert!(minus[0].contains("0.6") && plus[0].contains("0.5"), "checked-in line removed, compiler's line added:\n{stdout}");
+    assert!(stdout.contains("missing:") && stdout.contains("main_fs.300es.frag"), "{stdout}");
+    assert!(stdout.contains("stale:") && stdout.contains("old_vs.330.vert"), "{stdout}");
+    assert!(text(&o.stderr).contains("3 file(s)"), "{}", text(&o.stderr));
+    assert_eq!(snapshot(&out), before, "--check writes nothing");
+
+    // --check with -o - is a usage error.
+    let o = umbrac(&["compile", "--check", shader, "-o", "-"], d.path());
+    assert_eq!(o.status.code(), Some(2));
+}
+
+#[test]
+fn check_of_a_shader_with_errors_exits_1_with_the_diagnostic() {
+    let d = tempfile::tempdir().unwrap();
+    std::fs::write(d.path().join("bad.das"), "[vertex_program]\ndef vs {\n    gl_Position = float4(1.0, 2.0\n}\n").unwrap();
+    let o = umbrac(&["compile", "--check", "bad.das", "-o", "."], d.path());
+    assert_eq!(o.status.code(), Some(1));
+    assert!(text(&o.stderr).contains("bad.das:"), "{}", text(&o.stderr));
+}
+
+#[test]
+fn bindgen_writes_the_module_and_reflect_prints_the_manifest() {
+    let d = tempfile::tempdir().unwrap();
+    let shader = repo().join("shaders/shadow.das");
+    let o = umbrac(&["bindgen", shader.to_str().unwrap(), "-o", "bindings.rs"], d.path());
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let rs = std::fs::read_to_string(d.path().join("bindings.rs")).unwrap();
+    for needle in [
+        "pub mod shadow {",
+        "pub struct ULightDir {",
+        "pub u_light_dir: [f32; 3],",
+        "pub _pad0: [u8; 4],",
+        "pub const WGSL: &str",
+        "pub const SPIRV: &[u32] = &[",
+        "0x07230203,",
+        "pub const GLSL_BLOCK: &str = \"u_light_dir_block\";",
+        "pub const TEXTURE_UNIT: u32 = 0;",
+        "pub const VERTEX_BUFFER_LAYOUT: wgpu::VertexBufferLayout<'static>",
+        "#[cfg(feature = \"wgpu\")]",
+        "const _: () = assert!(core::mem::size_of::<ULightDir>() == 16);",
+    ] {
+        assert!(rs.contains(needle), "`{needle}` missing from the bindings:\n{rs}");
+    }
+    let o = umbrac(&["bindgen", shader.to_str().unwrap(), "--module", "scene", "--no-bytemuck"], d.path());
+    assert!(o.status.success());
+    let rs = text(&o.stdout);
+    assert!(rs.contains("pub mod scene {") && !rs.contains("bytemuck"), "{rs}");
+
+    let o = umbrac(&["reflect", shader.to_str().unwrap()], &repo());
+    assert!(o.status.success());
+    let printed: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
+    assert_eq!(printed["uniform_blocks"][0]["name"], "u_light_vp");
+    assert_eq!(printed["samplers"][0]["glsl_name"], "shadow_map");
+}

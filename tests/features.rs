@@ -1,0 +1,211 @@
+//! The feature matrix in docs/features.md is checked against the compiler:
+//! every row names a snippet here, every snippet has a row, and each
+//! target column says what compiling the snippet for that target does:
+//! `yes` (compiles, passes the validators), `lowered` (compiles and
+//! validates, by a lowering the notes column describes) or `no` (a compile
+//! error, never an internal one). Some rows also assert a property of the
+//! output (`NEEDLES`).
+
+mod support;
+
+use std::collections::BTreeMap;
+use std::path::Path;
+
+use umbrac::Target;
+
+/// A fragment entry point writing `f_color`, after `decls`.
+fn frag(decls: &str, body: &str) -> String {
+    format!("{decls}\nvar @out f_color : float4\n[fragment_program]\ndef fs {{\n{body}\n}}\n")
+}
+
+/// A vertex entry point, after `decls`.
+fn vert(decls: &str, body: &str) -> String {
+    format!("{decls}\n[vertex_program]\ndef vs {{\n{body}\n    gl_Position = float4(0.0, 0.0, 0.0, 1.0)\n}}\n")
+}
+
+fn snippets() -> BTreeMap<&'static str, String> {
+    let mut m = BTreeMap::new();
+    let mut add = |id: &'static str, src: String| {
+        assert!(m.insert(id, src).is_none(), "snippet `{id}` twice");
+    };
+    // ---------------------------------------------------------------- types
+    add("scalars-vectors", frag("", "    let a = 1.0\n    let b = int3(1, 2, 3)\n    let c = uint2(1u)\n    let d = bool4(true, false, true, a > 0.5)\n    f_color = float4(float(b.x + int(c.y)), a, any(d) ? 1.0 : 0.0, 1.0)"));
+    add("matrices", frag("", "    let m2 = float2x2(1.0)\n    let m3 = float3x3(2.0)\n    let m4 = float4x4(1.0)\n    let m43 = float4x3(1.0)\n    let v = m43 * float4(1.0)\n    f_color = m4 * float4(m3 * float3(m2 * float2(1.0), 1.0) + v, 1.0) * determinant(m3) + float4(transpose(m4)[1])"));
+    add("structs", frag("struct S {\n    a : float3\n    b : int\n}\ndef make(x : float) : S {\n    return S(float3(x), 2)\n}", "    var s = make(0.5)\n    s.b += 1\n    f_color = float4(s.a, float(s.b))"));
+    add("fixed-arrays", frag("var @uniform u_i : int", "    var a : float[4]\n    a[u_i] = 1.0\n    let b = fixed_array<float>(1.0, 2.0)\n    f_color = float4(a[u_i & 3] + b[u_i & 1])"));
+    add("constant-arrays", frag("let K = fixed_array<float3>(float3(1.0), float3(0.5))\nvar @uniform u_i : int", "    f_color = float4(K[u_i], 1.0)"));
+    add("sampler-types", frag("var @uniform a : sampler2D\nvar @uniform b : sampler2DShadow\nvar @uniform c : sampler2DArray\nvar @uniform d : sampler2DArrayShadow\nvar @uniform e : sampler3D\nvar @uniform f : samplerCube\nvar @uniform g : samplerCubeShadow\nvar @uniform h : isampler2D\nvar @uniform i : usampler2D", "    let uv = float2(0.5)\n    let s = textureCompare(b, uv, 0.5) + textureCompare(d, float3(uv, 1.0), 0.5) + textureCompare(g, float3(1.0), 0.5)\n    let n = float(texelFetch(h, int2(0), 0).x) + float(texelFetch(i, int2(0), 0).x)\n    f_color = texture(a, uv) + texture(c, float3(uv, 1.0)) + texture(e, float3(0.5)) + texture(f, float3(1.0)) + float4(s + n)"));
+    add("sampler-arrays", frag("var @uniform @stage = 1 layers : sampler2D[3]", "    f_color = texture(layers[0], float2(0.5)) + texture(layers[2], float2(0.5))"));
+    add("sampler-arrays-dynamic", frag("var @uniform layers : sampler2D[3]\nvar @uniform u_i : int", "    f_color = texture(layers[u_i], float2(0.5))"));
+    add("sampler-parameters", frag("var @uniform t : sampler2D\ndef get(s : sampler2D) : float4 {\n    return texture(s, float2(0.5))\n}", "    f_color = get(t)"));
+    // ---------------------------------------------------------------- uniforms
+    add("uniform-struct", frag("struct L {\n    dir : float3\n    k : float\n    color : float4\n}\nvar @uniform light : L", "    f_color = light.color * light.k + float4(light.dir, 0.0)"));
+    add("uniform-float3x3", frag("var @uniform u_n : float3x3", "    f_color = float4(u_n * float3(1.0), 1.0)"));
+    add("uniform-float4-array", frag("var @uniform u_k : float4[8]\nvar @uniform u_i : int", "    f_color = u_k[u_i]"));
+    add("uniform-struct-array", frag("struct L {\n    pos : float3\n    r : float\n}\nvar @uniform u_l : L[4]\nvar @uniform u_i : int", "    f_color = float4(u_l[u_i].pos, u_l[3].r)"));
+    add("uniform-scalar-array", frag("var @uniform u_w : float[4]", "    f_color = float4(u_w[0])"));
+    add("uniform-bool", frag("var @uniform u_b : bool", "    f_color = float4(u_b ? 1.0 : 0.0)"));
+    add("uniform-float2x2", frag("var @uniform u_m : float2x2", "    f_color = float4(u_m[0], u_m[1])"));
+    add("uniform-unpadded-nested-struct", frag("struct In {\n    a : float\n}\nstruct Out {\n    i : In\n    b : float\n}\nvar @uniform u : Out", "    f_color = float4(u.i.a + u.b)"));
+    // ---------------------------------------------------------------- statements
+    add("let-var", frag("", "    let a = 1.0\n    var b : float\n    var c, d = 2.0\n    b = a + c + d\n    f_color = float4(b)"));
+    add("assignment-operators", frag("var @uniform u_i : int", "    var x = u_i\n    x += 1\n    x -= 2\n    x *= 3\n    x /= 2\n    x %= 5\n    x &= 7\n    x |= 8\n    x ^= 1\n    x <<= 2\n    x >>= 1\n    x++\n    x--\n    var v = float3(1.0)\n    v.xz *= 2.0\n    f_color = float4(v, float(x))"));
+    add("control-flow", frag("var @uniform u_i : int", "    var s = 0.0\n    if (u_i == 0) {\n        s = 1.0\n    } elif (u_i == 1) {\n        s = 2.0\n    } else {\n        s = 3.0\n    }\n    var k = 0\n    while (k < 10) {\n        k++\n        if (k == 3) {\n            continue\n        }\n        if (k > u_i) {\n            break\n        }\n    }\n    for (i in range(4)) {\n        s += float(i)\n    }\n    for (j in range(2, u_i)) {\n        s += float(j)\n    }\n    f_color = float4(s + float(k))"));
+    add("discard", frag("var @uniform u_a : float", "    if (u_a < 0.5) {\n        discard()\n    }\n    f_color = float4(u_a)"));
+    add("discard-in-vertex", vert("", "    discard()"));
+    add("recursion", frag("def f(x : int) : int {\n    return x > 0 ? f(x - 1) : 0\n}", "    f_color = float4(float(f(3)))"));
+    // ---------------------------------------------------------------- expressions
+    add("arithmetic", frag("var @uniform u_v : float3", "    let a = u_v * 2.0 + u_v / float3(3.0) - float3(1.0)\n    f_color = float4(-a, 1.0)"));
+    add("integer-division-remainder", frag("var @uniform u_i : int", "    let q = u_i / -3\n    let r = u_i % -3\n    f_color = float4(float(q), float(r), 0.0, 1.0)"));
+    add("float-remainder", frag("var @uniform u_x : float", "    f_color = float4(u_x % 2.0, mod(u_x, 3.0), -7.5 % 2.0, 1.0)"));
+    add("comparison-logic", frag("var @uniform u_x : float", "    let a = u_x < 1.0 && !(u_x >= 3.0) || u_x == 2.0 ^^ u_x != 4.0\n    let v = float2(u_x) == float2(1.0)\n    f_color = float4(a ? 1.0 : 0.0, v ? 1.0 : 0.0, 0.0, 1.0)"));
+    add("bitwise-shifts", frag("var @uniform u_i : int3\nvar @uniform u_u : uint", "    let a = (u_i & int3(3)) | ~u_i ^ (u_i << int3(1)) >> int3(2)\n    let b = (u_u << 3) >> 1u\n    f_color = float4(float3(a), float(b))"));
+    add("ternary-scalar-condition", frag("var @uniform u_x : float", "    f_color = u_x > 0.5 ? float4(1.0) : float4(0.0)"));
+    add("ternary-vector-float", frag("var @uniform u_v : float4", "    f_color = greaterThan(u_v, float4(0.5)) ? u_v : float4(0.0)"));
+    add("ternary-vector-int-bool", frag("var @uniform u_v : int4", "    let c = lessThan(u_v, int4(0))\n    let n = c ? -u_v : u_v\n    let b = c ? not(c) : c\n    f_color = float4(n) + float4(float(any(b)))"));
+    add("swizzles", frag("var @uniform u_v : float4", "    var v = u_v.wzyx\n    v.xy = u_v.rg\n    v.z = u_v.p\n    f_color = v"));
+    add("matrix-dynamic-index", frag("var @uniform u_i : int", "    let m = float3x3(2.0)\n    var n = float4x4(1.0)\n    n[u_i] = float4(0.5)\n    f_color = float4(m[u_i], 1.0) + n[u_i]"));
+    add("constructors-casts", frag("var @uniform u_i : int2", "    let a = float2(u_i.x, u_i.y)\n    let b = float4(a, 1.0, 2.0)\n    let c = float3(b)\n    let d = int(c.x) + int(uint(u_i.y))\n    f_color = float4(c, float(d))"));
+    add("non-finite-constant", frag("let K = 1.0 / 0.0", "    f_color = float4(K)"));
+    add("implicit-conversion", frag("var @uniform u_x : float", "    f_color = float4(u_x * 2)"));
+    // ---------------------------------------------------------------- builtins
+    add("math-builtins", frag("var @uniform u_x : float3", "    let a = sin(u_x) + cos(u_x) + tan(u_x) + asin(u_x) + acos(u_x) + atan(u_x) + atan2(u_x, u_x) + sinh(u_x) + cosh(u_x) + tanh(u_x)\n    let b = radians(u_x) + degrees(u_x) + exp(u_x) + exp2(u_x) + log(u_x) + log2(u_x) + sqrt(u_x) + inversesqrt(u_x) + rsqrt(u_x)\n    let c = floor(u_x) + ceil(u_x) + fract(u_x) + trunc(u_x) + round(u_x) + roundEven(u_x) + abs(u_x) + sign(u_x) + min(u_x, 0.5) + max(u_x, u_x) + clamp(u_x, 0.0, 1.0)\n    let d = mix(u_x, a, 0.5) + lerp(a, b, c) + step(0.5, u_x) + smoothstep(0.0, 1.0, u_x) + pow(u_x, b) + mod(u_x, 2.0) + fma(a, b, c) + saturate(u_x) + rcp(u_x)\n    let e = length(u_x) + distance(u_x, a) + dot(u_x, b)\n    let f = cross(a, b) + normalize(u_x) + reflect(u_x, b) + refract(u_x, b, 0.5) + faceforward(a, b, c)\n    let g = all(lessThanEqual(a, b)) && !any(equal(a, b)) || any(notEqual(a, c)) || all(greaterThanEqual(b, c)) || any(greaterThan(a, c))\n    f_color = float4(d + f + float3(e), g ? 1.0 : 0.0)"));
+    add("integer-builtins", frag("var @uniform u_i : int2", "    let a = abs(u_i) + sign(u_i) + min(u_i, 3) + max(u_i, int2(1)) + clamp(u_i, 0, 5)\n    f_color = float4(float2(a), 0.0, 1.0)"));
+    add("bit-casts", frag("var @uniform u_x : float2", "    let a = floatBitsToInt(u_x)\n    let b = floatBitsToUint(u_x.x)\n    f_color = float4(intBitsToFloat(a), uintBitsToFloat(b), 1.0)"));
+    add("derivatives", frag("var @uniform u_x : float", "    let v = float2(u_x)\n    f_color = float4(dFdx(v), dFdy(u_x), fwidth(u_x))"));
+    add("derivatives-in-vertex", vert("var @uniform u_x : float\nvar @inout v_x : float", "    v_x = dFdx(u_x)"));
+    add("texture-functions", frag("var @uniform t : sampler2D\nvar @uniform s : sampler2DShadow\nvar @inout v_uv : float2", "    let a = texture(t, v_uv) + texture(t, v_uv, 1.0) + textureLod(t, v_uv, 2.0) + textureGrad(t, v_uv, dFdx(v_uv), dFdy(v_uv))\n    let b = textureProj(t, float3(v_uv, 2.0)) + textureProj(t, float4(v_uv, 0.0, 2.0)) + texelFetch(t, int2(1), 0)\n    let c = textureCompare(s, v_uv, 0.5) + textureProj(s, float4(v_uv, 0.5, 1.0))\n    let d = textureSize(t, 0)\n    f_color = a + b + float4(c + float(d.x))"));
+    add("texture-in-vertex", vert("var @uniform t : sampler2D\nvar @uniform s : sampler2DShadow\nvar @inout v_x : float", "    v_x = texture(t, float2(0.5)).x + texture(t, float2(0.5), 1.0).y + textureCompare(s, float2(0.5), 0.5)"));
+    add("nonuniform-sampling", frag("var @uniform t : sampler2D\nvar @inout v_uv : float2", "    if (v_uv.x < 0.5) {\n        discard()\n    }\n    var c = float4(0.0)\n    while (c.x < 1.0) {\n        c += texture(t, v_uv + c.xy)\n    }\n    f_color = c"));
+    add("inverse", frag("var @uniform u_m : float4x4", "    f_color = inverse(u_m)[0]"));
+    add("isnan-isinf", frag("var @uniform u_x : float", "    f_color = float4(isnan(u_x) ? 1.0 : 0.0)"));
+    add("textureOffset", frag("var @uniform t : sampler2D", "    f_color = textureOffset(t, float2(0.5), int2(1, 0))"));
+    add("unknown-builtin", frag("", "    f_color = float4(normalise(float3(1.0)), 1.0)"));
+    // ---------------------------------------------------------------- builtin variables
+    add("gl_Position-gl_VertexID-gl_InstanceID", "[vertex_program]\ndef vs {\n    gl_Position = float4(float(gl_VertexID), float(gl_InstanceID), float(gl_VertexIndex + gl_InstanceIndex), 1.0)\n}\n".to_string());
+    add("gl_FragCoord-gl_FrontFacing-gl_FragDepth", frag("", "    gl_FragDepth = gl_FragCoord.z\n    f_color = gl_FrontFacing ? float4(1.0) : gl_FragCoord"));
+    add("gl_PointSize", vert("var @uniform u_s : float", "    gl_PointSize = u_s"));
+    add("gl_PointCoord", frag("", "    f_color = float4(gl_PointCoord, 0.0, 1.0)"));
+    add("builtin-in-wrong-stage", frag("", "    f_color = float4(float(gl_VertexID))"));
+    // ---------------------------------------------------------------- interface
+    add("attributes-varyings-locations", "var @in @location = 3 a_pos : float3\nvar @in a_uv : float2\nvar @inout v_uv : float2\nvar @inout @location = 2 v_id : int\nvar @out f_color : float4\n[vertex_program(name = \"main_vs\")]\ndef v {\n    v_uv = a_uv\n    v_id = 1\n    gl_Position = float4(a_pos, 1.0)\n}\n[fragment_program]\ndef fs {\n    f_color = float4(v_uv, float(v_id), 1.0)\n}\n".to_string());
+    add("multiple-render-targets", "var @out @location = 0 g0 : float4\nvar @out @location = 1 g1 : float4\nvar @out @location = 2 g2 : uint4\n[fragment_program]\ndef fs {\n    g0 = float4(1.0)\n    g1 = float4(0.5)\n    g2 = uint4(1u)\n}\n".to_string());
+    add("vertex-out", vert("var @out @location = 1 o_pos : float3\nvar @out @location = 2 o_id : int", "    o_pos = float3(1.0)\n    o_id = gl_VertexID"));
+    add("location-clash", vert("var @inout @location = 1 v_a : float\nvar @out @location = 1 o_b : float", "    v_a = 1.0\n    o_b = 2.0"));
+    add("texture-units", frag("var @uniform @stage = 3 a : sampler2D\nvar @uniform b : sampler2D", "    f_color = texture(a, float2(0.5)) + texture(b, float2(0.5))"));
+    m
+}
+
+/// Extra properties of some outputs: (snippet, target, file suffix, text
+/// that must or must not appear).
+const NEEDLES: &[(&str, Target, &str, &str, bool)] = &[
+    ("ternary-vector-int-bool", Target::Glsl330, ".330.frag", "mix(", false),
+    ("ternary-vector-int-bool", Target::Gles300, ".300es.frag", "mix(", false),
+    ("ternary-vector-float", Target::Glsl330, ".330.frag", "mix(", true),
+    ("integer-division-remainder", Target::Glsl330, ".330.frag", "%", false),
+    ("sampler-arrays", Target::Glsl330, ".330.frag", "uniform sampler2D layers_2;", true),
+    ("sampler-arrays-dynamic", Target::Wgsl, ".wgsl", "switch", true),
+    ("texture-in-vertex", Target::Glsl330, ".330.vert", "textureLod(t", true),
+    ("texture-in-vertex", Target::Wgsl, ".wgsl", "textureSampleLevel(t", true),
+    ("gl_PointSize", Target::Glsl330, ".330.vert", "gl_PointSize =", true),
+    ("gl_PointSize", Target::Wgsl, ".wgsl", "point", false),
+    ("gl_PointCoord", Target::Glsl330, ".330.frag", "gl_PointCoord", true),
+    ("gl_PointCoord", Target::Wgsl, ".wgsl", "vec2(0.5f)", true),
+    ("nonuniform-sampling", Target::Wgsl, ".wgsl", "diagnostic(off, derivative_uniformity);", true),
+    ("matrix-dynamic-index", Target::Wgsl, ".wgsl", "var local", true),
+];
+
+#[derive(Debug, PartialEq)]
+enum Status {
+    Yes,
+    Lowered,
+    No,
+}
+
+struct Row {
+    id: String,
+    cells: Vec<Status>,
+}
+
+const COLUMNS: [Target; 4] = [Target::Glsl330, Target::Gles300, Target::Wgsl, Target::Spirv];
+
+fn rows() -> Vec<Row> {
+    let doc = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/features.md")).expect("docs/features.md exists");
+    let mut rows = Vec::new();
+    for line in doc.lines() {
+        // Split on `|`, but not on the escaped `\|` inside cells.
+        let masked = line.trim().replace("\\|", "\u{1}");
+        let cells: Vec<String> = masked.trim_matches('|').split('|').map(|c| c.trim().replace('\u{1}', "|")).collect();
+        if !line.trim_start().starts_with("| `") || cells.len() < 6 {
+            continue;
+        }
+        let id = cells[0].trim_matches('`').to_string();
+        let status = |c: &str| match c {
+            "yes" => Status::Yes,
+            "lowered" => Status::Lowered,
+            "no" => Status::No,
+            other => panic!("row `{id}`: unknown status `{other}` (yes, lowered, no)"),
+        };
+        rows.push(Row { id: id.clone(), cells: cells[2..6].iter().map(|c| status(c.as_str())).collect() });
+    }
+    rows
+}
+
+#[test]
+fn feature_matrix_matches_the_compiler() {
+    let snippets = snippets();
+    let rows = rows();
+    let ids: Vec<&str> = rows.iter().map(|r| r.id.as_str()).collect();
+    for id in snippets.keys() {
+        assert!(ids.contains(id), "snippet `{id}` has no row in docs/features.md");
+    }
+    let mut failures = Vec::new();
+    for row in &rows {
+        let Some(src) = snippets.get(row.id.as_str()) else {
+            failures.push(format!("docs/features.md row `{}` has no snippet in tests/features.rs", row.id));
+            continue;
+        };
+        for (target, status) in COLUMNS.iter().zip(&row.cells) {
+            let opts = umbrac::Options { targets: vec![*target], ..Default::default() };
+            let c = umbrac::compile_source(&format!("{}.das", row.id), src, &opts);
+            let bug = c.diagnostics.iter().any(|d| d.severity == umbrac::Severity::Bug);
+            if bug {
+                failures.push(format!("`{}` on {}: internal error:\n{}", row.id, target.name(), c.render_diagnostics()));
+                continue;
+            }
+            match (status, &c.result) {
+                (Status::No, None) => {}
+                (Status::No, Some(_)) => failures.push(format!("`{}` on {}: the matrix says `no`, but it compiles", row.id, target.name())),
+                (_, None) => failures.push(format!("`{}` on {}: the matrix says it compiles, but:\n{}", row.id, target.name(), c.render_diagnostics())),
+                (_, Some(compiled)) => {
+                    let dir = tempfile::tempdir().unwrap();
+                    support::write_all(dir.path(), &compiled.artifacts);
+                    support::validate_dir(dir.path(), &compiled.reflection);
+                    for (id, t, suffix, needle, present) in NEEDLES {
+                        if *id != row.id || t != target {
+                            continue;
+                        }
+                        let text: String = compiled.artifacts.iter().filter(|a| a.file_name.ends_with(suffix)).map(|a| a.text().into_owned()).collect();
+                        if text.contains(needle) != *present {
+                            failures.push(format!("`{id}` on {}: output {} `{needle}`:\n{text}", t.name(), if *present { "lacks" } else { "contains" }));
+                        }
+                    }
+                }
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n\n"));
+}
+
+/// Prints the first error of every `no` row (run with --nocapture when
+/// editing the matrix, to see that each fails for the documented reason).
+#[test]
+fn refusals_say_why() {
+    let snippets = snippets();
+    for row in rows().iter().filter(|r| r.cells.iter().all(|c| *c == Status::No)) {
+        let c = umbrac::compile_source("x.das", &snippets[row.id.as_str()], &Default::default());
+        let first = c.diagnostics.iter().find(|d| d.is_error()).map(|d| d.message.clone()).unwrap_or_default();
+        eprintln!("{}: {first}", row.id);
+        assert!(!first.is_empty(), "`{}` fails without an error", row.id);
+    }
+}

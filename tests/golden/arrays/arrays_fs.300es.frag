@@ -1,0 +1,94 @@
+#version 300 es
+
+precision highp float;
+precision highp int;
+
+struct arrays_fs_out {
+    vec4 f_color;
+};
+const vec3 COLORS[3] = vec3[3](vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), vec3(0.0, 0.0, 1.0));
+const float WEIGHTS[5] = float[5](0.227027, 0.1945946, 0.1216216, 0.054054, 0.016216);
+
+layout(std140) uniform u_count_block { int u_count; };
+
+int v_id = 0;
+
+vec4 f_color = vec4(0.0);
+
+flat in int _vs2fs_location1;
+layout(location = 0) out vec4 _fs2p_location0;
+
+float sum_first(int n) {
+    float acc[5] = float[5](0.0, 0.0, 0.0, 0.0, 0.0);
+    int i = 0;
+    float s = 0.0;
+    int i_1 = 0;
+    acc = float[5](0.0, 0.0, 0.0, 0.0, 0.0);
+    i = 0;
+    bool loop_init = true;
+    while(true) {
+        if (!loop_init) {
+            int _e23 = i;
+            i = (_e23 + 1);
+        }
+        loop_init = false;
+        int _e6 = i;
+        if (!((_e6 < 5))) {
+            break;
+        }
+        int _e11 = i;
+        int _e15 = i;
+        int _e18 = i;
+        acc[_e11] = (WEIGHTS[_e15] * float((_e18 + 1)));
+    }
+    s = 0.0;
+    i_1 = 0;
+    bool loop_init_1 = true;
+    while(true) {
+        if (!loop_init_1) {
+            int _e43 = i_1;
+            i_1 = (_e43 + 1);
+        }
+        loop_init_1 = false;
+        int _e32 = i_1;
+        if (!((_e32 < min(n, 5)))) {
+            break;
+        }
+        int _e38 = i_1;
+        float _e40 = acc[_e38];
+        float _e41 = s;
+        s = (_e41 + _e40);
+    }
+    float _e47 = s;
+    return _e47;
+}
+
+void main() {
+    int in_v_id = _vs2fs_location1;
+    mat3x3 local = mat3x3(0.0);
+    ivec2 grid[2] = ivec2[2](ivec2(0), ivec2(0));
+    mat2x2 m = mat2x2(0.0);
+    v_id = in_v_id;
+    mat3x3 basis = mat3x3(COLORS[0], COLORS[1], COLORS[2]);
+    int _e10 = v_id;
+    local = basis;
+    vec3 col = local[(_e10 - (3 * (_e10 / 3)))];
+    grid = ivec2[2](ivec2(0), ivec2(0));
+    int _e22 = v_id;
+    int _e27 = v_id;
+    int _e29 = v_id;
+    grid[(_e22 & 1)] = ivec2(_e27, -(_e29));
+    ivec2 g = grid[1];
+    m = mat2x2(vec2(1.0, 0.0), vec2(0.0, 1.0));
+    int _e43 = u_count;
+    m[(_e43 & 1)] = vec2(0.5);
+    int _e51 = u_count;
+    float _e52 = sum_first(_e51);
+    vec2 _e58 = m[1];
+    f_color = vec4(((col * _e52) + vec3(float(g.x), _e58)), 1.0);
+    vec4 _e64 = f_color;
+    arrays_fs_out _tmp_return = arrays_fs_out(_e64);
+    _fs2p_location0 = _tmp_return.f_color;
+    return;
+}
+

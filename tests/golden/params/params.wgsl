@@ -1,0 +1,81 @@
+diagnostic(off, derivative_uniformity);
+
+struct Ray {
+    origin: vec3<f32>,
+    dir: vec3<f32>,
+}
+
+struct params_vs_out {
+    @builtin(position) gl_Position: vec4<f32>,
+    @location(0) v_uv: vec2<f32>,
+}
+
+struct params_fs_out {
+    @location(0) f_color: vec4<f32>,
+}
+
+var<private> a_pos: vec2<f32>;
+var<private> v_uv: vec2<f32>;
+var<private> f_color: vec4<f32>;
+var<private> gl_Position: vec4<f32>;
+
+fn along(r: Ray, t: f32) -> vec3<f32> {
+    return (r.origin + (r.dir * t));
+}
+
+fn total(xs: array<f32, 4>, n: i32) -> f32 {
+    var s: f32;
+    var i: i32;
+    var j: i32;
+
+    s = 0f;
+    i = i32();
+    j = i32();
+    loop {
+        let _e9 = i;
+        if !((_e9 < n)) {
+            break;
+        }
+        let _e14 = i;
+        let _e16 = s;
+        s = (_e16 + xs[_e14]);
+        let _e20 = i;
+        i = (_e20 + 1i);
+        let _e24 = j;
+        j = (_e24 - 1i);
+    }
+    let _e27 = s;
+    let _e29 = j;
+    return (_e27 + (f32(_e29) * 0f));
+}
+
+fn blend(a: vec3<f32>, b: vec3<f32>, t_1: f32, uv: vec2<f32>) -> vec3<f32> {
+    return (mix(a, b, vec3(t_1)) * vec3<f32>(uv, 1f));
+}
+
+@vertex 
+fn params_vs(@location(0) in_a_pos: vec2<f32>) -> params_vs_out {
+    a_pos = in_a_pos;
+    let _e4 = a_pos;
+    v_uv = _e4;
+    let _e7 = a_pos;
+    gl_Position = vec4<f32>(_e7, 0f, 1f);
+    let _e12 = gl_Position;
+    let _e23 = v_uv;
+    return params_vs_out(vec4<f32>(_e12.x, -(_e12.y), ((_e12.z + _e12.w) * 0.5f), _e12.w), _e23);
+}
+
+@fragment 
+fn params_fs(@location(0) in_v_uv: vec2<f32>) -> params_fs_out {
+    v_uv = in_v_uv;
+    let _e5 = v_uv;
+    let r_1 = Ray(vec3(0f), normalize(vec3<f32>(_e5, -(1f))));
+    let xs_1 = array<f32, 4>(0.1f, 0.2f, 0.3f, 0.4f);
+    let _e17 = along(r_1, 2f);
+    let _e23 = total(xs_1, 3i);
+    let _e25 = v_uv;
+    let _e26 = blend(_e17, vec3<f32>(1f, 0.5f, 0f), _e23, _e25);
+    f_color = vec4<f32>(_e26, 1f);
+    let _e31 = f_color;
+    return params_fs_out(_e31);
+}

@@ -1,0 +1,69 @@
+#version 300 es
+
+precision highp float;
+precision highp int;
+
+struct Ray {
+    vec3 origin;
+    vec3 dir;
+};
+struct params_fs_out {
+    vec4 f_color;
+};
+vec2 v_uv = vec2(0.0);
+
+vec4 f_color = vec4(0.0);
+
+smooth in vec2 _vs2fs_location0;
+layout(location = 0) out vec4 _fs2p_location0;
+
+vec3 along(Ray r, float t) {
+    return (r.origin + (r.dir * t));
+}
+
+float total(float xs[4], int n) {
+    float s = 0.0;
+    int i = 0;
+    int j = 0;
+    s = 0.0;
+    i = 0;
+    j = 0;
+    while(true) {
+        int _e9 = i;
+        if (!((_e9 < n))) {
+            break;
+        }
+        int _e14 = i;
+        float _e16 = s;
+        s = (_e16 + xs[_e14]);
+        int _e20 = i;
+        i = (_e20 + 1);
+        int _e24 = j;
+        j = (_e24 - 1);
+    }
+    float _e27 = s;
+    int _e29 = j;
+    return (_e27 + (float(_e29) * 0.0));
+}
+
+vec3 blend(vec3 a, vec3 b, float t_1, vec2 uv) {
+    return (mix(a, b, vec3(t_1)) * vec3(uv, 1.0));
+}
+
+void main() {
+    vec2 in_v_uv = _vs2fs_location0;
+    v_uv = in_v_uv;
+    vec2 _e5 = v_uv;
+    Ray r_1 = Ray(vec3(0.0), normalize(vec3(_e5, -(1.0))));
+    float xs_1[4] = float[4](0.1, 0.2, 0.3, 0.4);
+    vec3 _e17 = along(r_1, 2.0);
+    float _e23 = total(xs_1, 3);
+    vec2 _e25 = v_uv;
+    vec3 _e26 = blend(_e17, vec3(1.0, 0.5, 0.0), _e23, _e25);
+    f_color = vec4(_e26, 1.0);
+    vec4 _e31 = f_color;
+    params_fs_out _tmp_return = params_fs_out(_e31);
+    _fs2p_location0 = _tmp_return.f_color;
+    return;
+}
+

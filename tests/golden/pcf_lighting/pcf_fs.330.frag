@@ -1,0 +1,96 @@
+#version 330 core
+struct pcf_fs_out {
+    vec4 f_color;
+};
+const int PCF_RADIUS = 2;
+
+layout(std140) uniform u_light_dir_block { vec3 u_light_dir; };
+
+layout(std140) uniform u_color_block { vec4 u_color; };
+
+uniform sampler2DShadow shadow_map;
+
+vec3 v_normal = vec3(0.0);
+
+vec4 v_light_pos = vec4(0.0);
+
+vec4 f_color = vec4(0.0);
+
+smooth in vec3 _vs2fs_location0;
+smooth in vec4 _vs2fs_location1;
+layout(location = 0) out vec4 _fs2p_location0;
+
+float pcf_5x5_(vec3 coord, float bias) {
+    float lit = 0.0;
+    int y = 0;
+    int x = 0;
+    vec2 texel = (vec2(1.0) / vec2(ivec2(uvec2(textureSize(shadow_map, 0).xy))));
+    lit = 0.0;
+    y = -(PCF_RADIUS);
+    bool loop_init = true;
+    while(true) {
+        if (!loop_init) {
+            int _e51 = y;
+            y = (_e51 + 1);
+        }
+        loop_init = false;
+        int _e18 = y;
+        if (!((_e18 < (PCF_RADIUS + 1)))) {
+            break;
+        }
+        x = -(PCF_RADIUS);
+        bool loop_init_1 = true;
+        while(true) {
+            if (!loop_init_1) {
+                int _e48 = x;
+                x = (_e48 + 1);
+            }
+            loop_init_1 = false;
+            int _e27 = x;
+            if (!((_e27 < (PCF_RADIUS + 1)))) {
+                break;
+            }
+            int _e31 = x;
+            int _e34 = y;
+            vec2 offset = (vec2(float(_e31), float(_e34)) * texel);
+            float _e45 = texture(shadow_map, vec3((coord.xy + offset), (coord.z - bias)));
+            float _e46 = lit;
+            lit = (_e46 + _e45);
+        }
+    }
+    int n = ((2 * PCF_RADIUS) + 1);
+    float _e60 = lit;
+    return (_e60 / float((n * n)));
+}
+
+void main() {
+    vec3 in_v_normal = _vs2fs_location0;
+    vec4 in_v_light_pos = _vs2fs_location1;
+    float shadow = 0.0;
+    v_normal = in_v_normal;
+    v_light_pos = in_v_light_pos;
+    vec3 _e5 = v_normal;
+    vec3 n_1 = normalize(_e5);
+    vec3 _e8 = u_light_dir;
+    vec3 l = normalize(-(_e8));
+    float ndotl = max(dot(n_1, l), 0.0);
+    vec4 _e15 = v_light_pos;
+    float _e19 = v_light_pos.w;
+    vec3 coord_1 = (((_e15.xyz / vec3(_e19)) * 0.5) + vec3(0.5));
+    shadow = 1.0;
+    if ((coord_1.z <= 1.0)) {
+        float bias_1 = max((0.005 * (1.0 - ndotl)), 0.0005);
+        float edge = min(min(coord_1.x, coord_1.y), min((1.0 - coord_1.x), (1.0 - coord_1.y)));
+        float _e51 = pcf_5x5_(coord_1, bias_1);
+        shadow = mix(1.0, _e51, clamp((edge * 20.0), 0.0, 1.0));
+    }
+    vec4 _e58 = u_color;
+    float _e64 = shadow;
+    float _e70 = u_color.w;
+    f_color = vec4((_e58.xyz * (0.15 + ((0.85 * ndotl) * _e64))), _e70);
+    vec4 _e73 = f_color;
+    pcf_fs_out _tmp_return = pcf_fs_out(_e73);
+    _fs2p_location0 = _tmp_return.f_color;
+    return;
+}
+
