@@ -101,6 +101,13 @@ pub struct RenderArgs {
     /// print their pairwise differences and write OUT.CONSUMER.png for each.
     #[arg(long, conflicts_with_all = ["reference", "compare", "frames"])]
     pub compare_backends: bool,
+    /// A shadow technique scene instead of the tutorial's (docs/gallery.md):
+    /// spot, pcf, cascades, proj, cull, rgba8-depth.
+    #[arg(long, value_name = "NAME", conflicts_with_all = ["file", "compare_backends", "reflection"])]
+    pub scene: Option<String>,
+    /// Taps of the pcf scene's offset table: 1, 2, 4 or 9.
+    #[arg(long, value_name = "N", default_value_t = 9)]
+    pub pcf_taps: u32,
 }
 
 fn parse_size(s: &str) -> Result<(u32, u32), String> {
@@ -192,6 +199,9 @@ pub fn load_program_with(
 }
 
 fn execute(args: &RenderArgs) -> Result<(), String> {
+    if args.scene.is_some() {
+        return super::techniques::cli::run(args);
+    }
     let (width, height) = args.size;
     let mut params = FrameParams::new(args.time, width, height);
     params.shadow_size = args.shadow_size;

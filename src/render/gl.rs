@@ -218,6 +218,13 @@ impl GlRenderer {
         format!("{}, {}", self.renderer, self.version)
     }
 
+    /// The context, made current on this thread, for hosts of other scenes
+    /// (`render::techniques`).
+    pub fn context(&self) -> Result<&glow::Context, GlError> {
+        self.current()?;
+        Ok(&self.gl)
+    }
+
     fn current(&self) -> Result<(), GlError> {
         self.egl
             .make_current(self.display, None, None, Some(self.context))

@@ -323,6 +323,11 @@ impl Renderer {
         format!("{} ({}{})", i.name, i.driver, if i.driver_info.is_empty() { String::new() } else { format!(" {}", i.driver_info) })
     }
 
+    /// The device and queue, for hosts of other scenes (`techniques`).
+    pub fn device(&self) -> (&wgpu::Device, &wgpu::Queue) {
+        (&self.device, &self.queue)
+    }
+
     /// Whether this device takes SPIR-V unchanged.
     pub fn supports_passthrough(&self) -> bool {
         self.device.features().contains(wgpu::Features::PASSTHROUGH_SHADERS)

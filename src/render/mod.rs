@@ -32,6 +32,7 @@ pub mod reference;
 pub mod scene;
 pub mod setup;
 mod setup_gpu;
+pub mod techniques;
 pub mod webgl;
 
 #[cfg(feature = "cli")]

@@ -33,14 +33,14 @@ pub fn render(params: &FrameParams) -> RgbaImage {
 }
 
 /// What a ray hit.
-struct Hit {
-    t: f64,
-    pos: DVec3,
-    normal: DVec3,
-    floor: bool,
+pub(crate) struct Hit {
+    pub(crate) t: f64,
+    pub(crate) pos: DVec3,
+    pub(crate) normal: DVec3,
+    pub(crate) floor: bool,
 }
 
-struct Scene {
+pub(crate) struct Scene {
     model: DMat4,
     inv_model: DMat4,
     /// The floor: its height, centre (x, z) and half side in world units.
@@ -50,7 +50,7 @@ struct Scene {
 }
 
 impl Scene {
-    fn new(frame: &Frame) -> Scene {
+    pub(crate) fn new(frame: &Frame) -> Scene {
         let model = frame.cube_model.as_dmat4();
         let fm = frame.floor_model.as_dmat4();
         let c = fm.transform_point3(DVec3::ZERO);
@@ -59,7 +59,7 @@ impl Scene {
     }
 
     /// Nearest entry into the cube along `o + t d`, t > `min_t`.
-    fn cube(&self, o: DVec3, d: DVec3, min_t: f64) -> Option<(f64, DVec3)> {
+    pub(crate) fn cube(&self, o: DVec3, d: DVec3, min_t: f64) -> Option<(f64, DVec3)> {
         let oo = self.inv_model.transform_point3(o);
         let dd = self.inv_model.transform_vector3(d);
         let (mut t0, mut t1) = (f64::NEG_INFINITY, f64::INFINITY);
@@ -101,7 +101,7 @@ impl Scene {
         (t > min_t && (p.x - self.floor_centre.0).abs() <= h && (p.z - self.floor_centre.1).abs() <= h).then_some(t)
     }
 
-    fn cast(&self, o: DVec3, d: DVec3) -> Option<Hit> {
+    pub(crate) fn cast(&self, o: DVec3, d: DVec3) -> Option<Hit> {
         let cube = self.cube(o, d, 0.0).map(|(t, n)| Hit { t, pos: o + d * t, normal: n, floor: false });
         let floor = self.floor(o, d, 0.0).map(|t| Hit { t, pos: o + d * t, normal: DVec3::Y, floor: true });
         match (cube, floor) {

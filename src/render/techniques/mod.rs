@@ -1,0 +1,308 @@
+//! The classic shadow techniques as scenes the runner renders: each is a DSL
+//! program under `shaders/techniques/` plus the host state it needs (light
+//! matrices, one or three shadow targets of depth or RGBA8, culling, bias),
+//! drawn on wgpu ([`wgpu_host`]) and on the GL 3.3 / GLES 3.0 consumer
+//! ([`gl_host`]), and checked against a CPU ray-cast reference
+//! ([`reference`]) with exact visibility from the same light.
+//!
+//! The meshes, camera, cube motion and sun direction are the tutorial
+//! scene's ([`super::scene`]). What differs per technique is here, and what
+//! each program binds comes from its reflection, by name.
+
+#[cfg(feature = "cli")]
+pub mod cli;
+pub mod reference;
+pub mod wgpu_host;
+#[cfg(feature = "gl")]
+pub mod gl_host;
+
+use std::path::{Path, PathBuf};
+
+use glam::camera::rh::proj::opengl;
+use glam::camera::rh::view::look_at_mat4;
+use glam::{Mat4, Vec3};
+
+use crate::emit::reflect_types::{Reflection, Sampler};
+
+use super::scene::{self, Frame, FrameParams, Object};
+
+/// One technique scene.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Technique {
+    /// A spot light, perspective shadow map, manual compare on a sampler2D.
+    Spot,
+    /// The sun with a table-driven PCF (`taps` = 1, 2, 4 or 9).
+    Pcf { taps: u32 },
+    /// The sun with three cascade maps picked by light-space bounds.
+    Cascades,
+    /// The sun through a bias matrix and `textureProj`.
+    Proj,
+    /// The sun with front faces culled in the shadow pass and no bias.
+    Cull,
+    /// Depth encoded into an RGBA8 colour target.
+    Rgba8Depth,
+}
+
+/// What the shadow pass renders into.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ShadowTarget {
+    /// A Depth32Float texture, sampled as depth.
+    Depth,
+    /// An RGBA8 colour texture holding encoded depth (plus a depth buffer).
+    Rgba8,
+}
+
+/// The technique scene's sun box: larger than the tutorial's so that the
+/// whole floor is inside the map (no clamped-edge lookups to excuse).
+pub const SUN_BOX: f32 = 7.5;
+pub const SUN_DISTANCE: f32 = 10.0;
+pub const SUN_NEAR: f32 = 0.1;
+pub const SUN_FAR: f32 = 25.0;
+/// Half-extents of the three cascades' boxes, finest first.
+pub const CASCADE_BOXES: [f32; 3] = [2.0, 4.0, SUN_BOX];
+/// The spot light: full field of view of its shadow map, near and far.
+pub const SPOT_FOV_DEG: f32 = 75.0;
+pub const SPOT_NEAR: f32 = 1.0;
+pub const SPOT_FAR: f32 = 20.0;
+/// Cone cosines, as in `spot_light.das`.
+pub const SPOT_COS_INNER: f32 = 0.9063;
+pub const SPOT_COS_OUTER: f32 = 0.8480;
+pub const SPOT_SHADOW_FACTOR: f32 = 0.5;
+
+impl Technique {
+    pub const ALL: [Technique; 6] =
+        [Technique::Spot, Technique::Pcf { taps: 9 }, Technique::Cascades, Technique::Proj, Technique::Cull, Technique::Rgba8Depth];
+
+    /// The `--scene` name.
+    pub fn name(self) -> &'static str {
+        match self {
+            Technique::Spot => "spot",
+            Technique::Pcf { .. } => "pcf",
+            Technique::Cascades => "cascades",
+            Technique::Proj => "proj",
+            Technique::Cull => "cull",
+            Technique::Rgba8Depth => "rgba8-depth",
+        }
+    }
+
+    /// The program, relative to the repository root.
+    pub fn program(self) -> &'static str {
+        match self {
+            Technique::Spot => "shaders/techniques/spot_light.das",
+            Technique::Pcf { .. } => "shaders/techniques/pcf_table.das",
+            Technique::Cascades => "shaders/techniques/cascades.das",
+            Technique::Proj => "shaders/techniques/proj_lookup.das",
+            Technique::Cull => "shaders/techniques/cull_front.das",
+            Technique::Rgba8Depth => "shaders/techniques/rgba8_depth.das",
+        }
+    }
+
+    /// `-D` defines the program is compiled with.
+    pub fn defines(self) -> Vec<(String, Option<String>)> {
+        match self {
+            Technique::Pcf { taps } if taps != 9 => vec![(format!("PCF_TAPS_{taps}"), None)],
+            _ => Vec::new(),
+        }
+    }
+
+    pub fn layers(self) -> usize {
+        if self == Technique::Cascades {
+            3
+        } else {
+            1
+        }
+    }
+
+    pub fn target(self) -> ShadowTarget {
+        if self == Technique::Rgba8Depth {
+            ShadowTarget::Rgba8
+        } else {
+            ShadowTarget::Depth
+        }
+    }
+
+    /// Front faces culled in the shadow pass (and no depth bias there).
+    pub fn cull_front(self) -> bool {
+        self == Technique::Cull
+    }
+
+    /// The pipeline's polygon offset in the shadow pass. Off for culling
+    /// (not needed) and for the RGBA8 encoding (gl_FragCoord.z does not
+    /// include it on every API: the program biases instead).
+    pub fn depth_bias(self) -> bool {
+        !matches!(self, Technique::Cull | Technique::Rgba8Depth)
+    }
+
+    pub fn is_spot(self) -> bool {
+        self == Technique::Spot
+    }
+
+    /// Parses a `--scene` name (`pcf` takes the taps from `pcf_taps`).
+    pub fn parse(name: &str, pcf_taps: u32) -> Option<Technique> {
+        Some(match name {
+            "spot" => Technique::Spot,
+            "pcf" => Technique::Pcf { taps: pcf_taps },
+            "cascades" => Technique::Cascades,
+            "proj" => Technique::Proj,
+            "cull" => Technique::Cull,
+            "rgba8-depth" => Technique::Rgba8Depth,
+            _ => return None,
+        })
+    }
+
+    /// Compiles the program (found under the working directory, else under
+    /// the crate's own source tree).
+    pub fn compile(self) -> Result<crate::Compiled, String> {
+        let rel = Path::new(self.program());
+        let path: PathBuf = if rel.exists() { rel.to_path_buf() } else { Path::new(env!("CARGO_MANIFEST_DIR")).join(rel) };
+        let opts = crate::Options { defines: self.defines(), ..Default::default() };
+        let c = crate::compile_file(&path, &opts);
+        let failed = c.has_errors();
+        let diagnostics = c.render_diagnostics();
+        match c.result {
+            Some(compiled) if !failed => Ok(compiled),
+            _ => Err(format!("{} does not compile:\n{diagnostics}", path.display())),
+        }
+    }
+}
+
+/// A uniform value the technique host sets.
+#[derive(Clone, Debug, PartialEq)]
+pub enum Value {
+    Float(f32),
+    Vec3(Vec3),
+    Mat4(Mat4),
+    Mat4Array(Vec<Mat4>),
+}
+
+impl Value {
+    fn dsl_type(&self) -> String {
+        match self {
+            Value::Float(_) => "float".into(),
+            Value::Vec3(_) => "float3".into(),
+            Value::Mat4(_) => "float4x4".into(),
+            Value::Mat4Array(v) => format!("float4x4[{}]", v.len()),
+        }
+    }
+}
+
+/// Everything a technique frame computes on the host.
+#[derive(Clone, Debug)]
+pub struct TechFrame {
+    pub technique: Technique,
+    /// The tutorial scene's frame (camera, cube, sun direction); its
+    /// `light_vp` is replaced by the technique's map 0.
+    pub base: Frame,
+    /// Light view-projection per shadow layer.
+    pub layer_vp: Vec<Mat4>,
+    /// Spot light position and axis (spot only).
+    pub spot_pos: Vec3,
+    pub spot_dir: Vec3,
+}
+
+pub fn spot_position(t: f32) -> Vec3 {
+    let a = 0.4 * t + 0.8;
+    Vec3::new(3.2 * a.cos(), 4.8, 3.2 * a.sin())
+}
+
+pub fn spot_target() -> Vec3 {
+    Vec3::new(0.0, 0.3, 0.0)
+}
+
+impl TechFrame {
+    pub fn new(technique: Technique, params: &FrameParams) -> TechFrame {
+        let mut base = Frame::of(params);
+        let (spot_pos, spot_dir) = (spot_position(params.time), (spot_target() - spot_position(params.time)).normalize());
+        let layer_vp: Vec<Mat4> = if technique.is_spot() {
+            let view = look_at_mat4(spot_pos, spot_target(), Vec3::Y);
+            let proj = opengl::perspective(SPOT_FOV_DEG.to_radians(), 1.0, SPOT_NEAR, SPOT_FAR);
+            vec![proj * view]
+        } else {
+            let view = look_at_mat4(base.light_dir * SUN_DISTANCE, Vec3::ZERO, Vec3::Y);
+            let boxes: &[f32] = if technique == Technique::Cascades { &CASCADE_BOXES } else { &[SUN_BOX] };
+            boxes.iter().map(|&b| opengl::orthographic(-b, b, -b, b, SUN_NEAR, SUN_FAR) * view).collect()
+        };
+        base.light_vp = layer_vp[0];
+        TechFrame { technique, base, layer_vp, spot_pos, spot_dir }
+    }
+
+    /// A uniform's value for a draw in a pass (`layer`: the shadow layer
+    /// being drawn, or None in the main pass).
+    pub fn uniform(&self, name: &str, draw: Object, layer: Option<usize>) -> Option<Value> {
+        let f = &self.base;
+        Some(match name {
+            "u_model" => Value::Mat4(if draw == Object::Cube { f.cube_model } else { Mat4::IDENTITY }),
+            "u_is_floor" => Value::Float(if draw == Object::Floor { 1.0 } else { 0.0 }),
+            "u_view" => Value::Mat4(f.view),
+            "u_proj" => Value::Mat4(f.proj),
+            "u_cam_pos" => Value::Vec3(f.cam_pos),
+            "u_light_vp" => Value::Mat4(self.layer_vp[layer.unwrap_or(0)]),
+            "u_light_dir" => Value::Vec3(f.light_dir),
+            "u_cascade_vp" => Value::Mat4Array(self.layer_vp.clone()),
+            "u_light_pos" => Value::Vec3(self.spot_pos),
+            "u_spot_dir" => Value::Vec3(self.spot_dir),
+            _ => return None,
+        })
+    }
+}
+
+/// The draws of either pass: cube, then floor.
+pub const DRAWS: [Object; 2] = [Object::Cube, Object::Floor];
+
+/// Fills one uniform block's bytes (std140 = the WGSL layout) for a draw.
+pub fn block_bytes(frame: &TechFrame, r: &Reflection, block: usize, draw: Object, layer: Option<usize>, size: usize) -> Result<Vec<u8>, String> {
+    let b = &r.uniform_blocks[block];
+    let mut out = vec![0u8; size.max(b.size as usize)];
+    let loose = b.members.len() == 1 && (b.members[0].name == b.name || b.members[0].ty == b.ty);
+    for m in &b.members {
+        let name = if loose { b.name.as_str() } else { m.name.as_str() };
+        let value = frame.uniform(name, draw, layer).ok_or_else(|| format!("uniform `{name}` is not a value the technique scenes set"))?;
+        if value.dsl_type() != m.ty {
+            return Err(format!("uniform `{name}` is {} but the scene sets a {}", m.ty, value.dsl_type()));
+        }
+        let at = m.offset as usize;
+        let stride = m.matrix_stride.unwrap_or(16) as usize;
+        let overrun = || format!("uniform `{name}` overruns its block");
+        match &value {
+            Value::Float(v) => put(&mut out, at, &[*v]).ok_or_else(overrun)?,
+            Value::Vec3(v) => put(&mut out, at, &v.to_array()).ok_or_else(overrun)?,
+            Value::Mat4(mat) => put_mat(&mut out, at, stride, mat).ok_or_else(overrun)?,
+            Value::Mat4Array(ms) => {
+                let array_stride = m.array_stride.unwrap_or(64) as usize;
+                for (i, mat) in ms.iter().enumerate() {
+                    put_mat(&mut out, at + i * array_stride, stride, mat).ok_or_else(overrun)?;
+                }
+            }
+        }
+    }
+    Ok(out)
+}
+
+fn put(out: &mut [u8], at: usize, vals: &[f32]) -> Option<()> {
+    let bytes: &[u8] = bytemuck::cast_slice(vals);
+    out.get_mut(at..at + bytes.len())?.copy_from_slice(bytes);
+    Some(())
+}
+
+fn put_mat(out: &mut [u8], at: usize, stride: usize, m: &Mat4) -> Option<()> {
+    for (i, c) in m.to_cols_array_2d().iter().enumerate() {
+        put(out, at + i * stride, c)?;
+    }
+    Some(())
+}
+
+/// Which shadow layer a sampler reads: `name[i]` reads layer i, a plain
+/// name layer 0.
+pub fn sampler_layer(s: &Sampler) -> usize {
+    s.name
+        .rsplit_once('[')
+        .and_then(|(_, rest)| rest.trim_end_matches(']').parse().ok())
+        .unwrap_or(0)
+}
+
+pub fn entry<'r>(r: &'r Reflection, name: &str) -> Result<&'r crate::emit::reflect_types::EntryPoint, String> {
+    r.entry_points.iter().find(|e| e.name == name).ok_or_else(|| format!("the program has no entry point `{name}`"))
+}
+
+/// Entry point names of the two passes.
+pub const PASSES: [(&str, &str); 2] = [(scene::SHADOW_VS, scene::SHADOW_FS), (scene::MAIN_VS, scene::MAIN_FS)];

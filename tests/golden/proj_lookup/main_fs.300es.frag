@@ -1,0 +1,104 @@
+#version 300 es
+
+precision highp float;
+precision highp int;
+precision highp sampler2DShadow;
+
+struct main_fs_out {
+    vec4 f_FragColor;
+};
+layout(std140) uniform u_cam_pos_block { vec3 u_cam_pos; };
+
+layout(std140) uniform u_is_floor_block { float u_is_floor; };
+
+vec3 v_world_pos = vec3(0.0);
+
+vec3 v_world_normal = vec3(0.0);
+
+vec4 f_FragColor = vec4(0.0);
+
+layout(std140) uniform u_light_dir_block { vec3 u_light_dir; };
+
+uniform highp sampler2DShadow shadow_map;
+
+vec4 v_shadow_coord = vec4(0.0);
+
+smooth in vec3 _vs2fs_location0;
+smooth in vec3 _vs2fs_location1;
+smooth in vec4 _vs2fs_location2;
+layout(location = 0) out vec4 _fs2p_location0;
+
+float sun_ndotl() {
+    vec3 _e1 = v_world_normal;
+    vec3 _e4 = u_light_dir;
+    return max(dot(normalize(_e1), normalize(_e4)), 0.0);
+}
+
+float slope_bias(float ndotl) {
+    return max((0.0025 * (1.0 - ndotl)), 0.0008);
+}
+
+float surface_gloss() {
+    float _e1 = u_is_floor;
+    return ((_e1 > 0.5) ? 0.15 : 0.5);
+}
+
+vec3 checker(vec3 p) {
+    float cell = (floor(((p.x * 0.5) + 100.0)) + floor(((p.z * 0.5) + 100.0)));
+    float odd = (cell - (2.0 * floor((cell * 0.5))));
+    return (vec3(((odd < 0.5) ? 0.85 : 0.3)) * vec3(0.8, 0.82, 0.88));
+}
+
+vec3 surface_albedo() {
+    float _e1 = u_is_floor;
+    if ((_e1 > 0.5)) {
+        vec3 _e5 = v_world_pos;
+        vec3 _e6 = checker(_e5);
+        return _e6;
+    }
+    return vec3(0.85, 0.45, 0.3);
+}
+
+vec3 hemisphere(vec3 n) {
+    return mix(vec3(0.1, 0.09, 0.08), vec3(0.3, 0.34, 0.42), vec3(((n.y * 0.5) + 0.5)));
+}
+
+vec3 sun_shade(float visibility) {
+    vec3 _e2 = v_world_normal;
+    vec3 n_1 = normalize(_e2);
+    vec3 _e5 = u_light_dir;
+    vec3 l = normalize(_e5);
+    vec3 _e8 = u_cam_pos;
+    vec3 _e10 = v_world_pos;
+    vec3 v = normalize((_e8 - _e10));
+    float ndotl_1 = max(dot(n_1, l), 0.0);
+    float lit = ((ndotl_1 < 0.05) ? 0.0 : visibility);
+    vec3 h = normalize((l + v));
+    float _e28 = surface_gloss();
+    float spec = ((pow(max(dot(n_1, h), 0.0), 48.0) * lit) * _e28);
+    vec3 sun = vec3(1.3, 1.15, 0.9);
+    vec3 _e34 = surface_albedo();
+    vec3 _e35 = hemisphere(n_1);
+    return ((_e34 * (_e35 + (sun * (ndotl_1 * lit)))) + vec3(spec));
+}
+
+void main() {
+    vec3 in_v_world_pos = _vs2fs_location0;
+    vec3 in_v_world_normal = _vs2fs_location1;
+    vec4 in_v_shadow_coord = _vs2fs_location2;
+    v_world_pos = in_v_world_pos;
+    v_world_normal = in_v_world_normal;
+    v_shadow_coord = in_v_shadow_coord;
+    vec4 q = v_shadow_coord;
+    float _e10 = sun_ndotl();
+    float _e11 = slope_bias(_e10);
+    vec4 biased = vec4(q.xy, (q.z - (_e11 * q.w)), q.w);
+    float _e26 = texture(shadow_map, vec3((biased.xy / vec2(biased.w)), (biased.z / biased.w)));
+    vec3 _e27 = sun_shade(_e26);
+    f_FragColor = vec4(_e27, 1.0);
+    vec4 _e31 = f_FragColor;
+    main_fs_out _tmp_return = main_fs_out(_e31);
+    _fs2p_location0 = _tmp_return.f_FragColor;
+    return;
+}
+

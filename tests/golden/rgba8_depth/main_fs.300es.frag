@@ -1,0 +1,113 @@
+#version 300 es
+
+precision highp float;
+precision highp int;
+
+struct main_fs_out {
+    vec4 f_FragColor;
+};
+const float DEPTH_BIAS = 0.0015;
+
+layout(std140) uniform u_light_vp_block { mat4x4 u_light_vp; };
+
+layout(std140) uniform u_cam_pos_block { vec3 u_cam_pos; };
+
+layout(std140) uniform u_is_floor_block { float u_is_floor; };
+
+vec3 v_world_pos = vec3(0.0);
+
+vec3 v_world_normal = vec3(0.0);
+
+vec4 f_FragColor = vec4(0.0);
+
+layout(std140) uniform u_light_dir_block { vec3 u_light_dir; };
+
+uniform highp sampler2D shadow_rgba;
+
+smooth in vec3 _vs2fs_location0;
+smooth in vec3 _vs2fs_location1;
+layout(location = 0) out vec4 _fs2p_location0;
+
+vec3 to_map(vec4 clip) {
+    return (((clip.xyz / vec3(max(clip.w, 0.0001))) * 0.5) + vec3(0.5));
+}
+
+float decode_depth(vec4 rgba) {
+    return dot(rgba, vec4(1.0, (1.0 / 255.0), (1.0 / 65025.0), (1.0 / 16581375.0)));
+}
+
+float sun_ndotl() {
+    vec3 _e1 = v_world_normal;
+    vec3 _e4 = u_light_dir;
+    return max(dot(normalize(_e1), normalize(_e4)), 0.0);
+}
+
+float slope_bias(float ndotl) {
+    return max((0.0025 * (1.0 - ndotl)), 0.0008);
+}
+
+float surface_gloss() {
+    float _e1 = u_is_floor;
+    return ((_e1 > 0.5) ? 0.15 : 0.5);
+}
+
+vec3 checker(vec3 p) {
+    float cell = (floor(((p.x * 0.5) + 100.0)) + floor(((p.z * 0.5) + 100.0)));
+    float odd = (cell - (2.0 * floor((cell * 0.5))));
+    return (vec3(((odd < 0.5) ? 0.85 : 0.3)) * vec3(0.8, 0.82, 0.88));
+}
+
+vec3 surface_albedo() {
+    float _e1 = u_is_floor;
+    if ((_e1 > 0.5)) {
+        vec3 _e5 = v_world_pos;
+        vec3 _e6 = checker(_e5);
+        return _e6;
+    }
+    return vec3(0.85, 0.45, 0.3);
+}
+
+vec3 hemisphere(vec3 n) {
+    return mix(vec3(0.1, 0.09, 0.08), vec3(0.3, 0.34, 0.42), vec3(((n.y * 0.5) + 0.5)));
+}
+
+vec3 sun_shade(float visibility) {
+    vec3 _e2 = v_world_normal;
+    vec3 n_1 = normalize(_e2);
+    vec3 _e5 = u_light_dir;
+    vec3 l = normalize(_e5);
+    vec3 _e8 = u_cam_pos;
+    vec3 _e10 = v_world_pos;
+    vec3 v = normalize((_e8 - _e10));
+    float ndotl_1 = max(dot(n_1, l), 0.0);
+    float lit = ((ndotl_1 < 0.05) ? 0.0 : visibility);
+    vec3 h = normalize((l + v));
+    float _e28 = surface_gloss();
+    float spec = ((pow(max(dot(n_1, h), 0.0), 48.0) * lit) * _e28);
+    vec3 sun = vec3(1.3, 1.15, 0.9);
+    vec3 _e34 = surface_albedo();
+    vec3 _e35 = hemisphere(n_1);
+    return ((_e34 * (_e35 + (sun * (ndotl_1 * lit)))) + vec3(spec));
+}
+
+void main() {
+    vec3 in_v_world_pos = _vs2fs_location0;
+    vec3 in_v_world_normal = _vs2fs_location1;
+    v_world_pos = in_v_world_pos;
+    v_world_normal = in_v_world_normal;
+    mat4x4 _e5 = u_light_vp;
+    vec3 _e7 = v_world_pos;
+    vec3 _e11 = to_map((_e5 * vec4(_e7, 1.0)));
+    vec4 _e15 = texture(shadow_rgba, vec2(_e11.xy));
+    float _e16 = decode_depth(_e15);
+    float _e20 = sun_ndotl();
+    float _e21 = slope_bias(_e20);
+    float visibility_1 = ((((_e11.z - DEPTH_BIAS) - _e21) > _e16) ? 0.0 : 1.0);
+    vec3 _e28 = sun_shade(visibility_1);
+    f_FragColor = vec4(_e28, 1.0);
+    vec4 _e32 = f_FragColor;
+    main_fs_out _tmp_return = main_fs_out(_e32);
+    _fs2p_location0 = _tmp_return.f_FragColor;
+    return;
+}
+
