@@ -118,8 +118,29 @@ fn policies() -> BoundsCheckPolicies {
 
 /// Writes one entry point of `lowered.gl` and fixes up its names.
 pub fn write_entry(lowered: &Lowered, ep: &EntryInterface, profile: Profile) -> Result<(String, EntryNames), Diagnostic> {
+    write_entry_from(lowered, &EntryModule::new(lowered, ep)?, ep, profile)
+}
+
+/// The reduced, validated GL module of one entry point: made once and
+/// written in both GLSL profiles (compaction and validation are most of the
+/// cost of a GLSL output).
+pub struct EntryModule {
+    module: naga::Module,
+    info: naga::valid::ModuleInfo,
+    to_original: GlobalMap,
+}
+
+impl EntryModule {
+    pub fn new(lowered: &Lowered, ep: &EntryInterface) -> Result<EntryModule, Diagnostic> {
+        let (module, info, to_original) = entry_module(lowered, ep)?;
+        Ok(EntryModule { module, info, to_original })
+    }
+}
+
+/// [`write_entry`] from an [`EntryModule`] made for `ep`.
+pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface, profile: Profile) -> Result<(String, EntryNames), Diagnostic> {
     let what = format!("the {} writer for entry point `{}`", profile.label(), ep.name);
-    let (module, module_info, to_original) = entry_module(lowered, ep)?;
+    let (module, module_info, to_original) = (&em.module, &em.info, &em.to_original);
     let (raw, info) = guard(&what, || {
         let options = Options {
             version: profile.version(),
@@ -129,7 +150,7 @@ pub fn write_entry(lowered: &Lowered, ep: &EntryInterface, profile: Profile) -> 
         };
         let pipeline = PipelineOptions { shader_stage: ep.stage, entry_point: ep.name.clone(), multiview: None };
         let mut out = String::new();
-        let mut writer = naga::back::glsl::Writer::new(&mut out, &module, &module_info, &options, &pipeline, policies())
+        let mut writer = naga::back::glsl::Writer::new(&mut out, module, module_info, &options, &pipeline, policies())
             .map_err(|e| e.to_string())?;
         let info = writer.write().map_err(|e| e.to_string())?;
         drop(writer);
@@ -137,28 +158,34 @@ pub fn write_entry(lowered: &Lowered, ep: &EntryInterface, profile: Profile) -> 
     })?;
     let bug = |msg: String| Diagnostic::bug(format!("{} output of entry point `{}`: {msg}", profile.label(), ep.name), None);
 
-    let mut out = raw.clone();
     let mut names = EntryNames::default();
+    // Every identifier of the text, found in one scan: the checks below are
+    // set lookups, and the renames one pass (each used to rescan the text).
+    let raw_idents: text::IdentSet = text::idents(&raw).map(|(a, b)| &raw[a..b]).collect();
 
     // Uniform blocks, in handle order so the result is deterministic.
     let mut uniforms: Vec<_> = info.uniforms.iter().collect();
     uniforms.sort_by_key(|(h, _)| h.index());
     let mut new_names = BTreeSet::new();
+    let mut renames = text::Renames::default();
     for (handle, naga_block) in uniforms {
         let instance = block_instance(&raw, naga_block).ok_or_else(|| bug(format!("cannot find uniform block `{naga_block}`")))?;
         let new = format!("{}_block", instance.trim_end_matches('_'));
-        if text::contains_ident(&raw, &new) {
+        if raw_idents.contains(new.as_str()) {
             return Err(bug(format!("renaming uniform block `{naga_block}` to `{new}` would collide with an identifier of the same name")));
         }
         if !new_names.insert(new.clone()) {
             return Err(bug(format!("two uniform blocks would both be named `{new}`")));
         }
-        out = text::replace_ident(&out, naga_block, &new);
+        renames.insert(naga_block.as_str(), new.clone());
         names.blocks.insert(to_original(*handle)?, new);
     }
+    let mut out = text::replace_idents(&raw, &renames);
+    // The identifiers of `out`: those of `raw`, renamed.
+    let out_has = |name: &str| (raw_idents.contains(name) && !renames.contains_key(name)) || new_names.contains(name);
 
     for (name, mapping) in &info.texture_mapping {
-        if !text::contains_ident(&out, name) {
+        if !out_has(name) {
             return Err(bug(format!("sampler `{name}` reported by naga is not in the text")));
         }
         let original = to_original(mapping.texture)?;
@@ -187,7 +214,7 @@ pub fn write_entry(lowered: &Lowered, ep: &EntryInterface, profile: Profile) -> 
     for (vars, prefix, map) in [(&ep.inputs, in_prefix, &mut names.inputs), (&ep.outputs, out_prefix, &mut names.outputs)] {
         for var in vars {
             let name = format!("{prefix}{}", var.location);
-            if !text::contains_ident(&out, &name) {
+            if !out_has(&name) {
                 return Err(bug(format!("`{}` (location {}) is not declared as `{name}`", var.name, var.location)));
             }
             if let Some(loc) = info.varying.get(&name) {
@@ -200,7 +227,7 @@ pub fn write_entry(lowered: &Lowered, ep: &EntryInterface, profile: Profile) -> 
     }
 
     if profile == Profile::Es300 {
-        out = add_es_precision(&out).ok_or_else(|| bug("no `precision highp int;` line to extend".into()))?;
+        out = add_es_precision_with(&out, |ty| out_has(ty)).ok_or_else(|| bug("no `precision highp int;` line to extend".into()))?;
     }
     Ok((out, names))
 }
@@ -305,13 +332,19 @@ fn block_instance<'a>(src: &'a str, block: &str) -> Option<&'a str> {
 
 /// Adds `precision highp T;` for every no-default-precision type the text
 /// uses, right after naga's `precision highp int;`.
+#[cfg(test)]
 fn add_es_precision(src: &str) -> Option<String> {
+    let used: text::IdentSet = text::idents(src).map(|(a, b)| &src[a..b]).collect();
+    add_es_precision_with(src, |ty| used.contains(ty))
+}
+
+/// [`add_es_precision`] with the text's identifiers given as a predicate.
+fn add_es_precision_with(src: &str, used: impl Fn(&str) -> bool) -> Option<String> {
     const ANCHOR: &str = "precision highp int;\n";
     let at = src.find(ANCHOR)? + ANCHOR.len();
-    let used: BTreeSet<&str> = text::idents(src).map(|(a, b)| &src[a..b]).collect();
     let mut lines = String::new();
     for ty in ES_NO_DEFAULT_PRECISION {
-        if used.contains(ty) {
+        if used(ty) {
             let _ = writeln!(lines, "precision highp {ty};");
         }
     }

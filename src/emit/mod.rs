@@ -47,7 +47,8 @@ pub fn emit(lowered: &Lowered, stem: &str, source_name: &str, targets: &[Target]
     // it runs (for GLSL 330) even when no GLSL target is requested.
     let mut glsl_names: Vec<glsl::EntryNames> = Vec::new();
     for ep in &lowered.interface.entry_points {
-        let (text, names) = glsl::write_entry(lowered, ep, glsl::Profile::Desktop330)?;
+        let entry_module = glsl::EntryModule::new(lowered, ep)?;
+        let (text, names) = glsl::write_entry_from(lowered, &entry_module, ep, glsl::Profile::Desktop330)?;
         if targets.contains(&Target::Glsl330) {
             artifacts.push(Artifact {
                 file_name: glsl::file_name(&ep.name, ep.stage, glsl::Profile::Desktop330),
@@ -57,7 +58,7 @@ pub fn emit(lowered: &Lowered, stem: &str, source_name: &str, targets: &[Target]
             });
         }
         if targets.contains(&Target::Gles300) {
-            let (text, es_names) = glsl::write_entry(lowered, ep, glsl::Profile::Es300)?;
+            let (text, es_names) = glsl::write_entry_from(lowered, &entry_module, ep, glsl::Profile::Es300)?;
             if es_names != names {
                 return Err(Diagnostic::bug(
                     format!("GLSL 330 and GLSL ES 3.00 outputs of entry point `{}` disagree on identifier names", ep.name),
@@ -145,6 +146,30 @@ pub(crate) fn guard<T>(what: &str, f: impl FnOnce() -> Result<T, String>) -> Res
 
 /// Identifier-level text helpers for post-processing generated code.
 pub(crate) mod text {
+    use std::collections::{HashMap, HashSet};
+    use std::hash::{BuildHasherDefault, Hasher};
+
+    /// FNV-1a: identifiers are short, and SipHash's setup cost dominated
+    /// the identifier sets of the GLSL fix-ups.
+    #[derive(Default)]
+    pub struct Fnv(u64);
+
+    impl Hasher for Fnv {
+        fn finish(&self) -> u64 {
+            self.0
+        }
+        fn write(&mut self, bytes: &[u8]) {
+            let mut h = if self.0 == 0 { 0xcbf2_9ce4_8422_2325 } else { self.0 };
+            for &b in bytes {
+                h = (h ^ b as u64).wrapping_mul(0x0100_0000_01b3);
+            }
+            self.0 = h;
+        }
+    }
+
+    pub type IdentSet<'a> = HashSet<&'a str, BuildHasherDefault<Fnv>>;
+    pub type Renames<'a> = HashMap<&'a str, String, BuildHasherDefault<Fnv>>;
+
     fn is_ident_char(c: u8) -> bool {
         c.is_ascii_alphanumeric() || c == b'_'
     }
@@ -172,11 +197,32 @@ pub(crate) mod text {
         })
     }
 
+    #[allow(dead_code)]
     pub fn contains_ident(s: &str, name: &str) -> bool {
         idents(s).any(|(a, b)| &s[a..b] == name)
     }
 
+    /// Replaces every whole identifier that is a key of `renames` with its
+    /// value, in one pass.
+    pub fn replace_idents(s: &str, renames: &Renames<'_>) -> String {
+        if renames.is_empty() {
+            return s.to_string();
+        }
+        let mut out = String::with_capacity(s.len() + 16 * renames.len());
+        let mut last = 0;
+        for (a, b) in idents(s) {
+            if let Some(to) = renames.get(&s[a..b]) {
+                out.push_str(&s[last..a]);
+                out.push_str(to);
+                last = b;
+            }
+        }
+        out.push_str(&s[last..]);
+        out
+    }
+
     /// Replaces whole identifiers equal to `from` with `to`.
+    #[allow(dead_code)]
     pub fn replace_ident(s: &str, from: &str, to: &str) -> String {
         let mut out = String::with_capacity(s.len() + 16);
         let mut last = 0;

@@ -93,6 +93,9 @@ pub struct RenderArgs {
     /// --out a.png, write a.ref.png and a.diff.png beside it).
     #[arg(long)]
     pub compare: bool,
+    /// Shadow technique: --quality, --filter, --fit, --depth-format, --casters-only.
+    #[command(flatten)]
+    pub setup: super::setup_cli::SetupArgs,
     /// Render one frame on every available consumer (wgpu Vulkan via WGSL
     /// and SPIR-V, wgpu GL, GL 3.3, GLES 3.0, WebGL2, the CPU reference),
     /// print their pairwise differences and write OUT.CONSUMER.png for each.
@@ -145,6 +148,16 @@ fn view(args: &RenderArgs) -> View {
 
 /// Loads the program named on the command line.
 pub fn load_program(file: Option<&Path>, reflection: Option<&Path>, via: Via) -> Result<ShaderSet, String> {
+    load_program_with(file, reflection, via, Vec::new())
+}
+
+/// [`load_program`] with `-D` definitions for a .das program.
+pub fn load_program_with(
+    file: Option<&Path>,
+    reflection: Option<&Path>,
+    via: Via,
+    defines: Vec<(String, Option<String>)>,
+) -> Result<ShaderSet, String> {
     let ext = file.and_then(|p| p.extension()).and_then(|e| e.to_str());
     if let (Some(path), Some(ext @ ("wgsl" | "spv"))) = (file, ext) {
         let code = if ext == "wgsl" {
@@ -165,7 +178,7 @@ pub fn load_program(file: Option<&Path>, reflection: Option<&Path>, via: Via) ->
         };
         return Ok(ShaderSet::single(path.display().to_string(), code, refl));
     }
-    let opts = crate::Options { targets: vec![via.target()], ..Default::default() };
+    let opts = crate::Options { targets: vec![via.target()], defines, ..Default::default() };
     let compilation = match file {
         Some(path) => crate::compile_file(path, &opts),
         None if Path::new(DEFAULT_PROGRAM).is_file() => crate::compile_file(Path::new(DEFAULT_PROGRAM), &opts),
@@ -193,6 +206,7 @@ fn execute(args: &RenderArgs) -> Result<(), String> {
     let mut params = FrameParams::new(args.time, width, height);
     params.shadow_size = args.shadow_size;
     params.view = view(args);
+    params.setup = args.setup.setup();
     if args.shadow_size == 0 || args.shadow_size > 16384 {
         return Err(format!("--shadow-size {} must be between 1 and 16384", args.shadow_size));
     }
@@ -215,7 +229,8 @@ fn execute(args: &RenderArgs) -> Result<(), String> {
         BackendArg::Gl => Backend::Gl,
         BackendArg::Gl330 | BackendArg::Gles300 => return super::cli_consumers::render_gl(args, params),
     };
-    let set = load_program(args.file.as_deref(), args.reflection.as_deref(), via(args))?;
+    let defines = params.setup.defines(params.shadow_size);
+    let set = load_program_with(args.file.as_deref(), args.reflection.as_deref(), via(args), defines)?;
     let renderer = Renderer::new(backend).map_err(|e| e.to_string())?;
     let program = renderer.prepare(&set).map_err(|e| e.to_string())?;
     eprintln!("rendering {} ({} via {}) on {}", set.label, set.via().name(), backend.name(), renderer.adapter_name());

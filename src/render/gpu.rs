@@ -226,6 +226,9 @@ pub struct Renderer {
     cube: MeshBuffers,
     floor: MeshBuffers,
     sampler: wgpu::Sampler,
+    /// Comparison samplers for the other filters and fits, by
+    /// (linear, clamp to border); `sampler` is (true, false).
+    samplers: BTreeMap<(bool, bool), wgpu::Sampler>,
     uncaptured: Arc<Mutex<Vec<String>>>,
 }
 
@@ -235,6 +238,10 @@ pub struct Program {
     via: Via,
     shadow: PassObjects,
     main: PassObjects,
+    /// Kept for shadow pipelines of other depth formats, made on first use.
+    modules: Vec<wgpu::ShaderModule>,
+    entry_module: BTreeMap<String, usize>,
+    other_shadow: Mutex<Vec<(wgpu::TextureFormat, Arc<PassObjects>)>>,
 }
 
 struct PassObjects {
@@ -263,7 +270,8 @@ impl Renderer {
         });
         let adapter = adapters.remove(0);
         let info = adapter.get_info();
-        let required_features = adapter.features() & wgpu::Features::PASSTHROUGH_SHADERS;
+        let required_features =
+            adapter.features() & (wgpu::Features::PASSTHROUGH_SHADERS | wgpu::Features::ADDRESS_MODE_CLAMP_TO_BORDER);
         let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
             label: Some("umbrac render"),
             required_features,
@@ -301,7 +309,8 @@ impl Renderer {
             compare: Some(wgpu::CompareFunction::LessEqual),
             ..Default::default()
         });
-        Ok(Renderer { backend, info, device, queue, cube, floor, sampler, uncaptured })
+        let samplers = super::setup_gpu::comparison_samplers(&device);
+        Ok(Renderer { backend, info, device, queue, cube, floor, sampler, samplers, uncaptured })
     }
 
     pub fn backend(&self) -> Backend {
@@ -384,9 +393,10 @@ impl Renderer {
                 })
                 .collect();
             let module = |entry: &str| &modules[set.module_of(entry)];
-            let shadow = self.pass_objects(&plan, &plan.shadow, &module, true);
-            let main = self.pass_objects(&plan, &plan.main, &module, false);
-            Program { plan: plan.clone(), via, shadow, main }
+            let shadow = self.pass_objects(&plan, &plan.shadow, &module, true, DEPTH_FORMAT);
+            let main = self.pass_objects(&plan, &plan.main, &module, false, DEPTH_FORMAT);
+            let entry_module = set.reflection.entry_points.iter().map(|e| (e.name.clone(), set.module_of(&e.name))).collect();
+            Program { plan: plan.clone(), via, shadow, main, modules, entry_module, other_shadow: Mutex::new(Vec::new()) }
         })
         .map_err(|e| RenderError::Program(format!("{}: {e}", set.label)))
     }
@@ -397,6 +407,7 @@ impl Renderer {
         pass: &PassPlan,
         module: &impl Fn(&str) -> &'m wgpu::ShaderModule,
         shadow: bool,
+        depth_format: wgpu::TextureFormat,
     ) -> PassObjects {
         let layouts: BTreeMap<u32, wgpu::BindGroupLayout> = pass
             .groups
@@ -475,7 +486,7 @@ impl Renderer {
                 ..Default::default()
             },
             depth_stencil: Some(wgpu::DepthStencilState {
-                format: DEPTH_FORMAT,
+                format: depth_format,
                 depth_write_enabled: Some(true),
                 depth_compare: Some(wgpu::CompareFunction::Less),
                 stencil: Default::default(),
@@ -579,7 +590,15 @@ impl Renderer {
         };
         use wgpu::TextureUsages as U;
         let n = params.shadow_size;
-        let shadow_map = texture("shadow map", n, n, DEPTH_FORMAT, U::RENDER_ATTACHMENT | U::TEXTURE_BINDING | U::COPY_SRC);
+        let shadow_options = params.setup.shadow;
+        let shadow_format = shadow_options.depth.wgpu();
+        let shadow_objects = self.shadow_objects(program, shadow_format);
+        let compare_sampler = self.compare_sampler(&params.setup);
+        let mut shadow_usage = U::RENDER_ATTACHMENT | U::TEXTURE_BINDING;
+        if shadow_format != wgpu::TextureFormat::Depth24Plus {
+            shadow_usage |= U::COPY_SRC;
+        }
+        let shadow_map = texture("shadow map", n, n, shadow_format, shadow_usage);
         let shadow_view = shadow_map.create_view(&Default::default());
         let color = texture("colour", params.width, params.height, COLOR_FORMAT, U::RENDER_ATTACHMENT | U::COPY_SRC);
         let color_view = color.create_view(&Default::default());
@@ -602,7 +621,7 @@ impl Renderer {
                                     size: NonZeroU64::new(plan.blocks[i].size as u64),
                                 }),
                                 ResourceKind::ShadowTexture => wgpu::BindingResource::TextureView(&shadow_view),
-                                ResourceKind::ShadowSampler => wgpu::BindingResource::Sampler(&self.sampler),
+                                ResourceKind::ShadowSampler => wgpu::BindingResource::Sampler(compare_sampler),
                             },
                         })
                         .collect();
@@ -611,7 +630,7 @@ impl Renderer {
                 })
                 .collect()
         };
-        let shadow_groups: Vec<_> = (0..2).map(|d| bind_groups(&program.shadow, &plan.shadow, 0, d)).collect();
+        let shadow_groups: Vec<_> = (0..2).map(|d| bind_groups(&shadow_objects, &plan.shadow, 0, d)).collect();
         let main_groups: Vec<_> = (0..2).map(|d| bind_groups(&program.main, &plan.main, 1, d)).collect();
 
         let mut encoder = self.device.create_command_encoder(&Default::default());
@@ -628,8 +647,12 @@ impl Renderer {
             });
             // `lit` leaves the map empty (every compare passes).
             if params.view != View::Lit {
-                pass.set_pipeline(&program.shadow.pipeline);
+                pass.set_pipeline(&shadow_objects.pipeline);
                 for (d, draw) in draws.iter().enumerate() {
+                    // Casters only: the floor shadows nothing.
+                    if shadow_options.casters_only && draw.object == Object::Floor {
+                        continue;
+                    }
                     self.draw_mesh(&mut pass, draw.object, &shadow_groups[d]);
                 }
             }
@@ -664,8 +687,12 @@ impl Renderer {
             View::ShadowMap => (&shadow_map, n, n, wgpu::TextureAspect::DepthOnly),
             _ => (&color, params.width, params.height, wgpu::TextureAspect::All),
         };
-        // 4 bytes per texel for both Rgba8Unorm and Depth32Float.
-        let row = 4 * w;
+        // 4 bytes per texel for both Rgba8Unorm and Depth32Float, 2 for Depth16Unorm.
+        let texel = if params.view == View::ShadowMap && shadow_format == wgpu::TextureFormat::Depth16Unorm { 2 } else { 4 };
+        if params.view == View::ShadowMap && shadow_format == wgpu::TextureFormat::Depth24Plus {
+            return Err(RenderError::Unsupported("--view shadow-map cannot read back a depth24plus shadow map".into()));
+        }
+        let row = texel * w;
         let padded_row = row.next_multiple_of(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT);
         let readback = self.device.create_buffer(&wgpu::BufferDescriptor {
             label: Some("readback"),
@@ -705,6 +732,13 @@ impl Renderer {
         readback.unmap();
 
         let image = match params.view {
+            View::ShadowMap if texel == 2 => {
+                let f: Vec<u8> = pixels
+                    .chunks_exact(2)
+                    .flat_map(|c| (u16::from_le_bytes([c[0], c[1]]) as f32 / 65535.0).to_le_bytes())
+                    .collect();
+                super::image_ops::depth_to_grey(w, h, &f)
+            }
             View::ShadowMap => super::image_ops::depth_to_grey(w, h, &pixels),
             _ => RgbaImage::from_raw(w, h, pixels).expect("readback has w * h * 4 bytes"),
         };
@@ -728,5 +762,32 @@ impl Renderer {
 impl Program {
     pub fn via(&self) -> Via {
         self.via
+    }
+}
+
+impl Renderer {
+    /// The shadow pass objects for a depth format: the prepared ones for
+    /// Depth32Float, others made once on first use.
+    fn shadow_objects(&self, program: &Program, format: wgpu::TextureFormat) -> Arc<PassObjects> {
+        let mut cache = program.other_shadow.lock().unwrap_or_else(|p| p.into_inner());
+        if let Some((_, o)) = cache.iter().find(|(f, _)| *f == format) {
+            return o.clone();
+        }
+        let module = |entry: &str| &program.modules[program.entry_module.get(entry).copied().unwrap_or(0)];
+        let objects = Arc::new(if format == DEPTH_FORMAT {
+            PassObjects { pipeline: program.shadow.pipeline.clone(), layouts: program.shadow.layouts.clone() }
+        } else {
+            self.pass_objects(&program.plan, &program.plan.shadow, &module, true, format)
+        });
+        cache.push((format, objects.clone()));
+        objects
+    }
+
+    /// The comparison sampler a setup's filter and fit want.
+    fn compare_sampler(&self, setup: &super::setup::Setup) -> &wgpu::Sampler {
+        let linear = setup.shadow.filter.linear();
+        // Lookups outside a tight box or a spot light's frustum are lit.
+        let border = setup.shadow.fit == super::setup::Fit::Tight || matches!(setup.light, super::setup::Light::Spot { .. });
+        self.samplers.get(&(linear, border)).or_else(|| self.samplers.get(&(linear, false))).unwrap_or(&self.sampler)
     }
 }

@@ -30,13 +30,17 @@ pub mod image_ops;
 pub mod interface;
 pub mod reference;
 pub mod scene;
+pub mod setup;
+mod setup_gpu;
 pub mod techniques;
 pub mod webgl;
 
 #[cfg(feature = "cli")]
 pub mod cli;
 #[cfg(feature = "cli")]
+pub mod setup_cli;
 mod cli_consumers;
 
 pub use gpu::{Backend, Program, RenderError, Renderer, ShaderCode, ShaderSet, Via};
 pub use scene::{FrameParams, View};
+pub use setup::{DepthFormat, Filter, Fit, Light, Quality, Setup, ShadowOptions, World};

@@ -23,6 +23,8 @@ pub struct RefFrame {
     /// Pixels showing a surface that faces the sun (N.L >= 0.05) but whose
     /// shadow ray hits the cube.
     pub shadowed: Vec<bool>,
+    /// Pixels showing the floor.
+    pub floor: Vec<bool>,
 }
 
 /// The reference image of a frame.
@@ -41,12 +43,19 @@ pub(crate) struct Hit {
 pub(crate) struct Scene {
     model: DMat4,
     inv_model: DMat4,
+    /// The floor: its height, centre (x, z) and half side in world units.
+    floor_y: f64,
+    floor_centre: (f64, f64),
+    floor_half: f64,
 }
 
 impl Scene {
     pub(crate) fn new(frame: &Frame) -> Scene {
         let model = frame.cube_model.as_dmat4();
-        Scene { model, inv_model: model.inverse() }
+        let fm = frame.floor_model.as_dmat4();
+        let c = fm.transform_point3(DVec3::ZERO);
+        let half = fm.transform_vector3(DVec3::X).length() * scene::FLOOR_HALF as f64;
+        Scene { model, inv_model: model.inverse(), floor_y: c.y, floor_centre: (c.x, c.z), floor_half: half }
     }
 
     /// Nearest entry into the cube along `o + t d`, t > `min_t`.
@@ -82,19 +91,19 @@ impl Scene {
         Some((t0, self.model.transform_vector3(n).normalize()))
     }
 
-    fn floor(o: DVec3, d: DVec3, min_t: f64) -> Option<f64> {
+    fn floor(&self, o: DVec3, d: DVec3, min_t: f64) -> Option<f64> {
         if d.y.abs() < 1e-15 {
             return None;
         }
-        let t = -o.y / d.y;
+        let t = (self.floor_y - o.y) / d.y;
         let p = o + d * t;
-        let h = scene::FLOOR_HALF as f64;
-        (t > min_t && p.x.abs() <= h && p.z.abs() <= h).then_some(t)
+        let h = self.floor_half;
+        (t > min_t && (p.x - self.floor_centre.0).abs() <= h && (p.z - self.floor_centre.1).abs() <= h).then_some(t)
     }
 
     pub(crate) fn cast(&self, o: DVec3, d: DVec3) -> Option<Hit> {
         let cube = self.cube(o, d, 0.0).map(|(t, n)| Hit { t, pos: o + d * t, normal: n, floor: false });
-        let floor = Scene::floor(o, d, 0.0).map(|t| Hit { t, pos: o + d * t, normal: DVec3::Y, floor: true });
+        let floor = self.floor(o, d, 0.0).map(|t| Hit { t, pos: o + d * t, normal: DVec3::Y, floor: true });
         match (cube, floor) {
             (Some(c), Some(f)) => Some(if c.t <= f.t { c } else { f }),
             (c, f) => c.or(f),
@@ -104,6 +113,11 @@ impl Scene {
 
 /// The scene's fragment program, with `lit` (the sun's visibility) given.
 pub fn shade(frame: &Frame, pos: Vec3, normal: Vec3, is_floor: bool, sun_visible: f32) -> [f32; 3] {
+    shade_with(frame, pos, normal, is_floor, sun_visible, 0.5)
+}
+
+/// [`shade`] with the checker frequency (`CHECKER_FREQ`) given.
+pub fn shade_with(frame: &Frame, pos: Vec3, normal: Vec3, is_floor: bool, sun_visible: f32, checker_freq: f32) -> [f32; 3] {
     let n = normal.normalize();
     let l = frame.light_dir.normalize();
     let v = (frame.cam_pos - pos).normalize();
@@ -112,7 +126,7 @@ pub fn shade(frame: &Frame, pos: Vec3, normal: Vec3, is_floor: bool, sun_visible
     let sky = n.y * 0.5 + 0.5;
     let ambient = Vec3::new(0.10, 0.09, 0.08).lerp(Vec3::new(0.30, 0.34, 0.42), sky);
     let (albedo, gloss) = if is_floor {
-        let cells = (pos.x * 0.5 + 100.0).floor() + (pos.z * 0.5 + 100.0).floor();
+        let cells = (pos.x * checker_freq + 100.0).floor() + (pos.z * checker_freq + 100.0).floor();
         let odd = cells - 2.0 * (cells * 0.5).floor();
         let grey = if odd < 0.5 { 0.85 } else { 0.30 };
         (Vec3::splat(grey) * Vec3::new(0.80, 0.82, 0.88), 0.15)
@@ -143,10 +157,16 @@ pub fn render_frame(params: &FrameParams) -> RefFrame {
     let to_sun = frame.light_dir.as_dvec3().normalize();
     // The PCF footprint reaches 1.5 texels past the lookup point.
     let margin = 2.0 * 1.5 / params.shadow_size as f64;
+    let spot = match params.setup.light {
+        super::setup::Light::Spot { pos, .. } => Some(params.setup.world.point(pos).as_dvec3()),
+        _ => None,
+    };
+    let tight = params.setup.shadow.fit == super::setup::Fit::Tight;
     let clear = Rgba([to_unorm8(scene::CLEAR[0] as f32), to_unorm8(scene::CLEAR[1] as f32), to_unorm8(scene::CLEAR[2] as f32), 255]);
     let mut image = RgbaImage::from_pixel(w, h, clear);
     let mut outside = vec![false; (w * h) as usize];
     let mut shadowed = vec![false; (w * h) as usize];
+    let mut floor = vec![false; (w * h) as usize];
     for y in 0..h {
         for x in 0..w {
             // The GPU's pixel centre, in GL NDC (y up), for row y from the top.
@@ -160,17 +180,35 @@ pub fn render_frame(params: &FrameParams) -> RefFrame {
             let i = (y * w + x) as usize;
             let ls = light_vp * hit.pos.extend(1.0);
             let ndc = ls.truncate() / ls.w;
-            outside[i] = ndc.x.abs() > 1.0 - margin || ndc.y.abs() > 1.0 - margin || ndc.z > 1.0;
+            // A tight box counts lookups outside it as lit, which is right:
+            // it holds every caster that can shadow what is seen.
+            outside[i] = !tight && (ls.w <= 0.0 || ndc.x.abs() > 1.0 - margin || ndc.y.abs() > 1.0 - margin || ndc.z > 1.0);
             let faces_sun = hit.normal.dot(to_sun) >= 0.05;
-            let blocked = params.view == View::Final
-                && faces_sun
-                && scene.cube(hit.pos + hit.normal * 1e-6, to_sun, 0.0).is_some();
+            let scale = params.setup.world.scale as f64;
+            let start = hit.pos + hit.normal * 1e-6 * scale;
+            let occluded = match spot {
+                None => scene.cube(start, to_sun, 0.0).is_some(),
+                // A point light: only what lies between the point and the light.
+                Some(light) => {
+                    let to_light = light - start;
+                    scene.cube(start, to_light.normalize(), 0.0).is_some_and(|(t, _)| t < to_light.length())
+                }
+            };
+            let blocked = params.view == View::Final && faces_sun && occluded;
             shadowed[i] = blocked;
-            let rgb = shade(&frame, hit.pos.as_vec3(), hit.normal.as_vec3(), hit.floor, if blocked { 0.0 } else { 1.0 });
+            floor[i] = hit.floor;
+            let rgb = shade_with(
+                &frame,
+                hit.pos.as_vec3(),
+                hit.normal.as_vec3(),
+                hit.floor,
+                if blocked { 0.0 } else { 1.0 },
+                params.setup.checker_freq,
+            );
             image.put_pixel(x, y, Rgba([to_unorm8(rgb[0]), to_unorm8(rgb[1]), to_unorm8(rgb[2]), 255]));
         }
     }
-    RefFrame { image, outside_shadow_map: outside, shadowed }
+    RefFrame { image, outside_shadow_map: outside, shadowed, floor }
 }
 
 /// The sun's depth texture by ray casting: one ray per texel centre along
@@ -196,7 +234,12 @@ fn shadow_map(frame: &Frame, scene: &Scene, n: u32) -> RefFrame {
         }
     }
     let size = (n * n) as usize;
-    RefFrame { image: super::image_ops::depth_to_grey(n, n, &bytes), outside_shadow_map: vec![false; size], shadowed: vec![false; size] }
+    RefFrame {
+        image: super::image_ops::depth_to_grey(n, n, &bytes),
+        outside_shadow_map: vec![false; size],
+        shadowed: vec![false; size],
+        floor: vec![false; size],
+    }
 }
 
 #[cfg(test)]

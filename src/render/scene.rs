@@ -63,11 +63,13 @@ pub struct FrameParams {
     /// Side of the square shadow map.
     pub shadow_size: u32,
     pub view: View,
+    /// Shadow technique and scene variants; the default is the tutorial.
+    pub setup: super::setup::Setup,
 }
 
 impl FrameParams {
     pub fn new(time: f32, width: u32, height: u32) -> FrameParams {
-        FrameParams { time, width, height, shadow_size: DEFAULT_SHADOW_SIZE, view: View::Final }
+        FrameParams { time, width, height, shadow_size: DEFAULT_SHADOW_SIZE, view: View::Final, setup: Default::default() }
     }
 
     pub fn with_view(mut self, view: View) -> FrameParams {
@@ -185,6 +187,9 @@ pub struct Frame {
     pub view: Mat4,
     pub proj: Mat4,
     pub cube_model: Mat4,
+    /// Object-to-world matrix of the floor (identity unless the world is
+    /// scaled or moved).
+    pub floor_model: Mat4,
 }
 
 impl Frame {
@@ -204,18 +209,45 @@ impl Frame {
             view,
             proj,
             cube_model: cube_model(t),
+            floor_model: Mat4::IDENTITY,
         }
     }
 
+    /// The frame a request describes. With the default setup this is
+    /// exactly [`Frame::at`].
     pub fn of(params: &FrameParams) -> Frame {
-        Frame::at(params.time, params.aspect())
+        let setup = &params.setup;
+        if *setup == super::setup::Setup::default() {
+            return Frame::at(params.time, params.aspect());
+        }
+        let t = params.time;
+        let w = setup.world;
+        let world = w.matrix();
+        let cube_model = world * Mat4::from_translation(Vec3::new(0.0, setup.cube_lift, 0.0)) * cube_model(t);
+        let floor_model = world;
+        let cam_pos = w.point(camera_pos(t));
+        let view = look_at_mat4(cam_pos, w.point(camera_target()), Vec3::Y);
+        let proj = opengl::perspective(CAMERA_FOVY_DEG.to_radians(), params.aspect(), CAMERA_NEAR * w.scale, CAMERA_FAR * w.scale);
+        let (light_view, light_proj) =
+            super::setup::light_matrices(setup, t, cube_model, floor_model, proj * view, params.shadow_size);
+        Frame {
+            light_dir: setup.light_dir(t),
+            light_view,
+            light_proj,
+            light_vp: light_proj * light_view,
+            cam_pos,
+            view,
+            proj,
+            cube_model,
+            floor_model,
+        }
     }
 
     /// The draws of either pass, in the tutorial's order: cube, then floor.
     pub fn draws(&self) -> [Draw; 2] {
         [
             Draw { object: Object::Cube, model: self.cube_model, is_floor: 0.0 },
-            Draw { object: Object::Floor, model: Mat4::IDENTITY, is_floor: 1.0 },
+            Draw { object: Object::Floor, model: self.floor_model, is_floor: 1.0 },
         ]
     }
 

@@ -1322,12 +1322,23 @@ impl<'a, 'd> Checker<'a, 'd> {
                         return err_expr(span);
                     }
                 };
-                let constant = match i.kind {
-                    ExprKind::Int(k) => Some(k),
-                    ExprKind::Uint(k) => Some(k as i64),
+                // A literal or a named constant index is checked here; naga
+                // would otherwise reject the IR (an internal error).
+                let constant_index = match &i.kind {
+                    ExprKind::Int(k) => Some(*k),
+                    ExprKind::Uint(k) => Some(*k as i64),
+                    ExprKind::Unary(UnaryOp::Neg, x) => match x.kind {
+                        ExprKind::Int(k) => Some(-k),
+                        _ => None,
+                    },
+                    ExprKind::Const(c) => match self.out.consts[*c].value {
+                        ConstValue::Int(k) => Some(k),
+                        ConstValue::Uint(k) => Some(k as i64),
+                        _ => None,
+                    },
                     _ => None,
                 };
-                if let Some(k) = constant {
+                if let Some(k) = constant_index {
                     if k < 0 || k as u64 >= len as u64 {
                         let d = Diagnostic::error(format!("index {k} is out of bounds for `{}` (length {len})", self.show(&b.ty)), i.span);
                         self.diags.push(d);

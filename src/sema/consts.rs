@@ -260,6 +260,9 @@ pub fn binary(op: BinaryOp, a: &ConstValue, ta: &Ty, b: &ConstValue, tb: &Ty) ->
             (ConstValue::Float(x), ConstValue::Float(y)) => {
                 // In f32, one rounding per operation, as the GPU computes.
                 let (x, y) = (x as f32, y as f32);
+                if matches!(op, Div | Mod) && y == 0.0 {
+                    return Err("division by zero in constant".into());
+                }
                 let r = match op {
                     Add => x + y,
                     Sub => x - y,

@@ -1157,7 +1157,8 @@ impl<'a> Parser<'a> {
         let kind = match suffix {
             "" => ExprKind::Int(value, IntSuffix::None),
             "u" | "U" => ExprKind::Int(value, IntSuffix::Unsigned),
-            "f" | "F" if radix == 10 => ExprKind::Float(value as f64),
+            // Rounded once, straight to f32.
+            "f" | "F" if radix == 10 => ExprKind::Float(value as f32 as f64),
             "d" | "D" | "lf" | "LF" if radix == 10 => return self.double_error(t),
             _ => {
                 let msg = format!("unsupported suffix `{suffix}` on integer literal `{text}`");
@@ -1184,8 +1185,14 @@ impl<'a> Parser<'a> {
                 return Err(());
             }
         }
-        match body.parse::<f64>() {
-            Ok(v) => Ok(Expr { kind: ExprKind::Float(v), span: t.span }),
+        // Parsed straight to f32 (correctly rounded once; through f64 a
+        // decimal near an f32 midpoint would round twice) and kept exactly.
+        match body.parse::<f32>() {
+            Ok(v) if v.is_infinite() => {
+                self.err(t, "float literal is out of range for `float`".to_string(), "too large for `float` (largest 3.4028235e38)");
+                Err(())
+            }
+            Ok(v) => Ok(Expr { kind: ExprKind::Float(v as f64), span: t.span }),
             Err(_) => {
                 self.err(t, format!("invalid number `{text}`"), "invalid number");
                 Err(())
