@@ -316,9 +316,8 @@ fn reference_tutorial_compiles_and_validates() {
 /// golden outputs are exactly what lands there.
 #[test]
 fn compile_a_directory() {
-    // A tree of the project's programs whose entry point names are unique
-    // per output directory (shaders/techniques shares the scene's entry
-    // names across files on purpose; see below).
+    // A tree of the project's programs (entry point names are unique per
+    // output directory; see the clash below).
     fn copy_tree(from: &Path, to: &Path) {
         std::fs::create_dir_all(to).unwrap();
         for e in std::fs::read_dir(from).unwrap() {
@@ -362,8 +361,12 @@ fn compile_a_directory() {
     assert!(stderr(&o).contains("no `.das` files"), "{}", stderr(&o));
     // Two files with the same entry point names cannot share an output
     // directory: the later one is refused by name and nothing of it is written.
+    let twins = tmp.path().join("twins");
+    std::fs::create_dir(&twins).unwrap();
+    std::fs::copy(repo().join("shaders/shadow.das"), twins.join("a.das")).unwrap();
+    std::fs::copy(repo().join("shaders/shadow.das"), twins.join("b.das")).unwrap();
     let clash = tmp.path().join("clash");
-    let o = umbrac(&["compile", repo().join("shaders/techniques").to_str().unwrap(), "-o", clash.to_str().unwrap()], tmp.path());
+    let o = umbrac(&["compile", twins.to_str().unwrap(), "-o", clash.to_str().unwrap()], tmp.path());
     assert_eq!(code(&o), 1, "{}", stderr(&o));
     assert!(stderr(&o).contains("is an output of both"), "{}", stderr(&o));
 }
