@@ -316,8 +316,26 @@ fn reference_tutorial_compiles_and_validates() {
 /// golden outputs are exactly what lands there.
 #[test]
 fn compile_a_directory() {
+    // A tree of the project's programs (entry point names are unique per
+    // output directory; see the clash below).
+    fn copy_tree(from: &Path, to: &Path) {
+        std::fs::create_dir_all(to).unwrap();
+        for e in std::fs::read_dir(from).unwrap() {
+            let p = e.unwrap().path();
+            let dest = to.join(p.file_name().unwrap());
+            if p.is_dir() {
+                copy_tree(&p, &dest);
+            } else {
+                std::fs::copy(&p, &dest).unwrap();
+            }
+        }
+    }
+    let src = tempfile::tempdir().unwrap();
+    std::fs::copy(repo().join("shaders/shadow.das"), src.path().join("shadow.das")).unwrap();
+    copy_tree(&repo().join("shaders/features"), &src.path().join("features"));
+    copy_tree(&repo().join("shaders/programs"), &src.path().join("programs"));
     let tmp = tempfile::tempdir().unwrap();
-    let o = umbrac(&["compile", repo().join("shaders").to_str().unwrap(), "-o", tmp.path().to_str().unwrap()], tmp.path());
+    let o = umbrac(&["compile", src.path().to_str().unwrap(), "-o", tmp.path().to_str().unwrap()], tmp.path());
     assert_eq!(code(&o), 0, "{}", stderr(&o));
     for (sub, stem) in [("", "shadow"), ("features", "points"), ("programs", "bloom")] {
         let golden = repo().join("tests/golden").join(stem);
@@ -341,4 +359,14 @@ fn compile_a_directory() {
     let o = umbrac(&["compile", empty.to_str().unwrap()], tmp.path());
     assert_eq!(code(&o), 2, "{}", stderr(&o));
     assert!(stderr(&o).contains("no `.das` files"), "{}", stderr(&o));
+    // Two files with the same entry point names cannot share an output
+    // directory: the later one is refused by name and nothing of it is written.
+    let twins = tmp.path().join("twins");
+    std::fs::create_dir(&twins).unwrap();
+    std::fs::copy(repo().join("shaders/shadow.das"), twins.join("a.das")).unwrap();
+    std::fs::copy(repo().join("shaders/shadow.das"), twins.join("b.das")).unwrap();
+    let clash = tmp.path().join("clash");
+    let o = umbrac(&["compile", twins.to_str().unwrap(), "-o", clash.to_str().unwrap()], tmp.path());
+    assert_eq!(code(&o), 1, "{}", stderr(&o));
+    assert!(stderr(&o).contains("is an output of both"), "{}", stderr(&o));
 }

@@ -205,6 +205,41 @@ fn construct(ty: &Ty, vals: Vec<(ConstValue, Ty)>) -> Option<ConstValue> {
     }
 }
 
+/// The result of folding one integer operation.
+enum Folded<T> {
+    /// The value, or `None` for overflow or division by zero.
+    Value(Option<T>),
+    /// A comparison.
+    Bool(bool),
+}
+
+/// Folds `x op y` for one integer type (`i32` or `u32`); `None` when the
+/// operator does not apply to integers.
+macro_rules! fold_int {
+    ($op:expr, $x:expr, $y:expr, $shift:expr) => {{
+        let (x, y) = ($x, $y);
+        match $op {
+            Add => Some(Folded::Value(x.checked_add(y))),
+            Sub => Some(Folded::Value(x.checked_sub(y))),
+            Mul => Some(Folded::Value(x.checked_mul(y))),
+            Div => Some(Folded::Value(x.checked_div(y))),
+            Mod => Some(Folded::Value(x.checked_rem(y))),
+            BitAnd => Some(Folded::Value(Some(x & y))),
+            BitOr => Some(Folded::Value(Some(x | y))),
+            BitXor => Some(Folded::Value(Some(x ^ y))),
+            Shl => Some(Folded::Value(x.checked_shl($shift))),
+            Shr => Some(Folded::Value(x.checked_shr($shift))),
+            Eq => Some(Folded::Bool(x == y)),
+            Ne => Some(Folded::Bool(x != y)),
+            Lt => Some(Folded::Bool(x < y)),
+            Le => Some(Folded::Bool(x <= y)),
+            Gt => Some(Folded::Bool(x > y)),
+            Ge => Some(Folded::Bool(x >= y)),
+            _ => None,
+        }
+    }};
+}
+
 pub fn binary(op: BinaryOp, a: &ConstValue, ta: &Ty, b: &ConstValue, tb: &Ty) -> Result<(ConstValue, Ty), String> {
     use BinaryOp::*;
     let show = |t: &Ty| super::types::TyDisplay { ty: t, struct_names: &[] }.to_string();
@@ -296,64 +331,16 @@ pub fn binary(op: BinaryOp, a: &ConstValue, ta: &Ty, b: &ConstValue, tb: &Ty) ->
                     _ => return Err(mismatch()),
                 }
             }
-            (ConstValue::Int(x), ConstValue::Int(y)) => {
-                let (x, y) = (x as i32, y as i32);
-                let r = match op {
-                    Add => x.checked_add(y),
-                    Sub => x.checked_sub(y),
-                    Mul => x.checked_mul(y),
-                    Div => x.checked_div(y),
-                    Mod => x.checked_rem(y),
-                    BitAnd => Some(x & y),
-                    BitOr => Some(x | y),
-                    BitXor => Some(x ^ y),
-                    Shl => x.checked_shl(y as u32),
-                    Shr => x.checked_shr(y as u32),
-                    Eq | Ne | Lt | Le | Gt | Ge => {
-                        let b = match op {
-                            Eq => x == y,
-                            Ne => x != y,
-                            Lt => x < y,
-                            Le => x <= y,
-                            Gt => x > y,
-                            _ => x >= y,
-                        };
-                        out.push(ConstValue::Bool(b));
-                        continue;
-                    }
-                    _ => return Err(mismatch()),
-                };
-                ConstValue::Int(r.ok_or("integer overflow or division by zero in constant")? as i64)
-            }
-            (ConstValue::Uint(x), ConstValue::Uint(y)) => {
-                let (x, y) = (x as u32, y as u32);
-                let r = match op {
-                    Add => x.checked_add(y),
-                    Sub => x.checked_sub(y),
-                    Mul => x.checked_mul(y),
-                    Div => x.checked_div(y),
-                    Mod => x.checked_rem(y),
-                    BitAnd => Some(x & y),
-                    BitOr => Some(x | y),
-                    BitXor => Some(x ^ y),
-                    Shl => x.checked_shl(y),
-                    Shr => x.checked_shr(y),
-                    Eq | Ne | Lt | Le | Gt | Ge => {
-                        let b = match op {
-                            Eq => x == y,
-                            Ne => x != y,
-                            Lt => x < y,
-                            Le => x <= y,
-                            Gt => x > y,
-                            _ => x >= y,
-                        };
-                        out.push(ConstValue::Bool(b));
-                        continue;
-                    }
-                    _ => return Err(mismatch()),
-                };
-                ConstValue::Uint(r.ok_or("integer overflow or division by zero in constant")? as u64)
-            }
+            (ConstValue::Int(x), ConstValue::Int(y)) => match fold_int!(op, x as i32, y as i32, y as u32) {
+                Some(Folded::Bool(b)) => ConstValue::Bool(b),
+                Some(Folded::Value(v)) => ConstValue::Int(v.ok_or("integer overflow or division by zero in constant")? as i64),
+                None => return Err(mismatch()),
+            },
+            (ConstValue::Uint(x), ConstValue::Uint(y)) => match fold_int!(op, x as u32, y as u32, y as u32) {
+                Some(Folded::Bool(b)) => ConstValue::Bool(b),
+                Some(Folded::Value(v)) => ConstValue::Uint(v.ok_or("integer overflow or division by zero in constant")? as u64),
+                None => return Err(mismatch()),
+            },
             (ConstValue::Bool(x), ConstValue::Bool(y)) => match op {
                 And => ConstValue::Bool(x && y),
                 Or => ConstValue::Bool(x || y),
