@@ -745,7 +745,9 @@ impl Renderer {
         Ok(image)
     }
 
-    fn draw_mesh(&self, pass: &mut wgpu::RenderPass<'_>, object: Object, groups: &[(u32, wgpu::BindGroup)]) {
+    /// Binds `groups` and draws one of the scene's meshes (shared with the
+    /// technique scenes, which use the same cube and floor).
+    pub(crate) fn draw_mesh(&self, pass: &mut wgpu::RenderPass<'_>, object: Object, groups: &[(u32, wgpu::BindGroup)]) {
         let mesh = match object {
             Object::Cube => &self.cube,
             Object::Floor => &self.floor,

@@ -9,7 +9,7 @@ use wgpu::util::DeviceExt;
 
 use crate::emit::reflect_types::Reflection;
 use crate::render::gpu::{Renderer, ShaderCode, ShaderSet, Via};
-use crate::render::scene::{self, FrameParams, Object};
+use crate::render::scene::{self, FrameParams};
 
 use super::{block_bytes, entry, sampler_layer, ShadowTarget, TechFrame, Technique, DRAWS};
 
@@ -41,17 +41,9 @@ pub struct TechProgram {
     main: Pass,
 }
 
-struct Mesh {
-    vertices: wgpu::Buffer,
-    indices: wgpu::Buffer,
-    count: u32,
-}
-
 /// Draws technique scenes on a [`Renderer`]'s device.
 pub struct TechRenderer<'r> {
     renderer: &'r Renderer,
-    cube: Mesh,
-    floor: Mesh,
     compare: wgpu::Sampler,
     nearest: wgpu::Sampler,
 }
@@ -63,19 +55,6 @@ fn gpu_err(e: impl std::fmt::Display) -> String {
 impl<'r> TechRenderer<'r> {
     pub fn new(renderer: &'r Renderer) -> TechRenderer<'r> {
         let (device, _) = renderer.device();
-        let upload = |m: scene::Mesh| Mesh {
-            vertices: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                label: None,
-                contents: bytemuck::cast_slice(&m.vertices),
-                usage: wgpu::BufferUsages::VERTEX,
-            }),
-            indices: device.create_buffer_init(&wgpu::util::BufferInitDescriptor {
-                label: None,
-                contents: bytemuck::cast_slice(&m.indices),
-                usage: wgpu::BufferUsages::INDEX,
-            }),
-            count: m.indices.len() as u32,
-        };
         let clamp = wgpu::AddressMode::ClampToEdge;
         let compare = device.create_sampler(&wgpu::SamplerDescriptor {
             label: Some("shadow compare"),
@@ -94,7 +73,7 @@ impl<'r> TechRenderer<'r> {
             address_mode_w: clamp,
             ..Default::default()
         });
-        TechRenderer { renderer, cube: upload(scene::cube_mesh()), floor: upload(scene::floor_mesh()), compare, nearest }
+        TechRenderer { renderer, compare, nearest }
     }
 
     fn device(&self) -> &wgpu::Device {
@@ -356,7 +335,7 @@ impl<'r> TechRenderer<'r> {
             });
             pass.set_pipeline(&p.shadow.pipeline);
             for (d, &object) in DRAWS.iter().enumerate() {
-                self.draw_mesh(&mut pass, object, &groups[d]);
+                self.renderer.draw_mesh(&mut pass, object, &groups[d]);
             }
         }
         {
@@ -382,7 +361,7 @@ impl<'r> TechRenderer<'r> {
             });
             pass.set_pipeline(&p.main.pipeline);
             for (d, &object) in DRAWS.iter().enumerate() {
-                self.draw_mesh(&mut pass, object, &groups[d]);
+                self.renderer.draw_mesh(&mut pass, object, &groups[d]);
             }
         }
         let (w, h) = (params.width, params.height);
@@ -420,15 +399,5 @@ impl<'r> TechRenderer<'r> {
         drop(mapped);
         readback.unmap();
         RgbaImage::from_raw(w, h, pixels).ok_or_else(|| "short readback".to_string())
-    }
-
-    fn draw_mesh(&self, pass: &mut wgpu::RenderPass<'_>, object: Object, groups: &[(u32, wgpu::BindGroup)]) {
-        let mesh = if object == Object::Cube { &self.cube } else { &self.floor };
-        for (g, bg) in groups {
-            pass.set_bind_group(*g, bg, &[]);
-        }
-        pass.set_vertex_buffer(0, mesh.vertices.slice(..));
-        pass.set_index_buffer(mesh.indices.slice(..), wgpu::IndexFormat::Uint32);
-        pass.draw_indexed(0..mesh.count, 0, 0..1);
     }
 }
