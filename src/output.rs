@@ -21,6 +21,7 @@
 use std::fmt;
 use std::io::Write;
 use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicU32, Ordering};
 
 use crate::Artifact;
 
@@ -81,8 +82,8 @@ pub fn write_artifacts(dir: &Path, artifacts: &[Artifact]) -> Result<(), OutputE
     }
 
     // Write and fsync every temporary before touching any destination.
-    // A `NamedTempFile` deletes itself when dropped, so every early return
-    // below cleans up.
+    // A `TempFile` deletes itself when dropped, so every early return below
+    // cleans up.
     let mut temps = Vec::with_capacity(artifacts.len());
     for a in artifacts {
         let dest = dir.join(&a.file_name);
@@ -94,16 +95,15 @@ pub fn write_artifacts(dir: &Path, artifacts: &[Artifact]) -> Result<(), OutputE
     for (i, temp) in temps.into_iter().enumerate() {
         let dest = dir.join(&artifacts[i].file_name);
         #[cfg(test)]
-        let temp = match fault::rename_fails(i) {
-            Some(error) => Err(tempfile::PersistError { error, file: temp }),
-            None => Ok(temp),
+        let result = match fault::rename_fails(i) {
+            Some(error) => Err(error), // `temp` is dropped, which removes it
+            None => temp.persist(&dest),
         };
         #[cfg(not(test))]
-        let temp: Result<_, tempfile::PersistError> = Ok(temp);
-        if let Err(e) = temp.and_then(|t| t.persist(&dest)) {
-            drop(e.file); // removes the temporary
+        let result = temp.persist(&dest);
+        if let Err(e) = result {
             rollback(dir, artifacts, &previous, &done);
-            return Err(err(&dest, e.error.to_string()));
+            return Err(err(&dest, e.to_string()));
         }
         done.push(i);
     }
@@ -114,17 +114,88 @@ pub fn write_artifacts(dir: &Path, artifacts: &[Artifact]) -> Result<(), OutputE
 const TEMP_PREFIX: &str = ".umbrac-";
 const TEMP_SUFFIX: &str = ".tmp";
 
-fn write_temp(dir: &Path, contents: &[u8]) -> std::io::Result<tempfile::NamedTempFile> {
-    let prefix = format!("{TEMP_PREFIX}{}-", std::process::id());
-    let mut temp = tempfile::Builder::new().prefix(&prefix).suffix(TEMP_SUFFIX).tempfile_in(dir)?;
-    temp.write_all(contents)?;
-    // Temporaries are created 0600; outputs are ordinary readable files.
+/// A temporary file in an output directory, removed when dropped unless
+/// [`TempFile::persist`] renamed it onto its destination. std only: a
+/// build-dependency should not need a crate (and its platform layer) for
+/// this.
+struct TempFile {
+    path: PathBuf,
+    /// Open until the rename.
+    file: Option<std::fs::File>,
+    renamed: bool,
+}
+
+impl TempFile {
+    /// Creates a new, empty `.umbrac-PID-XXXXXX.tmp` in `dir`. Names come
+    /// from a counter shared by every thread of the process, so threads
+    /// writing into one directory never pick the same one; a name that
+    /// exists anyway (a leftover of an earlier process with this pid, say)
+    /// is skipped, never opened.
+    fn new_in(dir: &Path) -> std::io::Result<TempFile> {
+        static COUNTER: AtomicU32 = AtomicU32::new(0);
+        let pid = std::process::id();
+        Self::create_first_free(dir, || {
+            let n = COUNTER.fetch_add(1, Ordering::Relaxed);
+            format!("{TEMP_PREFIX}{pid}-{n:06x}{TEMP_SUFFIX}")
+        })
+    }
+
+    /// Creates the first name `next_name` gives that does not exist yet.
+    fn create_first_free(dir: &Path, mut next_name: impl FnMut() -> String) -> std::io::Result<TempFile> {
+        const ATTEMPTS: u32 = 1000;
+        for _ in 0..ATTEMPTS {
+            let path = dir.join(next_name());
+            // `create_new` fails rather than open an existing file (or
+            // follow a symlink planted under the name).
+            match std::fs::OpenOptions::new().write(true).create_new(true).open(&path) {
+                Ok(file) => return Ok(TempFile { path, file: Some(file), renamed: false }),
+                Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
+                Err(e) => return Err(e),
+            }
+        }
+        Err(std::io::Error::new(std::io::ErrorKind::AlreadyExists, format!("no free temporary file name in {} after {ATTEMPTS} tries", dir.display())))
+    }
+
+    #[cfg(test)]
+    fn path(&self) -> &Path {
+        &self.path
+    }
+
+    fn file(&self) -> &std::fs::File {
+        self.file.as_ref().expect("a temporary file is open until it is persisted")
+    }
+
+    /// Renames the temporary onto `dest` (atomically replacing it). On
+    /// failure the temporary is removed.
+    fn persist(mut self, dest: &Path) -> std::io::Result<()> {
+        // Closed before the rename: some platforms cannot rename open files.
+        drop(self.file.take());
+        std::fs::rename(&self.path, dest)?;
+        self.renamed = true;
+        Ok(())
+    }
+}
+
+impl Drop for TempFile {
+    fn drop(&mut self) {
+        drop(self.file.take());
+        if !self.renamed {
+            let _ = std::fs::remove_file(&self.path);
+        }
+    }
+}
+
+fn write_temp(dir: &Path, contents: &[u8]) -> std::io::Result<TempFile> {
+    let temp = TempFile::new_in(dir)?;
+    let mut file = temp.file();
+    file.write_all(contents)?;
+    // Outputs are ordinary readable files, whatever the umask.
     #[cfg(unix)]
     {
         use std::os::unix::fs::PermissionsExt;
-        temp.as_file().set_permissions(std::fs::Permissions::from_mode(0o644))?;
+        file.set_permissions(std::fs::Permissions::from_mode(0o644))?;
     }
-    temp.as_file().sync_all()?;
+    file.sync_all()?;
     Ok(temp)
 }
 
@@ -289,5 +360,62 @@ mod tests {
         let t = write_temp(d.path(), b"x").unwrap();
         let name = t.path().file_name().unwrap().to_string_lossy().into_owned();
         assert!(name.starts_with(&format!(".umbrac-{}-", std::process::id())) && name.ends_with(".tmp"), "{name}");
+    }
+
+    #[test]
+    fn a_temporary_is_removed_unless_persisted() {
+        let d = tempfile::tempdir().unwrap();
+        let t = write_temp(d.path(), b"half").unwrap();
+        assert_eq!(std::fs::read(t.path()).unwrap(), b"half");
+        drop(t);
+        assert!(listing(d.path()).is_empty());
+        let t = write_temp(d.path(), b"whole").unwrap();
+        t.persist(&d.path().join("out.wgsl")).unwrap();
+        assert_eq!(listing(d.path()), ["out.wgsl"]);
+        #[cfg(unix)]
+        {
+            use std::os::unix::fs::PermissionsExt;
+            let mode = std::fs::metadata(d.path().join("out.wgsl")).unwrap().permissions().mode();
+            assert_eq!(mode & 0o777, 0o644);
+        }
+        // A failed rename (onto a directory) removes the temporary too.
+        std::fs::create_dir(d.path().join("sub")).unwrap();
+        std::fs::write(d.path().join("sub/x"), "").unwrap();
+        let t = write_temp(d.path(), b"x").unwrap();
+        assert!(t.persist(&d.path().join("sub")).is_err());
+        assert_eq!(listing(d.path()), ["out.wgsl", "sub"]);
+    }
+
+    #[test]
+    fn taken_temporary_names_are_skipped_not_opened() {
+        let d = tempfile::tempdir().unwrap();
+        std::fs::write(d.path().join(".umbrac-1-000000.tmp"), "someone else's").unwrap();
+        let mut names = [".umbrac-1-000000.tmp", ".umbrac-1-000001.tmp"].into_iter().map(String::from);
+        let t = TempFile::create_first_free(d.path(), || names.next().unwrap()).unwrap();
+        assert_eq!(t.path().file_name().unwrap(), ".umbrac-1-000001.tmp");
+        assert_eq!(std::fs::read_to_string(d.path().join(".umbrac-1-000000.tmp")).unwrap(), "someone else's");
+        drop(t);
+        assert_eq!(listing(d.path()), [".umbrac-1-000000.tmp"]);
+    }
+
+    #[test]
+    fn threads_writing_into_one_directory_never_share_a_temporary() {
+        let d = tempfile::tempdir().unwrap();
+        std::thread::scope(|s| {
+            for t in 0..8 {
+                let dir = d.path();
+                s.spawn(move || {
+                    for i in 0..20 {
+                        let name = format!("t{t}-{i}.wgsl");
+                        write_artifacts(dir, &[art(&name, &name)]).unwrap();
+                    }
+                });
+            }
+        });
+        let l = listing(d.path());
+        assert_eq!(l.len(), 160, "{l:?}");
+        for n in &l {
+            assert_eq!(&std::fs::read_to_string(d.path().join(n)).unwrap(), n);
+        }
     }
 }
