@@ -356,12 +356,8 @@ fn valid_name(s: &str) -> bool {
 
 /// Removes outputs of an earlier build that this one no longer makes.
 fn remove_stale(dir: &Path, artifacts: &[Artifact]) {
-    if let Ok(diffs) = crate::golden::compare(artifacts, dir) {
-        for d in diffs {
-            if let crate::golden::Difference::Stale { file } = d {
-                let _ = std::fs::remove_file(file);
-            }
-        }
+    for file in crate::output::stale_outputs(dir, artifacts) {
+        let _ = std::fs::remove_file(file);
     }
 }
 

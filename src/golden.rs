@@ -1,5 +1,6 @@
 //! Golden-output checks: compare freshly compiled artifacts with the copies
-//! checked into a directory, and re-bless them on request.
+//! checked into a directory, and re-bless them on request. Feature `golden`
+//! (on by default, and in `cli` for `umbrac compile --check`).
 //!
 //! Used by umbrac's own tests, by `umbrac compile --check`, and by users'
 //! `#[test]`s:
@@ -46,11 +47,7 @@ pub fn unified_diff(old: &str, new: &str, name: &str) -> String {
     similar::TextDiff::from_lines(old, new).unified_diff().context_radius(3).header(&format!("a/{name}"), &format!("b/{name}")).to_string()
 }
 
-/// Whether a file name looks like one of umbrac's outputs (so that stale
-/// files are recognised and unrelated files in the directory are left alone).
-pub fn is_output_name(name: &str) -> bool {
-    [".330.vert", ".330.frag", ".300es.vert", ".300es.frag", ".wgsl", ".spv", ".reflect.json"].iter().any(|s| name.ends_with(s))
-}
+pub use crate::output::is_output_name;
 
 /// Compares artifacts with the files in `dir`.
 pub fn compare(artifacts: &[Artifact], dir: &Path) -> std::io::Result<Vec<Difference>> {
@@ -70,16 +67,7 @@ pub fn compare(artifacts: &[Artifact], dir: &Path) -> std::io::Result<Vec<Differ
             Err(e) => return Err(e),
         }
     }
-    if let Ok(entries) = std::fs::read_dir(dir) {
-        let mut stale: Vec<PathBuf> = entries
-            .filter_map(|e| e.ok())
-            .map(|e| e.file_name().to_string_lossy().into_owned())
-            .filter(|n| is_output_name(n) && !artifacts.iter().any(|a| a.file_name == *n))
-            .map(|n| dir.join(n))
-            .collect();
-        stale.sort();
-        out.extend(stale.into_iter().map(|file| Difference::Stale { file }));
-    }
+    out.extend(crate::output::stale_outputs(dir, artifacts).into_iter().map(|file| Difference::Stale { file }));
     Ok(out)
 }
 

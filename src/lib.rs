@@ -16,6 +16,7 @@ pub mod bindgen;
 pub mod build;
 pub mod diag;
 pub mod emit;
+#[cfg(feature = "golden")]
 pub mod golden;
 pub mod lower;
 pub mod output;

@@ -199,6 +199,26 @@ fn write_temp(dir: &Path, contents: &[u8]) -> std::io::Result<TempFile> {
     Ok(temp)
 }
 
+/// Whether a file name looks like one of umbrac's outputs (so that stale
+/// files are recognised and unrelated files in the directory are left alone).
+pub fn is_output_name(name: &str) -> bool {
+    [".330.vert", ".330.frag", ".300es.vert", ".300es.frag", ".wgsl", ".spv", ".reflect.json"].iter().any(|s| name.ends_with(s))
+}
+
+/// The files in `dir` named like outputs (see [`is_output_name`]) that none
+/// of `artifacts` produces, sorted; empty if `dir` cannot be read.
+pub fn stale_outputs(dir: &Path, artifacts: &[Artifact]) -> Vec<PathBuf> {
+    let Ok(entries) = std::fs::read_dir(dir) else { return Vec::new() };
+    let mut stale: Vec<PathBuf> = entries
+        .filter_map(|e| e.ok())
+        .map(|e| e.file_name().to_string_lossy().into_owned())
+        .filter(|n| is_output_name(n) && !artifacts.iter().any(|a| a.file_name == *n))
+        .map(|n| dir.join(n))
+        .collect();
+    stale.sort();
+    stale
+}
+
 /// Removes temporaries left in `dir` by umbrac processes that no longer
 /// run (killed mid-write). Best effort: errors are ignored.
 fn remove_stale_temps(dir: &Path) {

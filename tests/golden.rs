@@ -2,6 +2,8 @@
 //! and diffed against tests/golden/<stem>/ on every run.
 //! Re-bless after an intended change with `UMBRAC_BLESS=1 cargo test --test golden`.
 
+#![cfg(feature = "golden")]
+
 use std::path::{Path, PathBuf};
 
 fn programs() -> Vec<PathBuf> {
