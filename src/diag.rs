@@ -7,12 +7,11 @@
 
 use codespan_reporting::diagnostic::{Diagnostic as CsDiagnostic, Label};
 use codespan_reporting::term::{self, termcolor::WriteColor};
-use serde::Serialize;
 
 use crate::source::{SourceMap, Span};
 
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
-#[serde(rename_all = "lowercase")]
+/// In JSON: `"error"`, `"warning"`, `"bug"`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Severity {
     Error,
     Warning,
@@ -159,7 +158,7 @@ impl Diagnostic {
     }
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug)]
 pub struct JsonLocation {
     pub file: String,
     pub line: usize,
@@ -170,13 +169,13 @@ pub struct JsonLocation {
     pub byte_end: usize,
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug)]
 pub struct JsonRelated {
     pub location: JsonLocation,
     pub message: String,
 }
 
-#[derive(Debug, Serialize)]
+#[derive(Debug)]
 pub struct JsonDiagnostic {
     pub severity: Severity,
     pub message: String,
@@ -187,6 +186,43 @@ pub struct JsonDiagnostic {
     pub include_chain: Vec<JsonLocation>,
     pub rendered: String,
 }
+
+impl serde_core::Serialize for Severity {
+    fn serialize<S: serde_core::Serializer>(&self, serializer: S) -> Result<S::Ok, S::Error> {
+        let name = match self {
+            Severity::Error => "error",
+            Severity::Warning => "warning",
+            Severity::Bug => "bug",
+        };
+        serializer.serialize_unit_variant("Severity", *self as u32, name)
+    }
+}
+
+serialize_struct!(JsonLocation {
+    "file": file,
+    "line": line,
+    "column": column,
+    "end_line": end_line,
+    "end_column": end_column,
+    "byte_start": byte_start,
+    "byte_end": byte_end,
+});
+
+serialize_struct!(JsonRelated {
+    "location": location,
+    "message": message,
+});
+
+serialize_struct!(JsonDiagnostic {
+    "severity": severity,
+    "message": message,
+    "location": location,
+    "label": label,
+    "related": related,
+    "notes": notes,
+    "include_chain": include_chain,
+    "rendered": rendered,
+});
 
 /// Where stages put their diagnostics. Caps the number of errors kept so a
 /// pathological input cannot flood the output.

@@ -12,6 +12,9 @@
 //! [`source::SourceMap`]. Nothing is written to disk here; see
 //! [`output`] for atomic writes.
 
+#[macro_use]
+mod serialize;
+
 pub mod bindgen;
 pub mod build;
 pub mod diag;

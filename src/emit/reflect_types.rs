@@ -9,12 +9,17 @@
 //! - every sampler is a texture plus (on WGSL/SPIR-V) a separate sampler
 //!   binding; on GL it is one `sampler*` uniform on a texture unit.
 
-use serde::{Deserialize, Serialize};
+//!
+//! Serialised by `serde::Serialize` impls written out below (the keys and
+//! their order are the JSON format); `serde::Deserialize`, for reading a
+//! manifest back, is derived with the feature `deserialize` (in the
+//! defaults and in `render`).
 
 /// Bumped when the JSON shape changes incompatibly.
 pub const REFLECTION_FORMAT: u32 = 1;
 
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "deserialize", derive(serde::Deserialize))]
 pub struct Reflection {
     pub format: u32,
     /// The input file's name as given to the compiler.
@@ -27,7 +32,8 @@ pub struct Reflection {
     pub samplers: Vec<Sampler>,
 }
 
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "deserialize", derive(serde::Deserialize))]
 pub struct EntryPoint {
     /// Entry point name (the `def` name, or `[vertex_program(name = "...")]`).
     pub name: String,
@@ -48,32 +54,34 @@ pub struct EntryPoint {
     pub samplers: Vec<String>,
 }
 
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "deserialize", derive(serde::Deserialize))]
 pub struct Io {
     /// The DSL global's name.
     pub name: String,
     pub location: u32,
     /// DSL type, e.g. `float3`.
-    #[serde(rename = "type")]
+    #[cfg_attr(feature = "deserialize", serde(rename = "type"))]
     pub ty: String,
     /// wgpu vertex format name for vertex attributes, e.g. `Float32x3`.
-    #[serde(skip_serializing_if = "Option::is_none", default)]
+    #[cfg_attr(feature = "deserialize", serde(default))]
     pub vertex_format: Option<String>,
     /// Byte size of one element of this type in a tightly packed vertex buffer.
     pub size: u32,
     /// `"perspective"` or `"flat"` for varyings.
-    #[serde(skip_serializing_if = "Option::is_none", default)]
+    #[cfg_attr(feature = "deserialize", serde(default))]
     pub interpolation: Option<String>,
     /// The identifier the GLSL output uses for it (both GLSL profiles).
     pub glsl_name: String,
 }
 
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "deserialize", derive(serde::Deserialize))]
 pub struct UniformBlock {
     /// The DSL global's name.
     pub name: String,
     /// DSL type of the global.
-    #[serde(rename = "type")]
+    #[cfg_attr(feature = "deserialize", serde(rename = "type"))]
     pub ty: String,
     /// Block size in bytes (std140 on GL, the identical WGSL uniform layout
     /// on WGSL/SPIR-V), rounded up to 16.
@@ -87,27 +95,29 @@ pub struct UniformBlock {
     pub members: Vec<Member>,
 }
 
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "deserialize", derive(serde::Deserialize))]
 pub struct Member {
     pub name: String,
-    #[serde(rename = "type")]
+    #[cfg_attr(feature = "deserialize", serde(rename = "type"))]
     pub ty: String,
     pub offset: u32,
     pub size: u32,
     /// Stride between elements for arrays.
-    #[serde(skip_serializing_if = "Option::is_none", default)]
+    #[cfg_attr(feature = "deserialize", serde(default))]
     pub array_stride: Option<u32>,
     /// Stride between columns for matrices.
-    #[serde(skip_serializing_if = "Option::is_none", default)]
+    #[cfg_attr(feature = "deserialize", serde(default))]
     pub matrix_stride: Option<u32>,
 }
 
-#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "deserialize", derive(serde::Deserialize))]
 pub struct Sampler {
     /// The DSL global's name; also its `uniform sampler*` name in GLSL.
     pub name: String,
     /// DSL type, e.g. `sampler2DShadow`.
-    #[serde(rename = "type")]
+    #[cfg_attr(feature = "deserialize", serde(rename = "type"))]
     pub ty: String,
     /// The identifier the GLSL output uses (set its texture unit with
     /// glUniform1i on this name).
@@ -127,3 +137,65 @@ pub struct Sampler {
     /// Whether the sampler must be a comparison sampler.
     pub comparison: bool,
 }
+
+serialize_struct!(Reflection {
+    "format": format,
+    "source": source,
+    "conventions": conventions,
+    "entry_points": entry_points,
+    "uniform_blocks": uniform_blocks,
+    "samplers": samplers,
+});
+
+serialize_struct!(EntryPoint {
+    "name": name,
+    "stage": stage,
+    "files": files,
+    "inputs": inputs,
+    "outputs": outputs,
+    "builtins": builtins,
+    "uniform_blocks": uniform_blocks,
+    "samplers": samplers,
+});
+
+serialize_struct!(Io {
+    "name": name,
+    "location": location,
+    "type": ty,
+    "vertex_format": vertex_format?,
+    "size": size,
+    "interpolation": interpolation?,
+    "glsl_name": glsl_name,
+});
+
+serialize_struct!(UniformBlock {
+    "name": name,
+    "type": ty,
+    "size": size,
+    "group": group,
+    "binding": binding,
+    "glsl_block": glsl_block,
+    "members": members,
+});
+
+serialize_struct!(Member {
+    "name": name,
+    "type": ty,
+    "offset": offset,
+    "size": size,
+    "array_stride": array_stride?,
+    "matrix_stride": matrix_stride?,
+});
+
+serialize_struct!(Sampler {
+    "name": name,
+    "type": ty,
+    "glsl_name": glsl_name,
+    "texture_unit": texture_unit,
+    "group": group,
+    "texture_binding": texture_binding,
+    "sampler_binding": sampler_binding,
+    "dimension": dimension,
+    "sample_type": sample_type,
+    "comparison": comparison,
+});
