@@ -1,6 +1,6 @@
 //! GLSL 330 core and GLSL ES 3.00, one file per entry point.
 //!
-//! naga's GLSL writer runs on `Lowered::gl`, whose resource globals carry no
+//! naga's GLSL writer runs on the GL modules (`Lowered::gl`), whose resource globals carry no
 //! binding, so its namer gives samplers and uniform instances their source
 //! names. Two things are then fixed up in the text:
 //! - uniform blocks: naga names them `<type>_block_<N><Stage>`, which differs
@@ -268,7 +268,7 @@ fn add_es_precision(src: &str) -> Option<String> {
     const ANCHOR: &str = "precision highp int;\n";
     let at = src.find(ANCHOR)? + ANCHOR.len();
     // Every such type name contains `sampler`: look only at those words.
-    let used: Vec<&str> = src.match_indices("sampler").map(|(i, _)| text::ident_at(src, i)).collect();
+    let used: Vec<&str> = memchr::memmem::find_iter(src.as_bytes(), "sampler").map(|i| text::ident_at(src, i)).collect();
     let mut lines = String::new();
     for ty in ES_NO_DEFAULT_PRECISION {
         if used.contains(ty) {

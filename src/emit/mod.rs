@@ -198,7 +198,7 @@ pub(crate) mod text {
     /// `s` as a whole identifier.
     pub fn find_ident<'a>(s: &'a str, name: &'a str) -> impl Iterator<Item = usize> + 'a {
         let b = s.as_bytes();
-        s.match_indices(name).map(|(i, _)| i).filter(move |&i| {
+        memchr::memmem::find_iter(b, name.as_bytes()).filter(move |&i| {
             let end = i + name.len();
             (i == 0 || !is_ident_char(b[i - 1])) && (end == b.len() || !is_ident_char(b[end]))
         })

@@ -123,15 +123,16 @@ impl SamplerKind {
     }
 }
 
-/// A uniform block or sampler of the program, with its place in both modules.
+/// A uniform block or sampler of the program, with its place in the GPU
+/// module.
 #[derive(Clone, Debug)]
 pub struct Resource {
     /// The DSL global's name.
     pub name: String,
     pub span: Span,
     pub kind: ResourceKind,
-    /// The global holding the value (a uniform) or the texture (a sampler);
-    /// the same handle in `gl` and `gpu`.
+    /// The global holding the value (a uniform) or the texture (a sampler)
+    /// in `gpu` (a GL module has the global under the same name).
     pub global: naga::Handle<naga::GlobalVariable>,
     /// The separate sampler global of a sampler resource.
     pub sampler_global: Option<naga::Handle<naga::GlobalVariable>>,
@@ -167,7 +168,7 @@ pub struct EntryInterface {
     /// The entry point's name; also `module.entry_points[index].name`.
     pub name: String,
     pub stage: naga::ShaderStage,
-    /// Index into `module.entry_points` (the same in both modules).
+    /// Index into `gpu.entry_points`, and into `Lowered::gl`.
     pub index: usize,
     pub inputs: Vec<IoVar>,
     pub outputs: Vec<IoVar>,
