@@ -392,7 +392,7 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
             let (binding, arg_ty, to_int) = match g.kind {
                 GlobalKind::Io { location: l, .. } => {
                     let interp = if stage == Fragment { interpolation(&g.ty) } else { (None, None) };
-                    let dsl_type = module::show_ty(p, &g.ty);
+                    let dsl_type = m.show_ty(&g.ty);
                     iface.inputs.push(IoVar { name: g.name.clone(), location: l, ty, dsl_type, interpolation: interp.0 });
                     (location(l, interp), ty, false)
                 }
@@ -427,7 +427,7 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
                             .with_note("`@out` and `@inout` variables written by one vertex entry point share the output locations"));
                     }
                     let interp = if stage == Vertex { interpolation(&g.ty) } else { (None, None) };
-                    let dsl_type = module::show_ty(p, &g.ty);
+                    let dsl_type = m.show_ty(&g.ty);
                     iface.outputs.push(IoVar { name: g.name.clone(), location: l, ty, dsl_type, interpolation: interp.0 });
                     outs.push((Some(h), None, ty, location(l, interp), g.name.clone()));
                 }

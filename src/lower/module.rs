@@ -45,6 +45,8 @@ pub struct ModuleBuilder<'p> {
     pub resource_of: HashMap<sema::GlobalId, Vec<usize>>,
     /// (image, sampler) globals of every sampler element.
     pub sampler_elems: Vec<(Handle<naga::GlobalVariable>, Handle<naga::GlobalVariable>)>,
+    /// The program's struct names, for DSL type spellings in the interface.
+    struct_names: Vec<String>,
 }
 
 pub fn naga_scalar(s: Scalar) -> naga::Scalar {
@@ -79,7 +81,17 @@ impl<'p> ModuleBuilder<'p> {
             resources: Vec::new(),
             resource_of: HashMap::new(),
             sampler_elems: Vec::new(),
+            struct_names: p.struct_names(),
         }
+    }
+
+    /// The DSL spelling of a type (`float4`, `Light[4]`), for the interface.
+    /// Only the GPU module's interface is kept: a GL module skips the text.
+    pub fn show_ty(&self, ty: &Ty) -> String {
+        if self.flavor == Flavor::Gl {
+            return String::new();
+        }
+        crate::sema::types::TyDisplay { ty, struct_names: &self.struct_names }.to_string()
     }
 
     fn add_type(&mut self, name: Option<String>, inner: TypeInner) -> Handle<Type> {
@@ -215,7 +227,7 @@ impl<'p> ModuleBuilder<'p> {
                         },
                         span,
                     );
-                    let dsl_type = show_ty(self.p, &g.ty);
+                    let dsl_type = self.show_ty(&g.ty);
                     self.resource_of.insert(gid, vec![self.resources.len()]);
                     self.resources.push(Resource {
                         name: g.name.clone(),
@@ -348,9 +360,4 @@ pub fn validate(module: &Module, flavor: Flavor) -> Result<naga::valid::ModuleIn
         }
         d.with_note("this is a bug in umbrac; no output was written")
     })
-}
-
-pub fn show_ty(p: &sema::Program, ty: &Ty) -> String {
-    let names = p.struct_names();
-    crate::sema::types::TyDisplay { ty, struct_names: &names }.to_string()
 }
