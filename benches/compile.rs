@@ -1,15 +1,20 @@
 //! Compile-speed benchmarks (criterion): `cargo bench --bench compile`.
 //!
-//! - `front_end`: umbrac's front end (shaders/shadow.das -> the two
-//!   validated naga modules) beside naga's WGSL front end (parse + validate)
-//!   on the equivalent WGSL program, benches/shadow_equivalent.wgsl, in the
-//!   same run;
+//! - `front_end`: umbrac's front end (shaders/shadow.das -> one validated
+//!   naga module, the whole program's) beside naga's WGSL front end (parse +
+//!   validate) on the equivalent WGSL program, benches/shadow_equivalent.wgsl,
+//!   in the same run; and umbrac to every module it emits from (the GPU
+//!   module and one GL module per entry point);
 //! - `all_targets`: shaders/shadow.das to every output (GLSL 330 and ES 3.00
-//!   per entry point, WGSL, SPIR-V, reflection);
+//!   per entry point, WGSL, SPIR-V, reflection), beside naga's parse +
+//!   validate again;
+//! - `all_targets_wall`: the same two in wall-clock time, where umbrac's
+//!   independent jobs run side by side (`UMBRAC_THREADS`, src/par.rs);
 //! - `stages`: each stage of umbrac alone, to see where the time goes.
 //!
-//! Times are the benchmark thread's CPU time (the cores are shared with
-//! other jobs; wall time would count their turns too).
+//! Times are CPU time of the whole process (every thread summed), except in
+//! `all_targets_wall`: on a shared machine, wall time counts other
+//! processes' turns on the cores too.
 //!
 //! docs/performance.md has the results and the ratios.
 
@@ -24,14 +29,23 @@ use support::*;
 
 fn front_end(c: &mut C) {
     let mut g = c.benchmark_group("front_end");
-    g.bench_function("umbrac_das_to_validated_modules", |b| b.iter(|| umbrac_front_end(black_box(SHADOW_DAS))));
+    g.bench_function("umbrac_das_to_validated_module", |b| b.iter(|| umbrac_front_end(black_box(SHADOW_DAS))));
     g.bench_function("naga_wgsl_parse_validate", |b| b.iter(|| naga_front_end(black_box(SHADOW_WGSL))));
+    g.bench_function("umbrac_das_to_all_modules", |b| b.iter(|| umbrac_all_modules(black_box(SHADOW_DAS))));
     g.finish();
 }
 
 fn all_targets(c: &mut C) {
     let mut g = c.benchmark_group("all_targets");
     g.bench_function("umbrac_shadow_all_outputs", |b| b.iter(|| umbrac_all_targets(black_box(SHADOW_DAS))));
+    g.bench_function("naga_wgsl_parse_validate", |b| b.iter(|| naga_front_end(black_box(SHADOW_WGSL))));
+    g.finish();
+}
+
+fn all_targets_wall(c: &mut Criterion) {
+    let mut g = c.benchmark_group("all_targets_wall");
+    g.bench_function("umbrac_shadow_all_outputs", |b| b.iter(|| umbrac_all_targets(black_box(SHADOW_DAS))));
+    g.bench_function("naga_wgsl_parse_validate", |b| b.iter(|| naga_front_end(black_box(SHADOW_WGSL))));
     g.finish();
 }
 
@@ -51,6 +65,9 @@ fn stages(c: &mut C) {
     let program = umbrac::syntax::parse(&mut sources, root, &Default::default(), &mut diags);
     g.bench_function("sema", |b| b.iter(|| umbrac::sema::check(black_box(&program), &mut umbrac::Diagnostics::new())));
     let checked = umbrac::sema::check(&program, &mut diags).unwrap();
+    g.bench_function("lower_gpu_and_validate", |b| {
+        b.iter(|| umbrac::lower::lower_gpu(black_box(&checked), umbrac::Conventions::Portable).unwrap())
+    });
     g.bench_function("lower_and_validate", |b| {
         b.iter(|| umbrac::lower::lower(black_box(&checked), umbrac::Conventions::Portable).unwrap())
     });
@@ -66,11 +83,19 @@ fn stages(c: &mut C) {
 
 criterion_group! {
     name = benches;
-    // Thread CPU time, not wall time: the machine's cores are shared.
+    // Process CPU time, not wall time: the machine's cores are shared.
     config = Criterion::default().with_measurement(CpuTime)
         .warm_up_time(std::time::Duration::from_millis(500))
         .measurement_time(std::time::Duration::from_secs(3))
         .sample_size(50);
     targets = front_end, all_targets, stages
 }
-criterion_main!(benches);
+criterion_group! {
+    name = wall;
+    config = Criterion::default()
+        .warm_up_time(std::time::Duration::from_millis(500))
+        .measurement_time(std::time::Duration::from_secs(3))
+        .sample_size(50);
+    targets = all_targets_wall
+}
+criterion_main!(benches, wall);

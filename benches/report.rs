@@ -180,7 +180,7 @@ fn spv_for_entry(module: &naga::Module, info: &naga::valid::ModuleInfo, entry: &
 }
 
 fn spirv() -> String {
-    let lowered = umbrac_front_end(SHADOW_DAS);
+    let lowered = umbrac_all_modules(SHADOW_DAS);
     let (hand_module, hand_info) = naga_front_end(hand::WGSL);
     let compiled = umbrac_all_targets(SHADOW_DAS);
     let mut md = String::new();

@@ -1,6 +1,6 @@
 //! GLSL 330 core and GLSL ES 3.00, one file per entry point.
 //!
-//! naga's GLSL writer runs on `Lowered::gl`, whose resource globals carry no
+//! naga's GLSL writer runs on the GL modules (`Lowered::gl`), whose resource globals carry no
 //! binding, so its namer gives samplers and uniform instances their source
 //! names. Two things are then fixed up in the text:
 //! - uniform blocks: naga names them `<type>_block_<N><Stage>`, which differs
@@ -11,9 +11,10 @@
 //!   a `precision highp T;` line for every sampler type the shader uses that
 //!   ES 3.00 gives no default precision (`sampler2DShadow`, ...).
 //!
-//! Each file is written from a copy of `gl` reduced to its one entry point
-//! (`naga::compact`), so it declares only the structs, functions and globals
-//! that entry point reaches, not the other stages' output structs.
+//! Each file is written from the entry point's own GL module
+//! (`Lowered::gl[i]`), which holds only what that entry point reaches, so it
+//! declares only the structs, functions, constants and globals it uses, not
+//! the other stages' output structs.
 //!
 //! Writer flags are empty: the default (`ADJUST_COORDINATE_SPACE`) would flip
 //! y and rewrite z, but the DSL already is GL-convention code.
@@ -116,31 +117,31 @@ fn policies() -> BoundsCheckPolicies {
     }
 }
 
-/// Writes one entry point of `lowered.gl` and fixes up its names.
+/// Writes one entry point's GL module and fixes up its names.
 pub fn write_entry(lowered: &Lowered, ep: &EntryInterface, profile: Profile) -> Result<(String, EntryNames), Diagnostic> {
     write_entry_from(lowered, &EntryModule::new(lowered, ep)?, ep, profile)
 }
 
-/// The reduced, validated GL module of one entry point: made once and
-/// written in both GLSL profiles (compaction and validation are most of the
-/// cost of a GLSL output).
-pub struct EntryModule {
-    module: naga::Module,
-    info: naga::valid::ModuleInfo,
+/// The GL module of one entry point and the map from its globals to the
+/// GPU module's: made once and written in both GLSL profiles.
+pub struct EntryModule<'a> {
+    module: &'a naga::Module,
+    info: &'a naga::valid::ModuleInfo,
     to_original: GlobalMap,
 }
 
-impl EntryModule {
-    pub fn new(lowered: &Lowered, ep: &EntryInterface) -> Result<EntryModule, Diagnostic> {
-        let (module, info, to_original) = entry_module(lowered, ep)?;
-        Ok(EntryModule { module, info, to_original })
+impl<'a> EntryModule<'a> {
+    pub fn new(lowered: &'a Lowered, ep: &EntryInterface) -> Result<EntryModule<'a>, Diagnostic> {
+        let gl = lowered.gl.get(ep.index).ok_or_else(|| Diagnostic::bug(format!("entry point `{}` has no GL module", ep.name), None))?;
+        let to_original = global_map(&gl.module, &lowered.gpu, &ep.name);
+        Ok(EntryModule { module: &gl.module, info: &gl.info, to_original })
     }
 }
 
 /// [`write_entry`] from an [`EntryModule`] made for `ep`.
 pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface, profile: Profile) -> Result<(String, EntryNames), Diagnostic> {
     let what = format!("the {} writer for entry point `{}`", profile.label(), ep.name);
-    let (module, module_info, to_original) = (&em.module, &em.info, &em.to_original);
+    let (module, module_info, to_original) = (em.module, em.info, &em.to_original);
     let (raw, info) = guard(&what, || {
         let options = Options {
             version: profile.version(),
@@ -159,40 +160,35 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
     let bug = |msg: String| Diagnostic::bug(format!("{} output of entry point `{}`: {msg}", profile.label(), ep.name), None);
 
     let mut names = EntryNames::default();
-    // Every identifier of the text, found in one scan: the checks below are
-    // set lookups, and the renames one pass (each used to rescan the text).
-    let raw_idents: text::IdentSet = text::idents(&raw).map(|(a, b)| &raw[a..b]).collect();
 
     // Uniform blocks, in handle order so the result is deterministic.
     let mut uniforms: Vec<_> = info.uniforms.iter().collect();
     uniforms.sort_by_key(|(h, _)| h.index());
     let mut new_names = BTreeSet::new();
-    let mut renames = text::Renames::default();
+    let mut renames: Vec<(&str, String)> = Vec::new();
     for (handle, naga_block) in uniforms {
         let instance = block_instance(&raw, naga_block).ok_or_else(|| bug(format!("cannot find uniform block `{naga_block}`")))?;
         let new = format!("{}_block", instance.trim_end_matches('_'));
-        if raw_idents.contains(new.as_str()) {
+        if text::contains_ident(&raw, &new) {
             return Err(bug(format!("renaming uniform block `{naga_block}` to `{new}` would collide with an identifier of the same name")));
         }
         if !new_names.insert(new.clone()) {
             return Err(bug(format!("two uniform blocks would both be named `{new}`")));
         }
-        renames.insert(naga_block.as_str(), new.clone());
+        renames.push((naga_block.as_str(), new.clone()));
         names.blocks.insert(to_original(*handle)?, new);
     }
     let mut out = text::replace_idents(&raw, &renames);
-    // The identifiers of `out`: those of `raw`, renamed.
-    let out_has = |name: &str| (raw_idents.contains(name) && !renames.contains_key(name)) || new_names.contains(name);
 
     for (name, mapping) in &info.texture_mapping {
-        if !out_has(name) {
+        if !text::contains_ident(&out, name) {
             return Err(bug(format!("sampler `{name}` reported by naga is not in the text")));
         }
         let original = to_original(mapping.texture)?;
         // naga's namer appends `_` to names ending in a digit (`layers_0`,
         // an element of a sampler array, becomes `layers_0_`); give the
         // sampler back its own name where nothing else uses it.
-        let source = lowered.gl.global_variables.iter().nth(original).and_then(|(_, g)| g.name.clone());
+        let source = lowered.gpu.global_variables.iter().nth(original).and_then(|(_, g)| g.name.clone());
         let mut final_name = name.clone();
         if let Some(src) = source {
             if *name == format!("{src}_") && src.ends_with(|c: char| c.is_ascii_digit()) && !text::contains_ident(&out, &src) {
@@ -214,7 +210,7 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
     for (vars, prefix, map) in [(&ep.inputs, in_prefix, &mut names.inputs), (&ep.outputs, out_prefix, &mut names.outputs)] {
         for var in vars {
             let name = format!("{prefix}{}", var.location);
-            if !out_has(&name) {
+            if !text::contains_ident(&out, &name) {
                 return Err(bug(format!("`{}` (location {}) is not declared as `{name}`", var.name, var.location)));
             }
             if let Some(loc) = info.varying.get(&name) {
@@ -227,101 +223,37 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
     }
 
     if profile == Profile::Es300 {
-        out = add_es_precision_with(&out, |ty| out_has(ty)).ok_or_else(|| bug("no `precision highp int;` line to extend".into()))?;
+        out = add_es_precision(&out).ok_or_else(|| bug("no `precision highp int;` line to extend".into()))?;
     }
     Ok((out, names))
 }
 
-/// Constants read by any function or entry point, directly or through
-/// another constant's initialiser.
-fn used_constants(module: &naga::Module) -> std::collections::HashSet<naga::Handle<naga::Constant>> {
-    let mut used = std::collections::HashSet::new();
-    let mut work = Vec::new();
-    let functions = module.functions.iter().map(|(_, f)| f).chain(module.entry_points.iter().map(|e| &e.function));
-    for f in functions {
-        for (_, e) in f.expressions.iter() {
-            if let naga::Expression::Constant(c) = *e {
-                work.push(c);
-            }
-        }
-    }
-    while let Some(c) = work.pop() {
-        if !used.insert(c) {
-            continue;
-        }
-        let mut exprs = vec![module.constants[c].init];
-        while let Some(h) = exprs.pop() {
-            match &module.global_expressions[h] {
-                naga::Expression::Constant(c2) => work.push(*c2),
-                naga::Expression::Compose { components, .. } => exprs.extend(components.iter().copied()),
-                naga::Expression::Splat { value, .. } => exprs.push(*value),
-                _ => {}
-            }
-        }
-    }
-    used
-}
-
 type GlobalMap = Box<dyn Fn(naga::Handle<naga::GlobalVariable>) -> Result<usize, Diagnostic>>;
 
-/// A copy of `lowered.gl` holding only `ep` and what it reaches, validated
-/// afresh, and a map from its globals back to `gl`'s global indices (by
-/// name: compaction renumbers handles but keeps names, which the lowering
-/// makes unique).
-fn entry_module(lowered: &Lowered, ep: &EntryInterface) -> Result<(naga::Module, naga::valid::ModuleInfo, GlobalMap), Diagnostic> {
-    let what = format!("reducing the GL module to entry point `{}`", ep.name);
-    let (module, info) = guard(&what, || {
-        let mut module = lowered.gl.clone();
-        let keep = ep.index;
-        let mut i = 0;
-        module.entry_points.retain(|_| {
-            i += 1;
-            i - 1 == keep
-        });
-        naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
-        // Compaction keeps every named constant; drop the ones this entry
-        // point never reads by unnaming them and compacting once more.
-        let used = used_constants(&module);
-        let mut dropped = false;
-        for (h, c) in module.constants.iter_mut() {
-            if !used.contains(&h) {
-                c.name = None;
-                dropped = true;
-            }
-        }
-        if dropped {
-            naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
-        }
-        let info = naga::valid::Validator::new(
-            naga::valid::ValidationFlags::all() - naga::valid::ValidationFlags::BINDINGS,
-            naga::back::glsl::supported_capabilities(),
-        )
-        .validate(&module)
-        .map_err(|e| format!("{e:?}"))?;
-        Ok((module, info))
-    })?;
+/// Maps the globals of an entry point's GL module to the GPU module's
+/// global indices (by name: the lowering makes global names unique, and the
+/// modules' handles differ).
+fn global_map(gl: &naga::Module, gpu: &naga::Module, entry: &str) -> GlobalMap {
     let mut map = BTreeMap::new();
-    for (h, g) in module.global_variables.iter() {
-        let original = lowered.gl.global_variables.iter().filter(|(_, o)| o.name.is_some() && o.name == g.name && o.space == g.space).map(|(oh, _)| oh.index());
+    for (h, g) in gl.global_variables.iter() {
+        let original = gpu.global_variables.iter().filter(|(_, o)| o.name.is_some() && o.name == g.name && o.space == g.space).map(|(oh, _)| oh.index());
         let found: Vec<usize> = original.collect();
         if let [one] = found[..] {
             map.insert(h.index(), one);
         }
     }
-    let ep_name = ep.name.clone();
-    let to_original: GlobalMap = Box::new(move |h| {
+    let ep_name = entry.to_string();
+    Box::new(move |h| {
         map.get(&h.index()).copied().ok_or_else(|| {
-            Diagnostic::bug(format!("a global of entry point `{ep_name}` has no unique name to match it with the GL module"), None)
+            Diagnostic::bug(format!("a global of entry point `{ep_name}` has no unique name to match it with the GPU module"), None)
         })
-    });
-    Ok((module, info, to_original))
+    })
 }
 
 /// The instance name declared inside `uniform BLOCK { T name; };`.
 fn block_instance<'a>(src: &'a str, block: &str) -> Option<&'a str> {
-    let (start, end) = text::idents(src).find(|&(a, b)| &src[a..b] == block)?;
-    debug_assert!(start < end);
-    let rest = &src[end..];
+    let start = text::find_ident(src, block).next()?;
+    let rest = &src[start + block.len()..];
     let open = rest.find('{')?;
     let body = &rest[open + 1..];
     let decl = &body[..body.find(';')?];
@@ -332,19 +264,14 @@ fn block_instance<'a>(src: &'a str, block: &str) -> Option<&'a str> {
 
 /// Adds `precision highp T;` for every no-default-precision type the text
 /// uses, right after naga's `precision highp int;`.
-#[cfg(test)]
 fn add_es_precision(src: &str) -> Option<String> {
-    let used: text::IdentSet = text::idents(src).map(|(a, b)| &src[a..b]).collect();
-    add_es_precision_with(src, |ty| used.contains(ty))
-}
-
-/// [`add_es_precision`] with the text's identifiers given as a predicate.
-fn add_es_precision_with(src: &str, used: impl Fn(&str) -> bool) -> Option<String> {
     const ANCHOR: &str = "precision highp int;\n";
     let at = src.find(ANCHOR)? + ANCHOR.len();
+    // Every such type name contains `sampler`: look only at those words.
+    let used: Vec<&str> = memchr::memmem::find_iter(src.as_bytes(), "sampler").map(|i| text::ident_at(src, i)).collect();
     let mut lines = String::new();
     for ty in ES_NO_DEFAULT_PRECISION {
-        if used(ty) {
+        if used.contains(ty) {
             let _ = writeln!(lines, "precision highp {ty};");
         }
     }

@@ -1,7 +1,7 @@
 //! Emission: validated naga modules to target text, and the reflection manifest.
 //!
 //! - [`glsl`]: GLSL 330 core and GLSL ES 3.00, one file per entry point, from
-//!   `Lowered::gl`, with stable uniform block names and the ES sampler
+//!   its module in `Lowered::gl`, with stable uniform block names and the ES sampler
 //!   precision preamble.
 //! - [`wgsl`]: one WGSL module from `Lowered::gpu`, keeping the module's
 //!   diagnostic filters (naga's WGSL writer drops them).
@@ -41,49 +41,34 @@ pub fn emit(lowered: &Lowered, stem: &str, source_name: &str, targets: &[Target]
     let glsl_wanted = targets.iter().any(|t| matches!(t, Target::Glsl330 | Target::Gles300));
     let layouts = reflect::uniform_layouts(lowered, glsl_wanted)?;
 
-    let mut artifacts = Vec::new();
-
-    // GLSL: the names a GL host needs come from the GLSL writer itself, so
-    // it runs (for GLSL 330) even when no GLSL target is requested.
-    let mut glsl_names: Vec<glsl::EntryNames> = Vec::new();
-    for ep in &lowered.interface.entry_points {
-        let entry_module = glsl::EntryModule::new(lowered, ep)?;
-        let (text, names) = glsl::write_entry_from(lowered, &entry_module, ep, glsl::Profile::Desktop330)?;
-        if targets.contains(&Target::Glsl330) {
-            artifacts.push(Artifact {
-                file_name: glsl::file_name(&ep.name, ep.stage, glsl::Profile::Desktop330),
-                target: Some(Target::Glsl330),
-                entry: Some(ep.name.clone()),
-                contents: text.into_bytes(),
-            });
-        }
-        if targets.contains(&Target::Gles300) {
-            let (text, es_names) = glsl::write_entry_from(lowered, &entry_module, ep, glsl::Profile::Es300)?;
-            if es_names != names {
-                return Err(Diagnostic::bug(
-                    format!("GLSL 330 and GLSL ES 3.00 outputs of entry point `{}` disagree on identifier names", ep.name),
-                    None,
-                ));
-            }
-            artifacts.push(Artifact {
-                file_name: glsl::file_name(&ep.name, ep.stage, glsl::Profile::Es300),
-                target: Some(Target::Gles300),
-                entry: Some(ep.name.clone()),
-                contents: text.into_bytes(),
-            });
-        }
-        glsl_names.push(names);
-    }
-
-    if targets.contains(&Target::Wgsl) {
-        let text = wgsl::write(lowered)?;
-        artifacts.push(Artifact { file_name: format!("{stem}.wgsl"), target: Some(Target::Wgsl), entry: None, contents: text.into_bytes() });
-    }
+    // Every output is independent of the others: they are written side by
+    // side ([`crate::par`]), the whole-module ones (the largest) first, and
+    // put back in a fixed order: GLSL per entry point, WGSL, SPIR-V.
+    let entries = &lowered.interface.entry_points;
+    let mut jobs: Vec<Job> = Vec::new();
     if targets.contains(&Target::Spirv) {
-        let words = spirv::write(lowered)?;
-        let contents = words.iter().flat_map(|w| w.to_le_bytes()).collect();
-        artifacts.push(Artifact { file_name: format!("{stem}.spv"), target: Some(Target::Spirv), entry: None, contents });
+        jobs.push(Job::Spirv);
     }
+    if targets.contains(&Target::Wgsl) {
+        jobs.push(Job::Wgsl);
+    }
+    jobs.extend((0..entries.len()).map(Job::Glsl));
+    let done = crate::par::map(jobs.len(), |i| run_job(lowered, stem, &targets, jobs[i]));
+
+    let (mut glsl, mut whole) = (Vec::new(), Vec::new());
+    let mut glsl_names: Vec<glsl::EntryNames> = Vec::new();
+    for d in done {
+        match d? {
+            Done::Glsl(files, names) => {
+                glsl.extend(files);
+                glsl_names.push(names);
+            }
+            Done::Whole(a) => whole.push(a),
+        }
+    }
+    whole.sort_by_key(|a| a.target); // WGSL before SPIR-V
+    let mut artifacts = glsl;
+    artifacts.extend(whole);
 
     let reflection = reflect::build(lowered, stem, source_name, &targets, &glsl_names, &layouts)?;
     let mut json = serde_json::to_string_pretty(&reflection)
@@ -94,31 +79,85 @@ pub fn emit(lowered: &Lowered, stem: &str, source_name: &str, targets: &[Target]
     Ok((artifacts, reflection))
 }
 
-/// The two modules and the interface must describe the same entry points;
+#[derive(Clone, Copy)]
+enum Job {
+    Spirv,
+    Wgsl,
+    /// Both GLSL profiles of entry point `i`.
+    Glsl(usize),
+}
+
+enum Done {
+    Glsl(Vec<Artifact>, glsl::EntryNames),
+    Whole(Artifact),
+}
+
+fn run_job(lowered: &Lowered, stem: &str, targets: &[Target], job: Job) -> Result<Done, Diagnostic> {
+    match job {
+        Job::Spirv => {
+            let words = spirv::write(lowered)?;
+            let contents = words.iter().flat_map(|w| w.to_le_bytes()).collect();
+            Ok(Done::Whole(Artifact { file_name: format!("{stem}.spv"), target: Some(Target::Spirv), entry: None, contents }))
+        }
+        Job::Wgsl => {
+            let text = wgsl::write(lowered)?;
+            Ok(Done::Whole(Artifact { file_name: format!("{stem}.wgsl"), target: Some(Target::Wgsl), entry: None, contents: text.into_bytes() }))
+        }
+        Job::Glsl(i) => {
+            let ep = &lowered.interface.entry_points[i];
+            let mut files = Vec::new();
+            // The names a GL host needs come from the GLSL writer itself, so
+            // it runs (for GLSL 330) even when no GLSL target is requested.
+            let entry_module = glsl::EntryModule::new(lowered, ep)?;
+            let (text, names) = glsl::write_entry_from(lowered, &entry_module, ep, glsl::Profile::Desktop330)?;
+            if targets.contains(&Target::Glsl330) {
+                files.push(Artifact {
+                    file_name: glsl::file_name(&ep.name, ep.stage, glsl::Profile::Desktop330),
+                    target: Some(Target::Glsl330),
+                    entry: Some(ep.name.clone()),
+                    contents: text.into_bytes(),
+                });
+            }
+            if targets.contains(&Target::Gles300) {
+                let (text, es_names) = glsl::write_entry_from(lowered, &entry_module, ep, glsl::Profile::Es300)?;
+                if es_names != names {
+                    return Err(Diagnostic::bug(
+                        format!("GLSL 330 and GLSL ES 3.00 outputs of entry point `{}` disagree on identifier names", ep.name),
+                        None,
+                    ));
+                }
+                files.push(Artifact {
+                    file_name: glsl::file_name(&ep.name, ep.stage, glsl::Profile::Es300),
+                    target: Some(Target::Gles300),
+                    entry: Some(ep.name.clone()),
+                    contents: text.into_bytes(),
+                });
+            }
+            Ok(Done::Glsl(files, names))
+        }
+    }
+}
+
+/// The modules and the interface must describe the same entry points;
 /// anything else is a lowering bug that would make the outputs disagree.
 fn check_consistency(lowered: &Lowered) -> Result<(), Diagnostic> {
-    let (gl, gpu) = (&lowered.gl, &lowered.gpu);
-    if gl.entry_points.len() != gpu.entry_points.len() || gl.global_variables.len() != gpu.global_variables.len() {
-        return Err(Diagnostic::bug("the GL and GPU modules have different entry points or globals", None));
+    let gpu = &lowered.gpu;
+    let eps = &lowered.interface.entry_points;
+    if lowered.gl.len() != gpu.entry_points.len() || eps.len() != gpu.entry_points.len() {
+        return Err(Diagnostic::bug("the GL modules, the GPU module and the interface have different entry points", None));
     }
-    for ep in &lowered.interface.entry_points {
-        for (which, module) in [("gl", gl), ("gpu", gpu)] {
-            match module.entry_points.get(ep.index) {
-                Some(m) if m.name == ep.name && m.stage == ep.stage => {}
-                _ => {
-                    return Err(Diagnostic::bug(
-                        format!("entry point `{}` (index {}) is missing from the {which} module", ep.name, ep.index),
-                        None,
-                    ))
-                }
-            }
+    for (i, ep) in eps.iter().enumerate() {
+        let same = |m: &naga::EntryPoint| m.name == ep.name && m.stage == ep.stage;
+        let gl = &lowered.gl[i].module.entry_points;
+        if ep.index != i || !gpu.entry_points.get(i).is_some_and(same) || gl.len() != 1 || !same(&gl[0]) {
+            return Err(Diagnostic::bug(format!("entry point `{}` (index {}) does not match the lowered modules", ep.name, ep.index), None));
         }
         if !matches!(ep.stage, naga::ShaderStage::Vertex | naga::ShaderStage::Fragment) {
             return Err(Diagnostic::bug(format!("entry point `{}` has unsupported stage {:?}", ep.name, ep.stage), None));
         }
     }
     for r in &lowered.interface.resources {
-        let ok = |h: naga::Handle<naga::GlobalVariable>| gl.global_variables.try_get(h).is_ok() && gpu.global_variables.try_get(h).is_ok();
+        let ok = |h: naga::Handle<naga::GlobalVariable>| gpu.global_variables.try_get(h).is_ok();
         if !ok(r.global) || r.sampler_global.is_some_and(|s| !ok(s)) {
             return Err(Diagnostic::bug(format!("resource `{}` refers to a global that does not exist", r.name), Some(r.span)));
         }
@@ -145,96 +184,73 @@ pub(crate) fn guard<T>(what: &str, f: impl FnOnce() -> Result<T, String>) -> Res
 }
 
 /// Identifier-level text helpers for post-processing generated code.
+///
+/// Each looks for one name with a substring search and checks the
+/// characters around a hit, instead of tokenising the whole text: the names
+/// fixed up are few, and a full identifier scan (with a hash per token) of
+/// every GLSL file used to cost more than naga's writer itself.
 pub(crate) mod text {
-    use std::collections::{HashMap, HashSet};
-    use std::hash::{BuildHasherDefault, Hasher};
-
-    /// FNV-1a: identifiers are short, and SipHash's setup cost dominated
-    /// the identifier sets of the GLSL fix-ups.
-    #[derive(Default)]
-    pub struct Fnv(u64);
-
-    impl Hasher for Fnv {
-        fn finish(&self) -> u64 {
-            self.0
-        }
-        fn write(&mut self, bytes: &[u8]) {
-            let mut h = if self.0 == 0 { 0xcbf2_9ce4_8422_2325 } else { self.0 };
-            for &b in bytes {
-                h = (h ^ b as u64).wrapping_mul(0x0100_0000_01b3);
-            }
-            self.0 = h;
-        }
-    }
-
-    pub type IdentSet<'a> = HashSet<&'a str, BuildHasherDefault<Fnv>>;
-    pub type Renames<'a> = HashMap<&'a str, String, BuildHasherDefault<Fnv>>;
-
     fn is_ident_char(c: u8) -> bool {
         c.is_ascii_alphanumeric() || c == b'_'
     }
 
-    /// Every identifier-like token in `s` with its byte range.
-    pub fn idents(s: &str) -> impl Iterator<Item = (usize, usize)> + '_ {
+    /// Start offsets of `name` (a non-empty identifier) where it occurs in
+    /// `s` as a whole identifier.
+    pub fn find_ident<'a>(s: &'a str, name: &'a str) -> impl Iterator<Item = usize> + 'a {
         let b = s.as_bytes();
-        let mut i = 0;
-        std::iter::from_fn(move || {
-            while i < b.len() {
-                if is_ident_char(b[i]) {
-                    let start = i;
-                    while i < b.len() && is_ident_char(b[i]) {
-                        i += 1;
-                    }
-                    // Numbers (`1.0`, `0u`) are not identifiers.
-                    if !b[start].is_ascii_digit() {
-                        return Some((start, i));
-                    }
-                } else {
-                    i += 1;
-                }
-            }
-            None
+        memchr::memmem::find_iter(b, name.as_bytes()).filter(move |&i| {
+            let end = i + name.len();
+            (i == 0 || !is_ident_char(b[i - 1])) && (end == b.len() || !is_ident_char(b[end]))
         })
     }
 
-    #[allow(dead_code)]
     pub fn contains_ident(s: &str, name: &str) -> bool {
-        idents(s).any(|(a, b)| &s[a..b] == name)
+        find_ident(s, name).next().is_some()
     }
 
-    /// Replaces every whole identifier that is a key of `renames` with its
-    /// value, in one pass.
-    pub fn replace_idents(s: &str, renames: &Renames<'_>) -> String {
-        if renames.is_empty() {
+    /// The whole identifier around byte `at` of `s`.
+    pub fn ident_at(s: &str, at: usize) -> &str {
+        let b = s.as_bytes();
+        let mut start = at;
+        while start > 0 && is_ident_char(b[start - 1]) {
+            start -= 1;
+        }
+        let mut end = at;
+        while end < b.len() && is_ident_char(b[end]) {
+            end += 1;
+        }
+        &s[start..end]
+    }
+
+    /// Replaces every whole identifier `from` with `to`, for each pair, in
+    /// one pass over the text.
+    pub fn replace_idents(s: &str, renames: &[(&str, String)]) -> String {
+        let mut hits: Vec<(usize, usize, &str)> = Vec::new();
+        for (from, to) in renames {
+            hits.extend(find_ident(s, from).map(|at| (at, at + from.len(), to.as_str())));
+        }
+        if hits.is_empty() {
             return s.to_string();
         }
-        let mut out = String::with_capacity(s.len() + 16 * renames.len());
+        hits.sort_unstable_by_key(|h| h.0);
+        let mut out = String::with_capacity(s.len() + 16 * hits.len());
         let mut last = 0;
-        for (a, b) in idents(s) {
-            if let Some(to) = renames.get(&s[a..b]) {
-                out.push_str(&s[last..a]);
-                out.push_str(to);
-                last = b;
+        for (a, b, to) in hits {
+            // Two names cannot overlap as whole identifiers; skip defensively.
+            if a < last {
+                continue;
             }
+            out.push_str(&s[last..a]);
+            out.push_str(to);
+            last = b;
         }
         out.push_str(&s[last..]);
         out
     }
 
     /// Replaces whole identifiers equal to `from` with `to`.
-    #[allow(dead_code)]
     pub fn replace_ident(s: &str, from: &str, to: &str) -> String {
-        let mut out = String::with_capacity(s.len() + 16);
-        let mut last = 0;
-        for (a, b) in idents(s) {
-            if &s[a..b] == from {
-                out.push_str(&s[last..a]);
-                out.push_str(to);
-                last = b;
-            }
-        }
-        out.push_str(&s[last..]);
-        out
+        replace_idents(s, &[(from, to.to_string())])
     }
 }
 
@@ -249,5 +265,9 @@ mod tests {
         assert_eq!(r, "uniform a_block { mat4 a; }; x = a_block_0Vertex1 + a_block; 1.0e_block_0Vertex");
         assert!(contains_ident(s, "a"));
         assert!(!contains_ident(s, "mat"));
+        assert!(!contains_ident("x1.0e_block", "e_block"), "inside a number is not an identifier");
+        let two = replace_idents("A_b0 + B_b1 * A_b0", &[("A_b0", "a".into()), ("B_b1", "b".into())]);
+        assert_eq!(two, "a + b * a");
+        assert_eq!(ident_at("uniform highp sampler2DShadow s;", 16), "sampler2DShadow");
     }
 }

@@ -163,7 +163,9 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
     fn callee(&self, fid: usize) -> Handle<naga::Function> {
         match self.m.vertex_functions.get(fid) {
             Some(Some(h)) if self.vertex_lod => *h,
-            _ => self.m.functions[fid],
+            // A one-entry module holds every function its entry point
+            // reaches (`lower::build`), so a call never misses.
+            _ => self.m.functions[fid].expect("the callee is lowered"),
         }
     }
 
@@ -389,7 +391,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
             },
             ExprKind::Global(g) => match self.m.globals[*g] {
                 GlobalSlot::Var(h) => Some(self.append_plain(E::GlobalVariable(h), e.span)),
-                GlobalSlot::Sampler { .. } => None,
+                GlobalSlot::Sampler { .. } | GlobalSlot::Absent => None,
             },
             ExprKind::Field(base, idx) => {
                 let b = self.pointer(base, block)?;
@@ -445,7 +447,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
             ExprKind::Uint(v) => self.literal(naga::Literal::U32(*v as u32), s),
             ExprKind::Bool(v) => self.literal(naga::Literal::Bool(*v), s),
             ExprKind::Const(c) => {
-                let h = self.m.consts[*c];
+                let h = self.m.constant(*c);
                 self.append_plain(E::Constant(h), s)
             }
             ExprKind::Local(id) => match self.locals[*id] {

@@ -1,16 +1,22 @@
 //! Lowering: the checked program (`sema::Program`) to naga IR.
 //!
-//! Two modules are built from one program, because the targets disagree on
-//! conventions that are baked into the IR:
-//! - `gl`: for the GLSL backends. GL conventions as written; resource
-//!   globals carry no binding, so naga's namer gives them their source names
-//!   (`uniform highp sampler2DShadow shadow_map;`).
-//! - `gpu`: for WGSL and SPIR-V. Every resource has a group/binding, and (in
-//!   the default portable conventions) every vertex entry point ends with
-//!   the clip-space adaptation `z' = (z + w) / 2`, `y' = -y`.
+//! Two flavours of module are built from one program, because the targets
+//! disagree on conventions that are baked into the IR:
+//! - `gpu`: one module for WGSL and SPIR-V, holding the whole program. Every
+//!   resource has a group/binding, and (in the default portable conventions)
+//!   every vertex entry point ends with the clip-space adaptation
+//!   `z' = (z + w) / 2`, `y' = -y`.
+//! - `gl`: one module per entry point, for the GLSL backends (which write
+//!   one file per entry point). GL conventions as written; resource globals
+//!   carry no binding, so naga's namer gives them their source names
+//!   (`uniform highp sampler2DShadow shadow_map;`). Each holds only what its
+//!   entry point reaches (functions, globals, constants, structs), so the
+//!   file declares nothing else; building it that way costs less than
+//!   building the whole program and reducing a copy per entry point.
 //!
-//! Both modules have the same globals, types and entry points in the same
-//! order, so a handle or index from one is valid in the other.
+//! The entry points of `gpu` are in program order, and `gl[i]` is the one
+//! for `gpu.entry_points[i]`. Handles differ between the modules; globals
+//! keep their (unique) names in both.
 
 #[cfg(debug_assertions)]
 mod fault;
@@ -117,15 +123,16 @@ impl SamplerKind {
     }
 }
 
-/// A uniform block or sampler of the program, with its place in both modules.
+/// A uniform block or sampler of the program, with its place in the GPU
+/// module.
 #[derive(Clone, Debug)]
 pub struct Resource {
     /// The DSL global's name.
     pub name: String,
     pub span: Span,
     pub kind: ResourceKind,
-    /// The global holding the value (a uniform) or the texture (a sampler);
-    /// the same handle in `gl` and `gpu`.
+    /// The global holding the value (a uniform) or the texture (a sampler)
+    /// in `gpu` (a GL module has the global under the same name).
     pub global: naga::Handle<naga::GlobalVariable>,
     /// The separate sampler global of a sampler resource.
     pub sampler_global: Option<naga::Handle<naga::GlobalVariable>>,
@@ -161,7 +168,7 @@ pub struct EntryInterface {
     /// The entry point's name; also `module.entry_points[index].name`.
     pub name: String,
     pub stage: naga::ShaderStage,
-    /// Index into `module.entry_points` (the same in both modules).
+    /// Index into `gpu.entry_points`, and into `Lowered::gl`.
     pub index: usize,
     pub inputs: Vec<IoVar>,
     pub outputs: Vec<IoVar>,
@@ -178,12 +185,19 @@ pub struct Interface {
     pub entry_points: Vec<EntryInterface>,
 }
 
-/// The result of lowering: two validated modules and the interface that
+/// The GL module of one entry point (its only entry point), validated.
+#[derive(Debug)]
+pub struct GlEntry {
+    pub module: naga::Module,
+    pub info: naga::valid::ModuleInfo,
+}
+
+/// The result of lowering: the validated modules and the interface that
 /// names their parts.
 #[derive(Debug)]
 pub struct Lowered {
-    pub gl: naga::Module,
-    pub gl_info: naga::valid::ModuleInfo,
+    /// Per entry point, in the order of `interface.entry_points`.
+    pub gl: Vec<GlEntry>,
     pub gpu: naga::Module,
     pub gpu_info: naga::valid::ModuleInfo,
     pub interface: Interface,
@@ -199,16 +213,46 @@ pub enum Flavor {
     Gpu(Conventions),
 }
 
-/// Lowers a checked program into the two validated modules.
+/// Lowers a checked program into the validated modules.
+///
+/// The modules are independent, so they are built side by side
+/// ([`crate::par`]); the first error in program order is reported.
 pub fn lower(program: &crate::sema::Program, conventions: Conventions) -> Result<Lowered, crate::diag::Diagnostic> {
-    let (gl, _) = build(program, Flavor::Gl)?;
-    let gl_info = module::validate(&gl, Flavor::Gl)?;
-    let (gpu, mut interface) = build(program, Flavor::Gpu(conventions))?;
+    enum Built {
+        Gpu(naga::Module, naga::valid::ModuleInfo, Interface),
+        Gl(GlEntry),
+    }
+    let jobs = crate::par::map(1 + program.entry_points.len(), |i| match i {
+        0 => lower_gpu(program, conventions).map(|(m, info, iface)| Built::Gpu(m, info, iface)),
+        _ => lower_gl_entry(program, i - 1).map(Built::Gl),
+    });
+    let mut gpu = None;
+    let mut gl = Vec::with_capacity(program.entry_points.len());
+    for job in jobs {
+        match job? {
+            Built::Gpu(m, info, iface) => gpu = Some((m, info, iface)),
+            Built::Gl(e) => gl.push(e),
+        }
+    }
+    let (gpu, gpu_info, interface) = gpu.ok_or_else(|| Diagnostic::bug("the GPU module was not built", None))?;
+    Ok(Lowered { gl, gpu, gpu_info, interface })
+}
+
+/// The validated GPU module of the whole program, and its interface.
+pub fn lower_gpu(program: &crate::sema::Program, conventions: Conventions) -> Result<(naga::Module, naga::valid::ModuleInfo, Interface), Diagnostic> {
+    let (gpu, mut interface) = build(program, Flavor::Gpu(conventions), None)?;
     #[cfg(debug_assertions)]
     let gpu = fault::inject(gpu);
     let gpu_info = module::validate(&gpu, Flavor::Gpu(conventions))?;
     interface.conventions = conventions;
-    Ok(Lowered { gl, gl_info, gpu, gpu_info, interface })
+    Ok((gpu, gpu_info, interface))
+}
+
+/// The validated GL module of entry point `index` alone.
+pub fn lower_gl_entry(program: &crate::sema::Program, index: usize) -> Result<GlEntry, Diagnostic> {
+    let (module, _) = build(program, Flavor::Gl, Some(index))?;
+    let info = module::validate(&module, Flavor::Gl)?;
+    Ok(GlEntry { module, info })
 }
 
 /// Validates a module the way [`lower`] validates its own output: a failure
@@ -217,24 +261,44 @@ pub fn validate(module: &naga::Module, flavor: Flavor) -> Result<naga::valid::Mo
     module::validate(module, flavor)
 }
 
-fn build(p: &sema::Program, flavor: Flavor) -> Result<(naga::Module, Interface), Diagnostic> {
+/// Builds the whole program, or (`only`) one entry point and what it
+/// reaches.
+fn build(p: &sema::Program, flavor: Flavor, only: Option<usize>) -> Result<(naga::Module, Interface), Diagnostic> {
     let mut m = ModuleBuilder::new(p, flavor);
     m.allow_nonuniform_derivatives();
-    m.declare_consts();
-    m.declare_globals();
+    let only_ep = only.map(|i| &p.entry_points[i]);
+    match only_ep {
+        // Constants are declared where first used: only those it reads.
+        Some(ep) => m.declare_globals(Some(&ep.func.uses)),
+        None => {
+            m.declare_consts();
+            m.declare_globals(None);
+        }
+    }
     // Implicit-LOD sampling means level 0 in a vertex entry point; a helper
-    // that samples and is reached from both stages is lowered twice.
+    // that samples and is reached from both stages is lowered twice (a
+    // one-entry module needs only the copy for its stage).
     let (from_vertex, from_fragment) = reach_by_stage(p);
+    let reached = only_ep.map(|ep| reach(p, ep));
+    let vertex_entry = only_ep.map(|ep| ep.stage == naga::ShaderStage::Vertex);
     for (fid, f) in p.functions.iter().enumerate() {
+        if reached.as_ref().is_some_and(|r| !r[fid]) {
+            m.functions.push(None);
+            m.vertex_functions.push(None);
+            continue;
+        }
+        let two_copies = f.implicit_lod && from_vertex[fid] && from_fragment[fid];
         let vertex_only = f.implicit_lod && from_vertex[fid] && !from_fragment[fid];
-        let h = lower_helper(&mut m, f, &f.name, vertex_only);
+        let h = (!(two_copies && vertex_entry == Some(true))).then(|| lower_helper(&mut m, f, &f.name, vertex_only));
         m.functions.push(h);
-        let copy = (f.implicit_lod && from_vertex[fid] && from_fragment[fid]).then(|| lower_helper(&mut m, f, &format!("{}_vertex", f.name), true));
+        let copy = (two_copies && vertex_entry != Some(false)).then(|| lower_helper(&mut m, f, &format!("{}_vertex", f.name), true));
         m.vertex_functions.push(copy);
     }
     let mut entries = Vec::new();
     for (index, ep) in p.entry_points.iter().enumerate() {
-        entries.push(lower_entry(&mut m, ep, index)?);
+        if only.is_none_or(|i| i == index) {
+            entries.push(lower_entry(&mut m, ep, index)?);
+        }
     }
     let interface = Interface { conventions: Conventions::default(), resources: m.resources.clone(), entry_points: entries };
     Ok((m.module, interface))
@@ -256,6 +320,19 @@ fn lower_helper<'p>(m: &mut ModuleBuilder<'p>, f: &'p sema::Function, name: &str
     m.module.functions.append(func, f.span.into())
 }
 
+/// Which helper functions entry point `ep` reaches.
+fn reach(p: &sema::Program, ep: &sema::EntryPoint) -> Vec<bool> {
+    let mut seen = vec![false; p.functions.len()];
+    let mut stack: Vec<usize> = ep.func.callees.iter().copied().collect();
+    while let Some(f) = stack.pop() {
+        if f < seen.len() && !seen[f] {
+            seen[f] = true;
+            stack.extend(p.functions[f].callees.iter().copied());
+        }
+    }
+    seen
+}
+
 /// Which helper functions a vertex (first) and a fragment (second) entry
 /// point reach.
 fn reach_by_stage(p: &sema::Program) -> (Vec<bool>, Vec<bool>) {
@@ -263,12 +340,8 @@ fn reach_by_stage(p: &sema::Program) -> (Vec<bool>, Vec<bool>) {
     let (mut vertex, mut fragment) = (vec![false; n], vec![false; n]);
     for ep in &p.entry_points {
         let seen = if ep.stage == naga::ShaderStage::Vertex { &mut vertex } else { &mut fragment };
-        let mut stack: Vec<usize> = ep.func.callees.iter().copied().collect();
-        while let Some(f) = stack.pop() {
-            if f < n && !seen[f] {
-                seen[f] = true;
-                stack.extend(p.functions[f].callees.iter().copied());
-            }
+        for (s, r) in seen.iter_mut().zip(reach(p, ep)) {
+            *s |= r;
         }
     }
     (vertex, fragment)
@@ -298,7 +371,7 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
         let ty = m.ty(&BuiltinVar::Position.ty());
         let global = pos_global.and_then(|g| match m.globals[g] {
             GlobalSlot::Var(h) => Some(h),
-            GlobalSlot::Sampler { .. } => None,
+            GlobalSlot::Sampler { .. } | GlobalSlot::Absent => None,
         });
         outs.push((global, Some(BuiltinVar::Position), ty, naga::Binding::BuiltIn(naga::BuiltIn::Position { invariant: false }), "gl_Position".into()));
     }
@@ -319,7 +392,7 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
             let (binding, arg_ty, to_int) = match g.kind {
                 GlobalKind::Io { location: l, .. } => {
                     let interp = if stage == Fragment { interpolation(&g.ty) } else { (None, None) };
-                    let dsl_type = module::show_ty(p, &g.ty);
+                    let dsl_type = m.show_ty(&g.ty);
                     iface.inputs.push(IoVar { name: g.name.clone(), location: l, ty, dsl_type, interpolation: interp.0 });
                     (location(l, interp), ty, false)
                 }
@@ -354,7 +427,7 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
                             .with_note("`@out` and `@inout` variables written by one vertex entry point share the output locations"));
                     }
                     let interp = if stage == Vertex { interpolation(&g.ty) } else { (None, None) };
-                    let dsl_type = module::show_ty(p, &g.ty);
+                    let dsl_type = m.show_ty(&g.ty);
                     iface.outputs.push(IoVar { name: g.name.clone(), location: l, ty, dsl_type, interpolation: interp.0 });
                     outs.push((Some(h), None, ty, location(l, interp), g.name.clone()));
                 }

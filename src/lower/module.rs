@@ -19,6 +19,9 @@ pub enum GlobalSlot {
     /// `ModuleBuilder::sampler_elems`, each a separate image and sampler
     /// global (naga's GLSL writer cannot write binding arrays).
     Sampler { first: usize, count: u32 },
+    /// Not declared: the module is built for one entry point, which does not
+    /// use this global (see `ModuleBuilder::declare_globals`).
+    Absent,
 }
 
 pub struct ModuleBuilder<'p> {
@@ -28,8 +31,11 @@ pub struct ModuleBuilder<'p> {
     types: HashMap<Ty, Handle<Type>>,
     layouter: naga::proc::Layouter,
     pub globals: Vec<GlobalSlot>,
-    pub consts: Vec<Handle<naga::Constant>>,
-    pub functions: Vec<Handle<naga::Function>>,
+    /// Per sema constant, once declared (all up front for a whole-program
+    /// module, on first use for a one-entry module).
+    consts: Vec<Option<Handle<naga::Constant>>>,
+    /// Per sema function; `None` where a one-entry module leaves it out.
+    pub functions: Vec<Option<Handle<naga::Function>>>,
     /// The level-0 copy of a helper that samples with implicit LOD, where a
     /// vertex entry point reaches it and a fragment one does too.
     pub vertex_functions: Vec<Option<Handle<naga::Function>>>,
@@ -39,6 +45,8 @@ pub struct ModuleBuilder<'p> {
     pub resource_of: HashMap<sema::GlobalId, Vec<usize>>,
     /// (image, sampler) globals of every sampler element.
     pub sampler_elems: Vec<(Handle<naga::GlobalVariable>, Handle<naga::GlobalVariable>)>,
+    /// The program's struct names, for DSL type spellings in the interface.
+    struct_names: Vec<String>,
 }
 
 pub fn naga_scalar(s: Scalar) -> naga::Scalar {
@@ -67,13 +75,23 @@ impl<'p> ModuleBuilder<'p> {
             types: HashMap::new(),
             layouter: naga::proc::Layouter::default(),
             globals: Vec::new(),
-            consts: Vec::new(),
+            consts: vec![None; p.consts.len()],
             functions: Vec::new(),
             vertex_functions: Vec::new(),
             resources: Vec::new(),
             resource_of: HashMap::new(),
             sampler_elems: Vec::new(),
+            struct_names: p.struct_names(),
         }
+    }
+
+    /// The DSL spelling of a type (`float4`, `Light[4]`), for the interface.
+    /// Only the GPU module's interface is kept: a GL module skips the text.
+    pub fn show_ty(&self, ty: &Ty) -> String {
+        if self.flavor == Flavor::Gl {
+            return String::new();
+        }
+        crate::sema::types::TyDisplay { ty, struct_names: &self.struct_names }.to_string()
     }
 
     fn add_type(&mut self, name: Option<String>, inner: TypeInner) -> Handle<Type> {
@@ -157,21 +175,42 @@ impl<'p> ModuleBuilder<'p> {
         self.module.global_expressions.append(expr, naga::Span::UNDEFINED)
     }
 
+    /// Declares every constant, in source order.
     pub fn declare_consts(&mut self) {
-        for k in &self.p.consts {
-            let init = self.const_expr(&k.value, &k.ty);
-            let ty = self.ty(&k.ty);
-            let h = self.module.constants.append(naga::Constant { name: Some(k.name.clone()), ty, init }, k.span.into());
-            self.consts.push(h);
+        for c in 0..self.p.consts.len() {
+            self.constant(c);
         }
     }
 
-    /// Declares every sema global; resources get bindings in declaration order.
-    pub fn declare_globals(&mut self) {
+    /// The naga constant of sema constant `c`, declared on first use.
+    pub fn constant(&mut self, c: sema::ConstId) -> Handle<naga::Constant> {
+        if let Some(h) = self.consts[c] {
+            return h;
+        }
+        let k = &self.p.consts[c];
+        let init = self.const_expr(&k.value, &k.ty);
+        let ty = self.ty(&k.ty);
+        let h = self.module.constants.append(naga::Constant { name: Some(k.name.clone()), ty, init }, k.span.into());
+        self.consts[c] = Some(h);
+        h
+    }
+
+    /// Declares the sema globals, every one or (`only`) those one entry
+    /// point uses; resources get bindings in declaration order either way.
+    pub fn declare_globals(&mut self, only: Option<&std::collections::BTreeMap<sema::GlobalId, Span>>) {
         let mut next_binding = 0u32;
         let with_binding = self.flavor != Flavor::Gl;
         for (gid, g) in self.p.globals.iter().enumerate() {
             let span: naga::Span = g.span.into();
+            if only.is_some_and(|uses| !uses.contains_key(&gid)) {
+                next_binding += match &g.kind {
+                    GlobalKind::Uniform => 1,
+                    GlobalKind::Sampler { count, .. } => 2 * count.unwrap_or(1),
+                    _ => 0,
+                };
+                self.globals.push(GlobalSlot::Absent);
+                continue;
+            }
             let slot = match &g.kind {
                 GlobalKind::Uniform => {
                     let ty = self.ty(&g.ty);
@@ -188,7 +227,7 @@ impl<'p> ModuleBuilder<'p> {
                         },
                         span,
                     );
-                    let dsl_type = show_ty(self.p, &g.ty);
+                    let dsl_type = self.show_ty(&g.ty);
                     self.resource_of.insert(gid, vec![self.resources.len()]);
                     self.resources.push(Resource {
                         name: g.name.clone(),
@@ -321,9 +360,4 @@ pub fn validate(module: &Module, flavor: Flavor) -> Result<naga::valid::ModuleIn
         }
         d.with_note("this is a bug in umbrac; no output was written")
     })
-}
-
-pub fn show_ty(p: &sema::Program, ty: &Ty) -> String {
-    let names = p.struct_names();
-    crate::sema::types::TyDisplay { ty, struct_names: &names }.to_string()
 }

@@ -12,12 +12,13 @@ use std::process::Command;
 
 use naga::valid::{Capabilities, ValidationFlags, Validator};
 use umbrac::emit::reflect::dsl_name;
-use umbrac::lower::{EntryInterface, Interface, IoVar, Resource, ResourceKind, SamplerKind};
+use umbrac::lower::{EntryInterface, GlEntry, Interface, IoVar, Resource, ResourceKind, SamplerKind};
 use umbrac::{Artifact, Conventions, Lowered, Reflection, Span};
 
-/// Parses WGSL written in GL conventions into the two modules the lowering
-/// hands the emitter: `gpu` as written (every resource bound), and `gl`, a
-/// copy with resource bindings cleared and validated without
+/// Parses WGSL written in GL conventions into the modules the lowering
+/// hands the emitter: `gpu` as written (every resource bound), and per entry
+/// point a GL module: a copy with resource bindings cleared, reduced to that
+/// entry point and what it reaches, validated without
 /// `ValidationFlags::BINDINGS`. Texture `X` pairs with sampler `X_sampler`.
 pub fn fake_lowered(src: &str) -> Lowered {
     let gpu = naga::front::wgsl::parse_str(src).unwrap_or_else(|e| panic!("test WGSL does not parse:\n{}", e.emit_to_string(src)));
@@ -30,11 +31,40 @@ pub fn fake_lowered(src: &str) -> Lowered {
             g.binding = None;
         }
     }
-    let gl_info = Validator::new(ValidationFlags::all() - ValidationFlags::BINDINGS, naga::back::glsl::supported_capabilities())
-        .validate(&gl)
-        .unwrap_or_else(|e| panic!("GL copy does not validate:\n{}", e.emit_to_string(src)));
+    let gl = (0..gpu.entry_points.len()).map(|i| gl_entry(&gl, i, src)).collect();
     let interface = interface_of(&gpu, &gpu_info);
-    Lowered { gl, gl_info, gpu, gpu_info, interface }
+    Lowered { gl, gpu, gpu_info, interface }
+}
+
+/// `gl` reduced to entry point `index` and what it reaches, as the lowering
+/// builds it: unused named constants are dropped too.
+fn gl_entry(gl: &naga::Module, index: usize, src: &str) -> GlEntry {
+    let mut module = gl.clone();
+    let mut i = 0;
+    module.entry_points.retain(|_| {
+        i += 1;
+        i - 1 == index
+    });
+    naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
+    let mut used = std::collections::HashSet::new();
+    let functions = module.functions.iter().map(|(_, f)| f).chain(module.entry_points.iter().map(|e| &e.function));
+    for f in functions {
+        for (_, e) in f.expressions.iter() {
+            if let naga::Expression::Constant(c) = *e {
+                used.insert(c);
+            }
+        }
+    }
+    for (h, c) in module.constants.iter_mut() {
+        if !used.contains(&h) {
+            c.name = None;
+        }
+    }
+    naga::compact::compact(&mut module, naga::compact::KeepUnused::No);
+    let info = Validator::new(ValidationFlags::all() - ValidationFlags::BINDINGS, naga::back::glsl::supported_capabilities())
+        .validate(&module)
+        .unwrap_or_else(|e| panic!("GL copy does not validate:\n{}", e.emit_to_string(src)));
+    GlEntry { module, info }
 }
 
 fn sampler_kind(inner: &naga::TypeInner) -> Option<SamplerKind> {

@@ -2,8 +2,8 @@
 struct arrays_fs_out {
     vec4 f_color;
 };
-const vec3 COLORS[3] = vec3[3](vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), vec3(0.0, 0.0, 1.0));
 const float WEIGHTS[5] = float[5](0.227027, 0.1945946, 0.1216216, 0.054054, 0.016216);
+const vec3 COLORS[3] = vec3[3](vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), vec3(0.0, 0.0, 1.0));
 
 layout(std140) uniform u_count_block { int u_count; };
 
