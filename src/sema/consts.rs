@@ -19,17 +19,17 @@ pub trait ConstEnv {
 
 /// Every name an expression mentions (so the constants it uses can be
 /// evaluated first).
-pub fn collect_names(e: &Expr, out: &mut Vec<String>) {
+pub fn collect_names<'e>(e: &'e Expr, out: &mut Vec<&'e str>) {
     collect_names_depth(e, out, 0)
 }
 
-fn collect_names_depth(e: &Expr, out: &mut Vec<String>, depth: usize) {
+fn collect_names_depth<'e>(e: &'e Expr, out: &mut Vec<&'e str>, depth: usize) {
     if depth > super::check::MAX_DEPTH {
         return;
     }
     let d = depth + 1;
     match &e.kind {
-        ExprKind::Name(id) => out.push(id.name.clone()),
+        ExprKind::Name(id) => out.push(&id.name),
         ExprKind::Unary(_, x) | ExprKind::Paren(x) | ExprKind::Field(x, _) => collect_names_depth(x, out, d),
         ExprKind::Binary(_, a, b) | ExprKind::Index(a, b) => {
             collect_names_depth(a, out, d);
