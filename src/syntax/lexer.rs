@@ -34,8 +34,21 @@ fn is_ident_start(c: u8) -> bool {
     c.is_ascii_alphabetic() || c == b'_'
 }
 
+/// Letters, digits and `_`, by table: identifiers are most of the bytes
+/// the lexer looks at.
+static IDENT_CHAR: [bool; 256] = {
+    let mut t = [false; 256];
+    let mut c = 0;
+    while c < 256 {
+        let b = c as u8;
+        t[c] = b.is_ascii_alphanumeric() || b == b'_';
+        c += 1;
+    }
+    t
+};
+
 fn is_ident_char(c: u8) -> bool {
-    c.is_ascii_alphanumeric() || c == b'_'
+    IDENT_CHAR[c as usize]
 }
 
 impl<'a> Lexer<'a> {
@@ -51,12 +64,20 @@ impl<'a> Lexer<'a> {
         if self.text.starts_with('\u{feff}') {
             self.i = 3;
         }
-        let n = self.b.len();
+        let b = self.b;
+        let n = b.len();
         while self.i < n {
-            let c = self.b[self.i];
+            let c = b[self.i];
             let start = self.i;
             match c {
-                b' ' | b'\t' | b'\r' | 0x0b | 0x0c => self.i += 1,
+                b' ' | b'\t' | b'\r' | 0x0b | 0x0c => {
+                    // Indentation comes in runs.
+                    let mut j = start + 1;
+                    while j < n && matches!(b[j], b' ' | b'\t') {
+                        j += 1;
+                    }
+                    self.i = j;
+                }
                 b'\n' => {
                     self.i += 1;
                     if !matches!(self.out.last(), Some(t) if t.kind == TokKind::Newline) {
@@ -77,11 +98,12 @@ impl<'a> Lexer<'a> {
                 b'\'' => self.char_lit(),
                 c if is_ident_start(c) => {
                     let mut j = start + 1;
-                    while j < n && is_ident_char(self.b[j]) {
+                    while j < n && is_ident_char(b[j]) {
                         j += 1;
                     }
                     self.i = j;
-                    let kind = match Kw::from_name(&self.text[start..j]) {
+                    // Keywords are lower case.
+                    let kind = match c.is_ascii_lowercase().then(|| Kw::from_bytes(&b[start..j])).flatten() {
                         Some(k) => TokKind::Kw(k),
                         None => TokKind::Ident,
                     };

@@ -32,23 +32,28 @@ pub enum Kw {
 
 impl Kw {
     pub fn from_name(s: &str) -> Option<Kw> {
+        Kw::from_bytes(s.as_bytes())
+    }
+
+    /// Like [`Kw::from_name`], on the lexer's bytes.
+    pub fn from_bytes(s: &[u8]) -> Option<Kw> {
         Some(match s {
-            "def" => Kw::Def,
-            "var" => Kw::Var,
-            "let" => Kw::Let,
-            "struct" => Kw::Struct,
-            "class" => Kw::Class,
-            "if" => Kw::If,
-            "elif" => Kw::Elif,
-            "else" => Kw::Else,
-            "while" => Kw::While,
-            "for" => Kw::For,
-            "in" => Kw::In,
-            "return" => Kw::Return,
-            "break" => Kw::Break,
-            "continue" => Kw::Continue,
-            "true" => Kw::True,
-            "false" => Kw::False,
+            b"def" => Kw::Def,
+            b"var" => Kw::Var,
+            b"let" => Kw::Let,
+            b"struct" => Kw::Struct,
+            b"class" => Kw::Class,
+            b"if" => Kw::If,
+            b"elif" => Kw::Elif,
+            b"else" => Kw::Else,
+            b"while" => Kw::While,
+            b"for" => Kw::For,
+            b"in" => Kw::In,
+            b"return" => Kw::Return,
+            b"break" => Kw::Break,
+            b"continue" => Kw::Continue,
+            b"true" => Kw::True,
+            b"false" => Kw::False,
             _ => return None,
         })
     }
