@@ -8,19 +8,19 @@
 
 use super::ast::*;
 use super::items::{ItemKind, RawItem};
-use super::token::{Kw, TokKind, Token, P};
+use super::token::{Kw, Texts, TokKind, Token, P};
 use crate::diag::{Diagnostic, Diagnostics};
-use crate::source::{SourceMap, Span};
+use crate::source::Span;
 
 /// Deepest nesting of expressions and blocks together.
 pub const MAX_DEPTH: u32 = 128;
 
 type PResult<T> = Result<T, ()>;
 
-pub struct Parser<'a> {
+pub struct Parser<'a, 'm> {
     toks: &'a [Token],
     pos: usize,
-    map: &'a SourceMap,
+    texts: &'a Texts<'m>,
     diags: &'a mut Diagnostics,
     eof: Token,
     /// Greater than zero inside `()` / `[]`: line breaks are insignificant.
@@ -33,16 +33,17 @@ pub struct Parser<'a> {
     last: Span,
 }
 
-/// Parses one raw item into AST items (a shader global with several names
-/// gives several). Errors are reported; the item is dropped or kept partial.
-pub fn parse_item(toks: &[Token], item: &RawItem, map: &SourceMap, diags: &mut Diagnostics) -> Vec<Item> {
+/// Parses one raw item into AST items appended to `out` (a shader global
+/// with several names gives several). Errors are reported; the item is
+/// dropped or kept partial.
+pub(crate) fn parse_item(toks: &[Token], item: &RawItem, texts: &Texts, diags: &mut Diagnostics, out: &mut Vec<Item>) {
     let range = item.range();
     let slice = &toks[range.clone()];
     let end = slice.iter().rev().find(|t| t.kind != TokKind::Newline).map(|t| t.span.end).unwrap_or(0);
     let mut p = Parser {
         toks: slice,
         pos: 0,
-        map,
+        texts,
         diags,
         eof: Token::new(TokKind::Eof, Span::new(end, end)),
         nl_skip: 0,
@@ -51,7 +52,6 @@ pub fn parse_item(toks: &[Token], item: &RawItem, map: &SourceMap, diags: &mut D
         depth_reported: false,
         last: Span::new(end, end),
     };
-    let mut out = Vec::new();
     match item.kind {
         ItemKind::Def => {
             if let Some(f) = p.function() {
@@ -64,9 +64,7 @@ pub fn parse_item(toks: &[Token], item: &RawItem, map: &SourceMap, diags: &mut D
             }
         }
         ItemKind::Var => {
-            if let Ok(gs) = p.global() {
-                out.extend(gs.into_iter().map(Item::Global));
-            }
+            let _ = p.global(out);
         }
         ItemKind::Let => {
             if let Ok(c) = p.constant() {
@@ -75,7 +73,6 @@ pub fn parse_item(toks: &[Token], item: &RawItem, map: &SourceMap, diags: &mut D
         }
         ItemKind::Other => {}
     }
-    out
 }
 
 fn binop(t: &Token) -> Option<(BinaryOp, u8)> {
@@ -136,7 +133,7 @@ fn ends_stmt(t: &Token) -> bool {
     matches!(t.kind, TokKind::Newline | TokKind::Eof | TokKind::P(P::Semi | P::RBrace))
 }
 
-impl<'a> Parser<'a> {
+impl<'m> Parser<'_, 'm> {
     // ---- token access ----
 
     fn raw_peek(&self) -> Token {
@@ -173,8 +170,8 @@ impl<'a> Parser<'a> {
         }
     }
 
-    fn text(&self, t: &Token) -> &'a str {
-        self.map.slice(t.span)
+    fn text(&self, t: &Token) -> &'m str {
+        self.texts.get(t.span)
     }
 
     fn describe(&self, t: &Token) -> String {
@@ -454,9 +451,12 @@ impl<'a> Parser<'a> {
                         self.err(eq, "default parameter values are not supported in shader code".into(), "default value");
                         return Err(());
                     }
+                    // The last name takes the type, the others a copy.
+                    let last = names.pop().expect("at least one name");
                     for n in names {
                         params.push(Param { span: n.span.to(ty.span), name: n, ty: ty.clone() });
                     }
+                    params.push(Param { span: last.span.to(ty.span), name: last, ty });
                     if self.eat(P::Semi).is_some() || self.eat(P::Comma).is_some() {
                         continue;
                     }
@@ -533,7 +533,10 @@ impl<'a> Parser<'a> {
             self.err(eq, "field initialisers are not supported in shader code".into(), "initialiser");
             return Err(());
         }
-        Ok(names.into_iter().map(|n| Field { span: n.span.to(ty.span), name: n, ty: ty.clone() }).collect())
+        let last = names.pop().expect("at least one name");
+        let mut fields: Vec<Field> = names.into_iter().map(|n| Field { span: n.span.to(ty.span), name: n, ty: ty.clone() }).collect();
+        fields.push(Field { span: last.span.to(ty.span), name: last, ty });
+        Ok(fields)
     }
 
     fn qualifier(&mut self) -> PResult<Qualifier> {
@@ -594,7 +597,8 @@ impl<'a> Parser<'a> {
         Ok(Qualifier { kind, span })
     }
 
-    fn global(&mut self) -> PResult<Vec<GlobalVar>> {
+    /// `var` at top level: one global per name, appended to `out`.
+    fn global(&mut self, out: &mut Vec<Item>) -> PResult<()> {
         let kw = self.bump(); // `var`
         let mut qualifiers = Vec::new();
         while self.peek().is(P::At) {
@@ -621,10 +625,13 @@ impl<'a> Parser<'a> {
         };
         self.expect_line_end("the declaration")?;
         let span = kw.span.to(self.last);
-        Ok(names
-            .into_iter()
-            .map(|name| GlobalVar { qualifiers: qualifiers.clone(), name, ty: ty.clone(), init: init.clone(), span })
-            .collect())
+        // Each global owns a copy of the shared parts; the last takes them.
+        let last = names.pop().expect("at least one name");
+        for name in names {
+            out.push(Item::Global(GlobalVar { qualifiers: qualifiers.clone(), name, ty: ty.clone(), init: init.clone(), span }));
+        }
+        out.push(Item::Global(GlobalVar { qualifiers, name: last, ty, init, span }));
+        Ok(())
     }
 
     fn constant(&mut self) -> PResult<ConstDecl> {
