@@ -66,15 +66,6 @@ impl RawItem {
 
 const MODIFIERS: &[&str] = &["public", "private", "static", "override", "abstract", "sealed", "template", "inscope", "shared", "unsafe"];
 
-fn closer_of(t: &Token) -> Option<P> {
-    match t.kind {
-        TokKind::P(P::LParen) => Some(P::RParen),
-        TokKind::P(P::LBracket | P::QuestionBracket) => Some(P::RBracket),
-        TokKind::P(P::LBrace) => Some(P::RBrace),
-        _ => None,
-    }
-}
-
 /// Whether a line break after `t` continues the item (after an operator,
 /// `,`, `=`, an opener...). Tokens that commonly end host type names
 /// (`>`, `&`, `?`) end the line.
@@ -150,39 +141,44 @@ fn scan(toks: &[Token], start: usize, mode: Mode, guard_defs: bool, stack: &mut 
     stack.clear();
     let mut j = start;
     while j < n {
-        let t = &toks[j];
-        if let Some(c) = closer_of(t) {
-            stack.push(c);
-        } else if let TokKind::P(p @ (P::RParen | P::RBracket | P::RBrace)) = t.kind {
-            if stack.is_empty() {
-                if p == P::RBrace || mode == Mode::Group {
-                    return j; // closes something outside this item
-                }
-            } else if let Some(pos) = stack.iter().rposition(|&c| c == p) {
-                stack.truncate(pos);
-                if stack.is_empty() && (mode == Mode::Group || (mode == Mode::Body && p == P::RBrace)) {
-                    return j + 1;
-                }
-            }
-        } else if t.kind == TokKind::Newline {
-            if stack.is_empty() {
-                if mode != Mode::Group && !(j > start && continues(&toks[j - 1])) {
-                    if mode == Mode::Body {
-                        // `def f(...) : T` with `{` on a later line.
-                        let mut k = j + 1;
-                        while k < n && toks[k].kind == TokKind::Newline {
-                            k += 1;
-                        }
-                        if k < n && toks[k].is(P::LBrace) {
-                            j = k;
-                            continue;
-                        }
+        // One dispatch per token: every token of the file passes here.
+        match toks[j].kind {
+            TokKind::P(P::LParen) => stack.push(P::RParen),
+            TokKind::P(P::LBracket | P::QuestionBracket) => stack.push(P::RBracket),
+            TokKind::P(P::LBrace) => stack.push(P::RBrace),
+            TokKind::P(p @ (P::RParen | P::RBracket | P::RBrace)) => {
+                if stack.is_empty() {
+                    if p == P::RBrace || mode == Mode::Group {
+                        return j; // closes something outside this item
                     }
+                } else if let Some(pos) = stack.iter().rposition(|&c| c == p) {
+                    stack.truncate(pos);
+                    if stack.is_empty() && (mode == Mode::Group || (mode == Mode::Body && p == P::RBrace)) {
+                        return j + 1;
+                    }
+                }
+            }
+            TokKind::Newline => {
+                if stack.is_empty() {
+                    if mode != Mode::Group && !(j > start && continues(&toks[j - 1])) {
+                        if mode == Mode::Body {
+                            // `def f(...) : T` with `{` on a later line.
+                            let mut k = j + 1;
+                            while k < n && toks[k].kind == TokKind::Newline {
+                                k += 1;
+                            }
+                            if k < n && toks[k].is(P::LBrace) {
+                                j = k;
+                                continue;
+                            }
+                        }
+                        return j + 1;
+                    }
+                } else if guard_defs && starts_new_def(toks, j + 1) {
                     return j + 1;
                 }
-            } else if guard_defs && starts_new_def(toks, j + 1) {
-                return j + 1;
             }
+            _ => {}
         }
         j += 1;
     }
@@ -303,16 +299,24 @@ struct Decl {
 
 const NONE: u32 = u32::MAX;
 
-/// Top-level names and the items declaring them. One hash lookup per name
-/// use, and no allocation per name or per item.
+/// Top-level names and the items declaring them. At most one hash lookup
+/// per name use, and no allocation per name or per item.
 struct Decls<'m> {
     names: FxHashMap<&'m str, Decl>,
     /// (item, next link) for each declaration.
     links: Vec<(usize, u32)>,
+    /// Bit `len % 64` is set for the length of every top-level name: most
+    /// identifiers are ruled out by their token's length, without text or hash.
+    lens: u64,
 }
 
 impl<'m> Decls<'m> {
+    fn may_declare(&self, t: &Token) -> bool {
+        self.lens & (1u64 << ((t.span.end - t.span.start) % 64)) != 0
+    }
+
     fn add(&mut self, name: &'m str, item: usize) {
+        self.lens |= 1u64 << (name.len() % 64);
         let d = self.names.entry(name).or_insert(Decl { head: NONE, local_in: NONE });
         self.links.push((item, d.head));
         d.head = (self.links.len() - 1) as u32;
@@ -330,7 +334,11 @@ impl<'m> Decls<'m> {
 /// parameters, its own names): a use of one of these in the item does not
 /// pull in a top-level item.
 fn mark_locals(toks: &[Token], item: &RawItem, i: usize, texts: &Texts, decls: &mut Decls) {
-    let mut mark = |k: usize| decls.local(texts.get(toks[k].span), i);
+    let mut mark = |k: usize| {
+        if decls.may_declare(&toks[k]) {
+            decls.local(texts.get(toks[k].span), i);
+        }
+    };
     for k in item.names() {
         mark(k);
     }
@@ -460,7 +468,7 @@ pub fn select(
         }
     }
 
-    let mut decls = Decls { names: FxHashMap::with_capacity_and_hasher(items.len(), Default::default()), links: Vec::with_capacity(items.len()) };
+    let mut decls = Decls { names: FxHashMap::with_capacity_and_hasher(items.len(), Default::default()), links: Vec::with_capacity(items.len()), lens: 0 };
     for (i, item) in items.iter().enumerate() {
         match item.kind {
             ItemKind::Def | ItemKind::Struct | ItemKind::Class if !item.entry => {
@@ -495,7 +503,7 @@ pub fn select(
         let item = &items[i];
         mark_locals(toks, item, i, &texts, &mut decls);
         for k in item.range() {
-            if toks[k].kind != TokKind::Ident {
+            if toks[k].kind != TokKind::Ident || !decls.may_declare(&toks[k]) {
                 continue;
             }
             if k > 0 && matches!(toks[k - 1].kind, TokKind::P(P::Dot | P::QuestionDot | P::Arrow | P::ColonColon)) {
