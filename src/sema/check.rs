@@ -5,6 +5,7 @@
 //! checked on first use, so helper functions land in the output callees
 //! first, as naga requires, and recursion is found on the way.
 
+use std::collections::hash_map::Entry;
 use std::collections::BTreeMap;
 
 use super::builtins::{self, Builtin};
@@ -190,13 +191,16 @@ impl<'a, 'd> Checker<'a, 'd> {
 
     /// Reports a name defined twice at top level.
     fn check_unique(&mut self, seen: &mut FxHashMap<&'a str, Span>, id: &'a ast::Ident) {
-        if let Some(prev) = seen.get(id.name.as_str()) {
-            let d = Diagnostic::error(format!("`{}` is defined more than once", id.name), id.span)
-                .with_label("defined again here")
-                .with_secondary(*prev, "first defined here");
-            self.diags.push(d);
-        } else {
-            seen.insert(&id.name, id.span);
+        match seen.entry(&id.name) {
+            Entry::Occupied(prev) => {
+                let d = Diagnostic::error(format!("`{}` is defined more than once", id.name), id.span)
+                    .with_label("defined again here")
+                    .with_secondary(*prev.get(), "first defined here");
+                self.diags.push(d);
+            }
+            Entry::Vacant(v) => {
+                v.insert(id.span);
+            }
         }
     }
 
@@ -217,6 +221,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         self.structs.reserve(counts[0]);
         self.globals.reserve(counts[1]);
         self.const_decls.reserve(counts[2]);
+        self.consts.reserve(counts[2]);
         self.funcs.reserve(counts[3]);
         let mut seen: FxHashMap<&'a str, Span> = FxHashMap::with_capacity_and_hasher(items.len(), Default::default());
         // Struct names first, so fields and globals can use any struct.
@@ -759,7 +764,7 @@ impl<'a, 'd> Checker<'a, 'd> {
 
     fn check_entry_points(&mut self) {
         let entries = self.entry_decls.clone();
-        let mut names: FxHashMap<String, Span> = FxHashMap::default();
+        let mut names: FxHashMap<String, Span> = FxHashMap::with_capacity_and_hasher(entries.len(), Default::default());
         for (decl, stage) in entries {
             let name = entry_name(decl);
             if let Some(prev) = names.insert(name.clone(), decl.name.span) {
@@ -793,7 +798,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         // `@in`/`@inout` inputs of a fragment entry point, `@inout`/`@out`
         // outputs of a vertex entry point (transform feedback outputs).
         let vertex = stage == naga::ShaderStage::Vertex;
-        let mut seen: FxHashMap<(bool, u32), GlobalId> = FxHashMap::default();
+        let mut seen: FxHashMap<(bool, u32), GlobalId> = FxHashMap::with_capacity_and_hasher(func.uses.len(), Default::default());
         for (&gid, &span) in &func.uses {
             let GlobalKind::Io { kind, location } = self.out.globals[gid].kind else { continue };
             let output = match kind {
@@ -865,7 +870,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
         // Scope tables are reused from function to function (a callee is
         // checked in the middle of its first caller, hence a pool).
-        let mut scopes = self.spare_scopes.pop().unwrap_or_default();
+        let mut scopes = self.spare_scopes.pop().unwrap_or_else(|| Scopes { visible: FxHashMap::with_capacity_and_hasher(16, Default::default()), ..Default::default() });
         // The parameters' scope.
         scopes.open.push((0, 0));
         let mut cx = FnCtx {
@@ -1996,18 +2001,18 @@ fn parse_swizzle(s: &str, width: u8) -> Result<Vec<u8>, String> {
     if s.is_empty() || s.len() > 4 {
         return Err("a swizzle has 1 to 4 components".into());
     }
-    let sets = ["xyzw", "rgba", "stpq"];
-    let set = sets.iter().find(|set| s.chars().all(|c| set.contains(c))).ok_or_else(|| "use components from one of xyzw, rgba or stpq".to_string())?;
-    s.chars()
-        .map(|c| {
-            let i = set.find(c).expect("checked above") as u8;
-            if i < width {
-                Ok(i)
-            } else {
-                Err(format!("component `{c}` does not exist on a {width}-component vector"))
-            }
-        })
-        .collect()
+    // Bytes: a string all of whose bytes are in a set is ASCII.
+    let sets: [&[u8; 4]; 3] = [b"xyzw", b"rgba", b"stpq"];
+    let set = sets.iter().find(|set| s.bytes().all(|c| set.contains(&c))).ok_or_else(|| "use components from one of xyzw, rgba or stpq".to_string())?;
+    let mut comps = Vec::with_capacity(s.len());
+    for c in s.bytes() {
+        let i = set.iter().position(|&x| x == c).expect("checked above") as u8;
+        if i >= width {
+            return Err(format!("component `{}` does not exist on a {width}-component vector", c as char));
+        }
+        comps.push(i);
+    }
+    Ok(comps)
 }
 
 const TYPE_NAMES: &[&str] = &[
