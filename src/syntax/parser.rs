@@ -1194,7 +1194,7 @@ impl<'m> Parser<'_, 'm> {
         }
         // Parsed straight to f32 (correctly rounded once; through f64 a
         // decimal near an f32 midpoint would round twice) and kept exactly.
-        match body.parse::<f32>() {
+        match short_decimal(body).map_or_else(|| body.parse::<f32>(), Ok) {
             Ok(v) if v.is_infinite() => {
                 self.err(t, "float literal is out of range for `float`".to_string(), "too large for `float` (largest 3.4028235e38)");
                 Err(())
@@ -1215,6 +1215,30 @@ impl<'m> Parser<'_, 'm> {
         self.push(d);
         Err(())
     }
+}
+
+/// Powers of ten that are exact in f32 (5^10 < 2^24).
+const POW10: [f32; 11] = [1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10];
+
+/// `digits[.digits]` with fewer than 2^24 as its digits and at most ten
+/// after the point, as f32: the digits and the power of ten are both exact
+/// in f32, so one division rounds the decimal correctly, to the same value
+/// as `str::parse` (Clinger's fast path), without its general machinery.
+/// `None` for anything else (exponents, long mantissas).
+fn short_decimal(s: &str) -> Option<f32> {
+    let (mut m, mut digits, mut frac, mut point) = (0u32, 0usize, 0usize, false);
+    for &c in s.as_bytes() {
+        match c {
+            b'0'..=b'9' => {
+                m = m.checked_mul(10)?.checked_add((c - b'0') as u32)?;
+                digits += 1;
+                frac += point as usize;
+            }
+            b'.' if !point => point = true,
+            _ => return None,
+        }
+    }
+    (digits > 0 && m < 1 << 24 && frac < POW10.len()).then(|| m as f32 / POW10[frac])
 }
 
 fn kw_text(mutable: bool) -> &'static str {
@@ -1244,4 +1268,44 @@ pub(crate) fn unescape(s: &str) -> String {
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::short_decimal;
+
+    /// The fast path gives exactly what `str::parse` gives, where it applies.
+    #[test]
+    fn short_decimals_round_like_parse() {
+        let mut n = 0;
+        let mut check = |s: &str| {
+            if let Some(v) = short_decimal(s) {
+                assert_eq!(v.to_bits(), s.parse::<f32>().unwrap().to_bits(), "{s}");
+                n += 1;
+            }
+        };
+        for m in (0..1u32 << 24).step_by(9973).chain([1, 5, 16777215, 16777214, 8388609, 8388607, 9999999, 1234567]) {
+            let digits = m.to_string();
+            for frac in 0..=10usize {
+                let s = if frac == 0 {
+                    format!("{digits}.")
+                } else if frac >= digits.len() {
+                    format!(".{}{digits}", "0".repeat(frac - digits.len()))
+                } else {
+                    format!("{}.{}", &digits[..digits.len() - frac], &digits[digits.len() - frac..])
+                };
+                check(&s);
+                check(&format!("0{s}"));
+            }
+        }
+        for s in ["1.0", "0.5", "100.0", "0.0", "1.", ".5", "3.14159", "0.1", "0.3", "2.5", "1024.0", "0.0001"] {
+            check(s);
+        }
+        assert!(n > 10_000);
+        for s in ["", ".", "1e3", "1.0.0", "16777216.0", "0.00000000001", "1_0", "x"] {
+            assert!(short_decimal(s).is_none() || s.parse::<f32>().is_ok(), "{s}");
+        }
+        assert_eq!(short_decimal("16777216.0"), None);
+        assert_eq!(short_decimal("."), None);
+    }
 }
