@@ -31,6 +31,8 @@ pub mod syntax;
 #[cfg(feature = "render")]
 pub mod render;
 
+mod fxhash;
+
 use std::path::{Path, PathBuf};
 
 pub use diag::{Diagnostic, Diagnostics, Severity};

@@ -9,6 +9,7 @@
 
 use std::ops::Range;
 use std::path::PathBuf;
+use std::sync::OnceLock;
 
 use codespan_reporting::files::{self, Files};
 
@@ -62,8 +63,9 @@ pub struct SourceFile {
     pub text: String,
     /// Offset of the file's first byte in the global space.
     pub base: u32,
-    /// Byte offsets of line starts, relative to the file.
-    line_starts: Vec<usize>,
+    /// Byte offsets of line starts, relative to the file: made when a
+    /// diagnostic first needs a line number (a successful compile never does).
+    line_starts: OnceLock<Vec<usize>>,
     /// The `#include` directive that brought this file in, if any.
     pub included_from: Option<Span>,
 }
@@ -71,6 +73,10 @@ pub struct SourceFile {
 impl SourceFile {
     pub fn span(&self) -> Span {
         Span::new(self.base, self.base + self.text.len() as u32)
+    }
+
+    fn line_starts(&self) -> &[usize] {
+        self.line_starts.get_or_init(|| files::line_starts(&self.text).collect())
     }
 }
 
@@ -89,8 +95,7 @@ impl SourceMap {
     /// files so that an end-of-file span never lands in the next file.
     pub fn add(&mut self, name: impl Into<String>, path: Option<PathBuf>, text: String, included_from: Option<Span>) -> FileId {
         let base = self.files.last().map(|f| f.base + f.text.len() as u32 + 1).unwrap_or(0);
-        let line_starts = files::line_starts(&text).collect();
-        self.files.push(SourceFile { name: name.into(), path, text, base, line_starts, included_from });
+        self.files.push(SourceFile { name: name.into(), path, text, base, line_starts: OnceLock::new(), included_from });
         self.files.len() - 1
     }
 
@@ -179,16 +184,17 @@ impl<'a> Files<'a> for SourceMap {
 
     fn line_index(&'a self, id: FileId, byte_index: usize) -> Result<usize, files::Error> {
         let f = self.files.get(id).ok_or(files::Error::FileMissing)?;
-        Ok(f.line_starts.partition_point(|&s| s <= byte_index).saturating_sub(1))
+        Ok(f.line_starts().partition_point(|&s| s <= byte_index).saturating_sub(1))
     }
 
     fn line_range(&'a self, id: FileId, line_index: usize) -> Result<Range<usize>, files::Error> {
         let f = self.files.get(id).ok_or(files::Error::FileMissing)?;
-        let start = *f.line_starts.get(line_index).ok_or(files::Error::LineTooLarge {
+        let line_starts = f.line_starts();
+        let start = *line_starts.get(line_index).ok_or(files::Error::LineTooLarge {
             given: line_index,
-            max: f.line_starts.len() - 1,
+            max: line_starts.len() - 1,
         })?;
-        let end = f.line_starts.get(line_index + 1).copied().unwrap_or(f.text.len());
+        let end = line_starts.get(line_index + 1).copied().unwrap_or(f.text.len());
         Ok(start..end)
     }
 }

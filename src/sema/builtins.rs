@@ -9,7 +9,10 @@
 //! - `B`: boolN; `V`: a numeric vector whose `B` result has the same width
 //! - `f`, `i`, `b`: float, int, bool; `f2`, `f3`, `f4`: float vectors
 
+use std::sync::OnceLock;
+
 use super::types::{Scalar, Ty, BOOL, FLOAT};
+use crate::fxhash::FxHashMap;
 use naga::MathFunction as Mf;
 
 /// What a builtin call lowers to.
@@ -176,24 +179,29 @@ pub fn all_names() -> impl Iterator<Item = &'static str> {
 }
 
 pub fn is_builtin(name: &str) -> bool {
-    all_names().any(|n| n == name)
+    entry(name).is_some() || TEXTURE_FUNCTIONS.iter().any(|(n, _)| *n == name)
+}
+
+/// The table's entry for a name (each name has one), through an index built
+/// on first use: every call in a shader looks its name up here.
+fn entry(name: &str) -> Option<&'static Entry> {
+    static INDEX: OnceLock<FxHashMap<&'static str, usize>> = OnceLock::new();
+    let index = INDEX.get_or_init(|| TABLE.iter().enumerate().map(|(i, e)| (e.name, i)).collect());
+    index.get(name).map(|&i| &TABLE[i])
 }
 
 /// Resolves a call of a non-texture builtin by argument types.
 /// `Ok(None)`: not a builtin of this table. `Err(signatures)`: no overload fits.
-pub fn resolve(name: &str, args: &[Ty]) -> Result<Option<(Builtin, Ty)>, Vec<String>> {
-    let entries: Vec<&Entry> = TABLE.iter().filter(|e| e.name == name).collect();
-    if entries.is_empty() {
+pub fn resolve<'t>(name: &str, args: impl ExactSizeIterator<Item = &'t Ty> + Clone) -> Result<Option<(Builtin, Ty)>, Vec<String>> {
+    let Some(e) = entry(name) else {
         return Ok(None);
-    }
-    for e in &entries {
-        for sig in e.sigs {
-            if let Some(ret) = match_sig(sig, args) {
-                return Ok(Some((e.builtin, ret)));
-            }
+    };
+    for sig in e.sigs {
+        if let Some(ret) = match_sig(sig, args.clone()) {
+            return Ok(Some((e.builtin, ret)));
         }
     }
-    Err(entries.iter().flat_map(|e| e.sigs.iter().map(move |s| format_sig(e.name, s))).collect())
+    Err(e.sigs.iter().map(|s| format_sig(e.name, s)).collect())
 }
 
 /// Bindings of the pattern variables while matching one signature.
@@ -259,14 +267,14 @@ fn match_one(pat: &str, ty: &Ty, bind: &mut Bind) -> bool {
     }
 }
 
-fn match_sig(sig: &Sig, args: &[Ty]) -> Option<Ty> {
+fn match_sig<'t>(sig: &Sig, args: impl ExactSizeIterator<Item = &'t Ty> + Clone) -> Option<Ty> {
     if sig.args.len() != args.len() {
         return None;
     }
     let mut bind = Bind::default();
     // Two passes so that `S` sees `N` bound by a later argument too.
     for _ in 0..2 {
-        for (p, a) in sig.args.iter().zip(args) {
+        for (p, a) in sig.args.iter().zip(args.clone()) {
             if !match_one(p, a, &mut bind) {
                 return None;
             }
@@ -312,4 +320,19 @@ fn pattern_text(p: &str) -> &'static str {
 fn format_sig(name: &str, sig: &Sig) -> String {
     let args: Vec<&str> = sig.args.iter().map(|a| pattern_text(a)).collect();
     format!("{name}({}) : {}", args.join(", "), pattern_text(sig.ret))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `entry` finds one entry per name, so every name must be listed once.
+    #[test]
+    fn names_are_unique() {
+        let mut names: Vec<&str> = all_names().collect();
+        let n = names.len();
+        names.sort();
+        names.dedup();
+        assert_eq!(names.len(), n);
+    }
 }

@@ -5,13 +5,15 @@
 //! checked on first use, so helper functions land in the output callees
 //! first, as naga requires, and recursion is found on the way.
 
-use std::collections::{BTreeMap, HashMap, HashSet};
+use std::collections::hash_map::Entry;
+use std::collections::BTreeMap;
 
 use super::builtins::{self, Builtin};
 use super::consts::{eval_const, ConstEnv};
 use super::tree::*;
 use super::types::{Scalar, StructId, Ty, TyDisplay, BOOL, FLOAT, INT, UINT};
 use crate::diag::{suggest, Diagnostic, Diagnostics};
+use crate::fxhash::{FxHashMap, FxHashSet};
 use crate::lower::SamplerKind;
 use crate::source::Span;
 use crate::syntax::ast::{self, BinaryOp, UnaryOp};
@@ -58,14 +60,21 @@ enum FuncState {
     Failed,
 }
 
-struct Scope {
-    names: HashMap<String, LocalId>,
+/// The local names visible in a body. Each name maps to its innermost
+/// local; a scope's declarations are logged with what they hid and restored
+/// when it closes, so a use is one hash lookup however deep the blocks.
+#[derive(Default)]
+struct Scopes<'a> {
+    visible: FxHashMap<&'a str, LocalId>,
+    shadowed: Vec<(&'a str, Option<LocalId>)>,
+    /// For each open scope: its start in `shadowed` and its first local.
+    open: Vec<(usize, LocalId)>,
 }
 
 /// Per-function state while checking a body.
-struct FnCtx {
+struct FnCtx<'a> {
     locals: Vec<Local>,
-    scopes: Vec<Scope>,
+    scopes: Scopes<'a>,
     ret: Ty,
     loop_depth: usize,
     uses: BTreeMap<GlobalId, Span>,
@@ -75,23 +84,60 @@ struct FnCtx {
     depth: usize,
 }
 
+impl<'a> FnCtx<'a> {
+    fn open_scope(&mut self) {
+        let s = &mut self.scopes;
+        s.open.push((s.shadowed.len(), self.locals.len()));
+    }
+
+    fn close_scope(&mut self) {
+        let s = &mut self.scopes;
+        let (start, _) = s.open.pop().expect("a scope is open");
+        // Newest first, so a name declared twice gets back its first hidden local.
+        for (name, hidden) in s.shadowed.drain(start..).rev() {
+            match hidden {
+                Some(id) => s.visible.insert(name, id),
+                None => s.visible.remove(name),
+            };
+        }
+    }
+
+    fn declare(&mut self, name: &'a str, local: LocalId) {
+        let hidden = self.scopes.visible.insert(name, local);
+        self.scopes.shadowed.push((name, hidden));
+    }
+
+    fn lookup(&self, name: &str) -> Option<LocalId> {
+        self.scopes.visible.get(name).copied()
+    }
+
+    /// The local `name` refers to, if it was declared in the innermost scope
+    /// (locals are numbered in order, and closed scopes are no longer visible).
+    fn in_innermost_scope(&self, name: &str) -> Option<LocalId> {
+        let first = self.scopes.open.last().map_or(0, |s| s.1);
+        self.lookup(name).filter(|&id| id >= first)
+    }
+}
+
 struct Checker<'a, 'd> {
     ast: &'a ast::Program,
     diags: &'d mut Diagnostics,
     out: Program,
-    structs: HashMap<String, StructId>,
-    globals: HashMap<String, GlobalId>,
-    consts: HashMap<String, ConstId>,
-    const_decls: HashMap<String, &'a ast::ConstDecl>,
-    const_in_progress: Vec<String>,
+    // Names are borrowed from the syntax tree.
+    structs: FxHashMap<&'a str, StructId>,
+    globals: FxHashMap<&'a str, GlobalId>,
+    consts: FxHashMap<&'a str, ConstId>,
+    const_decls: FxHashMap<&'a str, &'a ast::ConstDecl>,
+    const_in_progress: Vec<&'a str>,
     /// Constants already reported as wrong: their uses report nothing more.
-    failed_consts: HashSet<String>,
-    funcs: HashMap<String, FuncState>,
+    failed_consts: FxHashSet<&'a str>,
+    funcs: FxHashMap<&'a str, FuncState>,
     fn_decls: Vec<&'a ast::FunctionDecl>,
     entry_decls: Vec<(&'a ast::FunctionDecl, naga::ShaderStage)>,
-    builtin_vars: HashMap<BuiltinVar, GlobalId>,
+    builtin_vars: FxHashMap<BuiltinVar, GlobalId>,
     /// Depth at which the next helper function checked on first use starts.
     call_depth: usize,
+    spare_scopes: Vec<Scopes<'a>>,
 }
 
 fn is_entry(f: &ast::FunctionDecl) -> Option<naga::ShaderStage> {
@@ -123,17 +169,18 @@ impl<'a, 'd> Checker<'a, 'd> {
             ast,
             diags,
             out: Program::default(),
-            structs: HashMap::new(),
-            globals: HashMap::new(),
-            consts: HashMap::new(),
-            const_decls: HashMap::new(),
+            structs: FxHashMap::default(),
+            globals: FxHashMap::default(),
+            consts: FxHashMap::default(),
+            const_decls: FxHashMap::default(),
             const_in_progress: Vec::new(),
-            failed_consts: HashSet::new(),
-            funcs: HashMap::new(),
+            failed_consts: FxHashSet::default(),
+            funcs: FxHashMap::default(),
             fn_decls: Vec::new(),
             entry_decls: Vec::new(),
-            builtin_vars: HashMap::new(),
+            builtin_vars: FxHashMap::default(),
             call_depth: 0,
+            spare_scopes: Vec::new(),
         }
     }
 
@@ -143,33 +190,52 @@ impl<'a, 'd> Checker<'a, 'd> {
     }
 
     /// Reports a name defined twice at top level.
-    fn check_unique(&mut self, seen: &mut HashMap<String, Span>, id: &ast::Ident) {
-        if let Some(prev) = seen.get(&id.name) {
-            let d = Diagnostic::error(format!("`{}` is defined more than once", id.name), id.span)
-                .with_label("defined again here")
-                .with_secondary(*prev, "first defined here");
-            self.diags.push(d);
-        } else {
-            seen.insert(id.name.clone(), id.span);
+    fn check_unique(&mut self, seen: &mut FxHashMap<&'a str, Span>, id: &'a ast::Ident) {
+        match seen.entry(&id.name) {
+            Entry::Occupied(prev) => {
+                let d = Diagnostic::error(format!("`{}` is defined more than once", id.name), id.span)
+                    .with_label("defined again here")
+                    .with_secondary(*prev.get(), "first defined here");
+                self.diags.push(d);
+            }
+            Entry::Vacant(v) => {
+                v.insert(id.span);
+            }
         }
     }
 
     // ---------------------------------------------------------------- declarations
 
     fn declare(&mut self) {
-        let mut seen: HashMap<String, Span> = HashMap::new();
+        let items = &self.ast.items;
+        // Sized once: these tables are filled in one go.
+        let mut counts = [0usize; 4];
+        for item in items {
+            counts[match item {
+                ast::Item::Struct(_) => 0,
+                ast::Item::Global(_) => 1,
+                ast::Item::Const(_) => 2,
+                ast::Item::Function(_) => 3,
+            }] += 1;
+        }
+        self.structs.reserve(counts[0]);
+        self.globals.reserve(counts[1]);
+        self.const_decls.reserve(counts[2]);
+        self.consts.reserve(counts[2]);
+        self.funcs.reserve(counts[3]);
+        let mut seen: FxHashMap<&'a str, Span> = FxHashMap::with_capacity_and_hasher(items.len(), Default::default());
         // Struct names first, so fields and globals can use any struct.
-        for item in &self.ast.items {
+        for item in items {
             if let ast::Item::Struct(s) = item {
                 self.check_unique(&mut seen, &s.name);
-                self.structs.insert(s.name.name.clone(), self.out.structs.len());
+                self.structs.insert(&s.name.name, self.out.structs.len());
                 self.out.structs.push(StructDef { name: s.name.name.clone(), fields: Vec::new(), span: s.span });
             }
         }
-        for item in &self.ast.items {
+        for item in items {
             match item {
                 ast::Item::Struct(s) => {
-                    let id = self.structs[&s.name.name];
+                    let id = self.structs[s.name.name.as_str()];
                     let mut fields: Vec<(String, Ty, Span)> = Vec::new();
                     for f in &s.fields {
                         let ty = self.resolve_type(&f.ty);
@@ -192,7 +258,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                 }
                 ast::Item::Const(k) => {
                     self.check_unique(&mut seen, &k.name);
-                    self.const_decls.insert(k.name.name.clone(), k);
+                    self.const_decls.insert(&k.name.name, k);
                 }
                 ast::Item::Function(f) => {
                     self.check_unique(&mut seen, &f.name);
@@ -206,7 +272,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                             self.entry_decls.push((f, stage));
                         }
                         None => {
-                            self.funcs.insert(f.name.name.clone(), FuncState::Unchecked(self.fn_decls.len()));
+                            self.funcs.insert(&f.name.name, FuncState::Unchecked(self.fn_decls.len()));
                             self.fn_decls.push(f);
                         }
                     }
@@ -304,12 +370,13 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
     }
 
-    fn declare_globals(&mut self, seen: &mut HashMap<String, Span>) {
+    fn declare_globals(&mut self, seen: &mut FxHashMap<&'a str, Span>) {
         // Explicit locations / texture units first, per interface class, so
         // automatic ones fill the gaps.
-        let mut taken: HashMap<&'static str, HashMap<u32, Span>> = HashMap::new();
+        let mut taken: FxHashMap<&'static str, FxHashMap<u32, Span>> = FxHashMap::default();
         let mut pending_auto: Vec<(GlobalId, &'static str, u32)> = Vec::new();
-        for item in &self.ast.items {
+        let items = &self.ast.items;
+        for item in items {
             let ast::Item::Global(g) = item else { continue };
             self.check_unique(seen, &g.name);
             if BuiltinVar::from_name(&g.name.name).is_some() || g.name.name.starts_with("gl_") {
@@ -462,7 +529,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                     GlobalKind::Io { kind: io, location: loc }
                 }
             };
-            self.globals.insert(g.name.name.clone(), self.out.globals.len());
+            self.globals.insert(&g.name.name, self.out.globals.len());
             self.out.globals.push(Global { name: g.name.name.clone(), ty, kind, span: g.name.span });
         }
         // Automatic locations and units: the lowest free number, in declaration order.
@@ -570,18 +637,18 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
     }
 
-    fn resolve_type(&mut self, t: &ast::TypeExpr) -> Ty {
+    fn resolve_type(&mut self, t: &'a ast::TypeExpr) -> Ty {
         match &t.kind {
             ast::TypeExprKind::Named(id) => {
                 if let Some(ty) = Ty::from_builtin_name(&id.name) {
                     return ty;
                 }
-                if let Some(&sid) = self.structs.get(&id.name) {
+                if let Some(&sid) = self.structs.get(id.name.as_str()) {
                     return Ty::Struct(sid);
                 }
-                let candidates: Vec<String> = self.structs.keys().cloned().chain(TYPE_NAMES.iter().map(|s| s.to_string())).collect();
+                let candidates: Vec<&str> = self.structs.keys().copied().chain(TYPE_NAMES.iter().copied()).collect();
                 let mut d = Diagnostic::error(format!("unknown type `{}`", id.name), id.span).with_label("not a type");
-                if let Some(s) = suggest(&id.name, candidates.iter().map(|s| s.as_str())) {
+                if let Some(s) = suggest(&id.name, candidates.iter().copied()) {
                     d = d.with_note(format!("help: did you mean `{s}`?"));
                 }
                 if id.name == "double" {
@@ -595,8 +662,8 @@ impl<'a, 'd> Checker<'a, 'd> {
                 let mut names = Vec::new();
                 super::consts::collect_names(len, &mut names);
                 for n in names {
-                    if self.const_decls.contains_key(&n) {
-                        self.const_id(&n, len.span);
+                    if self.const_decls.contains_key(n) {
+                        self.const_id(n, len.span);
                     }
                 }
                 let n = match eval_const(len, &ConstEnvAdapter { c: self }).map(|(v, _)| v) {
@@ -634,8 +701,10 @@ impl<'a, 'd> Checker<'a, 'd> {
         if self.failed_consts.contains(name) {
             return None;
         }
-        let decl = *self.const_decls.get(name)?;
-        if self.const_in_progress.iter().any(|n| n == name) {
+        let decl: &'a ast::ConstDecl = self.const_decls.get(name)?;
+        // Keys borrow the declaration's own name.
+        let name: &'a str = &decl.name.name;
+        if self.const_in_progress.iter().any(|n| *n == name) {
             let d = Diagnostic::error(format!("constant `{name}` depends on itself"), use_span).with_secondary(decl.name.span, "defined here");
             self.diags.push(d);
             return None;
@@ -644,17 +713,17 @@ impl<'a, 'd> Checker<'a, 'd> {
             let d = Diagnostic::error(format!("constants are defined in terms of each other too deeply (limit {MAX_CONST_CHAIN})"), decl.name.span)
                 .with_label("the limit is reached at this constant");
             self.diags.push(d);
-            self.failed_consts.insert(name.to_string());
+            self.failed_consts.insert(name);
             return None;
         }
         // Constants this one names are evaluated first.
         let mut names = Vec::new();
         super::consts::collect_names(&decl.value, &mut names);
-        self.const_in_progress.push(name.to_string());
+        self.const_in_progress.push(name);
         let mut deps_ok = true;
         for n in names {
-            if n != name && self.const_decls.contains_key(&n) {
-                deps_ok &= self.const_id(&n, use_span).is_some();
+            if n != name && self.const_decls.contains_key(n) {
+                deps_ok &= self.const_id(n, use_span).is_some();
             }
         }
         // A constant built from a wrong one is wrong too, but that was
@@ -665,11 +734,11 @@ impl<'a, 'd> Checker<'a, 'd> {
             Some(Ok(v)) => v,
             Some(Err(d)) => {
                 self.diags.push(d);
-                self.failed_consts.insert(name.to_string());
+                self.failed_consts.insert(name);
                 return None;
             }
             None => {
-                self.failed_consts.insert(name.to_string());
+                self.failed_consts.insert(name);
                 return None;
             }
         };
@@ -681,13 +750,13 @@ impl<'a, 'd> Checker<'a, 'd> {
                     decl.value.span,
                 );
                 self.diags.push(d);
-                self.failed_consts.insert(name.to_string());
+                self.failed_consts.insert(name);
                 return None;
             }
         }
         let id = self.out.consts.len();
         self.out.consts.push(Const { name: name.to_string(), ty, value, span: decl.name.span });
-        self.consts.insert(name.to_string(), id);
+        self.consts.insert(name, id);
         Some(id)
     }
 
@@ -695,7 +764,7 @@ impl<'a, 'd> Checker<'a, 'd> {
 
     fn check_entry_points(&mut self) {
         let entries = self.entry_decls.clone();
-        let mut names: HashMap<String, Span> = HashMap::new();
+        let mut names: FxHashMap<String, Span> = FxHashMap::with_capacity_and_hasher(entries.len(), Default::default());
         for (decl, stage) in entries {
             let name = entry_name(decl);
             if let Some(prev) = names.insert(name.clone(), decl.name.span) {
@@ -729,7 +798,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         // `@in`/`@inout` inputs of a fragment entry point, `@inout`/`@out`
         // outputs of a vertex entry point (transform feedback outputs).
         let vertex = stage == naga::ShaderStage::Vertex;
-        let mut seen: HashMap<(bool, u32), GlobalId> = HashMap::new();
+        let mut seen: FxHashMap<(bool, u32), GlobalId> = FxHashMap::with_capacity_and_hasher(func.uses.len(), Default::default());
         for (&gid, &span) in &func.uses {
             let GlobalKind::Io { kind, location } = self.out.globals[gid].kind else { continue };
             let output = match kind {
@@ -765,23 +834,24 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
             FuncState::Unchecked(idx) => {
                 let decl = self.fn_decls[*idx];
+                let name: &'a str = &decl.name.name;
                 if self.call_depth > MAX_DEPTH {
                     let d = Diagnostic::error(format!("calls nest too deeply (limit {MAX_DEPTH} levels of nested calls, expressions and blocks)"), call_span)
                         .with_secondary(decl.name.span, "this function is called at the limit");
                     self.diags.push(d);
-                    self.funcs.insert(name.to_string(), FuncState::Failed);
+                    self.funcs.insert(name, FuncState::Failed);
                     return None;
                 }
-                self.funcs.insert(name.to_string(), FuncState::InProgress(decl.name.span));
+                self.funcs.insert(name, FuncState::InProgress(decl.name.span));
                 match self.check_function(decl, None) {
                     Some(f) => {
                         let id = self.out.functions.len();
                         self.out.functions.push(f);
-                        self.funcs.insert(name.to_string(), FuncState::Done(id));
+                        self.funcs.insert(name, FuncState::Done(id));
                         Some(id)
                     }
                     None => {
-                        self.funcs.insert(name.to_string(), FuncState::Failed);
+                        self.funcs.insert(name, FuncState::Failed);
                         None
                     }
                 }
@@ -798,9 +868,14 @@ impl<'a, 'd> Checker<'a, 'd> {
         if ret.is_sampler_like() {
             self.diags.push(Diagnostic::error("functions cannot return samplers", decl.ret.as_ref().map(|t| t.span).unwrap_or(decl.name.span)));
         }
+        // Scope tables are reused from function to function (a callee is
+        // checked in the middle of its first caller, hence a pool).
+        let mut scopes = self.spare_scopes.pop().unwrap_or_else(|| Scopes { visible: FxHashMap::with_capacity_and_hasher(16, Default::default()), ..Default::default() });
+        // The parameters' scope.
+        scopes.open.push((0, 0));
         let mut cx = FnCtx {
             locals: Vec::new(),
-            scopes: vec![Scope { names: HashMap::new() }],
+            scopes,
             ret: ret.clone(),
             loop_depth: 0,
             uses: BTreeMap::new(),
@@ -819,6 +894,11 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
         let params = cx.locals.len();
         let body = self.check_block(&mut cx, &decl.body.stmts);
+        let mut scopes = std::mem::take(&mut cx.scopes);
+        scopes.visible.clear();
+        scopes.shadowed.clear();
+        scopes.open.clear();
+        self.spare_scopes.push(scopes);
         if !ret.is_error() && ret != Ty::Void && !always_returns(&body) {
             let d = Diagnostic::error(format!("function `{}` can reach its end without returning a `{}`", decl.name.name, self.show(&ret)), decl.body.span)
                 .with_label("the last statement here does not return");
@@ -841,28 +921,24 @@ impl<'a, 'd> Checker<'a, 'd> {
         })
     }
 
-    fn declare_local(&mut self, cx: &mut FnCtx, id: &ast::Ident, ty: Ty, mutable: bool) -> LocalId {
-        if self.globals.contains_key(&id.name) {
-            let gspan = self.out.globals[self.globals[&id.name]].span;
+    fn declare_local(&mut self, cx: &mut FnCtx<'a>, id: &'a ast::Ident, ty: Ty, mutable: bool) -> LocalId {
+        if self.globals.contains_key(id.name.as_str()) {
+            let gspan = self.out.globals[self.globals[id.name.as_str()]].span;
             let d = Diagnostic::error(format!("`{}` shadows the shader global of the same name", id.name), id.span).with_secondary(gspan, "global declared here");
             self.diags.push(d);
-        } else if let Some(prev) = cx.scopes.last().and_then(|s| s.names.get(&id.name)) {
-            let d = Diagnostic::error(format!("`{}` is already declared in this block", id.name), id.span).with_secondary(cx.locals[*prev].span, "first declared here");
+        } else if let Some(prev) = cx.in_innermost_scope(&id.name) {
+            let d = Diagnostic::error(format!("`{}` is already declared in this block", id.name), id.span).with_secondary(cx.locals[prev].span, "first declared here");
             self.diags.push(d);
         }
         let lid = cx.locals.len();
         cx.locals.push(Local { name: id.name.clone(), ty, mutable, span: id.span });
-        cx.scopes.last_mut().expect("a function always has a scope").names.insert(id.name.clone(), lid);
+        cx.declare(&id.name, lid);
         lid
-    }
-
-    fn lookup_local(cx: &FnCtx, name: &str) -> Option<LocalId> {
-        cx.scopes.iter().rev().find_map(|s| s.names.get(name).copied())
     }
 
     // ---------------------------------------------------------------- statements
 
-    fn check_block(&mut self, cx: &mut FnCtx, stmts: &[ast::Stmt]) -> Vec<Stmt> {
+    fn check_block(&mut self, cx: &mut FnCtx<'a>, stmts: &'a [ast::Stmt]) -> Vec<Stmt> {
         cx.depth += 1;
         if cx.depth > MAX_DEPTH {
             cx.depth -= 1;
@@ -871,17 +947,18 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
             return Vec::new();
         }
-        cx.scopes.push(Scope { names: HashMap::new() });
-        let mut out = Vec::new();
+        cx.open_scope();
+        // Usually one checked statement per statement.
+        let mut out = Vec::with_capacity(stmts.len());
         for s in stmts {
             self.check_stmt(cx, s, &mut out);
         }
-        cx.scopes.pop();
+        cx.close_scope();
         cx.depth -= 1;
         out
     }
 
-    fn check_stmt(&mut self, cx: &mut FnCtx, s: &ast::Stmt, out: &mut Vec<Stmt>) {
+    fn check_stmt(&mut self, cx: &mut FnCtx<'a>, s: &'a ast::Stmt, out: &mut Vec<Stmt>) {
         match &s.kind {
             ast::StmtKind::Local { mutable, names, ty, init } => {
                 let declared = ty.as_ref().map(|t| self.resolve_type(t));
@@ -976,13 +1053,13 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
             ast::StmtKind::For { var, iter, body } => {
                 let (start, end) = self.check_range(cx, iter);
-                cx.scopes.push(Scope { names: HashMap::new() });
+                cx.open_scope();
                 let ty = start.ty.clone();
                 let local = self.declare_local(cx, var, ty, false);
                 cx.loop_depth += 1;
                 let body = self.check_block(cx, &body.stmts);
                 cx.loop_depth -= 1;
-                cx.scopes.pop();
+                cx.close_scope();
                 out.push(Stmt::For { var: local, start, end, body, span: s.span });
             }
             ast::StmtKind::Return(value) => {
@@ -1020,7 +1097,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
     }
 
-    fn check_expr_stmt(&mut self, cx: &mut FnCtx, e: &ast::Expr, span: Span, out: &mut Vec<Stmt>) {
+    fn check_expr_stmt(&mut self, cx: &mut FnCtx<'a>, e: &'a ast::Expr, span: Span, out: &mut Vec<Stmt>) {
         match &e.kind {
             ast::ExprKind::Unary(op @ (UnaryOp::PreInc | UnaryOp::PreDec | UnaryOp::PostInc | UnaryOp::PostDec), inner) => {
                 let t = self.check_place(cx, inner);
@@ -1063,7 +1140,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
     }
 
-    fn check_cond(&mut self, cx: &mut FnCtx, e: &ast::Expr) -> Expr {
+    fn check_cond(&mut self, cx: &mut FnCtx<'a>, e: &'a ast::Expr) -> Expr {
         let c = self.check_expr(cx, e);
         if !c.ty.is_error() && c.ty != BOOL {
             let d = Diagnostic::error(format!("type mismatch: a condition must be `bool`, found `{}`", self.show(&c.ty)), c.span);
@@ -1073,7 +1150,7 @@ impl<'a, 'd> Checker<'a, 'd> {
     }
 
     /// `range(n)` or `range(a, b)`.
-    fn check_range(&mut self, cx: &mut FnCtx, iter: &ast::Expr) -> (Expr, Expr) {
+    fn check_range(&mut self, cx: &mut FnCtx<'a>, iter: &'a ast::Expr) -> (Expr, Expr) {
         let bad = |span| Expr { kind: ExprKind::Int(0), ty: Ty::Error, span };
         let ast::ExprKind::Call { callee, args } = &iter.kind else {
             self.diags.push(Diagnostic::error("`for` loops iterate over `range(n)` or `range(a, b)`", iter.span));
@@ -1111,7 +1188,7 @@ impl<'a, 'd> Checker<'a, 'd> {
 
     /// An assignable expression: a `var` local, an output global, or a
     /// field, swizzle or element of one.
-    fn check_place(&mut self, cx: &mut FnCtx, e: &ast::Expr) -> Expr {
+    fn check_place(&mut self, cx: &mut FnCtx<'a>, e: &'a ast::Expr) -> Expr {
         let x = self.check_expr(cx, e);
         if let Err(d) = self.place_ok(cx, &x) {
             self.diags.push(d);
@@ -1119,7 +1196,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         x
     }
 
-    fn place_ok(&self, cx: &FnCtx, x: &Expr) -> Result<(), Diagnostic> {
+    fn place_ok(&self, cx: &FnCtx<'a>, x: &Expr) -> Result<(), Diagnostic> {
         match &x.kind {
             ExprKind::Local(id) => {
                 let l = &cx.locals[*id];
@@ -1163,7 +1240,7 @@ impl<'a, 'd> Checker<'a, 'd> {
 
     // ---------------------------------------------------------------- expressions
 
-    fn check_expr(&mut self, cx: &mut FnCtx, e: &ast::Expr) -> Expr {
+    fn check_expr(&mut self, cx: &mut FnCtx<'a>, e: &'a ast::Expr) -> Expr {
         cx.depth += 1;
         let r = if cx.depth > MAX_DEPTH {
             self.diags.push(Diagnostic::error(format!("expression nests deeper than the limit of {MAX_DEPTH}"), e.span));
@@ -1175,7 +1252,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         r
     }
 
-    fn check_expr_inner(&mut self, cx: &mut FnCtx, e: &ast::Expr) -> Expr {
+    fn check_expr_inner(&mut self, cx: &mut FnCtx<'a>, e: &'a ast::Expr) -> Expr {
         let span = e.span;
         let mk = |kind, ty| Expr { kind, ty, span };
         match &e.kind {
@@ -1385,16 +1462,16 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
     }
 
-    fn check_name(&mut self, cx: &mut FnCtx, id: &ast::Ident) -> Expr {
+    fn check_name(&mut self, cx: &mut FnCtx<'a>, id: &'a ast::Ident) -> Expr {
         let span = id.span;
-        if let Some(l) = Self::lookup_local(cx, &id.name) {
+        if let Some(l) = cx.lookup(&id.name) {
             return Expr { kind: ExprKind::Local(l), ty: cx.locals[l].ty.clone(), span };
         }
-        if let Some(&g) = self.globals.get(&id.name) {
+        if let Some(&g) = self.globals.get(id.name.as_str()) {
             cx.uses.entry(g).or_insert(span);
             return Expr { kind: ExprKind::Global(g), ty: self.out.globals[g].ty.clone(), span };
         }
-        if self.const_decls.contains_key(&id.name) || self.consts.contains_key(&id.name) {
+        if self.const_decls.contains_key(id.name.as_str()) || self.consts.contains_key(id.name.as_str()) {
             return match self.const_id(&id.name, span) {
                 Some(c) => Expr { kind: ExprKind::Const(c), ty: self.out.consts[c].ty.clone(), span },
                 None => err_expr(span),
@@ -1408,16 +1485,16 @@ impl<'a, 'd> Checker<'a, 'd> {
             cx.uses.entry(g).or_insert(span);
             return Expr { kind: ExprKind::Global(g), ty: b.ty(), span };
         }
-        if self.funcs.contains_key(&id.name) || builtins::is_builtin(&id.name) {
+        if self.funcs.contains_key(id.name.as_str()) || builtins::is_builtin(&id.name) {
             self.diags.push(Diagnostic::error(format!("`{}` is a function; call it with `{}(...)`", id.name, id.name), span));
             return err_expr(span);
         }
         let mut d = Diagnostic::error(format!("unknown name `{}`", id.name), span).with_label("not found in this scope");
-        let mut candidates: Vec<String> = cx.scopes.iter().flat_map(|s| s.names.keys().cloned()).collect();
-        candidates.extend(self.globals.keys().cloned());
-        candidates.extend(self.const_decls.keys().cloned());
-        candidates.extend(BuiltinVar::NAMES.iter().map(|s| s.to_string()));
-        if let Some(s) = suggest(&id.name, candidates.iter().map(|s| s.as_str())) {
+        let mut candidates: Vec<&str> = cx.scopes.visible.keys().copied().collect();
+        candidates.extend(self.globals.keys().copied());
+        candidates.extend(self.const_decls.keys().copied());
+        candidates.extend(BuiltinVar::NAMES);
+        if let Some(s) = suggest(&id.name, candidates.iter().copied()) {
             d = d.with_note(format!("help: did you mean `{s}`?"));
         }
         self.diags.push(d);
@@ -1472,7 +1549,7 @@ impl<'a, 'd> Checker<'a, 'd> {
 
     // ---------------------------------------------------------------- calls
 
-    fn check_call(&mut self, cx: &mut FnCtx, callee: &ast::Ident, args: &[ast::Expr], span: Span) -> Expr {
+    fn check_call(&mut self, cx: &mut FnCtx<'a>, callee: &'a ast::Ident, args: &'a [ast::Expr], span: Span) -> Expr {
         let name = callee.name.as_str();
         // Constructors and casts.
         let ctor_ty = Ty::from_builtin_name(name).filter(|t| !matches!(t, Ty::Sampler(_))).or_else(|| self.structs.get(name).map(|&s| Ty::Struct(s)));
@@ -1495,48 +1572,42 @@ impl<'a, 'd> Checker<'a, 'd> {
             self.call_depth = cx.depth + CALL_DEPTH;
             let Some(fid) = self.function_id(name, callee.span) else { return err_expr(span) };
             let f = &self.out.functions[fid];
-            let params: Vec<Ty> = f.locals[..f.params].iter().map(|l| l.ty.clone()).collect();
-            let ret = f.ret.clone();
-            let fspan = f.span;
+            let params = &f.locals[..f.params];
             if params.len() != xs.len() {
                 let sig = self.signature_text(fid);
                 let d = Diagnostic::error(format!("wrong number of arguments: `{name}` takes {} but {} were given", params.len(), xs.len()), span)
-                    .with_secondary(fspan, "defined here")
+                    .with_secondary(f.span, "defined here")
                     .with_note(format!("expected: {sig}"));
                 self.diags.push(d);
                 return err_expr(span);
             }
-            for (x, p) in xs.iter().zip(&params) {
-                if x.ty != *p {
-                    let sig = self.signature_text(fid);
-                    let d = Diagnostic::error(format!("type mismatch: argument is `{}` but `{name}` expects `{}`", self.show(&x.ty), self.show(p)), x.span)
-                        .with_note(format!("expected: {sig}"));
-                    self.diags.push(d);
-                    return err_expr(span);
-                }
+            if let Some((x, p)) = xs.iter().zip(params).find(|(x, p)| x.ty != p.ty) {
+                let sig = self.signature_text(fid);
+                let d = Diagnostic::error(format!("type mismatch: argument is `{}` but `{name}` expects `{}`", self.show(&x.ty), self.show(&p.ty)), x.span)
+                    .with_note(format!("expected: {sig}"));
+                self.diags.push(d);
+                return err_expr(span);
             }
             // The callee's global uses become the caller's.
-            let uses: Vec<GlobalId> = self.out.functions[fid].uses.keys().copied().collect();
-            for g in uses {
+            for &g in f.uses.keys() {
                 cx.uses.entry(g).or_insert(span);
             }
-            if let Some(fo) = self.out.functions[fid].fragment_only {
+            if let Some(fo) = f.fragment_only {
                 cx.fragment_only.get_or_insert((span, fo.1));
             }
-            cx.implicit_lod |= self.out.functions[fid].implicit_lod;
+            cx.implicit_lod |= f.implicit_lod;
             cx.callees.insert(fid);
-            return Expr { kind: ExprKind::Call(fid, xs), ty: ret, span };
+            return Expr { kind: ExprKind::Call(fid, xs), ty: f.ret.clone(), span };
         }
         if let Some((_, b)) = builtins::TEXTURE_FUNCTIONS.iter().find(|(n, _)| *n == name) {
             return self.check_texture_call(cx, *b, name, xs, span);
         }
-        let tys: Vec<Ty> = xs.iter().map(|x| x.ty.clone()).collect();
-        match builtins::resolve(name, &tys) {
+        match builtins::resolve(name, xs.iter().map(|x| &x.ty)) {
             Ok(Some((b, ret))) => {
                 if matches!(b, Builtin::Derivative(..)) {
                     cx.fragment_only.get_or_insert((span, "a derivative"));
                 }
-                if b == Builtin::Math(naga::MathFunction::Determinant) && !matches!(tys[0], Ty::Matrix(c, r) if c == r) {
+                if b == Builtin::Math(naga::MathFunction::Determinant) && !matches!(xs[0].ty, Ty::Matrix(c, r) if c == r) {
                     self.diags.push(Diagnostic::error("`determinant` needs a square matrix", span));
                     return err_expr(span);
                 }
@@ -1551,8 +1622,8 @@ impl<'a, 'd> Checker<'a, 'd> {
             Ok(None) => {
                 let mut d = Diagnostic::error(format!("unknown function `{name}`"), callee.span).with_label("not a function, builtin or type");
                 let mut candidates: Vec<&str> = builtins::all_names().collect();
-                candidates.extend(self.funcs.keys().map(|s| s.as_str()));
-                candidates.extend(self.structs.keys().map(|s| s.as_str()));
+                candidates.extend(self.funcs.keys().copied());
+                candidates.extend(self.structs.keys().copied());
                 candidates.extend(TYPE_NAMES.iter().copied());
                 if let Some(s) = suggest(name, candidates) {
                     d = d.with_note(format!("help: did you mean `{s}`?"));
@@ -1561,8 +1632,8 @@ impl<'a, 'd> Checker<'a, 'd> {
                 err_expr(span)
             }
             Err(sigs) => {
-                let given: Vec<String> = tys.iter().map(|t| self.show(t)).collect();
-                let what = if sigs.iter().all(|s| s.matches(", ").count() + 1 != tys.len()) { "wrong number of arguments" } else { "type mismatch" };
+                let given: Vec<String> = xs.iter().map(|x| self.show(&x.ty)).collect();
+                let what = if sigs.iter().all(|s| s.matches(", ").count() + 1 != xs.len()) { "wrong number of arguments" } else { "type mismatch" };
                 let mut d = Diagnostic::error(format!("{what}: no overload of `{name}` takes ({})", given.join(", ")), span);
                 d = d.with_note(format!("expected one of:\n  {}", sigs.join("\n  ")));
                 self.diags.push(d);
@@ -1579,7 +1650,7 @@ impl<'a, 'd> Checker<'a, 'd> {
     }
 
     fn check_constructor(&mut self, ty: Ty, xs: Vec<Expr>, span: Span) -> Expr {
-        let name = self.show(&ty);
+        // The type's name is formatted only for a message.
         let fail = |this: &mut Self, msg: String| {
             this.diags.push(Diagnostic::error(msg, span));
             err_expr(span)
@@ -1588,6 +1659,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             Ty::Scalar(_) => {
                 if xs.len() != 1 || !matches!(xs[0].ty, Ty::Scalar(_)) {
                     let given: Vec<String> = xs.iter().map(|x| self.show(&x.ty)).collect();
+                    let name = self.show(&ty);
                     return fail(self, format!("wrong arguments: `{name}(...)` converts one scalar, given ({})", given.join(", ")));
                 }
             }
@@ -1601,11 +1673,13 @@ impl<'a, 'd> Checker<'a, 'd> {
                             Ty::Scalar(_) => count += 1,
                             Ty::Vector(_, m) => count += m as usize,
                             _ => {
+                                let name = self.show(&ty);
                                 return fail(self, format!("type mismatch: `{name}(...)` takes scalars and vectors, not `{}`", self.show(&x.ty)));
                             }
                         }
                     }
                     if count != n {
+                        let name = self.show(&ty);
                         return fail(self, format!("wrong number of components: `{name}` needs {n}, the arguments give {count}"));
                     }
                 }
@@ -1617,31 +1691,36 @@ impl<'a, 'd> Checker<'a, 'd> {
                 let diag_ok = xs.len() == 1 && xs[0].ty == FLOAT;
                 let copy_ok = xs.len() == 1 && xs[0].ty == ty;
                 if !(cols_ok || scalars_ok || diag_ok || copy_ok) {
+                    let name = self.show(&ty);
                     return fail(self, format!("wrong arguments: `{name}` is built from {c} float{r} columns, {} floats, or one float (a diagonal)", c * r));
                 }
             }
             Ty::Struct(sid) => {
-                let fields: Vec<(String, Ty)> = self.out.structs[*sid].fields.iter().map(|(n, t, _)| (n.clone(), t.clone())).collect();
+                let fields = &self.out.structs[*sid].fields;
                 if fields.len() != xs.len() {
-                    return fail(self, format!("wrong number of arguments: `{name}` has {} fields but {} values were given", fields.len(), xs.len()));
+                    let (name, n) = (self.show(&ty), fields.len());
+                    return fail(self, format!("wrong number of arguments: `{name}` has {n} fields but {} values were given", xs.len()));
                 }
-                for ((fname, fty), x) in fields.iter().zip(&xs) {
-                    if *fty != x.ty {
-                        let d = Diagnostic::error(format!("type mismatch: field `{fname}` of `{name}` is `{}`, given `{}`", self.show(fty), self.show(&x.ty)), x.span);
-                        self.diags.push(d);
-                        return err_expr(span);
-                    }
+                if let Some(((fname, fty, _), x)) = fields.iter().zip(&xs).find(|((_, fty, _), x)| *fty != x.ty) {
+                    let name = self.show(&ty);
+                    let d = Diagnostic::error(format!("type mismatch: field `{fname}` of `{name}` is `{}`, given `{}`", self.show(fty), self.show(&x.ty)), x.span);
+                    self.diags.push(d);
+                    return err_expr(span);
                 }
             }
-            _ => return fail(self, format!("`{name}` cannot be constructed")),
+            _ => {
+                let name = self.show(&ty);
+                return fail(self, format!("`{name}` cannot be constructed"));
+            }
         }
         if xs.iter().any(|x| !x.ty.is_value() || matches!(x.ty, Ty::Array(..)) && !matches!(ty, Ty::Struct(_))) {
+            let name = self.show(&ty);
             return fail(self, format!("invalid argument for `{name}(...)`"));
         }
         Expr { kind: ExprKind::Construct(xs), ty, span }
     }
 
-    fn check_texture_call(&mut self, _cx: &mut FnCtx, b: Builtin, name: &str, xs: Vec<Expr>, span: Span) -> Expr {
+    fn check_texture_call(&mut self, _cx: &mut FnCtx<'a>, b: Builtin, name: &str, xs: Vec<Expr>, span: Span) -> Expr {
         let Some(first) = xs.first() else {
             self.diags.push(Diagnostic::error(format!("wrong number of arguments: `{name}` takes a sampler first"), span));
             return err_expr(span);
@@ -1922,18 +2001,18 @@ fn parse_swizzle(s: &str, width: u8) -> Result<Vec<u8>, String> {
     if s.is_empty() || s.len() > 4 {
         return Err("a swizzle has 1 to 4 components".into());
     }
-    let sets = ["xyzw", "rgba", "stpq"];
-    let set = sets.iter().find(|set| s.chars().all(|c| set.contains(c))).ok_or_else(|| "use components from one of xyzw, rgba or stpq".to_string())?;
-    s.chars()
-        .map(|c| {
-            let i = set.find(c).expect("checked above") as u8;
-            if i < width {
-                Ok(i)
-            } else {
-                Err(format!("component `{c}` does not exist on a {width}-component vector"))
-            }
-        })
-        .collect()
+    // Bytes: a string all of whose bytes are in a set is ASCII.
+    let sets: [&[u8; 4]; 3] = [b"xyzw", b"rgba", b"stpq"];
+    let set = sets.iter().find(|set| s.bytes().all(|c| set.contains(&c))).ok_or_else(|| "use components from one of xyzw, rgba or stpq".to_string())?;
+    let mut comps = Vec::with_capacity(s.len());
+    for c in s.bytes() {
+        let i = set.iter().position(|&x| x == c).expect("checked above") as u8;
+        if i >= width {
+            return Err(format!("component `{}` does not exist on a {width}-component vector", c as char));
+        }
+        comps.push(i);
+    }
+    Ok(comps)
 }
 
 const TYPE_NAMES: &[&str] = &[

@@ -4,6 +4,8 @@
 //! expressions; evaluating them here keeps the IR simple (literals and
 //! composes) and catches overflow and division by zero with a location.
 
+use std::borrow::Cow;
+
 use super::tree::ConstValue;
 use super::types::{Scalar, Ty, BOOL, FLOAT, INT, UINT};
 use crate::diag::Diagnostic;
@@ -19,17 +21,17 @@ pub trait ConstEnv {
 
 /// Every name an expression mentions (so the constants it uses can be
 /// evaluated first).
-pub fn collect_names(e: &Expr, out: &mut Vec<String>) {
+pub fn collect_names<'e>(e: &'e Expr, out: &mut Vec<&'e str>) {
     collect_names_depth(e, out, 0)
 }
 
-fn collect_names_depth(e: &Expr, out: &mut Vec<String>, depth: usize) {
+fn collect_names_depth<'e>(e: &'e Expr, out: &mut Vec<&'e str>, depth: usize) {
     if depth > super::check::MAX_DEPTH {
         return;
     }
     let d = depth + 1;
     match &e.kind {
-        ExprKind::Name(id) => out.push(id.name.clone()),
+        ExprKind::Name(id) => out.push(&id.name),
         ExprKind::Unary(_, x) | ExprKind::Paren(x) | ExprKind::Field(x, _) => collect_names_depth(x, out, d),
         ExprKind::Binary(_, a, b) | ExprKind::Index(a, b) => {
             collect_names_depth(a, out, d);
@@ -139,6 +141,17 @@ fn scalars(v: &ConstValue) -> Vec<ConstValue> {
     match v {
         ConstValue::Composite(cs) => cs.iter().flat_map(scalars).collect(),
         c => vec![c.clone()],
+    }
+}
+
+/// The scalars of a value, borrowed where they already lie flat (a scalar,
+/// or a vector): the type checker folds every literal operation through
+/// [`binary`].
+fn flat_scalars(v: &ConstValue) -> Cow<'_, [ConstValue]> {
+    match v {
+        ConstValue::Composite(cs) if cs.iter().any(|c| matches!(c, ConstValue::Composite(_))) => Cow::Owned(scalars(v)),
+        ConstValue::Composite(cs) => Cow::Borrowed(cs),
+        c => Cow::Borrowed(std::slice::from_ref(c)),
     }
 }
 
@@ -280,18 +293,17 @@ pub fn binary(op: BinaryOp, a: &ConstValue, ta: &Ty, b: &ConstValue, tb: &Ty) ->
         return Err(mismatch());
     }
     let w = wa.max(wb) as usize;
-    let sa = scalars(a);
-    let sb = scalars(b);
-    let get = |s: &Vec<ConstValue>, i: usize| if s.len() == 1 { s[0].clone() } else { s[i].clone() };
+    let sa = flat_scalars(a);
+    let sb = flat_scalars(b);
+    let get = |s: &[ConstValue], i: usize| if s.len() == 1 { s[0].clone() } else { s[i].clone() };
     let result_ty = if wa >= wb { ta.clone() } else { tb.clone() };
     let cmp = matches!(op, Eq | Ne | Lt | Le | Gt | Ge | And | Or | Xor);
     if cmp && w != 1 {
         return Err("vector comparisons are not supported in constants".into());
     }
-    let mut out = Vec::with_capacity(w);
-    for i in 0..w {
-        let (x, y) = (get(&sa, i), get(&sb, i));
-        let v = match (x, y) {
+    // One component at a time; a scalar result needs no vector.
+    let fold = |x: ConstValue, y: ConstValue| -> Result<ConstValue, String> {
+        Ok(match (x, y) {
             (ConstValue::Float(x), ConstValue::Float(y)) => {
                 // In f32, one rounding per operation, as the GPU computes.
                 let (x, y) = (x as f32, y as f32);
@@ -349,15 +361,13 @@ pub fn binary(op: BinaryOp, a: &ConstValue, ta: &Ty, b: &ConstValue, tb: &Ty) ->
                 _ => return Err(mismatch()),
             },
             _ => return Err(mismatch()),
-        };
-        out.push(v);
-    }
-    if cmp {
-        return Ok((out.pop().expect("one component"), BOOL));
-    }
+        })
+    };
     if w == 1 {
-        Ok((out.pop().expect("one component"), result_ty))
-    } else {
-        Ok((ConstValue::Composite(out), result_ty))
+        let v = fold(get(&sa, 0), get(&sb, 0))?;
+        return Ok((v, if cmp { BOOL } else { result_ty }));
     }
+    // `cmp` with vectors was rejected above.
+    let out = (0..w).map(|i| fold(get(&sa, i), get(&sb, i))).collect::<Result<Vec<_>, _>>()?;
+    Ok((ConstValue::Composite(out), result_ty))
 }

@@ -8,33 +8,12 @@
 //! `let` constants, functions and structs those reach by name. Nothing else
 //! is parsed, so host code can hold anything.
 
-use std::collections::{HashMap, HashSet};
-use std::hash::{BuildHasherDefault, Hasher};
 use std::ops::Range;
 
-use super::token::{Kw, TokKind, Token, P};
+use super::token::{Kw, Texts, TokKind, Token, P};
 use crate::diag::{suggest, Diagnostic, Diagnostics};
+use crate::fxhash::FxHashMap;
 use crate::source::{SourceMap, Span};
-
-/// FNV-1a: names are short, and SipHash dominated selection time.
-#[derive(Default)]
-struct Fnv(u64);
-
-impl Hasher for Fnv {
-    fn finish(&self) -> u64 {
-        self.0
-    }
-
-    fn write(&mut self, bytes: &[u8]) {
-        let mut h = if self.0 == 0 { 0xcbf2_9ce4_8422_2325 } else { self.0 };
-        for &b in bytes {
-            h = (h ^ b as u64).wrapping_mul(0x0100_0000_01b3);
-        }
-        self.0 = h;
-    }
-}
-
-type FnvBuild = BuildHasherDefault<Fnv>;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ItemKind {
@@ -55,8 +34,9 @@ pub struct RawItem {
     /// From the item's first token to its end, including the line break
     /// that ends a line item.
     pub body: Range<usize>,
-    /// Token indices of the names the item declares.
-    pub names: Vec<usize>,
+    /// Token indices of the names the item declares, every other token
+    /// from `names.start` (a list is `a, b, c`); see [`RawItem::names`].
+    pub names: Range<usize>,
     /// A `var` with `@uniform`, `@in`, `@out` or `@inout`.
     pub shader_global: bool,
     /// A `def` annotated `[vertex_program]` or `[fragment_program]`.
@@ -64,6 +44,16 @@ pub struct RawItem {
 }
 
 impl RawItem {
+    /// Token indices of the names the item declares.
+    pub fn names(&self) -> impl Iterator<Item = usize> {
+        self.names.clone().step_by(2)
+    }
+
+    /// The first name's token index.
+    pub fn first_name(&self) -> Option<usize> {
+        (!self.names.is_empty()).then_some(self.names.start)
+    }
+
     /// All of the item's tokens, annotations included.
     pub fn range(&self) -> Range<usize> {
         if self.annots.is_empty() {
@@ -75,15 +65,6 @@ impl RawItem {
 }
 
 const MODIFIERS: &[&str] = &["public", "private", "static", "override", "abstract", "sealed", "template", "inscope", "shared", "unsafe"];
-
-fn closer_of(t: &Token) -> Option<P> {
-    match t.kind {
-        TokKind::P(P::LParen) => Some(P::RParen),
-        TokKind::P(P::LBracket | P::QuestionBracket) => Some(P::RBracket),
-        TokKind::P(P::LBrace) => Some(P::RBrace),
-        _ => None,
-    }
-}
 
 /// Whether a line break after `t` continues the item (after an operator,
 /// `,`, `=`, an opener...). Tokens that commonly end host type names
@@ -153,60 +134,68 @@ fn starts_new_def(toks: &[Token], mut k: usize) -> bool {
     false
 }
 
-/// The end (exclusive) of the item starting at `start`.
-fn scan(toks: &[Token], start: usize, mode: Mode, guard_defs: bool) -> usize {
+/// The end (exclusive) of the item starting at `start`. `stack` is scratch
+/// space for the closers of open brackets.
+fn scan(toks: &[Token], start: usize, mode: Mode, guard_defs: bool, stack: &mut Vec<P>) -> usize {
     let n = toks.len();
-    let mut stack: Vec<P> = Vec::new();
+    stack.clear();
     let mut j = start;
     while j < n {
-        let t = &toks[j];
-        if let Some(c) = closer_of(t) {
-            stack.push(c);
-        } else if let TokKind::P(p @ (P::RParen | P::RBracket | P::RBrace)) = t.kind {
-            if stack.is_empty() {
-                if p == P::RBrace || mode == Mode::Group {
-                    return j; // closes something outside this item
-                }
-            } else if let Some(pos) = stack.iter().rposition(|&c| c == p) {
-                stack.truncate(pos);
-                if stack.is_empty() && (mode == Mode::Group || (mode == Mode::Body && p == P::RBrace)) {
-                    return j + 1;
-                }
-            }
-        } else if t.kind == TokKind::Newline {
-            if stack.is_empty() {
-                if mode != Mode::Group && !(j > start && continues(&toks[j - 1])) {
-                    if mode == Mode::Body {
-                        // `def f(...) : T` with `{` on a later line.
-                        let mut k = j + 1;
-                        while k < n && toks[k].kind == TokKind::Newline {
-                            k += 1;
-                        }
-                        if k < n && toks[k].is(P::LBrace) {
-                            j = k;
-                            continue;
-                        }
+        // One dispatch per token: every token of the file passes here.
+        match toks[j].kind {
+            TokKind::P(P::LParen) => stack.push(P::RParen),
+            TokKind::P(P::LBracket | P::QuestionBracket) => stack.push(P::RBracket),
+            TokKind::P(P::LBrace) => stack.push(P::RBrace),
+            TokKind::P(p @ (P::RParen | P::RBracket | P::RBrace)) => {
+                if stack.is_empty() {
+                    if p == P::RBrace || mode == Mode::Group {
+                        return j; // closes something outside this item
                     }
+                } else if let Some(pos) = stack.iter().rposition(|&c| c == p) {
+                    stack.truncate(pos);
+                    if stack.is_empty() && (mode == Mode::Group || (mode == Mode::Body && p == P::RBrace)) {
+                        return j + 1;
+                    }
+                }
+            }
+            TokKind::Newline => {
+                if stack.is_empty() {
+                    if mode != Mode::Group && !(j > start && continues(&toks[j - 1])) {
+                        if mode == Mode::Body {
+                            // `def f(...) : T` with `{` on a later line.
+                            let mut k = j + 1;
+                            while k < n && toks[k].kind == TokKind::Newline {
+                                k += 1;
+                            }
+                            if k < n && toks[k].is(P::LBrace) {
+                                j = k;
+                                continue;
+                            }
+                        }
+                        return j + 1;
+                    }
+                } else if guard_defs && starts_new_def(toks, j + 1) {
                     return j + 1;
                 }
-            } else if guard_defs && starts_new_def(toks, j + 1) {
-                return j + 1;
             }
+            _ => {}
         }
         j += 1;
     }
     n
 }
 
-fn is_modifier(map: &SourceMap, toks: &[Token], k: usize) -> bool {
+fn is_modifier(texts: &Texts, toks: &[Token], k: usize) -> bool {
     toks[k].kind == TokKind::Ident
         && toks.get(k + 1).is_some_and(|t| t.kind == TokKind::Ident)
-        && MODIFIERS.contains(&map.slice(toks[k].span))
+        && MODIFIERS.contains(&texts.get(toks[k].span))
 }
 
 /// Splits a preprocessed token stream into top-level items.
 pub fn split(toks: &[Token], map: &SourceMap) -> Vec<RawItem> {
+    let texts = Texts::new(map);
     let mut items = Vec::new();
+    let mut stack = Vec::new();
     let n = toks.len();
     let mut i = 0;
     while i < n {
@@ -219,7 +208,7 @@ pub fn split(toks: &[Token], map: &SourceMap) -> Vec<RawItem> {
         }
         let astart = i;
         while i < n && toks[i].is(P::LBracket) {
-            i = scan(toks, i, Mode::Group, true).max(i + 1);
+            i = scan(toks, i, Mode::Group, true, &mut stack).max(i + 1);
             while i < n && toks[i].kind == TokKind::Newline {
                 i += 1;
             }
@@ -237,39 +226,39 @@ pub fn split(toks: &[Token], map: &SourceMap) -> Vec<RawItem> {
             _ => ItemKind::Other,
         };
         let end = match kind {
-            ItemKind::Def => scan(toks, i, Mode::Body, true),
-            ItemKind::Struct | ItemKind::Class => scan(toks, i, Mode::Body, false),
-            _ => scan(toks, i, Mode::Line, true),
+            ItemKind::Def => scan(toks, i, Mode::Body, true, &mut stack),
+            ItemKind::Struct | ItemKind::Class => scan(toks, i, Mode::Body, false, &mut stack),
+            _ => scan(toks, i, Mode::Line, true, &mut stack),
         }
         .max(i + 1);
         let mut item =
-            RawItem { kind, annots, body: i..end, names: Vec::new(), shader_global: false, entry: false };
+            RawItem { kind, annots, body: i..end, names: 0..0, shader_global: false, entry: false };
         let mut k = i + 1;
         match kind {
             ItemKind::Def | ItemKind::Struct | ItemKind::Class => {
-                while k < end && is_modifier(map, toks, k) {
+                while k < end && is_modifier(&texts, toks, k) {
                     k += 1;
                 }
                 if k < end && toks[k].kind == TokKind::Ident {
-                    item.names.push(k);
+                    item.names = k..k + 1;
                 }
                 if kind == ItemKind::Def {
                     item.entry = item.annots.clone().any(|a| {
                         toks[a].kind == TokKind::Ident
                             && a > 0
                             && matches!(toks[a - 1].kind, TokKind::P(P::LBracket | P::Comma))
-                            && matches!(map.slice(toks[a].span), "vertex_program" | "fragment_program")
+                            && matches!(texts.get(toks[a].span), "vertex_program" | "fragment_program")
                     });
                 }
             }
             ItemKind::Var | ItemKind::Let => {
                 loop {
-                    if k < end && is_modifier(map, toks, k) {
+                    if k < end && is_modifier(&texts, toks, k) {
                         k += 1;
                     } else if k + 1 < end && toks[k].is(P::At) {
                         let q = &toks[k + 1];
                         if q.kind == TokKind::Kw(Kw::In)
-                            || (q.kind == TokKind::Ident && matches!(map.slice(q.span), "uniform" | "out" | "inout"))
+                            || (q.kind == TokKind::Ident && matches!(texts.get(q.span), "uniform" | "out" | "inout"))
                         {
                             item.shader_global = kind == ItemKind::Var;
                         }
@@ -281,8 +270,9 @@ pub fn split(toks: &[Token], map: &SourceMap) -> Vec<RawItem> {
                         break;
                     }
                 }
+                let first = k;
                 while k < end && toks[k].kind == TokKind::Ident {
-                    item.names.push(k);
+                    item.names = first..k + 1;
                     if k + 2 < end && toks[k + 1].is(P::Comma) {
                         k += 2;
                     } else {
@@ -298,25 +288,75 @@ pub fn split(toks: &[Token], map: &SourceMap) -> Vec<RawItem> {
     items
 }
 
-/// Names declared inside an item (locals, loop variables, parameters):
-/// a use of one of these does not pull in a top-level item.
-fn local_names<'m>(toks: &[Token], item: &RawItem, map: &'m SourceMap) -> HashSet<&'m str, FnvBuild> {
-    let mut set: HashSet<&str, FnvBuild> = item.names.iter().map(|&k| map.slice(toks[k].span)).collect();
+/// A top-level name while selecting: the items that declare it, as a list
+/// threaded through `Decls::links`, and the last item that declares it
+/// locally (where a use of it does not pull in the top-level item).
+#[derive(Clone, Copy)]
+struct Decl {
+    head: u32,
+    local_in: u32,
+}
+
+const NONE: u32 = u32::MAX;
+
+/// Top-level names and the items declaring them. At most one hash lookup
+/// per name use, and no allocation per name or per item.
+struct Decls<'m> {
+    names: FxHashMap<&'m str, Decl>,
+    /// (item, next link) for each declaration.
+    links: Vec<(usize, u32)>,
+    /// Bit `len % 64` is set for the length of every top-level name: most
+    /// identifiers are ruled out by their token's length, without text or hash.
+    lens: u64,
+}
+
+impl<'m> Decls<'m> {
+    fn may_declare(&self, t: &Token) -> bool {
+        self.lens & (1u64 << ((t.span.end - t.span.start) % 64)) != 0
+    }
+
+    fn add(&mut self, name: &'m str, item: usize) {
+        self.lens |= 1u64 << (name.len() % 64);
+        let d = self.names.entry(name).or_insert(Decl { head: NONE, local_in: NONE });
+        self.links.push((item, d.head));
+        d.head = (self.links.len() - 1) as u32;
+    }
+
+    /// Marks `name` as declared inside `item` (only top-level names matter).
+    fn local(&mut self, name: &str, item: usize) {
+        if let Some(d) = self.names.get_mut(name) {
+            d.local_in = item as u32;
+        }
+    }
+}
+
+/// Marks the names declared inside an item (locals, loop variables,
+/// parameters, its own names): a use of one of these in the item does not
+/// pull in a top-level item.
+fn mark_locals(toks: &[Token], item: &RawItem, i: usize, texts: &Texts, decls: &mut Decls) {
+    let mut mark = |k: usize| {
+        if decls.may_declare(&toks[k]) {
+            decls.local(texts.get(toks[k].span), i);
+        }
+    };
+    for k in item.names() {
+        mark(k);
+    }
     let r = item.body.clone();
     if matches!(item.kind, ItemKind::Struct | ItemKind::Class) {
         // Field names: `a, b : T`.
         for k in r {
             if toks[k].kind == TokKind::Ident && toks.get(k + 1).is_some_and(|t| t.is(P::Colon) || t.is(P::Comma)) {
-                set.insert(map.slice(toks[k].span));
+                mark(k);
             }
         }
-        return set;
+        return;
     }
     if item.kind != ItemKind::Def {
-        return set;
+        return;
     }
     // Parameters: `def name(a, b : T; c : U)`.
-    if let Some(&name) = item.names.first() {
+    if let Some(name) = item.first_name() {
         if toks.get(name + 1).is_some_and(|t| t.is(P::LParen)) {
             let mut depth = 0usize;
             let mut k = name + 1;
@@ -329,9 +369,7 @@ fn local_names<'m>(toks: &[Token], item: &RawItem, map: &'m SourceMap) -> HashSe
                             break;
                         }
                     }
-                    TokKind::Ident if depth == 1 && toks.get(k + 1).is_some_and(|t| t.is(P::Comma) || t.is(P::Colon)) => {
-                        set.insert(map.slice(toks[k].span));
-                    }
+                    TokKind::Ident if depth == 1 && toks.get(k + 1).is_some_and(|t| t.is(P::Comma) || t.is(P::Colon)) => mark(k),
                     _ => {}
                 }
                 k += 1;
@@ -343,7 +381,7 @@ fn local_names<'m>(toks: &[Token], item: &RawItem, map: &'m SourceMap) -> HashSe
             TokKind::Kw(Kw::Let | Kw::Var) => {
                 let mut m = k + 1;
                 while m < r.end && toks[m].kind == TokKind::Ident {
-                    set.insert(map.slice(toks[m].span));
+                    mark(m);
                     if m + 2 < r.end && toks[m + 1].is(P::Comma) {
                         m += 2;
                     } else {
@@ -355,9 +393,7 @@ fn local_names<'m>(toks: &[Token], item: &RawItem, map: &'m SourceMap) -> HashSe
                 let mut m = k + 1;
                 while m < r.end && m < k + 16 {
                     match toks[m].kind {
-                        TokKind::Ident => {
-                            set.insert(map.slice(toks[m].span));
-                        }
+                        TokKind::Ident => mark(m),
                         TokKind::P(P::LParen | P::Comma) => {}
                         _ => break,
                     }
@@ -367,20 +403,19 @@ fn local_names<'m>(toks: &[Token], item: &RawItem, map: &'m SourceMap) -> HashSe
             _ => {}
         }
     }
-    set
 }
 
 /// The `name = "..."` argument of an entry point's annotation, if any.
-fn entry_alias<'m>(toks: &[Token], item: &RawItem, map: &'m SourceMap) -> Option<&'m str> {
+fn entry_alias<'m>(toks: &[Token], item: &RawItem, texts: &Texts<'m>) -> Option<&'m str> {
     let a = item.annots.clone();
     for k in a.clone() {
         if toks[k].kind == TokKind::Ident
-            && map.slice(toks[k].span) == "name"
+            && texts.get(toks[k].span) == "name"
             && k + 2 < a.end
             && toks[k + 1].is(P::Eq)
             && toks[k + 2].kind == TokKind::Str
         {
-            let s = map.slice(toks[k + 2].span);
+            let s = texts.get(toks[k + 2].span);
             return s.get(1..s.len().saturating_sub(1));
         }
     }
@@ -396,7 +431,8 @@ pub fn select(
     root_span: Span,
     diags: &mut Diagnostics,
 ) -> Vec<usize> {
-    let name_of = |item: &RawItem| item.names.first().map(|&k| map.slice(toks[k].span)).unwrap_or("");
+    let texts = Texts::new(map);
+    let name_of = |item: &RawItem| item.first_name().map(|k| texts.get(toks[k].span)).unwrap_or("");
     let all_entries: Vec<usize> = (0..items.len()).filter(|&i| items[i].entry).collect();
     if all_entries.is_empty() {
         if !diags.has_errors() {
@@ -416,7 +452,7 @@ pub fn select(
             let hits: Vec<usize> = all_entries
                 .iter()
                 .copied()
-                .filter(|&i| name_of(&items[i]) == req || entry_alias(toks, &items[i], map) == Some(req.as_str()))
+                .filter(|&i| name_of(&items[i]) == req || entry_alias(toks, &items[i], &texts) == Some(req.as_str()))
                 .collect();
             if hits.is_empty() {
                 let names: Vec<&str> = all_entries.iter().map(|&i| name_of(&items[i])).collect();
@@ -432,17 +468,17 @@ pub fn select(
         }
     }
 
-    let mut by_name: HashMap<&str, Vec<usize>, FnvBuild> = HashMap::default();
+    let mut decls = Decls { names: FxHashMap::with_capacity_and_hasher(items.len(), Default::default()), links: Vec::with_capacity(items.len()), lens: 0 };
     for (i, item) in items.iter().enumerate() {
         match item.kind {
             ItemKind::Def | ItemKind::Struct | ItemKind::Class if !item.entry => {
-                if let Some(&k) = item.names.first() {
-                    by_name.entry(map.slice(toks[k].span)).or_default().push(i);
+                if let Some(k) = item.first_name() {
+                    decls.add(texts.get(toks[k].span), i);
                 }
             }
             ItemKind::Let => {
-                for &k in &item.names {
-                    by_name.entry(map.slice(toks[k].span)).or_default().push(i);
+                for k in item.names() {
+                    decls.add(texts.get(toks[k].span), i);
                 }
             }
             _ => {}
@@ -465,25 +501,26 @@ pub fn select(
     }
     while let Some(i) = work.pop() {
         let item = &items[i];
-        let locals = local_names(toks, item, map);
+        mark_locals(toks, item, i, &texts, &mut decls);
         for k in item.range() {
-            if toks[k].kind != TokKind::Ident {
+            if toks[k].kind != TokKind::Ident || !decls.may_declare(&toks[k]) {
                 continue;
             }
             if k > 0 && matches!(toks[k - 1].kind, TokKind::P(P::Dot | P::QuestionDot | P::Arrow | P::ColonColon)) {
                 continue;
             }
-            let name = map.slice(toks[k].span);
-            if locals.contains(name) {
+            let Some(d) = decls.names.get(texts.get(toks[k].span)) else { continue };
+            if d.local_in == i as u32 {
                 continue;
             }
-            if let Some(targets) = by_name.get(name) {
-                for &t in targets {
-                    if !selected[t] {
-                        selected[t] = true;
-                        work.push(t);
-                    }
+            let mut link = d.head;
+            while link != NONE {
+                let (t, next) = decls.links[link as usize];
+                if !selected[t] {
+                    selected[t] = true;
+                    work.push(t);
                 }
+                link = next;
             }
         }
     }

@@ -34,8 +34,21 @@ fn is_ident_start(c: u8) -> bool {
     c.is_ascii_alphabetic() || c == b'_'
 }
 
+/// Letters, digits and `_`, by table: identifiers are most of the bytes
+/// the lexer looks at.
+static IDENT_CHAR: [bool; 256] = {
+    let mut t = [false; 256];
+    let mut c = 0;
+    while c < 256 {
+        let b = c as u8;
+        t[c] = b.is_ascii_alphanumeric() || b == b'_';
+        c += 1;
+    }
+    t
+};
+
 fn is_ident_char(c: u8) -> bool {
-    c.is_ascii_alphanumeric() || c == b'_'
+    IDENT_CHAR[c as usize]
 }
 
 impl<'a> Lexer<'a> {
@@ -51,51 +64,85 @@ impl<'a> Lexer<'a> {
         if self.text.starts_with('\u{feff}') {
             self.i = 3;
         }
-        let n = self.b.len();
-        while self.i < n {
-            let c = self.b[self.i];
-            let start = self.i;
+        let b = self.b;
+        let n = b.len();
+        // The position lives in a local on the hot paths; the rarer scanners
+        // read and advance `self.i`.
+        let mut i = self.i;
+        loop {
+            // Blanks between tokens, without a dispatch of their own.
+            while i < n && matches!(b[i], b' ' | b'\t') {
+                i += 1;
+            }
+            if i >= n {
+                break;
+            }
+            let c = b[i];
+            let start = i;
             match c {
-                b' ' | b'\t' | b'\r' | 0x0b | 0x0c => self.i += 1,
+                b'\r' | 0x0b | 0x0c => i += 1,
                 b'\n' => {
-                    self.i += 1;
+                    i += 1;
                     if !matches!(self.out.last(), Some(t) if t.kind == TokKind::Newline) {
                         self.push(TokKind::Newline, start, start + 1);
                     }
                 }
+                b'a'..=b'z' | b'A'..=b'Z' | b'_' => {
+                    i += 1;
+                    while i < n && is_ident_char(b[i]) {
+                        i += 1;
+                    }
+                    // Keywords are lower case.
+                    let kind = match c.is_ascii_lowercase().then(|| Kw::from_bytes(&b[start..i])).flatten() {
+                        Some(k) => TokKind::Kw(k),
+                        None => TokKind::Ident,
+                    };
+                    self.push(kind, start, i);
+                }
+                // Brackets and separators, the most common punctuation,
+                // have no longer forms.
+                b'(' | b')' | b'[' | b']' | b'{' | b'}' | b',' | b';' => {
+                    let p = match c {
+                        b'(' => P::LParen,
+                        b')' => P::RParen,
+                        b'[' => P::LBracket,
+                        b']' => P::RBracket,
+                        b'{' => P::LBrace,
+                        b'}' => P::RBrace,
+                        b',' => P::Comma,
+                        _ => P::Semi,
+                    };
+                    i += 1;
+                    self.push(TokKind::P(p), start, i);
+                }
                 b'/' if self.at(start + 1) == b'/' => {
                     // `str::find` with a char uses memchr.
-                    self.i = match self.text[start..].find('\n') {
+                    i = match self.text[start..].find('\n') {
                         Some(k) => start + k,
                         None => n,
                     };
                 }
-                b'/' if self.at(start + 1) == b'*' => self.block_comment(),
-                b'0'..=b'9' => self.number(),
-                b'.' if self.at(start + 1).is_ascii_digit() => self.number(),
-                b'"' => self.string(),
-                b'\'' => self.char_lit(),
-                c if is_ident_start(c) => {
-                    let mut j = start + 1;
-                    while j < n && is_ident_char(self.b[j]) {
-                        j += 1;
+                _ => {
+                    self.i = i;
+                    match c {
+                        b'/' if self.at(start + 1) == b'*' => self.block_comment(),
+                        b'0'..=b'9' => self.number(),
+                        b'.' if self.at(start + 1).is_ascii_digit() => self.number(),
+                        b'"' => self.string(),
+                        b'\'' => self.char_lit(),
+                        _ => match self.punct() {
+                            Some((p, len)) => {
+                                self.i += len;
+                                self.push(TokKind::P(p), start, start + len);
+                            }
+                            None => self.bad_chars(),
+                        },
                     }
-                    self.i = j;
-                    let kind = match Kw::from_name(&self.text[start..j]) {
-                        Some(k) => TokKind::Kw(k),
-                        None => TokKind::Ident,
-                    };
-                    self.push(kind, start, j);
+                    i = self.i;
                 }
-                _ => match self.punct() {
-                    Some((p, len)) => {
-                        self.i += len;
-                        self.push(TokKind::P(p), start, start + len);
-                    }
-                    None => self.bad_chars(),
-                },
             }
         }
+        self.i = i;
     }
 
     /// A run of characters that are not daslang, as one error token ending

@@ -88,7 +88,8 @@ pub fn parse(map: &mut SourceMap, root: FileId, opts: &ParseOptions, diags: &mut
     let map: &SourceMap = map;
     let raw = items::split(&toks, map);
     let selected = items::select(&raw, &toks, map, &opts.entries, root_span, diags);
-    let mut program = ast::Program::default();
+    let texts = token::Texts::new(map);
+    let mut program = ast::Program { items: Vec::with_capacity(selected.len()) };
     for i in selected {
         let item = &raw[i];
         // Lexing errors count only inside items that are parsed.
@@ -101,7 +102,7 @@ pub fn parse(map: &mut SourceMap, root: FileId, opts: &ParseOptions, diags: &mut
                 diags.push(Diagnostic::error(what, t.span).with_label(e.message()));
             }
         }
-        program.items.extend(parser::parse_item(&toks, item, map, diags));
+        parser::parse_item(&toks, item, &texts, diags, &mut program.items);
     }
     program
 }

@@ -8,19 +8,19 @@
 
 use super::ast::*;
 use super::items::{ItemKind, RawItem};
-use super::token::{Kw, TokKind, Token, P};
+use super::token::{Kw, Texts, TokKind, Token, P};
 use crate::diag::{Diagnostic, Diagnostics};
-use crate::source::{SourceMap, Span};
+use crate::source::Span;
 
 /// Deepest nesting of expressions and blocks together.
 pub const MAX_DEPTH: u32 = 128;
 
 type PResult<T> = Result<T, ()>;
 
-pub struct Parser<'a> {
+pub struct Parser<'a, 'm> {
     toks: &'a [Token],
     pos: usize,
-    map: &'a SourceMap,
+    texts: &'a Texts<'m>,
     diags: &'a mut Diagnostics,
     eof: Token,
     /// Greater than zero inside `()` / `[]`: line breaks are insignificant.
@@ -33,16 +33,17 @@ pub struct Parser<'a> {
     last: Span,
 }
 
-/// Parses one raw item into AST items (a shader global with several names
-/// gives several). Errors are reported; the item is dropped or kept partial.
-pub fn parse_item(toks: &[Token], item: &RawItem, map: &SourceMap, diags: &mut Diagnostics) -> Vec<Item> {
+/// Parses one raw item into AST items appended to `out` (a shader global
+/// with several names gives several). Errors are reported; the item is
+/// dropped or kept partial.
+pub(crate) fn parse_item(toks: &[Token], item: &RawItem, texts: &Texts, diags: &mut Diagnostics, out: &mut Vec<Item>) {
     let range = item.range();
     let slice = &toks[range.clone()];
     let end = slice.iter().rev().find(|t| t.kind != TokKind::Newline).map(|t| t.span.end).unwrap_or(0);
     let mut p = Parser {
         toks: slice,
         pos: 0,
-        map,
+        texts,
         diags,
         eof: Token::new(TokKind::Eof, Span::new(end, end)),
         nl_skip: 0,
@@ -51,7 +52,6 @@ pub fn parse_item(toks: &[Token], item: &RawItem, map: &SourceMap, diags: &mut D
         depth_reported: false,
         last: Span::new(end, end),
     };
-    let mut out = Vec::new();
     match item.kind {
         ItemKind::Def => {
             if let Some(f) = p.function() {
@@ -64,9 +64,7 @@ pub fn parse_item(toks: &[Token], item: &RawItem, map: &SourceMap, diags: &mut D
             }
         }
         ItemKind::Var => {
-            if let Ok(gs) = p.global() {
-                out.extend(gs.into_iter().map(Item::Global));
-            }
+            let _ = p.global(out);
         }
         ItemKind::Let => {
             if let Ok(c) = p.constant() {
@@ -75,7 +73,6 @@ pub fn parse_item(toks: &[Token], item: &RawItem, map: &SourceMap, diags: &mut D
         }
         ItemKind::Other => {}
     }
-    out
 }
 
 fn binop(t: &Token) -> Option<(BinaryOp, u8)> {
@@ -136,7 +133,7 @@ fn ends_stmt(t: &Token) -> bool {
     matches!(t.kind, TokKind::Newline | TokKind::Eof | TokKind::P(P::Semi | P::RBrace))
 }
 
-impl<'a> Parser<'a> {
+impl<'m> Parser<'_, 'm> {
     // ---- token access ----
 
     fn raw_peek(&self) -> Token {
@@ -173,8 +170,8 @@ impl<'a> Parser<'a> {
         }
     }
 
-    fn text(&self, t: &Token) -> &'a str {
-        self.map.slice(t.span)
+    fn text(&self, t: &Token) -> &'m str {
+        self.texts.get(t.span)
     }
 
     fn describe(&self, t: &Token) -> String {
@@ -454,9 +451,12 @@ impl<'a> Parser<'a> {
                         self.err(eq, "default parameter values are not supported in shader code".into(), "default value");
                         return Err(());
                     }
+                    // The last name takes the type, the others a copy.
+                    let last = names.pop().expect("at least one name");
                     for n in names {
                         params.push(Param { span: n.span.to(ty.span), name: n, ty: ty.clone() });
                     }
+                    params.push(Param { span: last.span.to(ty.span), name: last, ty });
                     if self.eat(P::Semi).is_some() || self.eat(P::Comma).is_some() {
                         continue;
                     }
@@ -533,7 +533,10 @@ impl<'a> Parser<'a> {
             self.err(eq, "field initialisers are not supported in shader code".into(), "initialiser");
             return Err(());
         }
-        Ok(names.into_iter().map(|n| Field { span: n.span.to(ty.span), name: n, ty: ty.clone() }).collect())
+        let last = names.pop().expect("at least one name");
+        let mut fields: Vec<Field> = names.into_iter().map(|n| Field { span: n.span.to(ty.span), name: n, ty: ty.clone() }).collect();
+        fields.push(Field { span: last.span.to(ty.span), name: last, ty });
+        Ok(fields)
     }
 
     fn qualifier(&mut self) -> PResult<Qualifier> {
@@ -594,7 +597,8 @@ impl<'a> Parser<'a> {
         Ok(Qualifier { kind, span })
     }
 
-    fn global(&mut self) -> PResult<Vec<GlobalVar>> {
+    /// `var` at top level: one global per name, appended to `out`.
+    fn global(&mut self, out: &mut Vec<Item>) -> PResult<()> {
         let kw = self.bump(); // `var`
         let mut qualifiers = Vec::new();
         while self.peek().is(P::At) {
@@ -621,10 +625,13 @@ impl<'a> Parser<'a> {
         };
         self.expect_line_end("the declaration")?;
         let span = kw.span.to(self.last);
-        Ok(names
-            .into_iter()
-            .map(|name| GlobalVar { qualifiers: qualifiers.clone(), name, ty: ty.clone(), init: init.clone(), span })
-            .collect())
+        // Each global owns a copy of the shared parts; the last takes them.
+        let last = names.pop().expect("at least one name");
+        for name in names {
+            out.push(Item::Global(GlobalVar { qualifiers: qualifiers.clone(), name, ty: ty.clone(), init: init.clone(), span }));
+        }
+        out.push(Item::Global(GlobalVar { qualifiers, name: last, ty, init, span }));
+        Ok(())
     }
 
     fn constant(&mut self) -> PResult<ConstDecl> {
@@ -1187,7 +1194,7 @@ impl<'a> Parser<'a> {
         }
         // Parsed straight to f32 (correctly rounded once; through f64 a
         // decimal near an f32 midpoint would round twice) and kept exactly.
-        match body.parse::<f32>() {
+        match short_decimal(body).map_or_else(|| body.parse::<f32>(), Ok) {
             Ok(v) if v.is_infinite() => {
                 self.err(t, "float literal is out of range for `float`".to_string(), "too large for `float` (largest 3.4028235e38)");
                 Err(())
@@ -1208,6 +1215,30 @@ impl<'a> Parser<'a> {
         self.push(d);
         Err(())
     }
+}
+
+/// Powers of ten that are exact in f32 (5^10 < 2^24).
+const POW10: [f32; 11] = [1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10];
+
+/// `digits[.digits]` with fewer than 2^24 as its digits and at most ten
+/// after the point, as f32: the digits and the power of ten are both exact
+/// in f32, so one division rounds the decimal correctly, to the same value
+/// as `str::parse` (Clinger's fast path), without its general machinery.
+/// `None` for anything else (exponents, long mantissas).
+fn short_decimal(s: &str) -> Option<f32> {
+    let (mut m, mut digits, mut frac, mut point) = (0u32, 0usize, 0usize, false);
+    for &c in s.as_bytes() {
+        match c {
+            b'0'..=b'9' => {
+                m = m.checked_mul(10)?.checked_add((c - b'0') as u32)?;
+                digits += 1;
+                frac += point as usize;
+            }
+            b'.' if !point => point = true,
+            _ => return None,
+        }
+    }
+    (digits > 0 && m < 1 << 24 && frac < POW10.len()).then(|| m as f32 / POW10[frac])
 }
 
 fn kw_text(mutable: bool) -> &'static str {
@@ -1237,4 +1268,44 @@ pub(crate) fn unescape(s: &str) -> String {
         }
     }
     out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::short_decimal;
+
+    /// The fast path gives exactly what `str::parse` gives, where it applies.
+    #[test]
+    fn short_decimals_round_like_parse() {
+        let mut n = 0;
+        let mut check = |s: &str| {
+            if let Some(v) = short_decimal(s) {
+                assert_eq!(v.to_bits(), s.parse::<f32>().unwrap().to_bits(), "{s}");
+                n += 1;
+            }
+        };
+        for m in (0..1u32 << 24).step_by(9973).chain([1, 5, 16777215, 16777214, 8388609, 8388607, 9999999, 1234567]) {
+            let digits = m.to_string();
+            for frac in 0..=10usize {
+                let s = if frac == 0 {
+                    format!("{digits}.")
+                } else if frac >= digits.len() {
+                    format!(".{}{digits}", "0".repeat(frac - digits.len()))
+                } else {
+                    format!("{}.{}", &digits[..digits.len() - frac], &digits[digits.len() - frac..])
+                };
+                check(&s);
+                check(&format!("0{s}"));
+            }
+        }
+        for s in ["1.0", "0.5", "100.0", "0.0", "1.", ".5", "3.14159", "0.1", "0.3", "2.5", "1024.0", "0.0001"] {
+            check(s);
+        }
+        assert!(n > 10_000);
+        for s in ["", ".", "1e3", "1.0.0", "16777216.0", "0.00000000001", "1_0", "x"] {
+            assert!(short_decimal(s).is_none() || s.parse::<f32>().is_ok(), "{s}");
+        }
+        assert_eq!(short_decimal("16777216.0"), None);
+        assert_eq!(short_decimal("."), None);
+    }
 }

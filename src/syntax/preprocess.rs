@@ -9,7 +9,6 @@
 //! added to the [`SourceMap`] with the span of its `#include` directive, so
 //! diagnostics show the include chain.
 
-use std::collections::HashMap;
 use std::path::{Path, PathBuf};
 use std::rc::Rc;
 
@@ -18,6 +17,7 @@ use super::parser::unescape;
 use super::token::{TokKind, Token, P};
 use super::ParseOptions;
 use crate::diag::{Diagnostic, Diagnostics};
+use crate::fxhash::FxHashMap;
 use crate::source::{FileId, SourceMap, Span};
 
 /// Deepest `#include` nesting.
@@ -63,49 +63,44 @@ struct Pp<'a> {
     map: &'a mut SourceMap,
     opts: &'a ParseOptions,
     diags: &'a mut Diagnostics,
-    defines: HashMap<String, Macro>,
+    defines: FxHashMap<String, Macro>,
     out: Vec<Token>,
+    root: FileId,
     /// Canonical paths of the files being processed, outermost first, with
     /// the display name of each.
     stack: Vec<(PathBuf, String)>,
-    /// Canonical directories includes may come from.
-    allowed: Vec<PathBuf>,
+    /// Canonical directories includes may come from. This and the root's
+    /// entry in `stack` are made on the first `#include` (they cost file
+    /// system calls, and most programs include nothing).
+    allowed: Option<Vec<PathBuf>>,
     total_size: usize,
     includes: usize,
     overflowed: bool,
     /// `#define`s seen so far (the next macro's id).
     macros_defined: usize,
+    /// Bit `len % 64` is set for the length of every name ever defined: a
+    /// cheap first test before looking an identifier up in `defines`.
+    macro_lens: u64,
 }
 
 /// Preprocesses the root file (already in the map) and returns the token
 /// stream of the whole translation unit, ending in a `Newline`.
 pub fn preprocess(map: &mut SourceMap, root: FileId, opts: &ParseOptions, diags: &mut Diagnostics) -> Vec<Token> {
-    let root_path = map.file(root).path.clone();
-    let root_name = map.file(root).name.clone();
-    let root_dir = root_path.as_deref().map(parent_dir).unwrap_or_else(|| PathBuf::from("."));
-    let mut allowed = Vec::new();
-    for d in std::iter::once(&root_dir).chain(opts.include_dirs.iter()) {
-        if let Ok(c) = std::fs::canonicalize(d) {
-            allowed.push(c);
-        }
-    }
-    let mut stack = Vec::new();
-    if let Some(c) = root_path.as_deref().and_then(|p| std::fs::canonicalize(p).ok()) {
-        stack.push((c, root_name));
-    }
     let total_size = map.file(root).text.len();
     let mut pp = Pp {
         map,
         opts,
         diags,
-        defines: HashMap::new(),
+        defines: FxHashMap::default(),
         out: Vec::with_capacity(total_size / 4 + 16),
-        stack,
-        allowed,
+        root,
+        stack: Vec::new(),
+        allowed: None,
         total_size,
         includes: 0,
         overflowed: false,
         macros_defined: 0,
+        macro_lens: 0,
     };
     if !opts.defines.is_empty() {
         let mut text = String::new();
@@ -160,10 +155,34 @@ impl Pp<'_> {
         self.map.slice(t.span)
     }
 
+    /// Pushes a run of a file's tokens (no two newlines in a row, as the
+    /// lexer makes them) in one copy, or one by one near the token limit.
+    fn push_run(&mut self, mut run: &[Token]) {
+        if run.first().is_some_and(is_newline) && self.out.last().is_some_and(is_newline) {
+            run = &run[1..];
+        }
+        if self.out.len() + run.len() <= MAX_TOKENS {
+            self.out.extend_from_slice(run);
+        } else {
+            for &t in run {
+                self.push_out(t);
+            }
+        }
+    }
+
+    /// Whether `t` names a macro. Most identifiers are rejected by their
+    /// length alone, without slicing the text or hashing it.
+    fn is_macro(&self, t: &Token) -> bool {
+        let len = t.span.end - t.span.start;
+        self.macro_lens & (1u64 << (len % 64)) != 0 && self.defines.contains_key(self.map.slice(t.span))
+    }
+
     fn file(&mut self, id: FileId, depth: usize) {
         let mut toks = Vec::new();
         {
             let f = self.map.file(id);
+            // Typical code has a token every 3 to 5 bytes.
+            toks.reserve(f.text.len() / 4 + 16);
             lex(&f.text, f.base, &mut toks);
         }
         let end_span = {
@@ -174,30 +193,37 @@ impl Pp<'_> {
         let mut i = 0;
         let n = toks.len();
         let mut line_start = true;
+        // Whether the current region is live; it changes only at directives.
+        let mut active = true;
+        // Tokens from `run` to `i` are live and not pushed yet: they are
+        // copied in one go up to the next directive or macro name.
+        let mut run = 0;
         while i < n {
             let t = toks[i];
             if line_start && t.is(P::Hash) {
+                if active {
+                    self.push_run(&toks[run..i]);
+                }
                 let mut j = i + 1;
                 while j < n && !is_newline(&toks[j]) {
                     j += 1;
                 }
                 self.directive(&toks[i..j], &mut conds, id, depth);
+                active = conds.last().is_none_or(Cond::active);
                 i = j;
+                run = j;
                 continue;
             }
             line_start = is_newline(&t);
-            let active = conds.last().is_none_or(Cond::active);
-            if !active {
-                i += 1;
-                continue;
-            }
-            if t.kind == TokKind::Ident && !self.defines.is_empty() {
-                let mut active_names = Vec::new();
-                self.expand(t, &mut active_names);
-            } else {
-                self.push_out(t);
+            if active && t.kind == TokKind::Ident && self.is_macro(&t) {
+                self.push_run(&toks[run..i]);
+                self.expand(t, &mut Vec::new());
+                run = i + 1;
             }
             i += 1;
+        }
+        if active {
+            self.push_run(&toks[run..n]);
         }
         for c in conds.iter().rev() {
             let what = self.map.slice(c.span).to_string();
@@ -314,6 +340,7 @@ impl Pp<'_> {
                     return;
                 }
                 let key = self.text(id).to_string();
+                self.macro_lens |= 1u64 << (key.len() % 64);
                 self.macros_defined += 1;
                 self.defines.insert(key, Macro { value: args[1..].into(), id: self.macros_defined });
             }
@@ -371,6 +398,25 @@ impl Pp<'_> {
                 self.diags.push(Diagnostic::error(format!("expected a macro name after `#{what}`"), head).with_label("no name"));
                 None
             }
+        }
+    }
+
+    /// Makes the canonical directories includes may come from, on first use,
+    /// along with the root file's entry at the bottom of the include stack.
+    fn init_include_roots(&mut self) {
+        if self.allowed.is_none() {
+            let root = self.map.file(self.root);
+            let root_dir = root.path.as_deref().map(parent_dir).unwrap_or_else(|| PathBuf::from("."));
+            let mut allowed = Vec::new();
+            for d in std::iter::once(&root_dir).chain(self.opts.include_dirs.iter()) {
+                if let Ok(c) = std::fs::canonicalize(d) {
+                    allowed.push(c);
+                }
+            }
+            if let Some(c) = root.path.as_deref().and_then(|p| std::fs::canonicalize(p).ok()) {
+                self.stack.insert(0, (c, root.name.clone()));
+            }
+            self.allowed = Some(allowed);
         }
     }
 
@@ -463,14 +509,16 @@ impl Pp<'_> {
                 return;
             }
         };
-        if !self.opts.allow_outside_includes && !self.allowed.iter().any(|a| canon.starts_with(a)) {
+        self.init_include_roots();
+        let allowed = self.allowed.as_deref().unwrap_or_default();
+        if !self.opts.allow_outside_includes && !allowed.iter().any(|a| canon.starts_with(a)) {
             let mut d = Diagnostic::error(
                 format!("`#include \"{name}\"` reaches outside the input's directory and the include directories"),
                 target.span,
             )
             .with_label("outside the allowed directories")
             .with_note(format!("it resolves to `{}`", canon.display()));
-            for a in &self.allowed {
+            for a in allowed {
                 d = d.with_note(format!("allowed: `{}`", a.display()));
             }
             d = d.with_note("help: add its directory with `-I DIR`, or pass `--allow-outside-includes` to permit it");

@@ -5,7 +5,9 @@
 //! define's value) and for `-D` values (they live in the `<command-line>`
 //! virtual file).
 
-use crate::source::Span;
+use std::cell::Cell;
+
+use crate::source::{SourceMap, Span};
 
 /// The keywords the front end needs to recognise. Every other daslang
 /// keyword lexes as an identifier; shader code never uses them and host
@@ -32,23 +34,28 @@ pub enum Kw {
 
 impl Kw {
     pub fn from_name(s: &str) -> Option<Kw> {
+        Kw::from_bytes(s.as_bytes())
+    }
+
+    /// Like [`Kw::from_name`], on the lexer's bytes.
+    pub fn from_bytes(s: &[u8]) -> Option<Kw> {
         Some(match s {
-            "def" => Kw::Def,
-            "var" => Kw::Var,
-            "let" => Kw::Let,
-            "struct" => Kw::Struct,
-            "class" => Kw::Class,
-            "if" => Kw::If,
-            "elif" => Kw::Elif,
-            "else" => Kw::Else,
-            "while" => Kw::While,
-            "for" => Kw::For,
-            "in" => Kw::In,
-            "return" => Kw::Return,
-            "break" => Kw::Break,
-            "continue" => Kw::Continue,
-            "true" => Kw::True,
-            "false" => Kw::False,
+            b"def" => Kw::Def,
+            b"var" => Kw::Var,
+            b"let" => Kw::Let,
+            b"struct" => Kw::Struct,
+            b"class" => Kw::Class,
+            b"if" => Kw::If,
+            b"elif" => Kw::Elif,
+            b"else" => Kw::Else,
+            b"while" => Kw::While,
+            b"for" => Kw::For,
+            b"in" => Kw::In,
+            b"return" => Kw::Return,
+            b"break" => Kw::Break,
+            b"continue" => Kw::Continue,
+            b"true" => Kw::True,
+            b"false" => Kw::False,
             _ => return None,
         })
     }
@@ -308,5 +315,39 @@ impl Token {
 
     pub fn is_kw(&self, k: Kw) -> bool {
         self.kind == TokKind::Kw(k)
+    }
+}
+
+/// Token text by span: `map.slice(span)` with the file of the last lookup
+/// remembered. Tokens come in long runs from one file, and this skips the
+/// search for the file that `SourceMap::slice` does on every call.
+pub(crate) struct Texts<'m> {
+    map: &'m SourceMap,
+    /// Global offsets of the start and end of the last file hit, and its text.
+    last: Cell<(u32, u32, &'m str)>,
+}
+
+impl<'m> Texts<'m> {
+    pub fn new(map: &'m SourceMap) -> Self {
+        Texts { map, last: Cell::new((1, 0, "")) }
+    }
+
+    /// The same text as `map.slice(span)`.
+    #[inline]
+    pub fn get(&self, span: Span) -> &'m str {
+        let (base, end, text) = self.last.get();
+        if base <= span.start && span.start <= span.end && span.end <= end {
+            return text.get((span.start - base) as usize..(span.end - base) as usize).unwrap_or("");
+        }
+        self.get_slow(span)
+    }
+
+    #[cold]
+    fn get_slow(&self, span: Span) -> &'m str {
+        if let Some(id) = self.map.file_of(span.start) {
+            let f = self.map.file(id);
+            self.last.set((f.base, f.base + f.text.len() as u32, &f.text));
+        }
+        self.map.slice(span)
     }
 }
