@@ -31,7 +31,6 @@ pub mod syntax;
 #[cfg(feature = "render")]
 pub mod render;
 
-mod fxhash;
 
 use std::path::{Path, PathBuf};
 

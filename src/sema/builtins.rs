@@ -12,7 +12,7 @@
 use std::sync::OnceLock;
 
 use super::types::{Scalar, Ty, BOOL, FLOAT};
-use crate::fxhash::FxHashMap;
+use rustc_hash::FxHashMap;
 use naga::MathFunction as Mf;
 
 /// What a builtin call lowers to.

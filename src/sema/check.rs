@@ -13,7 +13,7 @@ use super::consts::{eval_const, ConstEnv};
 use super::tree::*;
 use super::types::{Scalar, StructId, Ty, TyDisplay, BOOL, FLOAT, INT, UINT};
 use crate::diag::{suggest, Diagnostic, Diagnostics};
-use crate::fxhash::{FxHashMap, FxHashSet};
+use rustc_hash::{FxHashMap, FxHashSet};
 use crate::lower::SamplerKind;
 use crate::source::Span;
 use crate::syntax::ast::{self, BinaryOp, UnaryOp};

@@ -12,7 +12,7 @@ use std::ops::Range;
 
 use super::token::{Kw, Texts, TokKind, Token, P};
 use crate::diag::{suggest, Diagnostic, Diagnostics};
-use crate::fxhash::FxHashMap;
+use rustc_hash::FxHashMap;
 use crate::source::{SourceMap, Span};
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -17,7 +17,7 @@ use super::parser::unescape;
 use super::token::{TokKind, Token, P};
 use super::ParseOptions;
 use crate::diag::{Diagnostic, Diagnostics};
-use crate::fxhash::FxHashMap;
+use rustc_hash::FxHashMap;
 use crate::source::{FileId, SourceMap, Span};
 
 /// Deepest `#include` nesting.
