@@ -8,11 +8,11 @@
 //! - `all_targets`: shaders/shadow.das to every output (GLSL 330 and ES 3.00
 //!   per entry point, WGSL, SPIR-V, reflection), beside naga's parse +
 //!   validate again;
-//! - `all_targets_wall`: the same two in wall-clock time, where umbrac's
-//!   independent jobs run side by side (`UMBRAC_THREADS`, src/par.rs);
+//! - `all_targets_wall`: the same two in wall-clock time;
 //! - `stages`: each stage of umbrac alone, to see where the time goes.
 //!
-//! Times are CPU time of the whole process (every thread summed), except in
+//! Times are CPU time of the whole process (every thread summed: a
+//! compilation runs on its own large-stack thread), except in
 //! `all_targets_wall`: on a shared machine, wall time counts other
 //! processes' turns on the cores too.
 //!

@@ -23,7 +23,6 @@ pub mod emit;
 pub mod golden;
 pub mod lower;
 pub mod output;
-pub mod par;
 pub mod sema;
 pub mod source;
 pub mod syntax;

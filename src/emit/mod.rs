@@ -41,34 +41,26 @@ pub fn emit(lowered: &Lowered, stem: &str, source_name: &str, targets: &[Target]
     let glsl_wanted = targets.iter().any(|t| matches!(t, Target::Glsl330 | Target::Gles300));
     let layouts = reflect::uniform_layouts(lowered, glsl_wanted)?;
 
-    // Every output is independent of the others: they are written side by
-    // side ([`crate::par`]), the whole-module ones (the largest) first, and
-    // put back in a fixed order: GLSL per entry point, WGSL, SPIR-V.
+    // GLSL per entry point, then WGSL, then SPIR-V.
     let entries = &lowered.interface.entry_points;
-    let mut jobs: Vec<Job> = Vec::new();
-    if targets.contains(&Target::Spirv) {
-        jobs.push(Job::Spirv);
-    }
+    let mut jobs: Vec<Job> = (0..entries.len()).map(Job::Glsl).collect();
     if targets.contains(&Target::Wgsl) {
         jobs.push(Job::Wgsl);
     }
-    jobs.extend((0..entries.len()).map(Job::Glsl));
-    let done = crate::par::map(jobs.len(), |i| run_job(lowered, stem, &targets, jobs[i]));
-
-    let (mut glsl, mut whole) = (Vec::new(), Vec::new());
+    if targets.contains(&Target::Spirv) {
+        jobs.push(Job::Spirv);
+    }
+    let mut artifacts = Vec::new();
     let mut glsl_names: Vec<glsl::EntryNames> = Vec::new();
-    for d in done {
-        match d? {
+    for job in jobs {
+        match run_job(lowered, stem, &targets, job)? {
             Done::Glsl(files, names) => {
-                glsl.extend(files);
+                artifacts.extend(files);
                 glsl_names.push(names);
             }
-            Done::Whole(a) => whole.push(a),
+            Done::Whole(a) => artifacts.push(a),
         }
     }
-    whole.sort_by_key(|a| a.target); // WGSL before SPIR-V
-    let mut artifacts = glsl;
-    artifacts.extend(whole);
 
     let reflection = reflect::build(lowered, stem, source_name, &targets, &glsl_names, &layouts)?;
     let mut json = serde_json::to_string_pretty(&reflection)
@@ -79,6 +71,7 @@ pub fn emit(lowered: &Lowered, stem: &str, source_name: &str, targets: &[Target]
     Ok((artifacts, reflection))
 }
 
+/// One piece of emission: the outputs are independent of each other.
 #[derive(Clone, Copy)]
 enum Job {
     Spirv,

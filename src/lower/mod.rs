@@ -214,27 +214,9 @@ pub enum Flavor {
 }
 
 /// Lowers a checked program into the validated modules.
-///
-/// The modules are independent, so they are built side by side
-/// ([`crate::par`]); the first error in program order is reported.
 pub fn lower(program: &crate::sema::Program, conventions: Conventions) -> Result<Lowered, crate::diag::Diagnostic> {
-    enum Built {
-        Gpu(naga::Module, naga::valid::ModuleInfo, Interface),
-        Gl(GlEntry),
-    }
-    let jobs = crate::par::map(1 + program.entry_points.len(), |i| match i {
-        0 => lower_gpu(program, conventions).map(|(m, info, iface)| Built::Gpu(m, info, iface)),
-        _ => lower_gl_entry(program, i - 1).map(Built::Gl),
-    });
-    let mut gpu = None;
-    let mut gl = Vec::with_capacity(program.entry_points.len());
-    for job in jobs {
-        match job? {
-            Built::Gpu(m, info, iface) => gpu = Some((m, info, iface)),
-            Built::Gl(e) => gl.push(e),
-        }
-    }
-    let (gpu, gpu_info, interface) = gpu.ok_or_else(|| Diagnostic::bug("the GPU module was not built", None))?;
+    let (gpu, gpu_info, interface) = lower_gpu(program, conventions)?;
+    let gl = (0..program.entry_points.len()).map(|i| lower_gl_entry(program, i)).collect::<Result<_, _>>()?;
     Ok(Lowered { gl, gpu, gpu_info, interface })
 }
 
