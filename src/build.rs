@@ -299,7 +299,7 @@ impl Build {
                 .iter()
                 .map(|v| {
                     let opts = self.options_for(v);
-                    std::thread::Builder::new().stack_size(64 << 20).spawn_scoped(s, move || crate::compile_file(&v.file, &opts))
+                    std::thread::Builder::new().stack_size(crate::COMPILER_STACK_SIZE).spawn_scoped(s, move || crate::compile_file(&v.file, &opts))
                 })
                 .collect();
             handles

@@ -313,7 +313,7 @@ fn compile_all(files: &[PathBuf], opts: &Options) -> Vec<Compilation> {
     let workers = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1).min(files.len()).max(1);
     std::thread::scope(|s| {
         for _ in 0..workers {
-            let spawned = std::thread::Builder::new().stack_size(64 << 20).spawn_scoped(s, || loop {
+            let spawned = std::thread::Builder::new().stack_size(umbrac::COMPILER_STACK_SIZE).spawn_scoped(s, || loop {
                 let i = next.fetch_add(1, Ordering::Relaxed);
                 let Some(path) = files.get(i) else { break };
                 let c = std::panic::catch_unwind(|| umbrac::compile_file(path, opts)).unwrap_or_else(|_| panicked(path));
