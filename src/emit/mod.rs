@@ -41,25 +41,48 @@ pub fn emit(lowered: &Lowered, stem: &str, source_name: &str, targets: &[Target]
     let glsl_wanted = targets.iter().any(|t| matches!(t, Target::Glsl330 | Target::Gles300));
     let layouts = reflect::uniform_layouts(lowered, glsl_wanted)?;
 
-    // GLSL per entry point, then WGSL, then SPIR-V.
-    let entries = &lowered.interface.entry_points;
-    let mut jobs: Vec<Job> = (0..entries.len()).map(Job::Glsl).collect();
+    let mut artifacts = Vec::new();
+
+    // GLSL: the names a GL host needs come from the GLSL writer itself, so
+    // it runs (for GLSL 330) even when no GLSL target is requested.
+    let mut glsl_names: Vec<glsl::EntryNames> = Vec::new();
+    for ep in &lowered.interface.entry_points {
+        let entry_module = glsl::EntryModule::new(lowered, ep)?;
+        let (text, names) = glsl::write_entry_from(lowered, &entry_module, ep, glsl::Profile::Desktop330)?;
+        if targets.contains(&Target::Glsl330) {
+            artifacts.push(Artifact {
+                file_name: glsl::file_name(&ep.name, ep.stage, glsl::Profile::Desktop330),
+                target: Some(Target::Glsl330),
+                entry: Some(ep.name.clone()),
+                contents: text.into_bytes(),
+            });
+        }
+        if targets.contains(&Target::Gles300) {
+            let (text, es_names) = glsl::write_entry_from(lowered, &entry_module, ep, glsl::Profile::Es300)?;
+            if es_names != names {
+                return Err(Diagnostic::bug(
+                    format!("GLSL 330 and GLSL ES 3.00 outputs of entry point `{}` disagree on identifier names", ep.name),
+                    None,
+                ));
+            }
+            artifacts.push(Artifact {
+                file_name: glsl::file_name(&ep.name, ep.stage, glsl::Profile::Es300),
+                target: Some(Target::Gles300),
+                entry: Some(ep.name.clone()),
+                contents: text.into_bytes(),
+            });
+        }
+        glsl_names.push(names);
+    }
+
     if targets.contains(&Target::Wgsl) {
-        jobs.push(Job::Wgsl);
+        let text = wgsl::write(lowered)?;
+        artifacts.push(Artifact { file_name: format!("{stem}.wgsl"), target: Some(Target::Wgsl), entry: None, contents: text.into_bytes() });
     }
     if targets.contains(&Target::Spirv) {
-        jobs.push(Job::Spirv);
-    }
-    let mut artifacts = Vec::new();
-    let mut glsl_names: Vec<glsl::EntryNames> = Vec::new();
-    for job in jobs {
-        match run_job(lowered, stem, &targets, job)? {
-            Done::Glsl(files, names) => {
-                artifacts.extend(files);
-                glsl_names.push(names);
-            }
-            Done::Whole(a) => artifacts.push(a),
-        }
+        let words = spirv::write(lowered)?;
+        let contents = words.iter().flat_map(|w| w.to_le_bytes()).collect();
+        artifacts.push(Artifact { file_name: format!("{stem}.spv"), target: Some(Target::Spirv), entry: None, contents });
     }
 
     let reflection = reflect::build(lowered, stem, source_name, &targets, &glsl_names, &layouts)?;
@@ -69,66 +92,6 @@ pub fn emit(lowered: &Lowered, stem: &str, source_name: &str, targets: &[Target]
     artifacts.push(Artifact { file_name: reflect::file_name(stem), target: None, entry: None, contents: json.into_bytes() });
 
     Ok((artifacts, reflection))
-}
-
-/// One piece of emission: the outputs are independent of each other.
-#[derive(Clone, Copy)]
-enum Job {
-    Spirv,
-    Wgsl,
-    /// Both GLSL profiles of entry point `i`.
-    Glsl(usize),
-}
-
-enum Done {
-    Glsl(Vec<Artifact>, glsl::EntryNames),
-    Whole(Artifact),
-}
-
-fn run_job(lowered: &Lowered, stem: &str, targets: &[Target], job: Job) -> Result<Done, Diagnostic> {
-    match job {
-        Job::Spirv => {
-            let words = spirv::write(lowered)?;
-            let contents = words.iter().flat_map(|w| w.to_le_bytes()).collect();
-            Ok(Done::Whole(Artifact { file_name: format!("{stem}.spv"), target: Some(Target::Spirv), entry: None, contents }))
-        }
-        Job::Wgsl => {
-            let text = wgsl::write(lowered)?;
-            Ok(Done::Whole(Artifact { file_name: format!("{stem}.wgsl"), target: Some(Target::Wgsl), entry: None, contents: text.into_bytes() }))
-        }
-        Job::Glsl(i) => {
-            let ep = &lowered.interface.entry_points[i];
-            let mut files = Vec::new();
-            // The names a GL host needs come from the GLSL writer itself, so
-            // it runs (for GLSL 330) even when no GLSL target is requested.
-            let entry_module = glsl::EntryModule::new(lowered, ep)?;
-            let (text, names) = glsl::write_entry_from(lowered, &entry_module, ep, glsl::Profile::Desktop330)?;
-            if targets.contains(&Target::Glsl330) {
-                files.push(Artifact {
-                    file_name: glsl::file_name(&ep.name, ep.stage, glsl::Profile::Desktop330),
-                    target: Some(Target::Glsl330),
-                    entry: Some(ep.name.clone()),
-                    contents: text.into_bytes(),
-                });
-            }
-            if targets.contains(&Target::Gles300) {
-                let (text, es_names) = glsl::write_entry_from(lowered, &entry_module, ep, glsl::Profile::Es300)?;
-                if es_names != names {
-                    return Err(Diagnostic::bug(
-                        format!("GLSL 330 and GLSL ES 3.00 outputs of entry point `{}` disagree on identifier names", ep.name),
-                        None,
-                    ));
-                }
-                files.push(Artifact {
-                    file_name: glsl::file_name(&ep.name, ep.stage, glsl::Profile::Es300),
-                    target: Some(Target::Gles300),
-                    entry: Some(ep.name.clone()),
-                    contents: text.into_bytes(),
-                });
-            }
-            Ok(Done::Glsl(files, names))
-        }
-    }
 }
 
 /// The modules and the interface must describe the same entry points;
