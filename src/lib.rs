@@ -30,7 +30,6 @@ pub mod syntax;
 #[cfg(feature = "render")]
 pub mod render;
 
-
 use std::path::{Path, PathBuf};
 
 pub use diag::{Diagnostic, Diagnostics, Severity};

@@ -81,7 +81,8 @@ impl<'p> ModuleBuilder<'p> {
             resources: Vec::new(),
             resource_of: HashMap::new(),
             sampler_elems: Vec::new(),
-            struct_names: p.struct_names(),
+            // Only the GPU module's interface spells types (`show_ty`).
+            struct_names: if flavor == Flavor::Gl { Vec::new() } else { p.struct_names() },
         }
     }
 
@@ -196,18 +197,14 @@ impl<'p> ModuleBuilder<'p> {
     }
 
     /// Declares the sema globals, every one or (`only`) those one entry
-    /// point uses; resources get bindings in declaration order either way.
+    /// point uses; resources get bindings in declaration order. `only` is
+    /// for the one-entry GL modules, whose resources have no bindings.
     pub fn declare_globals(&mut self, only: Option<&std::collections::BTreeMap<sema::GlobalId, Span>>) {
         let mut next_binding = 0u32;
         let with_binding = self.flavor != Flavor::Gl;
         for (gid, g) in self.p.globals.iter().enumerate() {
             let span: naga::Span = g.span.into();
             if only.is_some_and(|uses| !uses.contains_key(&gid)) {
-                next_binding += match &g.kind {
-                    GlobalKind::Uniform => 1,
-                    GlobalKind::Sampler { count, .. } => 2 * count.unwrap_or(1),
-                    _ => 0,
-                };
                 self.globals.push(GlobalSlot::Absent);
                 continue;
             }
