@@ -129,6 +129,21 @@ fn starts_stmt(t: &Token) -> bool {
     )
 }
 
+/// Calls `make` with each of `names` and the parts they share
+/// (`a, b : float3` declares two of one type): copies for all but the last
+/// name, which takes the parts themselves.
+fn share_among<N, T: Clone>(names: Vec<N>, shared: T, mut make: impl FnMut(N, T)) {
+    let mut names = names.into_iter().peekable();
+    while let Some(n) = names.next() {
+        if names.peek().is_some() {
+            make(n, shared.clone());
+        } else {
+            make(n, shared);
+            return;
+        }
+    }
+}
+
 fn ends_stmt(t: &Token) -> bool {
     matches!(t.kind, TokKind::Newline | TokKind::Eof | TokKind::P(P::Semi | P::RBrace))
 }
@@ -451,12 +466,7 @@ impl<'m> Parser<'_, 'm> {
                         self.err(eq, "default parameter values are not supported in shader code".into(), "default value");
                         return Err(());
                     }
-                    // The last name takes the type, the others a copy.
-                    let last = names.pop().expect("at least one name");
-                    for n in names {
-                        params.push(Param { span: n.span.to(ty.span), name: n, ty: ty.clone() });
-                    }
-                    params.push(Param { span: last.span.to(ty.span), name: last, ty });
+                    share_among(names, ty, |n, ty| params.push(Param { span: n.span.to(ty.span), name: n, ty }));
                     if self.eat(P::Semi).is_some() || self.eat(P::Comma).is_some() {
                         continue;
                     }
@@ -533,9 +543,8 @@ impl<'m> Parser<'_, 'm> {
             self.err(eq, "field initialisers are not supported in shader code".into(), "initialiser");
             return Err(());
         }
-        let last = names.pop().expect("at least one name");
-        let mut fields: Vec<Field> = names.into_iter().map(|n| Field { span: n.span.to(ty.span), name: n, ty: ty.clone() }).collect();
-        fields.push(Field { span: last.span.to(ty.span), name: last, ty });
+        let mut fields = Vec::with_capacity(names.len());
+        share_among(names, ty, |n, ty| fields.push(Field { span: n.span.to(ty.span), name: n, ty }));
         Ok(fields)
     }
 
@@ -625,12 +634,9 @@ impl<'m> Parser<'_, 'm> {
         };
         self.expect_line_end("the declaration")?;
         let span = kw.span.to(self.last);
-        // Each global owns a copy of the shared parts; the last takes them.
-        let last = names.pop().expect("at least one name");
-        for name in names {
-            out.push(Item::Global(GlobalVar { qualifiers: qualifiers.clone(), name, ty: ty.clone(), init: init.clone(), span }));
-        }
-        out.push(Item::Global(GlobalVar { qualifiers, name: last, ty, init, span }));
+        share_among(names, (qualifiers, ty, init), |name, (qualifiers, ty, init)| {
+            out.push(Item::Global(GlobalVar { qualifiers, name, ty, init, span }))
+        });
         Ok(())
     }
 
