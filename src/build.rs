@@ -291,15 +291,15 @@ impl Build {
         o
     }
 
-    /// Compiles each variant on a thread with a large stack (the front end
-    /// recurses), as the CLI does.
+    /// Compiles each variant on a compiler thread of its own, in parallel,
+    /// as the CLI does.
     fn compile_all(&self, variants: &[Variant]) -> Vec<Compilation> {
         std::thread::scope(|s| {
             let handles: Vec<_> = variants
                 .iter()
                 .map(|v| {
                     let opts = self.options_for(v);
-                    std::thread::Builder::new().stack_size(crate::COMPILER_STACK_SIZE).spawn_scoped(s, move || crate::compile_file(&v.file, &opts))
+                    crate::spawn_compiler_thread(s, move || crate::compile_file(&v.file, &opts))
                 })
                 .collect();
             handles

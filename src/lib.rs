@@ -180,38 +180,66 @@ pub fn compile_source(name: &str, text: &str, opts: &Options) -> Compilation {
     on_compiler_stack(move || run(sources, root, opts))
 }
 
-/// Stack size of the thread each compilation runs on.
+/// Stack size of the threads umbrac starts for compilations.
 ///
 /// The stages recurse over the program's nesting, which the limits in
-/// [`syntax`] and [`sema`] bound, and naga's backends recurse over
-/// expression trees with large frames (about 44 KiB per level in the GLSL
-/// writer). The deepest program the limits accept needs under 8 MiB even
-/// in debug builds; the caller's stack may be as small as 2 MiB (test
-/// threads), so every compilation gets its own. 32 MiB keeps a 4x margin
-/// and stays within glibc's cache of thread stacks (40 MiB), so repeated
-/// compilations reuse one already-mapped stack (a 64 MiB stack was mapped
-/// afresh each time: four times the page faults, ~30 us per compile).
+/// [`syntax`] and [`sema`] bound. Measured on the deepest programs the
+/// limits accept (`tests/limits.rs`): at most 0.4 MiB of stack in optimised
+/// builds, but up to 5.5 MiB in unoptimised ones, where umbrac's own frames
+/// are large. 32 MiB keeps a wide margin and stays within glibc's cache of
+/// thread stacks (40 MiB), so repeated compilations reuse a mapped stack.
 pub const COMPILER_STACK_SIZE: usize = 32 << 20;
 
-/// Runs `job` on a thread with [`COMPILER_STACK_SIZE`] bytes of stack (on
-/// the current thread if none can be started). A panic, which would be a
-/// bug in umbrac, becomes an internal compiler error.
-fn on_compiler_stack(job: impl FnOnce() -> Compilation + Send) -> Compilation {
-    let mut job = Some(job);
-    let ran = std::thread::scope(|s| {
-        let thread = std::thread::Builder::new().name("umbrac".into()).stack_size(COMPILER_STACK_SIZE);
-        match thread.spawn_scoped(s, || job.take().map(|j| j())) {
-            Ok(handle) => Some(handle.join()),
-            Err(_) => None,
+/// Whether [`compile_file`] and [`compile_source`] run on the caller's
+/// thread. In optimised builds (no debug assertions) the deepest accepted
+/// program needs under 0.4 MiB, so any thread with Rust's default 2 MiB
+/// (or the 8 MiB main thread) is enough, and staying on the caller's thread
+/// saves 100-300 us per compile that moving the work and its results
+/// between threads (and cores) costs. Unoptimised builds need more than a
+/// 2 MiB thread has and start a [`COMPILER_STACK_SIZE`] thread instead.
+/// (A build with debug assertions off *and* no optimisation would be
+/// misjudged; cargo's profiles never combine them.)
+const RUNS_ON_CALLERS_STACK: bool = !cfg!(debug_assertions);
+
+thread_local! {
+    /// Set on threads started by [`spawn_compiler_thread`]: they have the
+    /// large stack already, so compilations run on them directly.
+    static HAS_COMPILER_STACK: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// Starts a scoped thread with [`COMPILER_STACK_SIZE`] bytes of stack on
+/// which compilations run directly, whatever the build (the CLI's and
+/// [`build`]'s workers).
+pub fn spawn_compiler_thread<'scope, T: Send + 'scope>(
+    scope: &'scope std::thread::Scope<'scope, '_>,
+    f: impl FnOnce() -> T + Send + 'scope,
+) -> std::io::Result<std::thread::ScopedJoinHandle<'scope, T>> {
+    std::thread::Builder::new().name("umbrac".into()).stack_size(COMPILER_STACK_SIZE).spawn_scoped(scope, move || {
+        HAS_COMPILER_STACK.set(true);
+        f()
+    })
+}
+
+/// Runs `job` where its stack is sure to suffice: on the calling thread
+/// when [`RUNS_ON_CALLERS_STACK`] or the thread is one of umbrac's,
+/// otherwise on a new [`COMPILER_STACK_SIZE`] thread (or the current one if
+/// none can be started). A panic, which would be a bug in umbrac, becomes an
+/// internal compiler error.
+fn on_compiler_stack<F: FnOnce() -> Compilation + Send>(job: F) -> Compilation {
+    use std::panic::{catch_unwind, AssertUnwindSafe};
+    let result = if RUNS_ON_CALLERS_STACK || HAS_COMPILER_STACK.get() {
+        catch_unwind(AssertUnwindSafe(job))
+    } else {
+        let mut job = Some(job);
+        let ran = std::thread::scope(|s| spawn_compiler_thread(s, || job.take().map(|j| j())).ok().map(|h| h.join()));
+        match (ran, job) {
+            (Some(joined), _) => joined.map(|c| c.unwrap_or_else(|| panicked("the compilation did not run"))),
+            (None, Some(job)) => catch_unwind(AssertUnwindSafe(job)),
+            (None, None) => Ok(panicked("the compilation did not run")),
         }
-    });
-    let result = match ran {
-        Some(joined) => joined,
-        None => std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| job.take().map(|j| j()))),
     };
     match result {
-        Ok(Some(c)) => c,
-        Ok(None) => panicked("the compilation did not run"),
+        Ok(c) => c,
         Err(payload) => {
             let msg = payload
                 .downcast_ref::<&str>()

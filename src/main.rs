@@ -305,15 +305,14 @@ fn expand_inputs(inputs: &[PathBuf]) -> Result<Vec<(PathBuf, PathBuf)>, String> 
     Ok(out)
 }
 
-/// Compiles every file, in parallel, each on a worker thread with a large
-/// stack. A panic in one compilation becomes an internal error for that file.
+/// Compiles every file, in parallel, on compiler threads (large stacks). A panic in one compilation becomes an internal error for that file.
 fn compile_all(files: &[PathBuf], opts: &Options) -> Vec<Compilation> {
     let results: Vec<Mutex<Option<Compilation>>> = files.iter().map(|_| Mutex::new(None)).collect();
     let next = AtomicUsize::new(0);
     let workers = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1).min(files.len()).max(1);
     std::thread::scope(|s| {
         for _ in 0..workers {
-            let spawned = std::thread::Builder::new().stack_size(umbrac::COMPILER_STACK_SIZE).spawn_scoped(s, || loop {
+            let spawned = umbrac::spawn_compiler_thread(s, || loop {
                 let i = next.fetch_add(1, Ordering::Relaxed);
                 let Some(path) = files.get(i) else { break };
                 let c = std::panic::catch_unwind(|| umbrac::compile_file(path, opts)).unwrap_or_else(|_| panicked(path));

@@ -1,8 +1,10 @@
 //! Limits: inputs built to exhaust the stack, memory or time must end in a
 //! diagnostic naming the limit (or compile fine), never in a crash. Each
 //! compile runs on a thread with a 2 MiB stack, the test harness's default,
-//! in whatever profile the tests are built with (debug by default, where
-//! stack frames are largest).
+//! in whatever profile the tests are built with: in debug builds umbrac
+//! moves the work to a large-stack thread of its own, in release builds it
+//! compiles on the 2 MiB thread itself (`cargo test --release
+//! --no-default-features --test limits`, docs/robustness.md).
 
 use umbrac::{compile_source, Compilation, Options};
 
@@ -176,6 +178,16 @@ fn deepest_accepted_blocks_compile() {
     assert_compiles(&compile_small_stack(fs(&format!("{open}{deep}{close}"))));
     let loops = "for i in range(3) {\n".repeat(n);
     assert_compiles(&compile_small_stack(fs(&format!("{loops}a += float(i)\n{close}"))));
+}
+
+#[test]
+fn deepest_expressions_compile_on_a_compiler_thread() {
+    // umbrac's own workers (CLI, build) compile on their thread directly,
+    // in every build: its 32 MiB must hold the deepest program unoptimised.
+    let n = 120;
+    let src = fs(&format!("    a = {}a{}", "sin(".repeat(n), ")".repeat(n)));
+    let c = std::thread::scope(|s| umbrac::spawn_compiler_thread(s, || compile_source("limits.das", &src, &Options::default())).unwrap().join());
+    assert_compiles(&c.expect("the compiler panicked"));
 }
 
 #[test]
