@@ -200,7 +200,7 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
                 .next()
                 .and_then(|first| block_instance(&out[first.end..]))
                 .ok_or_else(|| bug(format!("cannot find uniform block `{naga_block}`")))?;
-            let new = format!("{}_block", instance.trim_end_matches('_'));
+            let new = [instance.trim_end_matches('_'), "_block"].concat();
             if idents.iter().any(|(_, id)| *id == new) {
                 return Err(bug(format!("renaming uniform block `{naga_block}` to `{new}` would collide with an identifier of the same name")));
             }
