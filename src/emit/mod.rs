@@ -41,11 +41,12 @@ pub fn emit(lowered: &Lowered, stem: &str, source_name: &str, targets: &[Target]
     let glsl_wanted = targets.iter().any(|t| matches!(t, Target::Glsl330 | Target::Gles300));
     let layouts = reflect::uniform_layouts(lowered, glsl_wanted)?;
 
-    let mut artifacts = Vec::new();
+    // Two GLSL files per entry point, WGSL, SPIR-V and the manifest.
+    let mut artifacts = Vec::with_capacity(2 * lowered.interface.entry_points.len() + 3);
 
     // GLSL: the names a GL host needs come from the GLSL writer itself, so
     // it runs (for GLSL 330) even when no GLSL target is requested.
-    let mut glsl_names: Vec<glsl::EntryNames> = Vec::new();
+    let mut glsl_names: Vec<glsl::EntryNames> = Vec::with_capacity(lowered.interface.entry_points.len());
     for ep in &lowered.interface.entry_points {
         let entry_module = glsl::EntryModule::new(lowered, ep)?;
         let (text, names) = glsl::write_entry_from(lowered, &entry_module, ep, glsl::Profile::Desktop330)?;
