@@ -19,8 +19,12 @@
 //! Writer flags are empty: the default (`ADJUST_COORDINATE_SPACE`) would flip
 //! y and rewrite z, but the DSL already is GL-convention code.
 
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::BTreeMap;
 use std::fmt::Write as _;
+use std::ops::Range;
+use std::sync::LazyLock;
+
+use memchr::memmem::Finder;
 
 use naga::back::glsl::{Options, PipelineOptions, Version, WriterFlags};
 use naga::proc::{BoundsCheckPolicies, BoundsCheckPolicy};
@@ -127,22 +131,42 @@ pub fn write_entry(lowered: &Lowered, ep: &EntryInterface, profile: Profile) -> 
 pub struct EntryModule<'a> {
     module: &'a naga::Module,
     info: &'a naga::valid::ModuleInfo,
-    to_original: GlobalMap,
+    /// For each global of `module` (by handle index), the index of the GPU
+    /// module's global of the same name, where exactly one matches.
+    to_original: Vec<Option<usize>>,
 }
 
 impl<'a> EntryModule<'a> {
     pub fn new(lowered: &'a Lowered, ep: &EntryInterface) -> Result<EntryModule<'a>, Diagnostic> {
         let gl = lowered.gl.get(ep.index).ok_or_else(|| Diagnostic::bug(format!("entry point `{}` has no GL module", ep.name), None))?;
-        let to_original = global_map(&gl.module, &lowered.gpu, &ep.name);
+        let to_original = global_map(&gl.module, &lowered.gpu);
         Ok(EntryModule { module: &gl.module, info: &gl.info, to_original })
+    }
+
+    /// The GPU module's global index for a global of the GL module.
+    fn original(&self, h: naga::Handle<naga::GlobalVariable>, ep: &EntryInterface) -> Result<usize, Diagnostic> {
+        self.to_original.get(h.index()).copied().flatten().ok_or_else(|| {
+            Diagnostic::bug(format!("a global of entry point `{}` has no unique name to match it with the GPU module", ep.name), None)
+        })
     }
 }
 
+// Finders for the fixed needles, built once (building one costs about as
+// much as searching a whole GLSL file).
+static BLOCK: LazyLock<Finder<'static>> = LazyLock::new(|| Finder::new("_block"));
+static LOCATION: LazyLock<Finder<'static>> = LazyLock::new(|| Finder::new("_location"));
+static SAMPLER: LazyLock<Finder<'static>> = LazyLock::new(|| Finder::new("sampler"));
+static PRECISION_INT: LazyLock<Finder<'static>> = LazyLock::new(|| Finder::new(PRECISION_INT_LINE));
+const PRECISION_INT_LINE: &str = "precision highp int;\n";
+
 /// [`write_entry`] from an [`EntryModule`] made for `ep`.
+///
+/// The fix-ups edit naga's text in place, and find the names they check
+/// with one search per kind of name (every block name contains `_block`,
+/// every attribute or varying name `_location`), not one per name.
 pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface, profile: Profile) -> Result<(String, EntryNames), Diagnostic> {
-    let what = format!("the {} writer for entry point `{}`", profile.label(), ep.name);
-    let (module, module_info, to_original) = (em.module, em.info, &em.to_original);
-    let (raw, info) = guard(&what, || {
+    let (module, module_info) = (em.module, em.info);
+    let (mut out, info) = guard(format_args!("the {} writer for entry point `{}`", profile.label(), ep.name), || {
         let options = Options {
             version: profile.version(),
             writer_flags: WriterFlags::empty(),
@@ -162,38 +186,47 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
     let mut names = EntryNames::default();
 
     // Uniform blocks, in handle order so the result is deterministic.
+    // naga names each `<type>_block_<N><Stage>` (declared once, never used
+    // elsewhere); the new name `<instance>_block` must be free.
     let mut uniforms: Vec<_> = info.uniforms.iter().collect();
     uniforms.sort_by_key(|(h, _)| h.index());
-    let mut new_names = BTreeSet::new();
-    let mut renames: Vec<(&str, String)> = Vec::new();
-    for (handle, naga_block) in uniforms {
-        let instance = block_instance(&raw, naga_block).ok_or_else(|| bug(format!("cannot find uniform block `{naga_block}`")))?;
-        let new = format!("{}_block", instance.trim_end_matches('_'));
-        if text::contains_ident(&raw, &new) {
-            return Err(bug(format!("renaming uniform block `{naga_block}` to `{new}` would collide with an identifier of the same name")));
+    let mut renames: Vec<(Range<usize>, String)> = Vec::new();
+    if !uniforms.is_empty() {
+        let idents = text::idents_containing(&out, &BLOCK);
+        for (handle, naga_block) in uniforms {
+            let mut at = idents.iter().filter(|(_, id)| *id == naga_block.as_str()).map(|&(i, _)| i..i + naga_block.len());
+            let instance = at
+                .clone()
+                .next()
+                .and_then(|first| block_instance(&out[first.end..]))
+                .ok_or_else(|| bug(format!("cannot find uniform block `{naga_block}`")))?;
+            let new = [instance.trim_end_matches('_'), "_block"].concat();
+            if idents.iter().any(|(_, id)| *id == new) {
+                return Err(bug(format!("renaming uniform block `{naga_block}` to `{new}` would collide with an identifier of the same name")));
+            }
+            if renames.iter().any(|(_, n)| *n == new) {
+                return Err(bug(format!("two uniform blocks would both be named `{new}`")));
+            }
+            renames.extend(at.by_ref().map(|r| (r, new.clone())));
+            names.blocks.insert(em.original(*handle, ep)?, new);
         }
-        if !new_names.insert(new.clone()) {
-            return Err(bug(format!("two uniform blocks would both be named `{new}`")));
-        }
-        renames.push((naga_block.as_str(), new.clone()));
-        names.blocks.insert(to_original(*handle)?, new);
     }
-    let mut out = text::replace_idents(&raw, &renames);
+    text::apply_edits(&mut out, renames);
 
     for (name, mapping) in &info.texture_mapping {
         if !text::contains_ident(&out, name) {
             return Err(bug(format!("sampler `{name}` reported by naga is not in the text")));
         }
-        let original = to_original(mapping.texture)?;
+        let original = em.original(mapping.texture, ep)?;
         // naga's namer appends `_` to names ending in a digit (`layers_0`,
         // an element of a sampler array, becomes `layers_0_`); give the
         // sampler back its own name where nothing else uses it.
-        let source = lowered.gpu.global_variables.iter().nth(original).and_then(|(_, g)| g.name.clone());
+        let source = lowered.gpu.global_variables.iter().nth(original).and_then(|(_, g)| g.name.as_deref());
         let mut final_name = name.clone();
         if let Some(src) = source {
-            if *name == format!("{src}_") && src.ends_with(|c: char| c.is_ascii_digit()) && !text::contains_ident(&out, &src) {
-                out = text::replace_ident(&out, name, &src);
-                final_name = src;
+            if name.strip_suffix('_') == Some(src) && src.ends_with(|c: char| c.is_ascii_digit()) && !text::contains_ident(&out, src) {
+                text::replace_idents(&mut out, &[(name, src)]);
+                final_name = src.to_string();
             }
         }
         names.samplers.insert(original, final_name);
@@ -207,10 +240,11 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
         naga::ShaderStage::Vertex => ("_p2vs_location", "_vs2fs_location"),
         _ => ("_vs2fs_location", "_fs2p_location"),
     };
+    let declared = if ep.inputs.is_empty() && ep.outputs.is_empty() { Vec::new() } else { text::idents_containing(&out, &LOCATION) };
     for (vars, prefix, map) in [(&ep.inputs, in_prefix, &mut names.inputs), (&ep.outputs, out_prefix, &mut names.outputs)] {
         for var in vars {
             let name = format!("{prefix}{}", var.location);
-            if !text::contains_ident(&out, &name) {
+            if !declared.iter().any(|(_, id)| *id == name) {
                 return Err(bug(format!("`{}` (location {}) is not declared as `{name}`", var.name, var.location)));
             }
             if let Some(loc) = info.varying.get(&name) {
@@ -221,39 +255,33 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
             map.insert(var.location, name);
         }
     }
+    drop(declared);
 
     if profile == Profile::Es300 {
-        out = add_es_precision(&out).ok_or_else(|| bug("no `precision highp int;` line to extend".into()))?;
+        add_es_precision(&mut out).ok_or_else(|| bug("no `precision highp int;` line to extend".into()))?;
     }
     Ok((out, names))
 }
 
-type GlobalMap = Box<dyn Fn(naga::Handle<naga::GlobalVariable>) -> Result<usize, Diagnostic>>;
-
 /// Maps the globals of an entry point's GL module to the GPU module's
 /// global indices (by name: the lowering makes global names unique, and the
 /// modules' handles differ).
-fn global_map(gl: &naga::Module, gpu: &naga::Module, entry: &str) -> GlobalMap {
-    let mut map = BTreeMap::new();
-    for (h, g) in gl.global_variables.iter() {
-        let original = gpu.global_variables.iter().filter(|(_, o)| o.name.is_some() && o.name == g.name && o.space == g.space).map(|(oh, _)| oh.index());
-        let found: Vec<usize> = original.collect();
-        if let [one] = found[..] {
-            map.insert(h.index(), one);
-        }
-    }
-    let ep_name = entry.to_string();
-    Box::new(move |h| {
-        map.get(&h.index()).copied().ok_or_else(|| {
-            Diagnostic::bug(format!("a global of entry point `{ep_name}` has no unique name to match it with the GPU module"), None)
+fn global_map(gl: &naga::Module, gpu: &naga::Module) -> Vec<Option<usize>> {
+    gl.global_variables
+        .iter()
+        .map(|(_, g)| {
+            let mut same = gpu.global_variables.iter().filter(|(_, o)| o.name.is_some() && o.name == g.name && o.space == g.space);
+            match (same.next(), same.next()) {
+                (Some((h, _)), None) => Some(h.index()),
+                _ => None,
+            }
         })
-    })
+        .collect()
 }
 
-/// The instance name declared inside `uniform BLOCK { T name; };`.
-fn block_instance<'a>(src: &'a str, block: &str) -> Option<&'a str> {
-    let start = text::find_ident(src, block).next()?;
-    let rest = &src[start + block.len()..];
+/// The instance name declared inside `uniform BLOCK { T name; };`, from
+/// the text that follows `BLOCK`.
+fn block_instance(rest: &str) -> Option<&str> {
     let open = rest.find('{')?;
     let body = &rest[open + 1..];
     let decl = &body[..body.find(';')?];
@@ -264,22 +292,19 @@ fn block_instance<'a>(src: &'a str, block: &str) -> Option<&'a str> {
 
 /// Adds `precision highp T;` for every no-default-precision type the text
 /// uses, right after naga's `precision highp int;`.
-fn add_es_precision(src: &str) -> Option<String> {
-    const ANCHOR: &str = "precision highp int;\n";
-    let at = src.find(ANCHOR)? + ANCHOR.len();
+fn add_es_precision(src: &mut String) -> Option<()> {
+    let at = PRECISION_INT.find(src.as_bytes())? + PRECISION_INT_LINE.len();
     // Every such type name contains `sampler`: look only at those words.
-    let used: Vec<&str> = memchr::memmem::find_iter(src.as_bytes(), "sampler").map(|i| text::ident_at(src, i)).collect();
+    let used = text::idents_containing(src, &SAMPLER);
     let mut lines = String::new();
     for ty in ES_NO_DEFAULT_PRECISION {
-        if used.contains(ty) {
+        if used.iter().any(|(_, id)| id == ty) {
             let _ = writeln!(lines, "precision highp {ty};");
         }
     }
-    let mut out = String::with_capacity(src.len() + lines.len());
-    out.push_str(&src[..at]);
-    out.push_str(&lines);
-    out.push_str(&src[at..]);
-    Some(out)
+    drop(used);
+    src.insert_str(at, &lines);
+    Some(())
 }
 
 #[cfg(test)]
@@ -288,16 +313,16 @@ mod tests {
 
     #[test]
     fn finds_block_instances() {
-        let s = "layout(std140) uniform mat4x4_block_0Vertex { highp mat4 u_model; };\nuniform X_block_1Vertex { vec4 arr[4]; };";
-        assert_eq!(block_instance(s, "mat4x4_block_0Vertex"), Some("u_model"));
-        assert_eq!(block_instance(s, "X_block_1Vertex"), Some("arr"));
-        assert_eq!(block_instance(s, "nope"), None);
+        assert_eq!(block_instance(" { highp mat4 u_model; };\nuniform X_block_1Vertex { vec4 arr[4]; };"), Some("u_model"));
+        assert_eq!(block_instance(" { vec4 arr[4]; };"), Some("arr"));
+        assert_eq!(block_instance(" {"), None);
     }
 
     #[test]
     fn es_precision_goes_after_int() {
         let s = "#version 300 es\n\nprecision highp float;\nprecision highp int;\n\nuniform highp sampler2DShadow s;\nuniform highp isampler2D t;\n";
-        let out = add_es_precision(s).unwrap();
+        let mut out = s.to_string();
+        add_es_precision(&mut out).unwrap();
         assert!(out.contains("precision highp int;\nprecision highp sampler2DShadow;\nprecision highp isampler2D;\n\nuniform"));
     }
 }

@@ -41,11 +41,12 @@ pub fn emit(lowered: &Lowered, stem: &str, source_name: &str, targets: &[Target]
     let glsl_wanted = targets.iter().any(|t| matches!(t, Target::Glsl330 | Target::Gles300));
     let layouts = reflect::uniform_layouts(lowered, glsl_wanted)?;
 
-    let mut artifacts = Vec::new();
+    // Two GLSL files per entry point, WGSL, SPIR-V and the manifest.
+    let mut artifacts = Vec::with_capacity(2 * lowered.interface.entry_points.len() + 3);
 
     // GLSL: the names a GL host needs come from the GLSL writer itself, so
     // it runs (for GLSL 330) even when no GLSL target is requested.
-    let mut glsl_names: Vec<glsl::EntryNames> = Vec::new();
+    let mut glsl_names: Vec<glsl::EntryNames> = Vec::with_capacity(lowered.interface.entry_points.len());
     for ep in &lowered.interface.entry_points {
         let entry_module = glsl::EntryModule::new(lowered, ep)?;
         let (text, names) = glsl::write_entry_from(lowered, &entry_module, ep, glsl::Profile::Desktop330)?;
@@ -124,7 +125,8 @@ fn check_consistency(lowered: &Lowered) -> Result<(), Diagnostic> {
 /// Runs a naga backend, turning a panic inside it into a bug diagnostic.
 /// naga documents that its writers may panic on IR they do not support;
 /// that must never take the compiler (or a build script) down.
-pub(crate) fn guard<T>(what: &str, f: impl FnOnce() -> Result<T, String>) -> Result<T, Diagnostic> {
+/// `what` is only formatted on failure (callers pass `format_args!`).
+pub(crate) fn guard<T>(what: impl std::fmt::Display, f: impl FnOnce() -> Result<T, String>) -> Result<T, Diagnostic> {
     match catch_unwind(AssertUnwindSafe(f)) {
         Ok(Ok(v)) => Ok(v),
         Ok(Err(e)) => Err(Diagnostic::bug(format!("{what} failed: {e}"), None)),
@@ -141,11 +143,16 @@ pub(crate) fn guard<T>(what: &str, f: impl FnOnce() -> Result<T, String>) -> Res
 
 /// Identifier-level text helpers for post-processing generated code.
 ///
-/// Each looks for one name with a substring search and checks the
-/// characters around a hit, instead of tokenising the whole text: the names
-/// fixed up are few, and a full identifier scan (with a hash per token) of
-/// every GLSL file used to cost more than naga's writer itself.
+/// Each looks for one name (or a part that several names share) with a
+/// substring search and checks the characters around a hit, instead of
+/// tokenising the whole text: the names fixed up are few, and a full
+/// identifier scan (with a hash per token) of every GLSL file used to cost
+/// more than naga's writer itself. Edits are made in place.
 pub(crate) mod text {
+    use std::ops::Range;
+
+    use memchr::memmem::Finder;
+
     fn is_ident_char(c: u8) -> bool {
         c.is_ascii_alphanumeric() || c == b'_'
     }
@@ -164,8 +171,8 @@ pub(crate) mod text {
         find_ident(s, name).next().is_some()
     }
 
-    /// The whole identifier around byte `at` of `s`.
-    pub fn ident_at(s: &str, at: usize) -> &str {
+    /// The byte range of the whole identifier around byte `at` of `s`.
+    fn ident_span(s: &str, at: usize) -> std::ops::Range<usize> {
         let b = s.as_bytes();
         let mut start = at;
         while start > 0 && is_ident_char(b[start - 1]) {
@@ -175,55 +182,73 @@ pub(crate) mod text {
         while end < b.len() && is_ident_char(b[end]) {
             end += 1;
         }
-        &s[start..end]
+        start..end
     }
 
-    /// Replaces every whole identifier `from` with `to`, for each pair, in
-    /// one pass over the text.
-    pub fn replace_idents(s: &str, renames: &[(&str, String)]) -> String {
-        let mut hits: Vec<(usize, usize, &str)> = Vec::new();
-        for (from, to) in renames {
-            hits.extend(find_ident(s, from).map(|at| (at, at + from.len(), to.as_str())));
-        }
-        if hits.is_empty() {
-            return s.to_string();
-        }
-        hits.sort_unstable_by_key(|h| h.0);
-        let mut out = String::with_capacity(s.len() + 16 * hits.len());
-        let mut last = 0;
-        for (a, b, to) in hits {
-            // Two names cannot overlap as whole identifiers; skip defensively.
-            if a < last {
+    /// Every whole identifier of `s` that contains the needle of `part`,
+    /// with its start offset, in text order (each occurrence once). One
+    /// search serves all the names that share a part.
+    pub fn idents_containing<'a>(s: &'a str, part: &Finder) -> Vec<(usize, &'a str)> {
+        let mut out: Vec<(usize, &str)> = Vec::new();
+        for i in part.find_iter(s.as_bytes()) {
+            let span = ident_span(s, i);
+            // A part found twice in one identifier.
+            if out.last().is_some_and(|&(start, _)| start == span.start) {
                 continue;
             }
-            out.push_str(&s[last..a]);
-            out.push_str(to);
-            last = b;
+            out.push((span.start, &s[span]));
         }
-        out.push_str(&s[last..]);
         out
     }
 
-    /// Replaces whole identifiers equal to `from` with `to`.
-    pub fn replace_ident(s: &str, from: &str, to: &str) -> String {
-        replace_idents(s, &[(from, to.to_string())])
+    /// Replaces each range of `s` with its text, in place. Ranges must not
+    /// overlap (an overlapping one is skipped). Each edit moves the text
+    /// after it, which is cheaper than a copy for the few edits made here
+    /// (one per uniform block, one per use of a renamed sampler).
+    pub fn apply_edits<T: AsRef<str>>(s: &mut String, mut edits: Vec<(Range<usize>, T)>) {
+        edits.sort_unstable_by_key(|(r, _)| r.start);
+        // Back to front, so that the ranges still to do keep their offsets.
+        let mut limit = s.len();
+        for (r, to) in edits.iter().rev() {
+            if r.end > limit {
+                continue;
+            }
+            s.replace_range(r.clone(), to.as_ref());
+            limit = r.start;
+        }
+    }
+
+    /// Replaces every whole identifier `from` with `to`, for each pair.
+    pub fn replace_idents(s: &mut String, renames: &[(&str, &str)]) {
+        let mut edits = Vec::new();
+        for &(from, to) in renames {
+            edits.extend(find_ident(s, from).map(|at| (at..at + from.len(), to)));
+        }
+        apply_edits(s, edits);
     }
 }
 
 #[cfg(test)]
 mod tests {
+    use memchr::memmem::Finder;
+
     use super::text::*;
 
     #[test]
     fn whole_identifier_replacement() {
         let s = "uniform a_block_0Vertex { mat4 a; }; x = a_block_0Vertex1 + a_block_0Vertex; 1.0e_block_0Vertex";
-        let r = replace_ident(s, "a_block_0Vertex", "a_block");
+        let mut r = s.to_string();
+        replace_idents(&mut r, &[("a_block_0Vertex", "a_block")]);
         assert_eq!(r, "uniform a_block { mat4 a; }; x = a_block_0Vertex1 + a_block; 1.0e_block_0Vertex");
         assert!(contains_ident(s, "a"));
         assert!(!contains_ident(s, "mat"));
         assert!(!contains_ident("x1.0e_block", "e_block"), "inside a number is not an identifier");
-        let two = replace_idents("A_b0 + B_b1 * A_b0", &[("A_b0", "a".into()), ("B_b1", "b".into())]);
+        let mut two = "A_b0 + B_b1 * A_b0".to_string();
+        replace_idents(&mut two, &[("A_b0", "a"), ("B_b1", "b")]);
         assert_eq!(two, "a + b * a");
-        assert_eq!(ident_at("uniform highp sampler2DShadow s;", 16), "sampler2DShadow");
+        let s = "x_block + a_block_0V; a_blocky_block";
+        let found = idents_containing(s, &Finder::new("_block"));
+        assert_eq!(found, [(0, "x_block"), (10, "a_block_0V"), (22, "a_blocky_block")]);
+        assert_eq!(idents_containing("uniform highp sampler2DShadow s;", &Finder::new("sampler")), [(14, "sampler2DShadow")]);
     }
 }

@@ -271,9 +271,11 @@ pub fn build(
         }
     }
 
-    let mut entry_points = Vec::new();
+    // The per-module file names, made once for every entry point.
+    let module_files = ModuleFiles { wgsl: format!("{stem}.wgsl"), spirv: format!("{stem}.spv") };
+    let mut entry_points = Vec::with_capacity(iface.entry_points.len());
     for (ep, names) in iface.entry_points.iter().zip(glsl_names) {
-        entry_points.push(entry_point(module, ep, names, stem, targets, iface)?);
+        entry_points.push(entry_point(module, ep, names, &module_files, targets, iface)?);
     }
 
     Ok(Reflection {
@@ -286,11 +288,17 @@ pub fn build(
     })
 }
 
+/// `STEM.wgsl` and `STEM.spv`.
+struct ModuleFiles {
+    wgsl: String,
+    spirv: String,
+}
+
 fn entry_point(
     module: &Module,
     ep: &EntryInterface,
     names: &EntryNames,
-    stem: &str,
+    module_files: &ModuleFiles,
     targets: &[Target],
     iface: &crate::lower::Interface,
 ) -> Result<EntryPoint, Diagnostic> {
@@ -299,8 +307,8 @@ fn entry_point(
         let f = match t {
             Target::Glsl330 => glsl::file_name(&ep.name, ep.stage, glsl::Profile::Desktop330),
             Target::Gles300 => glsl::file_name(&ep.name, ep.stage, glsl::Profile::Es300),
-            Target::Wgsl => format!("{stem}.wgsl"),
-            Target::Spirv => format!("{stem}.spv"),
+            Target::Wgsl => module_files.wgsl.clone(),
+            Target::Spirv => module_files.spirv.clone(),
         };
         files.insert(t.name().to_string(), f);
     }

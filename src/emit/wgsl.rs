@@ -15,14 +15,18 @@ use crate::diag::Diagnostic;
 use crate::lower::Lowered;
 
 pub fn write(lowered: &Lowered) -> Result<String, Diagnostic> {
-    let body = guard("the WGSL writer", || {
-        naga::back::wgsl::write_string(&lowered.gpu, &lowered.gpu_info, naga::back::wgsl::WriterFlags::empty()).map_err(|e| e.to_string())
-    })?;
-    let directives = diagnostic_directives(&lowered.gpu);
-    if directives.is_empty() {
-        return Ok(body);
+    // naga's writer appends the module to the directives (as
+    // `naga::back::wgsl::write_string` does to an empty string): no copy of
+    // the whole text to put them in front.
+    let mut out = diagnostic_directives(&lowered.gpu);
+    if !out.is_empty() {
+        out.push('\n');
     }
-    Ok(format!("{directives}\n{body}"))
+    guard("the WGSL writer", || {
+        let mut writer = naga::back::wgsl::Writer::new(out, naga::back::wgsl::WriterFlags::empty());
+        writer.write(&lowered.gpu, &lowered.gpu_info).map_err(|e| e.to_string())?;
+        Ok(writer.finish())
+    })
 }
 
 /// `diagnostic(SEVERITY, RULE);` for each module-level filter, outermost
