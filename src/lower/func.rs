@@ -68,9 +68,28 @@ fn span(s: crate::source::Span) -> naga::Span {
     s.into()
 }
 
+/// An empty block with room for what `n` checked statements usually
+/// become (an emit range and the statement each), so pushing rarely grows
+/// its two vectors.
+pub fn block_for(n: usize) -> Block {
+    match n {
+        0 => Block::new(),
+        _ => Block::with_capacity(2 * n + 1),
+    }
+}
+
+/// A block of one `break`.
+fn break_block(s: crate::source::Span) -> Block {
+    let mut b = Block::with_capacity(1);
+    b.push(Statement::Break, span(s));
+    b
+}
+
 impl<'m, 'p> FnBuilder<'m, 'p> {
     pub fn new(m: &'m mut ModuleBuilder<'p>, name: &str, sema_locals: &'p [sema::Local], kind: FnKind) -> Self {
-        let func = naga::Function { name: Some(name.to_string()), ..Default::default() };
+        let mut func = naga::Function { name: Some(name.to_string()), ..Default::default() };
+        // A `let` names its expression: room for all of them up front.
+        func.named_expressions.reserve(sema_locals.iter().filter(|l| !l.mutable).count());
         let mut b = FnBuilder { m, func, emitter: Default::default(), locals: vec![LocalSlot::Unset; sema_locals.len()], sema_locals, kind, pending: Vec::new(), vertex_lod: false };
         b.emitter.start(&b.func.expressions);
         b
@@ -170,7 +189,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
     }
 
     pub fn block(&mut self, stmts: &[Stmt]) -> Block {
-        let mut b = Block::new();
+        let mut b = block_for(stmts.len());
         for s in stmts {
             self.stmt(s, &mut b);
         }
@@ -239,8 +258,8 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
                     self.push(block, Statement::Store { pointer: ptr, value }, *sp);
                 } else if let Some(e) = init {
                     let h = self.expr(e, block);
-                    if !self.func.named_expressions.contains_key(&h) && self.is_emitted(h) {
-                        self.func.named_expressions.insert(h, l.name.clone());
+                    if self.is_emitted(h) {
+                        self.func.named_expressions.entry(h).or_insert_with(|| l.name.clone());
                     }
                     self.locals[*local] = LocalSlot::Value(h);
                 }
@@ -271,13 +290,12 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
             }
             Stmt::While { cond, body, span: sp } => {
                 self.flush(block);
-                let mut lb = Block::new();
+                // The exit test, then the body.
+                let mut lb = block_for(body.len() + 1);
                 let c = self.expr(cond, &mut lb);
                 let not_c = self.append(E::Unary { op: naga::UnaryOperator::LogicalNot, expr: c }, cond.span);
                 self.flush(&mut lb);
-                let mut brk = Block::new();
-                brk.push(Statement::Break, span(*sp));
-                lb.push(Statement::If { condition: not_c, accept: brk, reject: Block::new() }, span(cond.span));
+                lb.push(Statement::If { condition: not_c, accept: break_block(*sp), reject: Block::new() }, span(cond.span));
                 for st in body {
                     self.stmt(st, &mut lb);
                 }
@@ -295,19 +313,18 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
                 // The bound is evaluated once, before the loop.
                 let e0 = self.expr(end, block);
                 self.flush(block);
-                let mut lb = Block::new();
+                let mut lb = block_for(body.len() + 1);
                 let cur = self.append(E::Load { pointer: ptr }, *sp);
                 let more = self.append(E::Binary { op: naga::BinaryOperator::Less, left: cur, right: e0 }, end.span);
                 let done = self.append(E::Unary { op: naga::UnaryOperator::LogicalNot, expr: more }, end.span);
                 self.flush(&mut lb);
-                let mut brk = Block::new();
-                brk.push(Statement::Break, span(*sp));
-                lb.push(Statement::If { condition: done, accept: brk, reject: Block::new() }, span(end.span));
+                lb.push(Statement::If { condition: done, accept: break_block(*sp), reject: Block::new() }, span(end.span));
                 for st in body {
                     self.stmt(st, &mut lb);
                 }
                 self.flush(&mut lb);
-                let mut cont = Block::new();
+                // The increment: an emit range and the store.
+                let mut cont = Block::with_capacity(2);
                 let cur2 = self.append(E::Load { pointer: ptr }, *sp);
                 let one = match l.ty {
                     Ty::Scalar(Scalar::Uint) => naga::Literal::U32(1),
@@ -731,7 +748,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
         self.flush(block);
         let mut cases = Vec::new();
         for k in 0..count {
-            let mut body = Block::new();
+            let mut body = Block::with_capacity(2);
             let (image, sampler) = self.m.sampler_elems[first + k as usize];
             let v = self.texture_apply(&op, kind, image, sampler, ret, s);
             let ptr = self.append_plain(E::LocalVariable(var), s);

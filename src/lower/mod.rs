@@ -216,7 +216,9 @@ pub enum Flavor {
 /// Lowers a checked program into the validated modules.
 pub fn lower(program: &crate::sema::Program, conventions: Conventions) -> Result<Lowered, crate::diag::Diagnostic> {
     let (gpu, gpu_info, interface) = lower_gpu(program, conventions)?;
-    let gl = (0..program.entry_points.len()).map(|i| lower_gl_entry(program, i)).collect::<Result<_, _>>()?;
+    // One validator for all the GL modules: its tables are reused.
+    let mut validator = module::validator(Flavor::Gl);
+    let gl = (0..program.entry_points.len()).map(|i| gl_entry(program, i, &mut validator)).collect::<Result<_, _>>()?;
     Ok(Lowered { gl, gpu, gpu_info, interface })
 }
 
@@ -225,22 +227,28 @@ pub fn lower_gpu(program: &crate::sema::Program, conventions: Conventions) -> Re
     let (gpu, mut interface) = build(program, Flavor::Gpu(conventions), None)?;
     #[cfg(debug_assertions)]
     let gpu = fault::inject(gpu);
-    let gpu_info = module::validate(&gpu, Flavor::Gpu(conventions))?;
+    let flavor = Flavor::Gpu(conventions);
+    let gpu_info = module::validate(&mut module::validator(flavor), &gpu, flavor)?;
     interface.conventions = conventions;
     Ok((gpu, gpu_info, interface))
 }
 
 /// The validated GL module of entry point `index` alone.
 pub fn lower_gl_entry(program: &crate::sema::Program, index: usize) -> Result<GlEntry, Diagnostic> {
+    gl_entry(program, index, &mut module::validator(Flavor::Gl))
+}
+
+/// [`lower_gl_entry`] with a validator from `module::validator(Flavor::Gl)`.
+fn gl_entry(program: &crate::sema::Program, index: usize, validator: &mut naga::valid::Validator) -> Result<GlEntry, Diagnostic> {
     let (module, _) = build(program, Flavor::Gl, Some(index))?;
-    let info = module::validate(&module, Flavor::Gl)?;
+    let info = module::validate(validator, &module, Flavor::Gl)?;
     Ok(GlEntry { module, info })
 }
 
 /// Validates a module the way [`lower`] validates its own output: a failure
 /// is an internal compiler error at the span naga reports.
 pub fn validate(module: &naga::Module, flavor: Flavor) -> Result<naga::valid::ModuleInfo, Diagnostic> {
-    module::validate(module, flavor)
+    module::validate(&mut module::validator(flavor), module, flavor)
 }
 
 /// Builds the whole program, or (`only`) one entry point and what it
@@ -273,7 +281,7 @@ fn build(p: &sema::Program, flavor: Flavor, only: Option<usize>) -> Result<(naga
         let vertex_only = f.implicit_lod && from_vertex[fid] && !from_fragment[fid];
         let h = (!(two_copies && vertex_entry == Some(true))).then(|| lower_helper(&mut m, f, &f.name, vertex_only));
         m.functions.push(h);
-        let copy = (two_copies && vertex_entry != Some(false)).then(|| lower_helper(&mut m, f, &format!("{}_vertex", f.name), true));
+        let copy = (two_copies && vertex_entry != Some(false)).then(|| lower_helper(&mut m, f, &[&f.name, "_vertex"].concat(), true));
         m.vertex_functions.push(copy);
     }
     let mut entries = Vec::new();
@@ -282,7 +290,7 @@ fn build(p: &sema::Program, flavor: Flavor, only: Option<usize>) -> Result<(naga
             entries.push(lower_entry(&mut m, ep, index)?);
         }
     }
-    let interface = Interface { conventions: Conventions::default(), resources: m.resources.clone(), entry_points: entries };
+    let interface = Interface { conventions: Conventions::default(), resources: std::mem::take(&mut m.resources), entry_points: entries };
     Ok((m.module, interface))
 }
 
@@ -345,6 +353,9 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
     let p = m.p;
     let stage = ep.stage;
     let mut iface = EntryInterface { name: ep.name.clone(), stage, index, inputs: Vec::new(), outputs: Vec::new(), builtins: Vec::new(), resources: Vec::new() };
+    // Only the GPU module's interface is kept (`lower_gl_entry` drops its
+    // own): a GL module leaves the lists empty.
+    let describe = m.flavor != Flavor::Gl;
     // Arguments: inputs this entry point reaches, by location then builtins.
     let mut args: Vec<(sema::GlobalId, naga::Binding, naga::Handle<naga::Type>, bool)> = Vec::new();
     let mut outs: Vec<(Option<naga::Handle<naga::GlobalVariable>>, Option<BuiltinVar>, naga::Handle<naga::Type>, naga::Binding, String)> = Vec::new();
@@ -357,25 +368,28 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
         });
         outs.push((global, Some(BuiltinVar::Position), ty, naga::Binding::BuiltIn(naga::BuiltIn::Position { invariant: false }), "gl_Position".into()));
     }
-    let mut seen_out: std::collections::HashMap<u32, Span> = std::collections::HashMap::new();
+    let mut seen_out: rustc_hash::FxHashMap<u32, Span> = Default::default();
     let mut point_coord_default: Vec<(sema::GlobalId, Span)> = Vec::new();
     for (&gid, &use_span) in &ep.func.uses {
         let g = &p.globals[gid];
-        if let Some(rs) = m.resource_of.get(&gid) {
-            iface.resources.extend(rs.iter().copied());
+        if matches!(g.kind, GlobalKind::Uniform | GlobalKind::Sampler { .. }) {
+            iface.resources.extend(m.resource_of[gid].clone());
             continue;
         }
         let GlobalSlot::Var(h) = m.globals[gid] else { continue };
-        if let GlobalKind::Builtin(b) = g.kind {
-            iface.builtins.push(b.name().to_string());
+        match g.kind {
+            GlobalKind::Builtin(b) if describe => iface.builtins.push(b.name().to_string()),
+            _ => {}
         }
         let ty = m.ty(&g.ty);
         if func::is_stage_input(&g.kind, stage) {
             let (binding, arg_ty, to_int) = match g.kind {
                 GlobalKind::Io { location: l, .. } => {
                     let interp = if stage == Fragment { interpolation(&g.ty) } else { (None, None) };
-                    let dsl_type = m.show_ty(&g.ty);
-                    iface.inputs.push(IoVar { name: g.name.clone(), location: l, ty, dsl_type, interpolation: interp.0 });
+                    if describe {
+                        let dsl_type = m.show_ty(&g.ty);
+                        iface.inputs.push(IoVar { name: g.name.clone(), location: l, ty, dsl_type, interpolation: interp.0 });
+                    }
                     (location(l, interp), ty, false)
                 }
                 GlobalKind::Builtin(b) => {
@@ -409,8 +423,10 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
                             .with_note("`@out` and `@inout` variables written by one vertex entry point share the output locations"));
                     }
                     let interp = if stage == Vertex { interpolation(&g.ty) } else { (None, None) };
-                    let dsl_type = m.show_ty(&g.ty);
-                    iface.outputs.push(IoVar { name: g.name.clone(), location: l, ty, dsl_type, interpolation: interp.0 });
+                    if describe {
+                        let dsl_type = m.show_ty(&g.ty);
+                        iface.outputs.push(IoVar { name: g.name.clone(), location: l, ty, dsl_type, interpolation: interp.0 });
+                    }
                     outs.push((Some(h), None, ty, location(l, interp), g.name.clone()));
                 }
                 GlobalKind::Builtin(b) => {
@@ -431,19 +447,25 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
     }
     iface.inputs.sort_by_key(|v| v.location);
     iface.outputs.sort_by_key(|v| v.location);
-    let result_ty = (!outs.is_empty()).then(|| m.struct_type(&format!("{}_out", ep.name), outs.iter().map(|o| (o.4.clone(), o.2, Some(o.3.clone()))).collect()));
     let members = outs.iter().map(|o| (o.0, o.1, o.2)).collect();
+    let result_ty = (!outs.is_empty()).then(|| m.struct_type(&[&ep.name, "_out"].concat(), outs.into_iter().map(|o| (o.4, o.2, Some(o.3))).collect()));
     let kind = FnKind::Entry(func::EntryOutputs { result_ty, members, stage });
     let mut b = FnBuilder::new(m, &ep.name, &ep.func.locals, kind);
     b.vertex_lod = stage == Vertex;
-    let mut body = naga::Block::new();
+    // The prologue's stores, then the statements.
+    let mut body = func::block_for(args.len() + ep.func.body.len() + 1);
     for (gid, s) in point_coord_default {
         let GlobalSlot::Var(h) = b.m.globals[gid] else { continue };
         b.store_point_coord_default(&mut body, h, s);
     }
     for (i, (gid, binding, ty, to_int)) in args.iter().enumerate() {
         let g = &p.globals[*gid];
-        b.func.arguments.push(naga::FunctionArgument { name: Some(format!("in_{}", g.name.trim_start_matches("gl_"))), ty: *ty, binding: Some(binding.clone()) });
+        // `in_` and the name without its `gl_` prefixes.
+        let mut bare = g.name.as_str();
+        while let Some(rest) = bare.strip_prefix("gl_") {
+            bare = rest;
+        }
+        b.func.arguments.push(naga::FunctionArgument { name: Some(["in_", bare].concat()), ty: *ty, binding: Some(binding.clone()) });
         let GlobalSlot::Var(h) = b.m.globals[*gid] else { continue };
         b.store_argument(&mut body, h, i as u32, *to_int, g.span);
     }
