@@ -215,16 +215,22 @@ pub enum Flavor {
 
 /// Lowers a checked program into the validated modules.
 pub fn lower(program: &crate::sema::Program, conventions: Conventions) -> Result<Lowered, crate::diag::Diagnostic> {
-    let (gpu, gpu_info, interface) = lower_gpu(program, conventions)?;
+    // Call-graph reach, once for all the modules.
+    let reach = Reach::of(program);
+    let (gpu, gpu_info, interface) = gpu(program, conventions, &reach)?;
     // One validator for all the GL modules: its tables are reused.
     let mut validator = module::validator(Flavor::Gl);
-    let gl = (0..program.entry_points.len()).map(|i| gl_entry(program, i, &mut validator)).collect::<Result<_, _>>()?;
+    let gl = (0..program.entry_points.len()).map(|i| gl_entry(program, i, &reach, &mut validator)).collect::<Result<_, _>>()?;
     Ok(Lowered { gl, gpu, gpu_info, interface })
 }
 
 /// The validated GPU module of the whole program, and its interface.
 pub fn lower_gpu(program: &crate::sema::Program, conventions: Conventions) -> Result<(naga::Module, naga::valid::ModuleInfo, Interface), Diagnostic> {
-    let (gpu, mut interface) = build(program, Flavor::Gpu(conventions), None)?;
+    gpu(program, conventions, &Reach::of(program))
+}
+
+fn gpu(program: &crate::sema::Program, conventions: Conventions, reach: &Reach) -> Result<(naga::Module, naga::valid::ModuleInfo, Interface), Diagnostic> {
+    let (gpu, mut interface) = build(program, Flavor::Gpu(conventions), None, reach)?;
     #[cfg(debug_assertions)]
     let gpu = fault::inject(gpu);
     let flavor = Flavor::Gpu(conventions);
@@ -235,12 +241,12 @@ pub fn lower_gpu(program: &crate::sema::Program, conventions: Conventions) -> Re
 
 /// The validated GL module of entry point `index` alone.
 pub fn lower_gl_entry(program: &crate::sema::Program, index: usize) -> Result<GlEntry, Diagnostic> {
-    gl_entry(program, index, &mut module::validator(Flavor::Gl))
+    gl_entry(program, index, &Reach::of(program), &mut module::validator(Flavor::Gl))
 }
 
 /// [`lower_gl_entry`] with a validator from `module::validator(Flavor::Gl)`.
-fn gl_entry(program: &crate::sema::Program, index: usize, validator: &mut naga::valid::Validator) -> Result<GlEntry, Diagnostic> {
-    let (module, _) = build(program, Flavor::Gl, Some(index))?;
+fn gl_entry(program: &crate::sema::Program, index: usize, reach: &Reach, validator: &mut naga::valid::Validator) -> Result<GlEntry, Diagnostic> {
+    let (module, _) = build(program, Flavor::Gl, Some(index), reach)?;
     let info = module::validate(validator, &module, Flavor::Gl)?;
     Ok(GlEntry { module, info })
 }
@@ -253,7 +259,7 @@ pub fn validate(module: &naga::Module, flavor: Flavor) -> Result<naga::valid::Mo
 
 /// Builds the whole program, or (`only`) one entry point and what it
 /// reaches.
-fn build(p: &sema::Program, flavor: Flavor, only: Option<usize>) -> Result<(naga::Module, Interface), Diagnostic> {
+fn build(p: &sema::Program, flavor: Flavor, only: Option<usize>, reach: &Reach) -> Result<(naga::Module, Interface), Diagnostic> {
     let mut m = ModuleBuilder::new(p, flavor);
     m.allow_nonuniform_derivatives();
     let only_ep = only.map(|i| &p.entry_points[i]);
@@ -268,8 +274,8 @@ fn build(p: &sema::Program, flavor: Flavor, only: Option<usize>) -> Result<(naga
     // Implicit-LOD sampling means level 0 in a vertex entry point; a helper
     // that samples and is reached from both stages is lowered twice (a
     // one-entry module needs only the copy for its stage).
-    let (from_vertex, from_fragment) = reach_by_stage(p);
-    let reached = only_ep.map(|ep| reach(p, ep));
+    let (from_vertex, from_fragment) = (&reach.vertex, &reach.fragment);
+    let reached = only.map(|i| &reach.by_entry[i]);
     let vertex_entry = only_ep.map(|ep| ep.stage == naga::ShaderStage::Vertex);
     for (fid, f) in p.functions.iter().enumerate() {
         if reached.as_ref().is_some_and(|r| !r[fid]) {
@@ -310,6 +316,29 @@ fn lower_helper<'p>(m: &mut ModuleBuilder<'p>, f: &'p sema::Function, name: &str
     m.module.functions.append(func, f.span.into())
 }
 
+/// Which helper functions each entry point reaches, and which a vertex or
+/// a fragment entry point reaches.
+struct Reach {
+    by_entry: Vec<Vec<bool>>,
+    vertex: Vec<bool>,
+    fragment: Vec<bool>,
+}
+
+impl Reach {
+    fn of(p: &sema::Program) -> Reach {
+        let n = p.functions.len();
+        let (mut vertex, mut fragment) = (vec![false; n], vec![false; n]);
+        let by_entry: Vec<Vec<bool>> = p.entry_points.iter().map(|ep| reach(p, ep)).collect();
+        for (ep, seen) in p.entry_points.iter().zip(&by_entry) {
+            let stage = if ep.stage == naga::ShaderStage::Vertex { &mut vertex } else { &mut fragment };
+            for (s, r) in stage.iter_mut().zip(seen) {
+                *s |= r;
+            }
+        }
+        Reach { by_entry, vertex, fragment }
+    }
+}
+
 /// Which helper functions entry point `ep` reaches.
 fn reach(p: &sema::Program, ep: &sema::EntryPoint) -> Vec<bool> {
     let mut seen = vec![false; p.functions.len()];
@@ -321,20 +350,6 @@ fn reach(p: &sema::Program, ep: &sema::EntryPoint) -> Vec<bool> {
         }
     }
     seen
-}
-
-/// Which helper functions a vertex (first) and a fragment (second) entry
-/// point reach.
-fn reach_by_stage(p: &sema::Program) -> (Vec<bool>, Vec<bool>) {
-    let n = p.functions.len();
-    let (mut vertex, mut fragment) = (vec![false; n], vec![false; n]);
-    for ep in &p.entry_points {
-        let seen = if ep.stage == naga::ShaderStage::Vertex { &mut vertex } else { &mut fragment };
-        for (s, r) in seen.iter_mut().zip(reach(p, ep)) {
-            *s |= r;
-        }
-    }
-    (vertex, fragment)
 }
 
 fn interpolation(ty: &Ty) -> (Option<naga::Interpolation>, Option<naga::Sampling>) {
@@ -368,7 +383,8 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
         });
         outs.push((global, Some(BuiltinVar::Position), ty, naga::Binding::BuiltIn(naga::BuiltIn::Position { invariant: false }), "gl_Position".into()));
     }
-    let mut seen_out: rustc_hash::FxHashMap<u32, Span> = Default::default();
+    // Output locations so far (few: a list).
+    let mut seen_out: Vec<(u32, Span)> = Vec::new();
     let mut point_coord_default: Vec<(sema::GlobalId, Span)> = Vec::new();
     for (&gid, &use_span) in &ep.func.uses {
         let g = &p.globals[gid];
@@ -416,12 +432,13 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
         } else if func::is_stage_output(&g.kind, stage) {
             match g.kind {
                 GlobalKind::Io { location: l, .. } => {
-                    if let Some(prev) = seen_out.insert(l, g.span) {
+                    if let Some(&(_, prev)) = seen_out.iter().find(|o| o.0 == l) {
                         // sema reports this as a user error first.
                         return Err(Diagnostic::bug(format!("entry point `{}` writes two outputs at location {l}", ep.name), Some(use_span))
                             .with_secondary(prev, "this output also uses it")
                             .with_note("`@out` and `@inout` variables written by one vertex entry point share the output locations"));
                     }
+                    seen_out.push((l, g.span));
                     let interp = if stage == Vertex { interpolation(&g.ty) } else { (None, None) };
                     if describe {
                         let dsl_type = m.show_ty(&g.ty);
