@@ -131,8 +131,10 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
     }
 
     fn flush(&mut self, block: &mut Block) {
-        for (stmt, sp) in self.pending.drain(..) {
-            block.push(stmt, sp);
+        if !self.pending.is_empty() {
+            for (stmt, sp) in self.pending.drain(..) {
+                block.push(stmt, sp);
+            }
         }
         if let Some((stmt, sp)) = self.emitter.finish(&self.func.expressions) {
             block.push(stmt, sp);
@@ -210,7 +212,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
         let members: Vec<_> = outs.members.clone();
         let stage = outs.stage;
         let adapt = self.m.flavor == Flavor::Gpu(super::Conventions::Portable) && stage == naga::ShaderStage::Vertex;
-        let mut comps = Vec::new();
+        let mut comps = Vec::with_capacity(members.len());
         for (g, builtin, ty) in members {
             let mut v = match g {
                 Some(g) => {
@@ -373,7 +375,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
                     new = self.binary(op, cur, &target.ty, new, &value.ty, sp);
                 }
                 let width = base.ty.width().unwrap_or(4);
-                let mut parts = Vec::new();
+                let mut parts = Vec::with_capacity(width as usize);
                 for i in 0..width {
                     let part = match comps.iter().position(|&c| c == i) {
                         Some(k) => self.append(E::AccessIndex { base: new, index: k as u32 }, sp),
@@ -586,12 +588,12 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
     /// wants equal shapes, float `%` as GLSL `mod`, vector `==` reduced.
     pub fn binary(&mut self, op: BinaryOp, l: Handle<E>, lt: &Ty, r: Handle<E>, rt: &Ty, s: crate::source::Span) -> Handle<E> {
         use naga::BinaryOperator as Bo;
-        let vec_ty = if matches!(lt, Ty::Vector(..)) { lt.clone() } else { rt.clone() };
+        let vec_ty = if matches!(lt, Ty::Vector(..)) { lt } else { rt };
         let (mut l, mut r) = (l, r);
         let needs_same_shape = !matches!(op, BinaryOp::Mul | BinaryOp::Shl | BinaryOp::Shr);
         if needs_same_shape || (op == BinaryOp::Mul && matches!((lt, rt), (Ty::Scalar(_), Ty::Scalar(_)))) {
-            l = self.splat_to(l, lt, &vec_ty, s);
-            r = self.splat_to(r, rt, &vec_ty, s);
+            l = self.splat_to(l, lt, vec_ty, s);
+            r = self.splat_to(r, rt, vec_ty, s);
         }
         let bo = match op {
             BinaryOp::Add => Bo::Add,

@@ -465,7 +465,7 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
     iface.inputs.sort_by_key(|v| v.location);
     iface.outputs.sort_by_key(|v| v.location);
     let members = outs.iter().map(|o| (o.0, o.1, o.2)).collect();
-    let result_ty = (!outs.is_empty()).then(|| m.struct_type(&[&ep.name, "_out"].concat(), outs.into_iter().map(|o| (o.4, o.2, Some(o.3))).collect()));
+    let result_ty = (!outs.is_empty()).then(|| m.struct_type([&ep.name, "_out"].concat(), outs.into_iter().map(|o| (o.4, o.2, Some(o.3))).collect()));
     let kind = FnKind::Entry(func::EntryOutputs { result_ty, members, stage });
     let mut b = FnBuilder::new(m, &ep.name, &ep.func.locals, kind);
     b.vertex_lod = stage == Vertex;

@@ -104,10 +104,10 @@ impl<'p> ModuleBuilder<'p> {
             small_types: [None; SMALL_TYPE_SLOTS],
             types: FxHashMap::default(),
             layouter: naga::proc::Layouter::default(),
-            globals: Vec::new(),
+            globals: Vec::with_capacity(p.globals.len()),
             consts: vec![None; p.consts.len()],
-            functions: Vec::new(),
-            vertex_functions: Vec::new(),
+            functions: Vec::with_capacity(p.functions.len()),
+            vertex_functions: Vec::with_capacity(p.functions.len()),
             resources: Vec::new(),
             resource_of: Vec::with_capacity(p.globals.len()),
             sampler_elems: Vec::new(),
@@ -183,7 +183,7 @@ impl<'p> ModuleBuilder<'p> {
                 let fields: Vec<(String, Ty)> = def.fields.iter().map(|(n, t, _)| (n.clone(), t.clone())).collect();
                 let name = def.name.clone();
                 let members = fields.into_iter().map(|(n, t)| (n, self.ty(&t), None)).collect();
-                self.struct_type(&name, members)
+                self.struct_type(name, members)
             }
             // Samplers, void and error never reach here: sema only lets
             // value types into variables and expressions that have types.
@@ -199,8 +199,8 @@ impl<'p> ModuleBuilder<'p> {
     }
 
     /// A struct type with the natural (WGSL) layout.
-    pub fn struct_type(&mut self, name: &str, fields: Vec<(String, Handle<Type>, Option<naga::Binding>)>) -> Handle<Type> {
-        let mut members = Vec::new();
+    pub fn struct_type(&mut self, name: String, fields: Vec<(String, Handle<Type>, Option<naga::Binding>)>) -> Handle<Type> {
+        let mut members = Vec::with_capacity(fields.len());
         let mut offset = 0u32;
         let mut align = naga::proc::Alignment::ONE;
         for (fname, mty, binding) in fields {
@@ -211,7 +211,7 @@ impl<'p> ModuleBuilder<'p> {
             offset += layout.size;
         }
         let span = align.round_up(offset);
-        self.add_type(Some(name.to_string()), TypeInner::Struct { members, span })
+        self.add_type(Some(name), TypeInner::Struct { members, span })
     }
 
     /// Appends a constant value to the global expression arena.
