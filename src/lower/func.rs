@@ -72,12 +72,12 @@ fn span(s: crate::source::Span) -> naga::Span {
 }
 
 /// An empty block with room for what `n` checked statements usually
-/// become (an emit range and the statement each), so pushing rarely grows
-/// its two vectors.
+/// become (a statement each, after one or two emit ranges: every plain
+/// expression splits a range), so pushing rarely grows its two vectors.
 pub fn block_for(n: usize) -> Block {
     match n {
         0 => Block::new(),
-        _ => Block::with_capacity(2 * n + 1),
+        _ => Block::with_capacity(3 * n + 2),
     }
 }
 
