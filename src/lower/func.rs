@@ -1,9 +1,9 @@
 //! Function bodies: checked statements and expressions to naga IR.
 //!
 //! Expressions that naga wants covered by `Statement::Emit` are appended
-//! while the emitter runs; the others (literals, constants, variables,
-//! arguments, call results) are appended with the emitter paused. Every
-//! statement push flushes the pending range first.
+//! inside the running emit range; the others (literals, constants,
+//! variables, arguments, call results) close the range and are appended
+//! outside it. Every statement push flushes the pending ranges first.
 
 use naga::{Block, Expression as E, Handle, Statement};
 
@@ -52,7 +52,10 @@ pub struct EntryOutputs {
 pub struct FnBuilder<'m, 'p> {
     pub m: &'m mut ModuleBuilder<'p>,
     pub func: naga::Function,
-    emitter: naga::proc::Emitter,
+    /// Start of the running emit range: the expressions from here on are
+    /// covered by the next `Emit` (naga's `Emitter`, without its checks, as
+    /// a range is closed for every plain expression).
+    emit_start: usize,
     locals: Vec<LocalSlot>,
     sema_locals: &'p [sema::Local],
     kind: FnKind,
@@ -68,12 +71,29 @@ fn span(s: crate::source::Span) -> naga::Span {
     s.into()
 }
 
+/// An empty block with room for what `n` checked statements usually
+/// become (a statement each, after one or two emit ranges: every plain
+/// expression splits a range), so pushing rarely grows its two vectors.
+pub fn block_for(n: usize) -> Block {
+    match n {
+        0 => Block::new(),
+        _ => Block::with_capacity(3 * n + 2),
+    }
+}
+
+/// A block of one `break`.
+fn break_block(s: crate::source::Span) -> Block {
+    let mut b = Block::with_capacity(1);
+    b.push(Statement::Break, span(s));
+    b
+}
+
 impl<'m, 'p> FnBuilder<'m, 'p> {
     pub fn new(m: &'m mut ModuleBuilder<'p>, name: &str, sema_locals: &'p [sema::Local], kind: FnKind) -> Self {
-        let func = naga::Function { name: Some(name.to_string()), ..Default::default() };
-        let mut b = FnBuilder { m, func, emitter: Default::default(), locals: vec![LocalSlot::Unset; sema_locals.len()], sema_locals, kind, pending: Vec::new(), vertex_lod: false };
-        b.emitter.start(&b.func.expressions);
-        b
+        let mut func = naga::Function { name: Some(name.to_string()), ..Default::default() };
+        // A `let` names its expression: room for all of them up front.
+        func.named_expressions.reserve(sema_locals.iter().filter(|l| !l.mutable).count());
+        FnBuilder { m, func, emit_start: 0, locals: vec![LocalSlot::Unset; sema_locals.len()], sema_locals, kind, pending: Vec::new(), vertex_lod: false }
     }
 
     /// Declares parameter `i` as a function argument. Parameters are
@@ -90,14 +110,29 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
     /// Appends an expression that must not be emitted.
     fn append_plain(&mut self, e: E, s: crate::source::Span) -> Handle<E> {
         // Close the running range, append outside it, and start again.
-        let pending = self.emitter.finish(&self.func.expressions);
-        let h = self.func.expressions.append(e, span(s));
-        self.emitter.start(&self.func.expressions);
-        if let Some((stmt, sp)) = pending {
+        if let Some(emit) = self.close_emit() {
             // The range ends before `h`; it is pushed with the next statement.
-            self.pending.push((stmt, sp));
+            self.pending.push(emit);
         }
+        let h = self.func.expressions.append(e, span(s));
+        self.emit_start = self.func.expressions.len();
         h
+    }
+
+    /// The `Emit` of the running range (none if it is empty), spanning its
+    /// expressions as naga's `Emitter::finish` does; a new range starts.
+    fn close_emit(&mut self) -> Option<(Statement, naga::Span)> {
+        let exprs = &self.func.expressions;
+        if self.emit_start == exprs.len() {
+            return None;
+        }
+        let range = exprs.range_from(self.emit_start);
+        let mut sp = naga::Span::default();
+        for h in range.clone() {
+            sp.subsume(exprs.get_span(h));
+        }
+        self.emit_start = exprs.len();
+        Some((Statement::Emit(range), sp))
     }
 
     /// Appends an expression that must be emitted.
@@ -112,18 +147,18 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
     }
 
     fn flush(&mut self, block: &mut Block) {
-        for (stmt, sp) in self.pending.drain(..) {
+        if !self.pending.is_empty() {
+            for (stmt, sp) in self.pending.drain(..) {
+                block.push(stmt, sp);
+            }
+        }
+        if let Some((stmt, sp)) = self.close_emit() {
             block.push(stmt, sp);
         }
-        if let Some((stmt, sp)) = self.emitter.finish(&self.func.expressions) {
-            block.push(stmt, sp);
-        }
-        self.emitter.start(&self.func.expressions);
     }
 
     pub fn finish(mut self, mut body: Block, ret: Option<naga::FunctionResult>) -> naga::Function {
         self.flush(&mut body);
-        let _ = self.emitter.finish(&self.func.expressions);
         self.func.body = body;
         self.func.result = ret;
         self.func
@@ -170,7 +205,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
     }
 
     pub fn block(&mut self, stmts: &[Stmt]) -> Block {
-        let mut b = Block::new();
+        let mut b = block_for(stmts.len());
         for s in stmts {
             self.stmt(s, &mut b);
         }
@@ -191,7 +226,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
         let members: Vec<_> = outs.members.clone();
         let stage = outs.stage;
         let adapt = self.m.flavor == Flavor::Gpu(super::Conventions::Portable) && stage == naga::ShaderStage::Vertex;
-        let mut comps = Vec::new();
+        let mut comps = Vec::with_capacity(members.len());
         for (g, builtin, ty) in members {
             let mut v = match g {
                 Some(g) => {
@@ -239,8 +274,8 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
                     self.push(block, Statement::Store { pointer: ptr, value }, *sp);
                 } else if let Some(e) = init {
                     let h = self.expr(e, block);
-                    if !self.func.named_expressions.contains_key(&h) && self.is_emitted(h) {
-                        self.func.named_expressions.insert(h, l.name.clone());
+                    if self.is_emitted(h) {
+                        self.func.named_expressions.entry(h).or_insert_with(|| l.name.clone());
                     }
                     self.locals[*local] = LocalSlot::Value(h);
                 }
@@ -271,13 +306,12 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
             }
             Stmt::While { cond, body, span: sp } => {
                 self.flush(block);
-                let mut lb = Block::new();
+                // The exit test, then the body.
+                let mut lb = block_for(body.len() + 1);
                 let c = self.expr(cond, &mut lb);
                 let not_c = self.append(E::Unary { op: naga::UnaryOperator::LogicalNot, expr: c }, cond.span);
                 self.flush(&mut lb);
-                let mut brk = Block::new();
-                brk.push(Statement::Break, span(*sp));
-                lb.push(Statement::If { condition: not_c, accept: brk, reject: Block::new() }, span(cond.span));
+                lb.push(Statement::If { condition: not_c, accept: break_block(*sp), reject: Block::new() }, span(cond.span));
                 for st in body {
                     self.stmt(st, &mut lb);
                 }
@@ -295,19 +329,18 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
                 // The bound is evaluated once, before the loop.
                 let e0 = self.expr(end, block);
                 self.flush(block);
-                let mut lb = Block::new();
+                let mut lb = block_for(body.len() + 1);
                 let cur = self.append(E::Load { pointer: ptr }, *sp);
                 let more = self.append(E::Binary { op: naga::BinaryOperator::Less, left: cur, right: e0 }, end.span);
                 let done = self.append(E::Unary { op: naga::UnaryOperator::LogicalNot, expr: more }, end.span);
                 self.flush(&mut lb);
-                let mut brk = Block::new();
-                brk.push(Statement::Break, span(*sp));
-                lb.push(Statement::If { condition: done, accept: brk, reject: Block::new() }, span(end.span));
+                lb.push(Statement::If { condition: done, accept: break_block(*sp), reject: Block::new() }, span(end.span));
                 for st in body {
                     self.stmt(st, &mut lb);
                 }
                 self.flush(&mut lb);
-                let mut cont = Block::new();
+                // The increment: an emit range and the store.
+                let mut cont = Block::with_capacity(2);
                 let cur2 = self.append(E::Load { pointer: ptr }, *sp);
                 let one = match l.ty {
                     Ty::Scalar(Scalar::Uint) => naga::Literal::U32(1),
@@ -356,7 +389,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
                     new = self.binary(op, cur, &target.ty, new, &value.ty, sp);
                 }
                 let width = base.ty.width().unwrap_or(4);
-                let mut parts = Vec::new();
+                let mut parts = Vec::with_capacity(width as usize);
                 for i in 0..width {
                     let part = match comps.iter().position(|&c| c == i) {
                         Some(k) => self.append(E::AccessIndex { base: new, index: k as u32 }, sp),
@@ -569,12 +602,12 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
     /// wants equal shapes, float `%` as GLSL `mod`, vector `==` reduced.
     pub fn binary(&mut self, op: BinaryOp, l: Handle<E>, lt: &Ty, r: Handle<E>, rt: &Ty, s: crate::source::Span) -> Handle<E> {
         use naga::BinaryOperator as Bo;
-        let vec_ty = if matches!(lt, Ty::Vector(..)) { lt.clone() } else { rt.clone() };
+        let vec_ty = if matches!(lt, Ty::Vector(..)) { lt } else { rt };
         let (mut l, mut r) = (l, r);
         let needs_same_shape = !matches!(op, BinaryOp::Mul | BinaryOp::Shl | BinaryOp::Shr);
         if needs_same_shape || (op == BinaryOp::Mul && matches!((lt, rt), (Ty::Scalar(_), Ty::Scalar(_)))) {
-            l = self.splat_to(l, lt, &vec_ty, s);
-            r = self.splat_to(r, rt, &vec_ty, s);
+            l = self.splat_to(l, lt, vec_ty, s);
+            r = self.splat_to(r, rt, vec_ty, s);
         }
         let bo = match op {
             BinaryOp::Add => Bo::Add,
@@ -731,7 +764,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
         self.flush(block);
         let mut cases = Vec::new();
         for k in 0..count {
-            let mut body = Block::new();
+            let mut body = Block::with_capacity(2);
             let (image, sampler) = self.m.sampler_elems[first + k as usize];
             let v = self.texture_apply(&op, kind, image, sampler, ret, s);
             let ptr = self.append_plain(E::LocalVariable(var), s);

@@ -215,37 +215,51 @@ pub enum Flavor {
 
 /// Lowers a checked program into the validated modules.
 pub fn lower(program: &crate::sema::Program, conventions: Conventions) -> Result<Lowered, crate::diag::Diagnostic> {
-    let (gpu, gpu_info, interface) = lower_gpu(program, conventions)?;
-    let gl = (0..program.entry_points.len()).map(|i| lower_gl_entry(program, i)).collect::<Result<_, _>>()?;
+    // Call-graph reach, once for all the modules.
+    let reach = Reach::of(program);
+    let (gpu, gpu_info, interface) = gpu(program, conventions, &reach)?;
+    // One validator for all the GL modules: its tables are reused.
+    let mut validator = module::validator(Flavor::Gl);
+    let gl = (0..program.entry_points.len()).map(|i| gl_entry(program, i, &reach, &mut validator)).collect::<Result<_, _>>()?;
     Ok(Lowered { gl, gpu, gpu_info, interface })
 }
 
 /// The validated GPU module of the whole program, and its interface.
 pub fn lower_gpu(program: &crate::sema::Program, conventions: Conventions) -> Result<(naga::Module, naga::valid::ModuleInfo, Interface), Diagnostic> {
-    let (gpu, mut interface) = build(program, Flavor::Gpu(conventions), None)?;
+    gpu(program, conventions, &Reach::of(program))
+}
+
+fn gpu(program: &crate::sema::Program, conventions: Conventions, reach: &Reach) -> Result<(naga::Module, naga::valid::ModuleInfo, Interface), Diagnostic> {
+    let (gpu, mut interface) = build(program, Flavor::Gpu(conventions), None, reach)?;
     #[cfg(debug_assertions)]
     let gpu = fault::inject(gpu);
-    let gpu_info = module::validate(&gpu, Flavor::Gpu(conventions))?;
+    let flavor = Flavor::Gpu(conventions);
+    let gpu_info = module::validate(&mut module::validator(flavor), &gpu, flavor)?;
     interface.conventions = conventions;
     Ok((gpu, gpu_info, interface))
 }
 
 /// The validated GL module of entry point `index` alone.
 pub fn lower_gl_entry(program: &crate::sema::Program, index: usize) -> Result<GlEntry, Diagnostic> {
-    let (module, _) = build(program, Flavor::Gl, Some(index))?;
-    let info = module::validate(&module, Flavor::Gl)?;
+    gl_entry(program, index, &Reach::of(program), &mut module::validator(Flavor::Gl))
+}
+
+/// [`lower_gl_entry`] with a validator from `module::validator(Flavor::Gl)`.
+fn gl_entry(program: &crate::sema::Program, index: usize, reach: &Reach, validator: &mut naga::valid::Validator) -> Result<GlEntry, Diagnostic> {
+    let (module, _) = build(program, Flavor::Gl, Some(index), reach)?;
+    let info = module::validate(validator, &module, Flavor::Gl)?;
     Ok(GlEntry { module, info })
 }
 
 /// Validates a module the way [`lower`] validates its own output: a failure
 /// is an internal compiler error at the span naga reports.
 pub fn validate(module: &naga::Module, flavor: Flavor) -> Result<naga::valid::ModuleInfo, Diagnostic> {
-    module::validate(module, flavor)
+    module::validate(&mut module::validator(flavor), module, flavor)
 }
 
 /// Builds the whole program, or (`only`) one entry point and what it
 /// reaches.
-fn build(p: &sema::Program, flavor: Flavor, only: Option<usize>) -> Result<(naga::Module, Interface), Diagnostic> {
+fn build(p: &sema::Program, flavor: Flavor, only: Option<usize>, reach: &Reach) -> Result<(naga::Module, Interface), Diagnostic> {
     let mut m = ModuleBuilder::new(p, flavor);
     m.allow_nonuniform_derivatives();
     let only_ep = only.map(|i| &p.entry_points[i]);
@@ -260,8 +274,8 @@ fn build(p: &sema::Program, flavor: Flavor, only: Option<usize>) -> Result<(naga
     // Implicit-LOD sampling means level 0 in a vertex entry point; a helper
     // that samples and is reached from both stages is lowered twice (a
     // one-entry module needs only the copy for its stage).
-    let (from_vertex, from_fragment) = reach_by_stage(p);
-    let reached = only_ep.map(|ep| reach(p, ep));
+    let (from_vertex, from_fragment) = (&reach.vertex, &reach.fragment);
+    let reached = only.map(|i| &reach.by_entry[i]);
     let vertex_entry = only_ep.map(|ep| ep.stage == naga::ShaderStage::Vertex);
     for (fid, f) in p.functions.iter().enumerate() {
         if reached.as_ref().is_some_and(|r| !r[fid]) {
@@ -273,7 +287,7 @@ fn build(p: &sema::Program, flavor: Flavor, only: Option<usize>) -> Result<(naga
         let vertex_only = f.implicit_lod && from_vertex[fid] && !from_fragment[fid];
         let h = (!(two_copies && vertex_entry == Some(true))).then(|| lower_helper(&mut m, f, &f.name, vertex_only));
         m.functions.push(h);
-        let copy = (two_copies && vertex_entry != Some(false)).then(|| lower_helper(&mut m, f, &format!("{}_vertex", f.name), true));
+        let copy = (two_copies && vertex_entry != Some(false)).then(|| lower_helper(&mut m, f, &[&f.name, "_vertex"].concat(), true));
         m.vertex_functions.push(copy);
     }
     let mut entries = Vec::new();
@@ -282,7 +296,7 @@ fn build(p: &sema::Program, flavor: Flavor, only: Option<usize>) -> Result<(naga
             entries.push(lower_entry(&mut m, ep, index)?);
         }
     }
-    let interface = Interface { conventions: Conventions::default(), resources: m.resources.clone(), entry_points: entries };
+    let interface = Interface { conventions: Conventions::default(), resources: std::mem::take(&mut m.resources), entry_points: entries };
     Ok((m.module, interface))
 }
 
@@ -302,6 +316,29 @@ fn lower_helper<'p>(m: &mut ModuleBuilder<'p>, f: &'p sema::Function, name: &str
     m.module.functions.append(func, f.span.into())
 }
 
+/// Which helper functions each entry point reaches, and which a vertex or
+/// a fragment entry point reaches.
+struct Reach {
+    by_entry: Vec<Vec<bool>>,
+    vertex: Vec<bool>,
+    fragment: Vec<bool>,
+}
+
+impl Reach {
+    fn of(p: &sema::Program) -> Reach {
+        let n = p.functions.len();
+        let (mut vertex, mut fragment) = (vec![false; n], vec![false; n]);
+        let by_entry: Vec<Vec<bool>> = p.entry_points.iter().map(|ep| reach(p, ep)).collect();
+        for (ep, seen) in p.entry_points.iter().zip(&by_entry) {
+            let stage = if ep.stage == naga::ShaderStage::Vertex { &mut vertex } else { &mut fragment };
+            for (s, r) in stage.iter_mut().zip(seen) {
+                *s |= r;
+            }
+        }
+        Reach { by_entry, vertex, fragment }
+    }
+}
+
 /// Which helper functions entry point `ep` reaches.
 fn reach(p: &sema::Program, ep: &sema::EntryPoint) -> Vec<bool> {
     let mut seen = vec![false; p.functions.len()];
@@ -313,20 +350,6 @@ fn reach(p: &sema::Program, ep: &sema::EntryPoint) -> Vec<bool> {
         }
     }
     seen
-}
-
-/// Which helper functions a vertex (first) and a fragment (second) entry
-/// point reach.
-fn reach_by_stage(p: &sema::Program) -> (Vec<bool>, Vec<bool>) {
-    let n = p.functions.len();
-    let (mut vertex, mut fragment) = (vec![false; n], vec![false; n]);
-    for ep in &p.entry_points {
-        let seen = if ep.stage == naga::ShaderStage::Vertex { &mut vertex } else { &mut fragment };
-        for (s, r) in seen.iter_mut().zip(reach(p, ep)) {
-            *s |= r;
-        }
-    }
-    (vertex, fragment)
 }
 
 fn interpolation(ty: &Ty) -> (Option<naga::Interpolation>, Option<naga::Sampling>) {
@@ -345,6 +368,9 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
     let p = m.p;
     let stage = ep.stage;
     let mut iface = EntryInterface { name: ep.name.clone(), stage, index, inputs: Vec::new(), outputs: Vec::new(), builtins: Vec::new(), resources: Vec::new() };
+    // Only the GPU module's interface is kept (`lower_gl_entry` drops its
+    // own): a GL module leaves the lists empty.
+    let describe = m.flavor != Flavor::Gl;
     // Arguments: inputs this entry point reaches, by location then builtins.
     let mut args: Vec<(sema::GlobalId, naga::Binding, naga::Handle<naga::Type>, bool)> = Vec::new();
     let mut outs: Vec<(Option<naga::Handle<naga::GlobalVariable>>, Option<BuiltinVar>, naga::Handle<naga::Type>, naga::Binding, String)> = Vec::new();
@@ -357,25 +383,29 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
         });
         outs.push((global, Some(BuiltinVar::Position), ty, naga::Binding::BuiltIn(naga::BuiltIn::Position { invariant: false }), "gl_Position".into()));
     }
-    let mut seen_out: std::collections::HashMap<u32, Span> = std::collections::HashMap::new();
+    // Output locations so far (few: a list).
+    let mut seen_out: Vec<(u32, Span)> = Vec::new();
     let mut point_coord_default: Vec<(sema::GlobalId, Span)> = Vec::new();
     for (&gid, &use_span) in &ep.func.uses {
         let g = &p.globals[gid];
-        if let Some(rs) = m.resource_of.get(&gid) {
-            iface.resources.extend(rs.iter().copied());
+        if matches!(g.kind, GlobalKind::Uniform | GlobalKind::Sampler { .. }) {
+            iface.resources.extend(m.resource_of[gid].clone());
             continue;
         }
         let GlobalSlot::Var(h) = m.globals[gid] else { continue };
-        if let GlobalKind::Builtin(b) = g.kind {
-            iface.builtins.push(b.name().to_string());
+        match g.kind {
+            GlobalKind::Builtin(b) if describe => iface.builtins.push(b.name().to_string()),
+            _ => {}
         }
         let ty = m.ty(&g.ty);
         if func::is_stage_input(&g.kind, stage) {
             let (binding, arg_ty, to_int) = match g.kind {
                 GlobalKind::Io { location: l, .. } => {
                     let interp = if stage == Fragment { interpolation(&g.ty) } else { (None, None) };
-                    let dsl_type = m.show_ty(&g.ty);
-                    iface.inputs.push(IoVar { name: g.name.clone(), location: l, ty, dsl_type, interpolation: interp.0 });
+                    if describe {
+                        let dsl_type = m.show_ty(&g.ty);
+                        iface.inputs.push(IoVar { name: g.name.clone(), location: l, ty, dsl_type, interpolation: interp.0 });
+                    }
                     (location(l, interp), ty, false)
                 }
                 GlobalKind::Builtin(b) => {
@@ -402,15 +432,18 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
         } else if func::is_stage_output(&g.kind, stage) {
             match g.kind {
                 GlobalKind::Io { location: l, .. } => {
-                    if let Some(prev) = seen_out.insert(l, g.span) {
+                    if let Some(&(_, prev)) = seen_out.iter().find(|o| o.0 == l) {
                         // sema reports this as a user error first.
                         return Err(Diagnostic::bug(format!("entry point `{}` writes two outputs at location {l}", ep.name), Some(use_span))
                             .with_secondary(prev, "this output also uses it")
                             .with_note("`@out` and `@inout` variables written by one vertex entry point share the output locations"));
                     }
+                    seen_out.push((l, g.span));
                     let interp = if stage == Vertex { interpolation(&g.ty) } else { (None, None) };
-                    let dsl_type = m.show_ty(&g.ty);
-                    iface.outputs.push(IoVar { name: g.name.clone(), location: l, ty, dsl_type, interpolation: interp.0 });
+                    if describe {
+                        let dsl_type = m.show_ty(&g.ty);
+                        iface.outputs.push(IoVar { name: g.name.clone(), location: l, ty, dsl_type, interpolation: interp.0 });
+                    }
                     outs.push((Some(h), None, ty, location(l, interp), g.name.clone()));
                 }
                 GlobalKind::Builtin(b) => {
@@ -431,19 +464,25 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
     }
     iface.inputs.sort_by_key(|v| v.location);
     iface.outputs.sort_by_key(|v| v.location);
-    let result_ty = (!outs.is_empty()).then(|| m.struct_type(&format!("{}_out", ep.name), outs.iter().map(|o| (o.4.clone(), o.2, Some(o.3.clone()))).collect()));
     let members = outs.iter().map(|o| (o.0, o.1, o.2)).collect();
+    let result_ty = (!outs.is_empty()).then(|| m.struct_type([&ep.name, "_out"].concat(), outs.into_iter().map(|o| (o.4, o.2, Some(o.3))).collect()));
     let kind = FnKind::Entry(func::EntryOutputs { result_ty, members, stage });
     let mut b = FnBuilder::new(m, &ep.name, &ep.func.locals, kind);
     b.vertex_lod = stage == Vertex;
-    let mut body = naga::Block::new();
+    // The prologue's stores, then the statements.
+    let mut body = func::block_for(args.len() + ep.func.body.len() + 1);
     for (gid, s) in point_coord_default {
         let GlobalSlot::Var(h) = b.m.globals[gid] else { continue };
         b.store_point_coord_default(&mut body, h, s);
     }
     for (i, (gid, binding, ty, to_int)) in args.iter().enumerate() {
         let g = &p.globals[*gid];
-        b.func.arguments.push(naga::FunctionArgument { name: Some(format!("in_{}", g.name.trim_start_matches("gl_"))), ty: *ty, binding: Some(binding.clone()) });
+        // `in_` and the name without its `gl_` prefixes.
+        let mut bare = g.name.as_str();
+        while let Some(rest) = bare.strip_prefix("gl_") {
+            bare = rest;
+        }
+        b.func.arguments.push(naga::FunctionArgument { name: Some(["in_", bare].concat()), ty: *ty, binding: Some(binding.clone()) });
         let GlobalSlot::Var(h) = b.m.globals[*gid] else { continue };
         b.store_argument(&mut body, h, i as u32, *to_int, g.span);
     }

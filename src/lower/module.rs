@@ -1,8 +1,7 @@
 //! Module-level lowering: types, constants, globals, and validation.
 
-use std::collections::HashMap;
-
 use naga::{Handle, Module, Type, TypeInner};
+use rustc_hash::FxHashMap;
 
 use super::Flavor;
 use crate::diag::Diagnostic;
@@ -28,7 +27,11 @@ pub struct ModuleBuilder<'p> {
     pub p: &'p sema::Program,
     pub module: Module,
     pub flavor: Flavor,
-    types: HashMap<Ty, Handle<Type>>,
+    /// Scalar, vector and matrix types by `small_type_slot`, which every
+    /// expression asks for: no hashing of `Ty`.
+    small_types: [Option<Handle<Type>>; SMALL_TYPE_SLOTS],
+    /// Other types (arrays, structs).
+    types: FxHashMap<Ty, Handle<Type>>,
     layouter: naga::proc::Layouter,
     pub globals: Vec<GlobalSlot>,
     /// Per sema constant, once declared (all up front for a whole-program
@@ -39,10 +42,12 @@ pub struct ModuleBuilder<'p> {
     /// The level-0 copy of a helper that samples with implicit LOD, where a
     /// vertex entry point reaches it and a fragment one does too.
     pub vertex_functions: Vec<Option<Handle<naga::Function>>>,
+    /// The resources, for the interface; empty in a GL module.
     pub resources: Vec<Resource>,
-    /// Indices into `resources` per sema global, for resources (one per
-    /// element of a sampler array).
-    pub resource_of: HashMap<sema::GlobalId, Vec<usize>>,
+    /// Indices into `resources` per sema global (one per element of a
+    /// sampler array; empty for a global that is not a resource, and in a
+    /// GL module).
+    pub resource_of: Vec<std::ops::Range<usize>>,
     /// (image, sampler) globals of every sampler element.
     pub sampler_elems: Vec<(Handle<naga::GlobalVariable>, Handle<naga::GlobalVariable>)>,
     /// The program's struct names, for DSL type spellings in the interface.
@@ -55,6 +60,30 @@ pub fn naga_scalar(s: Scalar) -> naga::Scalar {
         Scalar::Int => naga::Scalar::I32,
         Scalar::Uint => naga::Scalar::U32,
         Scalar::Bool => naga::Scalar::BOOL,
+    }
+}
+
+const SMALL_TYPE_SLOTS: usize = 4 * 4 + 3 * 3;
+
+/// The slot in `ModuleBuilder::small_types` of a scalar, vector or matrix.
+fn small_type_slot(ty: &Ty) -> Option<usize> {
+    // As `vector_size` reads a size.
+    let dim = |n: u8| match n {
+        2 => 0,
+        3 => 1,
+        _ => 2,
+    };
+    let scalar = |s: Scalar| match s {
+        Scalar::Float => 0,
+        Scalar::Int => 1,
+        Scalar::Uint => 2,
+        Scalar::Bool => 3,
+    };
+    match *ty {
+        Ty::Scalar(s) => Some(scalar(s) * 4),
+        Ty::Vector(s, n) => Some(scalar(s) * 4 + 1 + dim(n)),
+        Ty::Matrix(c, r) => Some(16 + dim(c) * 3 + dim(r)),
+        _ => None,
     }
 }
 
@@ -72,14 +101,15 @@ impl<'p> ModuleBuilder<'p> {
             p,
             module: Module::default(),
             flavor,
-            types: HashMap::new(),
+            small_types: [None; SMALL_TYPE_SLOTS],
+            types: FxHashMap::default(),
             layouter: naga::proc::Layouter::default(),
-            globals: Vec::new(),
+            globals: Vec::with_capacity(p.globals.len()),
             consts: vec![None; p.consts.len()],
-            functions: Vec::new(),
-            vertex_functions: Vec::new(),
+            functions: Vec::with_capacity(p.functions.len()),
+            vertex_functions: Vec::with_capacity(p.functions.len()),
             resources: Vec::new(),
-            resource_of: HashMap::new(),
+            resource_of: Vec::with_capacity(p.globals.len()),
             sampler_elems: Vec::new(),
             // Only the GPU module's interface spells types (`show_ty`).
             struct_names: if flavor == Flavor::Gl { Vec::new() } else { p.struct_names() },
@@ -91,6 +121,27 @@ impl<'p> ModuleBuilder<'p> {
     pub fn show_ty(&self, ty: &Ty) -> String {
         if self.flavor == Flavor::Gl {
             return String::new();
+        }
+        // The common spellings without the formatting machinery; the same
+        // text as `TyDisplay`.
+        let digit = |n: u8| char::from(b'0' + n);
+        match *ty {
+            Ty::Scalar(s) => return s.name().to_string(),
+            Ty::Vector(s, n @ 2..=4) => {
+                let mut out = String::with_capacity(6);
+                out.push_str(s.name());
+                out.push(digit(n));
+                return out;
+            }
+            Ty::Matrix(c @ 2..=4, r @ 2..=4) => {
+                let mut out = String::with_capacity(8);
+                out.push_str("float");
+                out.push(digit(c));
+                out.push('x');
+                out.push(digit(r));
+                return out;
+            }
+            _ => {}
         }
         crate::sema::types::TyDisplay { ty, struct_names: &self.struct_names }.to_string()
     }
@@ -109,7 +160,12 @@ impl<'p> ModuleBuilder<'p> {
 
     /// The naga type of a DSL type (value types only).
     pub fn ty(&mut self, ty: &Ty) -> Handle<Type> {
-        if let Some(&h) = self.types.get(ty) {
+        let small = small_type_slot(ty);
+        let known = match small {
+            Some(i) => self.small_types[i],
+            None => self.types.get(ty).copied(),
+        };
+        if let Some(h) = known {
             return h;
         }
         let h = match ty {
@@ -127,19 +183,24 @@ impl<'p> ModuleBuilder<'p> {
                 let fields: Vec<(String, Ty)> = def.fields.iter().map(|(n, t, _)| (n.clone(), t.clone())).collect();
                 let name = def.name.clone();
                 let members = fields.into_iter().map(|(n, t)| (n, self.ty(&t), None)).collect();
-                self.struct_type(&name, members)
+                self.struct_type(name, members)
             }
             // Samplers, void and error never reach here: sema only lets
             // value types into variables and expressions that have types.
             Ty::Sampler(_) | Ty::Void | Ty::Error => self.add_type(None, TypeInner::Scalar(naga::Scalar::F32)),
         };
-        self.types.insert(ty.clone(), h);
+        match small {
+            Some(i) => self.small_types[i] = Some(h),
+            None => {
+                self.types.insert(ty.clone(), h);
+            }
+        }
         h
     }
 
     /// A struct type with the natural (WGSL) layout.
-    pub fn struct_type(&mut self, name: &str, fields: Vec<(String, Handle<Type>, Option<naga::Binding>)>) -> Handle<Type> {
-        let mut members = Vec::new();
+    pub fn struct_type(&mut self, name: String, fields: Vec<(String, Handle<Type>, Option<naga::Binding>)>) -> Handle<Type> {
+        let mut members = Vec::with_capacity(fields.len());
         let mut offset = 0u32;
         let mut align = naga::proc::Alignment::ONE;
         for (fname, mty, binding) in fields {
@@ -150,7 +211,7 @@ impl<'p> ModuleBuilder<'p> {
             offset += layout.size;
         }
         let span = align.round_up(offset);
-        self.add_type(Some(name.to_string()), TypeInner::Struct { members, span })
+        self.add_type(Some(name), TypeInner::Struct { members, span })
     }
 
     /// Appends a constant value to the global expression arena.
@@ -199,13 +260,18 @@ impl<'p> ModuleBuilder<'p> {
     /// Declares the sema globals, every one or (`only`) those one entry
     /// point uses; resources get bindings in declaration order. `only` is
     /// for the one-entry GL modules, whose resources have no bindings.
+    /// Only the GPU module describes its resources (`resources`): a GL
+    /// module's interface is not kept.
     pub fn declare_globals(&mut self, only: Option<&std::collections::BTreeMap<sema::GlobalId, Span>>) {
         let mut next_binding = 0u32;
         let with_binding = self.flavor != Flavor::Gl;
+        let describe = self.flavor != Flavor::Gl;
         for (gid, g) in self.p.globals.iter().enumerate() {
             let span: naga::Span = g.span.into();
+            let first_resource = self.resources.len();
             if only.is_some_and(|uses| !uses.contains_key(&gid)) {
                 self.globals.push(GlobalSlot::Absent);
+                self.resource_of.push(first_resource..first_resource);
                 continue;
             }
             let slot = match &g.kind {
@@ -224,37 +290,38 @@ impl<'p> ModuleBuilder<'p> {
                         },
                         span,
                     );
-                    let dsl_type = self.show_ty(&g.ty);
-                    self.resource_of.insert(gid, vec![self.resources.len()]);
-                    self.resources.push(Resource {
-                        name: g.name.clone(),
-                        span: g.span,
-                        kind: ResourceKind::Uniform { ty, dsl_type },
-                        global: h,
-                        sampler_global: None,
-                        group: 0,
-                        binding,
-                        sampler_binding: None,
-                        texture_unit: None,
-                    });
+                    if describe {
+                        let dsl_type = self.show_ty(&g.ty);
+                        self.resources.push(Resource {
+                            name: g.name.clone(),
+                            span: g.span,
+                            kind: ResourceKind::Uniform { ty, dsl_type },
+                            global: h,
+                            sampler_global: None,
+                            group: 0,
+                            binding,
+                            sampler_binding: None,
+                            texture_unit: None,
+                        });
+                    }
                     GlobalSlot::Var(h)
                 }
                 GlobalKind::Sampler { kind, texture_unit, count } => {
                     let image_ty = self.add_type(None, TypeInner::Image { dim: kind.dim(), arrayed: kind.is_array(), class: kind.image_class() });
                     let sampler_ty = self.add_type(None, TypeInner::Sampler { comparison: kind.is_shadow() });
                     let first = self.sampler_elems.len();
-                    let mut indices = Vec::new();
                     for i in 0..count.unwrap_or(1) {
                         // An array element `texs[i]` is the global `texs_i`.
-                        let (name, gname) = match count {
-                            Some(_) => (format!("{}[{i}]", g.name), format!("{}_{i}", g.name)),
-                            None => (g.name.clone(), g.name.clone()),
+                        let gname = match count {
+                            Some(_) => format!("{}_{i}", g.name),
+                            None => g.name.clone(),
                         };
+                        let sampler_name = [&gname, "_sampler"].concat();
                         let (tb, sb) = (next_binding, next_binding + 1);
                         next_binding += 2;
                         let image = self.module.global_variables.append(
                             naga::GlobalVariable {
-                                name: Some(gname.clone()),
+                                name: Some(gname),
                                 space: naga::AddressSpace::Handle,
                                 binding: with_binding.then_some(naga::ResourceBinding { group: 0, binding: tb }),
                                 ty: image_ty,
@@ -265,7 +332,7 @@ impl<'p> ModuleBuilder<'p> {
                         );
                         let sampler = self.module.global_variables.append(
                             naga::GlobalVariable {
-                                name: Some(format!("{gname}_sampler")),
+                                name: Some(sampler_name),
                                 space: naga::AddressSpace::Handle,
                                 binding: with_binding.then_some(naga::ResourceBinding { group: 0, binding: sb }),
                                 ty: sampler_ty,
@@ -274,8 +341,14 @@ impl<'p> ModuleBuilder<'p> {
                             },
                             span,
                         );
-                        indices.push(self.resources.len());
                         self.sampler_elems.push((image, sampler));
+                        if !describe {
+                            continue;
+                        }
+                        let name = match count {
+                            Some(_) => format!("{}[{i}]", g.name),
+                            None => g.name.clone(),
+                        };
                         self.resources.push(Resource {
                             name,
                             span: g.span,
@@ -288,7 +361,6 @@ impl<'p> ModuleBuilder<'p> {
                             texture_unit: Some(*texture_unit + i),
                         });
                     }
-                    self.resource_of.insert(gid, indices);
                     GlobalSlot::Sampler { first, count: count.unwrap_or(1) }
                 }
                 GlobalKind::Io { .. } | GlobalKind::Builtin(_) => {
@@ -308,6 +380,7 @@ impl<'p> ModuleBuilder<'p> {
                 }
             };
             self.globals.push(slot);
+            self.resource_of.push(first_resource..self.resources.len());
         }
     }
 
@@ -329,15 +402,21 @@ impl<'p> ModuleBuilder<'p> {
     }
 }
 
-/// Validates a finished module; a failure is an internal compiler error
-/// located at the span naga reports.
-pub fn validate(module: &Module, flavor: Flavor) -> Result<naga::valid::ModuleInfo, Diagnostic> {
+/// The validator for modules of `flavor`. One validator can check several
+/// modules (naga resets it per module), keeping its tables' memory.
+pub fn validator(flavor: Flavor) -> naga::valid::Validator {
     use naga::valid::{Capabilities, ValidationFlags, Validator};
     let (flags, caps) = match flavor {
         Flavor::Gl => (ValidationFlags::all() - ValidationFlags::BINDINGS, naga::back::glsl::supported_capabilities()),
         Flavor::Gpu(_) => (ValidationFlags::all(), Capabilities::default()),
     };
-    Validator::new(flags, caps).validate(module).map_err(|e| {
+    Validator::new(flags, caps)
+}
+
+/// Validates a finished module with a validator from [`validator`]`(flavor)`;
+/// a failure is an internal compiler error located at the span naga reports.
+pub fn validate(validator: &mut naga::valid::Validator, module: &Module, flavor: Flavor) -> Result<naga::valid::ModuleInfo, Diagnostic> {
+    validator.validate(module).map_err(|e| {
         let span = e.spans().next().map(|(s, _)| Span::from(*s)).filter(|s| !s.is_empty());
         let mut msg = e.as_inner().to_string();
         let mut src: Option<&dyn std::error::Error> = std::error::Error::source(e.as_inner());
