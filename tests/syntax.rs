@@ -20,10 +20,10 @@ impl Parsed {
             .items
             .iter()
             .map(|i| match i {
-                Item::Global(g) => g.name.name.clone(),
-                Item::Const(c) => c.name.name.clone(),
-                Item::Function(f) => f.name.name.clone(),
-                Item::Struct(s) => s.name.name.clone(),
+                Item::Global(g) => g.name.name.to_string(),
+                Item::Const(c) => c.name.name.to_string(),
+                Item::Function(f) => f.name.name.to_string(),
+                Item::Struct(s) => s.name.name.to_string(),
             })
             .collect()
     }

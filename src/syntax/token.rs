@@ -5,7 +5,10 @@
 //! define's value) and for `-D` values (they live in the `<command-line>`
 //! virtual file).
 
-use std::cell::Cell;
+use std::cell::{Cell, RefCell};
+use std::rc::Rc;
+
+use super::ast::Name;
 
 use crate::source::{SourceMap, Span};
 
@@ -325,11 +328,35 @@ pub(crate) struct Texts<'m> {
     map: &'m SourceMap,
     /// Global offsets of the start and end of the last file hit, and its text.
     last: Cell<(u32, u32, &'m str)>,
+    /// Shared copies of the texts of files that names were taken from, by
+    /// global offset of the file's start.
+    shared: RefCell<Vec<(u32, Rc<str>)>>,
 }
 
 impl<'m> Texts<'m> {
     pub fn new(map: &'m SourceMap) -> Self {
-        Texts { map, last: Cell::new((1, 0, "")) }
+        Texts { map, last: Cell::new((1, 0, "")), shared: RefCell::new(Vec::new()) }
+    }
+
+    /// The text of `span` as a [`Name`] that shares its file's text.
+    pub fn name(&self, span: Span) -> Name {
+        let text = self.get(span);
+        // `get` made span's file the last one hit, unless span is odd.
+        let (base, end, file) = self.last.get();
+        let inside = base <= span.start && span.start <= span.end && span.end <= end;
+        if !inside || !file.is_char_boundary((span.start - base) as usize) || !file.is_char_boundary((span.end - base) as usize) {
+            return Name::new(text);
+        }
+        let mut shared = self.shared.borrow_mut();
+        let rc = match shared.iter().find(|(b, _)| *b == base) {
+            Some((_, rc)) => rc.clone(),
+            None => {
+                let rc: Rc<str> = file.into();
+                shared.push((base, rc.clone()));
+                rc
+            }
+        };
+        Name::in_text(rc, span.start - base, span.end - base)
     }
 
     /// The same text as `map.slice(span)`.
