@@ -340,23 +340,41 @@ impl<'m> Texts<'m> {
 
     /// The text of `span` as a [`Name`] that shares its file's text.
     pub fn name(&self, span: Span) -> Name {
-        let text = self.get(span);
-        // `get` made span's file the last one hit, unless span is odd.
-        let (base, end, file) = self.last.get();
-        let inside = base <= span.start && span.start <= span.end && span.end <= end;
-        if !inside || !file.is_char_boundary((span.start - base) as usize) || !file.is_char_boundary((span.end - base) as usize) {
-            return Name::new(text);
+        // The file of the last name first: names come in long runs from one file.
+        if let Some((base, text)) = self.shared.borrow().last() {
+            if let Some(name) = Self::name_in(*base, text, span) {
+                return name;
+            }
         }
+        self.name_slow(span)
+    }
+
+    /// `span` as a range of `text` (which starts at global offset `base`), if it lies within it.
+    #[inline]
+    fn name_in(base: u32, text: &Rc<str>, span: Span) -> Option<Name> {
+        let start = span.start.checked_sub(base)?;
+        let end = span.end.checked_sub(base)?;
+        let ok = start <= end && text.is_char_boundary(start as usize) && text.is_char_boundary(end as usize);
+        ok.then(|| Name::in_text(text.clone(), start, end))
+    }
+
+    #[cold]
+    fn name_slow(&self, span: Span) -> Name {
+        let text = self.get(span);
+        // `get` made span's file the last one hit.
+        let (base, _, file) = self.last.get();
         let mut shared = self.shared.borrow_mut();
-        let rc = match shared.iter().find(|(b, _)| *b == base) {
-            Some((_, rc)) => rc.clone(),
+        let k = match shared.iter().position(|(b, _)| *b == base) {
+            Some(k) => k,
             None => {
-                let rc: Rc<str> = file.into();
-                shared.push((base, rc.clone()));
-                rc
+                shared.push((base, file.into()));
+                shared.len() - 1
             }
         };
-        Name::in_text(rc, span.start - base, span.end - base)
+        let last = shared.len() - 1;
+        shared.swap(k, last);
+        let (base, rc) = &shared[last];
+        Self::name_in(*base, rc, span).unwrap_or_else(|| Name::new(text))
     }
 
     /// The same text as `map.slice(span)`.
