@@ -1320,9 +1320,9 @@ impl<'a, 'd> Checker<'a, 'd> {
                 let ty = x.ty.clone();
                 mk(ExprKind::Unary(*op, Box::new(x)), ty)
             }
-            ast::ExprKind::Binary(op, l, r) => {
-                let l = self.check_expr(cx, l);
-                let r = self.check_expr(cx, r);
+            ast::ExprKind::Binary(op, lr) => {
+                let l = self.check_expr(cx, &lr.0);
+                let r = self.check_expr(cx, &lr.1);
                 if l.ty.is_error() || r.ty.is_error() {
                     return err_expr(span);
                 }

@@ -309,7 +309,8 @@ pub enum ExprKind {
     Bool(bool),
     Name(Ident),
     Unary(UnaryOp, Box<Expr>),
-    Binary(BinaryOp, Box<Expr>, Box<Expr>),
+    /// `lhs op rhs`: both operands in one allocation.
+    Binary(BinaryOp, Box<(Expr, Expr)>),
     /// `cond ? a : b`
     Ternary(Box<Expr>, Box<Expr>, Box<Expr>),
     /// `name(args)`: functions, builtins, constructors (`float3(...)`,

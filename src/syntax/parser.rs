@@ -977,7 +977,7 @@ impl<'m> Parser<'_, 'm> {
             self.bump();
             self.skip_nl();
             match self.binary(prec + 1) {
-                Ok(rhs) => lhs = Expr { span: lhs.span.to(rhs.span), kind: ExprKind::Binary(op, Box::new(lhs), Box::new(rhs)) },
+                Ok(rhs) => lhs = Expr { span: lhs.span.to(rhs.span), kind: ExprKind::Binary(op, Box::new((lhs, rhs))) },
                 Err(()) => break Err(()),
             }
         };
