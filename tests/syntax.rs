@@ -20,10 +20,10 @@ impl Parsed {
             .items
             .iter()
             .map(|i| match i {
-                Item::Global(g) => g.name.name.clone(),
-                Item::Const(c) => c.name.name.clone(),
-                Item::Function(f) => f.name.name.clone(),
-                Item::Struct(s) => s.name.name.clone(),
+                Item::Global(g) => g.name.name.to_string(),
+                Item::Const(c) => c.name.name.to_string(),
+                Item::Function(f) => f.name.name.to_string(),
+                Item::Struct(s) => s.name.name.to_string(),
             })
             .collect()
     }
@@ -267,9 +267,9 @@ fn statements_and_expressions() {
     let p = parse_str(&fs("let x = 1 + 2 * 3\nlet y = a || b && c ^^ d"));
     let f = p.function("main_fs");
     let StmtKind::Local { init: Some(e), .. } = &f.body.stmts[0].kind else { panic!() };
-    assert!(matches!(&e.kind, ExprKind::Binary(ast::BinaryOp::Add, _, r) if matches!(r.kind, ExprKind::Binary(ast::BinaryOp::Mul, _, _))));
+    assert!(matches!(&e.kind, ExprKind::Binary(ast::BinaryOp::Add, lr) if matches!(lr.1.kind, ExprKind::Binary(ast::BinaryOp::Mul, _))));
     let StmtKind::Local { init: Some(e), .. } = &f.body.stmts[1].kind else { panic!() };
-    assert!(matches!(&e.kind, ExprKind::Binary(ast::BinaryOp::Or, _, r) if matches!(r.kind, ExprKind::Binary(ast::BinaryOp::Xor, _, _))));
+    assert!(matches!(&e.kind, ExprKind::Binary(ast::BinaryOp::Or, lr) if matches!(lr.1.kind, ExprKind::Binary(ast::BinaryOp::Xor, _))));
 }
 
 #[test]
@@ -492,7 +492,8 @@ fn conditionals_defines_and_guards() {
     let f = p.function("main_fs");
     let StmtKind::Assign { value, .. } = &f.body.stmts[0].kind else { panic!() };
     let ExprKind::Call { args, .. } = &value.kind else { panic!() };
-    let ExprKind::Binary(_, _, rhs) = &args[0].kind else { panic!() };
+    let ExprKind::Binary(_, lr) = &args[0].kind else { panic!() };
+    let rhs = &lr.1;
     let (file, line, _) = p.map.line_col(rhs.span).unwrap();
     assert_eq!(p.map.file(file).name, "<command-line>");
     assert_eq!(line, 2);

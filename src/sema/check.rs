@@ -154,13 +154,13 @@ fn entry_name(f: &ast::FunctionDecl) -> String {
             if arg.name.name == "name" {
                 match &arg.value {
                     Some(ast::Expr { kind: ast::ExprKind::Str(s), .. }) => return s.clone(),
-                    Some(ast::Expr { kind: ast::ExprKind::Name(id), .. }) => return id.name.clone(),
+                    Some(ast::Expr { kind: ast::ExprKind::Name(id), .. }) => return id.name.as_str().to_string(),
                     _ => {}
                 }
             }
         }
     }
-    f.name.name.clone()
+    f.name.name.as_str().to_string()
 }
 
 impl<'a, 'd> Checker<'a, 'd> {
@@ -229,7 +229,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             if let ast::Item::Struct(s) = item {
                 self.check_unique(&mut seen, &s.name);
                 self.structs.insert(&s.name.name, self.out.structs.len());
-                self.out.structs.push(StructDef { name: s.name.name.clone(), fields: Vec::new(), span: s.span });
+                self.out.structs.push(StructDef { name: s.name.name.as_str().to_string(), fields: Vec::new(), span: s.span });
             }
         }
         for item in items {
@@ -239,7 +239,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                     let mut fields: Vec<(String, Ty, Span)> = Vec::new();
                     for f in &s.fields {
                         let ty = self.resolve_type(&f.ty);
-                        if let Some((_, _, prev)) = fields.iter().find(|(n, _, _)| *n == f.name.name) {
+                        if let Some((_, _, prev)) = fields.iter().find(|(n, _, _)| *n == *f.name.name) {
                             let d = Diagnostic::error(format!("field `{}` is declared twice", f.name.name), f.name.span)
                                 .with_secondary(*prev, "first declared here");
                             self.diags.push(d);
@@ -248,7 +248,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                             let d = Diagnostic::error(format!("a struct field cannot have type `{}`", self.show(&ty)), f.ty.span);
                             self.diags.push(d);
                         }
-                        fields.push((f.name.name.clone(), ty, f.name.span));
+                        fields.push((f.name.name.as_str().to_string(), ty, f.name.span));
                     }
                     if fields.is_empty() {
                         let d = Diagnostic::error(format!("struct `{}` has no fields", s.name.name), s.name.span);
@@ -530,7 +530,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                 }
             };
             self.globals.insert(&g.name.name, self.out.globals.len());
-            self.out.globals.push(Global { name: g.name.name.clone(), ty, kind, span: g.name.span });
+            self.out.globals.push(Global { name: g.name.name.as_str().to_string(), ty, kind, span: g.name.span });
         }
         // Automatic locations and units: the lowest free number, in declaration order.
         for (gid, key, count) in pending_auto {
@@ -908,7 +908,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             return None;
         }
         Some(Function {
-            name: decl.name.name.clone(),
+            name: decl.name.name.as_str().to_string(),
             params,
             locals: cx.locals,
             ret,
@@ -931,7 +931,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             self.diags.push(d);
         }
         let lid = cx.locals.len();
-        cx.locals.push(Local { name: id.name.clone(), ty, mutable, span: id.span });
+        cx.locals.push(Local { name: id.name.as_str().to_string(), ty, mutable, span: id.span });
         cx.declare(&id.name, lid);
         lid
     }
@@ -1320,9 +1320,9 @@ impl<'a, 'd> Checker<'a, 'd> {
                 let ty = x.ty.clone();
                 mk(ExprKind::Unary(*op, Box::new(x)), ty)
             }
-            ast::ExprKind::Binary(op, l, r) => {
-                let l = self.check_expr(cx, l);
-                let r = self.check_expr(cx, r);
+            ast::ExprKind::Binary(op, lr) => {
+                let l = self.check_expr(cx, &lr.0);
+                let r = self.check_expr(cx, &lr.1);
                 if l.ty.is_error() || r.ty.is_error() {
                     return err_expr(span);
                 }
@@ -1506,7 +1506,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             Ty::Error => err_expr(span),
             Ty::Struct(sid) => {
                 let fields = &self.out.structs[*sid].fields;
-                match fields.iter().position(|(n, _, _)| *n == name.name) {
+                match fields.iter().position(|(n, _, _)| *n == *name.name) {
                     Some(i) => {
                         let ty = fields[i].1.clone();
                         Expr { kind: ExprKind::Field(Box::new(b), i as u32), ty, span }

@@ -33,7 +33,11 @@ fn collect_names_depth<'e>(e: &'e Expr, out: &mut Vec<&'e str>, depth: usize) {
     match &e.kind {
         ExprKind::Name(id) => out.push(&id.name),
         ExprKind::Unary(_, x) | ExprKind::Paren(x) | ExprKind::Field(x, _) => collect_names_depth(x, out, d),
-        ExprKind::Binary(_, a, b) | ExprKind::Index(a, b) => {
+        ExprKind::Binary(_, ab) => {
+            collect_names_depth(&ab.0, out, d);
+            collect_names_depth(&ab.1, out, d);
+        }
+        ExprKind::Index(a, b) => {
             collect_names_depth(a, out, d);
             collect_names_depth(b, out, d);
         }
@@ -90,9 +94,9 @@ fn eval(e: &Expr, env: &dyn ConstEnv, depth: usize) -> Result<(ConstValue, Ty), 
             });
             r.map(|v| (v, ty)).ok_or_else(|| not_const(e, "this operation"))
         }
-        ExprKind::Binary(op, a, b) => {
-            let (va, ta) = eval(a, env, d)?;
-            let (vb, tb) = eval(b, env, d)?;
+        ExprKind::Binary(op, ab) => {
+            let (va, ta) = eval(&ab.0, env, d)?;
+            let (vb, tb) = eval(&ab.1, env, d)?;
             binary(*op, &va, &ta, &vb, &tb).map_err(|msg| Diagnostic::error(msg, e.span))
         }
         ExprKind::Ternary(c, a, b) => match eval(c, env, d)? {

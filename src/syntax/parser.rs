@@ -292,7 +292,7 @@ impl<'m> Parser<'_, 'm> {
         let t = self.peek();
         if t.kind == TokKind::Ident {
             self.bump();
-            return Ok(Ident { name: self.text(&t).to_string(), span: t.span });
+            return Ok(Ident { name: self.texts.name(t.span), span: t.span });
         }
         self.error_expected(t, what);
         Err(())
@@ -667,7 +667,7 @@ impl<'m> Parser<'_, 'm> {
             return Err(());
         }
         self.bump();
-        let ty = TypeExpr { kind: TypeExprKind::Named(Ident { name: self.text(&t).to_string(), span: t.span }), span: t.span };
+        let ty = TypeExpr { kind: TypeExprKind::Named(Ident { name: self.texts.name(t.span), span: t.span }), span: t.span };
         let depth = self.depth;
         let r = self.array_suffixes(ty);
         self.depth = depth;
@@ -977,7 +977,7 @@ impl<'m> Parser<'_, 'm> {
             self.bump();
             self.skip_nl();
             match self.binary(prec + 1) {
-                Ok(rhs) => lhs = Expr { span: lhs.span.to(rhs.span), kind: ExprKind::Binary(op, Box::new(lhs), Box::new(rhs)) },
+                Ok(rhs) => lhs = Expr { span: lhs.span.to(rhs.span), kind: ExprKind::Binary(op, Box::new((lhs, rhs))) },
                 Err(()) => break Err(()),
             }
         };
@@ -1128,7 +1128,7 @@ impl<'m> Parser<'_, 'm> {
 
     fn name_or_call(&mut self, t: Token) -> PResult<Expr> {
         self.bump();
-        let name = Ident { name: self.text(&t).to_string(), span: t.span };
+        let name = Ident { name: self.texts.name(t.span), span: t.span };
         let next = self.peek();
         if next.is(P::Lt) && name.name == "fixed_array" {
             self.bump();

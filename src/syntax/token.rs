@@ -5,7 +5,10 @@
 //! define's value) and for `-D` values (they live in the `<command-line>`
 //! virtual file).
 
-use std::cell::Cell;
+use std::cell::{Cell, RefCell};
+use std::rc::Rc;
+
+use super::ast::Name;
 
 use crate::source::{SourceMap, Span};
 
@@ -325,11 +328,53 @@ pub(crate) struct Texts<'m> {
     map: &'m SourceMap,
     /// Global offsets of the start and end of the last file hit, and its text.
     last: Cell<(u32, u32, &'m str)>,
+    /// Shared copies of the texts of files that names were taken from, by
+    /// global offset of the file's start.
+    shared: RefCell<Vec<(u32, Rc<str>)>>,
 }
 
 impl<'m> Texts<'m> {
     pub fn new(map: &'m SourceMap) -> Self {
-        Texts { map, last: Cell::new((1, 0, "")) }
+        Texts { map, last: Cell::new((1, 0, "")), shared: RefCell::new(Vec::new()) }
+    }
+
+    /// The text of `span` as a [`Name`] that shares its file's text.
+    pub fn name(&self, span: Span) -> Name {
+        // The file of the last name first: names come in long runs from one file.
+        if let Some((base, text)) = self.shared.borrow().last() {
+            if let Some(name) = Self::name_in(*base, text, span) {
+                return name;
+            }
+        }
+        self.name_slow(span)
+    }
+
+    /// `span` as a range of `text` (which starts at global offset `base`), if it lies within it.
+    #[inline]
+    fn name_in(base: u32, text: &Rc<str>, span: Span) -> Option<Name> {
+        let start = span.start.checked_sub(base)?;
+        let end = span.end.checked_sub(base)?;
+        let ok = start <= end && text.is_char_boundary(start as usize) && text.is_char_boundary(end as usize);
+        ok.then(|| Name::in_text(text.clone(), start, end))
+    }
+
+    #[cold]
+    fn name_slow(&self, span: Span) -> Name {
+        let text = self.get(span);
+        // `get` made span's file the last one hit.
+        let (base, _, file) = self.last.get();
+        let mut shared = self.shared.borrow_mut();
+        let k = match shared.iter().position(|(b, _)| *b == base) {
+            Some(k) => k,
+            None => {
+                shared.push((base, file.into()));
+                shared.len() - 1
+            }
+        };
+        let last = shared.len() - 1;
+        shared.swap(k, last);
+        let (base, rc) = &shared[last];
+        Self::name_in(*base, rc, span).unwrap_or_else(|| Name::new(text))
     }
 
     /// The same text as `map.slice(span)`.
