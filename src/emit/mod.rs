@@ -201,22 +201,42 @@ pub(crate) mod text {
         out
     }
 
-    /// Replaces each range of `s` with its text, in place. Ranges must not
-    /// overlap (an overlapping one is skipped). Each edit moves the text
-    /// after it, which is cheaper than a copy for the few edits made here
-    /// (one per uniform block, one per use of a renamed sampler).
+    /// Replaces each range of `s` with its text. Ranges must not overlap
+    /// (an overlapping one is skipped). A few edits are made in place, each
+    /// moving the text after it, which is cheaper than a copy for the one
+    /// per uniform block usual here; beyond [`IN_PLACE_EDITS`] (a sampler
+    /// renamed in a long program) the text is rebuilt once, so the cost
+    /// stays linear in its size.
     pub fn apply_edits<T: AsRef<str>>(s: &mut String, mut edits: Vec<(Range<usize>, T)>) {
         edits.sort_unstable_by_key(|(r, _)| r.start);
-        // Back to front, so that the ranges still to do keep their offsets.
-        let mut limit = s.len();
-        for (r, to) in edits.iter().rev() {
-            if r.end > limit {
+        if edits.len() <= IN_PLACE_EDITS {
+            // Back to front, so that the ranges still to do keep their offsets.
+            let mut limit = s.len();
+            for (r, to) in edits.iter().rev() {
+                if r.end > limit {
+                    continue;
+                }
+                s.replace_range(r.clone(), to.as_ref());
+                limit = r.start;
+            }
+            return;
+        }
+        let mut out = String::with_capacity(s.len() + edits.iter().map(|(_, t)| t.as_ref().len()).sum::<usize>());
+        let mut last = 0;
+        for (r, to) in &edits {
+            if r.start < last {
                 continue;
             }
-            s.replace_range(r.clone(), to.as_ref());
-            limit = r.start;
+            out.push_str(&s[last..r.start]);
+            out.push_str(to.as_ref());
+            last = r.end;
         }
+        out.push_str(&s[last..]);
+        *s = out;
     }
+
+    /// Above this many edits [`apply_edits`] rebuilds the text instead.
+    const IN_PLACE_EDITS: usize = 8;
 
     /// Replaces every whole identifier `from` with `to`, for each pair.
     pub fn replace_idents(s: &mut String, renames: &[(&str, &str)]) {
@@ -250,5 +270,16 @@ mod tests {
         let found = idents_containing(s, &Finder::new("_block"));
         assert_eq!(found, [(0, "x_block"), (10, "a_block_0V"), (22, "a_blocky_block")]);
         assert_eq!(idents_containing("uniform highp sampler2DShadow s;", &Finder::new("sampler")), [(14, "sampler2DShadow")]);
+    }
+
+    #[test]
+    fn many_edits_rebuild_the_text_with_the_same_result() {
+        let s: String = (0..40).map(|i| format!("s_tex{} + t_s_tex * s_tex;\n", i % 3)).collect();
+        let mut r = s.clone();
+        replace_idents(&mut r, &[("s_tex", "shadow_map")]);
+        assert_eq!(r, s.replace("t_s_tex", "KEEP").replace("s_tex", "shadow_map").replace("KEEP", "t_s_tex").replace("shadow_map0", "s_tex0").replace("shadow_map1", "s_tex1").replace("shadow_map2", "s_tex2"));
+        let mut few = "s_tex + s_tex".to_string();
+        replace_idents(&mut few, &[("s_tex", "m")]);
+        assert_eq!(few, "m + m");
     }
 }
