@@ -198,7 +198,7 @@ pub const COMPILER_STACK_SIZE: usize = 32 << 20;
 /// between threads (and cores) costs. Unoptimised builds need more than a
 /// 2 MiB thread has and start a [`COMPILER_STACK_SIZE`] thread instead.
 /// (A build with debug assertions off *and* no optimisation would be
-/// misjudged; cargo's profiles never combine them.)
+/// misjudged; cargo's default profiles never combine them.)
 const RUNS_ON_CALLERS_STACK: bool = !cfg!(debug_assertions);
 
 thread_local! {
