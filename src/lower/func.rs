@@ -102,7 +102,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
         let l = &self.sema_locals[i];
         let ty = self.m.ty(&l.ty);
         let idx = self.func.arguments.len() as u32;
-        self.func.arguments.push(naga::FunctionArgument { name: Some(l.name.clone()), ty, binding: None });
+        self.func.arguments.push(naga::FunctionArgument { name: Some(l.name.as_str().to_owned()), ty, binding: None });
         let h = self.append_plain(E::FunctionArgument(idx), l.span);
         self.locals[i] = LocalSlot::Value(h);
     }
@@ -264,7 +264,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
                 let l = &self.sema_locals[*local];
                 if l.mutable {
                     let ty = self.m.ty(&l.ty);
-                    let var = self.func.local_variables.append(naga::LocalVariable { name: Some(l.name.clone()), ty, init: None }, span(l.span));
+                    let var = self.func.local_variables.append(naga::LocalVariable { name: Some(l.name.as_str().to_owned()), ty, init: None }, span(l.span));
                     self.locals[*local] = LocalSlot::Var(var);
                     let ptr = self.append_plain(E::LocalVariable(var), *sp);
                     let value = match init {
@@ -275,7 +275,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
                 } else if let Some(e) = init {
                     let h = self.expr(e, block);
                     if self.is_emitted(h) {
-                        self.func.named_expressions.entry(h).or_insert_with(|| l.name.clone());
+                        self.func.named_expressions.entry(h).or_insert_with(|| l.name.as_str().to_owned());
                     }
                     self.locals[*local] = LocalSlot::Value(h);
                 }
@@ -321,7 +321,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
             Stmt::For { var, start, end, body, span: sp } => {
                 let l = &self.sema_locals[*var];
                 let ty = self.m.ty(&l.ty);
-                let v = self.func.local_variables.append(naga::LocalVariable { name: Some(l.name.clone()), ty, init: None }, span(l.span));
+                let v = self.func.local_variables.append(naga::LocalVariable { name: Some(l.name.as_str().to_owned()), ty, init: None }, span(l.span));
                 self.locals[*var] = LocalSlot::Var(v);
                 let ptr = self.append_plain(E::LocalVariable(v), *sp);
                 let s0 = self.expr(start, block);
@@ -548,7 +548,8 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
                 };
                 self.append(E::Unary { op, expr: v }, s)
             }
-            ExprKind::Binary(op, l, r) => {
+            ExprKind::Binary(op, lr) => {
+                let (l, r) = &**lr;
                 let lh = self.expr(l, block);
                 let rh = self.expr(r, block);
                 self.binary(*op, lh, &l.ty, rh, &r.ty, s)

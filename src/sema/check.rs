@@ -931,7 +931,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             self.diags.push(d);
         }
         let lid = cx.locals.len();
-        cx.locals.push(Local { name: id.name.as_str().to_string(), ty, mutable, span: id.span });
+        cx.locals.push(Local { name: id.name.clone(), ty, mutable, span: id.span });
         cx.declare(&id.name, lid);
         lid
     }
@@ -1340,7 +1340,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                                 }
                             }
                         }
-                        mk(ExprKind::Binary(*op, Box::new(l), Box::new(r)), ty)
+                        mk(ExprKind::Binary(*op, Box::new((l, r))), ty)
                     }
                     None => err_expr(span),
                 }
@@ -1997,14 +1997,14 @@ fn unary_text(op: UnaryOp) -> &'static str {
 }
 
 /// Component indices of a swizzle (`xyzw` or `rgba`, not mixed).
-fn parse_swizzle(s: &str, width: u8) -> Result<Vec<u8>, String> {
+fn parse_swizzle(s: &str, width: u8) -> Result<Components, String> {
     if s.is_empty() || s.len() > 4 {
         return Err("a swizzle has 1 to 4 components".into());
     }
     // Bytes: a string all of whose bytes are in a set is ASCII.
     let sets: [&[u8; 4]; 3] = [b"xyzw", b"rgba", b"stpq"];
     let set = sets.iter().find(|set| s.bytes().all(|c| set.contains(&c))).ok_or_else(|| "use components from one of xyzw, rgba or stpq".to_string())?;
-    let mut comps = Vec::with_capacity(s.len());
+    let mut comps = Components::new();
     for c in s.bytes() {
         let i = set.iter().position(|&x| x == c).expect("checked above") as u8;
         if i >= width {

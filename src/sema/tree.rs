@@ -163,7 +163,7 @@ pub struct Const {
 
 #[derive(Debug)]
 pub struct Local {
-    pub name: String,
+    pub name: crate::syntax::ast::Name,
     pub ty: Ty,
     pub mutable: bool,
     pub span: Span,
@@ -206,6 +206,9 @@ pub struct Expr {
     pub span: Span,
 }
 
+/// A swizzle's component indices (0-3), held inline: no allocation.
+pub type Components = arrayvec::ArrayVec<u8, 4>;
+
 #[derive(Debug)]
 pub enum ExprKind {
     Float(f64),
@@ -218,7 +221,8 @@ pub enum ExprKind {
     Unary(UnaryOp, Box<Expr>),
     /// Operands already have matching shapes where naga needs them (a
     /// scalar operand of a vector op is splatted in lowering).
-    Binary(BinaryOp, Box<Expr>, Box<Expr>),
+    /// Both operands in one allocation.
+    Binary(BinaryOp, Box<(Expr, Expr)>),
     Select { cond: Box<Expr>, accept: Box<Expr>, reject: Box<Expr> },
     Call(FuncId, Vec<Expr>),
     Builtin(Builtin, Vec<Expr>),
@@ -227,7 +231,7 @@ pub enum ExprKind {
     /// columns or scalars, structs, arrays.
     Construct(Vec<Expr>),
     /// Swizzle with 1 to 4 components (1 = a single component).
-    Swizzle(Box<Expr>, Vec<u8>),
+    Swizzle(Box<Expr>, Components),
     /// Struct field by index.
     Field(Box<Expr>, u32),
     Index(Box<Expr>, Box<Expr>),
