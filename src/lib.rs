@@ -270,8 +270,13 @@ fn run(mut sources: SourceMap, root: source::FileId, opts: &Options) -> Compilat
     };
     let program = syntax::parse(&mut sources, root, &parse_opts, &mut diags);
     let checked = if diags.has_errors() { None } else { sema::check(&program, &mut diags) };
+    // Each tree is dropped as soon as the next stage has been built from
+    // it, so the next stage's allocations reuse its memory, still in cache.
+    drop(program);
     let result = checked.filter(|_| !diags.has_errors()).and_then(|checked| {
-        let lowered = match lower::lower(&checked, opts.conventions) {
+        let lowered = lower::lower(&checked, opts.conventions);
+        drop(checked);
+        let lowered = match lowered {
             Ok(l) => l,
             Err(d) => {
                 diags.push(d);
