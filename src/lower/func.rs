@@ -1,9 +1,9 @@
 //! Function bodies: checked statements and expressions to naga IR.
 //!
 //! Expressions that naga wants covered by `Statement::Emit` are appended
-//! inside the running emit range; the others (literals, constants,
-//! variables, arguments, call results) close the range and are appended
-//! outside it. Every statement push flushes the pending ranges first.
+//! while the emitter runs; the others (literals, constants, variables,
+//! arguments, call results) are appended with the emitter paused. Every
+//! statement push flushes the pending range first.
 
 use naga::{Block, Expression as E, Handle, Statement};
 
@@ -52,10 +52,7 @@ pub struct EntryOutputs {
 pub struct FnBuilder<'m, 'p> {
     pub m: &'m mut ModuleBuilder<'p>,
     pub func: naga::Function,
-    /// Start of the running emit range: the expressions from here on are
-    /// covered by the next `Emit` (naga's `Emitter`, without its checks, as
-    /// a range is closed for every plain expression).
-    emit_start: usize,
+    emitter: naga::proc::Emitter,
     locals: Vec<LocalSlot>,
     sema_locals: &'p [sema::Local],
     kind: FnKind,
@@ -93,7 +90,9 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
         let mut func = naga::Function { name: Some(name.to_string()), ..Default::default() };
         // A `let` names its expression: room for all of them up front.
         func.named_expressions.reserve(sema_locals.iter().filter(|l| !l.mutable).count());
-        FnBuilder { m, func, emit_start: 0, locals: vec![LocalSlot::Unset; sema_locals.len()], sema_locals, kind, pending: Vec::new(), vertex_lod: false }
+        let mut b = FnBuilder { m, func, emitter: Default::default(), locals: vec![LocalSlot::Unset; sema_locals.len()], sema_locals, kind, pending: Vec::new(), vertex_lod: false };
+        b.emitter.start(&b.func.expressions);
+        b
     }
 
     /// Declares parameter `i` as a function argument. Parameters are
@@ -110,29 +109,14 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
     /// Appends an expression that must not be emitted.
     fn append_plain(&mut self, e: E, s: crate::source::Span) -> Handle<E> {
         // Close the running range, append outside it, and start again.
-        if let Some(emit) = self.close_emit() {
-            // The range ends before `h`; it is pushed with the next statement.
-            self.pending.push(emit);
-        }
+        let pending = self.emitter.finish(&self.func.expressions);
         let h = self.func.expressions.append(e, span(s));
-        self.emit_start = self.func.expressions.len();
+        self.emitter.start(&self.func.expressions);
+        if let Some((stmt, sp)) = pending {
+            // The range ends before `h`; it is pushed with the next statement.
+            self.pending.push((stmt, sp));
+        }
         h
-    }
-
-    /// The `Emit` of the running range (none if it is empty), spanning its
-    /// expressions as naga's `Emitter::finish` does; a new range starts.
-    fn close_emit(&mut self) -> Option<(Statement, naga::Span)> {
-        let exprs = &self.func.expressions;
-        if self.emit_start == exprs.len() {
-            return None;
-        }
-        let range = exprs.range_from(self.emit_start);
-        let mut sp = naga::Span::default();
-        for h in range.clone() {
-            sp.subsume(exprs.get_span(h));
-        }
-        self.emit_start = exprs.len();
-        Some((Statement::Emit(range), sp))
     }
 
     /// Appends an expression that must be emitted.
@@ -152,13 +136,15 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
                 block.push(stmt, sp);
             }
         }
-        if let Some((stmt, sp)) = self.close_emit() {
+        if let Some((stmt, sp)) = self.emitter.finish(&self.func.expressions) {
             block.push(stmt, sp);
         }
+        self.emitter.start(&self.func.expressions);
     }
 
     pub fn finish(mut self, mut body: Block, ret: Option<naga::FunctionResult>) -> naga::Function {
         self.flush(&mut body);
+        let _ = self.emitter.finish(&self.func.expressions);
         self.func.body = body;
         self.func.result = ret;
         self.func
