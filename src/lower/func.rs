@@ -131,10 +131,8 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
     }
 
     fn flush(&mut self, block: &mut Block) {
-        if !self.pending.is_empty() {
-            for (stmt, sp) in self.pending.drain(..) {
-                block.push(stmt, sp);
-            }
+        for (stmt, sp) in self.pending.drain(..) {
+            block.push(stmt, sp);
         }
         if let Some((stmt, sp)) = self.emitter.finish(&self.func.expressions) {
             block.push(stmt, sp);

@@ -477,12 +477,8 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
     }
     for (i, (gid, binding, ty, to_int)) in args.iter().enumerate() {
         let g = &p.globals[*gid];
-        // `in_` and the name without its `gl_` prefixes.
-        let mut bare = g.name.as_str();
-        while let Some(rest) = bare.strip_prefix("gl_") {
-            bare = rest;
-        }
-        b.func.arguments.push(naga::FunctionArgument { name: Some(["in_", bare].concat()), ty: *ty, binding: Some(binding.clone()) });
+        let name = ["in_", g.name.trim_start_matches("gl_")].concat();
+        b.func.arguments.push(naga::FunctionArgument { name: Some(name), ty: *ty, binding: Some(binding.clone()) });
         let GlobalSlot::Var(h) = b.m.globals[*gid] else { continue };
         b.store_argument(&mut body, h, i as u32, *to_int, g.span);
     }
