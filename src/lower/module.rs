@@ -122,26 +122,9 @@ impl<'p> ModuleBuilder<'p> {
         if self.flavor == Flavor::Gl {
             return String::new();
         }
-        // The common spellings without the formatting machinery; the same
-        // text as `TyDisplay`.
-        let digit = |n: u8| char::from(b'0' + n);
-        match *ty {
-            Ty::Scalar(s) => return s.name().to_string(),
-            Ty::Vector(s, n @ 2..=4) => {
-                let mut out = String::with_capacity(6);
-                out.push_str(s.name());
-                out.push(digit(n));
-                return out;
-            }
-            Ty::Matrix(c @ 2..=4, r @ 2..=4) => {
-                let mut out = String::with_capacity(8);
-                out.push_str("float");
-                out.push(digit(c));
-                out.push('x');
-                out.push(digit(r));
-                return out;
-            }
-            _ => {}
+        // The common spellings without the formatting machinery.
+        if let Some(name) = ty.builtin_name() {
+            return name.to_string();
         }
         crate::sema::types::TyDisplay { ty, struct_names: &self.struct_names }.to_string()
     }

@@ -55,7 +55,33 @@ pub const INT: Ty = Ty::Scalar(Scalar::Int);
 pub const UINT: Ty = Ty::Scalar(Scalar::Uint);
 pub const BOOL: Ty = Ty::Scalar(Scalar::Bool);
 
+/// Vector type names by scalar (`Scalar` order) and size 2-4.
+const VECTOR_NAMES: [[&str; 3]; 4] = [
+    ["float2", "float3", "float4"],
+    ["int2", "int3", "int4"],
+    ["uint2", "uint3", "uint4"],
+    ["bool2", "bool3", "bool4"],
+];
+
+/// Matrix type names by columns and rows 2-4.
+const MATRIX_NAMES: [[&str; 3]; 3] = [
+    ["float2x2", "float2x3", "float2x4"],
+    ["float3x2", "float3x3", "float3x4"],
+    ["float4x2", "float4x3", "float4x4"],
+];
+
 impl Ty {
+    /// The spelling of a scalar, vector or matrix type, as [`TyDisplay`]
+    /// writes it, without formatting (lowering spells many of them).
+    pub fn builtin_name(&self) -> Option<&'static str> {
+        match *self {
+            Ty::Scalar(s) => Some(s.name()),
+            Ty::Vector(s, n @ 2..=4) => Some(VECTOR_NAMES[s as usize][n as usize - 2]),
+            Ty::Matrix(c @ 2..=4, r @ 2..=4) => Some(MATRIX_NAMES[c as usize - 2][r as usize - 2]),
+            _ => None,
+        }
+    }
+
     /// A scalar or vector of `scalar` with `n` components (1 = scalar).
     pub fn vec(scalar: Scalar, n: u8) -> Ty {
         if n == 1 {
@@ -131,6 +157,9 @@ pub struct TyDisplay<'a> {
 
 impl fmt::Display for TyDisplay<'_> {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        if let Some(name) = self.ty.builtin_name() {
+            return f.write_str(name);
+        }
         match self.ty {
             Ty::Scalar(s) => f.write_str(s.name()),
             Ty::Vector(s, n) => write!(f, "{}{}", s.name(), n),
@@ -141,5 +170,26 @@ impl fmt::Display for TyDisplay<'_> {
             Ty::Void => f.write_str("void"),
             Ty::Error => f.write_str("{error}"),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn builtin_names_spell_scalar_vector_and_matrix_types() {
+        for s in [Scalar::Float, Scalar::Int, Scalar::Uint, Scalar::Bool] {
+            assert_eq!(Ty::Scalar(s).builtin_name(), Some(s.name()));
+            for n in 2..=4u8 {
+                assert_eq!(Ty::Vector(s, n).builtin_name(), Some(format!("{}{n}", s.name()).as_str()));
+            }
+        }
+        for c in 2..=4u8 {
+            for r in 2..=4u8 {
+                assert_eq!(Ty::Matrix(c, r).builtin_name(), Some(format!("float{c}x{r}").as_str()));
+            }
+        }
+        assert_eq!(Ty::Struct(0).builtin_name(), None);
     }
 }
