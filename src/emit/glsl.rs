@@ -194,7 +194,7 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
     if !uniforms.is_empty() {
         let idents = text::idents_containing(&out, &BLOCK);
         for (handle, naga_block) in uniforms {
-            let mut at = idents.iter().filter(|(_, id)| *id == naga_block.as_str()).map(|&(i, _)| i..i + naga_block.len());
+            let at = idents.iter().filter(|(_, id)| *id == naga_block.as_str()).map(|&(i, _)| i..i + naga_block.len());
             let instance = at
                 .clone()
                 .next()
@@ -207,7 +207,7 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
             if renames.iter().any(|(_, n)| *n == new) {
                 return Err(bug(format!("two uniform blocks would both be named `{new}`")));
             }
-            renames.extend(at.by_ref().map(|r| (r, new.clone())));
+            renames.extend(at.map(|r| (r, new.clone())));
             names.blocks.insert(em.original(*handle, ep)?, new);
         }
     }
@@ -255,7 +255,6 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
             map.insert(var.location, name);
         }
     }
-    drop(declared);
 
     if profile == Profile::Es300 {
         add_es_precision(&mut out).ok_or_else(|| bug("no `precision highp int;` line to extend".into()))?;
@@ -302,7 +301,6 @@ fn add_es_precision(src: &mut String) -> Option<()> {
             let _ = writeln!(lines, "precision highp {ty};");
         }
     }
-    drop(used);
     src.insert_str(at, &lines);
     Some(())
 }

@@ -202,31 +202,32 @@ pub(crate) mod text {
     }
 
     /// Replaces each range of `s` with its text. Ranges must not overlap
-    /// (an overlapping one is skipped). A few edits are made in place, each
-    /// moving the text after it, which is cheaper than a copy for the one
-    /// per uniform block usual here; beyond [`IN_PLACE_EDITS`] (a sampler
-    /// renamed in a long program) the text is rebuilt once, so the cost
-    /// stays linear in its size.
+    /// (of two that do, the later one is skipped). A few edits are made in
+    /// place, each moving the text after it, which is cheaper than a copy
+    /// for the one per uniform block usual here; beyond [`IN_PLACE_EDITS`]
+    /// (a sampler renamed in a long program) the text is rebuilt once, so
+    /// the cost stays linear in its size.
     pub fn apply_edits<T: AsRef<str>>(s: &mut String, mut edits: Vec<(Range<usize>, T)>) {
         edits.sort_unstable_by_key(|(r, _)| r.start);
+        // Whole identifiers never overlap; skip defensively, one rule for both ways.
+        let mut end = 0;
+        edits.retain(|(r, _)| {
+            let keep = r.start >= end;
+            if keep {
+                end = r.end;
+            }
+            keep
+        });
         if edits.len() <= IN_PLACE_EDITS {
             // Back to front, so that the ranges still to do keep their offsets.
-            let mut limit = s.len();
             for (r, to) in edits.iter().rev() {
-                if r.end > limit {
-                    continue;
-                }
                 s.replace_range(r.clone(), to.as_ref());
-                limit = r.start;
             }
             return;
         }
         let mut out = String::with_capacity(s.len() + edits.iter().map(|(_, t)| t.as_ref().len()).sum::<usize>());
         let mut last = 0;
         for (r, to) in &edits {
-            if r.start < last {
-                continue;
-            }
             out.push_str(&s[last..r.start]);
             out.push_str(to.as_ref());
             last = r.end;
@@ -281,5 +282,18 @@ mod tests {
         let mut few = "s_tex + s_tex".to_string();
         replace_idents(&mut few, &[("s_tex", "m")]);
         assert_eq!(few, "m + m");
+    }
+
+    #[test]
+    fn overlapping_edits_keep_the_first_in_place_and_rebuilt() {
+        let mut few = "abcdef".to_string();
+        apply_edits(&mut few, vec![(2..5, "Y"), (0..3, "X")]);
+        assert_eq!(few, "Xdef");
+        let text = "abcdef".repeat(10);
+        let mut many = text.clone();
+        let mut edits: Vec<(std::ops::Range<usize>, &str)> = (0..10).map(|k| (6 * k..6 * k + 3, "X")).collect();
+        edits.push((2..5, "Y"));
+        apply_edits(&mut many, edits);
+        assert_eq!(many, "Xdef".repeat(10));
     }
 }
