@@ -1,0 +1,590 @@
+//! Declarations: structs, shader globals (locations, texture units, uniform
+//! layouts), type expressions and `let` constants.
+
+use super::*;
+
+/// Size and alignment of a type in a WGSL uniform block (natural layout) and
+/// under GLSL std140.
+pub(super) struct UniformLayout {
+    size: u32,
+    align: u32,
+    std_size: u32,
+    std_align: u32,
+}
+
+impl<'a, 'd> Checker<'a, 'd> {
+    // ---------------------------------------------------------------- declarations
+
+    pub(super) fn declare(&mut self) {
+        let items = &self.ast.items;
+        // Sized once: these tables are filled in one go.
+        let mut counts = [0usize; 4];
+        for item in items {
+            counts[match item {
+                ast::Item::Struct(_) => 0,
+                ast::Item::Global(_) => 1,
+                ast::Item::Const(_) => 2,
+                ast::Item::Function(_) => 3,
+            }] += 1;
+        }
+        self.structs.reserve(counts[0]);
+        self.globals.reserve(counts[1]);
+        self.const_decls.reserve(counts[2]);
+        self.consts.reserve(counts[2]);
+        self.funcs.reserve(counts[3]);
+        let mut seen: FxHashMap<&'a str, Span> = FxHashMap::with_capacity_and_hasher(items.len(), Default::default());
+        // Struct names first, so fields and globals can use any struct.
+        for item in items {
+            if let ast::Item::Struct(s) = item {
+                self.check_unique(&mut seen, &s.name);
+                self.structs.insert(&s.name.name, self.out.structs.len());
+                self.out.structs.push(StructDef { name: s.name.name.as_str().to_string(), fields: Vec::new(), span: s.span });
+            }
+        }
+        for item in items {
+            match item {
+                ast::Item::Struct(s) => {
+                    let id = self.structs[s.name.name.as_str()];
+                    let mut fields: Vec<(String, Ty, Span)> = Vec::new();
+                    for f in &s.fields {
+                        let ty = self.resolve_type(&f.ty);
+                        if let Some((_, _, prev)) = fields.iter().find(|(n, _, _)| *n == *f.name.name) {
+                            let d = Diagnostic::error(format!("field `{}` is declared twice", f.name.name), f.name.span)
+                                .with_secondary(*prev, "first declared here");
+                            self.diags.push(d);
+                        }
+                        if !ty.is_value() && !ty.is_error() {
+                            let d = Diagnostic::error(format!("a struct field cannot have type `{}`", self.show(&ty)), f.ty.span);
+                            self.diags.push(d);
+                        }
+                        fields.push((f.name.name.as_str().to_string(), ty, f.name.span));
+                    }
+                    if fields.is_empty() {
+                        let d = Diagnostic::error(format!("struct `{}` has no fields", s.name.name), s.name.span);
+                        self.diags.push(d);
+                    }
+                    self.out.structs[id].fields = fields;
+                }
+                ast::Item::Const(k) => {
+                    self.check_unique(&mut seen, &k.name);
+                    self.const_decls.insert(&k.name.name, k);
+                }
+                ast::Item::Function(f) => {
+                    self.check_unique(&mut seen, &f.name);
+                    match is_entry(f) {
+                        Some(stage) => {
+                            if !f.params.is_empty() || f.ret.is_some() {
+                                let d = Diagnostic::error(format!("entry point `{}` cannot take parameters or return a value", f.name.name), f.name.span)
+                                    .with_note("entry points read `@in`/`@inout` globals and write `@out`/`@inout` globals and `gl_Position`");
+                                self.diags.push(d);
+                            }
+                            self.entry_decls.push((f, stage));
+                        }
+                        None => {
+                            self.funcs.insert(&f.name.name, FuncState::Unchecked(self.fn_decls.len()));
+                            self.fn_decls.push(f);
+                        }
+                    }
+                }
+                ast::Item::Global(_) => {}
+            }
+        }
+        self.check_struct_recursion();
+        self.declare_globals(&mut seen);
+    }
+
+    /// Finds structs that contain themselves and structs nested deeper than
+    /// [`MAX_TYPE_DEPTH`], reporting each and clearing its fields so later
+    /// passes (which recurse through types) stay finite and shallow.
+    pub(super) fn check_struct_recursion(&mut self) {
+        // Struct ids a type mentions, looking through arrays, with the array
+        // levels on the way.
+        fn edges(ty: &Ty, arrays: usize, out: &mut Vec<(StructId, usize)>) -> usize {
+            match ty {
+                Ty::Struct(id) => {
+                    out.push((*id, arrays));
+                    0
+                }
+                Ty::Array(elem, _) => edges(elem, arrays + 1, out),
+                _ => arrays,
+            }
+        }
+        #[derive(Clone, Copy, PartialEq)]
+        enum State {
+            New,
+            Open,
+            Done(usize),
+        }
+        let n = self.out.structs.len();
+        let mut state = vec![State::New; n];
+        let mut bad: Vec<(StructId, bool)> = Vec::new();
+        // Iterative depth-first search: (struct, index of the next field edge).
+        for root in 0..n {
+            if state[root] != State::New {
+                continue;
+            }
+            let mut stack: Vec<(StructId, Vec<(StructId, usize)>, usize, usize)> = Vec::new();
+            let push = |id: StructId, structs: &[StructDef], state: &mut [State]| {
+                let mut es = Vec::new();
+                let mut depth = 1;
+                for (_, t, _) in &structs[id].fields {
+                    depth = depth.max(1 + edges(t, 0, &mut es));
+                }
+                state[id] = State::Open;
+                (id, es, 0, depth)
+            };
+            stack.push(push(root, &self.out.structs, &mut state));
+            while let Some(top) = stack.last_mut() {
+                let (id, es, next, depth) = top;
+                if let Some(&(child, arrays)) = es.get(*next) {
+                    *next += 1;
+                    match state[child] {
+                        State::Done(d) => *depth = (*depth).max(1 + arrays + d),
+                        State::Open => {
+                            if !bad.iter().any(|(b, _)| *b == child) {
+                                bad.push((child, true));
+                            }
+                        }
+                        State::New => {
+                            let frame = push(child, &self.out.structs, &mut state);
+                            stack.push(frame);
+                        }
+                    }
+                    continue;
+                }
+                let (id, d) = (*id, *depth);
+                state[id] = State::Done(d);
+                stack.pop();
+                if d > MAX_TYPE_DEPTH && !bad.iter().any(|(b, _)| *b == id) {
+                    bad.push((id, false));
+                }
+                if let Some(parent) = stack.last_mut() {
+                    let arrays = parent.1[parent.2 - 1].1;
+                    parent.3 = parent.3.max(1 + arrays + d);
+                }
+            }
+        }
+        bad.sort();
+        for (id, cycle) in bad {
+            let s = &self.out.structs[id];
+            let d = if cycle {
+                Diagnostic::error(format!("struct `{}` contains itself", s.name), s.span)
+            } else {
+                Diagnostic::error(format!("struct `{}` nests struct and array types deeper than the limit of {MAX_TYPE_DEPTH}", s.name), s.span)
+            };
+            self.diags.push(d);
+            for f in &mut self.out.structs[id].fields {
+                f.1 = Ty::Error;
+            }
+        }
+    }
+
+    pub(super) fn declare_globals(&mut self, seen: &mut FxHashMap<&'a str, Span>) {
+        // Explicit locations / texture units first, per interface class, so
+        // automatic ones fill the gaps.
+        let mut taken: FxHashMap<&'static str, FxHashMap<u32, Span>> = FxHashMap::default();
+        let mut pending_auto: Vec<(GlobalId, &'static str, u32)> = Vec::new();
+        let items = &self.ast.items;
+        for item in items {
+            let ast::Item::Global(g) = item else { continue };
+            self.check_unique(seen, &g.name);
+            if BuiltinVar::from_name(&g.name.name).is_some() || g.name.name.starts_with("gl_") {
+                let d = Diagnostic::error(format!("`{}` is reserved for builtin variables", g.name.name), g.name.span);
+                self.diags.push(d);
+            }
+            let ty = self.resolve_type(&g.ty);
+            let mut class: Option<(&'static str, Span)> = None;
+            let mut location: Option<(i64, Span)> = None;
+            let mut stage: Option<(i64, Span)> = None;
+            for q in &g.qualifiers {
+                let c = match &q.kind {
+                    ast::QualifierKind::Uniform => Some("uniform"),
+                    ast::QualifierKind::In => Some("in"),
+                    ast::QualifierKind::Out => Some("out"),
+                    ast::QualifierKind::InOut => Some("inout"),
+                    ast::QualifierKind::Location(l) => {
+                        if let Some(l) = l {
+                            location = Some((*l, q.span));
+                        }
+                        None
+                    }
+                    ast::QualifierKind::Stage(s) => {
+                        stage = Some((*s, q.span));
+                        None
+                    }
+                    ast::QualifierKind::Other(name) => {
+                        let d = Diagnostic::error(format!("unknown annotation `@{name}`"), q.span)
+                            .with_note("shader globals take @uniform, @in, @out, @inout, @location = N and @stage = N");
+                        self.diags.push(d);
+                        None
+                    }
+                };
+                if let Some(c) = c {
+                    if let Some((prev, prev_span)) = class {
+                        let d = Diagnostic::error(format!("`@{c}` conflicts with `@{prev}`"), q.span).with_secondary(prev_span, "already declared here");
+                        self.diags.push(d);
+                    } else {
+                        class = Some((c, q.span));
+                    }
+                }
+            }
+            if let Some(init) = &g.init {
+                let d = Diagnostic::error("shader globals cannot have an initialiser", init.span)
+                    .with_note("uniforms are set by the host; use a top-level `let` for a constant");
+                self.diags.push(d);
+            }
+            let Some((class, class_span)) = class else {
+                let d = Diagnostic::error(format!("`{}` has no shader qualifier", g.name.name), g.name.span);
+                self.diags.push(d);
+                continue;
+            };
+            let kind = match (class, &ty) {
+                ("uniform", Ty::Sampler(_)) | ("uniform", Ty::Array(..)) if ty.is_sampler_like() => {
+                    let (kind, count) = match &ty {
+                        Ty::Array(elem, n) => match **elem {
+                            Ty::Sampler(k) => (k, Some(*n)),
+                            _ => (SamplerKind::Sampler2D, Some(*n)),
+                        },
+                        Ty::Sampler(k) => (*k, None),
+                        _ => (SamplerKind::Sampler2D, None),
+                    };
+                    let n = count.unwrap_or(1);
+                    if let Some((_, span)) = location {
+                        self.diags.push(Diagnostic::error("`@location` does not apply to samplers; use `@stage = N` for the texture unit", span));
+                    }
+                    let unit = match stage {
+                        Some((s, span)) if !(0..32).contains(&s) || s + n as i64 > 32 => {
+                            let msg = if n > 1 {
+                                format!("texture units {s}..{} are out of range (0..=31)", s + n as i64 - 1)
+                            } else {
+                                format!("texture unit {s} is out of range (0..=31)")
+                            };
+                            self.diags.push(Diagnostic::error(msg, span));
+                            0
+                        }
+                        Some((s, span)) => {
+                            let map = taken.entry("stage").or_default();
+                            for u in s as u32..s as u32 + n {
+                                if let Some(prev) = map.get(&u) {
+                                    let d = Diagnostic::error(format!("texture unit {u} is used twice"), span).with_secondary(*prev, "first used here");
+                                    self.diags.push(d);
+                                    break;
+                                }
+                            }
+                            for u in s as u32..s as u32 + n {
+                                map.insert(u, span);
+                            }
+                            s as u32
+                        }
+                        None => {
+                            pending_auto.push((self.out.globals.len(), "stage", n));
+                            0
+                        }
+                    };
+                    GlobalKind::Sampler { kind, texture_unit: unit, count }
+                }
+                ("uniform", _) => {
+                    if let Some((_, span)) = location.or(stage) {
+                        self.diags.push(Diagnostic::error("uniform values take no `@location` or `@stage`", span));
+                    }
+                    if !ty.is_error() {
+                        if let Some(msg) = self.uniform_type_problem(&ty) {
+                            self.diags.push(Diagnostic::error(msg, g.ty.span));
+                        }
+                    }
+                    GlobalKind::Uniform
+                }
+                (c, _) => {
+                    let io = match c {
+                        "in" => IoKind::In,
+                        "out" => IoKind::Out,
+                        _ => IoKind::InOut,
+                    };
+                    if let Some((_, span)) = stage {
+                        self.diags.push(Diagnostic::error("`@stage` applies only to samplers", span));
+                    }
+                    let ok = matches!(ty, Ty::Scalar(s) | Ty::Vector(s, _) if s != Scalar::Bool) || ty.is_error();
+                    if !ok {
+                        let d = Diagnostic::error(format!("`@{c}` variables must be numeric scalars or vectors, not `{}`", self.show(&ty)), g.ty.span);
+                        self.diags.push(d);
+                    }
+                    let key = match io {
+                        IoKind::In => "in",
+                        IoKind::Out => "out",
+                        IoKind::InOut => "inout",
+                    };
+                    let loc = match location {
+                        Some((l, span)) if !(0..MAX_LOCATIONS as i64).contains(&l) => {
+                            self.diags.push(Diagnostic::error(format!("location {l} is out of range (0..{MAX_LOCATIONS})"), span));
+                            0
+                        }
+                        Some((l, span)) => {
+                            let map = taken.entry(key).or_default();
+                            if let Some(prev) = map.get(&(l as u32)) {
+                                let d = Diagnostic::error(format!("duplicate location {l} for `@{c}` variables"), span)
+                                    .with_label(format!("`{}` uses location {l}", g.name.name))
+                                    .with_secondary(*prev, "already used here");
+                                self.diags.push(d);
+                            }
+                            map.insert(l as u32, span);
+                            l as u32
+                        }
+                        None => {
+                            pending_auto.push((self.out.globals.len(), key, 1));
+                            0
+                        }
+                    };
+                    let _ = class_span;
+                    GlobalKind::Io { kind: io, location: loc }
+                }
+            };
+            self.globals.insert(&g.name.name, self.out.globals.len());
+            self.out.globals.push(Global { name: g.name.name.as_str().to_string(), ty, kind, span: g.name.span });
+        }
+        // Automatic locations and units: the lowest free number, in declaration order.
+        for (gid, key, count) in pending_auto {
+            let map = taken.entry(key).or_default();
+            let limit = if key == "stage" { 32 } else { MAX_LOCATIONS };
+            let Some(n) = (0..limit.saturating_sub(count - 1)).find(|n| (*n..n + count).all(|u| !map.contains_key(&u))) else {
+                let span = self.out.globals[gid].span;
+                let what = if key == "stage" { "texture unit" } else { "location" };
+                let msg = if count > 1 { format!("no {count} consecutive free {what}s left (at most {limit})") } else { format!("no free {what} left (at most {limit})") };
+                self.diags.push(Diagnostic::error(msg, span));
+                continue;
+            };
+            for u in n..n + count {
+                map.insert(u, self.out.globals[gid].span);
+            }
+            match &mut self.out.globals[gid].kind {
+                GlobalKind::Sampler { texture_unit, .. } => *texture_unit = n,
+                GlobalKind::Io { location, .. } => *location = n,
+                _ => {}
+            }
+        }
+    }
+
+    /// Why a type cannot be a uniform block, if it cannot.
+    pub(super) fn uniform_type_problem(&self, ty: &Ty) -> Option<String> {
+        self.uniform_layout(ty, "").err()
+    }
+
+    /// The layout of `ty` in a uniform block, checked to be the same under
+    /// GLSL's std140 rules and WGSL's uniform rules (naga writes WGSL
+    /// structs without `@align`/`@size`, so the natural WGSL layout is the
+    /// one every target must share).
+    pub(super) fn uniform_layout(&self, ty: &Ty, path: &str) -> Result<UniformLayout, String> {
+        let round = |a: u32, x: u32| x.div_ceil(a) * a;
+        match ty {
+            Ty::Scalar(Scalar::Bool) | Ty::Vector(Scalar::Bool, _) => {
+                Err("`bool` cannot live in a uniform block (it has no portable layout); use `int` or `uint`".into())
+            }
+            Ty::Scalar(_) => Ok(UniformLayout { size: 4, align: 4, std_size: 4, std_align: 4 }),
+            Ty::Vector(_, n) => {
+                let align = if *n == 2 { 8 } else { 16 };
+                Ok(UniformLayout { size: 4 * *n as u32, align, std_size: 4 * *n as u32, std_align: align })
+            }
+            Ty::Matrix(_, 2) => Err(format!(
+                "`{}` has different layouts in GLSL std140 and WGSL uniform blocks; use a float4 per column or a wider matrix",
+                self.show(ty)
+            )),
+            Ty::Matrix(c, _) => Ok(UniformLayout { size: 16 * *c as u32, align: 16, std_size: 16 * *c as u32, std_align: 16 }),
+            Ty::Array(elem, n) => {
+                if matches!(**elem, Ty::Scalar(_) | Ty::Vector(_, 2) | Ty::Vector(_, 3)) {
+                    return Err(format!(
+                        "arrays of `{}` in a uniform block have a 16-byte element stride in GLSL std140, which WGSL cannot express; use float4 (or int4, uint4) elements and pack several values into each",
+                        self.show(elem)
+                    ));
+                }
+                let e = self.uniform_layout(elem, &format!("{path}[]"))?;
+                let stride = round(e.align, e.size);
+                let std_stride = round(16, e.std_size);
+                if stride % 16 != 0 || stride != std_stride {
+                    return Err(format!(
+                        "elements of `{}` are {stride} bytes apart in WGSL but {std_stride} in GLSL std140; pad `{}` to a multiple of 16 bytes (e.g. with a float4 field)",
+                        self.show(ty),
+                        self.show(elem)
+                    ));
+                }
+                Ok(UniformLayout { size: stride * n, align: e.align, std_size: std_stride * n, std_align: 16 })
+            }
+            Ty::Struct(id) => {
+                let def = &self.out.structs[*id];
+                let (mut end, mut std_end, mut align, mut std_align) = (0u32, 0u32, 1u32, 16u32);
+                let mut prev_struct: Option<(String, u32)> = None;
+                for (fname, fty, _) in &def.fields {
+                    let fpath = if path.is_empty() { format!("{}.{fname}", def.name) } else { format!("{path}.{fname}") };
+                    let m = self.uniform_layout(fty, &fpath).map_err(|e| if path.is_empty() && !e.contains('`') { format!("`{fpath}`: {e}") } else { e })?;
+                    // WGSL uniform rule: struct and array members start at multiples of 16.
+                    let member_align = if matches!(fty, Ty::Struct(_) | Ty::Array(..)) { round(16, m.align) } else { m.align };
+                    let off = round(m.align, end);
+                    let std_off = round(m.std_align, std_end);
+                    if off != std_off || off % member_align != 0 {
+                        return Err(format!(
+                            "field `{fname}` of `{}` would be at offset {off} in WGSL but {std_off} in GLSL std140; reorder or pad the fields so that every struct or array field starts at a multiple of 16 and every struct used in a uniform is a multiple of 16 bytes",
+                            def.name
+                        ));
+                    }
+                    if let Some((pname, min)) = prev_struct.take() {
+                        if off < min {
+                            return Err(format!(
+                                "field `{fname}` of `{}` follows struct field `{pname}` too closely for a WGSL uniform block; pad `{pname}`'s type to a multiple of 16 bytes",
+                                def.name
+                            ));
+                        }
+                    }
+                    if matches!(fty, Ty::Struct(_)) {
+                        prev_struct = Some((fname.clone(), off + round(16, m.size)));
+                    }
+                    end = off + m.size;
+                    std_end = std_off + m.std_size;
+                    align = align.max(m.align);
+                    std_align = std_align.max(round(16, m.std_align));
+                }
+                Ok(UniformLayout { size: round(align, end), align, std_size: round(std_align, std_end), std_align })
+            }
+            _ => Err(format!("`{}` cannot be in a uniform block", self.show(ty))),
+        }
+    }
+
+    pub(super) fn resolve_type(&mut self, t: &'a ast::TypeExpr) -> Ty {
+        match &t.kind {
+            ast::TypeExprKind::Named(id) => {
+                if let Some(ty) = Ty::from_builtin_name(&id.name) {
+                    return ty;
+                }
+                if let Some(&sid) = self.structs.get(id.name.as_str()) {
+                    return Ty::Struct(sid);
+                }
+                let candidates: Vec<&str> = self.structs.keys().copied().chain(TYPE_NAMES.iter().copied()).collect();
+                let mut d = Diagnostic::error(format!("unknown type `{}`", id.name), id.span).with_label("not a type");
+                if let Some(s) = suggest(&id.name, candidates.iter().copied()) {
+                    d = d.with_note(format!("help: did you mean `{s}`?"));
+                }
+                if id.name == "double" {
+                    d = d.with_note("double precision is not available in shaders");
+                }
+                self.diags.push(d);
+                Ty::Error
+            }
+            ast::TypeExprKind::Array(elem, len) => {
+                let elem_ty = self.resolve_type(elem);
+                let mut names = Vec::new();
+                crate::sema::consts::collect_names(len, &mut names);
+                for n in names {
+                    if self.const_decls.contains_key(n) {
+                        self.const_id(n, len.span);
+                    }
+                }
+                let n = match eval_const(len, &ConstEnvAdapter { c: self }).map(|(v, _)| v) {
+                    Ok(ConstValue::Int(n)) if n > 0 && (n as u64) <= MAX_ARRAY_LEN => n as u32,
+                    Ok(ConstValue::Uint(n)) if n > 0 && n <= MAX_ARRAY_LEN => n as u32,
+                    Ok(_) => {
+                        let d = Diagnostic::error(format!("array length must be a positive integer constant of at most {MAX_ARRAY_LEN}"), len.span);
+                        self.diags.push(d);
+                        return Ty::Error;
+                    }
+                    Err(d) => {
+                        self.diags.push(d);
+                        return Ty::Error;
+                    }
+                };
+                if matches!(elem_ty, Ty::Array(..)) && elem_ty.is_sampler_like() {
+                    self.diags.push(Diagnostic::error("arrays of arrays of samplers are not supported; use one array of samplers", t.span));
+                    return Ty::Error;
+                }
+                if elem_ty.is_error() {
+                    return Ty::Error;
+                }
+                Ty::Array(Box::new(elem_ty), n)
+            }
+        }
+    }
+
+    // ---------------------------------------------------------------- constants
+
+    /// Looks up (checking on first use) a top-level constant.
+    pub(super) fn const_id(&mut self, name: &str, use_span: Span) -> Option<ConstId> {
+        if let Some(&id) = self.consts.get(name) {
+            return Some(id);
+        }
+        if self.failed_consts.contains(name) {
+            return None;
+        }
+        let decl: &'a ast::ConstDecl = self.const_decls.get(name)?;
+        // Keys borrow the declaration's own name.
+        let name: &'a str = &decl.name.name;
+        if self.const_in_progress.iter().any(|n| *n == name) {
+            let d = Diagnostic::error(format!("constant `{name}` depends on itself"), use_span).with_secondary(decl.name.span, "defined here");
+            self.diags.push(d);
+            return None;
+        }
+        if self.const_in_progress.len() >= MAX_CONST_CHAIN {
+            let d = Diagnostic::error(format!("constants are defined in terms of each other too deeply (limit {MAX_CONST_CHAIN})"), decl.name.span)
+                .with_label("the limit is reached at this constant");
+            self.diags.push(d);
+            self.failed_consts.insert(name);
+            return None;
+        }
+        // Constants this one names are evaluated first.
+        let mut names = Vec::new();
+        crate::sema::consts::collect_names(&decl.value, &mut names);
+        self.const_in_progress.push(name);
+        let mut deps_ok = true;
+        for n in names {
+            if n != name && self.const_decls.contains_key(n) {
+                deps_ok &= self.const_id(n, use_span).is_some();
+            }
+        }
+        // A constant built from a wrong one is wrong too, but that was
+        // reported already.
+        let value = if deps_ok { Some(eval_const(&decl.value, &ConstEnvAdapter { c: self })) } else { None };
+        self.const_in_progress.pop();
+        let (value, ty) = match value {
+            Some(Ok(v)) => v,
+            Some(Err(d)) => {
+                self.diags.push(d);
+                self.failed_consts.insert(name);
+                return None;
+            }
+            None => {
+                self.failed_consts.insert(name);
+                return None;
+            }
+        };
+        if let Some(t) = &decl.ty {
+            let declared = self.resolve_type(t);
+            if !declared.is_error() && declared != ty {
+                let d = Diagnostic::error(
+                    format!("constant `{name}` is declared `{}` but its value is `{}`", self.show(&declared), self.show(&ty)),
+                    decl.value.span,
+                );
+                self.diags.push(d);
+                self.failed_consts.insert(name);
+                return None;
+            }
+        }
+        let id = self.out.consts.len();
+        self.out.consts.push(Const { name: name.to_string(), ty, value, span: decl.name.span });
+        self.consts.insert(name, id);
+        Some(id)
+    }
+
+}
+
+/// Lets the constant evaluator look up other constants through the checker.
+pub(super) struct ConstEnvAdapter<'c, 'a, 'd> {
+    c: &'c Checker<'a, 'd>,
+}
+
+impl ConstEnv for ConstEnvAdapter<'_, '_, '_> {
+    fn lookup(&self, name: &str) -> Option<(ConstValue, Ty)> {
+        let &id = self.c.consts.get(name)?;
+        let k = &self.c.out.consts[id];
+        Some((k.value.clone(), k.ty.clone()))
+    }
+
+    fn struct_type(&self, name: &str) -> Option<(Ty, Vec<Ty>)> {
+        let &sid = self.c.structs.get(name)?;
+        Some((Ty::Struct(sid), self.c.out.structs[sid].fields.iter().map(|f| f.1.clone()).collect()))
+    }
+}

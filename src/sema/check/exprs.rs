@@ -1,0 +1,717 @@
+//! Expressions: names, fields and swizzles, calls of functions, builtins,
+//! constructors and texture functions, and operator typing.
+
+use super::*;
+
+impl<'a, 'd> Checker<'a, 'd> {
+    // ---------------------------------------------------------------- expressions
+
+    pub(super) fn check_expr(&mut self, cx: &mut FnCtx<'a>, e: &'a ast::Expr) -> Expr {
+        cx.depth += 1;
+        let r = if cx.depth > MAX_DEPTH {
+            self.diags.push(Diagnostic::error(format!("expression nests deeper than the limit of {MAX_DEPTH}"), e.span));
+            err_expr(e.span)
+        } else {
+            self.check_expr_inner(cx, e)
+        };
+        cx.depth -= 1;
+        r
+    }
+
+    pub(super) fn check_expr_inner(&mut self, cx: &mut FnCtx<'a>, e: &'a ast::Expr) -> Expr {
+        let span = e.span;
+        let mk = |kind, ty| Expr { kind, ty, span };
+        match &e.kind {
+            ast::ExprKind::Int(v, suffix) => match suffix {
+                ast::IntSuffix::None => match i32::try_from(*v) {
+                    Ok(v) => mk(ExprKind::Int(v as i64), INT),
+                    // 2147483648 is fine as the operand of unary minus; see Unary below.
+                    Err(_) => {
+                        self.diags.push(Diagnostic::error(format!("integer literal {v} does not fit in `int`"), span).with_note("help: add a `u` suffix for `uint`"));
+                        err_expr(span)
+                    }
+                },
+                ast::IntSuffix::Unsigned => match u32::try_from(*v) {
+                    Ok(v) => mk(ExprKind::Uint(v as u64), UINT),
+                    Err(_) => {
+                        self.diags.push(Diagnostic::error(format!("integer literal {v} does not fit in `uint`"), span));
+                        err_expr(span)
+                    }
+                },
+            },
+            ast::ExprKind::Float(v) => {
+                if v.is_finite() && (*v == 0.0 || v.abs() <= f32::MAX as f64) {
+                    mk(ExprKind::Float(*v), FLOAT)
+                } else {
+                    self.diags.push(Diagnostic::error("float literal is out of range for `float`", span));
+                    err_expr(span)
+                }
+            }
+            ast::ExprKind::Bool(b) => mk(ExprKind::Bool(*b), BOOL),
+            ast::ExprKind::Str(_) => {
+                self.diags.push(Diagnostic::error("strings are not shader values", span));
+                err_expr(span)
+            }
+            ast::ExprKind::Paren(inner) => {
+                let mut x = self.check_expr(cx, inner);
+                x.span = span;
+                x
+            }
+            ast::ExprKind::Name(id) => self.check_name(cx, id),
+            ast::ExprKind::Unary(op, inner) => {
+                if let (UnaryOp::Neg, ast::ExprKind::Int(2147483648, ast::IntSuffix::None)) = (op, &inner.kind) {
+                    return mk(ExprKind::Int(i32::MIN as i64), INT);
+                }
+                let x = self.check_expr(cx, inner);
+                if x.ty.is_error() {
+                    return err_expr(span);
+                }
+                let ok = match op {
+                    UnaryOp::Neg | UnaryOp::Plus => matches!(x.ty.scalar(), Some(Scalar::Float | Scalar::Int)) && !matches!(x.ty, Ty::Matrix(..)),
+                    UnaryOp::Not => x.ty == BOOL,
+                    UnaryOp::BitNot => matches!(x.ty.scalar(), Some(Scalar::Int | Scalar::Uint)),
+                    _ => {
+                        self.diags.push(Diagnostic::error("`++` and `--` can only be used as statements", span));
+                        return err_expr(span);
+                    }
+                };
+                if !ok {
+                    let d = Diagnostic::error(format!("type mismatch: `{}` cannot be applied to `{}`", unary_text(*op), self.show(&x.ty)), span);
+                    self.diags.push(d);
+                    return err_expr(span);
+                }
+                if *op == UnaryOp::Plus {
+                    return Expr { span, ..x };
+                }
+                let ty = x.ty.clone();
+                mk(ExprKind::Unary(*op, Box::new(x)), ty)
+            }
+            ast::ExprKind::Binary(op, lr) => {
+                let l = self.check_expr(cx, &lr.0);
+                let r = self.check_expr(cx, &lr.1);
+                if l.ty.is_error() || r.ty.is_error() {
+                    return err_expr(span);
+                }
+                match self.binary_type(*op, &l.ty, &r.ty, span) {
+                    Some(ty) => {
+                        // Constant operands make a constant expression in the
+                        // WGSL output, which WGSL evaluates at shader creation
+                        // and rejects on overflow, division by zero or a
+                        // non-finite result: report those here.
+                        if let (Some(a), Some(b)) = (self.literal_value(&l), self.literal_value(&r)) {
+                            if let Err(msg) = crate::sema::consts::binary(*op, &a, &l.ty, &b, &r.ty) {
+                                if !msg.contains("not supported") && !msg.contains("mismatch") {
+                                    self.diags.push(Diagnostic::error(msg, span).with_note("both operands are constants, so this is evaluated at compile time"));
+                                    return err_expr(span);
+                                }
+                            }
+                        }
+                        mk(ExprKind::Binary(*op, Box::new((l, r))), ty)
+                    }
+                    None => err_expr(span),
+                }
+            }
+            ast::ExprKind::Ternary(c, a, b) => {
+                let c = self.check_expr(cx, c);
+                let a = self.check_expr(cx, a);
+                let b = self.check_expr(cx, b);
+                if c.ty.is_error() || a.ty.is_error() || b.ty.is_error() {
+                    return err_expr(span);
+                }
+                let cond_ok = c.ty == BOOL || matches!((&c.ty, &a.ty), (Ty::Vector(Scalar::Bool, n), Ty::Vector(_, m)) if n == m);
+                if !cond_ok {
+                    let d = Diagnostic::error(format!("type mismatch: the condition of `?:` must be `bool` (or a bool vector as wide as the values), found `{}`", self.show(&c.ty)), c.span);
+                    self.diags.push(d);
+                    return err_expr(span);
+                }
+                if a.ty != b.ty {
+                    let d = Diagnostic::error(format!("type mismatch: the branches of `?:` are `{}` and `{}`", self.show(&a.ty), self.show(&b.ty)), span)
+                        .with_secondary(a.span, format!("`{}`", self.show(&a.ty)))
+                        .with_secondary(b.span, format!("`{}`", self.show(&b.ty)));
+                    self.diags.push(d);
+                    return err_expr(span);
+                }
+                if !a.ty.is_value() || matches!(a.ty, Ty::Array(..) | Ty::Struct(_)) {
+                    let d = Diagnostic::error(format!("`?:` cannot choose between `{}` values", self.show(&a.ty)), span);
+                    self.diags.push(d);
+                    return err_expr(span);
+                }
+                let ty = a.ty.clone();
+                mk(ExprKind::Select { cond: Box::new(c), accept: Box::new(a), reject: Box::new(b) }, ty)
+            }
+            ast::ExprKind::Call { callee, args } => self.check_call(cx, callee, args, span),
+            ast::ExprKind::Field(base, name) => {
+                let b = self.check_expr(cx, base);
+                self.check_field(b, name, span)
+            }
+            ast::ExprKind::Index(base, index) => {
+                let b = self.check_expr(cx, base);
+                let i = self.check_expr(cx, index);
+                if b.ty.is_error() || i.ty.is_error() {
+                    return err_expr(span);
+                }
+                if i.ty != INT && i.ty != UINT {
+                    let d = Diagnostic::error(format!("type mismatch: an index must be `int` or `uint`, found `{}`", self.show(&i.ty)), i.span);
+                    self.diags.push(d);
+                    return err_expr(span);
+                }
+                let (elem, len) = match &b.ty {
+                    Ty::Vector(s, n) => (Ty::Scalar(*s), *n as u32),
+                    Ty::Matrix(c, r) => (Ty::Vector(Scalar::Float, *r), *c as u32),
+                    Ty::Array(elem, n) => ((**elem).clone(), *n),
+                    other => {
+                        let d = Diagnostic::error(format!("`{}` cannot be indexed", self.show(other)), b.span);
+                        self.diags.push(d);
+                        return err_expr(span);
+                    }
+                };
+                // A literal or a named constant index is checked here; naga
+                // would otherwise reject the IR (an internal error).
+                let constant_index = match &i.kind {
+                    ExprKind::Int(k) => Some(*k),
+                    ExprKind::Uint(k) => Some(*k as i64),
+                    ExprKind::Unary(UnaryOp::Neg, x) => match x.kind {
+                        ExprKind::Int(k) => Some(-k),
+                        _ => None,
+                    },
+                    ExprKind::Const(c) => match self.out.consts[*c].value {
+                        ConstValue::Int(k) => Some(k),
+                        ConstValue::Uint(k) => Some(k as i64),
+                        _ => None,
+                    },
+                    _ => None,
+                };
+                if let Some(k) = constant_index {
+                    if k < 0 || k as u64 >= len as u64 {
+                        let d = Diagnostic::error(format!("index {k} is out of bounds for `{}` (length {len})", self.show(&b.ty)), i.span);
+                        self.diags.push(d);
+                        return err_expr(span);
+                    }
+                }
+                mk(ExprKind::Index(Box::new(b), Box::new(i)), elem)
+            }
+            ast::ExprKind::Array { elem, items } => {
+                let declared = elem.as_ref().map(|t| self.resolve_type(t));
+                let xs: Vec<Expr> = items.iter().map(|i| self.check_expr(cx, i)).collect();
+                if xs.iter().any(|x| x.ty.is_error()) || declared.as_ref().is_some_and(|d| d.is_error()) {
+                    return err_expr(span);
+                }
+                let Some(elem_ty) = declared.or_else(|| xs.first().map(|x| x.ty.clone())) else {
+                    self.diags.push(Diagnostic::error("an empty array has no type", span));
+                    return err_expr(span);
+                };
+                for x in &xs {
+                    if x.ty != elem_ty {
+                        let d = Diagnostic::error(format!("type mismatch: array element is `{}`, expected `{}`", self.show(&x.ty), self.show(&elem_ty)), x.span);
+                        self.diags.push(d);
+                        return err_expr(span);
+                    }
+                }
+                if xs.is_empty() || xs.len() as u64 > MAX_ARRAY_LEN {
+                    self.diags.push(Diagnostic::error(format!("an array needs 1 to {MAX_ARRAY_LEN} elements"), span));
+                    return err_expr(span);
+                }
+                let ty = Ty::Array(Box::new(elem_ty), xs.len() as u32);
+                mk(ExprKind::Construct(xs), ty)
+            }
+        }
+    }
+
+    /// The value of a literal or named scalar constant.
+    pub(super) fn literal_value(&self, e: &Expr) -> Option<ConstValue> {
+        match &e.kind {
+            ExprKind::Int(v) => Some(ConstValue::Int(*v)),
+            ExprKind::Uint(v) => Some(ConstValue::Uint(*v)),
+            ExprKind::Float(v) => Some(ConstValue::Float(*v as f32 as f64)),
+            ExprKind::Const(c) if matches!(self.out.consts[*c].ty, Ty::Scalar(_)) => Some(self.out.consts[*c].value.clone()),
+            _ => None,
+        }
+    }
+
+    pub(super) fn check_name(&mut self, cx: &mut FnCtx<'a>, id: &'a ast::Ident) -> Expr {
+        let span = id.span;
+        if let Some(l) = cx.lookup(&id.name) {
+            return Expr { kind: ExprKind::Local(l), ty: cx.locals[l].ty.clone(), span };
+        }
+        if let Some(&g) = self.globals.get(id.name.as_str()) {
+            cx.uses.entry(g).or_insert(span);
+            return Expr { kind: ExprKind::Global(g), ty: self.out.globals[g].ty.clone(), span };
+        }
+        if self.const_decls.contains_key(id.name.as_str()) || self.consts.contains_key(id.name.as_str()) {
+            return match self.const_id(&id.name, span) {
+                Some(c) => Expr { kind: ExprKind::Const(c), ty: self.out.consts[c].ty.clone(), span },
+                None => err_expr(span),
+            };
+        }
+        if let Some(b) = BuiltinVar::from_name(&id.name) {
+            let g = *self.builtin_vars.entry(b).or_insert_with(|| {
+                self.out.globals.push(Global { name: b.name().to_string(), ty: b.ty(), kind: GlobalKind::Builtin(b), span });
+                self.out.globals.len() - 1
+            });
+            cx.uses.entry(g).or_insert(span);
+            return Expr { kind: ExprKind::Global(g), ty: b.ty(), span };
+        }
+        if self.funcs.contains_key(id.name.as_str()) || builtins::is_builtin(&id.name) {
+            self.diags.push(Diagnostic::error(format!("`{}` is a function; call it with `{}(...)`", id.name, id.name), span));
+            return err_expr(span);
+        }
+        let mut d = Diagnostic::error(format!("unknown name `{}`", id.name), span).with_label("not found in this scope");
+        let mut candidates: Vec<&str> = cx.scopes.visible.keys().copied().collect();
+        candidates.extend(self.globals.keys().copied());
+        candidates.extend(self.const_decls.keys().copied());
+        candidates.extend(BuiltinVar::NAMES);
+        if let Some(s) = suggest(&id.name, candidates.iter().copied()) {
+            d = d.with_note(format!("help: did you mean `{s}`?"));
+        }
+        self.diags.push(d);
+        err_expr(span)
+    }
+
+    pub(super) fn check_field(&mut self, b: Expr, name: &ast::Ident, span: Span) -> Expr {
+        match &b.ty {
+            Ty::Error => err_expr(span),
+            Ty::Struct(sid) => {
+                let fields = &self.out.structs[*sid].fields;
+                match fields.iter().position(|(n, _, _)| *n == *name.name) {
+                    Some(i) => {
+                        let ty = fields[i].1.clone();
+                        Expr { kind: ExprKind::Field(Box::new(b), i as u32), ty, span }
+                    }
+                    None => {
+                        let names: Vec<&str> = fields.iter().map(|(n, _, _)| n.as_str()).collect();
+                        let mut d = Diagnostic::error(format!("struct `{}` has no field `{}`", self.out.structs[*sid].name, name.name), name.span);
+                        if let Some(s) = suggest(&name.name, names.iter().copied()) {
+                            d = d.with_note(format!("help: did you mean `{s}`?"));
+                        } else {
+                            d = d.with_note(format!("its fields are: {}", names.join(", ")));
+                        }
+                        self.diags.push(d);
+                        err_expr(span)
+                    }
+                }
+            }
+            Ty::Vector(s, n) => {
+                let s = *s;
+                let n = *n;
+                match parse_swizzle(&name.name, n) {
+                    Ok(comps) => {
+                        let ty = Ty::vec(s, comps.len() as u8);
+                        Expr { kind: ExprKind::Swizzle(Box::new(b), comps), ty, span }
+                    }
+                    Err(msg) => {
+                        let d = Diagnostic::error(format!("invalid swizzle `.{}` on `{}`: {msg}", name.name, self.show(&b.ty)), name.span);
+                        self.diags.push(d);
+                        err_expr(span)
+                    }
+                }
+            }
+            other => {
+                let d = Diagnostic::error(format!("`{}` has no fields (`.{}`)", self.show(other), name.name), name.span);
+                self.diags.push(d);
+                err_expr(span)
+            }
+        }
+    }
+
+    // ---------------------------------------------------------------- calls
+
+    pub(super) fn check_call(&mut self, cx: &mut FnCtx<'a>, callee: &'a ast::Ident, args: &'a [ast::Expr], span: Span) -> Expr {
+        let name = callee.name.as_str();
+        // Constructors and casts.
+        let ctor_ty = Ty::from_builtin_name(name).filter(|t| !matches!(t, Ty::Sampler(_))).or_else(|| self.structs.get(name).map(|&s| Ty::Struct(s)));
+        let xs: Vec<Expr> = args.iter().map(|a| self.check_expr(cx, a)).collect();
+        if xs.iter().any(|x| x.ty.is_error()) {
+            return err_expr(span);
+        }
+        if let Some(ty) = ctor_ty {
+            return self.check_constructor(ty, xs, span);
+        }
+        if name == "range" {
+            self.diags.push(Diagnostic::error("`range` can only be used as the iterator of a `for` loop", span));
+            return err_expr(span);
+        }
+        if name == "discard" {
+            self.diags.push(Diagnostic::error("`discard()` is a statement and has no value", span));
+            return err_expr(span);
+        }
+        if self.funcs.contains_key(name) {
+            self.call_depth = cx.depth + CALL_DEPTH;
+            let Some(fid) = self.function_id(name, callee.span) else { return err_expr(span) };
+            let f = &self.out.functions[fid];
+            let params = &f.locals[..f.params];
+            if params.len() != xs.len() {
+                let sig = self.signature_text(fid);
+                let d = Diagnostic::error(format!("wrong number of arguments: `{name}` takes {} but {} were given", params.len(), xs.len()), span)
+                    .with_secondary(f.span, "defined here")
+                    .with_note(format!("expected: {sig}"));
+                self.diags.push(d);
+                return err_expr(span);
+            }
+            if let Some((x, p)) = xs.iter().zip(params).find(|(x, p)| x.ty != p.ty) {
+                let sig = self.signature_text(fid);
+                let d = Diagnostic::error(format!("type mismatch: argument is `{}` but `{name}` expects `{}`", self.show(&x.ty), self.show(&p.ty)), x.span)
+                    .with_note(format!("expected: {sig}"));
+                self.diags.push(d);
+                return err_expr(span);
+            }
+            // The callee's global uses become the caller's.
+            for &g in f.uses.keys() {
+                cx.uses.entry(g).or_insert(span);
+            }
+            if let Some(fo) = f.fragment_only {
+                cx.fragment_only.get_or_insert((span, fo.1));
+            }
+            cx.implicit_lod |= f.implicit_lod;
+            cx.callees.insert(fid);
+            return Expr { kind: ExprKind::Call(fid, xs), ty: f.ret.clone(), span };
+        }
+        if let Some((_, b)) = builtins::TEXTURE_FUNCTIONS.iter().find(|(n, _)| *n == name) {
+            return self.check_texture_call(cx, *b, name, xs, span);
+        }
+        match builtins::resolve(name, xs.iter().map(|x| &x.ty)) {
+            Ok(Some((b, ret))) => {
+                if matches!(b, Builtin::Derivative(..)) {
+                    cx.fragment_only.get_or_insert((span, "a derivative"));
+                }
+                if b == Builtin::Math(naga::MathFunction::Determinant) && !matches!(xs[0].ty, Ty::Matrix(c, r) if c == r) {
+                    self.diags.push(Diagnostic::error("`determinant` needs a square matrix", span));
+                    return err_expr(span);
+                }
+                Expr { kind: ExprKind::Builtin(b, xs), ty: ret, span }
+            }
+            Ok(None) if builtins::UNSUPPORTED.iter().any(|(n, _)| *n == name) => {
+                let why = builtins::UNSUPPORTED.iter().find(|(n, _)| *n == name).map(|(_, w)| *w).unwrap_or_default();
+                let d = Diagnostic::error(format!("`{name}` is not available in umbrac shaders"), callee.span).with_note(format!("help: {why}"));
+                self.diags.push(d);
+                err_expr(span)
+            }
+            Ok(None) => {
+                let mut d = Diagnostic::error(format!("unknown function `{name}`"), callee.span).with_label("not a function, builtin or type");
+                let mut candidates: Vec<&str> = builtins::all_names().collect();
+                candidates.extend(self.funcs.keys().copied());
+                candidates.extend(self.structs.keys().copied());
+                candidates.extend(TYPE_NAMES.iter().copied());
+                if let Some(s) = suggest(name, candidates) {
+                    d = d.with_note(format!("help: did you mean `{s}`?"));
+                }
+                self.diags.push(d);
+                err_expr(span)
+            }
+            Err(sigs) => {
+                let given: Vec<String> = xs.iter().map(|x| self.show(&x.ty)).collect();
+                let what = if sigs.iter().all(|s| s.matches(", ").count() + 1 != xs.len()) { "wrong number of arguments" } else { "type mismatch" };
+                let mut d = Diagnostic::error(format!("{what}: no overload of `{name}` takes ({})", given.join(", ")), span);
+                d = d.with_note(format!("expected one of:\n  {}", sigs.join("\n  ")));
+                self.diags.push(d);
+                err_expr(span)
+            }
+        }
+    }
+
+    pub(super) fn signature_text(&self, fid: FuncId) -> String {
+        let f = &self.out.functions[fid];
+        let ps: Vec<String> = f.locals[..f.params].iter().map(|l| format!("{} : {}", l.name, self.show(&l.ty))).collect();
+        let ret = if f.ret == Ty::Void { String::new() } else { format!(" : {}", self.show(&f.ret)) };
+        format!("{}({}){}", f.name, ps.join("; "), ret)
+    }
+
+    pub(super) fn check_constructor(&mut self, ty: Ty, xs: Vec<Expr>, span: Span) -> Expr {
+        // The type's name is formatted only for a message.
+        let fail = |this: &mut Self, msg: String| {
+            this.diags.push(Diagnostic::error(msg, span));
+            err_expr(span)
+        };
+        match &ty {
+            Ty::Scalar(_) => {
+                if xs.len() != 1 || !matches!(xs[0].ty, Ty::Scalar(_)) {
+                    let given: Vec<String> = xs.iter().map(|x| self.show(&x.ty)).collect();
+                    let name = self.show(&ty);
+                    return fail(self, format!("wrong arguments: `{name}(...)` converts one scalar, given ({})", given.join(", ")));
+                }
+            }
+            Ty::Vector(_, n) => {
+                let n = *n as usize;
+                let single_ok = xs.len() == 1 && (matches!(xs[0].ty, Ty::Scalar(_)) || matches!(xs[0].ty, Ty::Vector(_, m) if m as usize >= n));
+                if !single_ok {
+                    let mut count = 0;
+                    for x in &xs {
+                        match x.ty {
+                            Ty::Scalar(_) => count += 1,
+                            Ty::Vector(_, m) => count += m as usize,
+                            _ => {
+                                let name = self.show(&ty);
+                                return fail(self, format!("type mismatch: `{name}(...)` takes scalars and vectors, not `{}`", self.show(&x.ty)));
+                            }
+                        }
+                    }
+                    if count != n {
+                        let name = self.show(&ty);
+                        return fail(self, format!("wrong number of components: `{name}` needs {n}, the arguments give {count}"));
+                    }
+                }
+            }
+            Ty::Matrix(c, r) => {
+                let (c, r) = (*c as usize, *r as usize);
+                let cols_ok = xs.len() == c && xs.iter().all(|x| x.ty == Ty::Vector(Scalar::Float, r as u8));
+                let scalars_ok = xs.len() == c * r && xs.iter().all(|x| x.ty == FLOAT);
+                let diag_ok = xs.len() == 1 && xs[0].ty == FLOAT;
+                let copy_ok = xs.len() == 1 && xs[0].ty == ty;
+                if !(cols_ok || scalars_ok || diag_ok || copy_ok) {
+                    let name = self.show(&ty);
+                    return fail(self, format!("wrong arguments: `{name}` is built from {c} float{r} columns, {} floats, or one float (a diagonal)", c * r));
+                }
+            }
+            Ty::Struct(sid) => {
+                let fields = &self.out.structs[*sid].fields;
+                if fields.len() != xs.len() {
+                    let (name, n) = (self.show(&ty), fields.len());
+                    return fail(self, format!("wrong number of arguments: `{name}` has {n} fields but {} values were given", xs.len()));
+                }
+                if let Some(((fname, fty, _), x)) = fields.iter().zip(&xs).find(|((_, fty, _), x)| *fty != x.ty) {
+                    let name = self.show(&ty);
+                    let d = Diagnostic::error(format!("type mismatch: field `{fname}` of `{name}` is `{}`, given `{}`", self.show(fty), self.show(&x.ty)), x.span);
+                    self.diags.push(d);
+                    return err_expr(span);
+                }
+            }
+            _ => {
+                let name = self.show(&ty);
+                return fail(self, format!("`{name}` cannot be constructed"));
+            }
+        }
+        if xs.iter().any(|x| !x.ty.is_value() || matches!(x.ty, Ty::Array(..)) && !matches!(ty, Ty::Struct(_))) {
+            let name = self.show(&ty);
+            return fail(self, format!("invalid argument for `{name}(...)`"));
+        }
+        Expr { kind: ExprKind::Construct(xs), ty, span }
+    }
+
+    pub(super) fn check_texture_call(&mut self, _cx: &mut FnCtx<'a>, b: Builtin, name: &str, xs: Vec<Expr>, span: Span) -> Expr {
+        let Some(first) = xs.first() else {
+            self.diags.push(Diagnostic::error(format!("wrong number of arguments: `{name}` takes a sampler first"), span));
+            return err_expr(span);
+        };
+        let kind = match (&first.ty, &first.kind) {
+            (Ty::Sampler(k), ExprKind::Global(_)) => *k,
+            (Ty::Sampler(k), ExprKind::Index(base, _)) if matches!(base.kind, ExprKind::Global(_)) => *k,
+            _ => {
+                let d = Diagnostic::error(format!("type mismatch: the first argument of `{name}` must be a sampler, found `{}`", self.show(&first.ty)), first.span);
+                self.diags.push(d);
+                return err_expr(span);
+            }
+        };
+        let f2 = Ty::Vector(Scalar::Float, 2);
+        let f3 = Ty::Vector(Scalar::Float, 3);
+        let f4 = Ty::Vector(Scalar::Float, 4);
+        let coord = match kind {
+            SamplerKind::Sampler2D | SamplerKind::Sampler2DShadow | SamplerKind::ISampler2D | SamplerKind::USampler2D => f2.clone(),
+            _ => f3.clone(),
+        };
+        let texel = match kind {
+            SamplerKind::ISampler2D => Ty::Vector(Scalar::Int, 4),
+            SamplerKind::USampler2D => Ty::Vector(Scalar::Uint, 4),
+            _ => f4.clone(),
+        };
+        let shadow = kind.is_shadow();
+        let icoord = match kind {
+            SamplerKind::Sampler3D | SamplerKind::Sampler2DArray | SamplerKind::Sampler2DArrayShadow => Ty::Vector(Scalar::Int, 3),
+            _ => Ty::Vector(Scalar::Int, 2),
+        };
+        let (sigs, ret): (Vec<Vec<Ty>>, Ty) = match b {
+            Builtin::Texture | Builtin::TextureLod | Builtin::TextureGrad if shadow => {
+                let d = Diagnostic::error(format!("`{name}` on shadow sampler `{}` is not supported", kind.name()), span)
+                    .with_note("help: use textureCompare(sampler, uv, reference_depth) for a depth comparison");
+                self.diags.push(d);
+                return err_expr(span);
+            }
+            Builtin::Texture => (vec![vec![coord.clone()], vec![coord.clone(), FLOAT]], texel),
+            Builtin::TextureLod => (vec![vec![coord.clone(), FLOAT]], texel),
+            Builtin::TextureGrad => {
+                let grad = match kind.dim() {
+                    naga::ImageDimension::D2 => f2.clone(),
+                    _ => f3.clone(),
+                };
+                (vec![vec![coord.clone(), grad.clone(), grad]], texel)
+            }
+            Builtin::TextureCompare => {
+                if !shadow {
+                    let d = Diagnostic::error(format!("`textureCompare` needs a shadow sampler, but `{}` is a `{}`", self.sampler_name(first), kind.name()), first.span)
+                        .with_label(format!("this is a `{}`", kind.name()))
+                        .with_note("help: declare it as sampler2DShadow, sampler2DArrayShadow or samplerCubeShadow, or read it with texture()");
+                    self.diags.push(d);
+                    return err_expr(span);
+                }
+                (vec![vec![coord.clone(), FLOAT]], FLOAT)
+            }
+            Builtin::TextureProj => match kind {
+                SamplerKind::Sampler2D => (vec![vec![f3.clone()], vec![f4.clone()]], texel),
+                SamplerKind::Sampler2DShadow => (vec![vec![f4.clone()]], FLOAT),
+                _ => {
+                    self.diags.push(Diagnostic::error(format!("`textureProj` supports sampler2D and sampler2DShadow, not `{}`", kind.name()), span));
+                    return err_expr(span);
+                }
+            },
+            Builtin::TexelFetch => {
+                if shadow || kind.dim() == naga::ImageDimension::Cube {
+                    self.diags.push(Diagnostic::error(format!("`texelFetch` does not support `{}`", kind.name()), span));
+                    return err_expr(span);
+                }
+                (vec![vec![icoord.clone(), INT]], texel)
+            }
+            Builtin::TextureSize => {
+                let size = match kind {
+                    SamplerKind::Sampler3D | SamplerKind::Sampler2DArray | SamplerKind::Sampler2DArrayShadow => Ty::Vector(Scalar::Int, 3),
+                    _ => Ty::Vector(Scalar::Int, 2),
+                };
+                (vec![vec![INT]], size)
+            }
+            _ => unreachable!("only texture builtins reach check_texture_call"),
+        };
+        let given: Vec<Ty> = xs[1..].iter().map(|x| x.ty.clone()).collect();
+        if !sigs.contains(&given) {
+            let show_sig = |s: &Vec<Ty>| {
+                let mut parts = vec![kind.name().to_string()];
+                parts.extend(s.iter().map(|t| self.show(t)));
+                format!("{name}({})", parts.join(", "))
+            };
+            let expected: Vec<String> = sigs.iter().map(show_sig).collect();
+            let given_s: Vec<String> = xs.iter().map(|x| self.show(&x.ty)).collect();
+            let what = if sigs.iter().all(|s| s.len() != given.len()) { "wrong number of arguments" } else { "type mismatch" };
+            let d = Diagnostic::error(format!("{what}: `{name}` cannot take ({})", given_s.join(", ")), span).with_note(format!("expected one of:\n  {}", expected.join("\n  ")));
+            self.diags.push(d);
+            return err_expr(span);
+        }
+        if matches!(b, Builtin::Texture | Builtin::TextureProj | Builtin::TextureCompare) {
+            // Allowed in vertex entry points too: lowered with level 0 there.
+            _cx.implicit_lod = true;
+        }
+        Expr { kind: ExprKind::Builtin(b, xs), ty: ret, span }
+    }
+
+    pub(super) fn sampler_name(&self, e: &Expr) -> String {
+        match &e.kind {
+            ExprKind::Global(g) => self.out.globals[*g].name.clone(),
+            ExprKind::Index(b, _) => format!("{}[...]", self.sampler_name(b)),
+            _ => "the sampler".into(),
+        }
+    }
+
+    // ---------------------------------------------------------------- operators
+
+    /// The result type of `l op r`, or reports why there is none.
+    pub(super) fn binary_type(&mut self, op: BinaryOp, l: &Ty, r: &Ty, span: Span) -> Option<Ty> {
+        use BinaryOp::*;
+        let res = match op {
+            Add | Sub | Mul | Div | Mod => arith_type(op, l, r),
+            Lt | Le | Gt | Ge => match (l, r) {
+                (Ty::Scalar(a), Ty::Scalar(b)) if a == b && a.is_numeric() => Ok(BOOL),
+                (Ty::Vector(..), _) | (_, Ty::Vector(..)) => Err("compare vectors component-wise with lessThan(), greaterThan(), ...".to_string()),
+                _ => Err(String::new()),
+            },
+            Eq | Ne => match (l, r) {
+                (a, b) if a == b && matches!(a, Ty::Scalar(_) | Ty::Vector(..)) => Ok(BOOL),
+                _ => Err(String::new()),
+            },
+            And | Or | Xor => {
+                if *l == BOOL && *r == BOOL {
+                    Ok(BOOL)
+                } else {
+                    Err(format!("`{}` needs bool operands", op_text(op)))
+                }
+            }
+            BitAnd | BitOr | BitXor | Shl | Shr => match (l.scalar(), r.scalar()) {
+                (Some(a), Some(b)) if a.is_integer() && b.is_integer() && !matches!(l, Ty::Matrix(..)) => {
+                    let shift = matches!(op, Shl | Shr);
+                    if (shift && l.width() == r.width()) || (!shift && (l == r || (a == b && (l.width() == Some(1) || r.width() == Some(1))))) {
+                        Ok(if l.width() == Some(1) && !shift { r.clone() } else { l.clone() })
+                    } else {
+                        Err(String::new())
+                    }
+                }
+                _ => Err(format!("`{}` needs int or uint operands", op_text(op))),
+            },
+        };
+        match res {
+            Ok(t) => Some(t),
+            Err(hint) => {
+                let mut d = Diagnostic::error(format!("type mismatch: `{}` cannot be applied to `{}` and `{}`", op_text(op), self.show(l), self.show(r)), span);
+                if !hint.is_empty() {
+                    d = d.with_note(format!("help: {hint}"));
+                } else if l.scalar().is_some() && r.scalar().is_some() && l.scalar() != r.scalar() {
+                    d = d.with_note(format!("help: there are no implicit conversions; convert one side, e.g. `{}(...)`", l.scalar().map(|s| s.name()).unwrap_or("float")));
+                }
+                self.diags.push(d);
+                None
+            }
+        }
+    }
+}
+
+/// Arithmetic result types, GLSL rules: same-shape operands, scalar with
+/// vector (or matrix for `*`), and the linear-algebra products.
+pub(super) fn arith_type(op: BinaryOp, l: &Ty, r: &Ty) -> Result<Ty, String> {
+    let num = |t: &Ty| t.scalar().is_some_and(|s| s.is_numeric());
+    if !num(l) || !num(r) {
+        return Err("arithmetic needs numeric operands".into());
+    }
+    if l.scalar() != r.scalar() {
+        return Err(String::new());
+    }
+    match (l, r) {
+        (Ty::Matrix(c1, r1), Ty::Matrix(c2, r2)) => match op {
+            BinaryOp::Mul if c1 == r2 => Ok(Ty::Matrix(*c2, *r1)),
+            BinaryOp::Add | BinaryOp::Sub if c1 == c2 && r1 == r2 => Ok(l.clone()),
+            _ => Err("matrix dimensions do not fit".into()),
+        },
+        (Ty::Matrix(c, rows), Ty::Vector(_, n)) if op == BinaryOp::Mul => {
+            if c == n {
+                Ok(Ty::Vector(Scalar::Float, *rows))
+            } else {
+                Err(format!("a matrix with {c} columns multiplies a float{c}"))
+            }
+        }
+        (Ty::Vector(_, n), Ty::Matrix(c, rows)) if op == BinaryOp::Mul => {
+            if rows == n {
+                Ok(Ty::Vector(Scalar::Float, *c))
+            } else {
+                Err(format!("a float{n} multiplies a matrix with {n} rows"))
+            }
+        }
+        (Ty::Matrix(..), Ty::Scalar(_)) | (Ty::Scalar(_), Ty::Matrix(..)) if op == BinaryOp::Mul => Ok(if matches!(l, Ty::Matrix(..)) { l.clone() } else { r.clone() }),
+        (Ty::Matrix(..), _) | (_, Ty::Matrix(..)) => Err("this operator does not apply to matrices".into()),
+        (a, b) if a == b => Ok(a.clone()),
+        (Ty::Vector(..), Ty::Scalar(_)) => Ok(l.clone()),
+        (Ty::Scalar(_), Ty::Vector(..)) => Ok(r.clone()),
+        _ => Err("vector sizes differ".into()),
+    }
+}
+
+pub(super) fn unary_text(op: UnaryOp) -> &'static str {
+    match op {
+        UnaryOp::Neg => "-",
+        UnaryOp::Plus => "+",
+        UnaryOp::Not => "!",
+        UnaryOp::BitNot => "~",
+        UnaryOp::PreInc | UnaryOp::PostInc => "++",
+        UnaryOp::PreDec | UnaryOp::PostDec => "--",
+    }
+}
+
+/// Component indices of a swizzle (`xyzw` or `rgba`, not mixed).
+pub(super) fn parse_swizzle(s: &str, width: u8) -> Result<Components, String> {
+    if s.is_empty() || s.len() > 4 {
+        return Err("a swizzle has 1 to 4 components".into());
+    }
+    // Bytes: a string all of whose bytes are in a set is ASCII.
+    let sets: [&[u8; 4]; 3] = [b"xyzw", b"rgba", b"stpq"];
+    let set = sets.iter().find(|set| s.bytes().all(|c| set.contains(&c))).ok_or_else(|| "use components from one of xyzw, rgba or stpq".to_string())?;
+    let mut comps = Components::new();
+    for c in s.bytes() {
+        let i = set.iter().position(|&x| x == c).expect("checked above") as u8;
+        if i >= width {
+            return Err(format!("component `{}` does not exist on a {width}-component vector", c as char));
+        }
+        comps.push(i);
+    }
+    Ok(comps)
+}

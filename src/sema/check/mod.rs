@@ -1,0 +1,243 @@
+//! Name resolution and type checking of the parsed program.
+//!
+//! Declarations are checked first (structs, shader globals with their
+//! locations and texture units); `let` constants and helper functions are
+//! checked on first use, so helper functions land in the output callees
+//! first, as naga requires, and recursion is found on the way.
+//!
+//! The [`Checker`] is defined here; its methods are split by what they check:
+//! [`decls`] (structs, globals, types, constants), [`stmts`] (functions,
+//! statements, places) and [`exprs`] (expressions, calls, operators).
+
+mod decls;
+mod exprs;
+mod stmts;
+
+use std::collections::hash_map::Entry;
+use std::collections::BTreeMap;
+
+use super::builtins::{self, Builtin};
+use super::consts::{eval_const, ConstEnv};
+use super::tree::*;
+use super::types::{Scalar, StructId, Ty, TyDisplay, BOOL, FLOAT, INT, UINT};
+use crate::diag::{suggest, Diagnostic, Diagnostics};
+use rustc_hash::{FxHashMap, FxHashSet};
+use crate::lower::SamplerKind;
+use crate::source::Span;
+use crate::syntax::ast::{self, BinaryOp, UnaryOp};
+
+/// Largest `T[N]` accepted.
+pub const MAX_ARRAY_LEN: u64 = 65_536;
+/// Highest `@location` accepted (exclusive).
+pub const MAX_LOCATIONS: u32 = 16;
+/// Nesting depth of expressions and blocks the checker follows. A call of a
+/// helper function that is checked on first use starts the callee at the
+/// caller's depth plus [`CALL_DEPTH`], so chains of calls count too.
+pub const MAX_DEPTH: usize = 256;
+/// Depth one level of calls adds (the checker recurses into the callee).
+pub const CALL_DEPTH: usize = 4;
+/// Longest chain of constants defined in terms of each other.
+pub const MAX_CONST_CHAIN: usize = 64;
+/// Deepest nesting of struct and array types (`S { t : T[2] }` is 2).
+pub const MAX_TYPE_DEPTH: usize = 32;
+
+pub fn check(program: &ast::Program, diags: &mut Diagnostics) -> Option<Program> {
+    let mut c = Checker::new(program, diags);
+    c.declare();
+    c.check_entry_points();
+    if c.diags.has_errors() {
+        None
+    } else {
+        Some(c.out)
+    }
+}
+
+
+enum FuncState {
+    Unchecked(usize),
+    InProgress(Span),
+    Done(FuncId),
+    Failed,
+}
+
+/// The local names visible in a body. Each name maps to its innermost
+/// local; a scope's declarations are logged with what they hid and restored
+/// when it closes, so a use is one hash lookup however deep the blocks.
+#[derive(Default)]
+struct Scopes<'a> {
+    visible: FxHashMap<&'a str, LocalId>,
+    shadowed: Vec<(&'a str, Option<LocalId>)>,
+    /// For each open scope: its start in `shadowed` and its first local.
+    open: Vec<(usize, LocalId)>,
+}
+
+/// Per-function state while checking a body.
+struct FnCtx<'a> {
+    locals: Vec<Local>,
+    scopes: Scopes<'a>,
+    ret: Ty,
+    loop_depth: usize,
+    uses: BTreeMap<GlobalId, Span>,
+    fragment_only: Option<(Span, &'static str)>,
+    implicit_lod: bool,
+    callees: std::collections::BTreeSet<FuncId>,
+    depth: usize,
+}
+
+impl<'a> FnCtx<'a> {
+    fn open_scope(&mut self) {
+        let s = &mut self.scopes;
+        s.open.push((s.shadowed.len(), self.locals.len()));
+    }
+
+    fn close_scope(&mut self) {
+        let s = &mut self.scopes;
+        let (start, _) = s.open.pop().expect("a scope is open");
+        // Newest first, so a name declared twice gets back its first hidden local.
+        for (name, hidden) in s.shadowed.drain(start..).rev() {
+            match hidden {
+                Some(id) => s.visible.insert(name, id),
+                None => s.visible.remove(name),
+            };
+        }
+    }
+
+    fn declare(&mut self, name: &'a str, local: LocalId) {
+        let hidden = self.scopes.visible.insert(name, local);
+        self.scopes.shadowed.push((name, hidden));
+    }
+
+    fn lookup(&self, name: &str) -> Option<LocalId> {
+        self.scopes.visible.get(name).copied()
+    }
+
+    /// The local `name` refers to, if it was declared in the innermost scope
+    /// (locals are numbered in order, and closed scopes are no longer visible).
+    fn in_innermost_scope(&self, name: &str) -> Option<LocalId> {
+        let first = self.scopes.open.last().map_or(0, |s| s.1);
+        self.lookup(name).filter(|&id| id >= first)
+    }
+}
+
+struct Checker<'a, 'd> {
+    ast: &'a ast::Program,
+    diags: &'d mut Diagnostics,
+    out: Program,
+    // Names are borrowed from the syntax tree.
+    structs: FxHashMap<&'a str, StructId>,
+    globals: FxHashMap<&'a str, GlobalId>,
+    consts: FxHashMap<&'a str, ConstId>,
+    const_decls: FxHashMap<&'a str, &'a ast::ConstDecl>,
+    const_in_progress: Vec<&'a str>,
+    /// Constants already reported as wrong: their uses report nothing more.
+    failed_consts: FxHashSet<&'a str>,
+    funcs: FxHashMap<&'a str, FuncState>,
+    fn_decls: Vec<&'a ast::FunctionDecl>,
+    entry_decls: Vec<(&'a ast::FunctionDecl, naga::ShaderStage)>,
+    builtin_vars: FxHashMap<BuiltinVar, GlobalId>,
+    /// Depth at which the next helper function checked on first use starts.
+    call_depth: usize,
+    spare_scopes: Vec<Scopes<'a>>,
+}
+
+fn is_entry(f: &ast::FunctionDecl) -> Option<naga::ShaderStage> {
+    f.annotations.iter().find_map(|a| match a.name.name.as_str() {
+        "vertex_program" => Some(naga::ShaderStage::Vertex),
+        "fragment_program" => Some(naga::ShaderStage::Fragment),
+        _ => None,
+    })
+}
+
+fn entry_name(f: &ast::FunctionDecl) -> String {
+    for a in &f.annotations {
+        for arg in &a.args {
+            if arg.name.name == "name" {
+                match &arg.value {
+                    Some(ast::Expr { kind: ast::ExprKind::Str(s), .. }) => return s.clone(),
+                    Some(ast::Expr { kind: ast::ExprKind::Name(id), .. }) => return id.name.as_str().to_string(),
+                    _ => {}
+                }
+            }
+        }
+    }
+    f.name.name.as_str().to_string()
+}
+
+impl<'a, 'd> Checker<'a, 'd> {
+    fn new(ast: &'a ast::Program, diags: &'d mut Diagnostics) -> Self {
+        Checker {
+            ast,
+            diags,
+            out: Program::default(),
+            structs: FxHashMap::default(),
+            globals: FxHashMap::default(),
+            consts: FxHashMap::default(),
+            const_decls: FxHashMap::default(),
+            const_in_progress: Vec::new(),
+            failed_consts: FxHashSet::default(),
+            funcs: FxHashMap::default(),
+            fn_decls: Vec::new(),
+            entry_decls: Vec::new(),
+            builtin_vars: FxHashMap::default(),
+            call_depth: 0,
+            spare_scopes: Vec::new(),
+        }
+    }
+
+    fn show(&self, ty: &Ty) -> String {
+        let names: Vec<String> = self.out.structs.iter().map(|s| s.name.clone()).collect();
+        TyDisplay { ty, struct_names: &names }.to_string()
+    }
+
+    /// Reports a name defined twice at top level.
+    fn check_unique(&mut self, seen: &mut FxHashMap<&'a str, Span>, id: &'a ast::Ident) {
+        match seen.entry(&id.name) {
+            Entry::Occupied(prev) => {
+                let d = Diagnostic::error(format!("`{}` is defined more than once", id.name), id.span)
+                    .with_label("defined again here")
+                    .with_secondary(*prev.get(), "first defined here");
+                self.diags.push(d);
+            }
+            Entry::Vacant(v) => {
+                v.insert(id.span);
+            }
+        }
+    }
+}
+
+/// A placeholder for an expression already reported as wrong (type `Error`:
+/// its uses report nothing more).
+pub(super) fn err_expr(span: Span) -> Expr {
+    Expr { kind: ExprKind::Bool(false), ty: Ty::Error, span }
+}
+
+pub fn op_text(op: BinaryOp) -> &'static str {
+    use BinaryOp::*;
+    match op {
+        Add => "+",
+        Sub => "-",
+        Mul => "*",
+        Div => "/",
+        Mod => "%",
+        Eq => "==",
+        Ne => "!=",
+        Lt => "<",
+        Le => "<=",
+        Gt => ">",
+        Ge => ">=",
+        And => "&&",
+        Or => "||",
+        Xor => "^^",
+        BitAnd => "&",
+        BitOr => "|",
+        BitXor => "^",
+        Shl => "<<",
+        Shr => ">>",
+    }
+}
+
+/// The built-in type names, offered when a type or constructor name is misspelt.
+const TYPE_NAMES: &[&str] = &[
+    "float", "float2", "float3", "float4", "int", "int2", "int3", "int4", "uint", "uint2", "uint3", "uint4", "bool", "bool2", "bool3", "bool4", "float2x2",
+    "float3x3", "float4x4", "sampler2D", "sampler2DShadow", "sampler2DArray", "sampler2DArrayShadow", "sampler3D", "samplerCube", "samplerCubeShadow",
+];

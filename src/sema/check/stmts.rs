@@ -1,0 +1,521 @@
+//! Function bodies: entry points and their stage rules, helper functions
+//! checked on first use, statements, and assignable places.
+
+use super::*;
+
+impl<'a, 'd> Checker<'a, 'd> {
+    // ---------------------------------------------------------------- functions
+
+    pub(super) fn check_entry_points(&mut self) {
+        let entries = self.entry_decls.clone();
+        let mut names: FxHashMap<String, Span> = FxHashMap::with_capacity_and_hasher(entries.len(), Default::default());
+        for (decl, stage) in entries {
+            let name = entry_name(decl);
+            if let Some(prev) = names.insert(name.clone(), decl.name.span) {
+                let d = Diagnostic::error(format!("two entry points are named `{name}`"), decl.name.span).with_secondary(prev, "first one here");
+                self.diags.push(d);
+                continue;
+            }
+            let Some(func) = self.check_function(decl, Some(stage)) else { continue };
+            self.check_stage_rules(&name, stage, &func);
+            self.out.entry_points.push(EntryPoint { name, stage, func });
+        }
+    }
+
+    /// Reports uses that the entry point's stage does not allow.
+    pub(super) fn check_stage_rules(&mut self, name: &str, stage: naga::ShaderStage, func: &Function) {
+        for (&gid, &span) in &func.uses {
+            let g = &self.out.globals[gid];
+            if let GlobalKind::Builtin(b) = g.kind {
+                if b.stage() != stage {
+                    let d = Diagnostic::error(format!("`{}` is not available in {} entry point `{name}`", b.name(), stage_name(stage)), span)
+                        .with_note(format!("`{}` belongs to the {} stage", b.name(), stage_name(b.stage())));
+                    self.diags.push(d);
+                }
+            }
+        }
+        if let (naga::ShaderStage::Vertex, Some((span, what))) = (stage, func.fragment_only) {
+            let d = Diagnostic::error(format!("{what} is only available in fragment entry points, and `{name}` is a vertex entry point"), span);
+            self.diags.push(d);
+        }
+        // Inputs and outputs of one entry point need distinct locations:
+        // `@in`/`@inout` inputs of a fragment entry point, `@inout`/`@out`
+        // outputs of a vertex entry point (transform feedback outputs).
+        let vertex = stage == naga::ShaderStage::Vertex;
+        let mut seen: FxHashMap<(bool, u32), GlobalId> = FxHashMap::with_capacity_and_hasher(func.uses.len(), Default::default());
+        for (&gid, &span) in &func.uses {
+            let GlobalKind::Io { kind, location } = self.out.globals[gid].kind else { continue };
+            let output = match kind {
+                IoKind::In => false,
+                IoKind::Out => true,
+                IoKind::InOut => vertex,
+            };
+            if let Some(&prev) = seen.get(&(output, location)) {
+                let (a, b) = (&self.out.globals[prev], &self.out.globals[gid]);
+                let d = Diagnostic::error(
+                    format!("{} entry point `{name}` uses `{}` and `{}`, which are both {} at location {location}", stage_name(stage), a.name, b.name, if output { "outputs" } else { "inputs" }),
+                    span,
+                )
+                .with_secondary(a.span, format!("`{}` declared here", a.name))
+                .with_secondary(b.span, format!("`{}` declared here", b.name))
+                .with_note("`@in` and `@inout` share the input locations of a fragment entry point, `@inout` and `@out` the output locations of a vertex entry point; give one of them another `@location = N`");
+                self.diags.push(d);
+            } else {
+                seen.insert((output, location), gid);
+            }
+        }
+    }
+
+    /// Looks up (checking on first use) a helper function.
+    pub(super) fn function_id(&mut self, name: &str, call_span: Span) -> Option<FuncId> {
+        match self.funcs.get(name)? {
+            FuncState::Done(id) => Some(*id),
+            FuncState::Failed => None,
+            FuncState::InProgress(def) => {
+                let d = Diagnostic::error(format!("`{name}` calls itself; shaders cannot recurse"), call_span).with_secondary(*def, "function defined here");
+                self.diags.push(d);
+                None
+            }
+            FuncState::Unchecked(idx) => {
+                let decl = self.fn_decls[*idx];
+                let name: &'a str = &decl.name.name;
+                if self.call_depth > MAX_DEPTH {
+                    let d = Diagnostic::error(format!("calls nest too deeply (limit {MAX_DEPTH} levels of nested calls, expressions and blocks)"), call_span)
+                        .with_secondary(decl.name.span, "this function is called at the limit");
+                    self.diags.push(d);
+                    self.funcs.insert(name, FuncState::Failed);
+                    return None;
+                }
+                self.funcs.insert(name, FuncState::InProgress(decl.name.span));
+                match self.check_function(decl, None) {
+                    Some(f) => {
+                        let id = self.out.functions.len();
+                        self.out.functions.push(f);
+                        self.funcs.insert(name, FuncState::Done(id));
+                        Some(id)
+                    }
+                    None => {
+                        self.funcs.insert(name, FuncState::Failed);
+                        None
+                    }
+                }
+            }
+        }
+    }
+
+    pub(super) fn check_function(&mut self, decl: &'a ast::FunctionDecl, entry: Option<naga::ShaderStage>) -> Option<Function> {
+        let errors_before = self.diags.error_count();
+        let ret = match &decl.ret {
+            Some(t) if entry.is_none() => self.resolve_type(t),
+            _ => Ty::Void,
+        };
+        if ret.is_sampler_like() {
+            self.diags.push(Diagnostic::error("functions cannot return samplers", decl.ret.as_ref().map(|t| t.span).unwrap_or(decl.name.span)));
+        }
+        // Scope tables are reused from function to function (a callee is
+        // checked in the middle of its first caller, hence a pool).
+        let mut scopes = self.spare_scopes.pop().unwrap_or_else(|| Scopes { visible: FxHashMap::with_capacity_and_hasher(16, Default::default()), ..Default::default() });
+        // The parameters' scope.
+        scopes.open.push((0, 0));
+        let mut cx = FnCtx {
+            locals: Vec::new(),
+            scopes,
+            ret: ret.clone(),
+            loop_depth: 0,
+            uses: BTreeMap::new(),
+            fragment_only: None,
+            implicit_lod: false,
+            callees: Default::default(),
+            depth: if entry.is_some() { 0 } else { self.call_depth },
+        };
+        for p in &decl.params {
+            let ty = self.resolve_type(&p.ty);
+            if ty.is_sampler_like() {
+                let d = Diagnostic::error("sampler parameters are not supported yet; use the sampler global directly", p.ty.span);
+                self.diags.push(d);
+            }
+            self.declare_local(&mut cx, &p.name, ty, false);
+        }
+        let params = cx.locals.len();
+        let body = self.check_block(&mut cx, &decl.body.stmts);
+        let mut scopes = std::mem::take(&mut cx.scopes);
+        scopes.visible.clear();
+        scopes.shadowed.clear();
+        scopes.open.clear();
+        self.spare_scopes.push(scopes);
+        if !ret.is_error() && ret != Ty::Void && !always_returns(&body) {
+            let d = Diagnostic::error(format!("function `{}` can reach its end without returning a `{}`", decl.name.name, self.show(&ret)), decl.body.span)
+                .with_label("the last statement here does not return");
+            self.diags.push(d);
+        }
+        if self.diags.error_count() > errors_before {
+            return None;
+        }
+        Some(Function {
+            name: decl.name.name.as_str().to_string(),
+            params,
+            locals: cx.locals,
+            ret,
+            body,
+            span: decl.span,
+            uses: cx.uses,
+            fragment_only: cx.fragment_only,
+            implicit_lod: cx.implicit_lod,
+            callees: cx.callees,
+        })
+    }
+
+    pub(super) fn declare_local(&mut self, cx: &mut FnCtx<'a>, id: &'a ast::Ident, ty: Ty, mutable: bool) -> LocalId {
+        if self.globals.contains_key(id.name.as_str()) {
+            let gspan = self.out.globals[self.globals[id.name.as_str()]].span;
+            let d = Diagnostic::error(format!("`{}` shadows the shader global of the same name", id.name), id.span).with_secondary(gspan, "global declared here");
+            self.diags.push(d);
+        } else if let Some(prev) = cx.in_innermost_scope(&id.name) {
+            let d = Diagnostic::error(format!("`{}` is already declared in this block", id.name), id.span).with_secondary(cx.locals[prev].span, "first declared here");
+            self.diags.push(d);
+        }
+        let lid = cx.locals.len();
+        cx.locals.push(Local { name: id.name.clone(), ty, mutable, span: id.span });
+        cx.declare(&id.name, lid);
+        lid
+    }
+
+    // ---------------------------------------------------------------- statements
+
+    pub(super) fn check_block(&mut self, cx: &mut FnCtx<'a>, stmts: &'a [ast::Stmt]) -> Vec<Stmt> {
+        cx.depth += 1;
+        if cx.depth > MAX_DEPTH {
+            cx.depth -= 1;
+            if let Some(s) = stmts.first() {
+                self.diags.push(Diagnostic::error(format!("blocks nest deeper than the limit of {MAX_DEPTH}"), s.span));
+            }
+            return Vec::new();
+        }
+        cx.open_scope();
+        // Usually one checked statement per statement.
+        let mut out = Vec::with_capacity(stmts.len());
+        for s in stmts {
+            self.check_stmt(cx, s, &mut out);
+        }
+        cx.close_scope();
+        cx.depth -= 1;
+        out
+    }
+
+    pub(super) fn check_stmt(&mut self, cx: &mut FnCtx<'a>, s: &'a ast::Stmt, out: &mut Vec<Stmt>) {
+        match &s.kind {
+            ast::StmtKind::Local { mutable, names, ty, init } => {
+                let declared = ty.as_ref().map(|t| self.resolve_type(t));
+                let init_expr = init.as_ref().map(|e| self.check_expr(cx, e));
+                let ty = match (&declared, &init_expr) {
+                    (Some(d), Some(e)) => {
+                        if !d.is_error() && !e.ty.is_error() && *d != e.ty {
+                            let d = Diagnostic::error(format!("type mismatch: `{}` is declared `{}` but initialised with `{}`", names[0].name, self.show(d), self.show(&e.ty)), e.span)
+                                .with_label(format!("this is `{}`", self.show(&e.ty)));
+                            self.diags.push(d);
+                        }
+                        d.clone()
+                    }
+                    (Some(d), None) => {
+                        if !*mutable {
+                            self.diags.push(Diagnostic::error(format!("`let {}` needs a value", names[0].name), s.span));
+                        }
+                        d.clone()
+                    }
+                    (None, Some(e)) => e.ty.clone(),
+                    (None, None) => {
+                        self.diags.push(Diagnostic::error(format!("`{}` needs a type or an initial value", names[0].name), s.span));
+                        Ty::Error
+                    }
+                };
+                if !ty.is_value() && !ty.is_error() {
+                    let msg = match ty {
+                        Ty::Void => "this expression has no value".to_string(),
+                        _ => format!("a local variable cannot hold a `{}`", self.show(&ty)),
+                    };
+                    self.diags.push(Diagnostic::error(msg, init_expr.as_ref().map(|e| e.span).unwrap_or(s.span)));
+                }
+                // `var a, b = x`: every name gets its own copy of the value.
+                let mut init_expr = init_expr;
+                for (i, n) in names.iter().enumerate() {
+                    let init = if i + 1 == names.len() {
+                        init_expr.take()
+                    } else {
+                        init.as_ref().map(|e| self.check_expr(cx, e))
+                    };
+                    let local = self.declare_local(cx, n, ty.clone(), *mutable);
+                    out.push(Stmt::Local { local, init, span: s.span });
+                }
+            }
+            ast::StmtKind::Assign { target, op, value } => {
+                let t = self.check_place(cx, target);
+                let v = self.check_expr(cx, value);
+                let bin = assign_binop(*op);
+                if !t.ty.is_error() && !v.ty.is_error() {
+                    match bin {
+                        None if t.ty != v.ty => {
+                            let d = Diagnostic::error(format!("type mismatch: cannot assign `{}` to `{}`", self.show(&v.ty), self.show(&t.ty)), v.span)
+                                .with_label(format!("this is `{}`", self.show(&v.ty)))
+                                .with_secondary(t.span, format!("this is `{}`", self.show(&t.ty)));
+                            self.diags.push(d);
+                        }
+                        Some(op) => {
+                            if let Some(rt) = self.binary_type(op, &t.ty, &v.ty, s.span) {
+                                if rt != t.ty {
+                                    let d = Diagnostic::error(
+                                        format!("`{}` of `{}` and `{}` gives `{}`, which cannot be stored back into `{}`", op_text(op), self.show(&t.ty), self.show(&v.ty), self.show(&rt), self.show(&t.ty)),
+                                        s.span,
+                                    );
+                                    self.diags.push(d);
+                                }
+                            }
+                        }
+                        None => {}
+                    }
+                }
+                out.push(Stmt::Assign { target: t, op: bin, value: v, span: s.span });
+            }
+            ast::StmtKind::Expr(e) => self.check_expr_stmt(cx, e, s.span, out),
+            ast::StmtKind::If { cond, then, elifs, otherwise } => {
+                let c = self.check_cond(cx, cond);
+                let then = self.check_block(cx, &then.stmts);
+                // elif chains become nested ifs.
+                let mut tail = otherwise.as_ref().map(|b| self.check_block(cx, &b.stmts)).unwrap_or_default();
+                for (ec, eb) in elifs.iter().rev() {
+                    let ec2 = self.check_cond(cx, ec);
+                    let body = self.check_block(cx, &eb.stmts);
+                    tail = vec![Stmt::If { cond: ec2, then: body, otherwise: tail, span: ec.span.to(eb.span) }];
+                }
+                out.push(Stmt::If { cond: c, then, otherwise: tail, span: s.span });
+            }
+            ast::StmtKind::While { cond, body } => {
+                let c = self.check_cond(cx, cond);
+                cx.loop_depth += 1;
+                let body = self.check_block(cx, &body.stmts);
+                cx.loop_depth -= 1;
+                out.push(Stmt::While { cond: c, body, span: s.span });
+            }
+            ast::StmtKind::For { var, iter, body } => {
+                let (start, end) = self.check_range(cx, iter);
+                cx.open_scope();
+                let ty = start.ty.clone();
+                let local = self.declare_local(cx, var, ty, false);
+                cx.loop_depth += 1;
+                let body = self.check_block(cx, &body.stmts);
+                cx.loop_depth -= 1;
+                cx.close_scope();
+                out.push(Stmt::For { var: local, start, end, body, span: s.span });
+            }
+            ast::StmtKind::Return(value) => {
+                let v = value.as_ref().map(|e| self.check_expr(cx, e));
+                match (&v, &cx.ret) {
+                    (None, Ty::Void) => {}
+                    (Some(e), Ty::Void) => {
+                        self.diags.push(Diagnostic::error("this function returns nothing, so `return` takes no value", e.span));
+                    }
+                    (None, r) if !r.is_error() => {
+                        let msg = format!("`return` needs a `{}` value here", self.show(r));
+                        self.diags.push(Diagnostic::error(msg, s.span));
+                    }
+                    (Some(e), r) if !r.is_error() && !e.ty.is_error() && e.ty != *r => {
+                        let d = Diagnostic::error(format!("type mismatch: returning `{}` from a function declared to return `{}`", self.show(&e.ty), self.show(r)), e.span);
+                        self.diags.push(d);
+                    }
+                    _ => {}
+                }
+                out.push(Stmt::Return(v, s.span));
+            }
+            ast::StmtKind::Break | ast::StmtKind::Continue => {
+                let is_break = matches!(s.kind, ast::StmtKind::Break);
+                if cx.loop_depth == 0 {
+                    let d = Diagnostic::error(format!("`{}` outside of a loop", if is_break { "break" } else { "continue" }), s.span);
+                    self.diags.push(d);
+                }
+                out.push(if is_break { Stmt::Break(s.span) } else { Stmt::Continue(s.span) });
+            }
+            ast::StmtKind::Block(b) => {
+                let inner = self.check_block(cx, &b.stmts);
+                // A nested block only scopes names; its statements run in order.
+                out.push(Stmt::If { cond: Expr { kind: ExprKind::Bool(true), ty: BOOL, span: b.span }, then: inner, otherwise: Vec::new(), span: b.span });
+            }
+        }
+    }
+
+    pub(super) fn check_expr_stmt(&mut self, cx: &mut FnCtx<'a>, e: &'a ast::Expr, span: Span, out: &mut Vec<Stmt>) {
+        match &e.kind {
+            ast::ExprKind::Unary(op @ (UnaryOp::PreInc | UnaryOp::PreDec | UnaryOp::PostInc | UnaryOp::PostDec), inner) => {
+                let t = self.check_place(cx, inner);
+                let one = match t.ty {
+                    Ty::Scalar(Scalar::Int) => Some(ExprKind::Int(1)),
+                    Ty::Scalar(Scalar::Uint) => Some(ExprKind::Uint(1)),
+                    Ty::Scalar(Scalar::Float) => Some(ExprKind::Float(1.0)),
+                    Ty::Error => None,
+                    _ => {
+                        let d = Diagnostic::error(format!("`++`/`--` need an int, uint or float, not `{}`", self.show(&t.ty)), t.span);
+                        self.diags.push(d);
+                        None
+                    }
+                };
+                if let Some(one) = one {
+                    let bop = if matches!(op, UnaryOp::PreInc | UnaryOp::PostInc) { BinaryOp::Add } else { BinaryOp::Sub };
+                    let value = Expr { kind: one, ty: t.ty.clone(), span: e.span };
+                    out.push(Stmt::Assign { target: t, op: Some(bop), value, span });
+                }
+            }
+            ast::ExprKind::Call { callee, args } if callee.name == "discard" => {
+                if !args.is_empty() {
+                    self.diags.push(Diagnostic::error("`discard()` takes no arguments", e.span));
+                }
+                cx.fragment_only.get_or_insert((e.span, "`discard()`"));
+                out.push(Stmt::Discard(span));
+            }
+            ast::ExprKind::Call { .. } => {
+                let x = self.check_expr(cx, e);
+                out.push(Stmt::Expr(x));
+            }
+            ast::ExprKind::Paren(inner) => self.check_expr_stmt(cx, inner, span, out),
+            _ => {
+                let x = self.check_expr(cx, e);
+                if !x.ty.is_error() {
+                    let d = Diagnostic::error("this expression's value is not used", e.span).with_note("only calls, assignments and `++`/`--` can stand alone as statements");
+                    self.diags.push(d);
+                }
+            }
+        }
+    }
+
+    pub(super) fn check_cond(&mut self, cx: &mut FnCtx<'a>, e: &'a ast::Expr) -> Expr {
+        let c = self.check_expr(cx, e);
+        if !c.ty.is_error() && c.ty != BOOL {
+            let d = Diagnostic::error(format!("type mismatch: a condition must be `bool`, found `{}`", self.show(&c.ty)), c.span);
+            self.diags.push(d);
+        }
+        c
+    }
+
+    /// `range(n)` or `range(a, b)`.
+    pub(super) fn check_range(&mut self, cx: &mut FnCtx<'a>, iter: &'a ast::Expr) -> (Expr, Expr) {
+        let bad = |span| Expr { kind: ExprKind::Int(0), ty: Ty::Error, span };
+        let ast::ExprKind::Call { callee, args } = &iter.kind else {
+            self.diags.push(Diagnostic::error("`for` loops iterate over `range(n)` or `range(a, b)`", iter.span));
+            return (bad(iter.span), bad(iter.span));
+        };
+        if callee.name != "range" || args.is_empty() || args.len() > 2 {
+            let msg = if callee.name == "range" { "`range` takes one or two arguments: range(n) or range(a, b)" } else { "`for` loops iterate over `range(n)` or `range(a, b)`" };
+            self.diags.push(Diagnostic::error(msg, iter.span));
+            return (bad(iter.span), bad(iter.span));
+        }
+        let mut xs: Vec<Expr> = args.iter().map(|a| self.check_expr(cx, a)).collect();
+        for x in &xs {
+            if !x.ty.is_error() && x.ty != INT && x.ty != UINT {
+                let d = Diagnostic::error(format!("type mismatch: `range` bounds must be `int` or `uint`, found `{}`", self.show(&x.ty)), x.span);
+                self.diags.push(d);
+            }
+        }
+        if xs.len() == 2 && xs[0].ty != xs[1].ty && !xs[0].ty.is_error() && !xs[1].ty.is_error() {
+            let d = Diagnostic::error(format!("type mismatch: `range` bounds are `{}` and `{}`", self.show(&xs[0].ty), self.show(&xs[1].ty)), iter.span);
+            self.diags.push(d);
+        }
+        if xs.len() == 1 {
+            let end = xs.pop().expect("one argument");
+            let zero = if end.ty == UINT { ExprKind::Uint(0) } else { ExprKind::Int(0) };
+            let ty = if end.ty == UINT { UINT } else { INT };
+            (Expr { kind: zero, ty, span: iter.span }, end)
+        } else {
+            let end = xs.pop().expect("two arguments");
+            let start = xs.pop().expect("two arguments");
+            (start, end)
+        }
+    }
+
+    // ---------------------------------------------------------------- places
+
+    /// An assignable expression: a `var` local, an output global, or a
+    /// field, swizzle or element of one.
+    pub(super) fn check_place(&mut self, cx: &mut FnCtx<'a>, e: &'a ast::Expr) -> Expr {
+        let x = self.check_expr(cx, e);
+        if let Err(d) = self.place_ok(cx, &x) {
+            self.diags.push(d);
+        }
+        x
+    }
+
+    pub(super) fn place_ok(&self, cx: &FnCtx<'a>, x: &Expr) -> Result<(), Diagnostic> {
+        match &x.kind {
+            ExprKind::Local(id) => {
+                let l = &cx.locals[*id];
+                if l.mutable {
+                    Ok(())
+                } else {
+                    Err(Diagnostic::error(format!("cannot assign to `{}`: it is declared with `let`", l.name), x.span)
+                        .with_label("cannot assign")
+                        .with_secondary(l.span, "declared here")
+                        .with_note(format!("help: declare it with `var {}` to make it mutable", l.name)))
+                }
+            }
+            ExprKind::Global(id) => {
+                let g = &self.out.globals[*id];
+                let why = match g.kind {
+                    GlobalKind::Uniform | GlobalKind::Sampler { .. } => Some("it is a uniform, set by the host"),
+                    GlobalKind::Io { kind: IoKind::In, .. } => Some("it is an `@in` input"),
+                    GlobalKind::Builtin(b) if !b.is_output() => Some("it is a builtin input"),
+                    _ => None,
+                };
+                match why {
+                    None => Ok(()),
+                    Some(why) => Err(Diagnostic::error(format!("cannot assign to `{}`: {why}", g.name), x.span).with_secondary(g.span, "declared here")),
+                }
+            }
+            ExprKind::Const(_) => Err(Diagnostic::error("cannot assign to a constant", x.span)),
+            ExprKind::Field(base, _) | ExprKind::Index(base, _) => self.place_ok(cx, base),
+            ExprKind::Swizzle(base, comps) => {
+                let mut seen = [false; 4];
+                for &c in comps {
+                    if std::mem::replace(&mut seen[c as usize], true) {
+                        return Err(Diagnostic::error("cannot assign to a swizzle that repeats a component", x.span));
+                    }
+                }
+                self.place_ok(cx, base)
+            }
+            _ if x.ty.is_error() => Ok(()),
+            _ => Err(Diagnostic::error("cannot assign to this expression", x.span).with_label("not a variable")),
+        }
+    }
+
+}
+
+pub(super) fn stage_name(s: naga::ShaderStage) -> &'static str {
+    match s {
+        naga::ShaderStage::Vertex => "vertex",
+        naga::ShaderStage::Fragment => "fragment",
+        _ => "compute",
+    }
+}
+
+/// Whether every path through `stmts` ends in `return` (or `discard`).
+pub(super) fn always_returns(stmts: &[Stmt]) -> bool {
+    match stmts.last() {
+        Some(Stmt::Return(..)) | Some(Stmt::Discard(_)) => true,
+        Some(Stmt::If { then, otherwise, cond, .. }) => {
+            (always_returns(then) && always_returns(otherwise)) || (matches!(cond.kind, ExprKind::Bool(true)) && always_returns(then))
+        }
+        _ => false,
+    }
+}
+
+pub(super) fn assign_binop(op: ast::AssignOp) -> Option<BinaryOp> {
+    use ast::AssignOp as A;
+    Some(match op {
+        A::Set => return None,
+        A::Add => BinaryOp::Add,
+        A::Sub => BinaryOp::Sub,
+        A::Mul => BinaryOp::Mul,
+        A::Div => BinaryOp::Div,
+        A::Mod => BinaryOp::Mod,
+        A::BitAnd => BinaryOp::BitAnd,
+        A::BitOr => BinaryOp::BitOr,
+        A::BitXor => BinaryOp::BitXor,
+        A::Shl => BinaryOp::Shl,
+        A::Shr => BinaryOp::Shr,
+    })
+}
