@@ -179,23 +179,32 @@ pub fn load_program_with(
         return Ok(ShaderSet::single(path.display().to_string(), code, refl));
     }
     let opts = crate::Options { targets: vec![via.target()], defines, ..Default::default() };
+    match compile_program(file, &opts) {
+        (name, Some(compiled)) => ShaderSet::from_compiled(name, &compiled, via).map_err(|e| e.to_string()),
+        (name, None) => Err(format!(
+            "{name} did not compile (the hand-written port renders with `umbrac render {}`)",
+            hand::FILE_NAME
+        )),
+    }
+}
+
+/// Compiles the program the runner draws: `file`, else `shaders/shadow.das`
+/// when run from a checkout, else the copy built into the binary. Its
+/// diagnostics go to stderr; the result comes back only when it has no
+/// errors, with the name the diagnostics use.
+pub(super) fn compile_program(file: Option<&Path>, opts: &crate::Options) -> (String, Option<crate::Compiled>) {
     let compilation = match file {
-        Some(path) => crate::compile_file(path, &opts),
-        None if Path::new(DEFAULT_PROGRAM).is_file() => crate::compile_file(Path::new(DEFAULT_PROGRAM), &opts),
-        None => crate::compile_source(DEFAULT_PROGRAM, BUILTIN_PROGRAM, &opts),
+        Some(path) => crate::compile_file(path, opts),
+        None if Path::new(DEFAULT_PROGRAM).is_file() => crate::compile_file(Path::new(DEFAULT_PROGRAM), opts),
+        None => crate::compile_source(DEFAULT_PROGRAM, BUILTIN_PROGRAM, opts),
     };
     let name = file.map_or(DEFAULT_PROGRAM.to_string(), |p| p.display().to_string());
     let diagnostics = compilation.render_diagnostics();
     if !diagnostics.is_empty() {
         eprint!("{diagnostics}");
     }
-    match &compilation.result {
-        Some(compiled) if !compilation.has_errors() => ShaderSet::from_compiled(name, compiled, via).map_err(|e| e.to_string()),
-        _ => Err(format!(
-            "{name} did not compile (the hand-written port renders with `umbrac render {}`)",
-            hand::FILE_NAME
-        )),
-    }
+    let ok = !compilation.has_errors();
+    (name, compilation.result.filter(|_| ok))
 }
 
 fn execute(args: &RenderArgs) -> Result<(), String> {

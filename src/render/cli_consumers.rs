@@ -2,14 +2,11 @@
 
 use std::path::Path;
 
-use super::cli::RenderArgs;
+use super::cli::{compile_program, RenderArgs};
 use super::consumers::{self, Consumer, Programs, Status};
 use super::image_ops;
 use super::scene::FrameParams;
 use crate::Target;
-
-const BUILTIN_PROGRAM: &str = include_str!("../../shaders/shadow.das");
-const DEFAULT_PROGRAM: &str = "shaders/shadow.das";
 
 /// The difference (out of 255) above which the comparison counts a pixel.
 pub const DELTA: u8 = 8;
@@ -19,19 +16,9 @@ fn compile(file: Option<&Path>, targets: Vec<Target>) -> Result<(String, crate::
         return Err(format!("the GL consumers run the compiler's GLSL: give a .das program, not a .{ext} file"));
     }
     let opts = crate::Options { targets, ..Default::default() };
-    let compilation = match file {
-        Some(path) => crate::compile_file(path, &opts),
-        None if Path::new(DEFAULT_PROGRAM).is_file() => crate::compile_file(Path::new(DEFAULT_PROGRAM), &opts),
-        None => crate::compile_source(DEFAULT_PROGRAM, BUILTIN_PROGRAM, &opts),
-    };
-    let name = file.map_or(DEFAULT_PROGRAM.to_string(), |p| p.display().to_string());
-    let diagnostics = compilation.render_diagnostics();
-    if !diagnostics.is_empty() {
-        eprint!("{diagnostics}");
-    }
-    match compilation.result {
-        Some(compiled) if !compilation.has_errors() => Ok((name, compiled)),
-        _ => Err(format!("{name} did not compile")),
+    match compile_program(file, &opts) {
+        (name, Some(compiled)) => Ok((name, compiled)),
+        (name, None) => Err(format!("{name} did not compile")),
     }
 }
 

@@ -658,25 +658,7 @@ impl Renderer {
             }
         }
         if params.view != View::ShadowMap {
-            let c = scene::CLEAR;
-            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-                label: Some("main pass"),
-                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                    view: &color_view,
-                    depth_slice: None,
-                    resolve_target: None,
-                    ops: wgpu::Operations {
-                        load: wgpu::LoadOp::Clear(wgpu::Color { r: c[0], g: c[1], b: c[2], a: 1.0 }),
-                        store: wgpu::StoreOp::Store,
-                    },
-                })],
-                depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                    view: &depth_view,
-                    depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Discard }),
-                    stencil_ops: None,
-                }),
-                ..Default::default()
-            });
+            let mut pass = begin_main_pass(&mut encoder, "main pass", &color_view, &depth_view);
             pass.set_pipeline(&program.main.pipeline);
             for (d, draw) in draws.iter().enumerate() {
                 self.draw_mesh(&mut pass, draw.object, &main_groups[d]);
@@ -792,4 +774,33 @@ impl Renderer {
         let border = setup.shadow.fit == super::setup::Fit::Tight || matches!(setup.light, super::setup::Light::Spot { .. });
         self.samplers.get(&(linear, border)).or_else(|| self.samplers.get(&(linear, false))).unwrap_or(&self.sampler)
     }
+}
+
+/// The main pass of a frame: colour cleared to the scene's background and
+/// stored, depth cleared and discarded afterwards (only the image is read).
+pub(crate) fn begin_main_pass<'e>(
+    encoder: &'e mut wgpu::CommandEncoder,
+    label: &str,
+    color: &wgpu::TextureView,
+    depth: &wgpu::TextureView,
+) -> wgpu::RenderPass<'e> {
+    let c = scene::CLEAR;
+    encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
+        label: Some(label),
+        color_attachments: &[Some(wgpu::RenderPassColorAttachment {
+            view: color,
+            depth_slice: None,
+            resolve_target: None,
+            ops: wgpu::Operations {
+                load: wgpu::LoadOp::Clear(wgpu::Color { r: c[0], g: c[1], b: c[2], a: 1.0 }),
+                store: wgpu::StoreOp::Store,
+            },
+        })],
+        depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
+            view: depth,
+            depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Discard }),
+            stencil_ops: None,
+        }),
+        ..Default::default()
+    })
 }

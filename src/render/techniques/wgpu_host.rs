@@ -8,7 +8,7 @@ use image::RgbaImage;
 use wgpu::util::DeviceExt;
 
 use crate::emit::reflect_types::Reflection;
-use crate::render::gpu::{Renderer, ShaderCode, ShaderSet, Via};
+use crate::render::gpu::{begin_main_pass, Renderer, ShaderCode, ShaderSet, Via};
 use crate::render::scene::{self, FrameParams};
 
 use super::{block_bytes, entry, sampler_layer, ShadowTarget, TechFrame, Technique, DRAWS};
@@ -340,25 +340,7 @@ impl<'r> TechRenderer<'r> {
         }
         {
             let groups: Vec<_> = (0..DRAWS.len()).map(|d| bind(&p.main, None, d)).collect();
-            let c = scene::CLEAR;
-            let mut pass = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
-                label: Some("technique main pass"),
-                color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                    view: &color_view,
-                    depth_slice: None,
-                    resolve_target: None,
-                    ops: wgpu::Operations {
-                        load: wgpu::LoadOp::Clear(wgpu::Color { r: c[0], g: c[1], b: c[2], a: 1.0 }),
-                        store: wgpu::StoreOp::Store,
-                    },
-                })],
-                depth_stencil_attachment: Some(wgpu::RenderPassDepthStencilAttachment {
-                    view: &depth,
-                    depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(1.0), store: wgpu::StoreOp::Discard }),
-                    stencil_ops: None,
-                }),
-                ..Default::default()
-            });
+            let mut pass = begin_main_pass(&mut encoder, "technique main pass", &color_view, &depth);
             pass.set_pipeline(&p.main.pipeline);
             for (d, &object) in DRAWS.iter().enumerate() {
                 self.renderer.draw_mesh(&mut pass, object, &groups[d]);
