@@ -240,14 +240,7 @@ fn on_compiler_stack<F: FnOnce() -> Compilation + Send>(job: F) -> Compilation {
     };
     match result {
         Ok(c) => c,
-        Err(payload) => {
-            let msg = payload
-                .downcast_ref::<&str>()
-                .map(|s| s.to_string())
-                .or_else(|| payload.downcast_ref::<String>().cloned())
-                .unwrap_or_else(|| "unknown panic".into());
-            panicked(&format!("the compiler panicked: {msg}"))
-        }
+        Err(payload) => panicked(&format!("the compiler panicked: {}", diag::panic_message(&*payload))),
     }
 }
 

@@ -130,14 +130,7 @@ pub(crate) fn guard<T>(what: impl std::fmt::Display, f: impl FnOnce() -> Result<
     match catch_unwind(AssertUnwindSafe(f)) {
         Ok(Ok(v)) => Ok(v),
         Ok(Err(e)) => Err(Diagnostic::bug(format!("{what} failed: {e}"), None)),
-        Err(payload) => {
-            let msg = payload
-                .downcast_ref::<&str>()
-                .map(|s| s.to_string())
-                .or_else(|| payload.downcast_ref::<String>().cloned())
-                .unwrap_or_else(|| "unknown panic".into());
-            Err(Diagnostic::bug(format!("{what} panicked: {msg}"), None))
-        }
+        Err(payload) => Err(Diagnostic::bug(format!("{what} panicked: {}", crate::diag::panic_message(&*payload)), None)),
     }
 }
 
@@ -254,6 +247,25 @@ mod tests {
     use memchr::memmem::Finder;
 
     use super::text::*;
+
+    /// naga's writers may panic on IR they do not support: the panic's
+    /// message must reach the user as a bug diagnostic, whichever payload
+    /// type `panic!` gave it, and an `Err` from the writer likewise.
+    #[test]
+    fn a_failing_or_panicking_backend_becomes_a_bug_diagnostic() {
+        use crate::diag::Severity;
+        // A runtime argument, so the payload is a `String` (literal ones
+        // are folded into the format string, which gives a `&str`).
+        let at = std::hint::black_box(7);
+        let formatted = super::guard("the test writer", || -> Result<(), String> { panic!("bad IR at {at}") }).unwrap_err();
+        assert!(matches!(formatted.severity, Severity::Bug));
+        assert_eq!(formatted.message, "the test writer panicked: bad IR at 7");
+        let literal = super::guard(format_args!("the {} writer", "GLSL"), || -> Result<(), String> { panic!("unsupported") }).unwrap_err();
+        assert_eq!(literal.message, "the GLSL writer panicked: unsupported");
+        let failed = super::guard("the test writer", || -> Result<(), String> { Err("no entry point".into()) }).unwrap_err();
+        assert_eq!(failed.message, "the test writer failed: no entry point");
+        assert_eq!(super::guard("the test writer", || Ok(3)).unwrap(), 3);
+    }
 
     #[test]
     fn whole_identifier_replacement() {
