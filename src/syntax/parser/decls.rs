@@ -1,0 +1,335 @@
+//! Items: annotations, functions and their headers, structs and fields,
+//! shader globals with their qualifiers, `let` constants, and type
+//! expressions.
+
+use super::*;
+
+impl<'m> Parser<'_, 'm> {
+    // ---- items ----
+
+    pub(super) fn annotations(&mut self) -> PResult<Vec<Annotation>> {
+        let mut out = Vec::new();
+        loop {
+            self.skip_nl();
+            let Some(open) = self.eat(P::LBracket) else { break };
+            self.nl_skip += 1;
+            loop {
+                let name = self.ident("an annotation name")?;
+                let mut args = Vec::new();
+                let mut end = name.span;
+                if let Some(po) = self.eat(P::LParen) {
+                    if self.eat(P::RParen).is_none() {
+                        loop {
+                            let an = self.ident("an annotation argument name")?;
+                            let value = if self.eat(P::Eq).is_some() {
+                                let t = self.peek();
+                                if t.kind == TokKind::Str {
+                                    self.bump();
+                                    let raw = self.text(&t);
+                                    let body = raw.get(1..raw.len().saturating_sub(1)).unwrap_or("");
+                                    Some(Expr { kind: ExprKind::Str(unescape(body)), span: t.span })
+                                } else {
+                                    Some(self.expr()?)
+                                }
+                            } else {
+                                None
+                            };
+                            args.push(AnnotationArg { name: an, value });
+                            if self.eat(P::Comma).is_some() {
+                                continue;
+                            }
+                            break;
+                        }
+                        self.expect_close(P::RParen, po, "',' or ")?;
+                    }
+                    end = self.last;
+                }
+                out.push(Annotation { span: name.span.to(end), name, args });
+                if self.eat(P::Comma).is_none() {
+                    break;
+                }
+            }
+            self.expect_close(P::RBracket, open, "',' or ")?;
+            self.nl_skip -= 1;
+        }
+        Ok(out)
+    }
+
+    pub(super) fn function(&mut self) -> Option<FunctionDecl> {
+        let start = self.raw_peek().span;
+        let header = self.function_header();
+        let (annotations, name, params, ret) = match header {
+            Ok(h) => h,
+            Err(()) => {
+                // Still check the body, if one can be found.
+                self.nl_skip = 0;
+                self.open = 0;
+                if let Some(k) = self.toks[self.pos.min(self.toks.len())..].iter().position(|t| t.is(P::LBrace)) {
+                    self.pos += k;
+                    let _ = self.block();
+                }
+                return None;
+            }
+        };
+        self.skip_nl();
+        let body = self.block().ok()?;
+        Some(FunctionDecl { annotations, name, params, ret, span: start.to(body.span), body })
+    }
+
+    #[allow(clippy::type_complexity)]
+    pub(super) fn function_header(&mut self) -> PResult<(Vec<Annotation>, Ident, Vec<Param>, Option<TypeExpr>)> {
+        let annotations = self.annotations()?;
+        self.skip_nl();
+        self.bump(); // `def`
+        let name = self.ident("a function name")?;
+        let mut params = Vec::new();
+        if let Some(po) = self.eat(P::LParen) {
+            self.nl_skip += 1;
+            if self.eat(P::RParen).is_none() {
+                loop {
+                    if self.peek().is_kw(Kw::Var) {
+                        self.bump();
+                    }
+                    let mut names = vec![self.ident("a parameter name")?];
+                    while self.eat(P::Comma).is_some() {
+                        names.push(self.ident("a parameter name")?);
+                    }
+                    let t = self.peek();
+                    if !t.is(P::Colon) {
+                        let msg = format!("expected ':' and the parameter's type, found {}", self.describe(&t));
+                        self.err(t, msg, "expected ':'");
+                        return Err(());
+                    }
+                    self.bump();
+                    let ty = self.ty()?;
+                    if let Some(eq) = self.eat(P::Eq) {
+                        self.err(eq, "default parameter values are not supported in shader code".into(), "default value");
+                        return Err(());
+                    }
+                    share_among(names, ty, |n, ty| params.push(Param { span: n.span.to(ty.span), name: n, ty }));
+                    if self.eat(P::Semi).is_some() || self.eat(P::Comma).is_some() {
+                        continue;
+                    }
+                    self.expect_close(P::RParen, po, "';' or ")?;
+                    break;
+                }
+            }
+            self.nl_skip -= 1;
+        }
+        let ret = if self.eat(P::Colon).is_some() { Some(self.ty()?) } else { None };
+        Ok((annotations, name, params, ret))
+    }
+
+    pub(super) fn structure(&mut self) -> PResult<StructDecl> {
+        let annotations = self.annotations()?;
+        self.skip_nl();
+        let kw = self.bump();
+        if kw.is_kw(Kw::Class) {
+            self.err(kw, "classes are not supported in shader code".into(), "used by a shader here");
+            return Err(());
+        }
+        let name = self.ident("a struct name")?;
+        self.skip_nl();
+        let open = self.expect(P::LBrace)?;
+        let mut fields = Vec::new();
+        let end;
+        loop {
+            let t = self.raw_peek();
+            match t.kind {
+                TokKind::Newline | TokKind::P(P::Semi) => {
+                    self.pos += 1;
+                    continue;
+                }
+                TokKind::P(P::RBrace) => {
+                    self.bump();
+                    end = t.span;
+                    break;
+                }
+                TokKind::Eof => {
+                    self.expect_close(P::RBrace, open, "")?;
+                    return Err(());
+                }
+                _ => {}
+            }
+            match self.field() {
+                Ok(fs) => {
+                    fields.extend(fs);
+                    let t = self.raw_peek();
+                    if !ends_stmt(&t) {
+                        let msg = format!("expected newline after the field, found {}", self.describe(&t));
+                        self.err(t, msg, "expected the end of the line");
+                        self.recover(0);
+                    }
+                }
+                Err(()) => {
+                    let extra = self.open;
+                    self.open = 0;
+                    self.nl_skip = 0;
+                    self.recover(extra);
+                }
+            }
+        }
+        Ok(StructDecl { span: kw.span.to(end), annotations, name, fields })
+    }
+
+    pub(super) fn field(&mut self) -> PResult<Vec<Field>> {
+        let mut names = vec![self.ident("a field name")?];
+        while self.eat(P::Comma).is_some() {
+            names.push(self.ident("a field name")?);
+        }
+        self.expect(P::Colon)?;
+        let ty = self.ty()?;
+        if let Some(eq) = self.eat(P::Eq) {
+            self.err(eq, "field initialisers are not supported in shader code".into(), "initialiser");
+            return Err(());
+        }
+        let mut fields = Vec::with_capacity(names.len());
+        share_among(names, ty, |n, ty| fields.push(Field { span: n.span.to(ty.span), name: n, ty }));
+        Ok(fields)
+    }
+
+    pub(super) fn qualifier(&mut self) -> PResult<Qualifier> {
+        let at = self.bump();
+        let t = self.peek();
+        let name = match t.kind {
+            TokKind::Ident => self.text(&t),
+            TokKind::Kw(Kw::In) => "in",
+            _ => {
+                let msg = format!("expected a qualifier name after '@', found {}", self.describe(&t));
+                self.err(t, msg, "expected a name such as `uniform`, `in`, `out`, `location`");
+                return Err(());
+            }
+        };
+        self.bump();
+        let value = if self.peek().is(P::Eq) {
+            self.bump();
+            let v = self.peek();
+            if v.kind != TokKind::Int {
+                if matches!(name, "location" | "stage") {
+                    let msg = format!("expected an integer after `@{name} =`, found {}", self.describe(&v));
+                    self.err(v, msg, "expected an integer");
+                    return Err(());
+                }
+                // Some other qualifier with a value: semantic analysis reports it.
+                let e = self.expr()?;
+                return Ok(Qualifier { kind: QualifierKind::Other(name.to_string()), span: at.span.to(e.span) });
+            }
+            self.bump();
+            match self.text(&v).parse::<i64>() {
+                Ok(n) => Some(n),
+                Err(_) => {
+                    let msg = format!("`{}` is not a valid value for `@{name}`", self.text(&v));
+                    self.err(v, msg, "expected a small non-negative integer");
+                    return Err(());
+                }
+            }
+        } else {
+            None
+        };
+        let span = at.span.to(self.last);
+        let kind = match name {
+            "uniform" => QualifierKind::Uniform,
+            "in" => QualifierKind::In,
+            "out" => QualifierKind::Out,
+            "inout" => QualifierKind::InOut,
+            "location" => QualifierKind::Location(value),
+            "stage" => match value {
+                Some(v) => QualifierKind::Stage(v),
+                None => {
+                    let msg = "`@stage` needs a texture unit: `@stage = N`".to_string();
+                    self.err(Token::new(TokKind::Ident, span), msg, "no value");
+                    return Err(());
+                }
+            },
+            other => QualifierKind::Other(other.to_string()),
+        };
+        Ok(Qualifier { kind, span })
+    }
+
+    /// `var` at top level: one global per name, appended to `out`.
+    pub(super) fn global(&mut self, out: &mut Vec<Item>) -> PResult<()> {
+        let kw = self.bump(); // `var`
+        let mut qualifiers = Vec::new();
+        while self.peek().is(P::At) {
+            qualifiers.push(self.qualifier()?);
+        }
+        let mut names = vec![self.ident("a variable name")?];
+        while self.eat(P::Comma).is_some() {
+            self.skip_nl();
+            names.push(self.ident("a variable name")?);
+        }
+        let t = self.peek();
+        if !t.is(P::Colon) {
+            let msg = format!("expected ':' and a type for shader global `{}`, found {}", names[0].name, self.describe(&t));
+            self.err(t, msg, "expected ': type'");
+            return Err(());
+        }
+        self.bump();
+        let ty = self.ty()?;
+        let init = if self.eat(P::Eq).is_some() {
+            self.skip_nl();
+            Some(self.expr()?)
+        } else {
+            None
+        };
+        self.expect_line_end("the declaration")?;
+        let span = kw.span.to(self.last);
+        share_among(names, (qualifiers, ty, init), |name, (qualifiers, ty, init)| {
+            out.push(Item::Global(GlobalVar { qualifiers, name, ty, init, span }))
+        });
+        Ok(())
+    }
+
+    pub(super) fn constant(&mut self) -> PResult<ConstDecl> {
+        let kw = self.bump(); // `let`
+        let name = self.ident("a constant name")?;
+        let ty = if self.eat(P::Colon).is_some() { Some(self.ty()?) } else { None };
+        let t = self.peek();
+        if !t.is(P::Eq) {
+            let msg = format!("expected '=' and a value for constant `{}`, found {}", name.name, self.describe(&t));
+            self.err(t, msg, "expected '='");
+            return Err(());
+        }
+        self.bump();
+        self.skip_nl();
+        let value = self.expr()?;
+        self.expect_line_end("the constant")?;
+        Ok(ConstDecl { span: kw.span.to(self.last), name, ty, value })
+    }
+
+    // ---- types ----
+
+    pub(super) fn ty(&mut self) -> PResult<TypeExpr> {
+        let t = self.peek();
+        if t.kind != TokKind::Ident {
+            let msg = format!("expected a type, found {}", self.describe(&t));
+            self.err(t, msg, "expected a type");
+            return Err(());
+        }
+        self.bump();
+        let ty = TypeExpr { kind: TypeExprKind::Named(Ident { name: self.texts.name(t.span), span: t.span }), span: t.span };
+        let depth = self.depth;
+        let r = self.array_suffixes(ty);
+        self.depth = depth;
+        r
+    }
+
+    /// `[N][M]...` after a type name; each is a level of nesting.
+    pub(super) fn array_suffixes(&mut self, mut ty: TypeExpr) -> PResult<TypeExpr> {
+        loop {
+            let open = self.peek();
+            if !open.is(P::LBracket) {
+                return Ok(ty);
+            }
+            self.enter(open)?;
+            self.bump();
+            self.nl_skip += 1;
+            self.open += 1;
+            let size = self.expr()?;
+            let close = self.expect_close(P::RBracket, open, "")?;
+            self.nl_skip -= 1;
+            self.open -= 1;
+            ty = TypeExpr { span: ty.span.to(close.span), kind: TypeExprKind::Array(Box::new(ty), Box::new(size)) };
+        }
+    }
+}

@@ -1,0 +1,357 @@
+//! Expressions: precedence climbing over binary operators, unary and
+//! postfix operators, calls, constructors, indexing, fields, literals.
+
+use super::*;
+
+impl<'m> Parser<'_, 'm> {
+    // ---- expressions ----
+
+    pub(super) fn expr(&mut self) -> PResult<Expr> {
+        let t = self.peek();
+        self.enter(t)?;
+        let r = self.ternary();
+        self.leave();
+        r
+    }
+
+    pub(super) fn ternary(&mut self) -> PResult<Expr> {
+        let cond = self.binary(1)?;
+        if self.peek().is(P::Question) {
+            self.bump();
+            self.skip_nl();
+            let a = self.expr()?;
+            self.expect(P::Colon)?;
+            self.skip_nl();
+            let b = self.expr()?;
+            return Ok(Expr { span: cond.span.to(b.span), kind: ExprKind::Ternary(Box::new(cond), Box::new(a), Box::new(b)) });
+        }
+        Ok(cond)
+    }
+
+    pub(super) fn binary(&mut self, min: u8) -> PResult<Expr> {
+        let mut lhs = self.unary()?;
+        // `a + b + c` parses in a loop but builds a left-deep tree, which
+        // later stages walk recursively: each operator counts as one level.
+        let mut levels = 0;
+        let r = loop {
+            let t = self.peek();
+            let Some((op, prec)) = binop(&t) else { break Ok(lhs) };
+            if prec < min {
+                break Ok(lhs);
+            }
+            if self.enter(t).is_err() {
+                break Err(());
+            }
+            levels += 1;
+            self.bump();
+            self.skip_nl();
+            match self.binary(prec + 1) {
+                Ok(rhs) => lhs = Expr { span: lhs.span.to(rhs.span), kind: ExprKind::Binary(op, Box::new((lhs, rhs))) },
+                Err(()) => break Err(()),
+            }
+        };
+        self.depth -= levels;
+        r
+    }
+
+    pub(super) fn unary(&mut self) -> PResult<Expr> {
+        let t = self.peek();
+        let op = match t.kind {
+            TokKind::P(P::Minus) => UnaryOp::Neg,
+            TokKind::P(P::Plus) => UnaryOp::Plus,
+            TokKind::P(P::Bang) => UnaryOp::Not,
+            TokKind::P(P::Tilde) => UnaryOp::BitNot,
+            TokKind::P(P::PlusPlus) => UnaryOp::PreInc,
+            TokKind::P(P::MinusMinus) => UnaryOp::PreDec,
+            _ => return self.postfix(),
+        };
+        self.enter(t)?;
+        self.bump();
+        let r = self.unary();
+        self.leave();
+        let e = r?;
+        Ok(Expr { span: t.span.to(e.span), kind: ExprKind::Unary(op, Box::new(e)) })
+    }
+
+    pub(super) fn postfix(&mut self) -> PResult<Expr> {
+        let e = self.primary()?;
+        // Like a chain of binary operators, each postfix operator is a level.
+        let depth = self.depth;
+        let r = self.postfix_ops(e);
+        self.depth = depth;
+        r
+    }
+
+    pub(super) fn postfix_ops(&mut self, mut e: Expr) -> PResult<Expr> {
+        loop {
+            let t = self.peek();
+            if matches!(t.kind, TokKind::P(P::Dot | P::LBracket | P::PlusPlus | P::MinusMinus)) {
+                self.enter(t)?;
+            }
+            e = match t.kind {
+                TokKind::P(P::Dot) => self.field_access(e)?,
+                TokKind::P(P::LBracket) => self.index(e, t)?,
+                TokKind::P(P::PlusPlus) | TokKind::P(P::MinusMinus) => {
+                    self.bump();
+                    let op = if t.is(P::PlusPlus) { UnaryOp::PostInc } else { UnaryOp::PostDec };
+                    Expr { span: e.span.to(t.span), kind: ExprKind::Unary(op, Box::new(e)) }
+                }
+                TokKind::P(P::LParen) => {
+                    self.error_msg(t, "only a function or type name can be called", "call of an expression");
+                    return Err(());
+                }
+                _ => return Ok(e),
+            };
+        }
+    }
+
+    pub(super) fn field_access(&mut self, e: Expr) -> PResult<Expr> {
+        self.bump();
+        let name = self.ident("a field name or swizzle after '.'")?;
+        Ok(Expr { span: e.span.to(name.span), kind: ExprKind::Field(Box::new(e), name) })
+    }
+
+    pub(super) fn index(&mut self, e: Expr, open: Token) -> PResult<Expr> {
+        self.bump();
+        self.nl_skip += 1;
+        self.open += 1;
+        let idx = self.expr()?;
+        let close = self.expect_close(P::RBracket, open, "")?;
+        self.nl_skip -= 1;
+        self.open -= 1;
+        Ok(Expr { span: e.span.to(close.span), kind: ExprKind::Index(Box::new(e), Box::new(idx)) })
+    }
+
+    /// `( a, b, ... )` or `[ a, b, ... ]` after the opener was consumed.
+    pub(super) fn list(&mut self, opener: Token, close: P) -> PResult<(Vec<Expr>, Token)> {
+        self.nl_skip += 1;
+        self.open += 1;
+        let mut items = Vec::new();
+        let end = loop {
+            if let Some(c) = self.eat(close) {
+                break c;
+            }
+            items.push(self.expr()?);
+            if self.eat(P::Comma).is_some() {
+                continue;
+            }
+            break self.expect_close(close, opener, "',' or ")?;
+        };
+        self.nl_skip -= 1;
+        self.open -= 1;
+        Ok((items, end))
+    }
+
+    pub(super) fn primary(&mut self) -> PResult<Expr> {
+        let t = self.peek();
+        match t.kind {
+            TokKind::Int => {
+                self.bump();
+                self.int_lit(t)
+            }
+            TokKind::Float => {
+                self.bump();
+                self.float_lit(t)
+            }
+            TokKind::Kw(Kw::True) | TokKind::Kw(Kw::False) => {
+                self.bump();
+                Ok(Expr { kind: ExprKind::Bool(t.is_kw(Kw::True)), span: t.span })
+            }
+            TokKind::Ident => self.name_or_call(t),
+            TokKind::P(P::LParen) => self.paren(t),
+            TokKind::P(P::LBracket) => {
+                self.bump();
+                let (items, end) = self.list(t, P::RBracket)?;
+                Ok(Expr { kind: ExprKind::Array { elem: None, items }, span: t.span.to(end.span) })
+            }
+            _ => {
+                self.error_primary(t);
+                Err(())
+            }
+        }
+    }
+
+    #[cold]
+    #[inline(never)]
+    pub(super) fn error_primary(&mut self, t: Token) {
+        match t.kind {
+            TokKind::Str | TokKind::Char => {
+                let msg = format!("{}s are not supported in shader code", self.describe(&t));
+                self.err(t, msg, "not supported here");
+            }
+            TokKind::Newline | TokKind::Eof | TokKind::Kw(_) | TokKind::P(P::RBrace) => self.error_expected(t, "an expression"),
+            _ => self.error_unexpected(t, "expected an expression"),
+        }
+    }
+
+    pub(super) fn paren(&mut self, open: Token) -> PResult<Expr> {
+        self.bump();
+        self.nl_skip += 1;
+        self.open += 1;
+        let e = self.expr()?;
+        let close = self.expect_close(P::RParen, open, "")?;
+        self.nl_skip -= 1;
+        self.open -= 1;
+        Ok(Expr { kind: ExprKind::Paren(Box::new(e)), span: open.span.to(close.span) })
+    }
+
+    pub(super) fn name_or_call(&mut self, t: Token) -> PResult<Expr> {
+        self.bump();
+        let name = Ident { name: self.texts.name(t.span), span: t.span };
+        let next = self.peek();
+        if next.is(P::Lt) && name.name == "fixed_array" {
+            self.bump();
+            let elem = self.ty()?;
+            self.expect(P::Gt)?;
+            let po = self.expect(P::LParen)?;
+            let (items, end) = self.list(po, P::RParen)?;
+            return Ok(Expr { kind: ExprKind::Array { elem: Some(elem), items }, span: t.span.to(end.span) });
+        }
+        if next.is(P::LParen) {
+            self.bump();
+            let (args, end) = self.list(next, P::RParen)?;
+            return Ok(Expr { kind: ExprKind::Call { callee: name, args }, span: t.span.to(end.span) });
+        }
+        Ok(Expr { kind: ExprKind::Name(name), span: t.span })
+    }
+
+    #[inline(never)]
+    pub(super) fn int_lit(&mut self, t: Token) -> PResult<Expr> {
+        let text = self.text(&t);
+        let (digits, suffix, radix) = if let Some(h) = text.strip_prefix("0x").or_else(|| text.strip_prefix("0X")) {
+            let k = h.find(|c: char| !c.is_ascii_hexdigit()).unwrap_or(h.len());
+            (&h[..k], &h[k..], 16)
+        } else {
+            let k = text.find(|c: char| !c.is_ascii_digit()).unwrap_or(text.len());
+            (&text[..k], &text[k..], 10)
+        };
+        if digits.is_empty() {
+            self.err(t, format!("hexadecimal literal `{text}` has no digits"), "no digits");
+            return Err(());
+        }
+        let value = match u64::from_str_radix(digits, radix) {
+            Ok(v) => v,
+            Err(_) => {
+                self.err(t, format!("integer literal `{text}` is too large"), "too large");
+                return Err(());
+            }
+        };
+        let kind = match suffix {
+            "" => ExprKind::Int(value, IntSuffix::None),
+            "u" | "U" => ExprKind::Int(value, IntSuffix::Unsigned),
+            // Rounded once, straight to f32.
+            "f" | "F" if radix == 10 => ExprKind::Float(value as f32 as f64),
+            "d" | "D" | "lf" | "LF" if radix == 10 => return self.double_error(t),
+            _ => {
+                let msg = format!("unsupported suffix `{suffix}` on integer literal `{text}`");
+                let d = Diagnostic::error(msg, t.span).with_label("unsupported suffix").with_note("integer literals take `u` (uint) or no suffix (int)");
+                self.push(d);
+                return Err(());
+            }
+        };
+        Ok(Expr { kind, span: t.span })
+    }
+
+    #[inline(never)]
+    pub(super) fn float_lit(&mut self, t: Token) -> PResult<Expr> {
+        let text = self.text(&t);
+        let body = text.trim_end_matches(|c: char| c.is_ascii_alphabetic() || c == '_');
+        let suffix = &text[body.len()..];
+        match suffix {
+            "" | "f" | "F" => {}
+            "d" | "D" | "lf" | "LF" => return self.double_error(t),
+            _ => {
+                let msg = format!("unsupported suffix `{suffix}` on number `{text}`");
+                let d = Diagnostic::error(msg, t.span).with_label("unsupported suffix").with_note("float literals take `f` or no suffix");
+                self.push(d);
+                return Err(());
+            }
+        }
+        // Parsed straight to f32 (correctly rounded once; through f64 a
+        // decimal near an f32 midpoint would round twice) and kept exactly.
+        match short_decimal(body).map_or_else(|| body.parse::<f32>(), Ok) {
+            Ok(v) if v.is_infinite() => {
+                self.err(t, "float literal is out of range for `float`".to_string(), "too large for `float` (largest 3.4028235e38)");
+                Err(())
+            }
+            Ok(v) => Ok(Expr { kind: ExprKind::Float(v as f64), span: t.span }),
+            Err(_) => {
+                self.err(t, format!("invalid number `{text}`"), "invalid number");
+                Err(())
+            }
+        }
+    }
+
+    pub(super) fn double_error(&mut self, t: Token) -> PResult<Expr> {
+        let msg = format!("double-precision literal `{}` is not supported in shader code", self.text(&t));
+        let d = Diagnostic::error(msg, t.span)
+            .with_label("double literal")
+            .with_note("help: drop the `d` suffix to make it a float");
+        self.push(d);
+        Err(())
+    }
+}
+
+/// Powers of ten that are exact in f32 (5^10 < 2^24).
+const POW10: [f32; 11] = [1e0, 1e1, 1e2, 1e3, 1e4, 1e5, 1e6, 1e7, 1e8, 1e9, 1e10];
+
+/// `digits[.digits]` with fewer than 2^24 as its digits and at most ten
+/// after the point, as f32: the digits and the power of ten are both exact
+/// in f32, so one division rounds the decimal correctly, to the same value
+/// as `str::parse` (Clinger's fast path), without its general machinery.
+/// `None` for anything else (exponents, long mantissas).
+fn short_decimal(s: &str) -> Option<f32> {
+    let (mut m, mut digits, mut frac, mut point) = (0u32, 0usize, 0usize, false);
+    for &c in s.as_bytes() {
+        match c {
+            b'0'..=b'9' => {
+                m = m.checked_mul(10)?.checked_add((c - b'0') as u32)?;
+                digits += 1;
+                frac += point as usize;
+            }
+            b'.' if !point => point = true,
+            _ => return None,
+        }
+    }
+    (digits > 0 && m < 1 << 24 && frac < POW10.len()).then(|| m as f32 / POW10[frac])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::short_decimal;
+
+    /// The fast path gives exactly what `str::parse` gives, where it applies.
+    #[test]
+    fn short_decimals_round_like_parse() {
+        let mut n = 0;
+        let mut check = |s: &str| {
+            if let Some(v) = short_decimal(s) {
+                assert_eq!(v.to_bits(), s.parse::<f32>().unwrap().to_bits(), "{s}");
+                n += 1;
+            }
+        };
+        for m in (0..1u32 << 24).step_by(9973).chain([1, 5, 16777215, 16777214, 8388609, 8388607, 9999999, 1234567]) {
+            let digits = m.to_string();
+            for frac in 0..=10usize {
+                let s = if frac == 0 {
+                    format!("{digits}.")
+                } else if frac >= digits.len() {
+                    format!(".{}{digits}", "0".repeat(frac - digits.len()))
+                } else {
+                    format!("{}.{}", &digits[..digits.len() - frac], &digits[digits.len() - frac..])
+                };
+                check(&s);
+                check(&format!("0{s}"));
+            }
+        }
+        for s in ["1.0", "0.5", "100.0", "0.0", "1.", ".5", "3.14159", "0.1", "0.3", "2.5", "1024.0", "0.0001"] {
+            check(s);
+        }
+        assert!(n > 10_000);
+        for s in ["", ".", "1e3", "1.0.0", "16777216.0", "0.00000000001", "1_0", "x"] {
+            assert!(short_decimal(s).is_none() || s.parse::<f32>().is_ok(), "{s}");
+        }
+        assert_eq!(short_decimal("16777216.0"), None);
+        assert_eq!(short_decimal("."), None);
+    }
+}

@@ -1,0 +1,256 @@
+//! Statements: blocks, `let`/`var`, assignments, `if`/`elif`/`else`,
+//! `while`, `for ... in range(...)`, `return`, `break`, `continue`.
+
+use super::*;
+
+impl<'m> Parser<'_, 'm> {
+    // ---- statements ----
+
+    pub(super) fn block(&mut self) -> PResult<Block> {
+        let open = self.peek();
+        if !open.is(P::LBrace) {
+            self.error_no_brace(open);
+            return Err(());
+        }
+        self.enter(open)?;
+        self.bump();
+        let (nl0, open0) = (self.nl_skip, self.open);
+        self.nl_skip = 0;
+        self.open = 0;
+        let mut stmts = Vec::new();
+        let result = loop {
+            let t = self.raw_peek();
+            match t.kind {
+                TokKind::Newline | TokKind::P(P::Semi) => {
+                    self.pos += 1;
+                    continue;
+                }
+                TokKind::P(P::RBrace) => {
+                    self.bump();
+                    break Ok(t.span);
+                }
+                TokKind::Eof => {
+                    self.error_close(t, P::RBrace, open, "");
+                    break Err(());
+                }
+                _ => {}
+            }
+            match self.stmt() {
+                Ok(s) => {
+                    stmts.push(s);
+                    let t = self.raw_peek();
+                    if !ends_stmt(&t) {
+                        self.error_expected(t, "newline or ';' after the statement");
+                        self.recover(0);
+                    }
+                }
+                Err(()) => {
+                    let extra = self.open;
+                    self.open = 0;
+                    self.nl_skip = 0;
+                    self.recover(extra);
+                }
+            }
+        };
+        self.nl_skip = nl0;
+        self.open = open0;
+        self.leave();
+        let end = result?;
+        Ok(Block { stmts, span: open.span.to(end) })
+    }
+
+    #[cold]
+    #[inline(never)]
+    pub(super) fn error_no_brace(&mut self, t: Token) {
+        if matches!(t.kind, TokKind::Error(_)) {
+            return;
+        }
+        let msg = format!("expected '{{', found {}", self.describe(&t));
+        self.push(
+            Diagnostic::error(msg, t.span)
+                .with_label("expected '{'")
+                .with_note("bodies of functions, `if`, `while` and `for` are enclosed in braces"),
+        );
+    }
+
+    /// A block after `if`/`while`/`for`: a line break before `{` is allowed.
+    pub(super) fn body(&mut self) -> PResult<Block> {
+        self.skip_nl();
+        self.block()
+    }
+
+    pub(super) fn stmt(&mut self) -> PResult<Stmt> {
+        let t = self.peek();
+        let kind = match t.kind {
+            TokKind::Kw(Kw::Let | Kw::Var) => self.local()?,
+            TokKind::Kw(Kw::If) => self.if_stmt()?,
+            TokKind::Kw(Kw::While) => {
+                self.bump();
+                let cond = self.expr()?;
+                let body = self.body()?;
+                StmtKind::While { cond, body }
+            }
+            TokKind::Kw(Kw::For) => self.for_stmt()?,
+            TokKind::Kw(Kw::Return) => {
+                self.bump();
+                if ends_stmt(&self.raw_peek()) {
+                    StmtKind::Return(None)
+                } else {
+                    StmtKind::Return(Some(self.expr()?))
+                }
+            }
+            TokKind::Kw(Kw::Break) => {
+                self.bump();
+                StmtKind::Break
+            }
+            TokKind::Kw(Kw::Continue) => {
+                self.bump();
+                StmtKind::Continue
+            }
+            TokKind::P(P::LBrace) => StmtKind::Block(self.block()?),
+            TokKind::Kw(Kw::Elif) => {
+                self.error_msg(t, "`elif` without a preceding `if`", "no `if` before this");
+                return Err(());
+            }
+            TokKind::Kw(Kw::Else) => {
+                self.error_msg(t, "`else` without a preceding `if`", "no `if` before this");
+                return Err(());
+            }
+            _ => self.expr_stmt()?,
+        };
+        Ok(Stmt { kind, span: t.span.to(self.last) })
+    }
+
+    pub(super) fn expr_stmt(&mut self) -> PResult<StmtKind> {
+        let target = self.expr()?;
+        let op_tok = self.peek();
+        if let Some(op) = assign_op(&op_tok) {
+            self.bump();
+            self.skip_nl();
+            let value = self.expr()?;
+            Ok(StmtKind::Assign { target, op, value })
+        } else if matches!(
+            op_tok.kind,
+            TokKind::P(P::ColonEq | P::LArrow | P::AmpAmpEq | P::PipePipeEq | P::CaretCaretEq | P::RotlEq | P::RotrEq)
+        ) {
+            self.error_unsupported(op_tok, "unsupported assignment");
+            Err(())
+        } else {
+            Ok(StmtKind::Expr(target))
+        }
+    }
+
+    /// `'X' is not supported in shader code`.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn error_unsupported(&mut self, t: Token, label: &str) {
+        let msg = format!("'{}' is not supported in shader code", self.text(&t));
+        self.err(t, msg, label);
+    }
+
+    pub(super) fn local(&mut self) -> PResult<StmtKind> {
+        let kw = self.bump();
+        let mutable = kw.is_kw(Kw::Var);
+        let mut names = vec![self.ident("a variable name")?];
+        while self.eat(P::Comma).is_some() {
+            self.skip_nl();
+            names.push(self.ident("a variable name")?);
+        }
+        let ty = if self.eat(P::Colon).is_some() { Some(self.ty()?) } else { None };
+        let t = self.peek();
+        let init = if t.is(P::Eq) {
+            self.bump();
+            self.skip_nl();
+            Some(self.expr()?)
+        } else if matches!(t.kind, TokKind::P(P::ColonEq | P::LArrow)) {
+            self.error_unsupported(t, "use '=' here");
+            return Err(());
+        } else {
+            None
+        };
+        if ty.is_none() && init.is_none() {
+            let t = self.peek();
+            let msg = format!("expected ':' or '=' after `{} {}`, found {}", kw_text(mutable), names[0].name, self.describe(&t));
+            self.err(t, msg, "a local needs a type or a value");
+            return Err(());
+        }
+        Ok(StmtKind::Local { mutable, names, ty, init })
+    }
+
+    pub(super) fn if_stmt(&mut self) -> PResult<StmtKind> {
+        self.bump(); // `if`
+        let cond = self.expr()?;
+        let then = self.body()?;
+        // Later stages nest each `elif` inside the previous one's `else`.
+        let depth = self.depth;
+        let r = self.elifs(cond, then);
+        self.depth = depth;
+        r
+    }
+
+    pub(super) fn elifs(&mut self, cond: Expr, then: Block) -> PResult<StmtKind> {
+        let mut elifs = Vec::new();
+        let mut otherwise = None;
+        loop {
+            let save = self.pos;
+            self.skip_nl();
+            let t = self.raw_peek();
+            if t.is_kw(Kw::Elif) || t.is_kw(Kw::Else) {
+                self.enter(t)?;
+            }
+            if t.is_kw(Kw::Elif) {
+                self.bump();
+                let c = self.expr()?;
+                let b = self.body()?;
+                elifs.push((c, b));
+            } else if t.is_kw(Kw::Else) {
+                self.bump();
+                if self.peek().is_kw(Kw::If) {
+                    self.bump();
+                    let c = self.expr()?;
+                    let b = self.body()?;
+                    elifs.push((c, b));
+                } else {
+                    otherwise = Some(self.body()?);
+                    break;
+                }
+            } else {
+                self.pos = save;
+                break;
+            }
+        }
+        Ok(StmtKind::If { cond, then, elifs, otherwise })
+    }
+
+    pub(super) fn for_stmt(&mut self) -> PResult<StmtKind> {
+        self.bump(); // `for`
+        let paren = self.eat(P::LParen);
+        if paren.is_some() {
+            self.nl_skip += 1;
+            self.open += 1;
+        }
+        let var = self.ident("a loop variable name")?;
+        let t = self.peek();
+        if !t.is_kw(Kw::In) {
+            self.error_expected(t, "'in'");
+            return Err(());
+        }
+        self.bump();
+        let iter = self.expr()?;
+        if let Some(po) = paren {
+            self.expect_close(P::RParen, po, "")?;
+            self.nl_skip -= 1;
+            self.open -= 1;
+        }
+        let body = self.body()?;
+        Ok(StmtKind::For { var, iter, body })
+    }
+}
+
+fn kw_text(mutable: bool) -> &'static str {
+    if mutable {
+        "var"
+    } else {
+        "let"
+    }
+}
