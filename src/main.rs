@@ -202,7 +202,17 @@ fn main() -> ExitCode {
         Command::Reflect(args) => reflect(&args),
         Command::Bindgen(args) => bindgen(&args),
         #[cfg(feature = "render")]
-        Command::Render(args) => umbrac::render::cli::run(&args).clamp(0, 255) as u8,
+        Command::Render(args) => {
+            // A headless run has no login session's runtime directory; the
+            // graphics stack then probes Wayland anyway, whose client library
+            // prints "error: XDG_RUNTIME_DIR is invalid or not set" on a run
+            // that succeeds. Any directory silences it. Set here, while the
+            // process has one thread, for this process and its children.
+            if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
+                std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
+            }
+            umbrac::render::cli::run(&args).clamp(0, 255) as u8
+        }
     };
     ExitCode::from(code)
 }

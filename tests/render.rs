@@ -461,6 +461,28 @@ mod cli {
         assert_eq!((frame.width(), frame.height()), (64, 48));
     }
 
+    /// A headless `umbrac render` prints no stray "error:" lines from the
+    /// graphics stack (libwayland's complaint about XDG_RUNTIME_DIR, printed
+    /// on a run that succeeds, when the variable is unset).
+    #[test]
+    fn headless_render_without_a_runtime_dir_prints_no_errors() {
+        if renderer().is_none() {
+            return;
+        }
+        let dir = tempfile::tempdir().unwrap();
+        let png = dir.path().join("f.png");
+        let out = std::process::Command::new(env!("CARGO_BIN_EXE_umbrac"))
+            .args(["render", "--size", "32x24", "--out", png.to_str().unwrap()])
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .env_remove("XDG_RUNTIME_DIR")
+            .output()
+            .unwrap();
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert!(out.status.success(), "{stderr}");
+        assert!(png.is_file());
+        assert!(!stderr.contains("error"), "stderr of a successful render: {stderr}");
+    }
+
     #[test]
     fn reference_and_errors() {
         let dir = tempfile::tempdir().unwrap();
