@@ -17,6 +17,33 @@ pub struct Ident {
     pub span: Span,
 }
 
+/// The names one declaration declares (`var a, b : float3` has two). The
+/// first is inline: nearly every declaration has just one, and then
+/// nothing is allocated.
+#[derive(Clone, Debug)]
+pub struct Names {
+    pub first: Ident,
+    pub rest: Vec<Ident>,
+}
+
+impl Names {
+    pub fn count(&self) -> usize {
+        1 + self.rest.len()
+    }
+
+    pub fn iter(&self) -> impl Iterator<Item = &Ident> {
+        std::iter::once(&self.first).chain(&self.rest)
+    }
+}
+
+impl IntoIterator for Names {
+    type Item = Ident;
+    type IntoIter = std::iter::Chain<std::iter::Once<Ident>, std::vec::IntoIter<Ident>>;
+    fn into_iter(self) -> Self::IntoIter {
+        std::iter::once(self.first).chain(self.rest)
+    }
+}
+
 /// An identifier's text: a range of a shared copy of its source file's
 /// text, so the parser allocates nothing per name (one copy per file per
 /// parse) and cloning one is a reference count. Reads as a `&str` (`Deref`,
@@ -237,7 +264,7 @@ pub enum AssignOp {
 pub enum StmtKind {
     /// `let` (immutable) or `var` (mutable); several names share the type
     /// and initialiser (`var a, b : int`).
-    Local { mutable: bool, names: Vec<Ident>, ty: Option<TypeExpr>, init: Option<Expr> },
+    Local { mutable: bool, names: Names, ty: Option<TypeExpr>, init: Option<Expr> },
     Assign { target: Expr, op: AssignOp, value: Expr },
     /// An expression statement: a call, `i++`, `--j`.
     Expr(Expr),

@@ -32,6 +32,12 @@ impl<'a, 'd> Checker<'a, 'd> {
         self.const_decls.reserve(counts[2]);
         self.consts.reserve(counts[2]);
         self.funcs.reserve(counts[3]);
+        // The checked program's tables too, each pushed to one at a time.
+        // Globals leave room for the `gl_*` builtins a program uses.
+        self.out.structs.reserve(counts[0]);
+        self.out.globals.reserve(counts[1] + 2);
+        self.out.consts.reserve(counts[2]);
+        self.out.functions.reserve(counts[3]);
         let mut seen: FxHashMap<&'a str, Span> = FxHashMap::with_capacity_and_hasher(items.len(), Default::default());
         // Struct names first, so fields and globals can use any struct.
         for item in items {

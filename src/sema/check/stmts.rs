@@ -9,6 +9,7 @@ impl<'a, 'd> Checker<'a, 'd> {
     pub(super) fn check_entry_points(&mut self) {
         let entries = self.entry_decls.clone();
         let mut names: FxHashMap<String, Span> = FxHashMap::with_capacity_and_hasher(entries.len(), Default::default());
+        self.out.entry_points.reserve(entries.len());
         for (decl, stage) in entries {
             let name = entry_name(decl);
             if let Some(prev) = names.insert(name.clone(), decl.name.span) {
@@ -114,11 +115,15 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
         // Scope tables are reused from function to function (a callee is
         // checked in the middle of its first caller, hence a pool).
-        let mut scopes = self.spare_scopes.pop().unwrap_or_else(|| Scopes { visible: FxHashMap::with_capacity_and_hasher(16, Default::default()), ..Default::default() });
+        let mut scopes = self.spare_scopes.pop().unwrap_or_else(|| Scopes {
+            visible: FxHashMap::with_capacity_and_hasher(16, Default::default()),
+            shadowed: Vec::with_capacity(16),
+            open: Vec::with_capacity(8),
+        });
         // The parameters' scope.
         scopes.open.push((0, 0));
         let mut cx = FnCtx {
-            locals: Vec::new(),
+            locals: Vec::with_capacity(decl.params.len() + count_locals(&decl.body.stmts)),
             scopes,
             ret: ret.clone(),
             loop_depth: 0,
@@ -210,7 +215,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                 let ty = match (&declared, &init_expr) {
                     (Some(d), Some(e)) => {
                         if !d.is_error() && !e.ty.is_error() && *d != e.ty {
-                            let d = Diagnostic::error(format!("type mismatch: `{}` is declared `{}` but initialised with `{}`", names[0].name, self.show(d), self.show(&e.ty)), e.span)
+                            let d = Diagnostic::error(format!("type mismatch: `{}` is declared `{}` but initialised with `{}`", names.first.name, self.show(d), self.show(&e.ty)), e.span)
                                 .with_label(format!("this is `{}`", self.show(&e.ty)));
                             self.diags.push(d);
                         }
@@ -218,13 +223,13 @@ impl<'a, 'd> Checker<'a, 'd> {
                     }
                     (Some(d), None) => {
                         if !*mutable {
-                            self.diags.push(Diagnostic::error(format!("`let {}` needs a value", names[0].name), s.span));
+                            self.diags.push(Diagnostic::error(format!("`let {}` needs a value", names.first.name), s.span));
                         }
                         d.clone()
                     }
                     (None, Some(e)) => e.ty.clone(),
                     (None, None) => {
-                        self.diags.push(Diagnostic::error(format!("`{}` needs a type or an initial value", names[0].name), s.span));
+                        self.diags.push(Diagnostic::error(format!("`{}` needs a type or an initial value", names.first.name), s.span));
                         Ty::Error
                     }
                 };
@@ -238,7 +243,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                 // `var a, b = x`: every name gets its own copy of the value.
                 let mut init_expr = init_expr;
                 for (i, n) in names.iter().enumerate() {
-                    let init = if i + 1 == names.len() {
+                    let init = if i + 1 == names.count() {
                         init_expr.take()
                     } else {
                         init.as_ref().map(|e| self.check_expr(cx, e))
@@ -518,4 +523,24 @@ pub(super) fn assign_binop(op: ast::AssignOp) -> Option<BinaryOp> {
         A::Shl => BinaryOp::Shl,
         A::Shr => BinaryOp::Shr,
     })
+}
+
+/// How many locals `stmts` declare (`let`/`var` names and loop variables,
+/// nested blocks included), to size a function's table of locals once.
+fn count_locals(stmts: &[ast::Stmt]) -> usize {
+    stmts
+        .iter()
+        .map(|s| match &s.kind {
+            ast::StmtKind::Local { names, .. } => names.count(),
+            ast::StmtKind::If { then, elifs, otherwise, .. } => {
+                count_locals(&then.stmts)
+                    + elifs.iter().map(|(_, b)| count_locals(&b.stmts)).sum::<usize>()
+                    + otherwise.as_ref().map_or(0, |b| count_locals(&b.stmts))
+            }
+            ast::StmtKind::While { body, .. } => count_locals(&body.stmts),
+            ast::StmtKind::For { body, .. } => 1 + count_locals(&body.stmts),
+            ast::StmtKind::Block(b) => count_locals(&b.stmts),
+            _ => 0,
+        })
+        .sum()
 }

@@ -90,10 +90,7 @@ impl<'m> Parser<'_, 'm> {
                     if self.peek().is_kw(Kw::Var) {
                         self.bump();
                     }
-                    let mut names = vec![self.ident("a parameter name")?];
-                    while self.eat(P::Comma).is_some() {
-                        names.push(self.ident("a parameter name")?);
-                    }
+                    let names = self.names("a parameter name", false)?;
                     let t = self.peek();
                     if !t.is(P::Colon) {
                         let msg = format!("expected ':' and the parameter's type, found {}", self.describe(&t));
@@ -173,17 +170,14 @@ impl<'m> Parser<'_, 'm> {
     }
 
     pub(super) fn field(&mut self) -> PResult<Vec<Field>> {
-        let mut names = vec![self.ident("a field name")?];
-        while self.eat(P::Comma).is_some() {
-            names.push(self.ident("a field name")?);
-        }
+        let names = self.names("a field name", false)?;
         self.expect(P::Colon)?;
         let ty = self.ty()?;
         if let Some(eq) = self.eat(P::Eq) {
             self.err(eq, "field initialisers are not supported in shader code".into(), "initialiser");
             return Err(());
         }
-        let mut fields = Vec::with_capacity(names.len());
+        let mut fields = Vec::with_capacity(names.count());
         share_among(names, ty, |n, ty| fields.push(Field { span: n.span.to(ty.span), name: n, ty }));
         Ok(fields)
     }
@@ -253,14 +247,10 @@ impl<'m> Parser<'_, 'm> {
         while self.peek().is(P::At) {
             qualifiers.push(self.qualifier()?);
         }
-        let mut names = vec![self.ident("a variable name")?];
-        while self.eat(P::Comma).is_some() {
-            self.skip_nl();
-            names.push(self.ident("a variable name")?);
-        }
+        let names = self.names("a variable name", true)?;
         let t = self.peek();
         if !t.is(P::Colon) {
-            let msg = format!("expected ':' and a type for shader global `{}`, found {}", names[0].name, self.describe(&t));
+            let msg = format!("expected ':' and a type for shader global `{}`, found {}", names.first.name, self.describe(&t));
             self.err(t, msg, "expected ': type'");
             return Err(());
         }

@@ -140,7 +140,7 @@ fn starts_stmt(t: &Token) -> bool {
 /// Calls `make` with each of `names` and the parts they share
 /// (`a, b : float3` declares two of one type): copies for all but the last
 /// name, which takes the parts themselves.
-fn share_among<N, T: Clone>(names: Vec<N>, shared: T, mut make: impl FnMut(N, T)) {
+fn share_among<N, T: Clone>(names: impl IntoIterator<Item = N>, shared: T, mut make: impl FnMut(N, T)) {
     let mut names = names.into_iter().peekable();
     while let Some(n) = names.next() {
         if names.peek().is_some() {
@@ -304,6 +304,20 @@ impl<'m> Parser<'_, 'm> {
         }
         self.error_expected(t, what);
         Err(())
+    }
+
+    /// `a, b, c`: one or more names, a line break allowed after each `,`
+    /// where `nl_after_comma`.
+    fn names(&mut self, what: &str, nl_after_comma: bool) -> PResult<Names> {
+        let first = self.ident(what)?;
+        let mut rest = Vec::new();
+        while self.eat(P::Comma).is_some() {
+            if nl_after_comma {
+                self.skip_nl();
+            }
+            rest.push(self.ident(what)?);
+        }
+        Ok(Names { first, rest })
     }
 
     fn enter(&mut self, at: Token) -> PResult<()> {

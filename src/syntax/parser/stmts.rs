@@ -151,11 +151,7 @@ impl<'m> Parser<'_, 'm> {
     pub(super) fn local(&mut self) -> PResult<StmtKind> {
         let kw = self.bump();
         let mutable = kw.is_kw(Kw::Var);
-        let mut names = vec![self.ident("a variable name")?];
-        while self.eat(P::Comma).is_some() {
-            self.skip_nl();
-            names.push(self.ident("a variable name")?);
-        }
+        let names = self.names("a variable name", true)?;
         let ty = if self.eat(P::Colon).is_some() { Some(self.ty()?) } else { None };
         let t = self.peek();
         let init = if t.is(P::Eq) {
@@ -170,7 +166,7 @@ impl<'m> Parser<'_, 'm> {
         };
         if ty.is_none() && init.is_none() {
             let t = self.peek();
-            let msg = format!("expected ':' or '=' after `{} {}`, found {}", kw_text(mutable), names[0].name, self.describe(&t));
+            let msg = format!("expected ':' or '=' after `{} {}`, found {}", kw_text(mutable), names.first.name, self.describe(&t));
             self.err(t, msg, "a local needs a type or a value");
             return Err(());
         }
