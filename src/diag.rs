@@ -275,7 +275,6 @@ impl Diagnostics {
     }
 }
 
-/// The closest candidate to a misspelt name, for "did you mean" help.
 /// The message a caught panic carried (`panic!("...")` gives a `&str` or a
 /// `String`), for the bug diagnostic that replaces it.
 pub(crate) fn panic_message(payload: &(dyn std::any::Any + Send)) -> String {
@@ -286,6 +285,7 @@ pub(crate) fn panic_message(payload: &(dyn std::any::Any + Send)) -> String {
         .unwrap_or_else(|| "unknown panic".into())
 }
 
+/// The closest candidate to a misspelt name, for "did you mean" help.
 pub fn suggest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) -> Option<&'a str> {
     let mut best: Option<(&str, f64)> = None;
     for c in candidates {
