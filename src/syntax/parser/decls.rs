@@ -129,43 +129,17 @@ impl<'m> Parser<'_, 'm> {
         self.skip_nl();
         let open = self.expect(P::LBrace)?;
         let mut fields = Vec::new();
-        let end;
-        loop {
-            let t = self.raw_peek();
-            match t.kind {
-                TokKind::Newline | TokKind::P(P::Semi) => {
-                    self.pos += 1;
-                    continue;
-                }
-                TokKind::P(P::RBrace) => {
-                    self.bump();
-                    end = t.span;
-                    break;
-                }
-                TokKind::Eof => {
-                    self.expect_close(P::RBrace, open, "")?;
-                    return Err(());
-                }
-                _ => {}
-            }
-            match self.field() {
-                Ok(fs) => {
-                    fields.extend(fs);
-                    let t = self.raw_peek();
-                    if !ends_stmt(&t) {
-                        let msg = format!("expected newline after the field, found {}", self.describe(&t));
-                        self.err(t, msg, "expected the end of the line");
-                        self.recover(0);
-                    }
-                }
-                Err(()) => {
-                    let extra = self.open;
-                    self.open = 0;
-                    self.nl_skip = 0;
-                    self.recover(extra);
-                }
-            }
-        }
+        let end = self.braced_lines(
+            open,
+            |p| {
+                fields.extend(p.field()?);
+                Ok(())
+            },
+            |p, t| {
+                let msg = format!("expected newline after the field, found {}", p.describe(&t));
+                p.err(t, msg, "expected the end of the line");
+            },
+        )?;
         Ok(StructDecl { span: kw.span.to(end), annotations, name, fields })
     }
 
@@ -312,13 +286,7 @@ impl<'m> Parser<'_, 'm> {
                 return Ok(ty);
             }
             self.enter(open)?;
-            self.bump();
-            self.nl_skip += 1;
-            self.open += 1;
-            let size = self.expr()?;
-            let close = self.expect_close(P::RBracket, open, "")?;
-            self.nl_skip -= 1;
-            self.open -= 1;
+            let (size, close) = self.bracketed(open, P::RBracket)?;
             ty = TypeExpr { span: ty.span.to(close.span), kind: TypeExprKind::Array(Box::new(ty), Box::new(size)) };
         }
     }

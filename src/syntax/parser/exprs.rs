@@ -112,14 +112,22 @@ impl<'m> Parser<'_, 'm> {
     }
 
     pub(super) fn index(&mut self, e: Expr, open: Token) -> PResult<Expr> {
+        let (idx, close) = self.bracketed(open, P::RBracket)?;
+        Ok(Expr { span: e.span.to(close.span), kind: ExprKind::Index(Box::new(e), Box::new(idx)) })
+    }
+
+    /// One expression between `open` (the next token) and its `close`, line
+    /// breaks insignificant inside: `(e)`, `a[i]`, `T[N]`. Returns the closer
+    /// too, for the span.
+    pub(super) fn bracketed(&mut self, open: Token, close: P) -> PResult<(Expr, Token)> {
         self.bump();
         self.nl_skip += 1;
         self.open += 1;
-        let idx = self.expr()?;
-        let close = self.expect_close(P::RBracket, open, "")?;
+        let e = self.expr()?;
+        let end = self.expect_close(close, open, "")?;
         self.nl_skip -= 1;
         self.open -= 1;
-        Ok(Expr { span: e.span.to(close.span), kind: ExprKind::Index(Box::new(e), Box::new(idx)) })
+        Ok((e, end))
     }
 
     /// `( a, b, ... )` or `[ a, b, ... ]` after the opener was consumed.
@@ -185,13 +193,7 @@ impl<'m> Parser<'_, 'm> {
     }
 
     pub(super) fn paren(&mut self, open: Token) -> PResult<Expr> {
-        self.bump();
-        self.nl_skip += 1;
-        self.open += 1;
-        let e = self.expr()?;
-        let close = self.expect_close(P::RParen, open, "")?;
-        self.nl_skip -= 1;
-        self.open -= 1;
+        let (e, close) = self.bracketed(open, P::RParen)?;
         Ok(Expr { kind: ExprKind::Paren(Box::new(e)), span: open.span.to(close.span) })
     }
 

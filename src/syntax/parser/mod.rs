@@ -306,6 +306,53 @@ impl<'m> Parser<'_, 'm> {
         Err(())
     }
 
+    /// The lines of a `{ ... }` body whose `{` (`open`) was consumed: empty
+    /// lines and `;` are skipped and `line` parses each of the others, which
+    /// must end there (a line break, `;` or `}`; if not, `not_ended` reports
+    /// the token and the rest of the line is skipped). An error inside a line
+    /// skips to the next one, so one mistake gives one diagnostic. Returns the
+    /// `}`'s span; at the end of the file, reports the unclosed `{`.
+    fn braced_lines(
+        &mut self,
+        open: Token,
+        mut line: impl FnMut(&mut Self) -> PResult<()>,
+        mut not_ended: impl FnMut(&mut Self, Token),
+    ) -> PResult<Span> {
+        loop {
+            let t = self.raw_peek();
+            match t.kind {
+                TokKind::Newline | TokKind::P(P::Semi) => {
+                    self.pos += 1;
+                    continue;
+                }
+                TokKind::P(P::RBrace) => {
+                    self.bump();
+                    return Ok(t.span);
+                }
+                TokKind::Eof => {
+                    self.error_close(t, P::RBrace, open, "");
+                    return Err(());
+                }
+                _ => {}
+            }
+            match line(self) {
+                Ok(()) => {
+                    let t = self.raw_peek();
+                    if !ends_stmt(&t) {
+                        not_ended(self, t);
+                        self.recover(0);
+                    }
+                }
+                Err(()) => {
+                    let extra = self.open;
+                    self.open = 0;
+                    self.nl_skip = 0;
+                    self.recover(extra);
+                }
+            }
+        }
+    }
+
     /// `a, b, c`: one or more names, a line break allowed after each `,`
     /// where `nl_after_comma`.
     fn names(&mut self, what: &str, nl_after_comma: bool) -> PResult<Names> {

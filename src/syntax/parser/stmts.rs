@@ -18,40 +18,14 @@ impl<'m> Parser<'_, 'm> {
         self.nl_skip = 0;
         self.open = 0;
         let mut stmts = Vec::new();
-        let result = loop {
-            let t = self.raw_peek();
-            match t.kind {
-                TokKind::Newline | TokKind::P(P::Semi) => {
-                    self.pos += 1;
-                    continue;
-                }
-                TokKind::P(P::RBrace) => {
-                    self.bump();
-                    break Ok(t.span);
-                }
-                TokKind::Eof => {
-                    self.error_close(t, P::RBrace, open, "");
-                    break Err(());
-                }
-                _ => {}
-            }
-            match self.stmt() {
-                Ok(s) => {
-                    stmts.push(s);
-                    let t = self.raw_peek();
-                    if !ends_stmt(&t) {
-                        self.error_expected(t, "newline or ';' after the statement");
-                        self.recover(0);
-                    }
-                }
-                Err(()) => {
-                    let extra = self.open;
-                    self.open = 0;
-                    self.nl_skip = 0;
-                    self.recover(extra);
-                }
-            }
-        };
+        let result = self.braced_lines(
+            open,
+            |p| {
+                stmts.push(p.stmt()?);
+                Ok(())
+            },
+            |p, t| p.error_expected(t, "newline or ';' after the statement"),
+        );
         self.nl_skip = nl0;
         self.open = open0;
         self.leave();
