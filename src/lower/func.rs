@@ -34,18 +34,18 @@ enum LocalSlot {
 /// What a `return` does in this function.
 pub enum FnKind {
     Helper,
-    /// An entry point: `return` builds the output struct from the private
-    /// copies of its outputs.
+    /// An entry point: `return` builds the output struct from its outputs.
     Entry(EntryOutputs),
 }
 
 /// The entry point's outputs, in result-struct member order.
 pub struct EntryOutputs {
     pub result_ty: Option<Handle<naga::Type>>,
-    /// Private globals, one per member.
-    /// `None` for an output the shader never writes (gl_Position of a
-    /// vertex shader that ignores it): zero.
-    pub members: Vec<(Option<Handle<naga::GlobalVariable>>, Option<BuiltinVar>, Handle<naga::Type>)>,
+    /// The output global of each member, read where it lives (a local
+    /// variable of the entry function or a private global). `None` for an
+    /// output the shader never writes (gl_Position of a vertex shader that
+    /// ignores it): zero.
+    pub members: Vec<(Option<sema::GlobalId>, Option<BuiltinVar>, Handle<naga::Type>)>,
     pub stage: naga::ShaderStage,
 }
 
@@ -62,6 +62,10 @@ pub struct FnBuilder<'m, 'p> {
     /// helpers lowered for them): naga, WGSL and SPIR-V allow implicit LOD
     /// only in fragment shaders.
     pub vertex_lod: bool,
+    /// Per sema global, in an entry point: an input held as its argument
+    /// (`Value`) or an output held in a local variable (`Var`) instead of
+    /// the module's private global. Empty in helpers.
+    entry_globals: Vec<LocalSlot>,
 }
 
 fn span(s: crate::source::Span) -> naga::Span {
@@ -90,7 +94,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
         let mut func = naga::Function { name: Some(name.to_string()), ..Default::default() };
         // A `let` names its expression: room for all of them up front.
         func.named_expressions.reserve(sema_locals.iter().filter(|l| !l.mutable).count());
-        let mut b = FnBuilder { m, func, emitter: Default::default(), locals: vec![LocalSlot::Unset; sema_locals.len()], sema_locals, kind, pending: Vec::new(), vertex_lod: false };
+        let mut b = FnBuilder { m, func, emitter: Default::default(), locals: vec![LocalSlot::Unset; sema_locals.len()], sema_locals, kind, pending: Vec::new(), vertex_lod: false, entry_globals: Vec::new() };
         b.emitter.start(&b.func.expressions);
         b
     }
@@ -158,24 +162,53 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
         self.flush(block);
     }
 
-    /// Entry prologue: copies argument `index` into a private global,
-    /// converting builtin `u32` indices to the DSL's `int`.
-    pub fn store_argument(&mut self, block: &mut Block, global: Handle<naga::GlobalVariable>, index: u32, to_int: bool, s: crate::source::Span) {
-        let ptr = self.append_plain(E::GlobalVariable(global), s);
+    /// Entry prologue: input `gid` arrives as argument `index` (builtin
+    /// `u32` indices converted to the DSL's `int`); see [`Self::hold_input`].
+    pub fn input_argument(&mut self, block: &mut Block, gid: sema::GlobalId, global: Option<Handle<naga::GlobalVariable>>, index: u32, to_int: bool, s: crate::source::Span) {
         let mut v = self.append_plain(E::FunctionArgument(index), s);
         if to_int {
             v = self.convert(v, &Ty::Scalar(Scalar::Uint), Scalar::Int, s);
         }
-        self.push(block, Statement::Store { pointer: ptr, value: v }, s);
+        self.hold_input(block, gid, global, v, s);
     }
 
-    /// Stores float2(0.5) into the private copy of `gl_PointCoord` (targets
-    /// without point sprites: the centre of a one-pixel point).
-    pub fn store_point_coord_default(&mut self, block: &mut Block, global: Handle<naga::GlobalVariable>, s: crate::source::Span) {
-        let ptr = self.append_plain(E::GlobalVariable(global), s);
+    /// Entry prologue: `gl_PointCoord` on targets without point sprites,
+    /// float2(0.5), the centre of a one-pixel point; into its private copy
+    /// (`Some`) or held as the entry point's own value.
+    pub fn point_coord_default(&mut self, block: &mut Block, gid: sema::GlobalId, global: Option<Handle<naga::GlobalVariable>>, s: crate::source::Span) {
         let half = self.literal(naga::Literal::F32(0.5), s);
         let v = self.append(E::Splat { size: naga::VectorSize::Bi, value: half }, s);
-        self.push(block, Statement::Store { pointer: ptr, value: v }, s);
+        self.hold_input(block, gid, global, v, s);
+    }
+
+    /// Entry prologue: input `gid` has value `v`, stored into its private
+    /// copy (`Some`) or held as the entry point's own value. The emit range
+    /// is closed here, in the function's top block, so the value dominates
+    /// every use.
+    fn hold_input(&mut self, block: &mut Block, gid: sema::GlobalId, global: Option<Handle<naga::GlobalVariable>>, v: Handle<E>, s: crate::source::Span) {
+        match global {
+            Some(g) => {
+                let ptr = self.append_plain(E::GlobalVariable(g), s);
+                self.push(block, Statement::Store { pointer: ptr, value: v }, s);
+            }
+            None => {
+                self.flush(block);
+                self.entry_global(gid, LocalSlot::Value(v));
+            }
+        }
+    }
+
+    /// Entry prologue: output `gid` lives in a new local variable.
+    pub fn output_local(&mut self, gid: sema::GlobalId, name: &str, ty: Handle<naga::Type>, s: crate::source::Span) {
+        let var = self.func.local_variables.append(naga::LocalVariable { name: Some(name.to_owned()), ty, init: None }, span(s));
+        self.entry_global(gid, LocalSlot::Var(var));
+    }
+
+    fn entry_global(&mut self, gid: sema::GlobalId, slot: LocalSlot) {
+        if self.entry_globals.is_empty() {
+            self.entry_globals = vec![LocalSlot::Unset; self.m.p.globals.len()];
+        }
+        self.entry_globals[gid] = slot;
     }
 
     /// The function a call of helper `fid` reaches from here.
@@ -214,7 +247,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
         for (g, builtin, ty) in members {
             let mut v = match g {
                 Some(g) => {
-                    let ptr = self.append_plain(E::GlobalVariable(g), s);
+                    let ptr = self.global_pointer(g, s).expect("an entry point's outputs are variables");
                     self.append(E::Load { pointer: ptr }, s)
                 }
                 None => self.append_plain(E::ZeroValue(ty), s),
@@ -406,10 +439,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
                 LocalSlot::Var(v) => Some(self.append_plain(E::LocalVariable(v), e.span)),
                 _ => None,
             },
-            ExprKind::Global(g) => match self.m.globals[*g] {
-                GlobalSlot::Var(h) => Some(self.append_plain(E::GlobalVariable(h), e.span)),
-                GlobalSlot::Sampler { .. } | GlobalSlot::Absent => None,
-            },
+            ExprKind::Global(g) => self.global_pointer(*g, e.span),
             ExprKind::Field(base, idx) => {
                 let b = self.pointer(base, block)?;
                 Some(self.append(E::AccessIndex { base: b, index: *idx }, e.span))
@@ -430,6 +460,27 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
                 })
             }
             _ => None,
+        }
+    }
+
+    /// Where global `g` is held in this function: the entry point's own
+    /// slot, else the module's global.
+    fn global_slot(&self, g: sema::GlobalId) -> Option<LocalSlot> {
+        match self.entry_globals.get(g) {
+            Some(LocalSlot::Unset) | None => None,
+            slot => slot.copied(),
+        }
+    }
+
+    /// A pointer to global `g`, unless it is a held value or a sampler.
+    fn global_pointer(&mut self, g: sema::GlobalId, s: crate::source::Span) -> Option<Handle<E>> {
+        match self.global_slot(g) {
+            Some(LocalSlot::Var(v)) => Some(self.append_plain(E::LocalVariable(v), s)),
+            Some(_) => None,
+            None => match self.m.globals[g] {
+                GlobalSlot::Var(h) => Some(self.append_plain(E::GlobalVariable(h), s)),
+                GlobalSlot::Sampler { .. } | GlobalSlot::Absent => None,
+            },
         }
     }
 
@@ -458,6 +509,12 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
 
     pub fn expr(&mut self, e: &Expr, block: &mut Block) -> Handle<E> {
         let s = e.span;
+        // An input the entry point holds as its argument.
+        if let ExprKind::Global(g) = e.kind {
+            if let Some(LocalSlot::Value(h)) = self.global_slot(g) {
+                return h;
+            }
+        }
         match &e.kind {
             ExprKind::Float(v) => self.literal(naga::Literal::F32(*v as f32), s),
             ExprKind::Int(v) => self.literal(naga::Literal::I32(*v as i32), s),
@@ -576,7 +633,10 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
     fn is_place(&self, e: &Expr) -> bool {
         match &e.kind {
             ExprKind::Local(id) => matches!(self.locals[*id], LocalSlot::Var(_)),
-            ExprKind::Global(g) => matches!(self.m.globals[*g], GlobalSlot::Var(_)),
+            ExprKind::Global(g) => match self.global_slot(*g) {
+                Some(slot) => matches!(slot, LocalSlot::Var(_)),
+                None => matches!(self.m.globals[*g], GlobalSlot::Var(_)),
+            },
             ExprKind::Field(b, _) | ExprKind::Index(b, _) => self.is_place(b),
             ExprKind::Swizzle(b, c) => c.len() == 1 && self.is_place(b),
             _ => false,

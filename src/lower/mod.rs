@@ -262,13 +262,14 @@ pub fn validate(module: &naga::Module, flavor: Flavor) -> Result<naga::valid::Mo
 fn build(p: &sema::Program, flavor: Flavor, only: Option<usize>, reach: &Reach) -> Result<(naga::Module, Interface), Diagnostic> {
     let mut m = ModuleBuilder::new(p, flavor);
     m.allow_nonuniform_derivatives();
+    let io = EntryIo::of(p, only, reach);
     let only_ep = only.map(|i| &p.entry_points[i]);
     match only_ep {
         // Constants are declared where first used: only those it reads.
-        Some(ep) => m.declare_globals(Some(&ep.func.uses)),
+        Some(ep) => m.declare_globals(Some(&ep.func.uses), &io.private),
         None => {
             m.declare_consts();
-            m.declare_globals(None);
+            m.declare_globals(None, &io.private);
         }
     }
     // Implicit-LOD sampling means level 0 in a vertex entry point; a helper
@@ -293,7 +294,7 @@ fn build(p: &sema::Program, flavor: Flavor, only: Option<usize>, reach: &Reach) 
     let mut entries = Vec::new();
     for (index, ep) in p.entry_points.iter().enumerate() {
         if only.is_none_or(|i| i == index) {
-            entries.push(lower_entry(&mut m, ep, index)?);
+            entries.push(lower_entry(&mut m, ep, index, &io.own[index])?);
         }
     }
     let interface = Interface { conventions: Conventions::default(), resources: std::mem::take(&mut m.resources), entry_points: entries };
@@ -339,6 +340,92 @@ impl Reach {
     }
 }
 
+/// Where each entry point keeps its inputs and outputs. One that no helper
+/// touches (and, for an input, that the entry point never assigns) lives in
+/// the entry function itself: an input is read from its argument, an
+/// output is a local variable returned at the end. Only the others get a
+/// private global (GLSL's model), which every backend writes as a
+/// module-level variable with copies in at the start and out at the end.
+struct EntryIo {
+    /// Per entry point of the program (empty for those the module leaves
+    /// out), per global: held by the entry function.
+    own: Vec<Vec<bool>>,
+    /// Per global: declared as a private global.
+    private: Vec<bool>,
+}
+
+impl EntryIo {
+    fn of(p: &sema::Program, only: Option<usize>, reach: &Reach) -> EntryIo {
+        let n = p.globals.len();
+        let interface = |gid: usize| matches!(p.globals[gid].kind, GlobalKind::Io { .. } | GlobalKind::Builtin(_));
+        let mut private = vec![false; n];
+        // What the module's helpers touch: every helper for the whole
+        // program, those the entry point reaches for one.
+        for (fid, f) in p.functions.iter().enumerate() {
+            if only.is_none_or(|i| reach.by_entry[i][fid]) {
+                for &gid in f.uses.keys() {
+                    private[gid] |= interface(gid);
+                }
+            }
+        }
+        let mut own = Vec::with_capacity(p.entry_points.len());
+        let (mut touched, mut written) = (vec![false; n], vec![false; n]);
+        for (index, ep) in p.entry_points.iter().enumerate() {
+            if only.is_some_and(|i| i != index) {
+                own.push(Vec::new());
+                continue;
+            }
+            touched.fill(false);
+            written.fill(false);
+            for (f, _) in p.functions.iter().zip(&reach.by_entry[index]).filter(|(_, r)| **r) {
+                for &gid in f.uses.keys() {
+                    touched[gid] = true;
+                }
+            }
+            assigned_globals(&ep.func.body, &mut written);
+            let mut mine = vec![false; n];
+            for &gid in ep.func.uses.keys() {
+                let g = &p.globals[gid];
+                let input = func::is_stage_input(&g.kind, ep.stage) && !written[gid];
+                let output = func::is_stage_output(&g.kind, ep.stage);
+                // Interface types are scalars and vectors; anything else
+                // keeps the private global, where every access works.
+                let plain = matches!(g.ty, Ty::Scalar(_) | Ty::Vector(..));
+                mine[gid] = plain && !touched[gid] && (input || output);
+                private[gid] |= interface(gid) && !mine[gid];
+            }
+            own.push(mine);
+        }
+        EntryIo { own, private }
+    }
+}
+
+/// Marks the globals that `stmts` assign to (all or part of).
+fn assigned_globals(stmts: &[sema::Stmt], out: &mut [bool]) {
+    fn root(e: &sema::Expr) -> Option<sema::GlobalId> {
+        match &e.kind {
+            sema::ExprKind::Global(g) => Some(*g),
+            sema::ExprKind::Field(b, _) | sema::ExprKind::Index(b, _) | sema::ExprKind::Swizzle(b, _) => root(b),
+            _ => None,
+        }
+    }
+    for s in stmts {
+        match s {
+            sema::Stmt::Assign { target, .. } => {
+                if let Some(g) = root(target) {
+                    out[g] = true;
+                }
+            }
+            sema::Stmt::If { then, otherwise, .. } => {
+                assigned_globals(then, out);
+                assigned_globals(otherwise, out);
+            }
+            sema::Stmt::While { body, .. } | sema::Stmt::For { body, .. } => assigned_globals(body, out),
+            _ => {}
+        }
+    }
+}
+
 /// Which helper functions entry point `ep` reaches.
 fn reach(p: &sema::Program, ep: &sema::EntryPoint) -> Vec<bool> {
     let mut seen = vec![false; p.functions.len()];
@@ -363,7 +450,9 @@ fn location(location: u32, interp: (Option<naga::Interpolation>, Option<naga::Sa
     naga::Binding::Location { location, interpolation: interp.0, sampling: interp.1, blend_src: None, per_primitive: false }
 }
 
-fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: usize) -> Result<EntryInterface, Diagnostic> {
+/// Lowers entry point `ep`; `own`: the inputs and outputs it holds itself
+/// (see [`EntryIo`]).
+fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: usize, own: &[bool]) -> Result<EntryInterface, Diagnostic> {
     use naga::ShaderStage::{Fragment, Vertex};
     let p = m.p;
     let stage = ep.stage;
@@ -373,16 +462,14 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
     let describe = m.flavor != Flavor::Gl;
     // Arguments: inputs this entry point reaches, by location then builtins.
     let mut args: Vec<(sema::GlobalId, naga::Binding, naga::Handle<naga::Type>, bool)> = Vec::new();
-    let mut outs: Vec<(Option<naga::Handle<naga::GlobalVariable>>, Option<BuiltinVar>, naga::Handle<naga::Type>, naga::Binding, String)> = Vec::new();
+    let mut outs: Vec<(Option<sema::GlobalId>, Option<BuiltinVar>, naga::Handle<naga::Type>, naga::Binding, String)> = Vec::new();
     if stage == Vertex {
         let pos_global = p.globals.iter().position(|g| matches!(g.kind, GlobalKind::Builtin(BuiltinVar::Position))).filter(|g| ep.func.uses.contains_key(g));
         let ty = m.ty(&BuiltinVar::Position.ty());
-        let global = pos_global.and_then(|g| match m.globals[g] {
-            GlobalSlot::Var(h) => Some(h),
-            GlobalSlot::Sampler { .. } | GlobalSlot::Absent => None,
-        });
-        outs.push((global, Some(BuiltinVar::Position), ty, naga::Binding::BuiltIn(naga::BuiltIn::Position { invariant: false }), "gl_Position".into()));
+        outs.push((pos_global, Some(BuiltinVar::Position), ty, naga::Binding::BuiltIn(naga::BuiltIn::Position { invariant: false }), "gl_Position".into()));
     }
+    // Outputs held in local variables, declared once the function exists.
+    let mut own_outputs: Vec<sema::GlobalId> = Vec::new();
     // Output locations so far (few: a list).
     let mut seen_out: Vec<(u32, Span)> = Vec::new();
     let mut point_coord_default: Vec<(sema::GlobalId, Span)> = Vec::new();
@@ -392,7 +479,9 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
             iface.resources.extend(m.resource_of[gid].clone());
             continue;
         }
-        let GlobalSlot::Var(h) = m.globals[gid] else { continue };
+        if !own[gid] && !matches!(m.globals[gid], GlobalSlot::Var(_)) {
+            continue;
+        }
         match g.kind {
             GlobalKind::Builtin(b) if describe => iface.builtins.push(b.name().to_string()),
             _ => {}
@@ -427,9 +516,11 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
                 }
                 _ => continue,
             };
-            let _ = h;
             args.push((gid, binding, arg_ty, to_int));
         } else if func::is_stage_output(&g.kind, stage) {
+            if own[gid] {
+                own_outputs.push(gid);
+            }
             match g.kind {
                 GlobalKind::Io { location: l, .. } => {
                     if let Some(&(_, prev)) = seen_out.iter().find(|o| o.0 == l) {
@@ -444,7 +535,7 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
                         let dsl_type = m.show_ty(&g.ty);
                         iface.outputs.push(IoVar { name: g.name.clone(), location: l, ty, dsl_type, interpolation: interp.0 });
                     }
-                    outs.push((Some(h), None, ty, location(l, interp), g.name.clone()));
+                    outs.push((Some(gid), None, ty, location(l, interp), g.name.clone()));
                 }
                 GlobalKind::Builtin(b) => {
                     let bi = match b {
@@ -456,7 +547,7 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
                         BuiltinVar::FragDepth => naga::BuiltIn::FragDepth,
                         _ => continue,
                     };
-                    outs.push((Some(h), Some(b), ty, naga::Binding::BuiltIn(bi), b.name().to_string()));
+                    outs.push((Some(gid), Some(b), ty, naga::Binding::BuiltIn(bi), b.name().to_string()));
                 }
                 _ => {}
             }
@@ -471,16 +562,30 @@ fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoint, index: u
     b.vertex_lod = stage == Vertex;
     // The prologue's stores, then the statements.
     let mut body = func::block_for(args.len() + ep.func.body.len() + 1);
-    for (gid, s) in point_coord_default {
-        let GlobalSlot::Var(h) = b.m.globals[gid] else { continue };
-        b.store_point_coord_default(&mut body, h, s);
+    let private = |m: &ModuleBuilder, gid: sema::GlobalId| match m.globals[gid] {
+        GlobalSlot::Var(h) if !own[gid] => Some(h),
+        _ => None,
+    };
+    for gid in own_outputs {
+        let g = &p.globals[gid];
+        let ty = b.m.ty(&g.ty);
+        b.output_local(gid, &g.name, ty, g.span);
     }
-    for (i, (gid, binding, ty, to_int)) in args.iter().enumerate() {
-        let g = &p.globals[*gid];
-        let name = ["in_", g.name.trim_start_matches("gl_")].concat();
-        b.func.arguments.push(naga::FunctionArgument { name: Some(name), ty: *ty, binding: Some(binding.clone()) });
-        let GlobalSlot::Var(h) = b.m.globals[*gid] else { continue };
-        b.store_argument(&mut body, h, i as u32, *to_int, g.span);
+    for (gid, s) in point_coord_default {
+        let h = private(b.m, gid);
+        b.point_coord_default(&mut body, gid, h, s);
+    }
+    for (i, &(gid, ref binding, ty, to_int)) in args.iter().enumerate() {
+        let g = &p.globals[gid];
+        let h = private(b.m, gid);
+        // An input held as its argument takes the variable's name; one
+        // copied into a private global leaves the name to the global.
+        let name = match h {
+            Some(_) => ["in_", g.name.trim_start_matches("gl_")].concat(),
+            None => g.name.trim_start_matches("gl_").to_owned(),
+        };
+        b.func.arguments.push(naga::FunctionArgument { name: Some(name), ty, binding: Some(binding.clone()) });
+        b.input_argument(&mut body, gid, h, i as u32, to_int, g.span);
     }
     b.stmts_into(&ep.func.body.as_slice(), &mut body);
     if !matches!(body.last(), Some(naga::Statement::Return { .. })) {

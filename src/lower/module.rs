@@ -19,7 +19,8 @@ pub enum GlobalSlot {
     /// global (naga's GLSL writer cannot write binding arrays).
     Sampler { first: usize, count: u32 },
     /// Not declared: the module is built for one entry point, which does not
-    /// use this global (see `ModuleBuilder::declare_globals`).
+    /// use this global, or it is an input or output that every entry point
+    /// using it holds itself (see `ModuleBuilder::declare_globals`).
     Absent,
 }
 
@@ -245,7 +246,9 @@ impl<'p> ModuleBuilder<'p> {
     /// for the one-entry GL modules, whose resources have no bindings.
     /// Only the GPU module describes its resources (`resources`): a GL
     /// module's interface is not kept.
-    pub fn declare_globals(&mut self, only: Option<&std::collections::BTreeMap<sema::GlobalId, Span>>) {
+    /// `private`: per global, whether an input or output needs a private
+    /// global (see `lower::EntryIo`); the others are left `Absent`.
+    pub fn declare_globals(&mut self, only: Option<&std::collections::BTreeMap<sema::GlobalId, Span>>, private: &[bool]) {
         let mut next_binding = 0u32;
         let with_binding = self.flavor != Flavor::Gl;
         let describe = self.flavor != Flavor::Gl;
@@ -346,6 +349,7 @@ impl<'p> ModuleBuilder<'p> {
                     }
                     GlobalSlot::Sampler { first, count: count.unwrap_or(1) }
                 }
+                GlobalKind::Io { .. } | GlobalKind::Builtin(_) if !private[gid] => GlobalSlot::Absent,
                 GlobalKind::Io { .. } | GlobalKind::Builtin(_) => {
                     let ty = self.ty(&g.ty);
                     let h = self.module.global_variables.append(

@@ -11,10 +11,6 @@ const vec3 COLORS[3] = vec3[3](vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), vec3(0.
 
 layout(std140) uniform u_count_block { int u_count; };
 
-int v_id = 0;
-
-vec4 f_color = vec4(0.0);
-
 flat in int _vs2fs_location1;
 layout(location = 0) out vec4 _fs2p_location0;
 
@@ -64,30 +60,26 @@ float sum_first(int n) {
 }
 
 void main() {
-    int in_v_id = _vs2fs_location1;
+    int v_id = _vs2fs_location1;
+    vec4 f_color = vec4(0.0);
     mat3x3 local = mat3x3(0.0);
     ivec2 grid[2] = ivec2[2](ivec2(0), ivec2(0));
     mat2x2 m = mat2x2(0.0);
-    v_id = in_v_id;
     mat3x3 basis = mat3x3(COLORS[0], COLORS[1], COLORS[2]);
-    int _e10 = v_id;
     local = basis;
-    vec3 col = local[(_e10 - (3 * (_e10 / 3)))];
+    vec3 col = local[(v_id - (3 * (v_id / 3)))];
     grid = ivec2[2](ivec2(0), ivec2(0));
-    int _e22 = v_id;
-    int _e27 = v_id;
-    int _e29 = v_id;
-    grid[(_e22 & 1)] = ivec2(_e27, -(_e29));
+    grid[(v_id & 1)] = ivec2(v_id, -(v_id));
     ivec2 g = grid[1];
     m = mat2x2(vec2(1.0, 0.0), vec2(0.0, 1.0));
-    int _e43 = u_count;
-    m[(_e43 & 1)] = vec2(0.5);
-    int _e51 = u_count;
-    float _e52 = sum_first(_e51);
-    vec2 _e58 = m[1];
-    f_color = vec4(((col * _e52) + vec3(float(g.x), _e58)), 1.0);
-    vec4 _e64 = f_color;
-    arrays_fs_out _tmp_return = arrays_fs_out(_e64);
+    int _e34 = u_count;
+    m[(_e34 & 1)] = vec2(0.5);
+    int _e42 = u_count;
+    float _e43 = sum_first(_e42);
+    vec2 _e49 = m[1];
+    f_color = vec4(((col * _e43) + vec3(float(g.x), _e49)), 1.0);
+    vec4 _e55 = f_color;
+    arrays_fs_out _tmp_return = arrays_fs_out(_e55);
     _fs2p_location0 = _tmp_return.f_color;
     return;
 }

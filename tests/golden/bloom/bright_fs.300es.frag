@@ -10,10 +10,6 @@ layout(std140) uniform u_threshold_block { vec4 u_threshold; };
 
 uniform highp sampler2D hdr_scene;
 
-vec2 v_uv = vec2(0.0);
-
-vec4 f_color = vec4(0.0);
-
 smooth in vec2 _vs2fs_location0;
 layout(location = 0) out vec4 _fs2p_location0;
 
@@ -22,27 +18,26 @@ float luminance(vec3 c) {
 }
 
 void main() {
-    vec2 in_v_uv = _vs2fs_location0;
+    vec2 v_uv = _vs2fs_location0;
+    vec4 f_color = vec4(0.0);
     float soft = 0.0;
-    v_uv = in_v_uv;
-    vec2 _e3 = v_uv;
-    vec4 _e6 = texture(hdr_scene, vec2(_e3));
-    vec3 c_1 = _e6.xyz;
-    float _e10 = u_threshold.x;
-    float _e13 = u_threshold.y;
-    float knee = (_e10 * _e13);
-    float _e15 = luminance(c_1);
-    float _e19 = u_threshold.x;
-    soft = clamp(((_e15 - _e19) + knee), 0.0, (2.0 * knee));
-    float _e28 = soft;
-    float _e30 = soft;
-    soft = ((_e28 * _e30) / ((4.0 * knee) + 1e-5));
-    float _e38 = soft;
-    float _e41 = u_threshold.x;
-    float contribution = (max(_e38, (_e15 - _e41)) / max(_e15, 1e-5));
+    vec4 _e3 = texture(hdr_scene, vec2(v_uv));
+    vec3 c_1 = _e3.xyz;
+    float _e7 = u_threshold.x;
+    float _e10 = u_threshold.y;
+    float knee = (_e7 * _e10);
+    float _e12 = luminance(c_1);
+    float _e16 = u_threshold.x;
+    soft = clamp(((_e12 - _e16) + knee), 0.0, (2.0 * knee));
+    float _e25 = soft;
+    float _e27 = soft;
+    soft = ((_e25 * _e27) / ((4.0 * knee) + 1e-5));
+    float _e35 = soft;
+    float _e38 = u_threshold.x;
+    float contribution = (max(_e35, (_e12 - _e38)) / max(_e12, 1e-5));
     f_color = vec4((c_1 * contribution), 1.0);
-    vec4 _e52 = f_color;
-    bright_fs_out _tmp_return = bright_fs_out(_e52);
+    vec4 _e49 = f_color;
+    bright_fs_out _tmp_return = bright_fs_out(_e49);
     _fs2p_location0 = _tmp_return.f_color;
     return;
 }

@@ -14,10 +14,6 @@ uniform highp sampler2D hdr_scene;
 
 uniform highp sampler2D bloom_src;
 
-vec2 v_uv = vec2(0.0);
-
-vec4 f_color = vec4(0.0);
-
 smooth in vec2 _vs2fs_location0;
 layout(location = 0) out vec4 _fs2p_location0;
 
@@ -28,19 +24,17 @@ vec3 aces(vec3 x) {
 }
 
 void main() {
-    vec2 in_v_uv = _vs2fs_location0;
-    v_uv = in_v_uv;
-    vec2 _e3 = v_uv;
-    vec4 _e6 = texture(hdr_scene, vec2(_e3));
-    vec2 _e9 = v_uv;
-    vec4 _e12 = texture(bloom_src, vec2(_e9));
-    float _e15 = u_bloom_strength;
-    vec3 hdr = (_e6.xyz + (_e12.xyz * _e15));
-    float _e19 = u_exposure;
-    vec3 _e21 = aces((hdr * _e19));
-    f_color = vec4(pow(_e21, vec3((1.0 / 2.2))), 1.0);
-    vec4 _e31 = f_color;
-    composite_fs_out _tmp_return = composite_fs_out(_e31);
+    vec2 v_uv = _vs2fs_location0;
+    vec4 f_color = vec4(0.0);
+    vec4 _e3 = texture(hdr_scene, vec2(v_uv));
+    vec4 _e7 = texture(bloom_src, vec2(v_uv));
+    float _e10 = u_bloom_strength;
+    vec3 hdr = (_e3.xyz + (_e7.xyz * _e10));
+    float _e14 = u_exposure;
+    vec3 _e16 = aces((hdr * _e14));
+    f_color = vec4(pow(_e16, vec3((1.0 / 2.2))), 1.0);
+    vec4 _e26 = f_color;
+    composite_fs_out _tmp_return = composite_fs_out(_e26);
     _fs2p_location0 = _tmp_return.f_color;
     return;
 }

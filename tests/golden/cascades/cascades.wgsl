@@ -34,9 +34,8 @@ var<uniform> u_cam_pos: vec3<f32>;
 var<uniform> u_is_floor: f32;
 var<private> a_pos: vec3<f32>;
 var<private> a_normal: vec3<f32>;
-var<private> v_world_pos: vec3<f32>;
-var<private> v_world_normal: vec3<f32>;
-var<private> f_FragColor: vec4<f32>;
+var<private> v_world_pos_1: vec3<f32>;
+var<private> v_world_normal_1: vec3<f32>;
 @group(0) @binding(6) 
 var<uniform> u_light_dir: vec3<f32>;
 @group(0) @binding(7) 
@@ -53,7 +52,6 @@ var cascade_maps_1_sampler: sampler_comparison;
 var cascade_maps_2_: texture_depth_2d;
 @group(0) @binding(13) 
 var cascade_maps_2_sampler: sampler_comparison;
-var<private> gl_Position: vec4<f32>;
 
 fn shadow_clip() -> vec4<f32> {
     let _e1 = u_light_vp;
@@ -105,7 +103,7 @@ fn pick_cascade(p: vec4<f32>) -> i32 {
 }
 
 fn sun_ndotl() -> f32 {
-    let _e1 = v_world_normal;
+    let _e1 = v_world_normal_1;
     let _e4 = u_light_dir;
     return max(dot(normalize(_e1), normalize(_e4)), 0f);
 }
@@ -128,7 +126,7 @@ fn checker(p_1: vec3<f32>) -> vec3<f32> {
 fn surface_albedo() -> vec3<f32> {
     let _e1 = u_is_floor;
     if (_e1 > 0.5f) {
-        let _e5 = v_world_pos;
+        let _e5 = v_world_pos_1;
         let _e6 = checker(_e5);
         return _e6;
     }
@@ -140,12 +138,12 @@ fn hemisphere(n: vec3<f32>) -> vec3<f32> {
 }
 
 fn sun_shade(visibility: f32) -> vec3<f32> {
-    let _e2 = v_world_normal;
+    let _e2 = v_world_normal_1;
     let n_1 = normalize(_e2);
     let _e5 = u_light_dir;
     let l = normalize(_e5);
     let _e8 = u_cam_pos;
-    let _e10 = v_world_pos;
+    let _e10 = v_world_pos_1;
     let v = normalize((_e8 - _e10));
     let ndotl_1 = max(dot(n_1, l), 0f);
     let lit = select(visibility, 0f, (ndotl_1 < 0.05f));
@@ -160,6 +158,8 @@ fn sun_shade(visibility: f32) -> vec3<f32> {
 
 @vertex 
 fn cascades_shadow_vs(@location(0) in_a_pos: vec3<f32>) -> cascades_shadow_vs_out {
+    var gl_Position: vec4<f32>;
+
     a_pos = in_a_pos;
     let _e3 = shadow_clip();
     gl_Position = _e3;
@@ -169,6 +169,8 @@ fn cascades_shadow_vs(@location(0) in_a_pos: vec3<f32>) -> cascades_shadow_vs_ou
 
 @fragment 
 fn cascades_shadow_fs() -> cascades_shadow_fs_out {
+    var f_FragColor: vec4<f32>;
+
     f_FragColor = vec4(1f);
     let _e4 = f_FragColor;
     return cascades_shadow_fs_out(_e4);
@@ -176,6 +178,10 @@ fn cascades_shadow_fs() -> cascades_shadow_fs_out {
 
 @vertex 
 fn cascades_main_vs(@location(0) in_a_pos_1: vec3<f32>, @location(1) in_a_normal: vec3<f32>) -> cascades_main_vs_out {
+    var v_world_pos: vec3<f32>;
+    var v_world_normal: vec3<f32>;
+    var gl_Position_1: vec4<f32>;
+
     a_pos = in_a_pos_1;
     a_normal = in_a_normal;
     let _e4 = world_position();
@@ -184,8 +190,8 @@ fn cascades_main_vs(@location(0) in_a_pos_1: vec3<f32>, @location(1) in_a_normal
     v_world_normal = _e8;
     let _e11 = u_proj;
     let _e13 = u_view;
-    gl_Position = (_e11 * (_e13 * _e4));
-    let _e17 = gl_Position;
+    gl_Position_1 = (_e11 * (_e13 * _e4));
+    let _e17 = gl_Position_1;
     let _e28 = v_world_pos;
     let _e30 = v_world_normal;
     return cascades_main_vs_out(vec4<f32>(_e17.x, -(_e17.y), ((_e17.z + _e17.w) * 0.5f), _e17.w), _e28, _e30);
@@ -193,11 +199,12 @@ fn cascades_main_vs(@location(0) in_a_pos_1: vec3<f32>, @location(1) in_a_normal
 
 @fragment 
 fn cascades_main_fs(@location(0) in_v_world_pos: vec3<f32>, @location(1) in_v_world_normal: vec3<f32>) -> cascades_main_fs_out {
+    var f_FragColor_1: vec4<f32>;
     var texel: f32;
 
-    v_world_pos = in_v_world_pos;
-    v_world_normal = in_v_world_normal;
-    let _e5 = v_world_pos;
+    v_world_pos_1 = in_v_world_pos;
+    v_world_normal_1 = in_v_world_normal;
+    let _e5 = v_world_pos_1;
     let p_2 = vec4<f32>(_e5, 1f);
     let _e8 = pick_cascade(p_2);
     let _e11 = u_cascade_vp[_e8];
@@ -223,7 +230,7 @@ fn cascades_main_fs(@location(0) in_v_world_pos: vec3<f32>, @location(1) in_v_wo
     }
     let visibility_1 = texel;
     let _e42 = sun_shade(visibility_1);
-    f_FragColor = vec4<f32>(_e42, 1f);
-    let _e46 = f_FragColor;
+    f_FragColor_1 = vec4<f32>(_e42, 1f);
+    let _e46 = f_FragColor_1;
     return cascades_main_fs_out(_e46);
 }

@@ -17,8 +17,6 @@ vec3 v_world_pos = vec3(0.0);
 
 vec3 v_world_normal = vec3(0.0);
 
-vec4 f_FragColor = vec4(0.0);
-
 layout(std140) uniform u_light_dir_block { vec3 u_light_dir; };
 
 layout(std140) uniform u_cascade_vp_block { mat4x4 u_cascade_vp[3]; };
@@ -120,6 +118,7 @@ vec3 sun_shade(float visibility) {
 void main() {
     vec3 in_v_world_pos = _vs2fs_location0;
     vec3 in_v_world_normal = _vs2fs_location1;
+    vec4 f_FragColor = vec4(0.0);
     float texel = 0.0;
     v_world_pos = in_v_world_pos;
     v_world_normal = in_v_world_normal;

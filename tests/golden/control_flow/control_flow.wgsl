@@ -13,10 +13,6 @@ struct flow_fs_out {
 var<uniform> u_steps: i32;
 @group(0) @binding(1) 
 var<uniform> u_threshold: f32;
-var<private> a_pos: vec2<f32>;
-var<private> v_uv: vec2<f32>;
-var<private> f_color: vec4<f32>;
-var<private> gl_Position: vec4<f32>;
 
 fn band(x: f32) -> i32 {
     if (x < 0.25f) {
@@ -35,74 +31,72 @@ fn band(x: f32) -> i32 {
 }
 
 @vertex 
-fn flow_vs(@location(0) in_a_pos: vec2<f32>) -> flow_vs_out {
-    a_pos = in_a_pos;
-    let _e4 = a_pos;
-    v_uv = ((_e4 * 0.5f) + vec2(0.5f));
-    let _e12 = a_pos;
-    gl_Position = vec4<f32>(_e12, 0f, 1f);
-    let _e17 = gl_Position;
-    let _e28 = v_uv;
-    return flow_vs_out(vec4<f32>(_e17.x, -(_e17.y), ((_e17.z + _e17.w) * 0.5f), _e17.w), _e28);
+fn flow_vs(@location(0) a_pos: vec2<f32>) -> flow_vs_out {
+    var v_uv: vec2<f32>;
+    var gl_Position: vec4<f32>;
+
+    v_uv = ((a_pos * 0.5f) + vec2(0.5f));
+    gl_Position = vec4<f32>(a_pos, 0f, 1f);
+    let _e12 = gl_Position;
+    let _e23 = v_uv;
+    return flow_vs_out(vec4<f32>(_e12.x, -(_e12.y), ((_e12.z + _e12.w) * 0.5f), _e12.w), _e23);
 }
 
 @fragment 
-fn flow_fs(@location(0) in_v_uv: vec2<f32>) -> flow_fs_out {
+fn flow_fs(@location(0) v_uv_1: vec2<f32>) -> flow_fs_out {
+    var f_color: vec4<f32>;
     var acc: f32;
     var i: i32;
     var count: u32;
     var k: i32;
     var level: f32;
 
-    v_uv = in_v_uv;
     acc = 0f;
     i = 0i;
     loop {
-        let _e7 = i;
-        let _e9 = u_steps;
-        if !((_e7 < _e9)) {
+        let _e6 = i;
+        let _e8 = u_steps;
+        if !((_e6 < _e8)) {
             break;
         }
-        let _e14 = i;
-        i = (_e14 + 1i);
-        let _e17 = i;
-        if ((_e17 % 2i) == 0i) {
+        let _e13 = i;
+        i = (_e13 + 1i);
+        let _e16 = i;
+        if ((_e16 % 2i) == 0i) {
             continue;
         }
-        let _e25 = i;
-        let _e28 = acc;
-        acc = (_e28 + (1f / f32(_e25)));
-        let _e31 = acc;
-        let _e33 = u_threshold;
-        if (_e31 > _e33) {
+        let _e24 = i;
+        let _e27 = acc;
+        acc = (_e27 + (1f / f32(_e24)));
+        let _e30 = acc;
+        let _e32 = u_threshold;
+        if (_e30 > _e32) {
             break;
         }
     }
     count = 0u;
     k = 2i;
     loop {
-        let _e40 = k;
-        if !((_e40 < 7i)) {
+        let _e39 = k;
+        if !((_e39 < 7i)) {
             break;
         }
-        let _e45 = k;
-        let _e47 = count;
-        count = (_e47 + u32(_e45));
+        let _e44 = k;
+        let _e46 = count;
+        count = (_e46 + u32(_e44));
         continuing {
-            let _e49 = k;
-            k = (_e49 + 1i);
+            let _e48 = k;
+            k = (_e48 + 1i);
         }
     }
-    let _e55 = v_uv.x;
-    let _e56 = band(_e55);
-    level = (f32(_e56) / 3f);
-    let _e63 = v_uv.y;
-    let _e69 = level;
-    level = (_e69 * select(0.5f, 1f, (_e63 > 0.5f)));
-    let _e73 = acc;
-    let _e75 = level;
-    let _e77 = count;
-    f_color = vec4<f32>(_e73, _e75, (f32(_e77) / 20f), 1f);
-    let _e84 = f_color;
-    return flow_fs_out(_e84);
+    let _e53 = band(v_uv_1.x);
+    level = (f32(_e53) / 3f);
+    let _e64 = level;
+    level = (_e64 * select(0.5f, 1f, (v_uv_1.y > 0.5f)));
+    let _e68 = acc;
+    let _e70 = level;
+    let _e72 = count;
+    f_color = vec4<f32>(_e68, _e70, (f32(_e72) / 20f), 1f);
+    let _e79 = f_color;
+    return flow_fs_out(_e79);
 }

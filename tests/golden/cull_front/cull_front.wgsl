@@ -35,16 +35,14 @@ var<uniform> u_cam_pos: vec3<f32>;
 var<uniform> u_is_floor: f32;
 var<private> a_pos: vec3<f32>;
 var<private> a_normal: vec3<f32>;
-var<private> v_world_pos: vec3<f32>;
-var<private> v_world_normal: vec3<f32>;
-var<private> f_FragColor: vec4<f32>;
+var<private> v_world_pos_1: vec3<f32>;
+var<private> v_world_normal_1: vec3<f32>;
 @group(0) @binding(6) 
 var<uniform> u_light_dir: vec3<f32>;
 @group(0) @binding(7) 
 var shadow_map: texture_depth_2d;
 @group(0) @binding(8) 
 var shadow_map_sampler: sampler_comparison;
-var<private> gl_Position: vec4<f32>;
 
 fn shadow_clip() -> vec4<f32> {
     let _e1 = u_light_vp;
@@ -109,7 +107,7 @@ fn checker(p: vec3<f32>) -> vec3<f32> {
 fn surface_albedo() -> vec3<f32> {
     let _e1 = u_is_floor;
     if (_e1 > 0.5f) {
-        let _e5 = v_world_pos;
+        let _e5 = v_world_pos_1;
         let _e6 = checker(_e5);
         return _e6;
     }
@@ -121,12 +119,12 @@ fn hemisphere(n: vec3<f32>) -> vec3<f32> {
 }
 
 fn sun_shade(visibility: f32) -> vec3<f32> {
-    let _e2 = v_world_normal;
+    let _e2 = v_world_normal_1;
     let n_1 = normalize(_e2);
     let _e5 = u_light_dir;
     let l = normalize(_e5);
     let _e8 = u_cam_pos;
-    let _e10 = v_world_pos;
+    let _e10 = v_world_pos_1;
     let v = normalize((_e8 - _e10));
     let ndotl = max(dot(n_1, l), 0f);
     let lit = select(visibility, 0f, (ndotl < 0.05f));
@@ -141,6 +139,8 @@ fn sun_shade(visibility: f32) -> vec3<f32> {
 
 @vertex 
 fn cull_shadow_vs(@location(0) in_a_pos: vec3<f32>) -> cull_shadow_vs_out {
+    var gl_Position: vec4<f32>;
+
     a_pos = in_a_pos;
     let _e3 = shadow_clip();
     gl_Position = _e3;
@@ -150,6 +150,8 @@ fn cull_shadow_vs(@location(0) in_a_pos: vec3<f32>) -> cull_shadow_vs_out {
 
 @fragment 
 fn cull_shadow_fs() -> cull_shadow_fs_out {
+    var f_FragColor: vec4<f32>;
+
     f_FragColor = vec4(1f);
     let _e4 = f_FragColor;
     return cull_shadow_fs_out(_e4);
@@ -157,6 +159,10 @@ fn cull_shadow_fs() -> cull_shadow_fs_out {
 
 @vertex 
 fn cull_main_vs(@location(0) in_a_pos_1: vec3<f32>, @location(1) in_a_normal: vec3<f32>) -> cull_main_vs_out {
+    var v_world_pos: vec3<f32>;
+    var v_world_normal: vec3<f32>;
+    var gl_Position_1: vec4<f32>;
+
     a_pos = in_a_pos_1;
     a_normal = in_a_normal;
     let _e4 = world_position();
@@ -165,8 +171,8 @@ fn cull_main_vs(@location(0) in_a_pos_1: vec3<f32>, @location(1) in_a_normal: ve
     v_world_normal = _e8;
     let _e11 = u_proj;
     let _e13 = u_view;
-    gl_Position = (_e11 * (_e13 * _e4));
-    let _e17 = gl_Position;
+    gl_Position_1 = (_e11 * (_e13 * _e4));
+    let _e17 = gl_Position_1;
     let _e28 = v_world_pos;
     let _e30 = v_world_normal;
     return cull_main_vs_out(vec4<f32>(_e17.x, -(_e17.y), ((_e17.z + _e17.w) * 0.5f), _e17.w), _e28, _e30);
@@ -174,14 +180,16 @@ fn cull_main_vs(@location(0) in_a_pos_1: vec3<f32>, @location(1) in_a_normal: ve
 
 @fragment 
 fn cull_main_fs(@location(0) in_v_world_pos: vec3<f32>, @location(1) in_v_world_normal: vec3<f32>) -> cull_main_fs_out {
-    v_world_pos = in_v_world_pos;
-    v_world_normal = in_v_world_normal;
+    var f_FragColor_1: vec4<f32>;
+
+    v_world_pos_1 = in_v_world_pos;
+    v_world_normal_1 = in_v_world_normal;
     let _e5 = u_light_vp;
-    let _e7 = v_world_pos;
+    let _e7 = v_world_pos_1;
     let _e11 = to_map((_e5 * vec4<f32>(_e7, 1f)));
     let _e14 = pcf_visibility(_e11, 0f);
     let _e15 = sun_shade(_e14);
-    f_FragColor = vec4<f32>(_e15, 1f);
-    let _e19 = f_FragColor;
+    f_FragColor_1 = vec4<f32>(_e15, 1f);
+    let _e19 = f_FragColor_1;
     return cull_main_fs_out(_e19);
 }

@@ -20,8 +20,6 @@ vec3 v_world_pos = vec3(0.0);
 
 vec3 v_world_normal = vec3(0.0);
 
-vec4 f_FragColor = vec4(0.0);
-
 layout(std140) uniform u_light_dir_block { vec3 u_light_dir; };
 
 uniform highp sampler2DShadow shadow_map;
@@ -107,6 +105,7 @@ vec3 sun_shade(float visibility) {
 void main() {
     vec3 in_v_world_pos = _vs2fs_location0;
     vec3 in_v_world_normal = _vs2fs_location1;
+    vec4 f_FragColor = vec4(0.0);
     v_world_pos = in_v_world_pos;
     v_world_normal = in_v_world_normal;
     mat4x4 _e5 = u_light_vp;

@@ -18,12 +18,6 @@ const FMOD: f32 = 0.5f;
 
 @group(0) @binding(0) 
 var<uniform> u_seed: u32;
-var<private> a_pos: vec2<f32>;
-var<private> v_cell: vec2<i32>;
-var<private> v_hash: u32;
-var<private> f_color: vec4<f32>;
-var<private> gl_VertexID: i32;
-var<private> gl_Position: vec4<f32>;
 
 fn hash(x: u32) -> u32 {
     var h: u32;
@@ -42,43 +36,38 @@ fn hash(x: u32) -> u32 {
 }
 
 @vertex 
-fn int_vs(@location(0) in_a_pos: vec2<f32>, @builtin(vertex_index) in_VertexID: u32) -> int_vs_out {
-    a_pos = in_a_pos;
-    gl_VertexID = i32(in_VertexID);
-    let _e6 = a_pos;
-    let cell = vec2<i32>(floor((_e6 * 8f)));
+fn int_vs(@location(0) a_pos: vec2<f32>, @builtin(vertex_index) VertexID: u32) -> int_vs_out {
+    var v_cell: vec2<i32>;
+    var v_hash: u32;
+    var gl_Position: vec4<f32>;
+
+    let cell = vec2<i32>(floor((a_pos * 8f)));
     v_cell = ((cell % vec2(3i)) * (cell / vec2<i32>(2i, -(2i))));
-    let _e23 = gl_VertexID;
-    let _e26 = u_seed;
-    let _e28 = hash((u32(_e23) + _e26));
-    v_hash = _e28;
-    let _e31 = a_pos;
-    gl_Position = vec4<f32>(_e31, 0f, 1f);
-    let _e36 = gl_Position;
-    let _e47 = v_cell;
-    let _e49 = v_hash;
-    return int_vs_out(vec4<f32>(_e36.x, -(_e36.y), ((_e36.z + _e36.w) * 0.5f), _e36.w), _e47, _e49);
+    let _e20 = u_seed;
+    let _e22 = hash((u32(i32(VertexID)) + _e20));
+    v_hash = _e22;
+    gl_Position = vec4<f32>(a_pos, 0f, 1f);
+    let _e28 = gl_Position;
+    let _e39 = v_cell;
+    let _e41 = v_hash;
+    return int_vs_out(vec4<f32>(_e28.x, -(_e28.y), ((_e28.z + _e28.w) * 0.5f), _e28.w), _e39, _e41);
 }
 
 @fragment 
-fn int_fs(@location(0) @interpolate(flat) in_v_cell: vec2<i32>, @location(1) @interpolate(flat) in_v_hash: u32) -> int_fs_out {
+fn int_fs(@location(0) @interpolate(flat) v_cell_1: vec2<i32>, @location(1) @interpolate(flat) v_hash_1: u32) -> int_fs_out {
+    var f_color: vec4<f32>;
     var bits: vec2<u32>;
 
-    v_cell = in_v_cell;
-    v_hash = in_v_hash;
-    let _e5 = v_cell;
-    let masked = ((_e5 & vec2(255i)) | (vec2(1i) << vec2<u32>(vec2<i32>(2i, 3i))));
+    let masked = ((v_cell_1 & vec2(255i)) | (vec2(1i) << vec2<u32>(vec2<i32>(2i, 3i))));
     let flipped = (~(masked) ^ vec2<i32>(NEG_MOD, NEG_DIV));
     bits = (vec2<u32>(flipped) >> vec2<u32>(1u, 2u));
-    let _e31 = bits;
-    bits = (_e31 % vec2(7u));
+    let _e27 = bits;
+    bits = (_e27 % vec2(7u));
     let f = (bitcast<f32>(1065353216i) + bitcast<f32>(bitcast<u32>(0.5f)));
-    let _e41 = bits.x;
-    let _e44 = bits.y;
-    let _e47 = v_hash;
-    let k = ((f32(((_e41 + _e44) + (_e47 & WRAP))) + f32(TRUNC)) + FMOD);
-    let _e62 = v_hash;
-    f_color = vec4<f32>(fract((k * 0.001f)), f, f32((i32((_e62 % 5u)) - 2i)), 1f);
-    let _e72 = f_color;
-    return int_fs_out(_e72);
+    let _e37 = bits.x;
+    let _e40 = bits.y;
+    let k = ((f32(((_e37 + _e40) + (v_hash_1 & WRAP))) + f32(TRUNC)) + FMOD);
+    f_color = vec4<f32>(fract((k * 0.001f)), f, f32((i32((v_hash_1 % 5u)) - 2i)), 1f);
+    let _e64 = f_color;
+    return int_fs_out(_e64);
 }

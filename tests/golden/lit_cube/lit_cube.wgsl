@@ -46,15 +46,6 @@ var<uniform> u_normal_matrix: mat3x3<f32>;
 var diffuse_map: texture_2d<f32>;
 @group(0) @binding(6) 
 var diffuse_map_sampler: sampler;
-var<private> a_position: vec3<f32>;
-var<private> a_normal: vec3<f32>;
-var<private> a_uv: vec2<f32>;
-var<private> v_world: vec3<f32>;
-var<private> v_normal: vec3<f32>;
-var<private> v_uv: vec2<f32>;
-var<private> f_color: vec4<f32>;
-var<private> gl_Position: vec4<f32>;
-var<private> gl_FrontFacing: bool;
 
 fn blinn(n: vec3<f32>, l: vec3<f32>, v: vec3<f32>, color: vec3<f32>) -> vec3<f32> {
     let h = normalize((l + v));
@@ -66,66 +57,56 @@ fn blinn(n: vec3<f32>, l: vec3<f32>, v: vec3<f32>, color: vec3<f32>) -> vec3<f32
 }
 
 @vertex 
-fn cube_vs(@location(0) in_a_position: vec3<f32>, @location(1) in_a_normal: vec3<f32>, @location(2) in_a_uv: vec2<f32>) -> cube_vs_out {
-    a_position = in_a_position;
-    a_normal = in_a_normal;
-    a_uv = in_a_uv;
-    let _e7 = u_model;
-    let _e9 = a_position;
-    let world = (_e7 * vec4<f32>(_e9, 1f));
+fn cube_vs(@location(0) a_position: vec3<f32>, @location(1) a_normal: vec3<f32>, @location(2) a_uv: vec2<f32>) -> cube_vs_out {
+    var v_world: vec3<f32>;
+    var v_normal: vec3<f32>;
+    var v_uv: vec2<f32>;
+    var gl_Position: vec4<f32>;
+
+    let _e4 = u_model;
+    let world = (_e4 * vec4<f32>(a_position, 1f));
     v_world = world.xyz;
-    let _e17 = u_normal_matrix;
-    let _e19 = a_normal;
-    v_normal = (_e17 * _e19);
-    let _e23 = a_uv;
-    v_uv = _e23;
-    let _e27 = camera.view_proj;
-    gl_Position = (_e27 * world);
-    let _e30 = gl_Position;
-    let _e41 = v_world;
-    let _e43 = v_normal;
-    let _e45 = v_uv;
-    return cube_vs_out(vec4<f32>(_e30.x, -(_e30.y), ((_e30.z + _e30.w) * 0.5f), _e30.w), _e41, _e43, _e45);
+    let _e12 = u_normal_matrix;
+    v_normal = (_e12 * a_normal);
+    v_uv = a_uv;
+    let _e18 = camera.view_proj;
+    gl_Position = (_e18 * world);
+    let _e21 = gl_Position;
+    let _e32 = v_world;
+    let _e34 = v_normal;
+    let _e36 = v_uv;
+    return cube_vs_out(vec4<f32>(_e21.x, -(_e21.y), ((_e21.z + _e21.w) * 0.5f), _e21.w), _e32, _e34, _e36);
 }
 
 @fragment 
-fn cube_fs(@location(0) in_v_world: vec3<f32>, @location(1) in_v_normal: vec3<f32>, @location(2) in_v_uv: vec2<f32>, @builtin(front_facing) in_FrontFacing: bool) -> cube_fs_out {
+fn cube_fs(@location(0) v_world_1: vec3<f32>, @location(1) v_normal_1: vec3<f32>, @location(2) v_uv_1: vec2<f32>, @builtin(front_facing) FrontFacing: bool) -> cube_fs_out {
+    var f_color: vec4<f32>;
     var c: vec3<f32>;
 
-    v_world = in_v_world;
-    v_normal = in_v_normal;
-    v_uv = in_v_uv;
-    gl_FrontFacing = in_FrontFacing;
-    let _e9 = v_uv;
-    let _e12 = textureSample(diffuse_map, diffuse_map_sampler, _e9);
-    let _e15 = material.tint;
-    let albedo = (_e12 * _e15);
-    let _e18 = gl_FrontFacing;
-    let _e20 = v_normal;
-    let _e22 = v_normal;
-    let n_1 = normalize(select(-(_e22), _e20, _e18));
-    let _e28 = camera.position;
-    let _e30 = v_world;
-    let v_1 = normalize((_e28 - _e30));
-    let _e37 = lighting.ambient;
-    c = (albedo.xyz * _e37);
-    let _e43 = lighting.sun_dir;
-    let _e48 = lighting.sun_color;
-    let _e50 = blinn(n_1, normalize(-(_e43)), v_1, _e48.xyz);
-    let _e52 = c;
-    c = (_e52 + (albedo.xyz * _e50));
-    let _e56 = lighting.point_pos;
-    let _e58 = v_world;
-    let to_point = (_e56 - _e58);
+    let _e6 = textureSample(diffuse_map, diffuse_map_sampler, v_uv_1);
+    let _e9 = material.tint;
+    let albedo = (_e6 * _e9);
+    let n_1 = normalize(select(-(v_normal_1), v_normal_1, FrontFacing));
+    let _e16 = camera.position;
+    let v_1 = normalize((_e16 - v_world_1));
+    let _e23 = lighting.ambient;
+    c = (albedo.xyz * _e23);
+    let _e29 = lighting.sun_dir;
+    let _e34 = lighting.sun_color;
+    let _e36 = blinn(n_1, normalize(-(_e29)), v_1, _e34.xyz);
+    let _e38 = c;
+    c = (_e38 + (albedo.xyz * _e36));
+    let _e42 = lighting.point_pos;
+    let to_point = (_e42 - v_world_1);
     let dist = length(to_point);
-    let _e64 = lighting.point_range;
-    let falloff = saturate((1f - (dist / _e64)));
-    let _e74 = lighting.point_color;
-    let _e76 = blinn(n_1, (to_point / vec3(dist)), v_1, _e74.xyz);
-    let _e80 = c;
-    c = (_e80 + ((albedo.xyz * _e76) * (falloff * falloff)));
-    let _e84 = c;
-    f_color = vec4<f32>(_e84, albedo.w);
-    let _e88 = f_color;
-    return cube_fs_out(_e88);
+    let _e48 = lighting.point_range;
+    let falloff = saturate((1f - (dist / _e48)));
+    let _e58 = lighting.point_color;
+    let _e60 = blinn(n_1, (to_point / vec3(dist)), v_1, _e58.xyz);
+    let _e64 = c;
+    c = (_e64 + ((albedo.xyz * _e60) * (falloff * falloff)));
+    let _e68 = c;
+    f_color = vec4<f32>(_e68, albedo.w);
+    let _e72 = f_color;
+    return cube_fs_out(_e72);
 }

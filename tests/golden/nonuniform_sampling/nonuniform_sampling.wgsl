@@ -21,10 +21,6 @@ var mask_sampler: sampler;
 var depth: texture_depth_2d;
 @group(0) @binding(5) 
 var depth_sampler: sampler_comparison;
-var<private> a_pos: vec2<f32>;
-var<private> v_uv: vec2<f32>;
-var<private> f_color: vec4<f32>;
-var<private> gl_Position: vec4<f32>;
 
 fn march(uv: vec2<f32>) -> f32 {
     var t: f32;
@@ -53,64 +49,58 @@ fn march(uv: vec2<f32>) -> f32 {
 }
 
 @vertex 
-fn nonuniform_vs(@location(0) in_a_pos: vec2<f32>) -> nonuniform_vs_out {
-    a_pos = in_a_pos;
-    let _e4 = a_pos;
-    v_uv = ((_e4 * 0.5f) + vec2(0.5f));
-    let _e12 = a_pos;
-    gl_Position = vec4<f32>(_e12, 0f, 1f);
-    let _e17 = gl_Position;
-    let _e28 = v_uv;
-    return nonuniform_vs_out(vec4<f32>(_e17.x, -(_e17.y), ((_e17.z + _e17.w) * 0.5f), _e17.w), _e28);
+fn nonuniform_vs(@location(0) a_pos: vec2<f32>) -> nonuniform_vs_out {
+    var v_uv: vec2<f32>;
+    var gl_Position: vec4<f32>;
+
+    v_uv = ((a_pos * 0.5f) + vec2(0.5f));
+    gl_Position = vec4<f32>(a_pos, 0f, 1f);
+    let _e12 = gl_Position;
+    let _e23 = v_uv;
+    return nonuniform_vs_out(vec4<f32>(_e12.x, -(_e12.y), ((_e12.z + _e12.w) * 0.5f), _e12.w), _e23);
 }
 
 @fragment 
-fn nonuniform_fs(@location(0) in_v_uv: vec2<f32>) -> nonuniform_fs_out {
+fn nonuniform_fs(@location(0) v_uv_1: vec2<f32>) -> nonuniform_fs_out {
+    var f_color: vec4<f32>;
     var c: vec4<f32>;
     var i: i32;
 
-    v_uv = in_v_uv;
-    let _e4 = v_uv.x;
-    if (_e4 < 0.1f) {
+    if (v_uv_1.x < 0.1f) {
         f_color = vec4(0f);
-        let _e11 = f_color;
-        return nonuniform_fs_out(_e11);
+        let _e8 = f_color;
+        return nonuniform_fs_out(_e8);
     }
-    let _e14 = v_uv;
-    let m_1 = textureSample(mask, mask_sampler, _e14);
+    let m_1 = textureSample(mask, mask_sampler, v_uv_1);
     if (m_1.w < 0.5f) {
         discard;
     }
-    let _e23 = v_uv;
-    let _e26 = textureSample(albedo, albedo_sampler, _e23);
-    c = _e26;
+    let _e19 = textureSample(albedo, albedo_sampler, v_uv_1);
+    c = _e19;
     i = 0i;
     loop {
-        let _e30 = i;
-        if !((_e30 < 8i)) {
+        let _e23 = i;
+        if !((_e23 < 8i)) {
             break;
         }
-        let _e35 = c.x;
-        if (_e35 > 0.95f) {
+        let _e28 = c.x;
+        if (_e28 > 0.95f) {
             break;
         }
-        let _e40 = v_uv;
-        let _e42 = i;
-        let _e50 = textureSample(albedo, albedo_sampler, (_e40 + vec2((f32(_e42) * 0.01f))));
-        let _e53 = c;
-        c = (_e53 + (_e50 * 0.1f));
+        let _e33 = i;
+        let _e41 = textureSample(albedo, albedo_sampler, (v_uv_1 + vec2((f32(_e33) * 0.01f))));
+        let _e44 = c;
+        c = (_e44 + (_e41 * 0.1f));
         continuing {
-            let _e55 = i;
-            i = (_e55 + 1i);
+            let _e46 = i;
+            i = (_e46 + 1i);
         }
     }
-    let _e62 = v_uv;
-    let _e66 = textureSampleCompare(depth, depth_sampler, _e62, 0.5f);
-    let lit = select(1f, _e66, (m_1.y > 0.5f));
-    let _e71 = c;
-    let _e75 = v_uv;
-    let _e76 = march(_e75);
-    f_color = vec4<f32>(((_e71.xyz * lit) * _e76), 1f);
-    let _e81 = f_color;
-    return nonuniform_fs_out(_e81);
+    let _e55 = textureSampleCompare(depth, depth_sampler, v_uv_1, 0.5f);
+    let lit = select(1f, _e55, (m_1.y > 0.5f));
+    let _e60 = c;
+    let _e63 = march(v_uv_1);
+    f_color = vec4<f32>(((_e60.xyz * lit) * _e63), 1f);
+    let _e68 = f_color;
+    return nonuniform_fs_out(_e68);
 }

@@ -14,11 +14,6 @@ struct params_fs_out {
     @location(0) f_color: vec4<f32>,
 }
 
-var<private> a_pos: vec2<f32>;
-var<private> v_uv: vec2<f32>;
-var<private> f_color: vec4<f32>;
-var<private> gl_Position: vec4<f32>;
-
 fn along(r: Ray, t: f32) -> vec3<f32> {
     return (r.origin + (r.dir * t));
 }
@@ -54,28 +49,27 @@ fn blend(a: vec3<f32>, b: vec3<f32>, t_1: f32, uv: vec2<f32>) -> vec3<f32> {
 }
 
 @vertex 
-fn params_vs(@location(0) in_a_pos: vec2<f32>) -> params_vs_out {
-    a_pos = in_a_pos;
-    let _e4 = a_pos;
-    v_uv = _e4;
-    let _e7 = a_pos;
-    gl_Position = vec4<f32>(_e7, 0f, 1f);
-    let _e12 = gl_Position;
-    let _e23 = v_uv;
-    return params_vs_out(vec4<f32>(_e12.x, -(_e12.y), ((_e12.z + _e12.w) * 0.5f), _e12.w), _e23);
+fn params_vs(@location(0) a_pos: vec2<f32>) -> params_vs_out {
+    var v_uv: vec2<f32>;
+    var gl_Position: vec4<f32>;
+
+    v_uv = a_pos;
+    gl_Position = vec4<f32>(a_pos, 0f, 1f);
+    let _e7 = gl_Position;
+    let _e18 = v_uv;
+    return params_vs_out(vec4<f32>(_e7.x, -(_e7.y), ((_e7.z + _e7.w) * 0.5f), _e7.w), _e18);
 }
 
 @fragment 
-fn params_fs(@location(0) in_v_uv: vec2<f32>) -> params_fs_out {
-    v_uv = in_v_uv;
-    let _e5 = v_uv;
-    let r_1 = Ray(vec3(0f), normalize(vec3<f32>(_e5, -(1f))));
+fn params_fs(@location(0) v_uv_1: vec2<f32>) -> params_fs_out {
+    var f_color: vec4<f32>;
+
+    let r_1 = Ray(vec3(0f), normalize(vec3<f32>(v_uv_1, -(1f))));
     let xs_1 = array<f32, 4>(0.1f, 0.2f, 0.3f, 0.4f);
-    let _e17 = along(r_1, 2f);
-    let _e23 = total(xs_1, 3i);
-    let _e25 = v_uv;
-    let _e26 = blend(_e17, vec3<f32>(1f, 0.5f, 0f), _e23, _e25);
-    f_color = vec4<f32>(_e26, 1f);
-    let _e31 = f_color;
-    return params_fs_out(_e31);
+    let _e14 = along(r_1, 2f);
+    let _e20 = total(xs_1, 3i);
+    let _e21 = blend(_e14, vec3<f32>(1f, 0.5f, 0f), _e20, v_uv_1);
+    f_color = vec4<f32>(_e21, 1f);
+    let _e26 = f_color;
+    return params_fs_out(_e26);
 }

@@ -10,10 +10,6 @@ struct Ray {
 struct params_fs_out {
     vec4 f_color;
 };
-vec2 v_uv = vec2(0.0);
-
-vec4 f_color = vec4(0.0);
-
 smooth in vec2 _vs2fs_location0;
 layout(location = 0) out vec4 _fs2p_location0;
 
@@ -51,18 +47,16 @@ vec3 blend(vec3 a, vec3 b, float t_1, vec2 uv) {
 }
 
 void main() {
-    vec2 in_v_uv = _vs2fs_location0;
-    v_uv = in_v_uv;
-    vec2 _e5 = v_uv;
-    Ray r_1 = Ray(vec3(0.0), normalize(vec3(_e5, -(1.0))));
+    vec2 v_uv = _vs2fs_location0;
+    vec4 f_color = vec4(0.0);
+    Ray r_1 = Ray(vec3(0.0), normalize(vec3(v_uv, -(1.0))));
     float xs_1[4] = float[4](0.1, 0.2, 0.3, 0.4);
-    vec3 _e17 = along(r_1, 2.0);
-    float _e23 = total(xs_1, 3);
-    vec2 _e25 = v_uv;
-    vec3 _e26 = blend(_e17, vec3(1.0, 0.5, 0.0), _e23, _e25);
-    f_color = vec4(_e26, 1.0);
-    vec4 _e31 = f_color;
-    params_fs_out _tmp_return = params_fs_out(_e31);
+    vec3 _e14 = along(r_1, 2.0);
+    float _e20 = total(xs_1, 3);
+    vec3 _e21 = blend(_e14, vec3(1.0, 0.5, 0.0), _e20, v_uv);
+    f_color = vec4(_e21, 1.0);
+    vec4 _e26 = f_color;
+    params_fs_out _tmp_return = params_fs_out(_e26);
     _fs2p_location0 = _tmp_return.f_color;
     return;
 }

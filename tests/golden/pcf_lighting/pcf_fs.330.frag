@@ -10,12 +10,6 @@ layout(std140) uniform u_color_block { vec4 u_color; };
 
 uniform sampler2DShadow shadow_map;
 
-vec3 v_normal = vec3(0.0);
-
-vec4 v_light_pos = vec4(0.0);
-
-vec4 f_color = vec4(0.0);
-
 smooth in vec3 _vs2fs_location0;
 smooth in vec4 _vs2fs_location1;
 layout(location = 0) out vec4 _fs2p_location0;
@@ -64,32 +58,28 @@ float pcf_5x5_(vec3 coord, float bias) {
 }
 
 void main() {
-    vec3 in_v_normal = _vs2fs_location0;
-    vec4 in_v_light_pos = _vs2fs_location1;
+    vec3 v_normal = _vs2fs_location0;
+    vec4 v_light_pos = _vs2fs_location1;
+    vec4 f_color = vec4(0.0);
     float shadow = 0.0;
-    v_normal = in_v_normal;
-    v_light_pos = in_v_light_pos;
-    vec3 _e5 = v_normal;
-    vec3 n_1 = normalize(_e5);
-    vec3 _e8 = u_light_dir;
-    vec3 l = normalize(-(_e8));
+    vec3 n_1 = normalize(v_normal);
+    vec3 _e4 = u_light_dir;
+    vec3 l = normalize(-(_e4));
     float ndotl = max(dot(n_1, l), 0.0);
-    vec4 _e15 = v_light_pos;
-    float _e19 = v_light_pos.w;
-    vec3 coord_1 = (((_e15.xyz / vec3(_e19)) * 0.5) + vec3(0.5));
+    vec3 coord_1 = (((v_light_pos.xyz / vec3(v_light_pos.w)) * 0.5) + vec3(0.5));
     shadow = 1.0;
     if ((coord_1.z <= 1.0)) {
         float bias_1 = max((0.005 * (1.0 - ndotl)), 0.0005);
         float edge = min(min(coord_1.x, coord_1.y), min((1.0 - coord_1.x), (1.0 - coord_1.y)));
-        float _e51 = pcf_5x5_(coord_1, bias_1);
-        shadow = mix(1.0, _e51, clamp((edge * 20.0), 0.0, 1.0));
+        float _e43 = pcf_5x5_(coord_1, bias_1);
+        shadow = mix(1.0, _e43, clamp((edge * 20.0), 0.0, 1.0));
     }
-    vec4 _e58 = u_color;
-    float _e64 = shadow;
-    float _e70 = u_color.w;
-    f_color = vec4((_e58.xyz * (0.15 + ((0.85 * ndotl) * _e64))), _e70);
-    vec4 _e73 = f_color;
-    pcf_fs_out _tmp_return = pcf_fs_out(_e73);
+    vec4 _e50 = u_color;
+    float _e56 = shadow;
+    float _e62 = u_color.w;
+    f_color = vec4((_e50.xyz * (0.15 + ((0.85 * ndotl) * _e56))), _e62);
+    vec4 _e65 = f_color;
+    pcf_fs_out _tmp_return = pcf_fs_out(_e65);
     _fs2p_location0 = _tmp_return.f_color;
     return;
 }

@@ -26,12 +26,6 @@ var<uniform> u_color: vec4<f32>;
 var shadow_map: texture_depth_2d;
 @group(0) @binding(6) 
 var shadow_map_sampler: sampler_comparison;
-var<private> a_position: vec3<f32>;
-var<private> a_normal: vec3<f32>;
-var<private> v_normal: vec3<f32>;
-var<private> v_light_pos: vec4<f32>;
-var<private> f_color: vec4<f32>;
-var<private> gl_Position: vec4<f32>;
 
 fn pcf_5x5_(coord: vec3<f32>, bias: f32) -> f32 {
     var lit: f32;
@@ -75,50 +69,46 @@ fn pcf_5x5_(coord: vec3<f32>, bias: f32) -> f32 {
 }
 
 @vertex 
-fn pcf_vs(@location(0) in_a_position: vec3<f32>, @location(1) in_a_normal: vec3<f32>) -> pcf_vs_out {
-    a_position = in_a_position;
-    a_normal = in_a_normal;
-    let _e5 = u_model;
-    let _e7 = a_position;
-    let world = (_e5 * vec4<f32>(_e7, 1f));
-    let _e13 = u_model;
-    let _e15 = a_normal;
-    v_normal = (_e13 * vec4<f32>(_e15, 0f)).xyz;
-    let _e22 = u_light_view_proj;
-    v_light_pos = (_e22 * world);
-    let _e26 = u_view_proj;
-    gl_Position = (_e26 * world);
-    let _e29 = gl_Position;
-    let _e40 = v_normal;
-    let _e42 = v_light_pos;
-    return pcf_vs_out(vec4<f32>(_e29.x, -(_e29.y), ((_e29.z + _e29.w) * 0.5f), _e29.w), _e40, _e42);
+fn pcf_vs(@location(0) a_position: vec3<f32>, @location(1) a_normal: vec3<f32>) -> pcf_vs_out {
+    var v_normal: vec3<f32>;
+    var v_light_pos: vec4<f32>;
+    var gl_Position: vec4<f32>;
+
+    let _e3 = u_model;
+    let world = (_e3 * vec4<f32>(a_position, 1f));
+    let _e9 = u_model;
+    v_normal = (_e9 * vec4<f32>(a_normal, 0f)).xyz;
+    let _e16 = u_light_view_proj;
+    v_light_pos = (_e16 * world);
+    let _e20 = u_view_proj;
+    gl_Position = (_e20 * world);
+    let _e23 = gl_Position;
+    let _e34 = v_normal;
+    let _e36 = v_light_pos;
+    return pcf_vs_out(vec4<f32>(_e23.x, -(_e23.y), ((_e23.z + _e23.w) * 0.5f), _e23.w), _e34, _e36);
 }
 
 @fragment 
-fn pcf_fs(@location(0) in_v_normal: vec3<f32>, @location(1) in_v_light_pos: vec4<f32>) -> pcf_fs_out {
+fn pcf_fs(@location(0) v_normal_1: vec3<f32>, @location(1) v_light_pos_1: vec4<f32>) -> pcf_fs_out {
+    var f_color: vec4<f32>;
     var shadow: f32;
 
-    v_normal = in_v_normal;
-    v_light_pos = in_v_light_pos;
-    let _e5 = v_normal;
-    let n_1 = normalize(_e5);
-    let _e8 = u_light_dir;
-    let l = normalize(-(_e8));
+    let n_1 = normalize(v_normal_1);
+    let _e4 = u_light_dir;
+    let l = normalize(-(_e4));
     let ndotl = max(dot(n_1, l), 0f);
-    let _e15 = v_light_pos;
-    let _e19 = v_light_pos.w;
-    let coord_1 = (((_e15.xyz / vec3(_e19)) * 0.5f) + vec3(0.5f));
+    let coord_1 = (((v_light_pos_1.xyz / vec3(v_light_pos_1.w)) * 0.5f) + vec3(0.5f));
     shadow = 1f;
     if (coord_1.z <= 1f) {
         let bias_1 = max((0.005f * (1f - ndotl)), 0.0005f);
         let edge = min(min(coord_1.x, coord_1.y), min((1f - coord_1.x), (1f - coord_1.y)));
-        let _e51 = pcf_5x5_(coord_1, bias_1);
-        shadow = mix(1f, _e51, saturate((edge * 20f)));
+        let _e43 = pcf_5x5_(coord_1, bias_1);
+        shadow = mix(1f, _e43, saturate((edge * 20f)));
     }
-    let _e58 = u_color;
-    let _e64 = shadow;
-    let _e70 = u_color.w;
-    f_color = vec4<f32>((_e58.xyz * (0.15f + ((0.85f * ndotl) * _e64))), _e70);
-    let _e73 = f_color;
-    return pcf_fs_out(_e73);
+    let _e50 = u_color;
+    let _e56 = shadow;
+    let _e62 = u_color.w;
+    f_color = vec4<f32>((_e50.xyz * (0.15f + ((0.85f * ndotl) * _e56))), _e62);
+    let _e65 = f_color;
+    return pcf_fs_out(_e65);
 }

@@ -14,12 +14,6 @@ vec3 a_pos = vec3(0.0);
 
 vec3 a_normal = vec3(0.0);
 
-vec3 v_world_pos = vec3(0.0);
-
-vec3 v_world_normal = vec3(0.0);
-
-vec4 gen_gl_Position = vec4(0.0);
-
 layout(location = 0) in vec3 _p2vs_location0;
 layout(location = 1) in vec3 _p2vs_location1;
 smooth out vec3 _vs2fs_location0;
@@ -40,6 +34,9 @@ vec3 world_normal() {
 void main() {
     vec3 in_a_pos = _p2vs_location0;
     vec3 in_a_normal = _p2vs_location1;
+    vec3 v_world_pos = vec3(0.0);
+    vec3 v_world_normal = vec3(0.0);
+    vec4 gen_gl_Position = vec4(0.0);
     a_pos = in_a_pos;
     a_normal = in_a_normal;
     vec4 _e4 = world_position();

@@ -8,8 +8,6 @@ layout(std140) uniform u_light_vp_block { mat4x4 u_light_vp; };
 
 vec3 a_pos = vec3(0.0);
 
-vec4 gen_gl_Position = vec4(0.0);
-
 layout(location = 0) in vec3 _p2vs_location0;
 
 vec4 shadow_clip() {
@@ -21,6 +19,7 @@ vec4 shadow_clip() {
 
 void main() {
     vec3 in_a_pos = _p2vs_location0;
+    vec4 gen_gl_Position = vec4(0.0);
     a_pos = in_a_pos;
     vec4 _e3 = shadow_clip();
     gen_gl_Position = _e3;

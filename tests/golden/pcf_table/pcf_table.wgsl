@@ -35,16 +35,14 @@ var<uniform> u_cam_pos: vec3<f32>;
 var<uniform> u_is_floor: f32;
 var<private> a_pos: vec3<f32>;
 var<private> a_normal: vec3<f32>;
-var<private> v_world_pos: vec3<f32>;
-var<private> v_world_normal: vec3<f32>;
-var<private> f_FragColor: vec4<f32>;
+var<private> v_world_pos_1: vec3<f32>;
+var<private> v_world_normal_1: vec3<f32>;
 @group(0) @binding(6) 
 var<uniform> u_light_dir: vec3<f32>;
 @group(0) @binding(7) 
 var shadow_map: texture_depth_2d;
 @group(0) @binding(8) 
 var shadow_map_sampler: sampler_comparison;
-var<private> gl_Position: vec4<f32>;
 
 fn shadow_clip() -> vec4<f32> {
     let _e1 = u_light_vp;
@@ -70,7 +68,7 @@ fn to_map(clip: vec4<f32>) -> vec3<f32> {
 }
 
 fn sun_ndotl() -> f32 {
-    let _e1 = v_world_normal;
+    let _e1 = v_world_normal_1;
     let _e4 = u_light_dir;
     return max(dot(normalize(_e1), normalize(_e4)), 0f);
 }
@@ -119,7 +117,7 @@ fn checker(p: vec3<f32>) -> vec3<f32> {
 fn surface_albedo() -> vec3<f32> {
     let _e1 = u_is_floor;
     if (_e1 > 0.5f) {
-        let _e5 = v_world_pos;
+        let _e5 = v_world_pos_1;
         let _e6 = checker(_e5);
         return _e6;
     }
@@ -131,12 +129,12 @@ fn hemisphere(n: vec3<f32>) -> vec3<f32> {
 }
 
 fn sun_shade(visibility: f32) -> vec3<f32> {
-    let _e2 = v_world_normal;
+    let _e2 = v_world_normal_1;
     let n_1 = normalize(_e2);
     let _e5 = u_light_dir;
     let l = normalize(_e5);
     let _e8 = u_cam_pos;
-    let _e10 = v_world_pos;
+    let _e10 = v_world_pos_1;
     let v = normalize((_e8 - _e10));
     let ndotl_1 = max(dot(n_1, l), 0f);
     let lit = select(visibility, 0f, (ndotl_1 < 0.05f));
@@ -151,6 +149,8 @@ fn sun_shade(visibility: f32) -> vec3<f32> {
 
 @vertex 
 fn pcf_shadow_vs(@location(0) in_a_pos: vec3<f32>) -> pcf_shadow_vs_out {
+    var gl_Position: vec4<f32>;
+
     a_pos = in_a_pos;
     let _e3 = shadow_clip();
     gl_Position = _e3;
@@ -160,6 +160,8 @@ fn pcf_shadow_vs(@location(0) in_a_pos: vec3<f32>) -> pcf_shadow_vs_out {
 
 @fragment 
 fn pcf_shadow_fs() -> pcf_shadow_fs_out {
+    var f_FragColor: vec4<f32>;
+
     f_FragColor = vec4(1f);
     let _e4 = f_FragColor;
     return pcf_shadow_fs_out(_e4);
@@ -167,6 +169,10 @@ fn pcf_shadow_fs() -> pcf_shadow_fs_out {
 
 @vertex 
 fn pcf_main_vs(@location(0) in_a_pos_1: vec3<f32>, @location(1) in_a_normal: vec3<f32>) -> pcf_main_vs_out {
+    var v_world_pos: vec3<f32>;
+    var v_world_normal: vec3<f32>;
+    var gl_Position_1: vec4<f32>;
+
     a_pos = in_a_pos_1;
     a_normal = in_a_normal;
     let _e4 = world_position();
@@ -175,8 +181,8 @@ fn pcf_main_vs(@location(0) in_a_pos_1: vec3<f32>, @location(1) in_a_normal: vec
     v_world_normal = _e8;
     let _e11 = u_proj;
     let _e13 = u_view;
-    gl_Position = (_e11 * (_e13 * _e4));
-    let _e17 = gl_Position;
+    gl_Position_1 = (_e11 * (_e13 * _e4));
+    let _e17 = gl_Position_1;
     let _e28 = v_world_pos;
     let _e30 = v_world_normal;
     return pcf_main_vs_out(vec4<f32>(_e17.x, -(_e17.y), ((_e17.z + _e17.w) * 0.5f), _e17.w), _e28, _e30);
@@ -184,16 +190,18 @@ fn pcf_main_vs(@location(0) in_a_pos_1: vec3<f32>, @location(1) in_a_normal: vec
 
 @fragment 
 fn pcf_main_fs(@location(0) in_v_world_pos: vec3<f32>, @location(1) in_v_world_normal: vec3<f32>) -> pcf_main_fs_out {
-    v_world_pos = in_v_world_pos;
-    v_world_normal = in_v_world_normal;
+    var f_FragColor_1: vec4<f32>;
+
+    v_world_pos_1 = in_v_world_pos;
+    v_world_normal_1 = in_v_world_normal;
     let _e5 = u_light_vp;
-    let _e7 = v_world_pos;
+    let _e7 = v_world_pos_1;
     let _e11 = to_map((_e5 * vec4<f32>(_e7, 1f)));
     let _e12 = sun_ndotl();
     let _e13 = slope_bias(_e12);
     let _e14 = pcf_visibility(_e11, _e13);
     let _e16 = sun_shade(_e14);
-    f_FragColor = vec4<f32>(_e16, 1f);
-    let _e20 = f_FragColor;
+    f_FragColor_1 = vec4<f32>(_e16, 1f);
+    let _e20 = f_FragColor_1;
     return pcf_main_fs_out(_e20);
 }

@@ -10,34 +10,29 @@ struct points_fs_out {
 
 @group(0) @binding(0) 
 var<uniform> u_size: f32;
-var<private> a_pos: vec3<f32>;
-var<private> f_color: vec4<f32>;
-var<private> gl_PointSize: f32;
-var<private> gl_Position: vec4<f32>;
-var<private> gl_PointCoord: vec2<f32>;
 
 @vertex 
-fn points_vs(@location(0) in_a_pos: vec3<f32>) -> points_vs_out {
-    a_pos = in_a_pos;
-    let _e4 = u_size;
-    let _e7 = a_pos.z;
-    gl_PointSize = (_e4 / max(_e7, 0.1f));
-    let _e13 = a_pos;
-    gl_Position = vec4<f32>(_e13, 1f);
-    let _e17 = gl_Position;
-    return points_vs_out(vec4<f32>(_e17.x, -(_e17.y), ((_e17.z + _e17.w) * 0.5f), _e17.w));
+fn points_vs(@location(0) a_pos: vec3<f32>) -> points_vs_out {
+    var gl_PointSize: f32;
+    var gl_Position: vec4<f32>;
+
+    let _e3 = u_size;
+    gl_PointSize = (_e3 / max(a_pos.z, 0.1f));
+    gl_Position = vec4<f32>(a_pos, 1f);
+    let _e12 = gl_Position;
+    return points_vs_out(vec4<f32>(_e12.x, -(_e12.y), ((_e12.z + _e12.w) * 0.5f), _e12.w));
 }
 
 @fragment 
 fn points_fs() -> points_fs_out {
-    gl_PointCoord = vec2(0.5f);
-    let _e4 = gl_PointCoord;
-    let d = (_e4 - vec2(0.5f));
+    var f_color: vec4<f32>;
+
+    let _e1 = vec2(0.5f);
+    let d = (_e1 - vec2(0.5f));
     if (dot(d, d) > 0.25f) {
         discard;
     }
-    let _e13 = gl_PointCoord;
-    f_color = vec4<f32>(_e13, 1f, 1f);
-    let _e18 = f_color;
-    return points_fs_out(_e18);
+    f_color = vec4<f32>(_e1, 1f, 1f);
+    let _e13 = f_color;
+    return points_fs_out(_e13);
 }

@@ -33,17 +33,14 @@ var<uniform> u_cam_pos: vec3<f32>;
 var<uniform> u_is_floor: f32;
 var<private> a_pos: vec3<f32>;
 var<private> a_normal: vec3<f32>;
-var<private> v_world_pos: vec3<f32>;
-var<private> v_world_normal: vec3<f32>;
-var<private> f_FragColor: vec4<f32>;
+var<private> v_world_pos_1: vec3<f32>;
+var<private> v_world_normal_1: vec3<f32>;
 @group(0) @binding(6) 
 var<uniform> u_light_dir: vec3<f32>;
 @group(0) @binding(7) 
 var shadow_map: texture_depth_2d;
 @group(0) @binding(8) 
 var shadow_map_sampler: sampler_comparison;
-var<private> v_shadow_coord: vec4<f32>;
-var<private> gl_Position: vec4<f32>;
 
 fn shadow_clip() -> vec4<f32> {
     let _e1 = u_light_vp;
@@ -69,7 +66,7 @@ fn bias_matrix() -> mat4x4<f32> {
 }
 
 fn sun_ndotl() -> f32 {
-    let _e1 = v_world_normal;
+    let _e1 = v_world_normal_1;
     let _e4 = u_light_dir;
     return max(dot(normalize(_e1), normalize(_e4)), 0f);
 }
@@ -92,7 +89,7 @@ fn checker(p: vec3<f32>) -> vec3<f32> {
 fn surface_albedo() -> vec3<f32> {
     let _e1 = u_is_floor;
     if (_e1 > 0.5f) {
-        let _e5 = v_world_pos;
+        let _e5 = v_world_pos_1;
         let _e6 = checker(_e5);
         return _e6;
     }
@@ -104,12 +101,12 @@ fn hemisphere(n: vec3<f32>) -> vec3<f32> {
 }
 
 fn sun_shade(visibility: f32) -> vec3<f32> {
-    let _e2 = v_world_normal;
+    let _e2 = v_world_normal_1;
     let n_1 = normalize(_e2);
     let _e5 = u_light_dir;
     let l = normalize(_e5);
     let _e8 = u_cam_pos;
-    let _e10 = v_world_pos;
+    let _e10 = v_world_pos_1;
     let v = normalize((_e8 - _e10));
     let ndotl_1 = max(dot(n_1, l), 0f);
     let lit = select(visibility, 0f, (ndotl_1 < 0.05f));
@@ -124,6 +121,8 @@ fn sun_shade(visibility: f32) -> vec3<f32> {
 
 @vertex 
 fn proj_shadow_vs(@location(0) in_a_pos: vec3<f32>) -> proj_shadow_vs_out {
+    var gl_Position: vec4<f32>;
+
     a_pos = in_a_pos;
     let _e3 = shadow_clip();
     gl_Position = _e3;
@@ -133,6 +132,8 @@ fn proj_shadow_vs(@location(0) in_a_pos: vec3<f32>) -> proj_shadow_vs_out {
 
 @fragment 
 fn proj_shadow_fs() -> proj_shadow_fs_out {
+    var f_FragColor: vec4<f32>;
+
     f_FragColor = vec4(1f);
     let _e4 = f_FragColor;
     return proj_shadow_fs_out(_e4);
@@ -140,6 +141,11 @@ fn proj_shadow_fs() -> proj_shadow_fs_out {
 
 @vertex 
 fn proj_main_vs(@location(0) in_a_pos_1: vec3<f32>, @location(1) in_a_normal: vec3<f32>) -> proj_main_vs_out {
+    var v_world_pos: vec3<f32>;
+    var v_world_normal: vec3<f32>;
+    var v_shadow_coord: vec4<f32>;
+    var gl_Position_1: vec4<f32>;
+
     a_pos = in_a_pos_1;
     a_normal = in_a_normal;
     let _e4 = world_position();
@@ -151,8 +157,8 @@ fn proj_main_vs(@location(0) in_a_pos_1: vec3<f32>, @location(1) in_a_normal: ve
     v_shadow_coord = ((_e10 * _e12) * _e4);
     let _e17 = u_proj;
     let _e19 = u_view;
-    gl_Position = (_e17 * (_e19 * _e4));
-    let _e23 = gl_Position;
+    gl_Position_1 = (_e17 * (_e19 * _e4));
+    let _e23 = gl_Position_1;
     let _e34 = v_world_pos;
     let _e36 = v_world_normal;
     let _e38 = v_shadow_coord;
@@ -160,17 +166,17 @@ fn proj_main_vs(@location(0) in_a_pos_1: vec3<f32>, @location(1) in_a_normal: ve
 }
 
 @fragment 
-fn proj_main_fs(@location(0) in_v_world_pos: vec3<f32>, @location(1) in_v_world_normal: vec3<f32>, @location(2) in_v_shadow_coord: vec4<f32>) -> proj_main_fs_out {
-    v_world_pos = in_v_world_pos;
-    v_world_normal = in_v_world_normal;
-    v_shadow_coord = in_v_shadow_coord;
-    let q = v_shadow_coord;
-    let _e10 = sun_ndotl();
-    let _e11 = slope_bias(_e10);
-    let biased = vec4<f32>(q.xy, (q.z - (_e11 * q.w)), q.w);
-    let _e26 = textureSampleCompare(shadow_map, shadow_map_sampler, (biased.xy / vec2(biased.w)), (biased.z / biased.w));
-    let _e27 = sun_shade(_e26);
-    f_FragColor = vec4<f32>(_e27, 1f);
-    let _e31 = f_FragColor;
-    return proj_main_fs_out(_e31);
+fn proj_main_fs(@location(0) in_v_world_pos: vec3<f32>, @location(1) in_v_world_normal: vec3<f32>, @location(2) v_shadow_coord_1: vec4<f32>) -> proj_main_fs_out {
+    var f_FragColor_1: vec4<f32>;
+
+    v_world_pos_1 = in_v_world_pos;
+    v_world_normal_1 = in_v_world_normal;
+    let _e7 = sun_ndotl();
+    let _e8 = slope_bias(_e7);
+    let biased = vec4<f32>(v_shadow_coord_1.xy, (v_shadow_coord_1.z - (_e8 * v_shadow_coord_1.w)), v_shadow_coord_1.w);
+    let _e23 = textureSampleCompare(shadow_map, shadow_map_sampler, (biased.xy / vec2(biased.w)), (biased.z / biased.w));
+    let _e24 = sun_shade(_e23);
+    f_FragColor_1 = vec4<f32>(_e24, 1f);
+    let _e28 = f_FragColor_1;
+    return proj_main_fs_out(_e28);
 }

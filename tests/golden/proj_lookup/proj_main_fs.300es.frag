@@ -15,13 +15,9 @@ vec3 v_world_pos = vec3(0.0);
 
 vec3 v_world_normal = vec3(0.0);
 
-vec4 f_FragColor = vec4(0.0);
-
 layout(std140) uniform u_light_dir_block { vec3 u_light_dir; };
 
 uniform highp sampler2DShadow shadow_map;
-
-vec4 v_shadow_coord = vec4(0.0);
 
 smooth in vec3 _vs2fs_location0;
 smooth in vec3 _vs2fs_location1;
@@ -85,19 +81,18 @@ vec3 sun_shade(float visibility) {
 void main() {
     vec3 in_v_world_pos = _vs2fs_location0;
     vec3 in_v_world_normal = _vs2fs_location1;
-    vec4 in_v_shadow_coord = _vs2fs_location2;
+    vec4 v_shadow_coord = _vs2fs_location2;
+    vec4 f_FragColor = vec4(0.0);
     v_world_pos = in_v_world_pos;
     v_world_normal = in_v_world_normal;
-    v_shadow_coord = in_v_shadow_coord;
-    vec4 q = v_shadow_coord;
-    float _e10 = sun_ndotl();
-    float _e11 = slope_bias(_e10);
-    vec4 biased = vec4(q.xy, (q.z - (_e11 * q.w)), q.w);
-    float _e26 = texture(shadow_map, vec3((biased.xy / vec2(biased.w)), (biased.z / biased.w)));
-    vec3 _e27 = sun_shade(_e26);
-    f_FragColor = vec4(_e27, 1.0);
-    vec4 _e31 = f_FragColor;
-    proj_main_fs_out _tmp_return = proj_main_fs_out(_e31);
+    float _e7 = sun_ndotl();
+    float _e8 = slope_bias(_e7);
+    vec4 biased = vec4(v_shadow_coord.xy, (v_shadow_coord.z - (_e8 * v_shadow_coord.w)), v_shadow_coord.w);
+    float _e23 = texture(shadow_map, vec3((biased.xy / vec2(biased.w)), (biased.z / biased.w)));
+    vec3 _e24 = sun_shade(_e23);
+    f_FragColor = vec4(_e24, 1.0);
+    vec4 _e28 = f_FragColor;
+    proj_main_fs_out _tmp_return = proj_main_fs_out(_e28);
     _fs2p_location0 = _tmp_return.f_FragColor;
     return;
 }

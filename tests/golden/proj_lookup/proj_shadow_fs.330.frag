@@ -2,11 +2,10 @@
 struct proj_shadow_fs_out {
     vec4 f_FragColor;
 };
-vec4 f_FragColor = vec4(0.0);
-
 layout(location = 0) out vec4 _fs2p_location0;
 
 void main() {
+    vec4 f_FragColor = vec4(0.0);
     f_FragColor = vec4(1.0);
     vec4 _e4 = f_FragColor;
     proj_shadow_fs_out _tmp_return = proj_shadow_fs_out(_e4);

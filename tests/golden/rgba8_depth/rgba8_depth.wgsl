@@ -34,17 +34,14 @@ var<uniform> u_cam_pos: vec3<f32>;
 var<uniform> u_is_floor: f32;
 var<private> a_pos: vec3<f32>;
 var<private> a_normal: vec3<f32>;
-var<private> v_world_pos: vec3<f32>;
-var<private> v_world_normal: vec3<f32>;
-var<private> f_FragColor: vec4<f32>;
+var<private> v_world_pos_1: vec3<f32>;
+var<private> v_world_normal_1: vec3<f32>;
 @group(0) @binding(6) 
 var<uniform> u_light_dir: vec3<f32>;
 @group(0) @binding(7) 
 var shadow_rgba: texture_2d<f32>;
 @group(0) @binding(8) 
 var shadow_rgba_sampler: sampler;
-var<private> gl_Position: vec4<f32>;
-var<private> gl_FragCoord: vec4<f32>;
 
 fn world_position() -> vec4<f32> {
     let _e1 = u_model;
@@ -79,7 +76,7 @@ fn decode_depth(rgba: vec4<f32>) -> f32 {
 }
 
 fn sun_ndotl() -> f32 {
-    let _e1 = v_world_normal;
+    let _e1 = v_world_normal_1;
     let _e4 = u_light_dir;
     return max(dot(normalize(_e1), normalize(_e4)), 0f);
 }
@@ -102,7 +99,7 @@ fn checker(p: vec3<f32>) -> vec3<f32> {
 fn surface_albedo() -> vec3<f32> {
     let _e1 = u_is_floor;
     if (_e1 > 0.5f) {
-        let _e5 = v_world_pos;
+        let _e5 = v_world_pos_1;
         let _e6 = checker(_e5);
         return _e6;
     }
@@ -114,12 +111,12 @@ fn hemisphere(n: vec3<f32>) -> vec3<f32> {
 }
 
 fn sun_shade(visibility: f32) -> vec3<f32> {
-    let _e2 = v_world_normal;
+    let _e2 = v_world_normal_1;
     let n_1 = normalize(_e2);
     let _e5 = u_light_dir;
     let l = normalize(_e5);
     let _e8 = u_cam_pos;
-    let _e10 = v_world_pos;
+    let _e10 = v_world_pos_1;
     let v = normalize((_e8 - _e10));
     let ndotl_1 = max(dot(n_1, l), 0f);
     let lit = select(visibility, 0f, (ndotl_1 < 0.05f));
@@ -134,6 +131,10 @@ fn sun_shade(visibility: f32) -> vec3<f32> {
 
 @vertex 
 fn rgba8_main_vs(@location(0) in_a_pos: vec3<f32>, @location(1) in_a_normal: vec3<f32>) -> rgba8_main_vs_out {
+    var v_world_pos: vec3<f32>;
+    var v_world_normal: vec3<f32>;
+    var gl_Position: vec4<f32>;
+
     a_pos = in_a_pos;
     a_normal = in_a_normal;
     let _e4 = world_position();
@@ -151,29 +152,33 @@ fn rgba8_main_vs(@location(0) in_a_pos: vec3<f32>, @location(1) in_a_normal: vec
 
 @vertex 
 fn rgba8_shadow_vs(@location(0) in_a_pos_1: vec3<f32>) -> rgba8_shadow_vs_out {
+    var gl_Position_1: vec4<f32>;
+
     a_pos = in_a_pos_1;
     let _e3 = shadow_clip();
-    gl_Position = _e3;
-    let _e5 = gl_Position;
+    gl_Position_1 = _e3;
+    let _e5 = gl_Position_1;
     return rgba8_shadow_vs_out(vec4<f32>(_e5.x, -(_e5.y), ((_e5.z + _e5.w) * 0.5f), _e5.w));
 }
 
 @fragment 
-fn rgba8_shadow_fs(@builtin(position) in_FragCoord: vec4<f32>) -> rgba8_shadow_fs_out {
-    gl_FragCoord = in_FragCoord;
-    let _e5 = gl_FragCoord.z;
-    let _e6 = encode_depth(_e5);
-    f_FragColor = _e6;
-    let _e8 = f_FragColor;
-    return rgba8_shadow_fs_out(_e8);
+fn rgba8_shadow_fs(@builtin(position) FragCoord: vec4<f32>) -> rgba8_shadow_fs_out {
+    var f_FragColor: vec4<f32>;
+
+    let _e3 = encode_depth(FragCoord.z);
+    f_FragColor = _e3;
+    let _e5 = f_FragColor;
+    return rgba8_shadow_fs_out(_e5);
 }
 
 @fragment 
 fn rgba8_main_fs(@location(0) in_v_world_pos: vec3<f32>, @location(1) in_v_world_normal: vec3<f32>) -> rgba8_main_fs_out {
-    v_world_pos = in_v_world_pos;
-    v_world_normal = in_v_world_normal;
+    var f_FragColor_1: vec4<f32>;
+
+    v_world_pos_1 = in_v_world_pos;
+    v_world_normal_1 = in_v_world_normal;
     let _e5 = u_light_vp;
-    let _e7 = v_world_pos;
+    let _e7 = v_world_pos_1;
     let _e11 = to_map((_e5 * vec4<f32>(_e7, 1f)));
     let _e15 = textureSample(shadow_rgba, shadow_rgba_sampler, _e11.xy);
     let _e16 = decode_depth(_e15);
@@ -181,7 +186,7 @@ fn rgba8_main_fs(@location(0) in_v_world_pos: vec3<f32>, @location(1) in_v_world
     let _e21 = slope_bias(_e20);
     let visibility_1 = select(1f, 0f, (((_e11.z - DEPTH_BIAS) - _e21) > _e16));
     let _e28 = sun_shade(visibility_1);
-    f_FragColor = vec4<f32>(_e28, 1f);
-    let _e32 = f_FragColor;
+    f_FragColor_1 = vec4<f32>(_e28, 1f);
+    let _e32 = f_FragColor_1;
     return rgba8_main_fs_out(_e32);
 }

@@ -2,10 +2,6 @@
 struct rgba8_shadow_fs_out {
     vec4 f_FragColor;
 };
-vec4 f_FragColor = vec4(0.0);
-
-vec4 gen_gl_FragCoord = vec4(0.0);
-
 layout(location = 0) out vec4 _fs2p_location0;
 
 vec4 encode_depth(float d) {
@@ -14,13 +10,12 @@ vec4 encode_depth(float d) {
 }
 
 void main() {
-    vec4 in_FragCoord = gl_FragCoord;
-    gen_gl_FragCoord = in_FragCoord;
-    float _e5 = gen_gl_FragCoord.z;
-    vec4 _e6 = encode_depth(_e5);
-    f_FragColor = _e6;
-    vec4 _e8 = f_FragColor;
-    rgba8_shadow_fs_out _tmp_return = rgba8_shadow_fs_out(_e8);
+    vec4 FragCoord = gl_FragCoord;
+    vec4 f_FragColor = vec4(0.0);
+    vec4 _e3 = encode_depth(FragCoord.z);
+    f_FragColor = _e3;
+    vec4 _e5 = f_FragColor;
+    rgba8_shadow_fs_out _tmp_return = rgba8_shadow_fs_out(_e5);
     _fs2p_location0 = _tmp_return.f_FragColor;
     return;
 }

@@ -14,10 +14,6 @@ uniform sampler2DShadow shadows_1;
 
 layout(std140) uniform u_pick_block { int u_pick; };
 
-vec2 v_uv = vec2(0.0);
-
-vec4 f_color = vec4(0.0);
-
 smooth in vec2 _vs2fs_location0;
 layout(location = 0) out vec4 _fs2p_location0;
 
@@ -45,27 +41,24 @@ vec4 layer(int i_1, vec2 uv) {
 }
 
 void main() {
-    vec2 in_v_uv = _vs2fs_location0;
+    vec2 v_uv = _vs2fs_location0;
+    vec4 f_color = vec4(0.0);
     vec4 c = vec4(0.0);
     ivec2 texel = ivec2(0);
     float lit = 0.0;
     int i = 0;
     float texel_1 = 0.0;
-    v_uv = in_v_uv;
-    vec2 _e4 = v_uv;
-    vec4 _e7 = texture(layers_0, vec2(_e4));
-    c = (_e7 * 0.5);
-    vec2 _e12 = v_uv;
-    vec4 _e18 = textureLod(layers_2, vec2((_e12 * 4.0)), 0.0);
-    vec4 _e19 = c;
-    c = (_e19 + _e18);
-    int _e23 = u_pick;
-    vec2 _e25 = v_uv;
-    vec4 _e26 = layer(_e23, _e25);
-    vec4 _e27 = c;
-    c = (_e27 + _e26);
-    int _e31 = u_pick;
-    switch(min(max((_e31 + 1), 0), 2)) {
+    vec4 _e4 = texture(layers_0, vec2(v_uv));
+    c = (_e4 * 0.5);
+    vec4 _e13 = textureLod(layers_2, vec2((v_uv * 4.0)), 0.0);
+    vec4 _e14 = c;
+    c = (_e14 + _e13);
+    int _e18 = u_pick;
+    vec4 _e19 = layer(_e18, v_uv);
+    vec4 _e20 = c;
+    c = (_e20 + _e19);
+    int _e24 = u_pick;
+    switch(min(max((_e24 + 1), 0), 2)) {
         case 0: {
             texel = ivec2(uvec2(textureSize(layers_0, 0).xy));
             break;
@@ -85,37 +78,36 @@ void main() {
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            int _e80 = i;
-            i = (_e80 + 1);
+            int _e71 = i;
+            i = (_e71 + 1);
         }
         loop_init = false;
-        int _e56 = i;
-        if (!((_e56 < 2))) {
+        int _e49 = i;
+        if (!((_e49 < 2))) {
             break;
         }
-        vec2 _e61 = v_uv;
-        int _e64 = i;
-        switch(min(max(_e64, 0), 1)) {
+        int _e55 = i;
+        switch(min(max(_e55, 0), 1)) {
             case 0: {
-                float _e70 = texture(shadows_0, vec3(_e61, 0.5));
-                texel_1 = _e70;
+                float _e61 = texture(shadows_0, vec3(v_uv, 0.5));
+                texel_1 = _e61;
                 break;
             }
             default: {
-                float _e74 = texture(shadows_1, vec3(_e61, 0.5));
-                texel_1 = _e74;
+                float _e65 = texture(shadows_1, vec3(v_uv, 0.5));
+                texel_1 = _e65;
                 break;
             }
         }
-        float _e77 = texel_1;
-        float _e78 = lit;
-        lit = (_e78 + _e77);
+        float _e68 = texel_1;
+        float _e69 = lit;
+        lit = (_e69 + _e68);
     }
-    vec4 _e85 = c;
-    float _e87 = lit;
-    f_color = ((_e85 * _e87) + vec4((float(size.x) * 0.0)));
-    vec4 _e96 = f_color;
-    layers_fs_out _tmp_return = layers_fs_out(_e96);
+    vec4 _e76 = c;
+    float _e78 = lit;
+    f_color = ((_e76 * _e78) + vec4((float(size.x) * 0.0)));
+    vec4 _e87 = f_color;
+    layers_fs_out _tmp_return = layers_fs_out(_e87);
     _fs2p_location0 = _tmp_return.f_color;
     return;
 }

@@ -13,14 +13,6 @@ layout(std140) uniform u_is_floor_block { float u_is_floor; };
 
 uniform sampler2DShadow shadow_map;
 
-vec3 v_world_pos = vec3(0.0);
-
-vec3 v_world_normal = vec3(0.0);
-
-vec4 v_light_space = vec4(0.0);
-
-vec4 f_FragColor = vec4(0.0);
-
 smooth in vec3 _vs2fs_location0;
 smooth in vec3 _vs2fs_location1;
 smooth in vec4 _vs2fs_location2;
@@ -80,32 +72,26 @@ vec3 floor_albedo(vec3 p) {
 }
 
 void main() {
-    vec3 in_v_world_pos = _vs2fs_location0;
-    vec3 in_v_world_normal = _vs2fs_location1;
-    vec4 in_v_light_space = _vs2fs_location2;
+    vec3 v_world_pos = _vs2fs_location0;
+    vec3 v_world_normal = _vs2fs_location1;
+    vec4 v_light_space = _vs2fs_location2;
+    vec4 f_FragColor = vec4(0.0);
     float lit = 0.0;
     vec3 albedo = vec3(0.0);
     float gloss = 0.0;
-    v_world_pos = in_v_world_pos;
-    v_world_normal = in_v_world_normal;
-    v_light_space = in_v_light_space;
-    vec3 _e7 = v_world_normal;
-    vec3 n = normalize(_e7);
-    vec3 _e10 = u_light_dir;
-    vec3 l = normalize(_e10);
-    vec3 _e13 = u_cam_pos;
-    vec3 _e15 = v_world_pos;
-    vec3 v = normalize((_e13 - _e15));
+    vec3 n = normalize(v_world_normal);
+    vec3 _e5 = u_light_dir;
+    vec3 l = normalize(_e5);
+    vec3 _e8 = u_cam_pos;
+    vec3 v = normalize((_e8 - v_world_pos));
     float ndotl = max(dot(n, l), 0.0);
-    float _e23 = v_light_space.w;
-    float clip_w = max(_e23, 0.0001);
-    vec4 _e27 = v_light_space;
-    vec3 ndc = (_e27.xyz / vec3(clip_w));
+    float clip_w = max(v_light_space.w, 0.0001);
+    vec3 ndc = (v_light_space.xyz / vec3(clip_w));
     vec2 uv_1 = ((ndc.xy * 0.5) + vec2(0.5));
     float depth_1 = ((ndc.z * 0.5) + 0.5);
     float bias = max((0.0025 * (1.0 - ndotl)), 0.0008);
-    float _e50 = sun_visibility(uv_1, (depth_1 - bias));
-    lit = _e50;
+    float _e39 = sun_visibility(uv_1, (depth_1 - bias));
+    lit = _e39;
     if ((ndotl < 0.05)) {
         lit = 0.0;
     }
@@ -114,23 +100,22 @@ void main() {
     vec3 sun_color = vec3(1.3, 1.15, 0.9);
     albedo = vec3(0.85, 0.45, 0.3);
     gloss = 0.5;
-    float _e82 = u_is_floor;
-    if ((_e82 > 0.5)) {
-        vec3 _e87 = v_world_pos;
-        vec3 _e88 = floor_albedo(_e87);
-        albedo = _e88;
+    float _e71 = u_is_floor;
+    if ((_e71 > 0.5)) {
+        vec3 _e75 = floor_albedo(v_world_pos);
+        albedo = _e75;
         gloss = 0.15;
     }
     vec3 h = normalize((l + v));
-    float _e99 = lit;
-    float _e102 = gloss;
-    float spec = ((pow(max(dot(n, h), 0.0), 48.0) * _e99) * _e102);
-    vec3 _e105 = albedo;
-    float _e107 = lit;
-    vec3 color = ((_e105 * (ambient + (sun_color * (ndotl * _e107)))) + vec3(spec));
+    float _e86 = lit;
+    float _e89 = gloss;
+    float spec = ((pow(max(dot(n, h), 0.0), 48.0) * _e86) * _e89);
+    vec3 _e92 = albedo;
+    float _e94 = lit;
+    vec3 color = ((_e92 * (ambient + (sun_color * (ndotl * _e94)))) + vec3(spec));
     f_FragColor = vec4(color, 1.0);
-    vec4 _e118 = f_FragColor;
-    main_fs_out _tmp_return = main_fs_out(_e118);
+    vec4 _e105 = f_FragColor;
+    main_fs_out _tmp_return = main_fs_out(_e105);
     _fs2p_location0 = _tmp_return.f_FragColor;
     return;
 }

@@ -40,13 +40,6 @@ var<uniform> u_is_floor: f32;
 var shadow_map: texture_depth_2d;
 @group(0) @binding(8) 
 var shadow_map_sampler: sampler_comparison;
-var<private> a_pos: vec3<f32>;
-var<private> a_normal: vec3<f32>;
-var<private> v_world_pos: vec3<f32>;
-var<private> v_world_normal: vec3<f32>;
-var<private> v_light_space: vec4<f32>;
-var<private> f_FragColor: vec4<f32>;
-var<private> gl_Position: vec4<f32>;
 
 fn sun_visibility(uv: vec2<f32>, depth: f32) -> f32 {
     var lit_1: f32;
@@ -99,72 +92,69 @@ fn floor_albedo(p: vec3<f32>) -> vec3<f32> {
 }
 
 @vertex 
-fn shadow_vs(@location(0) in_a_pos: vec3<f32>) -> shadow_vs_out {
-    a_pos = in_a_pos;
-    let _e4 = u_light_vp;
-    let _e6 = u_model;
-    let _e8 = a_pos;
-    gl_Position = (_e4 * (_e6 * vec4<f32>(_e8, 1f)));
-    let _e14 = gl_Position;
-    return shadow_vs_out(vec4<f32>(_e14.x, -(_e14.y), ((_e14.z + _e14.w) * 0.5f), _e14.w));
+fn shadow_vs(@location(0) a_pos: vec3<f32>) -> shadow_vs_out {
+    var gl_Position: vec4<f32>;
+
+    let _e3 = u_light_vp;
+    let _e5 = u_model;
+    gl_Position = (_e3 * (_e5 * vec4<f32>(a_pos, 1f)));
+    let _e11 = gl_Position;
+    return shadow_vs_out(vec4<f32>(_e11.x, -(_e11.y), ((_e11.z + _e11.w) * 0.5f), _e11.w));
 }
 
 @fragment 
 fn shadow_fs() -> shadow_fs_out {
+    var f_FragColor: vec4<f32>;
+
     f_FragColor = vec4(1f);
     let _e4 = f_FragColor;
     return shadow_fs_out(_e4);
 }
 
 @vertex 
-fn main_vs(@location(0) in_a_pos_1: vec3<f32>, @location(1) in_a_normal: vec3<f32>) -> main_vs_out {
-    a_pos = in_a_pos_1;
-    a_normal = in_a_normal;
-    let _e5 = u_model;
-    let _e7 = a_pos;
-    let world = (_e5 * vec4<f32>(_e7, 1f));
+fn main_vs(@location(0) a_pos_1: vec3<f32>, @location(1) a_normal: vec3<f32>) -> main_vs_out {
+    var v_world_pos: vec3<f32>;
+    var v_world_normal: vec3<f32>;
+    var v_light_space: vec4<f32>;
+    var gl_Position_1: vec4<f32>;
+
+    let _e3 = u_model;
+    let world = (_e3 * vec4<f32>(a_pos_1, 1f));
     v_world_pos = world.xyz;
-    let _e15 = u_model;
-    let _e17 = a_normal;
-    v_world_normal = (_e15 * vec4<f32>(_e17, 0f)).xyz;
-    let _e24 = u_light_vp;
-    v_light_space = (_e24 * world);
-    let _e28 = u_proj;
-    let _e30 = u_view;
-    gl_Position = (_e28 * (_e30 * world));
-    let _e34 = gl_Position;
-    let _e45 = v_world_pos;
-    let _e47 = v_world_normal;
-    let _e49 = v_light_space;
-    return main_vs_out(vec4<f32>(_e34.x, -(_e34.y), ((_e34.z + _e34.w) * 0.5f), _e34.w), _e45, _e47, _e49);
+    let _e11 = u_model;
+    v_world_normal = (_e11 * vec4<f32>(a_normal, 0f)).xyz;
+    let _e18 = u_light_vp;
+    v_light_space = (_e18 * world);
+    let _e22 = u_proj;
+    let _e24 = u_view;
+    gl_Position_1 = (_e22 * (_e24 * world));
+    let _e28 = gl_Position_1;
+    let _e39 = v_world_pos;
+    let _e41 = v_world_normal;
+    let _e43 = v_light_space;
+    return main_vs_out(vec4<f32>(_e28.x, -(_e28.y), ((_e28.z + _e28.w) * 0.5f), _e28.w), _e39, _e41, _e43);
 }
 
 @fragment 
-fn main_fs(@location(0) in_v_world_pos: vec3<f32>, @location(1) in_v_world_normal: vec3<f32>, @location(2) in_v_light_space: vec4<f32>) -> main_fs_out {
+fn main_fs(@location(0) v_world_pos_1: vec3<f32>, @location(1) v_world_normal_1: vec3<f32>, @location(2) v_light_space_1: vec4<f32>) -> main_fs_out {
+    var f_FragColor_1: vec4<f32>;
     var lit: f32;
     var albedo: vec3<f32>;
     var gloss: f32;
 
-    v_world_pos = in_v_world_pos;
-    v_world_normal = in_v_world_normal;
-    v_light_space = in_v_light_space;
-    let _e7 = v_world_normal;
-    let n = normalize(_e7);
-    let _e10 = u_light_dir;
-    let l = normalize(_e10);
-    let _e13 = u_cam_pos;
-    let _e15 = v_world_pos;
-    let v = normalize((_e13 - _e15));
+    let n = normalize(v_world_normal_1);
+    let _e5 = u_light_dir;
+    let l = normalize(_e5);
+    let _e8 = u_cam_pos;
+    let v = normalize((_e8 - v_world_pos_1));
     let ndotl = max(dot(n, l), 0f);
-    let _e23 = v_light_space.w;
-    let clip_w = max(_e23, 0.0001f);
-    let _e27 = v_light_space;
-    let ndc = (_e27.xyz / vec3(clip_w));
+    let clip_w = max(v_light_space_1.w, 0.0001f);
+    let ndc = (v_light_space_1.xyz / vec3(clip_w));
     let uv_1 = ((ndc.xy * 0.5f) + vec2(0.5f));
     let depth_1 = ((ndc.z * 0.5f) + 0.5f);
     let bias = max((0.0025f * (1f - ndotl)), 0.0008f);
-    let _e50 = sun_visibility(uv_1, (depth_1 - bias));
-    lit = _e50;
+    let _e39 = sun_visibility(uv_1, (depth_1 - bias));
+    lit = _e39;
     if (ndotl < 0.05f) {
         lit = 0f;
     }
@@ -173,21 +163,20 @@ fn main_fs(@location(0) in_v_world_pos: vec3<f32>, @location(1) in_v_world_norma
     let sun_color = vec3<f32>(1.3f, 1.15f, 0.9f);
     albedo = vec3<f32>(0.85f, 0.45f, 0.3f);
     gloss = 0.5f;
-    let _e82 = u_is_floor;
-    if (_e82 > 0.5f) {
-        let _e87 = v_world_pos;
-        let _e88 = floor_albedo(_e87);
-        albedo = _e88;
+    let _e71 = u_is_floor;
+    if (_e71 > 0.5f) {
+        let _e75 = floor_albedo(v_world_pos_1);
+        albedo = _e75;
         gloss = 0.15f;
     }
     let h = normalize((l + v));
-    let _e99 = lit;
-    let _e102 = gloss;
-    let spec = ((pow(max(dot(n, h), 0f), 48f) * _e99) * _e102);
-    let _e105 = albedo;
-    let _e107 = lit;
-    let color = ((_e105 * (ambient + (sun_color * (ndotl * _e107)))) + vec3(spec));
-    f_FragColor = vec4<f32>(color, 1f);
-    let _e118 = f_FragColor;
-    return main_fs_out(_e118);
+    let _e86 = lit;
+    let _e89 = gloss;
+    let spec = ((pow(max(dot(n, h), 0f), 48f) * _e86) * _e89);
+    let _e92 = albedo;
+    let _e94 = lit;
+    let color = ((_e92 * (ambient + (sun_color * (ndotl * _e94)))) + vec3(spec));
+    f_FragColor_1 = vec4<f32>(color, 1f);
+    let _e105 = f_FragColor_1;
+    return main_fs_out(_e105);
 }

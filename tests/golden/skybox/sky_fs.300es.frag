@@ -10,24 +10,19 @@ layout(std140) uniform u_exposure_block { float u_exposure; };
 
 uniform highp samplerCube sky;
 
-vec3 v_dir = vec3(0.0);
-
-vec4 f_color = vec4(0.0);
-
 smooth in vec3 _vs2fs_location0;
 layout(location = 0) out vec4 _fs2p_location0;
 
 void main() {
-    vec3 in_v_dir = _vs2fs_location0;
-    v_dir = in_v_dir;
-    vec3 _e3 = v_dir;
-    vec4 _e7 = texture(sky, vec3(normalize(_e3)));
-    float _e10 = u_exposure;
-    vec3 hdr = (_e7.xyz * _e10);
+    vec3 v_dir = _vs2fs_location0;
+    vec4 f_color = vec4(0.0);
+    vec4 _e4 = texture(sky, vec3(normalize(v_dir)));
+    float _e7 = u_exposure;
+    vec3 hdr = (_e4.xyz * _e7);
     vec3 mapped = (hdr / (hdr + vec3(1.0)));
     f_color = vec4(pow(mapped, vec3((1.0 / 2.2))), 1.0);
-    vec4 _e25 = f_color;
-    sky_fs_out _tmp_return = sky_fs_out(_e25);
+    vec4 _e22 = f_color;
+    sky_fs_out _tmp_return = sky_fs_out(_e22);
     _fs2p_location0 = _tmp_return.f_color;
     return;
 }

@@ -37,9 +37,7 @@ var<uniform> u_cam_pos: vec3<f32>;
 var<uniform> u_is_floor: f32;
 var<private> a_pos: vec3<f32>;
 var<private> a_normal: vec3<f32>;
-var<private> v_world_pos: vec3<f32>;
-var<private> v_world_normal: vec3<f32>;
-var<private> f_FragColor: vec4<f32>;
+var<private> v_world_pos_1: vec3<f32>;
 @group(0) @binding(6) 
 var<uniform> u_light_pos: vec3<f32>;
 @group(0) @binding(7) 
@@ -48,7 +46,6 @@ var<uniform> u_spot_dir: vec3<f32>;
 var shadow_map: texture_2d<f32>;
 @group(0) @binding(9) 
 var shadow_map_sampler: sampler;
-var<private> gl_Position: vec4<f32>;
 
 fn shadow_clip() -> vec4<f32> {
     let _e1 = u_light_vp;
@@ -100,7 +97,7 @@ fn checker(p: vec3<f32>) -> vec3<f32> {
 fn surface_albedo() -> vec3<f32> {
     let _e1 = u_is_floor;
     if (_e1 > 0.5f) {
-        let _e5 = v_world_pos;
+        let _e5 = v_world_pos_1;
         let _e6 = checker(_e5);
         return _e6;
     }
@@ -113,6 +110,8 @@ fn hemisphere(n: vec3<f32>) -> vec3<f32> {
 
 @vertex 
 fn spot_shadow_vs(@location(0) in_a_pos: vec3<f32>) -> spot_shadow_vs_out {
+    var gl_Position: vec4<f32>;
+
     a_pos = in_a_pos;
     let _e3 = shadow_clip();
     gl_Position = _e3;
@@ -122,6 +121,8 @@ fn spot_shadow_vs(@location(0) in_a_pos: vec3<f32>) -> spot_shadow_vs_out {
 
 @fragment 
 fn spot_shadow_fs() -> spot_shadow_fs_out {
+    var f_FragColor: vec4<f32>;
+
     f_FragColor = vec4(1f);
     let _e4 = f_FragColor;
     return spot_shadow_fs_out(_e4);
@@ -129,6 +130,10 @@ fn spot_shadow_fs() -> spot_shadow_fs_out {
 
 @vertex 
 fn spot_main_vs(@location(0) in_a_pos_1: vec3<f32>, @location(1) in_a_normal: vec3<f32>) -> spot_main_vs_out {
+    var v_world_pos: vec3<f32>;
+    var v_world_normal: vec3<f32>;
+    var gl_Position_1: vec4<f32>;
+
     a_pos = in_a_pos_1;
     a_normal = in_a_normal;
     let _e4 = world_position();
@@ -137,38 +142,38 @@ fn spot_main_vs(@location(0) in_a_pos_1: vec3<f32>, @location(1) in_a_normal: ve
     v_world_normal = _e8;
     let _e11 = u_proj;
     let _e13 = u_view;
-    gl_Position = (_e11 * (_e13 * _e4));
-    let _e17 = gl_Position;
+    gl_Position_1 = (_e11 * (_e13 * _e4));
+    let _e17 = gl_Position_1;
     let _e28 = v_world_pos;
     let _e30 = v_world_normal;
     return spot_main_vs_out(vec4<f32>(_e17.x, -(_e17.y), ((_e17.z + _e17.w) * 0.5f), _e17.w), _e28, _e30);
 }
 
 @fragment 
-fn spot_main_fs(@location(0) in_v_world_pos: vec3<f32>, @location(1) in_v_world_normal: vec3<f32>) -> spot_main_fs_out {
-    v_world_pos = in_v_world_pos;
-    v_world_normal = in_v_world_normal;
-    let _e5 = v_world_normal;
-    let n_1 = normalize(_e5);
-    let _e8 = u_light_pos;
-    let _e10 = v_world_pos;
-    let l = normalize((_e8 - _e10));
-    let _e14 = u_cam_pos;
-    let _e16 = v_world_pos;
-    let v = normalize((_e14 - _e16));
+fn spot_main_fs(@location(0) in_v_world_pos: vec3<f32>, @location(1) v_world_normal_1: vec3<f32>) -> spot_main_fs_out {
+    var f_FragColor_1: vec4<f32>;
+
+    v_world_pos_1 = in_v_world_pos;
+    let n_1 = normalize(v_world_normal_1);
+    let _e5 = u_light_pos;
+    let _e7 = v_world_pos_1;
+    let l = normalize((_e5 - _e7));
+    let _e11 = u_cam_pos;
+    let _e13 = v_world_pos_1;
+    let v = normalize((_e11 - _e13));
     let ndotl = max(dot(n_1, l), 0f);
-    let _e22 = cone(l);
-    let _e24 = v_world_pos;
-    let _e25 = spot_shadow(_e24);
-    let light = (_e22 * _e25);
+    let _e19 = cone(l);
+    let _e21 = v_world_pos_1;
+    let _e22 = spot_shadow(_e21);
+    let light = (_e19 * _e22);
     let h = normalize((l + v));
-    let _e36 = surface_gloss();
-    let spec = select(0f, (pow(max(dot(n_1, h), 0f), 48f) * _e36), (ndotl > 0f));
+    let _e33 = surface_gloss();
+    let spec = select(0f, (pow(max(dot(n_1, h), 0f), 48f) * _e33), (ndotl > 0f));
     let color = vec3<f32>(1.25f, 1.15f, 0.95f);
-    let _e44 = surface_albedo();
-    let _e45 = hemisphere(n_1);
-    let rgb = ((_e44 * (_e45 + (color * (ndotl * light)))) + vec3((spec * light)));
-    f_FragColor = vec4<f32>(rgb, 1f);
-    let _e57 = f_FragColor;
-    return spot_main_fs_out(_e57);
+    let _e41 = surface_albedo();
+    let _e42 = hemisphere(n_1);
+    let rgb = ((_e41 * (_e42 + (color * (ndotl * light)))) + vec3((spec * light)));
+    f_FragColor_1 = vec4<f32>(rgb, 1f);
+    let _e54 = f_FragColor_1;
+    return spot_main_fs_out(_e54);
 }

@@ -19,10 +19,6 @@ layout(std140) uniform u_is_floor_block { float u_is_floor; };
 
 vec3 v_world_pos = vec3(0.0);
 
-vec3 v_world_normal = vec3(0.0);
-
-vec4 f_FragColor = vec4(0.0);
-
 layout(std140) uniform u_light_pos_block { vec3 u_light_pos; };
 
 layout(std140) uniform u_spot_dir_block { vec3 u_spot_dir; };
@@ -77,32 +73,31 @@ vec3 hemisphere(vec3 n) {
 
 void main() {
     vec3 in_v_world_pos = _vs2fs_location0;
-    vec3 in_v_world_normal = _vs2fs_location1;
+    vec3 v_world_normal = _vs2fs_location1;
+    vec4 f_FragColor = vec4(0.0);
     v_world_pos = in_v_world_pos;
-    v_world_normal = in_v_world_normal;
-    vec3 _e5 = v_world_normal;
-    vec3 n_1 = normalize(_e5);
-    vec3 _e8 = u_light_pos;
-    vec3 _e10 = v_world_pos;
-    vec3 l = normalize((_e8 - _e10));
-    vec3 _e14 = u_cam_pos;
-    vec3 _e16 = v_world_pos;
-    vec3 v = normalize((_e14 - _e16));
+    vec3 n_1 = normalize(v_world_normal);
+    vec3 _e5 = u_light_pos;
+    vec3 _e7 = v_world_pos;
+    vec3 l = normalize((_e5 - _e7));
+    vec3 _e11 = u_cam_pos;
+    vec3 _e13 = v_world_pos;
+    vec3 v = normalize((_e11 - _e13));
     float ndotl = max(dot(n_1, l), 0.0);
-    float _e22 = cone(l);
-    vec3 _e24 = v_world_pos;
-    float _e25 = spot_shadow(_e24);
-    float light = (_e22 * _e25);
+    float _e19 = cone(l);
+    vec3 _e21 = v_world_pos;
+    float _e22 = spot_shadow(_e21);
+    float light = (_e19 * _e22);
     vec3 h = normalize((l + v));
-    float _e36 = surface_gloss();
-    float spec = ((ndotl > 0.0) ? (pow(max(dot(n_1, h), 0.0), 48.0) * _e36) : 0.0);
+    float _e33 = surface_gloss();
+    float spec = ((ndotl > 0.0) ? (pow(max(dot(n_1, h), 0.0), 48.0) * _e33) : 0.0);
     vec3 color = vec3(1.25, 1.15, 0.95);
-    vec3 _e44 = surface_albedo();
-    vec3 _e45 = hemisphere(n_1);
-    vec3 rgb = ((_e44 * (_e45 + (color * (ndotl * light)))) + vec3((spec * light)));
+    vec3 _e41 = surface_albedo();
+    vec3 _e42 = hemisphere(n_1);
+    vec3 rgb = ((_e41 * (_e42 + (color * (ndotl * light)))) + vec3((spec * light)));
     f_FragColor = vec4(rgb, 1.0);
-    vec4 _e57 = f_FragColor;
-    spot_main_fs_out _tmp_return = spot_main_fs_out(_e57);
+    vec4 _e54 = f_FragColor;
+    spot_main_fs_out _tmp_return = spot_main_fs_out(_e54);
     _fs2p_location0 = _tmp_return.f_FragColor;
     return;
 }

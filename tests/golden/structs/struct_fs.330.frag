@@ -13,10 +13,6 @@ struct struct_fs_out {
 };
 layout(std140) uniform light_block { Light light; };
 
-vec3 v_normal = vec3(0.0);
-
-vec4 f_color = vec4(0.0);
-
 smooth in vec3 _vs2fs_location0;
 layout(location = 0) out vec4 _fs2p_location0;
 
@@ -26,20 +22,19 @@ vec3 shade(Material m_1, vec3 n, Light l) {
 }
 
 void main() {
-    vec3 in_v_normal = _vs2fs_location0;
+    vec3 v_normal = _vs2fs_location0;
+    vec4 f_color = vec4(0.0);
     Material m = Material(vec3(0.0), 0.0);
-    v_normal = in_v_normal;
     m = Material(vec3(0.0), 0.0);
     m.albedo = vec3(0.8, 0.6, 0.4);
     m.roughness = 0.5;
-    Material _e14 = m;
-    vec3 _e16 = v_normal;
-    Light _e19 = light;
-    vec3 _e20 = shade(_e14, normalize(_e16), _e19);
-    float _e24 = m.roughness;
-    f_color = vec4((_e20 + vec3((_e24 * 0.1))), 1.0);
-    vec4 _e32 = f_color;
-    struct_fs_out _tmp_return = struct_fs_out(_e32);
+    Material _e13 = m;
+    Light _e16 = light;
+    vec3 _e17 = shade(_e13, normalize(v_normal), _e16);
+    float _e21 = m.roughness;
+    f_color = vec4((_e17 + vec3((_e21 * 0.1))), 1.0);
+    vec4 _e29 = f_color;
+    struct_fs_out _tmp_return = struct_fs_out(_e29);
     _fs2p_location0 = _tmp_return.f_color;
     return;
 }

@@ -24,11 +24,6 @@ struct struct_fs_out {
 var<uniform> light: Light;
 @group(0) @binding(1) 
 var<uniform> u_mvp: mat4x4<f32>;
-var<private> a_pos: vec3<f32>;
-var<private> a_normal: vec3<f32>;
-var<private> v_normal: vec3<f32>;
-var<private> f_color: vec4<f32>;
-var<private> gl_Position: vec4<f32>;
 
 fn shade(m_1: Material, n: vec3<f32>, l: Light) -> vec3<f32> {
     let ndotl = saturate(dot(n, -(l.dir)));
@@ -36,33 +31,31 @@ fn shade(m_1: Material, n: vec3<f32>, l: Light) -> vec3<f32> {
 }
 
 @vertex 
-fn struct_vs(@location(0) in_a_pos: vec3<f32>, @location(1) in_a_normal: vec3<f32>) -> struct_vs_out {
-    a_pos = in_a_pos;
-    a_normal = in_a_normal;
-    let _e6 = a_normal;
-    v_normal = _e6;
-    let _e9 = u_mvp;
-    let _e11 = a_pos;
-    gl_Position = (_e9 * vec4<f32>(_e11, 1f));
-    let _e16 = gl_Position;
-    let _e27 = v_normal;
-    return struct_vs_out(vec4<f32>(_e16.x, -(_e16.y), ((_e16.z + _e16.w) * 0.5f), _e16.w), _e27);
+fn struct_vs(@location(0) a_pos: vec3<f32>, @location(1) a_normal: vec3<f32>) -> struct_vs_out {
+    var v_normal: vec3<f32>;
+    var gl_Position: vec4<f32>;
+
+    v_normal = a_normal;
+    let _e5 = u_mvp;
+    gl_Position = (_e5 * vec4<f32>(a_pos, 1f));
+    let _e10 = gl_Position;
+    let _e21 = v_normal;
+    return struct_vs_out(vec4<f32>(_e10.x, -(_e10.y), ((_e10.z + _e10.w) * 0.5f), _e10.w), _e21);
 }
 
 @fragment 
-fn struct_fs(@location(0) in_v_normal: vec3<f32>) -> struct_fs_out {
+fn struct_fs(@location(0) v_normal_1: vec3<f32>) -> struct_fs_out {
+    var f_color: vec4<f32>;
     var m: Material;
 
-    v_normal = in_v_normal;
     m = Material();
     m.albedo = vec3<f32>(0.8f, 0.6f, 0.4f);
     m.roughness = 0.5f;
-    let _e14 = m;
-    let _e16 = v_normal;
-    let _e19 = light;
-    let _e20 = shade(_e14, normalize(_e16), _e19);
-    let _e24 = m.roughness;
-    f_color = vec4<f32>((_e20 + vec3((_e24 * 0.1f))), 1f);
-    let _e32 = f_color;
-    return struct_fs_out(_e32);
+    let _e13 = m;
+    let _e16 = light;
+    let _e17 = shade(_e13, normalize(v_normal_1), _e16);
+    let _e21 = m.roughness;
+    f_color = vec4<f32>((_e17 + vec3((_e21 * 0.1f))), 1f);
+    let _e29 = f_color;
+    return struct_fs_out(_e29);
 }

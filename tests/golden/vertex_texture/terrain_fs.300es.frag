@@ -8,12 +8,6 @@ struct terrain_fs_out {
 };
 uniform highp sampler2D heightmap;
 
-vec2 v_uv = vec2(0.0);
-
-float v_height = 0.0;
-
-vec4 f_color = vec4(0.0);
-
 smooth in vec2 _vs2fs_location0;
 smooth in float _vs2fs_location1;
 layout(location = 0) out vec4 _fs2p_location0;
@@ -24,23 +18,17 @@ float height_at(vec2 uv) {
 }
 
 void main() {
-    vec2 in_v_uv = _vs2fs_location0;
-    float in_v_height = _vs2fs_location1;
-    v_uv = in_v_uv;
-    v_height = in_v_height;
-    vec2 _e5 = v_uv;
-    float _e6 = height_at(_e5);
-    vec2 _e8 = v_uv;
-    vec2 _e10 = v_uv;
-    vec2 _e11 = dFdx(_e10);
-    vec2 _e13 = v_uv;
-    vec2 _e14 = dFdy(_e13);
-    vec4 _e17 = textureGrad(heightmap, vec2(_e8), _e11, _e14);
-    float dx = _e17.x;
-    float _e26 = v_height;
-    f_color = vec4(vec3(((_e6 * 0.5) + (dx * 0.1)), _e26, 0.0), 1.0);
-    vec4 _e32 = f_color;
-    terrain_fs_out _tmp_return = terrain_fs_out(_e32);
+    vec2 v_uv = _vs2fs_location0;
+    float v_height = _vs2fs_location1;
+    vec4 f_color = vec4(0.0);
+    float _e2 = height_at(v_uv);
+    vec2 _e3 = dFdx(v_uv);
+    vec2 _e4 = dFdy(v_uv);
+    vec4 _e7 = textureGrad(heightmap, vec2(v_uv), _e3, _e4);
+    float dx = _e7.x;
+    f_color = vec4(vec3(((_e2 * 0.5) + (dx * 0.1)), v_height, 0.0), 1.0);
+    vec4 _e20 = f_color;
+    terrain_fs_out _tmp_return = terrain_fs_out(_e20);
     _fs2p_location0 = _tmp_return.f_color;
     return;
 }
