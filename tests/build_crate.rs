@@ -29,6 +29,9 @@ fn target_dir() -> PathBuf {
 fn cargo(dir: &Path, args: &[&str]) -> Output {
     let mut c = Command::new(env!("CARGO"));
     c.args(args).current_dir(dir).env("CARGO_TARGET_DIR", target_dir()).env("CARGO_TERM_COLOR", "never");
+    // Line tables only, as umbrac's own dev profile gives its dependencies:
+    // with full debug info the example's binary alone is ~100 MB to link.
+    c.env("CARGO_PROFILE_DEV_DEBUG", "line-tables-only");
     for var in ["CARGO_BUILD_TARGET_DIR", "RUSTC_WORKSPACE_WRAPPER", "CARGO_MAKEFLAGS", "MAKEFLAGS", "MFLAGS"] {
         c.env_remove(var);
     }
