@@ -105,6 +105,8 @@ const NEEDLES: &[(&str, Target, &str, &str, bool)] = &[
     ("integer-division-remainder", Target::Glsl330, ".330.frag", "%", false),
     ("sampler-arrays", Target::Glsl330, ".330.frag", "uniform sampler2D layers_2;", true),
     ("sampler-arrays-dynamic", Target::Wgsl, ".wgsl", "switch", true),
+    ("sampler-parameters", Target::Glsl330, ".330.frag", "vec4 get_t()", true),
+    ("sampler-parameters", Target::Wgsl, ".wgsl", "fn get_t()", true),
     ("texture-in-vertex", Target::Glsl330, ".330.vert", "textureLod(t", true),
     ("texture-in-vertex", Target::Wgsl, ".wgsl", "textureSampleLevel(t", true),
     ("gl_PointSize", Target::Glsl330, ".330.vert", "gl_PointSize =", true),

@@ -28,7 +28,17 @@ enum LocalSlot {
     Var(Handle<naga::LocalVariable>),
     /// A `let` or an unmodified parameter: an expression.
     Value(Handle<E>),
+    /// A sampler parameter: the sampler this specialisation was made for.
+    Sampler(SamplerRef),
     Unset,
+}
+
+/// One sampler: element `elem` of sampler global `global` (0 for a single
+/// sampler). What a sampler argument names, known when compiling.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+pub struct SamplerRef {
+    pub global: sema::GlobalId,
+    pub elem: u32,
 }
 
 /// What a `return` does in this function.
@@ -100,9 +110,15 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
     }
 
     /// Declares parameter `i` as a function argument. Parameters are
-    /// immutable, so the argument expression serves directly.
-    pub fn add_param(&mut self, i: usize) {
+    /// immutable, so the argument expression serves directly. A sampler
+    /// parameter is no argument: it stands for `sampler`, the one this
+    /// copy of the function is specialised for.
+    pub fn add_param(&mut self, i: usize, sampler: Option<SamplerRef>) {
         let l = &self.sema_locals[i];
+        if let Some(r) = sampler {
+            self.locals[i] = LocalSlot::Sampler(r);
+            return;
+        }
         let ty = self.m.ty(&l.ty);
         let idx = self.func.arguments.len() as u32;
         self.func.arguments.push(naga::FunctionArgument { name: Some(l.name.as_str().to_owned()), ty, binding: None });
@@ -211,7 +227,53 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
         self.entry_globals[gid] = slot;
     }
 
-    /// The function a call of helper `fid` reaches from here.
+    /// A call of helper `fid`: the function it reaches from here and its
+    /// argument values. A helper with sampler parameters is specialised
+    /// for the samplers given (lowered on its first such call); those
+    /// arguments are not passed.
+    fn call(&mut self, fid: usize, args: &[Expr], block: &mut Block) -> (Handle<naga::Function>, Vec<Handle<E>>) {
+        let mut samplers = Vec::new();
+        let mut values = Vec::with_capacity(args.len());
+        for a in args {
+            if !matches!(a.ty, Ty::Sampler(_)) {
+                values.push(self.expr(a, block));
+                continue;
+            }
+            match self.sampler_of(a) {
+                Some(Ok(r)) => samplers.push(r),
+                _ => unreachable!("sema checks that a sampler argument is known"),
+            }
+        }
+        let function = match samplers.is_empty() {
+            true => self.callee(fid),
+            false => super::specialised_helper(self.m, fid, self.vertex_lod, samplers),
+        };
+        (function, values)
+    }
+
+    /// The sampler expression `e` names: one known here, or an element of
+    /// sampler global `g` picked at run time (`Err((g, index))`). `None`
+    /// for an expression that is no sampler.
+    fn sampler_of<'e>(&self, e: &'e Expr) -> Option<Result<SamplerRef, (sema::GlobalId, &'e Expr)>> {
+        match &e.kind {
+            ExprKind::Global(g) if matches!(self.m.globals[*g], GlobalSlot::Sampler { .. }) => Some(Ok(SamplerRef { global: *g, elem: 0 })),
+            ExprKind::Index(base, i) => match base.kind {
+                ExprKind::Global(g) if matches!(self.m.globals[g], GlobalSlot::Sampler { .. }) => Some(match i.const_int(&self.m.p.consts) {
+                    Some(k) => Ok(SamplerRef { global: g, elem: k.clamp(0, u32::MAX as i64) as u32 }),
+                    None => Err((g, &**i)),
+                }),
+                _ => None,
+            },
+            ExprKind::Local(l) => match self.locals[*l] {
+                LocalSlot::Sampler(r) => Some(Ok(r)),
+                _ => None,
+            },
+            _ => None,
+        }
+    }
+
+    /// The function a call of helper `fid` (without sampler parameters)
+    /// reaches from here.
     fn callee(&self, fid: usize) -> Handle<naga::Function> {
         match self.m.vertex_functions.get(fid) {
             Some(Some(h)) if self.vertex_lod => *h,
@@ -300,8 +362,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
             Stmt::Assign { target, op, value, span: sp } => self.assign(target, *op, value, *sp, block),
             Stmt::Expr(e) => {
                 if let ExprKind::Call(fid, args) = &e.kind {
-                    let args: Vec<Handle<E>> = args.iter().map(|a| self.expr(a, block)).collect();
-                    let function = self.callee(*fid);
+                    let (function, args) = self.call(*fid, args, block);
                     let result = (e.ty != Ty::Void).then(|| self.append_plain(E::CallResult(function), e.span));
                     self.push(block, Statement::Call { function, arguments: args, result }, e.span);
                 } else {
@@ -534,6 +595,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
                     let ty = self.m.ty(&e.ty);
                     self.append_plain(E::ZeroValue(ty), s)
                 }
+                LocalSlot::Sampler(_) => unreachable!("sema allows a sampler only where a sampler is taken"),
             },
             ExprKind::Global(_) | ExprKind::Field(..) | ExprKind::Index(..) if self.is_place(e) => {
                 let p = self.pointer(e, block).expect("is_place checked");
@@ -619,8 +681,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
                 self.append(E::Select { condition: c, accept: a, reject: r }, s)
             }
             ExprKind::Call(fid, args) => {
-                let args: Vec<Handle<E>> = args.iter().map(|a| self.expr(a, block)).collect();
-                let function = self.callee(*fid);
+                let (function, args) = self.call(*fid, args, block);
                 let result = self.append_plain(E::CallResult(function), s);
                 self.push(block, Statement::Call { function, arguments: args, result: Some(result) }, s);
                 result
@@ -768,29 +829,16 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
     }
 
     fn texture(&mut self, b: Builtin, args: &[Expr], ret: &Ty, s: crate::source::Span, block: &mut Block) -> Handle<E> {
-        let (g, index) = match &args[0].kind {
-            ExprKind::Global(g) => (*g, None),
-            ExprKind::Index(base, i) => match base.kind {
-                ExprKind::Global(g) => (g, Some(&**i)),
-                _ => unreachable!("sema checks the sampler argument"),
-            },
-            _ => unreachable!("sema checks the sampler argument"),
+        // The sampler global, and the element when known here.
+        let (g, constant, index) = match self.sampler_of(&args[0]) {
+            Some(Ok(r)) => (r.global, Some(r.elem), None),
+            Some(Err((g, i))) => (g, None, Some(i)),
+            None => unreachable!("sema checks the sampler argument"),
         };
         let GlobalSlot::Sampler { first, count } = self.m.globals[g] else { unreachable!("sema checks the sampler argument") };
         let GlobalKind::Sampler { kind, .. } = self.m.p.globals[g].kind else { unreachable!("sema checks the sampler argument") };
         let rest: Vec<Handle<E>> = args[1..].iter().map(|a| self.expr(a, block)).collect();
         let op = self.texture_op(b, kind, &rest, args, s);
-        let constant = match index.map(|i| &i.kind) {
-            None => Some(0),
-            Some(ExprKind::Int(k)) => Some((*k).max(0) as u32),
-            Some(ExprKind::Uint(k)) => Some(*k as u32),
-            Some(ExprKind::Const(c)) => match self.m.p.consts[*c].value {
-                sema::ConstValue::Int(k) => Some(k.max(0) as u32),
-                sema::ConstValue::Uint(k) => Some(k as u32),
-                _ => None,
-            },
-            _ => None,
-        };
         if let Some(k) = constant {
             let (image, sampler) = self.m.sampler_elems[first + k.min(count - 1) as usize];
             return self.texture_apply(&op, kind, image, sampler, ret, s);

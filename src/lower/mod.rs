@@ -279,16 +279,18 @@ fn build(p: &sema::Program, flavor: Flavor, only: Option<usize>, reach: &Reach) 
     let reached = only.map(|i| &reach.by_entry[i]);
     let vertex_entry = only_ep.map(|ep| ep.stage == naga::ShaderStage::Vertex);
     for (fid, f) in p.functions.iter().enumerate() {
-        if reached.as_ref().is_some_and(|r| !r[fid]) {
+        // A helper with sampler parameters is lowered per sampler at its
+        // calls (`specialised_helper`).
+        if reached.as_ref().is_some_and(|r| !r[fid]) || f.takes_samplers() {
             m.functions.push(None);
             m.vertex_functions.push(None);
             continue;
         }
         let two_copies = f.implicit_lod && from_vertex[fid] && from_fragment[fid];
         let vertex_only = f.implicit_lod && from_vertex[fid] && !from_fragment[fid];
-        let h = (!(two_copies && vertex_entry == Some(true))).then(|| lower_helper(&mut m, f, &f.name, vertex_only));
+        let h = (!(two_copies && vertex_entry == Some(true))).then(|| lower_helper(&mut m, f, &f.name, vertex_only, &[]));
         m.functions.push(h);
-        let copy = (two_copies && vertex_entry != Some(false)).then(|| lower_helper(&mut m, f, &[&f.name, "_vertex"].concat(), true));
+        let copy = (two_copies && vertex_entry != Some(false)).then(|| lower_helper(&mut m, f, &[&f.name, "_vertex"].concat(), true, &[]));
         m.vertex_functions.push(copy);
     }
     let mut entries = Vec::new();
@@ -301,12 +303,15 @@ fn build(p: &sema::Program, flavor: Flavor, only: Option<usize>, reach: &Reach) 
     Ok((m.module, interface))
 }
 
-/// Lowers one helper function; `vertex_lod`: implicit-LOD sampling at level 0.
-fn lower_helper<'p>(m: &mut ModuleBuilder<'p>, f: &'p sema::Function, name: &str, vertex_lod: bool) -> naga::Handle<naga::Function> {
+/// Lowers one helper function; `vertex_lod`: implicit-LOD sampling at
+/// level 0; `samplers`: what its sampler parameters stand for, in order.
+fn lower_helper<'p>(m: &mut ModuleBuilder<'p>, f: &'p sema::Function, name: &str, vertex_lod: bool, samplers: &[func::SamplerRef]) -> naga::Handle<naga::Function> {
     let mut b = FnBuilder::new(m, name, &f.locals, FnKind::Helper);
     b.vertex_lod = vertex_lod;
-    for i in 0..f.params {
-        b.add_param(i);
+    let mut samplers = samplers.iter();
+    for (i, l) in f.locals[..f.params].iter().enumerate() {
+        let sampler = matches!(l.ty, Ty::Sampler(_)).then(|| *samplers.next().expect("one sampler per sampler parameter"));
+        b.add_param(i, sampler);
     }
     let mut body = b.block(&f.body);
     let ret = (f.ret != Ty::Void).then(|| naga::FunctionResult { ty: b.m.ty(&f.ret), binding: None });
@@ -315,6 +320,35 @@ fn lower_helper<'p>(m: &mut ModuleBuilder<'p>, f: &'p sema::Function, name: &str
     }
     let func = b.finish(body, ret);
     m.module.functions.append(func, f.span.into())
+}
+
+/// Helper `fid` specialised for `samplers` (its sampler parameters, in
+/// order), lowered on first request: one naga function per distinct set
+/// of samplers (and per stage, for implicit LOD), named after them
+/// (`blur_albedo`), since naga's backends have no sampler parameters that
+/// all of GLSL, WGSL and SPIR-V share.
+fn specialised_helper(m: &mut ModuleBuilder<'_>, fid: usize, vertex_lod: bool, samplers: Vec<func::SamplerRef>) -> naga::Handle<naga::Function> {
+    let p = m.p;
+    let f = &p.functions[fid];
+    // Level 0 matters only where the helper samples with implicit LOD.
+    let vertex_lod = vertex_lod && f.implicit_lod;
+    if let Some(s) = m.specialised.iter().find(|s| s.function == fid && s.vertex_lod == vertex_lod && s.samplers == samplers) {
+        return s.handle;
+    }
+    let mut name = f.name.clone();
+    for r in &samplers {
+        name.push('_');
+        name.push_str(&p.globals[r.global].name);
+        if matches!(p.globals[r.global].ty, Ty::Array(..)) {
+            name.push_str(&format!("_{}", r.elem));
+        }
+    }
+    if vertex_lod {
+        name.push_str("_vertex");
+    }
+    let handle = lower_helper(m, f, &name, vertex_lod, &samplers);
+    m.specialised.push(module::Specialised { function: fid, vertex_lod, samplers, handle });
+    handle
 }
 
 /// Which helper functions each entry point reaches, and which a vertex or

@@ -43,6 +43,9 @@ pub struct ModuleBuilder<'p> {
     /// The level-0 copy of a helper that samples with implicit LOD, where a
     /// vertex entry point reaches it and a fragment one does too.
     pub vertex_functions: Vec<Option<Handle<naga::Function>>>,
+    /// Helpers with sampler parameters, one per set of samplers they are
+    /// called with (few: a list).
+    pub specialised: Vec<Specialised>,
     /// The resources, for the interface; empty in a GL module.
     pub resources: Vec<Resource>,
     /// Indices into `resources` per sema global (one per element of a
@@ -53,6 +56,14 @@ pub struct ModuleBuilder<'p> {
     pub sampler_elems: Vec<(Handle<naga::GlobalVariable>, Handle<naga::GlobalVariable>)>,
     /// The program's struct names, for DSL type spellings in the interface.
     struct_names: Vec<String>,
+}
+
+/// A helper lowered for the samplers its sampler parameters stand for.
+pub struct Specialised {
+    pub function: sema::FuncId,
+    pub vertex_lod: bool,
+    pub samplers: Vec<super::func::SamplerRef>,
+    pub handle: Handle<naga::Function>,
 }
 
 pub fn naga_scalar(s: Scalar) -> naga::Scalar {
@@ -109,6 +120,7 @@ impl<'p> ModuleBuilder<'p> {
             consts: vec![None; p.consts.len()],
             functions: Vec::with_capacity(p.functions.len()),
             vertex_functions: Vec::with_capacity(p.functions.len()),
+            specialised: Vec::new(),
             resources: Vec::new(),
             resource_of: Vec::with_capacity(p.globals.len()),
             sampler_elems: Vec::new(),

@@ -191,6 +191,13 @@ pub struct Function {
     pub callees: std::collections::BTreeSet<FuncId>,
 }
 
+impl Function {
+    /// Whether a parameter is a sampler (each call names the one it is).
+    pub fn takes_samplers(&self) -> bool {
+        self.locals[..self.params].iter().any(|l| matches!(l.ty, Ty::Sampler(_)))
+    }
+}
+
 #[derive(Debug)]
 pub struct EntryPoint {
     pub name: String,
@@ -204,6 +211,23 @@ pub struct Expr {
     pub kind: ExprKind,
     pub ty: Ty,
     pub span: Span,
+}
+
+impl Expr {
+    /// An integer known when compiling: a literal or a named constant (an
+    /// index that picks one sampler of an array statically).
+    pub fn const_int(&self, consts: &[Const]) -> Option<i64> {
+        match &self.kind {
+            ExprKind::Int(k) => Some(*k),
+            ExprKind::Uint(k) => i64::try_from(*k).ok(),
+            ExprKind::Const(c) => match consts[*c].value {
+                ConstValue::Int(k) => Some(k),
+                ConstValue::Uint(k) => i64::try_from(k).ok(),
+                _ => None,
+            },
+            _ => None,
+        }
+    }
 }
 
 /// A swizzle's component indices (0-3), held inline: no allocation.

@@ -354,7 +354,24 @@ impl<'a, 'd> Checker<'a, 'd> {
                 self.diags.push(d);
                 return err_expr(span);
             }
-            // The callee's global uses become the caller's.
+            // A sampler argument names one sampler: the global, an element
+            // picked by a constant, or the caller's own sampler parameter.
+            for x in xs.iter().filter(|x| matches!(x.ty, Ty::Sampler(_))) {
+                match &x.kind {
+                    ExprKind::Global(_) | ExprKind::Local(_) => {}
+                    ExprKind::Index(_, i) if i.const_int(&self.out.consts).is_some() => {}
+                    _ => {
+                        let d = Diagnostic::error(format!("a sampler argument of `{name}` must be known when compiling"), x.span)
+                            .with_label("indexed at run time")
+                            .with_note("help: index the array with a constant, or call texture functions on the array element directly where the index varies");
+                        self.diags.push(d);
+                        return err_expr(span);
+                    }
+                }
+            }
+            let f = &self.out.functions[fid];
+            // The callee's global uses become the caller's (a sampler
+            // global passed to it already is one, as a name read here).
             for &g in f.uses.keys() {
                 cx.uses.entry(g).or_insert(span);
             }
@@ -486,7 +503,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         Expr { kind: ExprKind::Construct(xs), ty, span }
     }
 
-    pub(super) fn check_texture_call(&mut self, _cx: &mut FnCtx<'a>, b: Builtin, name: &str, xs: Vec<Expr>, span: Span) -> Expr {
+    pub(super) fn check_texture_call(&mut self, cx: &mut FnCtx<'a>, b: Builtin, name: &str, xs: Vec<Expr>, span: Span) -> Expr {
         let Some(first) = xs.first() else {
             self.diags.push(Diagnostic::error(format!("wrong number of arguments: `{name}` takes a sampler first"), span));
             return err_expr(span);
@@ -494,6 +511,8 @@ impl<'a, 'd> Checker<'a, 'd> {
         let kind = match (&first.ty, &first.kind) {
             (Ty::Sampler(k), ExprKind::Global(_)) => *k,
             (Ty::Sampler(k), ExprKind::Index(base, _)) if matches!(base.kind, ExprKind::Global(_)) => *k,
+            // A sampler parameter.
+            (Ty::Sampler(k), ExprKind::Local(_)) => *k,
             _ => {
                 let d = Diagnostic::error(format!("type mismatch: the first argument of `{name}` must be a sampler, found `{}`", self.show(&first.ty)), first.span);
                 self.diags.push(d);
@@ -535,7 +554,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
             Builtin::TextureCompare => {
                 if !shadow {
-                    let d = Diagnostic::error(format!("`textureCompare` needs a shadow sampler, but `{}` is a `{}`", self.sampler_name(first), kind.name()), first.span)
+                    let d = Diagnostic::error(format!("`textureCompare` needs a shadow sampler, but `{}` is a `{}`", self.sampler_name(cx, first), kind.name()), first.span)
                         .with_label(format!("this is a `{}`", kind.name()))
                         .with_note("help: declare it as sampler2DShadow, sampler2DArrayShadow or samplerCubeShadow, or read it with texture()");
                     self.diags.push(d);
@@ -583,15 +602,16 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
         if matches!(b, Builtin::Texture | Builtin::TextureProj | Builtin::TextureCompare) {
             // Allowed in vertex entry points too: lowered with level 0 there.
-            _cx.implicit_lod = true;
+            cx.implicit_lod = true;
         }
         Expr { kind: ExprKind::Builtin(b, xs), ty: ret, span }
     }
 
-    pub(super) fn sampler_name(&self, e: &Expr) -> String {
+    pub(super) fn sampler_name(&self, cx: &FnCtx<'a>, e: &Expr) -> String {
         match &e.kind {
             ExprKind::Global(g) => self.out.globals[*g].name.clone(),
-            ExprKind::Index(b, _) => format!("{}[...]", self.sampler_name(b)),
+            ExprKind::Index(b, _) => format!("{}[...]", self.sampler_name(cx, b)),
+            ExprKind::Local(l) => cx.locals[*l].name.as_str().to_owned(),
             _ => "the sampler".into(),
         }
     }

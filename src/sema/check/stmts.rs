@@ -135,8 +135,12 @@ impl<'a, 'd> Checker<'a, 'd> {
         };
         for p in &decl.params {
             let ty = self.resolve_type(&p.ty);
-            if ty.is_sampler_like() {
-                let d = Diagnostic::error("sampler parameters are not supported yet; use the sampler global directly", p.ty.span);
+            // One sampler is a parameter (each call site picks the global:
+            // lowering specialises the function per sampler); an array of
+            // them is not.
+            if matches!(ty, Ty::Array(..)) && ty.is_sampler_like() {
+                let d = Diagnostic::error("an array of samplers cannot be a parameter", p.ty.span)
+                    .with_note("help: pass one element (`s[k]` with a constant `k`) to a parameter of the element's type, or use the array global directly");
                 self.diags.push(d);
             }
             self.declare_local(&mut cx, &p.name, ty, false);

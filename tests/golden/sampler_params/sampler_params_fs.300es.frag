@@ -1,0 +1,149 @@
+#version 300 es
+
+precision highp float;
+precision highp int;
+precision highp sampler2DShadow;
+
+struct sampler_params_fs_out {
+    vec4 f_color;
+};
+uniform highp sampler2D albedo;
+
+uniform highp sampler2D detail;
+
+uniform highp sampler2DShadow sun_shadow;
+
+uniform highp sampler2DShadow cascades_1;
+
+layout(std140) uniform u_texel_block { float u_texel; };
+
+smooth in vec2 _vs2fs_location0;
+smooth in float _vs2fs_location1;
+layout(location = 0) out vec4 _fs2p_location0;
+
+vec4 tap_albedo(vec2 uv) {
+    vec4 _e3 = texture(albedo, vec2(uv));
+    return _e3;
+}
+
+vec4 blur_albedo(vec2 uv_1) {
+    float _e2 = u_texel;
+    vec4 _e6 = tap_albedo((uv_1 - vec2(_e2, 0.0)));
+    float _e8 = u_texel;
+    vec4 _e12 = tap_albedo((uv_1 + vec2(_e8, 0.0)));
+    return ((_e6 + _e12) * 0.5);
+}
+
+vec4 tap_detail(vec2 uv_2) {
+    vec4 _e3 = texture(detail, vec2(uv_2));
+    return _e3;
+}
+
+vec4 blur_detail(vec2 uv_3) {
+    float _e2 = u_texel;
+    vec4 _e6 = tap_detail((uv_3 - vec2(_e2, 0.0)));
+    float _e8 = u_texel;
+    vec4 _e12 = tap_detail((uv_3 + vec2(_e8, 0.0)));
+    return ((_e6 + _e12) * 0.5);
+}
+
+float pcf_sun_shadow(vec2 uv_4, float depth) {
+    float lit = 0.0;
+    int y = 0;
+    int x = 0;
+    lit = 0.0;
+    y = -(1);
+    bool loop_init = true;
+    while(true) {
+        if (!loop_init) {
+            int _e38 = y;
+            y = (_e38 + 1);
+        }
+        loop_init = false;
+        int _e8 = y;
+        if (!((_e8 < 2))) {
+            break;
+        }
+        x = -(1);
+        bool loop_init_1 = true;
+        while(true) {
+            if (!loop_init_1) {
+                int _e35 = x;
+                x = (_e35 + 1);
+            }
+            loop_init_1 = false;
+            int _e15 = x;
+            if (!((_e15 < 2))) {
+                break;
+            }
+            int _e20 = x;
+            int _e23 = y;
+            float _e27 = u_texel;
+            float _e32 = texture(sun_shadow, vec3((uv_4 + (vec2(float(_e20), float(_e23)) * _e27)), depth));
+            float _e33 = lit;
+            lit = (_e33 + _e32);
+        }
+    }
+    float _e42 = lit;
+    return (_e42 / 9.0);
+}
+
+float pcf_cascades_1_(vec2 uv_5, float depth_1) {
+    float lit_1 = 0.0;
+    int y_1 = 0;
+    int x_1 = 0;
+    lit_1 = 0.0;
+    y_1 = -(1);
+    bool loop_init_2 = true;
+    while(true) {
+        if (!loop_init_2) {
+            int _e38 = y_1;
+            y_1 = (_e38 + 1);
+        }
+        loop_init_2 = false;
+        int _e8 = y_1;
+        if (!((_e8 < 2))) {
+            break;
+        }
+        x_1 = -(1);
+        bool loop_init_3 = true;
+        while(true) {
+            if (!loop_init_3) {
+                int _e35 = x_1;
+                x_1 = (_e35 + 1);
+            }
+            loop_init_3 = false;
+            int _e15 = x_1;
+            if (!((_e15 < 2))) {
+                break;
+            }
+            int _e20 = x_1;
+            int _e23 = y_1;
+            float _e27 = u_texel;
+            float _e32 = texture(cascades_1, vec3((uv_5 + (vec2(float(_e20), float(_e23)) * _e27)), depth_1));
+            float _e33 = lit_1;
+            lit_1 = (_e33 + _e32);
+        }
+    }
+    float _e42 = lit_1;
+    return (_e42 / 9.0);
+}
+
+void main() {
+    vec2 v_uv = _vs2fs_location0;
+    float v_height = _vs2fs_location1;
+    vec4 f_color = vec4(0.0);
+    vec4 _e2 = blur_albedo(v_uv);
+    vec4 _e7 = blur_detail((v_uv * 4.0));
+    vec4 base = ((_e2 * 0.75) + (_e7 * 0.25));
+    float _e12 = pcf_sun_shadow(v_uv, 0.5);
+    float _e13 = pcf_cascades_1_(v_uv, v_height);
+    float lit_2 = (_e12 * _e13);
+    vec4 _e18 = tap_detail(v_uv);
+    f_color = vec4((base.xyz * lit_2), _e18.w);
+    vec4 _e22 = f_color;
+    sampler_params_fs_out _tmp_return = sampler_params_fs_out(_e22);
+    _fs2p_location0 = _tmp_return.f_color;
+    return;
+}
+
