@@ -18,6 +18,8 @@
 
 #![cfg(feature = "gl")]
 
+mod support;
+
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
@@ -117,6 +119,24 @@ fn every_consumer_draws_the_same_frame() {
     }
     assert!(failures.is_empty(), "consumers disagree:\n{}", failures.join("\n"));
     assert!(!images.is_empty(), "no GPU consumer is available at all");
+}
+
+#[test]
+fn a_sampler_parameter_draws_the_same_frame_on_every_consumer() {
+    setup();
+    let usual = programs();
+    let text = support::shadow_scene_with_sampler_parameter();
+    let variant = Programs::compile_source("sampler_param.das", &text).unwrap();
+    let p = FrameParams::new(2.0, W, H);
+    let mut drawn = 0;
+    for c in Consumer::ALL.into_iter().filter(|c| c.is_gpu()) {
+        let Some(a) = image_of(c, &usual, &p) else { continue };
+        let Some(b) = image_of(c, &variant, &p) else { continue };
+        let stats = image_ops::diff(&a, &b, 0);
+        assert_eq!(stats.over, 0, "{}: the sampler parameter changed the picture: {stats}", c.name());
+        drawn += 1;
+    }
+    assert!(drawn > 0, "no GPU consumer is available at all");
 }
 
 /// The ES outputs' sampler precision, removed in two steps: the

@@ -217,34 +217,6 @@ fn reordered_and_struct_uniforms_render_the_same() {
 }
 
 #[test]
-fn a_sampler_parameter_renders_the_same_as_the_global() {
-    let Some(r) = renderer() else { return };
-    // The PCF helper takes the shadow map as a parameter instead of
-    // reading the global: a specialised copy, the same picture.
-    let text = SCENE
-        .replace("def sun_visibility(uv : float2; depth : float)", "def sun_visibility(map : sampler2DShadow; uv : float2; depth : float)")
-        .replace("textureCompare(shadow_map, uv", "textureCompare(map, uv")
-        .replace("sun_visibility(uv, depth - bias)", "sun_visibility(shadow_map, uv, depth - bias)");
-    assert_eq!(text.matches("(map : sampler2DShadow").count(), 1, "shaders/shadow.das changed: update this test");
-    assert!(text.contains("textureCompare(map, uv") && text.contains("sun_visibility(shadow_map, uv"));
-    let p = FrameParams::new(2.0, W, H);
-    for via in [Via::Wgsl, Via::Spirv] {
-        if via == Via::Spirv && !r.supports_passthrough() {
-            assert!(!on_ci(), "CI=true and {} lacks PASSTHROUGH_SHADERS", r.adapter_name());
-            continue;
-        }
-        let set = compiled("sampler_param.das", &text, via, Conventions::Portable);
-        if let ShaderCode::Wgsl(code) = &set.modules[0] {
-            assert!(code.contains("fn sun_visibility_shadow_map("), "{code}");
-        }
-        let usual = r.render(&scene(via), &p).unwrap();
-        let image = r.render(&set, &p).unwrap();
-        let stats = image_ops::diff(&usual, &image, 0);
-        assert_eq!(stats.over, 0, "{via:?}: a sampler parameter changed the picture: {stats}");
-    }
-}
-
-#[test]
 fn the_tutorial_itself_renders() {
     let Some(r) = renderer() else { return };
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/reference/08_shadow.das");

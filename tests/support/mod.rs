@@ -285,3 +285,18 @@ pub fn validate_dir(dir: &Path, r: &Reflection) -> usize {
     assert!(failures.is_empty(), "validator failures:\n{}", failures.join("\n"));
     runs
 }
+
+/// `shaders/shadow.das` with its PCF helper taking the shadow map as a
+/// sampler parameter instead of reading the global: lowered to a copy
+/// specialised for `shadow_map`, it must draw the very same picture.
+pub fn shadow_scene_with_sampler_parameter() -> String {
+    let scene = include_str!("../../shaders/shadow.das");
+    let text = scene
+        .replace("def sun_visibility(uv : float2; depth : float)", "def sun_visibility(map : sampler2DShadow; uv : float2; depth : float)")
+        .replace("textureCompare(shadow_map, uv", "textureCompare(map, uv")
+        .replace("sun_visibility(uv, depth - bias)", "sun_visibility(shadow_map, uv, depth - bias)");
+    for edited in ["(map : sampler2DShadow", "textureCompare(map, uv", "sun_visibility(shadow_map, uv"] {
+        assert_eq!(text.matches(edited).count(), 1, "shaders/shadow.das changed: update shadow_scene_with_sampler_parameter");
+    }
+    text
+}
