@@ -121,22 +121,39 @@ fn every_consumer_draws_the_same_frame() {
     assert!(!images.is_empty(), "no GPU consumer is available at all");
 }
 
+/// The scene written another way draws the same frame on every GPU
+/// consumer: its PCF helper taking the shadow map as a sampler parameter
+/// (the same code after lowering: identical pixels), and its PCF loop
+/// unrolled into `textureCompareOffset` taps (the same texels, found by
+/// offset instead of by coordinate arithmetic: no pixel off by more than
+/// 1/255; measured identical on all six. Taps that ignored the offset
+/// make 15 pixels differ by up to 54/255).
 #[test]
-fn a_sampler_parameter_draws_the_same_frame_on_every_consumer() {
+fn rewritten_scenes_draw_the_same_frame_on_every_consumer() {
     setup();
     let usual = programs();
-    let text = support::shadow_scene_with_sampler_parameter();
-    let variant = Programs::compile_source("sampler_param.das", &text).unwrap();
+    let variants = [
+        ("sampler parameter", support::shadow_scene_with_sampler_parameter(), 0, 0.0),
+        ("texel offsets", support::shadow_scene_with_texel_offsets(), 1, 0.0),
+    ];
     let p = FrameParams::new(2.0, W, H);
-    let mut drawn = 0;
-    for c in Consumer::ALL.into_iter().filter(|c| c.is_gpu()) {
-        let Some(a) = image_of(c, &usual, &p) else { continue };
-        let Some(b) = image_of(c, &variant, &p) else { continue };
-        let stats = image_ops::diff(&a, &b, 0);
-        assert_eq!(stats.over, 0, "{}: the sampler parameter changed the picture: {stats}", c.name());
-        drawn += 1;
+    let mut failures = Vec::new();
+    for (what, text, delta, max_fraction) in &variants {
+        let variant = Programs::compile_source("variant.das", text).unwrap_or_else(|e| panic!("{what}: {e}"));
+        let mut drawn = 0;
+        for c in Consumer::ALL.into_iter().filter(|c| c.is_gpu()) {
+            let Some(a) = image_of(c, &usual, &p) else { continue };
+            let Some(b) = image_of(c, &variant, &p) else { continue };
+            let stats = image_ops::diff(&a, &b, *delta);
+            eprintln!("{what} on {}: {stats}", c.name());
+            if stats.fraction_over > *max_fraction {
+                failures.push(format!("{what} on {}: {stats}", c.name()));
+            }
+            drawn += 1;
+        }
+        assert!(drawn > 0, "no GPU consumer is available at all");
     }
-    assert!(drawn > 0, "no GPU consumer is available at all");
+    assert!(failures.is_empty(), "a rewritten scene changed the picture:\n{}", failures.join("\n"));
 }
 
 /// The ES outputs' sampler precision, removed in two steps: the

@@ -79,7 +79,9 @@ fn snippets() -> BTreeMap<&'static str, String> {
     add("nonuniform-sampling", frag("var @uniform t : sampler2D\nvar @inout v_uv : float2", "    if (v_uv.x < 0.5) {\n        discard()\n    }\n    var c = float4(0.0)\n    while (c.x < 1.0) {\n        c += texture(t, v_uv + c.xy)\n    }\n    f_color = c"));
     add("inverse", frag("var @uniform u_m : float4x4", "    f_color = inverse(u_m)[0]"));
     add("isnan-isinf", frag("var @uniform u_x : float", "    f_color = float4(isnan(u_x) ? 1.0 : 0.0)"));
-    add("textureOffset", frag("var @uniform t : sampler2D", "    f_color = textureOffset(t, float2(0.5), int2(1, 0))"));
+    add("textureOffset", frag("let D = int2(1, 0)\nvar @uniform t : sampler2D\nvar @uniform s : sampler2DShadow\nvar @uniform a : sampler2DArray\nvar @uniform v : sampler3D", "    f_color = textureOffset(t, float2(0.5), int2(1, 0)) + textureOffset(t, float2(0.5), -D, 1.0) + textureLodOffset(a, float3(0.5), 0.0, int2(-8, 7)) + textureOffset(v, float3(0.5), int3(1)) + float4(textureCompareOffset(s, float2(0.5), 0.5, D))"));
+    add("texelFetchOffset", frag("var @uniform t : sampler2D", "    f_color = texelFetchOffset(t, int2(4), 0, int2(1, -1))"));
+    add("textureOffset-varying", frag("var @uniform t : sampler2D\nvar @uniform u_d : int2", "    f_color = textureOffset(t, float2(0.5), u_d)"));
     add("unknown-builtin", frag("", "    f_color = float4(normalise(float3(1.0)), 1.0)"));
     // ---------------------------------------------------------------- builtin variables
     add("gl_Position-gl_VertexID-gl_InstanceID", "[vertex_program]\ndef vs {\n    gl_Position = float4(float(gl_VertexID), float(gl_InstanceID), float(gl_VertexIndex + gl_InstanceIndex), 1.0)\n}\n".to_string());
@@ -108,6 +110,9 @@ const NEEDLES: &[(&str, Target, &str, &str, bool)] = &[
     ("sampler-parameters", Target::Glsl330, ".330.frag", "vec4 get_t()", true),
     ("sampler-parameters", Target::Wgsl, ".wgsl", "fn get_t()", true),
     ("texture-in-vertex", Target::Glsl330, ".330.vert", "textureLod(t", true),
+    ("textureOffset", Target::Glsl330, ".330.frag", "textureOffset(s, vec3(vec2(0.5), 0.5), ivec2(1, 0))", true),
+    ("textureOffset", Target::Wgsl, ".wgsl", "vec2<i32>(-1i, 0i)", true),
+    ("texelFetchOffset", Target::Wgsl, ".wgsl", "+ vec2<i32>(1i, -1i)", true),
     ("texture-in-vertex", Target::Wgsl, ".wgsl", "textureSampleLevel(t", true),
     ("gl_PointSize", Target::Glsl330, ".330.vert", "gl_PointSize =", true),
     ("gl_PointSize", Target::Wgsl, ".wgsl", "point", false),

@@ -16,7 +16,7 @@ use crate::syntax::ast::{BinaryOp, UnaryOp};
 /// A texture call with its image left open (so one call on an array of
 /// samplers can be applied to each element).
 enum TexOp {
-    Sample { coordinate: Handle<E>, array_index: Option<Handle<E>>, depth_ref: Option<Handle<E>>, level: naga::SampleLevel },
+    Sample { coordinate: Handle<E>, array_index: Option<Handle<E>>, depth_ref: Option<Handle<E>>, level: naga::SampleLevel, offset: Option<Handle<E>> },
     Load { coordinate: Handle<E>, array_index: Option<Handle<E>>, level: Handle<E> },
     Size { level: Handle<E> },
 }
@@ -786,7 +786,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
 
     fn builtin(&mut self, b: Builtin, args: &[Expr], ret: &Ty, s: crate::source::Span, block: &mut Block) -> Handle<E> {
         use naga::MathFunction as Mf;
-        if matches!(b, Builtin::Texture | Builtin::TextureLod | Builtin::TextureGrad | Builtin::TextureCompare | Builtin::TextureProj | Builtin::TexelFetch | Builtin::TextureSize) {
+        if b.is_texture() {
             return self.texture(b, args, ret, s, block);
         }
         let mut hs: Vec<Handle<E>> = args.iter().map(|a| self.expr(a, block)).collect();
@@ -837,8 +837,15 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
         };
         let GlobalSlot::Sampler { first, count } = self.m.globals[g] else { unreachable!("sema checks the sampler argument") };
         let GlobalKind::Sampler { kind, .. } = self.m.p.globals[g].kind else { unreachable!("sema checks the sampler argument") };
-        let rest: Vec<Handle<E>> = args[1..].iter().map(|a| self.expr(a, block)).collect();
-        let op = self.texture_op(b, kind, &rest, args, s);
+        // An `...Offset` call: the call it offsets, with the offset (a
+        // constant, checked by sema) as a const-expression as naga wants.
+        let (b, offset_at) = match b.without_offset() {
+            Some((base, at)) => (base, Some(at)),
+            None => (b, None),
+        };
+        let rest: Vec<Handle<E>> = args.iter().enumerate().skip(1).filter(|(i, _)| Some(*i) != offset_at).map(|(_, a)| self.expr(a, block)).collect();
+        let offset = offset_at.map(|at| self.texel_offset(&args[at], s));
+        let op = self.texture_op(b, kind, &rest, offset, args, s);
         if let Some(k) = constant {
             let (image, sampler) = self.m.sampler_elems[first + k.min(count - 1) as usize];
             return self.texture_apply(&op, kind, image, sampler, ret, s);
@@ -870,9 +877,18 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
         self.append(E::Load { pointer: ptr }, s)
     }
 
+    /// A texel offset as the const-expression naga wants: a vector of
+    /// literals (sema checked that `e` is a constant in range).
+    fn texel_offset(&mut self, e: &Expr, s: crate::source::Span) -> Handle<E> {
+        let ks = e.const_ints(&self.m.p.consts).expect("sema checks that a texel offset is constant");
+        let components: Vec<Handle<E>> = ks.iter().map(|&k| self.literal(naga::Literal::I32(k as i32), s)).collect();
+        let ty = self.m.ty(&e.ty);
+        self.append(E::Compose { ty, components }, s)
+    }
+
     /// The image-independent part of a texture call: coordinates, level,
-    /// reference depth.
-    fn texture_op(&mut self, b: Builtin, kind: crate::lower::SamplerKind, rest: &[Handle<E>], args: &[Expr], s: crate::source::Span) -> TexOp {
+    /// reference depth, texel offset.
+    fn texture_op(&mut self, b: Builtin, kind: crate::lower::SamplerKind, rest: &[Handle<E>], offset: Option<Handle<E>>, args: &[Expr], s: crate::source::Span) -> TexOp {
         let f32s = Ty::Scalar(Scalar::Float);
         match b {
             Builtin::Texture | Builtin::TextureLod | Builtin::TextureCompare | Builtin::TextureProj | Builtin::TextureGrad => {
@@ -911,17 +927,24 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
                     _ if self.vertex_lod => naga::SampleLevel::Zero,
                     _ => naga::SampleLevel::Auto,
                 };
-                TexOp::Sample { coordinate, array_index, depth_ref, level }
+                TexOp::Sample { coordinate, array_index, depth_ref, level, offset }
             }
             Builtin::TexelFetch => {
-                if kind.is_array() {
+                let (coordinate, array_index) = if kind.is_array() {
                     let c = rest[0];
                     let xy = self.swizzle(c, &[0, 1], s);
-                    let layer = self.append(E::AccessIndex { base: c, index: 2 }, s);
-                    TexOp::Load { coordinate: xy, array_index: Some(layer), level: rest[1] }
+                    (xy, Some(self.append(E::AccessIndex { base: c, index: 2 }, s)))
                 } else {
-                    TexOp::Load { coordinate: rest[0], array_index: None, level: rest[1] }
-                }
+                    (rest[0], None)
+                };
+                // Loads take no offset in WGSL: the texel `offset` away is
+                // the one at coordinate + offset, which is what GLSL's
+                // texelFetchOffset reads.
+                let coordinate = match offset {
+                    Some(o) => self.append(E::Binary { op: naga::BinaryOperator::Add, left: coordinate, right: o }, s),
+                    None => coordinate,
+                };
+                TexOp::Load { coordinate, array_index, level: rest[1] }
             }
             _ => TexOp::Size { level: rest[0] },
         }
@@ -939,7 +962,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
     ) -> Handle<E> {
         let img = self.append_plain(E::GlobalVariable(image), s);
         match op {
-            TexOp::Sample { coordinate, array_index, depth_ref, level } => {
+            TexOp::Sample { coordinate, array_index, depth_ref, level, offset } => {
                 let smp = self.append_plain(E::GlobalVariable(sampler), s);
                 let e = E::ImageSample {
                     image: img,
@@ -947,7 +970,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
                     gather: None,
                     coordinate: *coordinate,
                     array_index: *array_index,
-                    offset: None,
+                    offset: *offset,
                     level: *level,
                     depth_ref: *depth_ref,
                     clamp_to_edge: false,

@@ -48,6 +48,39 @@ pub enum Builtin {
     TextureProj,
     TexelFetch,
     TextureSize,
+    /// `textureOffset(s, uv, offset[, bias])`, `textureLodOffset(s, uv,
+    /// lod, offset)`, `textureCompareOffset(s, uv, ref, offset)`,
+    /// `texelFetchOffset(s, icoord, lod, offset)` (GLSL's argument
+    /// order): the call without `Offset`, sampling `offset` texels away (a
+    /// constant `int2`, `int3` for 3D, each component in [-8, 7]).
+    TextureOffset,
+    TextureLodOffset,
+    TextureCompareOffset,
+    TexelFetchOffset,
+}
+
+/// The range every target guarantees for a texel offset (GLSL's minimum
+/// `MIN/MAX_PROGRAM_TEXEL_OFFSET`, WGSL's rule for `offset`).
+pub const TEXEL_OFFSET_RANGE: std::ops::RangeInclusive<i64> = -8..=7;
+
+impl Builtin {
+    /// A texture function (checked by `check_texture_call`, lowered per
+    /// sampler).
+    pub fn is_texture(self) -> bool {
+        TEXTURE_FUNCTIONS.iter().any(|(_, b)| *b == self)
+    }
+
+    /// For an `...Offset` texture function: the function it offsets, and
+    /// which argument is the offset.
+    pub fn without_offset(self) -> Option<(Builtin, usize)> {
+        match self {
+            Builtin::TextureOffset => Some((Builtin::Texture, 2)),
+            Builtin::TextureLodOffset => Some((Builtin::TextureLod, 3)),
+            Builtin::TextureCompareOffset => Some((Builtin::TextureCompare, 3)),
+            Builtin::TexelFetchOffset => Some((Builtin::TexelFetch, 3)),
+            _ => None,
+        }
+    }
 }
 
 /// One overload: argument patterns and result pattern.
@@ -161,6 +194,10 @@ pub const TEXTURE_FUNCTIONS: &[(&str, Builtin)] = &[
     ("textureProj", Builtin::TextureProj),
     ("texelFetch", Builtin::TexelFetch),
     ("textureSize", Builtin::TextureSize),
+    ("textureOffset", Builtin::TextureOffset),
+    ("textureLodOffset", Builtin::TextureLodOffset),
+    ("textureCompareOffset", Builtin::TextureCompareOffset),
+    ("texelFetchOffset", Builtin::TexelFetchOffset),
 ];
 
 /// Names of GLSL functions the DSL deliberately lacks, with the reason and
@@ -169,7 +206,6 @@ pub const UNSUPPORTED: &[(&str, &str)] = &[
     ("inverse", "WGSL has no matrix inverse; compute the inverse on the host and pass it as a uniform"),
     ("isnan", "WGSL has no isnan, and GPU compilers may assume that values are never NaN"),
     ("isinf", "WGSL has no isinf; compare against a large bound instead"),
-    ("textureOffset", "not supported yet; add the offset to the coordinate (offset / float2(textureSize(s, 0)))"),
     ("textureGather", "not supported yet"),
 ];
 

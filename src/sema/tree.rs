@@ -230,6 +230,49 @@ impl Expr {
     }
 }
 
+impl Expr {
+    /// The components of an integer scalar or vector known when compiling:
+    /// a literal, a named constant, a negated one, or a constructor of
+    /// those (`int2(1, -1)`, `int2(2)`).
+    pub fn const_ints(&self, consts: &[Const]) -> Option<arrayvec::ArrayVec<i64, 4>> {
+        let mut out = arrayvec::ArrayVec::new();
+        match &self.kind {
+            ExprKind::Const(c) => match &consts[*c].value {
+                ConstValue::Composite(parts) => {
+                    for p in parts {
+                        match p {
+                            ConstValue::Int(k) => out.try_push(*k).ok()?,
+                            _ => return None,
+                        }
+                    }
+                }
+                ConstValue::Int(k) => out.push(*k),
+                _ => return None,
+            },
+            ExprKind::Unary(UnaryOp::Neg, inner) => {
+                for k in inner.const_ints(consts)? {
+                    out.push(k.checked_neg()?);
+                }
+            }
+            ExprKind::Construct(parts) => {
+                for p in parts {
+                    for k in p.const_ints(consts)? {
+                        out.try_push(k).ok()?;
+                    }
+                }
+                // A splat: one scalar for every component.
+                if let (Ty::Vector(_, n), 1) = (&self.ty, out.len()) {
+                    let k = out[0];
+                    out.clear();
+                    out.extend(std::iter::repeat_n(k, *n as usize));
+                }
+            }
+            _ => out.push(self.const_int(consts)?),
+        }
+        Some(out)
+    }
+}
+
 /// A swizzle's component indices (0-3), held inline: no allocation.
 pub type Components = arrayvec::ArrayVec<u8, 4>;
 

@@ -300,3 +300,21 @@ pub fn shadow_scene_with_sampler_parameter() -> String {
     }
     text
 }
+
+/// `shaders/shadow.das` with its 3x3 PCF loop (`uv + float2(x, y) * step`,
+/// one texel a step) unrolled into nine `textureCompareOffset` calls: the
+/// same taps, found by the sampler's offset instead of the coordinate.
+pub fn shadow_scene_with_texel_offsets() -> String {
+    let scene = include_str!("../../shaders/shadow.das");
+    let start = scene.find("def sun_visibility(").expect("shaders/shadow.das has sun_visibility");
+    let end = start + scene[start..].find("\n}\n").expect("sun_visibility ends") + 3;
+    assert!(scene.contains("#define PCF_TAPS_RADIUS 1\n"), "shaders/shadow.das changed: update shadow_scene_with_texel_offsets");
+    let mut body = String::from("def sun_visibility(uv : float2; depth : float) : float {\n    var lit = 0.0\n");
+    for y in -1..=1 {
+        for x in -1..=1 {
+            body.push_str(&format!("    lit += textureCompareOffset(shadow_map, uv, depth, int2({x}, {y}))\n"));
+        }
+    }
+    body.push_str("    return lit / 9.0\n}\n");
+    format!("{}{body}{}", &scene[..start], &scene[end..])
+}

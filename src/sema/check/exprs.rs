@@ -503,7 +503,14 @@ impl<'a, 'd> Checker<'a, 'd> {
         Expr { kind: ExprKind::Construct(xs), ty, span }
     }
 
-    pub(super) fn check_texture_call(&mut self, cx: &mut FnCtx<'a>, b: Builtin, name: &str, xs: Vec<Expr>, span: Span) -> Expr {
+    pub(super) fn check_texture_call(&mut self, cx: &mut FnCtx<'a>, called: Builtin, name: &str, xs: Vec<Expr>, span: Span) -> Expr {
+        // An `...Offset` call is checked as the call it offsets, its
+        // offset argument aside.
+        let (b, offset_at) = match called.without_offset() {
+            Some((base, at)) => (base, Some(at)),
+            None => (called, None),
+        };
+        let offset = offset_at.is_some();
         let Some(first) = xs.first() else {
             self.diags.push(Diagnostic::error(format!("wrong number of arguments: `{name}` takes a sampler first"), span));
             return err_expr(span);
@@ -586,25 +593,64 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
             _ => unreachable!("only texture builtins reach check_texture_call"),
         };
-        let given: Vec<Ty> = xs[1..].iter().map(|x| x.ty.clone()).collect();
-        if !sigs.contains(&given) {
+        let offset_ty = Ty::Vector(Scalar::Int, if kind.dim() == naga::ImageDimension::D3 { 3 } else { 2 });
+        if offset {
+            if let Some(why) = match kind {
+                SamplerKind::SamplerCube | SamplerKind::SamplerCubeShadow => Some("cube maps have no texel offsets"),
+                // naga's GLSL 330 writer cannot write it.
+                SamplerKind::Sampler2DArrayShadow => Some("GLSL 330 has no offset compare on shadow array samplers"),
+                _ => None,
+            } {
+                self.diags.push(Diagnostic::error(format!("`{name}` does not support `{}`: {why}", kind.name()), span));
+                return err_expr(span);
+            }
+        }
+        let given: Vec<Ty> = xs.iter().enumerate().skip(1).filter(|(i, _)| Some(*i) != offset_at).map(|(_, x)| x.ty.clone()).collect();
+        if !sigs.contains(&given) || offset_at.is_some_and(|at| xs.len() <= at) {
             let show_sig = |s: &Vec<Ty>| {
                 let mut parts = vec![kind.name().to_string()];
                 parts.extend(s.iter().map(|t| self.show(t)));
+                if let Some(at) = offset_at {
+                    parts.insert(at, self.show(&offset_ty));
+                }
                 format!("{name}({})", parts.join(", "))
             };
             let expected: Vec<String> = sigs.iter().map(show_sig).collect();
             let given_s: Vec<String> = xs.iter().map(|x| self.show(&x.ty)).collect();
-            let what = if sigs.iter().all(|s| s.len() != given.len()) { "wrong number of arguments" } else { "type mismatch" };
+            let what = if offset_at.is_some_and(|at| xs.len() <= at) || sigs.iter().all(|s| s.len() != given.len()) { "wrong number of arguments" } else { "type mismatch" };
             let d = Diagnostic::error(format!("{what}: `{name}` cannot take ({})", given_s.join(", ")), span).with_note(format!("expected one of:\n  {}", expected.join("\n  ")));
             self.diags.push(d);
             return err_expr(span);
+        }
+        if let Some(at) = offset_at {
+            let last = &xs[at];
+            if last.ty != offset_ty {
+                let d = Diagnostic::error(format!("type mismatch: the offset of `{name}` on a `{}` is an `{}`, found `{}`", kind.name(), self.show(&offset_ty), self.show(&last.ty)), last.span);
+                self.diags.push(d);
+                return err_expr(span);
+            }
+            match last.const_ints(&self.out.consts) {
+                None => {
+                    let d = Diagnostic::error(format!("the offset of `{name}` must be known when compiling"), last.span)
+                        .with_label("not a constant")
+                        .with_note("help: write it as `int2(1, -1)` or a top-level `let`; add a varying offset to the coordinate instead");
+                    self.diags.push(d);
+                    return err_expr(span);
+                }
+                Some(ks) if ks.iter().any(|k| !builtins::TEXEL_OFFSET_RANGE.contains(k)) => {
+                    let d = Diagnostic::error(format!("texel offset {:?} is out of range", ks.as_slice()), last.span)
+                        .with_note("every target guarantees offsets from -8 to 7 in each component");
+                    self.diags.push(d);
+                    return err_expr(span);
+                }
+                Some(_) => {}
+            }
         }
         if matches!(b, Builtin::Texture | Builtin::TextureProj | Builtin::TextureCompare) {
             // Allowed in vertex entry points too: lowered with level 0 there.
             cx.implicit_lod = true;
         }
-        Expr { kind: ExprKind::Builtin(b, xs), ty: ret, span }
+        Expr { kind: ExprKind::Builtin(called, xs), ty: ret, span }
     }
 
     pub(super) fn sampler_name(&self, cx: &FnCtx<'a>, e: &Expr) -> String {
