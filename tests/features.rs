@@ -77,7 +77,7 @@ fn snippets() -> BTreeMap<&'static str, String> {
     add("texture-functions", frag("var @uniform t : sampler2D\nvar @uniform s : sampler2DShadow\nvar @inout v_uv : float2", "    let a = texture(t, v_uv) + texture(t, v_uv, 1.0) + textureLod(t, v_uv, 2.0) + textureGrad(t, v_uv, dFdx(v_uv), dFdy(v_uv))\n    let b = textureProj(t, float3(v_uv, 2.0)) + textureProj(t, float4(v_uv, 0.0, 2.0)) + texelFetch(t, int2(1), 0)\n    let c = textureCompare(s, v_uv, 0.5) + textureProj(s, float4(v_uv, 0.5, 1.0))\n    let d = textureSize(t, 0)\n    f_color = a + b + float4(c + float(d.x))"));
     add("texture-in-vertex", vert("var @uniform t : sampler2D\nvar @uniform s : sampler2DShadow\nvar @inout v_x : float", "    v_x = texture(t, float2(0.5)).x + texture(t, float2(0.5), 1.0).y + textureCompare(s, float2(0.5), 0.5)"));
     add("nonuniform-sampling", frag("var @uniform t : sampler2D\nvar @inout v_uv : float2", "    if (v_uv.x < 0.5) {\n        discard()\n    }\n    var c = float4(0.0)\n    while (c.x < 1.0) {\n        c += texture(t, v_uv + c.xy)\n    }\n    f_color = c"));
-    add("inverse", frag("var @uniform u_m : float4x4", "    f_color = inverse(u_m)[0]"));
+    add("inverse", frag("var @uniform u_m : float4x4\nvar @uniform u_n : float3x3", "    f_color = inverse(u_m)[0] + float4(inverse(u_n)[1], inverse(float2x2(2.0))[0].x)"));
     add("isnan-isinf", frag("var @uniform u_x : float", "    f_color = float4(isnan(u_x) ? 1.0 : 0.0)"));
     add("textureOffset", frag("let D = int2(1, 0)\nvar @uniform t : sampler2D\nvar @uniform s : sampler2DShadow\nvar @uniform a : sampler2DArray\nvar @uniform v : sampler3D", "    f_color = textureOffset(t, float2(0.5), int2(1, 0)) + textureOffset(t, float2(0.5), -D, 1.0) + textureLodOffset(a, float3(0.5), 0.0, int2(-8, 7)) + textureOffset(v, float3(0.5), int3(1)) + float4(textureCompareOffset(s, float2(0.5), 0.5, D))"));
     add("texelFetchOffset", frag("var @uniform t : sampler2D", "    f_color = texelFetchOffset(t, int2(4), 0, int2(1, -1))"));
@@ -110,6 +110,8 @@ const NEEDLES: &[(&str, Target, &str, &str, bool)] = &[
     ("sampler-parameters", Target::Glsl330, ".330.frag", "vec4 get_t()", true),
     ("sampler-parameters", Target::Wgsl, ".wgsl", "fn get_t()", true),
     ("texture-in-vertex", Target::Glsl330, ".330.vert", "textureLod(t", true),
+    ("inverse", Target::Wgsl, ".wgsl", "fn inverse_4x4_(", true),
+    ("inverse", Target::Glsl330, ".330.frag", "inverse(", false),
     ("textureOffset", Target::Glsl330, ".330.frag", "textureOffset(s, vec3(vec2(0.5), 0.5), ivec2(1, 0))", true),
     ("textureOffset", Target::Wgsl, ".wgsl", "vec2<i32>(-1i, 0i)", true),
     ("texelFetchOffset", Target::Wgsl, ".wgsl", "+ vec2<i32>(1i, -1i)", true),

@@ -824,6 +824,13 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
             }
             Builtin::Derivative(axis, ctrl) => self.append(E::Derivative { axis, ctrl, expr: hs[0] }, s),
             Builtin::Bitcast(to) => self.append(E::As { expr: hs[0], kind: naga_scalar(to).kind, convert: None }, s),
+            Builtin::Inverse => {
+                let Ty::Matrix(n, _) = *ret else { unreachable!("sema checks that `inverse` takes a square matrix") };
+                let function = super::inverse::function(self.m, n);
+                let result = self.append_plain(E::CallResult(function), s);
+                self.push(block, Statement::Call { function, arguments: vec![hs[0]], result: Some(result) }, s);
+                result
+            }
             _ => unreachable!("texture builtins handled above"),
         }
     }

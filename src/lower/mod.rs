@@ -21,6 +21,7 @@
 #[cfg(debug_assertions)]
 mod fault;
 mod func;
+mod inverse;
 mod module;
 
 use crate::diag::Diagnostic;

@@ -46,6 +46,8 @@ pub struct ModuleBuilder<'p> {
     /// Helpers with sampler parameters, one per set of samplers they are
     /// called with (few: a list).
     pub specialised: Vec<Specialised>,
+    /// `inverse_2x2` .. `inverse_4x4`, once used (`lower::inverse`).
+    pub inverse_functions: [Option<Handle<naga::Function>>; 3],
     /// The resources, for the interface; empty in a GL module.
     pub resources: Vec<Resource>,
     /// Indices into `resources` per sema global (one per element of a
@@ -121,6 +123,7 @@ impl<'p> ModuleBuilder<'p> {
             functions: Vec::with_capacity(p.functions.len()),
             vertex_functions: Vec::with_capacity(p.functions.len()),
             specialised: Vec::new(),
+            inverse_functions: [None; 3],
             resources: Vec::new(),
             resource_of: Vec::with_capacity(p.globals.len()),
             sampler_elems: Vec::new(),

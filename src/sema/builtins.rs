@@ -57,6 +57,9 @@ pub enum Builtin {
     TextureLodOffset,
     TextureCompareOffset,
     TexelFetchOffset,
+    /// `inverse(m)` of a square matrix: a helper function on every target
+    /// (WGSL has none).
+    Inverse,
 }
 
 /// The range every target guarantees for a texel offset (GLSL's minimum
@@ -154,6 +157,7 @@ const TABLE: &[Entry] = &[
     Entry { name: "faceforward", builtin: Builtin::Math(Mf::FaceForward), sigs: sigs!["G" <- ["G", "G", "G"]] },
     Entry { name: "transpose", builtin: Builtin::Math(Mf::Transpose), sigs: sigs!["M" <- ["M"]] },
     Entry { name: "determinant", builtin: Builtin::Math(Mf::Determinant), sigs: sigs!["f" <- ["M"]] },
+    Entry { name: "inverse", builtin: Builtin::Inverse, sigs: sigs!["M" <- ["M"]] },
     Entry { name: "any", builtin: Builtin::Any, sigs: sigs!["b" <- ["B"]] },
     Entry { name: "all", builtin: Builtin::All, sigs: sigs!["b" <- ["B"]] },
     Entry { name: "not", builtin: Builtin::Not, sigs: sigs!["B" <- ["B"]] },
@@ -203,7 +207,6 @@ pub const TEXTURE_FUNCTIONS: &[(&str, Builtin)] = &[
 /// Names of GLSL functions the DSL deliberately lacks, with the reason and
 /// what to do instead.
 pub const UNSUPPORTED: &[(&str, &str)] = &[
-    ("inverse", "WGSL has no matrix inverse; compute the inverse on the host and pass it as a uniform"),
     ("isnan", "WGSL has no isnan, and GPU compilers may assume that values are never NaN"),
     ("isinf", "WGSL has no isinf; compare against a large bound instead"),
     ("textureGather", "not supported yet"),

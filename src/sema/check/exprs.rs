@@ -390,8 +390,8 @@ impl<'a, 'd> Checker<'a, 'd> {
                 if matches!(b, Builtin::Derivative(..)) {
                     cx.fragment_only.get_or_insert((span, "a derivative"));
                 }
-                if b == Builtin::Math(naga::MathFunction::Determinant) && !matches!(xs[0].ty, Ty::Matrix(c, r) if c == r) {
-                    self.diags.push(Diagnostic::error("`determinant` needs a square matrix", span));
+                if matches!(b, Builtin::Math(naga::MathFunction::Determinant) | Builtin::Inverse) && !matches!(xs[0].ty, Ty::Matrix(c, r) if c == r) {
+                    self.diags.push(Diagnostic::error(format!("`{name}` needs a square matrix"), span));
                     return err_expr(span);
                 }
                 Expr { kind: ExprKind::Builtin(b, xs), ty: ret, span }

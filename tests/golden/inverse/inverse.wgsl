@@ -1,0 +1,74 @@
+diagnostic(off, derivative_uniformity);
+
+struct inverse_vs_out {
+    @builtin(position) gl_Position: vec4<f32>,
+    @location(0) v_normal: vec3<f32>,
+    @location(1) v_view_pos: vec3<f32>,
+}
+
+struct inverse_fs_out {
+    @location(0) f_color: vec4<f32>,
+}
+
+@group(0) @binding(0) 
+var<uniform> u_model: mat4x4<f32>;
+@group(0) @binding(1) 
+var<uniform> u_view_proj: mat4x4<f32>;
+
+fn inverse_3x3_(m: mat3x3<f32>) -> mat3x3<f32> {
+    let _e5 = cross(m[1], m[2]);
+    return (transpose(mat3x3<f32>(_e5, cross(m[2], m[0]), cross(m[0], m[1]))) * (1f / dot(m[0], _e5)));
+}
+
+fn inverse_4x4_(m_1: mat4x4<f32>) -> mat4x4<f32> {
+    let _e6 = m_1[0].xyz;
+    let _e7 = m_1[1].xyz;
+    let _e8 = m_1[2].xyz;
+    let _e9 = m_1[3].xyz;
+    let _e14 = cross(_e6, _e7);
+    let _e15 = cross(_e8, _e9);
+    let _e18 = ((_e6 * m_1[1].w) - (_e7 * m_1[0].w));
+    let _e21 = ((_e8 * m_1[3].w) - (_e9 * m_1[2].w));
+    let _e25 = (1f / (dot(_e14, _e21) + dot(_e15, _e18)));
+    let _e26 = (_e14 * _e25);
+    let _e27 = (_e15 * _e25);
+    let _e28 = (_e18 * _e25);
+    let _e29 = (_e21 * _e25);
+    return transpose(mat4x4<f32>(vec4<f32>((cross(_e7, _e29) + (_e27 * m_1[1].w)), -(dot(_e7, _e27))), vec4<f32>((cross(_e29, _e6) - (_e27 * m_1[0].w)), dot(_e6, _e27)), vec4<f32>((cross(_e9, _e28) + (_e26 * m_1[3].w)), -(dot(_e9, _e26))), vec4<f32>((cross(_e28, _e8) - (_e26 * m_1[2].w)), dot(_e8, _e26))));
+}
+
+@vertex 
+fn inverse_vs(@location(0) a_pos: vec3<f32>, @location(1) a_normal: vec3<f32>) -> inverse_vs_out {
+    var v_normal: vec3<f32>;
+    var v_view_pos: vec3<f32>;
+    var gl_Position: vec4<f32>;
+
+    let _e4 = u_model[0];
+    let _e8 = u_model[1];
+    let _e12 = u_model[2];
+    let upper = mat3x3<f32>(_e4.xyz, _e8.xyz, _e12.xyz);
+    let _e15 = inverse_3x3_(upper);
+    let normal_matrix = transpose(_e15);
+    v_normal = normalize((normal_matrix * a_normal));
+    let _e21 = u_view_proj;
+    let _e23 = u_model;
+    let clip = (_e21 * (_e23 * vec4<f32>(a_pos, 1f)));
+    let _e29 = u_view_proj;
+    let _e30 = inverse_4x4_(_e29);
+    let world = (_e30 * clip);
+    v_view_pos = (world.xyz / vec3(world.w));
+    gl_Position = clip;
+    let _e39 = gl_Position;
+    let _e50 = v_normal;
+    let _e52 = v_view_pos;
+    return inverse_vs_out(vec4<f32>(_e39.x, -(_e39.y), ((_e39.z + _e39.w) * 0.5f), _e39.w), _e50, _e52);
+}
+
+@fragment 
+fn inverse_fs(@location(0) v_normal_1: vec3<f32>) -> inverse_fs_out {
+    var f_color: vec4<f32>;
+
+    f_color = vec4<f32>(((v_normal_1 * 0.5f) + vec3(0.5f)), 1f);
+    let _e10 = f_color;
+    return inverse_fs_out(_e10);
+}
