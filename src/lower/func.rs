@@ -846,10 +846,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
         let GlobalKind::Sampler { kind, .. } = self.m.p.globals[g].kind else { unreachable!("sema checks the sampler argument") };
         // An `...Offset` call: the call it offsets, with the offset (a
         // constant, checked by sema) as a const-expression as naga wants.
-        let (b, offset_at) = match b.without_offset() {
-            Some((base, at)) => (base, Some(at)),
-            None => (b, None),
-        };
+        let (b, offset_at) = b.split_offset();
         let rest: Vec<Handle<E>> = args.iter().enumerate().skip(1).filter(|(i, _)| Some(*i) != offset_at).map(|(_, a)| self.expr(a, block)).collect();
         let offset = offset_at.map(|at| self.texel_offset(&args[at], s));
         let op = self.texture_op(b, kind, &rest, offset, args, s);

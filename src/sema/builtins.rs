@@ -73,15 +73,15 @@ impl Builtin {
         TEXTURE_FUNCTIONS.iter().any(|(_, b)| *b == self)
     }
 
-    /// For an `...Offset` texture function: the function it offsets, and
-    /// which argument is the offset.
-    pub fn without_offset(self) -> Option<(Builtin, usize)> {
+    /// The function an `...Offset` texture function offsets, and which
+    /// argument is the offset; any other builtin as it is, with none.
+    pub fn split_offset(self) -> (Builtin, Option<usize>) {
         match self {
-            Builtin::TextureOffset => Some((Builtin::Texture, 2)),
-            Builtin::TextureLodOffset => Some((Builtin::TextureLod, 3)),
-            Builtin::TextureCompareOffset => Some((Builtin::TextureCompare, 3)),
-            Builtin::TexelFetchOffset => Some((Builtin::TexelFetch, 3)),
-            _ => None,
+            Builtin::TextureOffset => (Builtin::Texture, Some(2)),
+            Builtin::TextureLodOffset => (Builtin::TextureLod, Some(3)),
+            Builtin::TextureCompareOffset => (Builtin::TextureCompare, Some(3)),
+            Builtin::TexelFetchOffset => (Builtin::TexelFetch, Some(3)),
+            b => (b, None),
         }
     }
 }

@@ -506,11 +506,7 @@ impl<'a, 'd> Checker<'a, 'd> {
     pub(super) fn check_texture_call(&mut self, cx: &mut FnCtx<'a>, called: Builtin, name: &str, xs: Vec<Expr>, span: Span) -> Expr {
         // An `...Offset` call is checked as the call it offsets, its
         // offset argument aside.
-        let (b, offset_at) = match called.without_offset() {
-            Some((base, at)) => (base, Some(at)),
-            None => (called, None),
-        };
-        let offset = offset_at.is_some();
+        let (b, offset_at) = called.split_offset();
         let Some(first) = xs.first() else {
             self.diags.push(Diagnostic::error(format!("wrong number of arguments: `{name}` takes a sampler first"), span));
             return err_expr(span);
@@ -594,7 +590,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             _ => unreachable!("only texture builtins reach check_texture_call"),
         };
         let offset_ty = Ty::Vector(Scalar::Int, if kind.dim() == naga::ImageDimension::D3 { 3 } else { 2 });
-        if offset {
+        if offset_at.is_some() {
             if let Some(why) = match kind {
                 SamplerKind::SamplerCube | SamplerKind::SamplerCubeShadow => Some("cube maps have no texel offsets"),
                 // naga's GLSL 330 writer cannot write it.
@@ -606,7 +602,8 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
         }
         let given: Vec<Ty> = xs.iter().enumerate().skip(1).filter(|(i, _)| Some(*i) != offset_at).map(|(_, x)| x.ty.clone()).collect();
-        if !sigs.contains(&given) || offset_at.is_some_and(|at| xs.len() <= at) {
+        let offset_missing = offset_at.is_some_and(|at| xs.len() <= at);
+        if !sigs.contains(&given) || offset_missing {
             let show_sig = |s: &Vec<Ty>| {
                 let mut parts = vec![kind.name().to_string()];
                 parts.extend(s.iter().map(|t| self.show(t)));
@@ -617,28 +614,28 @@ impl<'a, 'd> Checker<'a, 'd> {
             };
             let expected: Vec<String> = sigs.iter().map(show_sig).collect();
             let given_s: Vec<String> = xs.iter().map(|x| self.show(&x.ty)).collect();
-            let what = if offset_at.is_some_and(|at| xs.len() <= at) || sigs.iter().all(|s| s.len() != given.len()) { "wrong number of arguments" } else { "type mismatch" };
+            let what = if offset_missing || sigs.iter().all(|s| s.len() != given.len()) { "wrong number of arguments" } else { "type mismatch" };
             let d = Diagnostic::error(format!("{what}: `{name}` cannot take ({})", given_s.join(", ")), span).with_note(format!("expected one of:\n  {}", expected.join("\n  ")));
             self.diags.push(d);
             return err_expr(span);
         }
         if let Some(at) = offset_at {
-            let last = &xs[at];
-            if last.ty != offset_ty {
-                let d = Diagnostic::error(format!("type mismatch: the offset of `{name}` on a `{}` is an `{}`, found `{}`", kind.name(), self.show(&offset_ty), self.show(&last.ty)), last.span);
+            let off = &xs[at];
+            if off.ty != offset_ty {
+                let d = Diagnostic::error(format!("type mismatch: the offset of `{name}` on a `{}` is an `{}`, found `{}`", kind.name(), self.show(&offset_ty), self.show(&off.ty)), off.span);
                 self.diags.push(d);
                 return err_expr(span);
             }
-            match last.const_ints(&self.out.consts) {
+            match off.const_ints(&self.out.consts) {
                 None => {
-                    let d = Diagnostic::error(format!("the offset of `{name}` must be known when compiling"), last.span)
+                    let d = Diagnostic::error(format!("the offset of `{name}` must be known when compiling"), off.span)
                         .with_label("not a constant")
                         .with_note("help: write it as `int2(1, -1)` or a top-level `let`; add a varying offset to the coordinate instead");
                     self.diags.push(d);
                     return err_expr(span);
                 }
                 Some(ks) if ks.iter().any(|k| !builtins::TEXEL_OFFSET_RANGE.contains(k)) => {
-                    let d = Diagnostic::error(format!("texel offset {:?} is out of range", ks.as_slice()), last.span)
+                    let d = Diagnostic::error(format!("texel offset {:?} is out of range", ks.as_slice()), off.span)
                         .with_note("every target guarantees offsets from -8 to 7 in each component");
                     self.diags.push(d);
                     return err_expr(span);
