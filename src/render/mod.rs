@@ -1,6 +1,7 @@
 //! The wgpu runner: renders the tutorial's shadow scene from compiled
 //! shaders, headless, and checks it against a CPU reference.
 //!
+//! - [`tutorial`]: the tutorial scene's numbers (sizes, the sun's orbit, the camera);
 //! - [`scene`]: the host side (meshes, GL-convention matrices, uniform values);
 //! - [`interface`]: fits a program's reflection to the scene (every binding,
 //!   offset and attribute location the renderer uses comes from there);
@@ -8,7 +9,7 @@
 //! - [`reference`]: the CPU ray-cast reference with exact sun visibility;
 //! - [`image_ops`]: comparisons, shadow masks, PNG and GIF output;
 //! - [`hand`]: the hand-written WGSL port and its reflection;
-//! - `cli`: the `umbrac render` command.
+//! - `cli`: the `umbrac render` command (feature `cli`).
 //!
 //! ```no_run
 //! use umbrac::render::{hand, reference, image_ops, FrameParams, Renderer, Backend};
@@ -33,13 +34,11 @@ pub mod scene;
 pub mod setup;
 mod setup_gpu;
 pub mod techniques;
+pub mod tutorial;
 pub mod webgl;
 
 #[cfg(feature = "cli")]
 pub mod cli;
-#[cfg(feature = "cli")]
-pub mod setup_cli;
-mod cli_consumers;
 
 pub use gpu::{Backend, Program, RenderError, Renderer, ShaderCode, ShaderSet, Via};
 pub use scene::{FrameParams, View};

@@ -7,26 +7,7 @@ use glam::camera::rh::proj::opengl;
 use glam::camera::rh::view::look_at_mat4;
 use glam::{Mat4, Quat, Vec3};
 
-/// Half the floor's side: the floor spans [-5, 5] in x and z at y = 0.
-pub const FLOOR_HALF: f32 = 5.0;
-/// Height of the cube's centre.
-pub const CUBE_HOVER: f32 = 1.5;
-/// Uniform scale of the [-1, 1] cube.
-pub const CUBE_SCALE: f32 = 0.55;
-/// Spin rate about [`cube_axis`], radians per second.
-pub const CUBE_SPIN: f32 = 0.7;
-/// Half-extent of the sun's orthographic box (x and y).
-pub const LIGHT_BOX: f32 = 4.0;
-pub const LIGHT_NEAR: f32 = 0.1;
-pub const LIGHT_FAR: f32 = 20.0;
-/// Distance of the sun's eye from the origin.
-pub const LIGHT_DISTANCE: f32 = 8.0;
-pub const CAMERA_FOVY_DEG: f32 = 50.0;
-pub const CAMERA_NEAR: f32 = 0.1;
-pub const CAMERA_FAR: f32 = 50.0;
-/// Background colour (linear RGB written straight to a UNORM target).
-pub const CLEAR: [f64; 3] = [0.04, 0.05, 0.09];
-pub const DEFAULT_SHADOW_SIZE: u32 = 1024;
+pub use super::tutorial::*;
 
 /// What a render produces.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
@@ -159,12 +140,6 @@ pub fn cube_axis() -> Vec3 {
 pub fn cube_model(t: f32) -> Mat4 {
     let rot = Quat::from_axis_angle(cube_axis(), t * CUBE_SPIN);
     Mat4::from_scale_rotation_translation(Vec3::splat(CUBE_SCALE), rot, Vec3::new(0.0, CUBE_HOVER, 0.0))
-}
-
-/// Unit vector from the scene towards the sun at time `t`.
-pub fn light_dir(t: f32) -> Vec3 {
-    let yaw = t * 0.6;
-    Vec3::new(yaw.cos(), 1.4, yaw.sin()).normalize()
 }
 
 pub fn camera_pos(t: f32) -> Vec3 {
@@ -343,6 +318,30 @@ impl UniformValue {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use glam::Vec4Swizzles;
+
+    #[test]
+    fn visible_floor_is_inside_the_floor() {
+        let f = Frame::at(2.0, 4.0 / 3.0);
+        let poly = crate::render::setup::visible_floor(Mat4::IDENTITY, f.proj * f.view);
+        assert!(poly.len() >= 3);
+        for p in poly {
+            assert!(p.x.abs() <= 5.0 + 1e-4 && p.z.abs() <= 5.0 + 1e-4 && p.y.abs() < 1e-5);
+        }
+    }
+
+    #[test]
+    fn tight_box_holds_the_cube() {
+        let setup = crate::render::setup::Setup::tuned();
+        let f = Frame::at(1.0, 4.0 / 3.0);
+        let (view, proj) = crate::render::setup::light_matrices(&setup, 1.0, f.cube_model, Mat4::IDENTITY, f.proj * f.view, 1024);
+        for c in crate::render::setup::cube_corners(f.cube_model) {
+            let clip = proj * view * c.extend(1.0);
+            let ndc = clip.xyz() / clip.w;
+            assert!(ndc.x.abs() < 1.0 && ndc.y.abs() < 1.0 && ndc.z.abs() <= 1.0, "{ndc}");
+        }
+    }
+
 
     #[test]
     fn cube_faces_wind_outwards() {

@@ -9,8 +9,6 @@
 //! scene's ([`super::scene`]). What differs per technique is here, and what
 //! each program binds comes from its reflection, by name.
 
-#[cfg(feature = "cli")]
-pub mod cli;
 pub mod reference;
 pub mod wgpu_host;
 #[cfg(feature = "gl")]

@@ -5,12 +5,12 @@ use std::time::Instant;
 
 use image::RgbaImage;
 
-use crate::render::cli::{BackendArg, RenderArgs, ViewArg};
+use super::args::{BackendArg, RenderArgs, ViewArg};
 use crate::render::gpu::{Backend, Renderer};
 use crate::render::image_ops;
 use crate::render::scene::FrameParams;
 
-use super::{reference, Technique};
+use crate::render::techniques::{reference, wgpu_host, Technique};
 
 /// Frames timed after the warm-up frame.
 const TIMED_FRAMES: u32 = 5;
@@ -60,7 +60,7 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         BackendArg::Vulkan | BackendArg::Gl => {
             let backend = if args.backend == BackendArg::Vulkan { Backend::Vulkan } else { Backend::Gl };
             let renderer = Renderer::new(backend).map_err(|e| e.to_string())?;
-            let host = super::wgpu_host::TechRenderer::new(&renderer);
+            let host = wgpu_host::TechRenderer::new(&renderer);
             let program = host.prepare(technique, &compiled)?;
             let (image, ms) = timed(|| host.draw(&program, &params))?;
             (image, ms, format!("wgpu {} on {}", backend.name(), renderer.adapter_name()))
@@ -68,11 +68,12 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         #[cfg(feature = "gl")]
         BackendArg::Gl330 | BackendArg::Gles300 => {
             use crate::render::gl::{GlApi, GlRenderer};
+            use crate::render::techniques::gl_host;
             let api = if args.backend == BackendArg::Gl330 { GlApi::Gl330 } else { GlApi::Gles300 };
             let r = GlRenderer::new(api).map_err(|e| e.to_string())?;
-            let program = super::gl_host::prepare(&r, technique, &compiled)?;
-            let result = timed(|| super::gl_host::draw(&r, &program, &params));
-            super::gl_host::release(&r, program);
+            let program = gl_host::prepare(&r, technique, &compiled)?;
+            let result = timed(|| gl_host::draw(&r, &program, &params));
+            gl_host::release(&r, program);
             let (image, ms) = result?;
             (image, ms, format!("{} on {}", api.name(), r.adapter_name()))
         }

@@ -2,7 +2,7 @@
 //! docs/performance.md): `--quality`, and the individual choices that
 //! override it.
 
-use super::setup::{DepthFormat, Filter, Fit, Quality, Setup};
+use crate::render::setup::{DepthFormat, Filter, Fit, Quality, Setup};
 
 #[derive(Debug, Clone, Copy, PartialEq, Eq, clap::ValueEnum)]
 pub enum QualityArg {

@@ -2,10 +2,11 @@
 
 use std::path::Path;
 
-use super::cli::{compile_program, RenderArgs};
-use super::consumers::{self, Consumer, Programs, Status};
-use super::image_ops;
-use super::scene::FrameParams;
+use super::args::RenderArgs;
+use super::program::compile_program;
+use crate::render::consumers::{self, Consumer, Programs, Status};
+use crate::render::image_ops;
+use crate::render::scene::FrameParams;
 use crate::Target;
 
 /// The difference (out of 255) above which the comparison counts a pixel.
@@ -24,11 +25,12 @@ fn compile(file: Option<&Path>, targets: Vec<Target>) -> Result<(String, crate::
 
 #[cfg(feature = "gl")]
 pub(super) fn render_gl(args: &RenderArgs, params: FrameParams) -> Result<(), String> {
-    use super::cli::{frame_times, write_frames, BackendArg};
-    use super::gl::{GlApi, GlRenderer};
-    use super::glsl_set::GlslSet;
+    use super::args::BackendArg;
+    use super::frames::{frame_times, write_frames};
+    use crate::render::gl::{GlApi, GlRenderer};
+    use crate::render::glsl_set::GlslSet;
     let api = if args.backend == BackendArg::Gl330 { GlApi::Gl330 } else { GlApi::Gles300 };
-    if args.via != super::cli::ViaArg::Wgsl {
+    if args.via != super::args::ViaArg::Wgsl {
         return Err(format!("--via picks what wgpu gets; --backend {} runs the {} files", api.name(), api.target().name()));
     }
     let (name, compiled) = compile(args.file.as_deref(), vec![api.target()])?;
