@@ -15,7 +15,7 @@
 use std::fmt;
 use std::path::{Path, PathBuf};
 
-use crate::Artifact;
+use crate::target::Artifact;
 
 /// Environment variable that turns a check into a re-bless.
 pub const BLESS_ENV: &str = "UMBRAC_BLESS";

@@ -26,6 +26,7 @@ pub mod output;
 pub mod sema;
 pub mod source;
 pub mod syntax;
+pub mod target;
 
 #[cfg(feature = "render")]
 pub mod render;
@@ -36,33 +37,7 @@ pub use diag::{Diagnostic, Diagnostics, Severity};
 pub use emit::reflect_types::Reflection;
 pub use lower::{Conventions, Lowered};
 pub use source::{SourceMap, Span};
-
-/// An output language.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub enum Target {
-    Glsl330,
-    Gles300,
-    Wgsl,
-    Spirv,
-}
-
-impl Target {
-    pub const ALL: [Target; 4] = [Target::Glsl330, Target::Gles300, Target::Wgsl, Target::Spirv];
-
-    /// The name used on the command line and in the reflection manifest.
-    pub fn name(self) -> &'static str {
-        match self {
-            Target::Glsl330 => "glsl330",
-            Target::Gles300 => "gles300",
-            Target::Wgsl => "wgsl",
-            Target::Spirv => "spirv",
-        }
-    }
-
-    pub fn from_name(s: &str) -> Option<Target> {
-        Target::ALL.into_iter().find(|t| t.name() == s)
-    }
-}
+pub use target::{Artifact, Target};
 
 /// What to compile and how.
 #[derive(Clone, Debug, Default)]
@@ -91,25 +66,6 @@ impl Options {
             t.dedup();
             t
         }
-    }
-}
-
-/// One output file's name and bytes.
-#[derive(Clone, Debug)]
-pub struct Artifact {
-    /// File name without directory: `main_vs.330.vert`, `shadow.wgsl`, ...
-    pub file_name: String,
-    /// `None` for the reflection manifest.
-    pub target: Option<Target>,
-    /// The entry point, for per-entry-point outputs (the GLSL files).
-    pub entry: Option<String>,
-    pub contents: Vec<u8>,
-}
-
-impl Artifact {
-    /// The contents as text (SPIR-V is binary; this is lossy for it).
-    pub fn text(&self) -> std::borrow::Cow<'_, str> {
-        String::from_utf8_lossy(&self.contents)
     }
 }
 
@@ -165,8 +121,8 @@ pub fn compile_file(path: &Path, opts: &Options) -> Compilation {
     let name = path.display().to_string();
     match syntax::read_source(path) {
         Ok(text) => {
-            let root = sources.add(name, Some(path.to_path_buf()), text, None);
-            on_compiler_stack(move || run(sources, root, opts))
+            let root = sources.add(name.clone(), Some(path.to_path_buf()), text, None);
+            on_compiler_stack(&name, move || run(sources, root, opts))
         }
         Err(d) => Compilation { sources, diagnostics: vec![d], suppressed_errors: 0, result: None },
     }
@@ -177,7 +133,7 @@ pub fn compile_file(path: &Path, opts: &Options) -> Compilation {
 pub fn compile_source(name: &str, text: &str, opts: &Options) -> Compilation {
     let mut sources = SourceMap::new();
     let root = sources.add(name, Some(PathBuf::from(name)), text.to_string(), None);
-    on_compiler_stack(move || run(sources, root, opts))
+    on_compiler_stack(name, move || run(sources, root, opts))
 }
 
 /// Stack size of the threads umbrac starts for compilations.
@@ -224,8 +180,8 @@ pub fn spawn_compiler_thread<'scope, T: Send + 'scope>(
 /// when [`RUNS_ON_CALLERS_STACK`] or the thread is one of umbrac's,
 /// otherwise on a new [`COMPILER_STACK_SIZE`] thread (or the current one if
 /// none can be started). A panic, which would be a bug in umbrac, becomes an
-/// internal compiler error.
-fn on_compiler_stack<F: FnOnce() -> Compilation + Send>(job: F) -> Compilation {
+/// internal compiler error naming `name`, the file being compiled.
+fn on_compiler_stack<F: FnOnce() -> Compilation + Send>(name: &str, job: F) -> Compilation {
     use std::panic::{catch_unwind, AssertUnwindSafe};
     let result = if RUNS_ON_CALLERS_STACK || HAS_COMPILER_STACK.get() {
         catch_unwind(AssertUnwindSafe(job))
@@ -240,7 +196,7 @@ fn on_compiler_stack<F: FnOnce() -> Compilation + Send>(job: F) -> Compilation {
     };
     match result {
         Ok(c) => c,
-        Err(payload) => panicked(&format!("the compiler panicked: {}", diag::panic_message(&*payload))),
+        Err(payload) => panicked(&format!("the compiler panicked while compiling `{name}`: {}", diag::panic_message(&*payload))),
     }
 }
 

@@ -23,7 +23,7 @@ use std::io::Write;
 use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU32, Ordering};
 
-use crate::Artifact;
+use crate::target::Artifact;
 
 /// Why outputs could not be written. Nothing was changed on disk.
 #[derive(Debug)]

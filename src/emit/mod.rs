@@ -22,7 +22,8 @@ use std::panic::{catch_unwind, AssertUnwindSafe};
 
 use crate::diag::Diagnostic;
 use crate::lower::Lowered;
-use crate::{Artifact, Reflection, Target};
+use reflect_types::Reflection;
+use crate::target::{Artifact, Target};
 
 /// Emits every requested target plus the reflection manifest.
 ///

@@ -17,8 +17,9 @@ use naga::{ArraySize, Handle, Module, ScalarKind, ShaderStage, Type, TypeInner, 
 use super::glsl::{self, EntryNames};
 use super::reflect_types::{EntryPoint, Io, Member, Reflection, Sampler, UniformBlock, REFLECTION_FORMAT};
 use crate::diag::Diagnostic;
-use crate::lower::{EntryInterface, IoVar, Lowered, ResourceKind, SamplerKind};
-use crate::Target;
+use crate::lower::{EntryInterface, IoVar, Lowered, ResourceKind};
+use crate::sema::SamplerKind;
+use crate::target::Target;
 
 pub fn file_name(stem: &str) -> String {
     format!("{stem}.reflect.json")

@@ -26,7 +26,7 @@ pub fn collect_names<'e>(e: &'e Expr, out: &mut Vec<&'e str>) {
 }
 
 fn collect_names_depth<'e>(e: &'e Expr, out: &mut Vec<&'e str>, depth: usize) {
-    if depth > super::check::MAX_DEPTH {
+    if depth > super::limits::MAX_DEPTH {
         return;
     }
     let d = depth + 1;
@@ -61,8 +61,8 @@ pub fn eval_const(e: &Expr, env: &dyn ConstEnv) -> Result<(ConstValue, Ty), Diag
 }
 
 fn eval(e: &Expr, env: &dyn ConstEnv, depth: usize) -> Result<(ConstValue, Ty), Diagnostic> {
-    if depth > super::check::MAX_DEPTH {
-        return Err(Diagnostic::error(format!("constant expression nests deeper than the limit of {}", super::check::MAX_DEPTH), e.span));
+    if depth > super::limits::MAX_DEPTH {
+        return Err(Diagnostic::error(format!("constant expression nests deeper than the limit of {}", super::limits::MAX_DEPTH), e.span));
     }
     let d = depth + 1;
     match &e.kind {

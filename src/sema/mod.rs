@@ -8,9 +8,11 @@
 pub mod builtins;
 mod check;
 pub mod consts;
+pub mod limits;
 pub mod tree;
 pub mod types;
 
-pub use check::{check, op_text, MAX_ARRAY_LEN, MAX_DEPTH, MAX_LOCATIONS};
+pub use check::{check, op_text};
+pub use limits::{MAX_ARRAY_LEN, MAX_DEPTH, MAX_LOCATIONS};
 pub use tree::*;
-pub use types::{Scalar, Ty};
+pub use types::{SamplerKind, Scalar, Ty};

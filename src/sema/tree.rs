@@ -3,7 +3,7 @@
 
 use super::builtins::Builtin;
 use super::types::Ty;
-use crate::lower::SamplerKind;
+use super::types::SamplerKind;
 use crate::source::Span;
 use crate::syntax::ast::{BinaryOp, UnaryOp};
 

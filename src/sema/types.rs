@@ -2,7 +2,6 @@
 
 use std::fmt;
 
-use crate::lower::SamplerKind;
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Scalar {
@@ -28,6 +27,79 @@ impl Scalar {
 
     pub fn is_integer(self) -> bool {
         matches!(self, Scalar::Int | Scalar::Uint)
+    }
+}
+
+/// The sampler types of the DSL.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum SamplerKind {
+    Sampler2D,
+    Sampler2DShadow,
+    Sampler2DArray,
+    Sampler2DArrayShadow,
+    Sampler3D,
+    SamplerCube,
+    SamplerCubeShadow,
+    ISampler2D,
+    USampler2D,
+}
+
+impl SamplerKind {
+    pub const ALL: [SamplerKind; 9] = [
+        SamplerKind::Sampler2D,
+        SamplerKind::Sampler2DShadow,
+        SamplerKind::Sampler2DArray,
+        SamplerKind::Sampler2DArrayShadow,
+        SamplerKind::Sampler3D,
+        SamplerKind::SamplerCube,
+        SamplerKind::SamplerCubeShadow,
+        SamplerKind::ISampler2D,
+        SamplerKind::USampler2D,
+    ];
+
+    /// The DSL (and GLSL) type name.
+    pub fn name(self) -> &'static str {
+        match self {
+            SamplerKind::Sampler2D => "sampler2D",
+            SamplerKind::Sampler2DShadow => "sampler2DShadow",
+            SamplerKind::Sampler2DArray => "sampler2DArray",
+            SamplerKind::Sampler2DArrayShadow => "sampler2DArrayShadow",
+            SamplerKind::Sampler3D => "sampler3D",
+            SamplerKind::SamplerCube => "samplerCube",
+            SamplerKind::SamplerCubeShadow => "samplerCubeShadow",
+            SamplerKind::ISampler2D => "isampler2D",
+            SamplerKind::USampler2D => "usampler2D",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<SamplerKind> {
+        SamplerKind::ALL.into_iter().find(|k| k.name() == name)
+    }
+
+    pub fn is_shadow(self) -> bool {
+        matches!(self, SamplerKind::Sampler2DShadow | SamplerKind::Sampler2DArrayShadow | SamplerKind::SamplerCubeShadow)
+    }
+
+    pub fn is_array(self) -> bool {
+        matches!(self, SamplerKind::Sampler2DArray | SamplerKind::Sampler2DArrayShadow)
+    }
+
+    pub fn dim(self) -> naga::ImageDimension {
+        match self {
+            SamplerKind::Sampler3D => naga::ImageDimension::D3,
+            SamplerKind::SamplerCube | SamplerKind::SamplerCubeShadow => naga::ImageDimension::Cube,
+            _ => naga::ImageDimension::D2,
+        }
+    }
+
+    /// The naga image class of the texture half.
+    pub fn image_class(self) -> naga::ImageClass {
+        match self {
+            k if k.is_shadow() => naga::ImageClass::Depth { multi: false },
+            SamplerKind::ISampler2D => naga::ImageClass::Sampled { kind: naga::ScalarKind::Sint, multi: false },
+            SamplerKind::USampler2D => naga::ImageClass::Sampled { kind: naga::ScalarKind::Uint, multi: false },
+            _ => naga::ImageClass::Sampled { kind: naga::ScalarKind::Float, multi: false },
+        }
     }
 }
 

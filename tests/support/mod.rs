@@ -12,7 +12,8 @@ use std::process::Command;
 
 use naga::valid::{Capabilities, ValidationFlags, Validator};
 use umbrac::emit::reflect::dsl_name;
-use umbrac::lower::{EntryInterface, GlEntry, Interface, IoVar, Resource, ResourceKind, SamplerKind};
+use umbrac::lower::{EntryInterface, GlEntry, Interface, IoVar, Resource, ResourceKind};
+use umbrac::sema::SamplerKind;
 use umbrac::{Artifact, Conventions, Lowered, Reflection, Span};
 
 /// Parses WGSL written in GL conventions into the modules the lowering

@@ -19,27 +19,12 @@ use std::collections::BTreeMap;
 use super::builtins::{self, Builtin};
 use super::consts::{eval_const, ConstEnv};
 use super::tree::*;
-use super::types::{Scalar, StructId, Ty, TyDisplay, BOOL, FLOAT, INT, UINT};
+use super::limits::*;
+use super::types::{SamplerKind, Scalar, StructId, Ty, TyDisplay, BOOL, FLOAT, INT, UINT};
 use crate::diag::{suggest, Diagnostic, Diagnostics};
 use rustc_hash::{FxHashMap, FxHashSet};
-use crate::lower::SamplerKind;
 use crate::source::Span;
 use crate::syntax::ast::{self, BinaryOp, UnaryOp};
-
-/// Largest `T[N]` accepted.
-pub const MAX_ARRAY_LEN: u64 = 65_536;
-/// Highest `@location` accepted (exclusive).
-pub const MAX_LOCATIONS: u32 = 16;
-/// Nesting depth of expressions and blocks the checker follows. A call of a
-/// helper function that is checked on first use starts the callee at the
-/// caller's depth plus [`CALL_DEPTH`], so chains of calls count too.
-pub const MAX_DEPTH: usize = 256;
-/// Depth one level of calls adds (the checker recurses into the callee).
-pub const CALL_DEPTH: usize = 4;
-/// Longest chain of constants defined in terms of each other.
-pub const MAX_CONST_CHAIN: usize = 64;
-/// Deepest nesting of struct and array types (`S { t : T[2] }` is 2).
-pub const MAX_TYPE_DEPTH: usize = 32;
 
 pub fn check(program: &ast::Program, diags: &mut Diagnostics) -> Option<Program> {
     let mut c = Checker::new(program, diags);

@@ -1,0 +1,208 @@
+//! The function builder: what every function body is lowered with.
+//!
+//! Expressions that naga wants covered by `Statement::Emit` are appended
+//! while the emitter runs; the others (literals, constants, variables,
+//! arguments, call results) are appended with the emitter paused. Every
+//! statement push flushes the pending range first. Statements are lowered
+//! in `stmts`, expressions in `exprs`, builtin calls in `builtins` and
+//! `textures`, an entry point's inputs and outputs in `entry`.
+
+use naga::{Block, Expression as E, Handle, Statement};
+
+use super::module::{ModuleBuilder, SamplerRef};
+use super::types::{naga_scalar, vector_size};
+use crate::sema::{self, BuiltinVar, Scalar, Stmt, Ty};
+use crate::source::Span;
+
+/// How a sema local lives in naga.
+#[derive(Clone, Copy)]
+pub(super) enum LocalSlot {
+    /// A `var`, loop counter or parameter copy: a function-local variable.
+    Var(Handle<naga::LocalVariable>),
+    /// A `let` or an unmodified parameter: an expression.
+    Value(Handle<E>),
+    /// A sampler parameter: the sampler this specialisation was made for.
+    Sampler(SamplerRef),
+    Unset,
+}
+
+/// What a `return` does in this function.
+pub(super) enum FnKind {
+    Helper,
+    /// An entry point: `return` builds the output struct from its outputs.
+    Entry(EntryOutputs),
+}
+
+/// The entry point's outputs, in result-struct member order.
+pub(super) struct EntryOutputs {
+    pub(super) result_ty: Option<Handle<naga::Type>>,
+    /// The output global of each member, read where it lives (a local
+    /// variable of the entry function or a private global). `None` for an
+    /// output the shader never writes (gl_Position of a vertex shader that
+    /// ignores it): zero.
+    pub(super) members: Vec<(Option<sema::GlobalId>, Option<BuiltinVar>, Handle<naga::Type>)>,
+    pub(super) stage: naga::ShaderStage,
+}
+
+pub(super) struct FnBuilder<'m, 'p> {
+    pub(super) m: &'m mut ModuleBuilder<'p>,
+    pub(super) func: naga::Function,
+    pub(super) emitter: naga::proc::Emitter,
+    pub(super) locals: Vec<LocalSlot>,
+    pub(super) sema_locals: &'p [sema::Local],
+    pub(super) kind: FnKind,
+    /// Emit ranges closed by `append_plain`, waiting for the next statement.
+    pub(super) pending: Vec<(Statement, naga::Span)>,
+    /// Implicit-LOD sampling samples level 0 (vertex entry points and the
+    /// helpers lowered for them): naga, WGSL and SPIR-V allow implicit LOD
+    /// only in fragment shaders.
+    pub(super) vertex_lod: bool,
+    /// Per sema global, in an entry point: an input held as its argument
+    /// (`Value`) or an output held in a local variable (`Var`) instead of
+    /// the module's private global. Empty in helpers.
+    pub(super) entry_globals: Vec<LocalSlot>,
+}
+
+pub(super) fn span(s: Span) -> naga::Span {
+    s.into()
+}
+
+/// An empty block with room for what `n` checked statements usually
+/// become (a statement each, after one or two emit ranges: every plain
+/// expression splits a range), so pushing rarely grows its two vectors.
+pub(super) fn block_for(n: usize) -> Block {
+    match n {
+        0 => Block::new(),
+        _ => Block::with_capacity(3 * n + 2),
+    }
+}
+
+/// A block of one `break`.
+pub(super) fn break_block(s: Span) -> Block {
+    let mut b = Block::with_capacity(1);
+    b.push(Statement::Break, span(s));
+    b
+}
+
+
+impl<'m, 'p> FnBuilder<'m, 'p> {
+    pub(super) fn new(m: &'m mut ModuleBuilder<'p>, name: &str, sema_locals: &'p [sema::Local], kind: FnKind) -> Self {
+        let mut func = naga::Function { name: Some(name.to_string()), ..Default::default() };
+        // A `let` names its expression: room for all of them up front.
+        func.named_expressions.reserve(sema_locals.iter().filter(|l| !l.mutable).count());
+        let mut b = FnBuilder { m, func, emitter: Default::default(), locals: vec![LocalSlot::Unset; sema_locals.len()], sema_locals, kind, pending: Vec::new(), vertex_lod: false, entry_globals: Vec::new() };
+        b.emitter.start(&b.func.expressions);
+        b
+    }
+
+    /// Declares parameter `i` as a function argument. Parameters are
+    /// immutable, so the argument expression serves directly. A sampler
+    /// parameter is no argument: it stands for `sampler`, the one this
+    /// copy of the function is specialised for.
+    pub(super) fn add_param(&mut self, i: usize, sampler: Option<SamplerRef>) {
+        let l = &self.sema_locals[i];
+        if let Some(r) = sampler {
+            self.locals[i] = LocalSlot::Sampler(r);
+            return;
+        }
+        let ty = self.m.ty(&l.ty);
+        let idx = self.func.arguments.len() as u32;
+        self.func.arguments.push(naga::FunctionArgument { name: Some(l.name.as_str().to_owned()), ty, binding: None });
+        let h = self.append_plain(E::FunctionArgument(idx), l.span);
+        self.locals[i] = LocalSlot::Value(h);
+    }
+
+    /// Appends an expression that must not be emitted.
+    pub(super) fn append_plain(&mut self, e: E, s: Span) -> Handle<E> {
+        // Close the running range, append outside it, and start again.
+        let pending = self.emitter.finish(&self.func.expressions);
+        let h = self.func.expressions.append(e, span(s));
+        self.emitter.start(&self.func.expressions);
+        if let Some((stmt, sp)) = pending {
+            // The range ends before `h`; it is pushed with the next statement.
+            self.pending.push((stmt, sp));
+        }
+        h
+    }
+
+    /// Appends an expression that must be emitted.
+    pub(super) fn append(&mut self, e: E, s: Span) -> Handle<E> {
+        self.func.expressions.append(e, span(s))
+    }
+
+    /// Pushes a statement after flushing pending emit ranges.
+    pub(super) fn push(&mut self, block: &mut Block, stmt: Statement, s: Span) {
+        self.flush(block);
+        block.push(stmt, span(s));
+    }
+
+    pub(super) fn flush(&mut self, block: &mut Block) {
+        for (stmt, sp) in self.pending.drain(..) {
+            block.push(stmt, sp);
+        }
+        if let Some((stmt, sp)) = self.emitter.finish(&self.func.expressions) {
+            block.push(stmt, sp);
+        }
+        self.emitter.start(&self.func.expressions);
+    }
+
+    pub(super) fn finish(mut self, mut body: Block, ret: Option<naga::FunctionResult>) -> naga::Function {
+        self.flush(&mut body);
+        let _ = self.emitter.finish(&self.func.expressions);
+        self.func.body = body;
+        self.func.result = ret;
+        self.func
+    }
+
+    pub(super) fn block(&mut self, stmts: &[Stmt]) -> Block {
+        let mut b = block_for(stmts.len());
+        for s in stmts {
+            self.stmt(s, &mut b);
+        }
+        self.flush(&mut b);
+        b
+    }
+
+    /// Lowers statements onto the end of `block`.
+    pub(super) fn stmts_into(&mut self, stmts: &[Stmt], block: &mut Block) {
+        for s in stmts {
+            self.stmt(s, block);
+        }
+        self.flush(block);
+    }
+
+    pub(super) fn literal(&mut self, l: naga::Literal, s: Span) -> Handle<E> {
+        self.append_plain(E::Literal(l), s)
+    }
+
+    /// Broadcasts a scalar to the vector shape of `to` (no-op otherwise).
+    pub(super) fn splat_to(&mut self, h: Handle<E>, from: &Ty, to: &Ty, s: Span) -> Handle<E> {
+        match (from, to) {
+            (Ty::Scalar(_), Ty::Vector(_, n)) => self.append(E::Splat { size: vector_size(*n), value: h }, s),
+            _ => h,
+        }
+    }
+
+    pub(super) fn swizzle(&mut self, v: Handle<E>, comps: &[u8], s: Span) -> Handle<E> {
+        if comps.len() == 1 {
+            return self.append(E::AccessIndex { base: v, index: comps[0] as u32 }, s);
+        }
+        let mut pattern = [naga::SwizzleComponent::X; 4];
+        for (i, &c) in comps.iter().enumerate() {
+            pattern[i] = naga::SwizzleComponent::XYZW[c as usize];
+        }
+        self.append(E::Swizzle { size: vector_size(comps.len() as u8), vector: v, pattern }, s)
+    }
+
+    pub(super) fn math(&mut self, fun: naga::MathFunction, args: &[Handle<E>], s: Span) -> Handle<E> {
+        self.append(E::Math { fun, arg: args[0], arg1: args.get(1).copied(), arg2: args.get(2).copied(), arg3: args.get(3).copied() }, s)
+    }
+
+    pub(super) fn convert(&mut self, h: Handle<E>, from: &Ty, to: Scalar, s: Span) -> Handle<E> {
+        if from.scalar() == Some(to) {
+            return h;
+        }
+        let width = if to == Scalar::Bool { 1 } else { 4 };
+        self.append(E::As { expr: h, kind: naga_scalar(to).kind, convert: Some(width) }, s)
+    }
+}

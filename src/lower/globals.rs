@@ -1,0 +1,144 @@
+//! The program's globals in a module: uniforms and samplers (with
+//! bindings in the GPU module, none in a GL module, which naga then names
+//! after the source), and private globals for the entry-point inputs and
+//! outputs that need one.
+
+use naga::TypeInner;
+
+use super::interface::{Flavor, Resource, ResourceKind};
+use super::module::{GlobalSlot, ModuleBuilder};
+use crate::sema::{self, GlobalKind};
+use crate::source::Span;
+
+impl ModuleBuilder<'_> {
+    /// Declares the sema globals, every one or (`only`) those one entry
+    /// point uses; resources get bindings in declaration order. `only` is
+    /// for the one-entry GL modules, whose resources have no bindings.
+    /// Only the GPU module describes its resources (`resources`): a GL
+    /// module's interface is not kept.
+    /// `private`: per global, whether an input or output needs a private
+    /// global (see `reach::EntryIo`); the others are left `Absent`.
+    pub(super) fn declare_globals(&mut self, only: Option<&std::collections::BTreeMap<sema::GlobalId, Span>>, private: &[bool]) {
+        let mut next_binding = 0u32;
+        let with_binding = self.flavor != Flavor::Gl;
+        let describe = self.flavor != Flavor::Gl;
+        for (gid, g) in self.p.globals.iter().enumerate() {
+            let span: naga::Span = g.span.into();
+            let first_resource = self.resources.len();
+            if only.is_some_and(|uses| !uses.contains_key(&gid)) {
+                self.globals.push(GlobalSlot::Absent);
+                self.resource_of.push(first_resource..first_resource);
+                continue;
+            }
+            let slot = match &g.kind {
+                GlobalKind::Uniform => {
+                    let ty = self.ty(&g.ty);
+                    let binding = next_binding;
+                    next_binding += 1;
+                    let h = self.module.global_variables.append(
+                        naga::GlobalVariable {
+                            name: Some(g.name.clone()),
+                            space: naga::AddressSpace::Uniform,
+                            binding: with_binding.then_some(naga::ResourceBinding { group: 0, binding }),
+                            ty,
+                            init: None,
+                            memory_decorations: naga::MemoryDecorations::empty(),
+                        },
+                        span,
+                    );
+                    if describe {
+                        let dsl_type = self.show_ty(&g.ty);
+                        self.resources.push(Resource {
+                            name: g.name.clone(),
+                            span: g.span,
+                            kind: ResourceKind::Uniform { ty, dsl_type },
+                            global: h,
+                            sampler_global: None,
+                            group: 0,
+                            binding,
+                            sampler_binding: None,
+                            texture_unit: None,
+                        });
+                    }
+                    GlobalSlot::Var(h)
+                }
+                GlobalKind::Sampler { kind, texture_unit, count } => {
+                    let image_ty = self.add_type(None, TypeInner::Image { dim: kind.dim(), arrayed: kind.is_array(), class: kind.image_class() });
+                    let sampler_ty = self.add_type(None, TypeInner::Sampler { comparison: kind.is_shadow() });
+                    let first = self.sampler_elems.len();
+                    for i in 0..count.unwrap_or(1) {
+                        // An array element `texs[i]` is the global `texs_i`.
+                        let gname = match count {
+                            Some(_) => format!("{}_{i}", g.name),
+                            None => g.name.clone(),
+                        };
+                        let sampler_name = [&gname, "_sampler"].concat();
+                        let (tb, sb) = (next_binding, next_binding + 1);
+                        next_binding += 2;
+                        let image = self.module.global_variables.append(
+                            naga::GlobalVariable {
+                                name: Some(gname),
+                                space: naga::AddressSpace::Handle,
+                                binding: with_binding.then_some(naga::ResourceBinding { group: 0, binding: tb }),
+                                ty: image_ty,
+                                init: None,
+                                memory_decorations: naga::MemoryDecorations::empty(),
+                            },
+                            span,
+                        );
+                        let sampler = self.module.global_variables.append(
+                            naga::GlobalVariable {
+                                name: Some(sampler_name),
+                                space: naga::AddressSpace::Handle,
+                                binding: with_binding.then_some(naga::ResourceBinding { group: 0, binding: sb }),
+                                ty: sampler_ty,
+                                init: None,
+                                memory_decorations: naga::MemoryDecorations::empty(),
+                            },
+                            span,
+                        );
+                        self.sampler_elems.push((image, sampler));
+                        if !describe {
+                            continue;
+                        }
+                        let name = match count {
+                            Some(_) => format!("{}[{i}]", g.name),
+                            None => g.name.clone(),
+                        };
+                        self.resources.push(Resource {
+                            name,
+                            span: g.span,
+                            kind: ResourceKind::Sampler(*kind),
+                            global: image,
+                            sampler_global: Some(sampler),
+                            group: 0,
+                            binding: tb,
+                            sampler_binding: Some(sb),
+                            texture_unit: Some(*texture_unit + i),
+                        });
+                    }
+                    GlobalSlot::Sampler { first, count: count.unwrap_or(1) }
+                }
+                GlobalKind::Io { .. } | GlobalKind::Builtin(_) if !private[gid] => GlobalSlot::Absent,
+                GlobalKind::Io { .. } | GlobalKind::Builtin(_) => {
+                    let ty = self.ty(&g.ty);
+                    let h = self.module.global_variables.append(
+                        naga::GlobalVariable {
+                            name: Some(g.name.clone()),
+                            space: naga::AddressSpace::Private,
+                            binding: None,
+                            ty,
+                            init: None,
+                            memory_decorations: naga::MemoryDecorations::empty(),
+                        },
+                        span,
+                    );
+                    GlobalSlot::Var(h)
+                }
+            };
+            self.globals.push(slot);
+            self.resource_of.push(first_resource..self.resources.len());
+        }
+    }
+
+}

@@ -1,0 +1,44 @@
+//! naga's validator, with the flags and capabilities of each flavour of
+//! module; a rejection is an internal compiler error.
+
+use naga::Module;
+
+use super::interface::Flavor;
+use crate::diag::Diagnostic;
+use crate::source::Span;
+
+/// The validator for modules of `flavor`. One validator can check several
+/// modules (naga resets it per module), keeping its tables' memory.
+pub fn validator(flavor: Flavor) -> naga::valid::Validator {
+    use naga::valid::{Capabilities, ValidationFlags, Validator};
+    let (flags, caps) = match flavor {
+        Flavor::Gl => (ValidationFlags::all() - ValidationFlags::BINDINGS, naga::back::glsl::supported_capabilities()),
+        Flavor::Gpu(_) => (ValidationFlags::all(), Capabilities::default()),
+    };
+    Validator::new(flags, caps)
+}
+
+/// Validates a finished module with a validator from [`validator`]`(flavor)`;
+/// a failure is an internal compiler error located at the span naga reports.
+pub fn validate(validator: &mut naga::valid::Validator, module: &Module, flavor: Flavor) -> Result<naga::valid::ModuleInfo, Diagnostic> {
+    validator.validate(module).map_err(|e| {
+        let span = e.spans().next().map(|(s, _)| Span::from(*s)).filter(|s| !s.is_empty());
+        let mut msg = e.as_inner().to_string();
+        let mut src: Option<&dyn std::error::Error> = std::error::Error::source(e.as_inner());
+        while let Some(s) = src {
+            msg.push_str(&format!(": {s}"));
+            src = s.source();
+        }
+        let which = match flavor {
+            Flavor::Gl => "GLSL",
+            Flavor::Gpu(_) => "WGSL/SPIR-V",
+        };
+        let mut d = Diagnostic::bug(format!("naga rejected the IR built for the {which} targets: {msg}"), span);
+        for (_, label) in e.spans().skip(1).take(3) {
+            if !label.is_empty() {
+                d = d.with_note(label.clone());
+            }
+        }
+        d.with_note("this is a bug in umbrac; no output was written")
+    })
+}

@@ -1,0 +1,18 @@
+//! The limits the checker enforces, so that every later stage (which
+//! recurses over the checked program) stays within a bounded stack and
+//! every target's fixed tables fit (docs/robustness.md).
+
+/// Largest `T[N]` accepted.
+pub const MAX_ARRAY_LEN: u64 = 65_536;
+/// Highest `@location` accepted (exclusive).
+pub const MAX_LOCATIONS: u32 = 16;
+/// Nesting depth of expressions and blocks the checker follows. A call of a
+/// helper function that is checked on first use starts the callee at the
+/// caller's depth plus [`CALL_DEPTH`], so chains of calls count too.
+pub const MAX_DEPTH: usize = 256;
+/// Depth one level of calls adds (the checker recurses into the callee).
+pub const CALL_DEPTH: usize = 4;
+/// Longest chain of constants defined in terms of each other.
+pub const MAX_CONST_CHAIN: usize = 64;
+/// Deepest nesting of struct and array types (`S { t : T[2] }` is 2).
+pub const MAX_TYPE_DEPTH: usize = 32;
