@@ -116,9 +116,11 @@ impl Build {
         self
     }
 
-    /// Compiles every `*.das` file directly in `dir` (not its
-    /// subdirectories, which usually hold includes), each into a module
-    /// named after its stem. Adding a file to `dir` reruns the build.
+    /// Compiles the programs under `dir` (as the CLI finds them: every
+    /// `*.das` file in it and its subdirectories, except in directories
+    /// named `include` and hidden entries; [`crate::batch::programs_under`]),
+    /// each into a module named after its stem. Adding a file reruns the
+    /// build.
     pub fn dir(mut self, dir: impl AsRef<Path>) -> Self {
         self.dirs.push(dir.as_ref().to_path_buf());
         self
@@ -206,12 +208,10 @@ impl Build {
         let mut variants = self.variants.clone();
         for dir in &self.dirs {
             self.cargo(&format!("rerun-if-changed={}", dir.display()));
-            let entries = std::fs::read_dir(dir).map_err(|e| Error { summary: format!("cannot read shader directory {}: {e}", dir.display()), details: String::new() })?;
-            let mut files: Vec<PathBuf> = entries.filter_map(|e| e.ok()).map(|e| e.path()).filter(|p| p.is_file() && p.extension().is_some_and(|x| x == "das")).collect();
-            files.sort();
-            for f in files {
-                let name = crate::stem_of(&f.to_string_lossy());
-                variants.push(Variant { file: f, name, defines: vec![] });
+            let found = crate::batch::programs_under(dir).map_err(|e| Error { summary: format!("cannot list shader directory {}: {e}", dir.display()), details: String::new() })?;
+            for f in found {
+                let name = crate::stem_of(&f.path.to_string_lossy());
+                variants.push(Variant { file: f.path, name, defines: vec![] });
             }
         }
         if variants.is_empty() {
@@ -291,26 +291,12 @@ impl Build {
         o
     }
 
-    /// Compiles each variant on a compiler thread of its own, in parallel,
-    /// as the CLI does.
+    /// Compiles the variants in parallel, as the CLI does
+    /// ([`crate::batch::compile_many`]).
     fn compile_all(&self, variants: &[Variant]) -> Vec<Compilation> {
-        std::thread::scope(|s| {
-            let handles: Vec<_> = variants
-                .iter()
-                .map(|v| {
-                    let opts = self.options_for(v);
-                    crate::spawn_compiler_thread(s, move || crate::compile_file(&v.file, &opts))
-                })
-                .collect();
-            handles
-                .into_iter()
-                .zip(variants)
-                .map(|(h, v)| match h {
-                    Ok(h) => h.join().unwrap_or_else(|_| panic!("umbrac panicked while compiling {}", v.file.display())),
-                    Err(_) => crate::compile_file(&v.file, &self.options_for(v)),
-                })
-                .collect()
-        })
+        let opts: Vec<Options> = variants.iter().map(|v| self.options_for(v)).collect();
+        let jobs: Vec<crate::batch::Job> = variants.iter().zip(&opts).map(|(v, opts)| crate::batch::Job { path: &v.file, opts }).collect();
+        crate::batch::compile_many(&jobs, crate::batch::default_workers())
     }
 
     fn cargo(&self, line: &str) {

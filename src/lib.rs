@@ -15,6 +15,7 @@
 #[macro_use]
 mod serialize;
 
+pub mod batch;
 pub mod bindgen;
 pub mod build;
 pub mod diag;

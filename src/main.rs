@@ -16,7 +16,7 @@
 //! written), 2 bad usage, 3 internal compiler error.
 //!
 //! A DIR stands for every `.das` file under it (recursively, skipping
-//! `include` and hidden directories), its outputs in the same relative
+//! `include` directories and hidden entries; `umbrac::batch`), its outputs in the same relative
 //! subdirectory of `-o DIR`. Several FILEs compile in parallel; each file's outputs are written
 //! atomically and only if that file compiled without errors. `-o -` prints
 //! the single text output of a single FILE to stdout (the manifest is not
@@ -27,8 +27,6 @@
 use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
-use std::sync::atomic::{AtomicUsize, Ordering};
-use std::sync::Mutex;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use codespan_reporting::term::termcolor::{ColorChoice, StandardStream};
@@ -276,10 +274,9 @@ fn usage_error(msg: &str) -> u8 {
     EXIT_USAGE
 }
 
-/// The files to compile: each FILE as given, and every `.das` file under
-/// each DIR (sorted; directories named `include` hold shared includes and
-/// hidden directories are skipped), each with the subdirectory its outputs
-/// go to (relative to the output directory).
+/// The files to compile: each FILE as given, and the programs under each
+/// DIR ([`umbrac::batch::programs_under`]), each with the subdirectory its
+/// outputs go to (relative to the output directory).
 fn expand_inputs(inputs: &[PathBuf]) -> Result<Vec<(PathBuf, PathBuf)>, String> {
     let mut out = Vec::new();
     for input in inputs {
@@ -287,68 +284,19 @@ fn expand_inputs(inputs: &[PathBuf]) -> Result<Vec<(PathBuf, PathBuf)>, String> 
             out.push((input.clone(), PathBuf::new()));
             continue;
         }
-        let mut found = Vec::new();
-        let mut dirs = vec![input.clone()];
-        while let Some(d) = dirs.pop() {
-            let entries = std::fs::read_dir(&d).map_err(|e| format!("cannot read directory `{}`: {e}", d.display()))?;
-            for e in entries {
-                let p = e.map_err(|e| format!("cannot read directory `{}`: {e}", d.display()))?.path();
-                let name = p.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-                if p.is_dir() {
-                    if name != "include" && !name.starts_with('.') {
-                        dirs.push(p);
-                    }
-                } else if p.extension().is_some_and(|x| x == "das") {
-                    found.push(p);
-                }
-            }
-        }
+        let found = umbrac::batch::programs_under(input).map_err(|e| e.to_string())?;
         if found.is_empty() {
             return Err(format!("no `.das` files under `{}`", input.display()));
         }
-        found.sort();
-        for f in found {
-            let sub = f.parent().and_then(|p| p.strip_prefix(input).ok()).map(Path::to_path_buf).unwrap_or_default();
-            out.push((f, sub));
-        }
+        out.extend(found.into_iter().map(|f| (f.path, f.subdir)));
     }
     Ok(out)
 }
 
-/// Compiles every file, in parallel, on compiler threads (large stacks). A panic in one compilation becomes an internal error for that file.
+/// Compiles every file with `opts`, in parallel ([`umbrac::batch::compile_many`]).
 fn compile_all(files: &[PathBuf], opts: &Options) -> Vec<Compilation> {
-    let results: Vec<Mutex<Option<Compilation>>> = files.iter().map(|_| Mutex::new(None)).collect();
-    let next = AtomicUsize::new(0);
-    let workers = std::thread::available_parallelism().map(|n| n.get()).unwrap_or(1).min(files.len()).max(1);
-    std::thread::scope(|s| {
-        for _ in 0..workers {
-            let spawned = umbrac::spawn_compiler_thread(s, || loop {
-                let i = next.fetch_add(1, Ordering::Relaxed);
-                let Some(path) = files.get(i) else { break };
-                let c = std::panic::catch_unwind(|| umbrac::compile_file(path, opts)).unwrap_or_else(|_| panicked(path));
-                if let Ok(mut slot) = results[i].lock() {
-                    *slot = Some(c);
-                }
-            });
-            if spawned.is_err() {
-                break; // the files left are compiled below, on this thread
-            }
-        }
-    });
-    results
-        .into_iter()
-        .zip(files)
-        .map(|(m, path)| m.into_inner().ok().flatten().unwrap_or_else(|| umbrac::compile_file(path, opts)))
-        .collect()
-}
-
-fn panicked(path: &Path) -> Compilation {
-    Compilation {
-        sources: SourceMap::new(),
-        diagnostics: vec![Diagnostic::bug(format!("the compiler panicked while compiling `{}`", path.display()), None)],
-        suppressed_errors: 0,
-        result: None,
-    }
+    let jobs: Vec<umbrac::batch::Job> = files.iter().map(|path| umbrac::batch::Job { path, opts }).collect();
+    umbrac::batch::compile_many(&jobs, umbrac::batch::default_workers())
 }
 
 fn targets_of(args: &[TargetArg]) -> Vec<Target> {
