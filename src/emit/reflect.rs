@@ -3,10 +3,13 @@
 //!
 //! Uniform block layouts: the WGSL uniform layout of the `gpu` module is the
 //! one reported. GLSL declares the same blocks `layout(std140)` without
-//! explicit offsets, so the driver computes std140 itself; every block is
-//! therefore checked member by member against std140, and where the two
-//! differ (a `floatCx2` matrix: std140 pads its columns to 16 bytes, WGSL
-//! packs them in 8) the compile stops with an error instead of emitting
+//! explicit offsets, so the driver computes std140 itself; the two must
+//! agree. Which DSL types have the same layout under both rules is decided,
+//! with messages for the user, by the checker (`sema::check`, `uniform_layout`
+//! in `decls.rs`), whatever targets are requested. Here every block of the
+//! lowered module is checked again, member by member against std140, as a
+//! consistency check of the lowering: a difference (explicit offsets, array
+//! or matrix strides the lowering got wrong) is an internal error, never
 //! shaders that disagree about their own buffers.
 
 use std::collections::BTreeMap;
@@ -36,9 +39,10 @@ fn round_up(align: u32, x: u32) -> u32 {
 }
 
 /// Layouts of every uniform resource (indexed like `interface.resources`;
-/// `None` for samplers). With `check_std140`, a block whose std140 layout
-/// would differ from its WGSL layout is an error.
-pub fn uniform_layouts(lowered: &Lowered, check_std140: bool) -> Result<Vec<Option<BlockLayout>>, Diagnostic> {
+/// `None` for samplers). A block whose std140 layout differs from its WGSL
+/// layout in the IR is a lowering bug (the checker refuses every DSL type
+/// whose layouts differ), reported as one.
+pub fn uniform_layouts(lowered: &Lowered) -> Result<Vec<Option<BlockLayout>>, Diagnostic> {
     let module = &lowered.gpu;
     let mut layouter = Layouter::default();
     layouter
@@ -54,13 +58,11 @@ pub fn uniform_layouts(lowered: &Lowered, check_std140: bool) -> Result<Vec<Opti
         let Ok(t) = module.types.get_handle(*ty) else {
             return Err(Diagnostic::bug(format!("uniform `{}` has a type that is not in the GPU module", r.name), Some(r.span)));
         };
-        if check_std140 {
-            if let Err(why) = std140(module, *ty, &r.name) {
-                return Err(Diagnostic::error(format!("uniform `{}` cannot have the same layout in GLSL and in WGSL/SPIR-V", r.name), r.span)
-                    .with_label(why)
-                    .with_note("GLSL lays uniform blocks out by std140 rules, which pad each column of a matrix with 2 rows to 16 bytes; WGSL packs such columns in 8 bytes")
-                    .with_note("help: use a float4 (or a float4x4 / float3x3) instead, or compile without the GLSL targets"));
-            }
+        if let Err(why) = std140(module, *ty, &r.name) {
+            return Err(Diagnostic::bug(
+                format!("the lowering produced uniform block `{}` whose layout differs between GLSL std140 and the WGSL uniform rules: {why}", r.name),
+                Some(r.span),
+            ));
         }
         let members = match &t.inner {
             TypeInner::Struct { members, .. } => members
