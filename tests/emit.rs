@@ -359,7 +359,9 @@ struct Pair { k: vec4<f32>, o: array<Outer, 2> }
 @fragment fn fs() -> @location(0) vec4<f32> { return u_pair.k + u_outers[2].x + vec4<f32>(u_pair.o[1].i.a + u_inner.a); }
 "#;
     let (arts, refl) = emit_all(src);
-    let layout: Vec<(&str, u32, Vec<(&str, &str, u32, u32, Option<u32>)>)> = refl
+    // (name, type, offset, size, array stride) of each member.
+    type Members<'a> = Vec<(&'a str, &'a str, u32, u32, Option<u32>)>;
+    let layout: Vec<(&str, u32, Members)> = refl
         .structs
         .iter()
         .map(|s| (s.name.as_str(), s.size, s.members.iter().map(|m| (m.name.as_str(), m.ty.as_str(), m.offset, m.size, m.array_stride)).collect()))
