@@ -22,6 +22,15 @@
 //! - per vertex entry point a packed `Vertex` struct, GL attribute names
 //!   and locations, and (behind `wgpu`) a `wgpu::VertexBufferLayout`.
 //!
+//! Everything comes from the reflection manifest (`compiled.reflection`)
+//! and the emitted artifacts, never from the lowered modules: the structs'
+//! offsets, sizes and strides are the manifest's `uniform_blocks[].members`
+//! and, for struct types inside blocks, its `structs`, so the bindings say
+//! exactly what any host reading the manifest would lay out. The Rust type
+//! of each member follows from its DSL type name; where that type's size
+//! disagrees with the manifest's, generation fails (an internal error)
+//! rather than guess.
+//!
 //! The generated text compiles without warnings in a crate that denies
 //! them: the module carries `#[allow(dead_code, unexpected_cfgs, ...)]`
 //! because a binary crate uses only part of it and need not declare a
@@ -30,12 +39,7 @@
 use std::collections::{BTreeMap, HashMap};
 use std::fmt::Write as _;
 
-use naga::proc::Layouter;
-use naga::{ArraySize, Handle, ScalarKind, Type, TypeInner, VectorSize};
-
-use crate::emit::reflect::dsl_name;
-use crate::emit::reflect_types::{Io, Reflection};
-use crate::lower::ResourceKind;
+use crate::emit::reflect_types::{Io, Member, Reflection, StructLayout};
 use crate::{Compiled, Target};
 
 /// How to generate the module.
@@ -67,7 +71,7 @@ pub fn generate(compiled: &Compiled, opts: &BindgenOptions) -> Result<String, St
     if !is_identifier(&module_name) {
         return Err(format!("`{module_name}` is not a Rust identifier; choose a module name"));
     }
-    let mut g = Gen::new(compiled, opts)?;
+    let mut g = Gen::new(r, opts);
     g.blocks()?;
 
     let mut o = String::new();
@@ -267,25 +271,63 @@ struct StructDef {
     fields: Vec<Field>,
 }
 
+/// A DSL type as the manifest spells it (`Member::ty`), parsed.
+#[derive(Debug, PartialEq)]
+enum HostType<'r> {
+    /// `f32`, `i32` or `u32`.
+    Scalar(&'static str),
+    Vector(&'static str, u32),
+    /// Columns, rows (float only).
+    Matrix(u32, u32),
+    /// `T[N]`: the element's spelling and N.
+    Array(&'r str, u32),
+    Struct(&'r StructLayout),
+}
+
+/// `float`, `int3`, `float4x3`, `Light`, `Light[4]`, `float4[2][3]` (three
+/// `float4[2]`): struct names are looked up in the manifest's `structs`.
+fn host_type<'r>(r: &'r Reflection, ty: &'r str) -> Result<HostType<'r>, String> {
+    if let Some(open) = ty.strip_suffix(']').and_then(|t| t.rfind('[')) {
+        let n = ty[open + 1..ty.len() - 1].parse::<u32>().map_err(|_| format!("`{ty}`: bad array length"))?;
+        return Ok(HostType::Array(&ty[..open], n));
+    }
+    for (prefix, scalar) in [("float", "f32"), ("uint", "u32"), ("int", "i32")] {
+        let Some(rest) = ty.strip_prefix(prefix) else { continue };
+        let dim = |d: &str| d.parse::<u32>().ok().filter(|n| (2..=4).contains(n));
+        if rest.is_empty() {
+            return Ok(HostType::Scalar(scalar));
+        }
+        if let Some(n) = dim(rest) {
+            return Ok(HostType::Vector(scalar, n));
+        }
+        if let (Some((c, r)), "f32") = (rest.split_once('x'), scalar) {
+            if let (Some(c), Some(r)) = (dim(c), dim(r)) {
+                return Ok(HostType::Matrix(c, r));
+            }
+        }
+    }
+    match r.structs.iter().find(|s| s.name == ty) {
+        Some(s) => Ok(HostType::Struct(s)),
+        None => Err(format!("`{ty}` has no host representation in a uniform block (neither a numeric type nor a struct in the manifest's `structs`)")),
+    }
+}
+
 struct Gen<'a> {
-    module: &'a naga::Module,
-    layouter: Layouter,
+    r: &'a Reflection,
     bytemuck: bool,
     structs: Vec<StructDef>,
-    /// (naga type, size) -> index in `structs`; wrappers of padded array
-    /// elements are keyed by (element type, stride).
-    by_key: HashMap<(Handle<Type>, u32, bool), usize>,
+    /// (struct type, size) -> index in `structs` (a struct-typed block is
+    /// its struct rounded up to 16 bytes, which may differ from the struct
+    /// nested elsewhere); wrappers of padded array elements are keyed by
+    /// (element type, stride, true).
+    by_key: HashMap<(&'a str, u32, bool), usize>,
     /// Uniform block name -> the Rust struct holding it.
     block_struct: BTreeMap<String, String>,
-    compiled: &'a Compiled,
 }
 
 impl<'a> Gen<'a> {
-    fn new(compiled: &'a Compiled, opts: &BindgenOptions) -> Result<Self, String> {
-        let module = &compiled.lowered.gpu;
-        let mut layouter = Layouter::default();
-        layouter.update(module.to_ctx()).map_err(|e| format!("cannot lay out the shader's types: {e}"))?;
-        Ok(Gen { module, layouter, bytemuck: opts.bytemuck, structs: vec![], by_key: HashMap::new(), block_struct: BTreeMap::new(), compiled })
+    fn new(r: &'a Reflection, opts: &BindgenOptions) -> Self {
+        Gen { r, bytemuck: opts.bytemuck, structs: vec![], by_key: HashMap::new(), block_struct: BTreeMap::new() }
     }
 
     fn unique_name(&self, base: String) -> String {
@@ -299,23 +341,15 @@ impl<'a> Gen<'a> {
     }
 
     fn blocks(&mut self) -> Result<(), String> {
-        for b in &self.compiled.reflection.uniform_blocks {
-            let res = self
-                .compiled
-                .lowered
-                .interface
-                .resources
-                .iter()
-                .find(|r| r.name == b.name)
-                .ok_or_else(|| format!("uniform block `{}` is not in the interface", b.name))?;
-            let ResourceKind::Uniform { ty, .. } = res.kind else {
-                return Err(format!("`{}` is not a uniform block", b.name));
-            };
-            let name = match &self.module.types[ty].inner {
-                TypeInner::Struct { .. } => self.struct_of(ty, b.size)?,
+        let r = self.r;
+        for b in &r.uniform_blocks {
+            let name = match host_type(r, &b.ty)? {
+                HostType::Struct(s) => self.struct_of(&s.name, b.size, &b.members)?,
                 _ => {
-                    let (rust_ty, size) = self.rust_ty(ty)?;
-                    let m = &b.members[0];
+                    let [m] = &b.members[..] else {
+                        return Err(format!("internal: uniform block `{}` of type `{}` has {} members, not one", b.name, b.ty, b.members.len()));
+                    };
+                    let (rust_ty, size) = self.member_ty(m)?;
                     let name = self.unique_name(camel(&b.name));
                     let fields = vec![Field { name: m.name.clone(), rust_ty, offset: 0, size, doc: format!("`{}`", m.ty), padding: false }];
                     self.push_struct(name.clone(), format!("Uniform block of `var @uniform {} : {}`.", b.name, b.ty), b.size, fields)?;
@@ -327,24 +361,20 @@ impl<'a> Gen<'a> {
         Ok(())
     }
 
-    /// The Rust struct for a DSL struct type laid out in `size` bytes.
-    fn struct_of(&mut self, ty: Handle<Type>, size: u32) -> Result<String, String> {
-        if let Some(&i) = self.by_key.get(&(ty, size, false)) {
+    /// The Rust struct for the DSL struct type `type_name` laid out in
+    /// `size` bytes with these members.
+    fn struct_of(&mut self, type_name: &'a str, size: u32, members: &'a [Member]) -> Result<String, String> {
+        if let Some(&i) = self.by_key.get(&(type_name, size, false)) {
             return Ok(self.structs[i].name.clone());
         }
-        let t = &self.module.types[ty];
-        let TypeInner::Struct { members, .. } = &t.inner else { unreachable!("struct_of on a non-struct") };
-        let members = members.clone();
-        let type_name = dsl_name(self.module, ty);
         let mut fields = Vec::new();
-        for (i, m) in members.iter().enumerate() {
-            let (rust_ty, msize) = self.rust_ty(m.ty)?;
-            let name = m.name.clone().unwrap_or_else(|| format!("_{i}"));
-            fields.push(Field { name, rust_ty, offset: m.offset, size: msize, doc: format!("`{}`", dsl_name(self.module, m.ty)), padding: false });
+        for m in members {
+            let (rust_ty, msize) = self.member_ty(m)?;
+            fields.push(Field { name: m.name.clone(), rust_ty, offset: m.offset, size: msize, doc: format!("`{}`", m.ty), padding: false });
         }
-        let name = self.unique_name(camel(&type_name));
+        let name = self.unique_name(camel(type_name));
         let i = self.push_struct(name.clone(), format!("`struct {type_name}`, {size} bytes."), size, fields)?;
-        self.by_key.insert((ty, size, false), i);
+        self.by_key.insert((type_name, size, false), i);
         Ok(name)
     }
 
@@ -381,49 +411,60 @@ impl<'a> Gen<'a> {
         Ok(self.structs.len() - 1)
     }
 
-    /// The Rust type of a uniform member type and its size in bytes.
-    fn rust_ty(&mut self, ty: Handle<Type>) -> Result<(String, u32), String> {
-        let scalar = |k: ScalarKind, width: u8| -> Result<&'static str, String> {
-            match (k, width) {
-                (ScalarKind::Float, 4) => Ok("f32"),
-                (ScalarKind::Sint, 4) => Ok("i32"),
-                (ScalarKind::Uint, 4) => Ok("u32"),
-                _ => Err(format!("`{}` has no host representation in a uniform block", dsl_name(self.module, ty))),
-            }
-        };
-        let inner = self.module.types[ty].inner.clone();
-        let expected = self.layouter[ty].size;
-        let (rust, size) = match inner {
-            TypeInner::Scalar(s) => (scalar(s.kind, s.width)?.to_string(), 4),
-            TypeInner::Vector { size, scalar: s } => (format!("[{}; {}]", scalar(s.kind, s.width)?, size as u32), 4 * size as u32),
-            TypeInner::Matrix { columns, rows, scalar: s } => {
-                let rows_padded = if rows == VectorSize::Tri { 4 } else { rows as u32 };
-                (format!("[[{}; {rows_padded}]; {}]", scalar(s.kind, s.width)?, columns as u32), 4 * rows_padded * columns as u32)
-            }
-            TypeInner::Array { base, size: ArraySize::Constant(n), stride } => {
-                let (elem, esize) = self.rust_ty(base)?;
-                let elem = if esize == stride { elem } else { self.padded_element(base, elem, esize, stride)? };
-                (format!("[{elem}; {n}]"), stride * n.get())
-            }
-            TypeInner::Struct { span, .. } => (self.struct_of(ty, span)?, span),
-            _ => return Err(format!("`{}` has no host representation in a uniform block", dsl_name(self.module, ty))),
-        };
-        if size != expected {
-            return Err(format!("internal: `{}` maps to `{rust}` of {size} bytes, but its layout is {expected} bytes", dsl_name(self.module, ty)));
+    /// The Rust type of a member and its size, which must be the size the
+    /// manifest gives it.
+    fn member_ty(&mut self, m: &'a Member) -> Result<(String, u32), String> {
+        let (rust, size) = self.rust_ty(&m.ty, m.array_stride, m.matrix_stride)?;
+        if size != m.size {
+            return Err(format!("internal: `{}` maps to `{rust}` of {size} bytes, but the manifest lays it out in {} bytes", m.ty, m.size));
         }
         Ok((rust, size))
     }
 
+    /// The Rust type of a uniform member type and its size in bytes, given
+    /// the stride of its elements (arrays) or columns (matrices) where the
+    /// manifest states it.
+    fn rust_ty(&mut self, ty: &'a str, array_stride: Option<u32>, matrix_stride: Option<u32>) -> Result<(String, u32), String> {
+        Ok(match host_type(self.r, ty)? {
+            HostType::Scalar(t) => (t.to_string(), 4),
+            HostType::Vector(t, n) => (format!("[{t}; {n}]"), 4 * n),
+            HostType::Matrix(columns, rows) => {
+                // Columns are vectors: 8 bytes for 2 rows, 16 for 3 or 4.
+                let rows_padded = if rows == 3 { 4 } else { rows };
+                if let Some(stride) = matrix_stride.filter(|&s| s != 4 * rows_padded) {
+                    return Err(format!("internal: the manifest's column stride of `{ty}` is {stride}, not {}", 4 * rows_padded));
+                }
+                (format!("[[f32; {rows_padded}]; {columns}]"), 4 * rows_padded * columns)
+            }
+            HostType::Array(elem_ty, n) => {
+                let stride = array_stride.ok_or_else(|| format!("internal: the manifest gives array `{ty}` no stride"))?;
+                // An inner array fills its element slot: its elements are
+                // its size (the stride) over its length apart.
+                let elem_stride = match host_type(self.r, elem_ty)? {
+                    HostType::Array(_, m) if m > 0 && stride % m == 0 => Some(stride / m),
+                    HostType::Array(..) => return Err(format!("internal: `{ty}` has stride {stride}, which its elements cannot divide")),
+                    _ => None,
+                };
+                let (elem, esize) = self.rust_ty(elem_ty, elem_stride, None)?;
+                if esize > stride {
+                    return Err(format!("internal: elements of `{ty}` are {esize} bytes, more than its stride of {stride}"));
+                }
+                let elem = if esize == stride { elem } else { self.padded_element(elem_ty, elem, esize, stride)? };
+                (format!("[{elem}; {n}]"), stride * n)
+            }
+            HostType::Struct(s) => (self.struct_of(&s.name, s.size, &s.members)?, s.size),
+        })
+    }
+
     /// A wrapper struct for array elements whose stride exceeds their size.
-    fn padded_element(&mut self, base: Handle<Type>, elem: String, esize: u32, stride: u32) -> Result<String, String> {
-        if let Some(&i) = self.by_key.get(&(base, stride, true)) {
+    fn padded_element(&mut self, dsl: &'a str, elem: String, esize: u32, stride: u32) -> Result<String, String> {
+        if let Some(&i) = self.by_key.get(&(dsl, stride, true)) {
             return Ok(self.structs[i].name.clone());
         }
-        let dsl = dsl_name(self.module, base);
-        let name = self.unique_name(format!("{}Stride{stride}", camel(&dsl)));
+        let name = self.unique_name(format!("{}Stride{stride}", camel(dsl)));
         let fields = vec![Field { name: "value".into(), rust_ty: elem, offset: 0, size: esize, doc: format!("`{dsl}`"), padding: false }];
         let i = self.push_struct(name.clone(), format!("One `{dsl}` array element, padded to the array stride of {stride} bytes."), stride, fields)?;
-        self.by_key.insert((base, stride, true), i);
+        self.by_key.insert((dsl, stride, true), i);
         Ok(name)
     }
 
@@ -764,5 +805,93 @@ mod tests {
         assert_eq!(str_lit("plain"), "\"plain\"");
         assert_eq!(vertex_field_type("Float32x3").as_deref(), Some("[f32; 3]"));
         assert_eq!(vertex_field_type("Uint32").as_deref(), Some("u32"));
+    }
+
+    fn compile(path: &str) -> Compiled {
+        let c = crate::compile_file(path.as_ref(), &crate::Options::default());
+        let diagnostics = c.render_diagnostics();
+        c.result.unwrap_or_else(|| panic!("{path}:\n{diagnostics}"))
+    }
+
+    /// The structs come from the manifest, not from the lowered module:
+    /// the bindings of a program with nested structs, arrays of structs and
+    /// a float3x3 are unchanged when `lowered` is another program's.
+    #[test]
+    fn bindings_come_from_the_manifest_alone() {
+        let opts = BindgenOptions::default();
+        let mut c = compile("shaders/features/uniform_layouts.das");
+        let text = generate(&c, &opts).unwrap();
+        assert!(text.contains("pub lights: [Light; 4],") && text.contains("pub fog: Fog,"), "{text}");
+        c.lowered = compile("shaders/features/math.das").lowered;
+        assert_eq!(generate(&c, &opts).unwrap(), text);
+    }
+
+    fn member(name: &str, ty: &str, offset: u32, size: u32, array_stride: Option<u32>) -> Member {
+        Member { name: name.into(), ty: ty.into(), offset, size, array_stride, matrix_stride: None }
+    }
+
+    fn block(name: &str, ty: &str, size: u32, members: Vec<Member>) -> crate::emit::reflect_types::UniformBlock {
+        crate::emit::reflect_types::UniformBlock { name: name.into(), ty: ty.into(), size, group: 0, binding: 9, glsl_block: format!("{name}_block"), members }
+    }
+
+    /// Layouts the checker never lets through still follow the manifest's
+    /// numbers: an element stride beyond the element's size gets a padded
+    /// element struct, an inner array's elements are its size over its
+    /// length apart, and a struct the manifest does not describe (or a
+    /// size that disagrees with it) is an error, not a guess.
+    #[test]
+    fn layouts_follow_the_manifest_numbers() {
+        let opts = BindgenOptions { sources: false, ..BindgenOptions::default() };
+        let mut c = compile("shaders/features/math.das");
+        let r = &mut c.reflection;
+        r.uniform_blocks.push(block("u_pad", "float3[2]", 32, vec![member("u_pad", "float3[2]", 0, 32, Some(16))]));
+        r.uniform_blocks.push(block("u_aoa", "float4[2][3]", 96, vec![member("u_aoa", "float4[2][3]", 0, 96, Some(32))]));
+        r.structs.push(StructLayout { name: "Tap".into(), size: 4, members: vec![member("w", "float", 0, 4, None)] });
+        r.uniform_blocks.push(block("u_taps", "Tap[2]", 32, vec![member("u_taps", "Tap[2]", 0, 32, Some(16))]));
+        let text = generate(&c, &opts).unwrap();
+        for needle in [
+            "pub struct Float3Stride16 {",
+            "pub value: [f32; 3],\n        /// Padding; keep zero.\n        pub _pad0: [u8; 4],",
+            "pub u_pad: [Float3Stride16; 2],",
+            "pub u_aoa: [[[f32; 4]; 2]; 3],",
+            "pub struct Tap {",
+            "pub struct TapStride16 {",
+            "pub u_taps: [TapStride16; 2],",
+        ] {
+            assert!(text.contains(needle), "no {needle:?} in\n{text}");
+        }
+
+        let mut missing = compile("shaders/features/math.das");
+        missing.reflection.uniform_blocks.push(block("u_s", "S", 16, vec![member("s", "S", 0, 16, None)]));
+        let e = generate(&missing, &opts).unwrap_err();
+        assert!(e.contains("`S` has no host representation"), "{e}");
+
+        let mut wrong = compile("shaders/features/math.das");
+        wrong.reflection.uniform_blocks.push(block("u_v", "float3", 16, vec![member("u_v", "float3", 0, 16, None)]));
+        let e = generate(&wrong, &opts).unwrap_err();
+        assert!(e.contains("`float3` maps to `[f32; 3]` of 12 bytes, but the manifest lays it out in 16 bytes"), "{e}");
+    }
+
+    #[test]
+    fn manifest_type_names() {
+        let r = Reflection {
+            format: 1,
+            source: String::new(),
+            conventions: String::new(),
+            entry_points: vec![],
+            uniform_blocks: vec![],
+            structs: vec![StructLayout { name: "Light".into(), size: 16, members: vec![] }],
+            samplers: vec![],
+        };
+        assert_eq!(host_type(&r, "float").unwrap(), HostType::Scalar("f32"));
+        assert_eq!(host_type(&r, "uint3").unwrap(), HostType::Vector("u32", 3));
+        assert_eq!(host_type(&r, "int2").unwrap(), HostType::Vector("i32", 2));
+        assert_eq!(host_type(&r, "float4x3").unwrap(), HostType::Matrix(4, 3));
+        assert_eq!(host_type(&r, "Light[4]").unwrap(), HostType::Array("Light", 4));
+        assert_eq!(host_type(&r, "float4[2][3]").unwrap(), HostType::Array("float4[2]", 3));
+        assert_eq!(host_type(&r, "Light").unwrap(), HostType::Struct(&r.structs[0]));
+        for bad in ["bool", "bool3", "int4x4", "float5", "Fog", "float[x]"] {
+            assert!(host_type(&r, bad).is_err(), "{bad}");
+        }
     }
 }

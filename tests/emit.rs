@@ -343,21 +343,71 @@ fn struct_uniform_vec3_float_packing() {
     assert_eq!(kinds, [("tex", "2d", "float", false, 0), ("arr", "2d-array", "depth", true, 1), ("itex", "2d", "sint", false, 2)]);
 }
 
+/// Struct types nested in uniform blocks (a struct field, the element of a
+/// loose array of structs) are described in the manifest's `structs`, once
+/// each and after the structs they contain, with the struct's own size (a
+/// nested 4-byte struct stays 4 bytes; the block is rounded up to 16).
 #[test]
-fn mat2_uniform_is_a_clear_error() {
+fn nested_struct_layouts_are_in_the_manifest() {
+    let src = r#"
+struct Inner { a: f32 }
+struct Outer { x: vec4<f32>, i: Inner }
+struct Pair { k: vec4<f32>, o: array<Outer, 2> }
+@group(0) @binding(0) var<uniform> u_pair: Pair;
+@group(0) @binding(1) var<uniform> u_outers: array<Outer, 3>;
+@group(0) @binding(2) var<uniform> u_inner: Inner;
+@fragment fn fs() -> @location(0) vec4<f32> { return u_pair.k + u_outers[2].x + vec4<f32>(u_pair.o[1].i.a + u_inner.a); }
+"#;
+    let (arts, refl) = emit_all(src);
+    // (name, type, offset, size, array stride) of each member.
+    type Members<'a> = Vec<(&'a str, &'a str, u32, u32, Option<u32>)>;
+    let layout: Vec<(&str, u32, Members)> = refl
+        .structs
+        .iter()
+        .map(|s| (s.name.as_str(), s.size, s.members.iter().map(|m| (m.name.as_str(), m.ty.as_str(), m.offset, m.size, m.array_stride)).collect()))
+        .collect();
+    assert_eq!(
+        layout,
+        [
+            ("Inner", 4, vec![("a", "float", 0, 4, None)]),
+            ("Outer", 32, vec![("x", "float4", 0, 16, None), ("i", "Inner", 16, 4, None)]),
+            ("Pair", 80, vec![("k", "float4", 0, 16, None), ("o", "Outer[2]", 16, 64, Some(32))]),
+        ]
+    );
+    let sizes: Vec<(&str, &str, u32)> = refl.uniform_blocks.iter().map(|b| (b.name.as_str(), b.ty.as_str(), b.size)).collect();
+    assert_eq!(sizes, [("u_pair", "Pair", 80), ("u_outers", "Outer[3]", 96), ("u_inner", "Inner", 16)]);
+
+    // The JSON carries them and reads back; a manifest written before the
+    // field existed still reads, with no structs.
+    let json = text(&arts, "shadow.reflect.json");
+    let parsed: umbrac::Reflection = serde_json::from_str(&json).unwrap();
+    assert_eq!(parsed, refl);
+    let mut value: serde_json::Value = serde_json::from_str(&json).unwrap();
+    value.as_object_mut().unwrap().remove("structs");
+    let old: umbrac::Reflection = serde_json::from_value(value).unwrap();
+    assert!(old.structs.is_empty());
+    assert_eq!(old.uniform_blocks, refl.uniform_blocks);
+}
+
+/// The checker refuses `floatCx2` uniforms (their std140 and WGSL layouts
+/// differ), so a lowered module with one is a lowering bug: emission stops
+/// with an internal error whatever the targets, never a user error (those
+/// belong to the checker, which `fake_lowered` bypasses) and never outputs
+/// that disagree about the buffer.
+#[test]
+fn mat2_uniform_from_the_lowering_is_an_internal_error() {
     let src = r#"
 @group(0) @binding(0) var<uniform> u_rot: mat2x2<f32>;
 @vertex fn vs(@location(0) p: vec2<f32>) -> @builtin(position) vec4<f32> { return vec4<f32>(u_rot * p, 0.0, 1.0); }
 "#;
     let lowered = fake_lowered(src);
-    let err = emit::emit(&lowered, "rot", "rot.das", &[]).unwrap_err();
-    assert_eq!(err.severity, Severity::Error);
-    assert!(err.message.contains("u_rot"), "{err:?}");
-    assert!(err.label.contains("float2x2"), "{err:?}");
-    // Without GLSL targets the WGSL layout is the only one, and it is fine.
-    let (_, refl) = emit::emit(&lowered, "rot", "rot.das", &[Target::Wgsl, Target::Spirv]).unwrap();
-    assert_eq!(refl.uniform_blocks[0].members[0].matrix_stride, Some(8));
-    assert_eq!(refl.uniform_blocks[0].size, 16);
+    for targets in [&[][..], &[Target::Glsl330], &[Target::Wgsl, Target::Spirv]] {
+        let err = emit::emit(&lowered, "rot", "rot.das", targets).unwrap_err();
+        assert_eq!(err.severity, Severity::Bug, "{targets:?}: {err:?}");
+        assert!(err.message.contains("lowering produced uniform block `u_rot`"), "{err:?}");
+        assert!(err.message.contains("float2x2: std140 column stride 16, WGSL column stride 8"), "{err:?}");
+        assert!(err.notes.is_empty(), "an internal error gives the user no help text: {err:?}");
+    }
 }
 
 fn validate_wgsl(src: &str) -> Result<(), String> {

@@ -198,3 +198,59 @@ fn independent_errors_are_reported_together() {
     assert_eq!(msgs.len(), 3, "{msgs:?}");
     assert!(msgs[0].contains("unknown_one") && msgs[1].contains("type mismatch") && msgs[2].contains("unknown_two"), "{msgs:?}");
 }
+
+/// Every uniform layout that GLSL std140 and WGSL disagree on is refused by
+/// the checker, located at the uniform's type, as a user error (exit 1),
+/// whatever targets are requested: emit's own std140 check only catches
+/// lowering bugs. The programs are the layout cases of the bad-input corpus
+/// (`tests/bad_inputs/`, which runs them with every target through the CLI);
+/// here each is compiled with `compile_source` for each set of targets.
+#[test]
+fn refused_uniform_layouts_are_located_user_errors_for_every_target_set() {
+    use umbrac::{Options, Severity, Target};
+    const CASES: &[&str] = &[
+        "sema_bool_uniform.das",
+        "sema_uniform_bool_vector_field.das",
+        "sema_uniform_float2x2.das",
+        "sema_uniform_float3x2_field.das",
+        "sema_uniform_scalar_array.das",
+        "sema_uniform_float2_array.das",
+        "sema_uniform_float3_array_field.das",
+        "sema_uniform_struct_array_stride.das",
+        "sema_uniform_struct_field_offset.das",
+        "sema_uniform_after_nested_struct.das",
+    ];
+    let target_sets: &[&[Target]] = &[&[], &[Target::Glsl330], &[Target::Gles300], &[Target::Wgsl], &[Target::Spirv], &[Target::Wgsl, Target::Spirv]];
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/bad_inputs");
+    let mut failures = Vec::new();
+    for name in CASES {
+        let text = std::fs::read_to_string(dir.join(name)).unwrap();
+        // `// expect: LINE:COL: MESSAGE`, as tests/bad_inputs.rs reads it.
+        let expect = text.lines().next().and_then(|l| l.strip_prefix("// expect: ")).unwrap_or_else(|| panic!("{name}: no expect line"));
+        let mut parts = expect.splitn(3, ':');
+        let (line, col, message) = (parts.next().unwrap(), parts.next().unwrap(), parts.next().unwrap().trim_start());
+        let want = (line.parse::<usize>().unwrap(), col.parse::<usize>().unwrap());
+        for targets in target_sets {
+            let opts = Options { targets: targets.to_vec(), ..Options::default() };
+            let c = umbrac::compile_source(name, &text, &opts);
+            let what = format!("{name} for {targets:?}");
+            if c.result.is_some() {
+                failures.push(format!("{what}: compiles"));
+                continue;
+            }
+            if c.diagnostics.iter().any(|d| d.severity == Severity::Bug) {
+                failures.push(format!("{what}: internal error:\n{}", c.render_diagnostics()));
+                continue;
+            }
+            let Some(first) = c.diagnostics.iter().find(|d| d.is_error()) else {
+                failures.push(format!("{what}: no error"));
+                continue;
+            };
+            let at = first.span.and_then(|s| c.sources.line_col(s)).map(|(_, l, c)| (l, c));
+            if first.severity != Severity::Error || !first.message.starts_with(message) || at != Some(want) {
+                failures.push(format!("{what}: got {:?} {at:?} {:?}, want an error at {want:?} starting {message:?}", first.severity, first.message));
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}

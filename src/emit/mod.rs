@@ -7,10 +7,14 @@
 //!   diagnostic filters (naga's WGSL writer drops them).
 //! - [`spirv`]: one SPIR-V module from `Lowered::gpu`, every entry point.
 //! - [`reflect`]: the JSON manifest (`STEM.reflect.json`), with uniform block
-//!   layouts checked against GLSL's std140 rules.
+//!   layouts checked against GLSL's std140 rules (a consistency check of the
+//!   lowering: the checker has already refused the DSL types whose layouts
+//!   differ).
 //!
-//! Either every requested artifact is produced or none is: any backend
-//! failure is a [`Diagnostic::bug`] naming the target and entry point.
+//! Either every requested artifact is produced or none is. Emission reports
+//! only internal errors (ARCHITECTURE.md, "Errors"): any backend failure or
+//! inconsistency of the lowered modules is a [`Diagnostic::bug`] naming
+//! what failed.
 
 pub mod glsl;
 pub mod reflect;
@@ -37,10 +41,11 @@ pub fn emit(lowered: &Lowered, stem: &str, source_name: &str, targets: &[Target]
 
     check_consistency(lowered)?;
 
-    // Layouts first: a uniform that GLSL would lay out differently from
-    // WGSL is a user-facing error, reported before anything is written.
-    let glsl_wanted = targets.iter().any(|t| matches!(t, Target::Glsl330 | Target::Gles300));
-    let layouts = reflect::uniform_layouts(lowered, glsl_wanted)?;
+    // Layouts first, checked against std140 whatever the targets: the
+    // manifest promises one layout for every target, and the checker has
+    // refused every type whose layouts differ, so a difference here is a
+    // lowering bug.
+    let layouts = reflect::uniform_layouts(lowered)?;
 
     // Two GLSL files per entry point, WGSL, SPIR-V and the manifest.
     let mut artifacts = Vec::with_capacity(2 * lowered.interface.entry_points.len() + 3);

@@ -2,12 +2,18 @@
 //! naga's `Layouter` on `Lowered::gpu`, and the names the GLSL writer used.
 //!
 //! Uniform block layouts: the WGSL uniform layout of the `gpu` module is the
-//! one reported. GLSL declares the same blocks `layout(std140)` without
-//! explicit offsets, so the driver computes std140 itself; every block is
-//! therefore checked member by member against std140, and where the two
-//! differ (a `floatCx2` matrix: std140 pads its columns to 16 bytes, WGSL
-//! packs them in 8) the compile stops with an error instead of emitting
-//! shaders that disagree about their own buffers.
+//! one reported, for each block's members and (`Reflection::structs`) for
+//! every struct type in a block, so that hosts (and `bindgen`) lay buffers
+//! out from the manifest alone. GLSL declares the same blocks
+//! `layout(std140)` without explicit offsets, so the driver computes std140
+//! itself; the two must agree. Which DSL types have the same layout under
+//! both rules is decided, with messages for the user, by the checker
+//! (`uniform_layout` in `sema/check/decls.rs`), whatever targets are
+//! requested. Here every block of the lowered module is checked again,
+//! member by member against std140, as a consistency check of the lowering:
+//! a difference (an offset, array stride or matrix stride the lowering got
+//! wrong) is an internal error, never shaders that disagree about their own
+//! buffers.
 
 use std::collections::BTreeMap;
 
@@ -15,7 +21,7 @@ use naga::proc::Layouter;
 use naga::{ArraySize, Handle, Module, ScalarKind, ShaderStage, Type, TypeInner, VectorSize};
 
 use super::glsl::{self, EntryNames};
-use super::reflect_types::{EntryPoint, Io, Member, Reflection, Sampler, UniformBlock, REFLECTION_FORMAT};
+use super::reflect_types::{EntryPoint, Io, Member, Reflection, Sampler, StructLayout, UniformBlock, REFLECTION_FORMAT};
 use crate::diag::Diagnostic;
 use crate::lower::{EntryInterface, IoVar, Lowered, ResourceKind};
 use crate::sema::SamplerKind;
@@ -32,14 +38,24 @@ pub struct BlockLayout {
     pub members: Vec<Member>,
 }
 
+/// The layouts of the uniform blocks and of the struct types in them.
+#[derive(Clone, Debug)]
+pub struct UniformLayouts {
+    /// Indexed like `interface.resources`; `None` for samplers.
+    pub blocks: Vec<Option<BlockLayout>>,
+    /// [`Reflection::structs`].
+    pub structs: Vec<StructLayout>,
+}
+
 fn round_up(align: u32, x: u32) -> u32 {
     x.div_ceil(align.max(1)) * align.max(1)
 }
 
-/// Layouts of every uniform resource (indexed like `interface.resources`;
-/// `None` for samplers). With `check_std140`, a block whose std140 layout
-/// would differ from its WGSL layout is an error.
-pub fn uniform_layouts(lowered: &Lowered, check_std140: bool) -> Result<Vec<Option<BlockLayout>>, Diagnostic> {
+/// Layouts of every uniform resource and of every struct type in them. A
+/// block whose std140 layout differs from its WGSL layout in the IR is a
+/// lowering bug (the checker refuses every DSL type whose layouts differ),
+/// reported as one.
+pub fn uniform_layouts(lowered: &Lowered) -> Result<UniformLayouts, Diagnostic> {
     let module = &lowered.gpu;
     let mut layouter = Layouter::default();
     layouter
@@ -47,6 +63,7 @@ pub fn uniform_layouts(lowered: &Lowered, check_std140: bool) -> Result<Vec<Opti
         .map_err(|e| Diagnostic::bug(format!("cannot lay out the types of the GPU module: {e}"), None))?;
 
     let mut out = Vec::with_capacity(lowered.interface.resources.len());
+    let mut structs = Structs::default();
     for r in &lowered.interface.resources {
         let ResourceKind::Uniform { ty, dsl_type } = &r.kind else {
             out.push(None);
@@ -55,14 +72,13 @@ pub fn uniform_layouts(lowered: &Lowered, check_std140: bool) -> Result<Vec<Opti
         let Ok(t) = module.types.get_handle(*ty) else {
             return Err(Diagnostic::bug(format!("uniform `{}` has a type that is not in the GPU module", r.name), Some(r.span)));
         };
-        if check_std140 {
-            if let Err(why) = std140(module, *ty, &r.name) {
-                return Err(Diagnostic::error(format!("uniform `{}` cannot have the same layout in GLSL and in WGSL/SPIR-V", r.name), r.span)
-                    .with_label(why)
-                    .with_note("GLSL lays uniform blocks out by std140 rules, which pad each column of a matrix with 2 rows to 16 bytes; WGSL packs such columns in 8 bytes")
-                    .with_note("help: use a float4 (or a float4x4 / float3x3) instead, or compile without the GLSL targets"));
-            }
+        if let Err(why) = std140(module, *ty, &r.name) {
+            return Err(Diagnostic::bug(
+                format!("the lowering produced uniform block `{}` whose layout differs between GLSL std140 and the WGSL uniform rules: {why}", r.name),
+                Some(r.span),
+            ));
         }
+        structs.visit(module, &layouter, *ty)?;
         let members = match &t.inner {
             TypeInner::Struct { members, .. } => members
                 .iter()
@@ -73,7 +89,49 @@ pub fn uniform_layouts(lowered: &Lowered, check_std140: bool) -> Result<Vec<Opti
         };
         out.push(Some(BlockLayout { size: round_up(16, layouter[*ty].size), members }));
     }
-    Ok(out)
+    Ok(UniformLayouts { blocks: out, structs: structs.list })
+}
+
+/// The struct types reached from uniform blocks, in [`Reflection::structs`]
+/// order.
+#[derive(Default)]
+struct Structs {
+    list: Vec<StructLayout>,
+    seen: Vec<Handle<Type>>,
+}
+
+impl Structs {
+    /// Adds the struct types inside `ty` (and `ty` itself), each after the
+    /// structs it contains.
+    fn visit(&mut self, module: &Module, layouter: &Layouter, ty: Handle<Type>) -> Result<(), Diagnostic> {
+        match &module.types[ty].inner {
+            TypeInner::Array { base, .. } => self.visit(module, layouter, *base),
+            TypeInner::Struct { members, .. } => {
+                if self.seen.contains(&ty) {
+                    return Ok(());
+                }
+                for m in members {
+                    self.visit(module, layouter, m.ty)?;
+                }
+                let name = dsl_name(module, ty);
+                if self.list.iter().any(|s| s.name == name) {
+                    return Err(Diagnostic::bug(format!("two struct types in uniform blocks are both named `{name}`"), None));
+                }
+                self.seen.push(ty);
+                self.list.push(StructLayout {
+                    name,
+                    size: layouter[ty].size,
+                    members: members
+                        .iter()
+                        .enumerate()
+                        .map(|(i, m)| member(module, layouter, m.name.clone().unwrap_or_else(|| format!("_{i}")), dsl_name(module, m.ty), m.ty, m.offset))
+                        .collect(),
+                });
+                Ok(())
+            }
+            _ => Ok(()),
+        }
+    }
 }
 
 fn member(module: &Module, layouter: &Layouter, name: String, ty_name: String, ty: Handle<Type>, offset: u32) -> Member {
@@ -200,7 +258,7 @@ pub fn build(
     source_name: &str,
     targets: &[Target],
     glsl_names: &[EntryNames],
-    layouts: &[Option<BlockLayout>],
+    layouts: &UniformLayouts,
 ) -> Result<Reflection, Diagnostic> {
     let iface = &lowered.interface;
     let module = &lowered.gpu;
@@ -237,7 +295,7 @@ pub fn build(
     for (ri, r) in iface.resources.iter().enumerate() {
         match &r.kind {
             ResourceKind::Uniform { dsl_type, .. } => {
-                let Some(Some(layout)) = layouts.get(ri) else {
+                let Some(Some(layout)) = layouts.blocks.get(ri) else {
                     return Err(Diagnostic::bug(format!("no layout for uniform `{}`", r.name), Some(r.span)));
                 };
                 uniform_blocks.push(UniformBlock {
@@ -285,6 +343,7 @@ pub fn build(
         conventions: iface.conventions.as_str().to_string(),
         entry_points,
         uniform_blocks,
+        structs: layouts.structs.clone(),
         samplers,
     })
 }

@@ -15,7 +15,8 @@
 //! manifest back, is derived with the feature `deserialize` (in the
 //! defaults and in `render`).
 
-/// Bumped when the JSON shape changes incompatibly.
+/// Bumped when the JSON shape changes incompatibly (adding a field is
+/// compatible: `structs` was added in format 1).
 pub const REFLECTION_FORMAT: u32 = 1;
 
 #[derive(Clone, Debug, PartialEq)]
@@ -29,6 +30,12 @@ pub struct Reflection {
     pub conventions: String,
     pub entry_points: Vec<EntryPoint>,
     pub uniform_blocks: Vec<UniformBlock>,
+    /// Every struct type a uniform block is or contains, at any depth (a
+    /// member's type, an array's element type), each once, a struct after
+    /// the structs it contains: what a host needs to lay out a nested
+    /// struct. `Member::ty` and `UniformBlock::ty` name them.
+    #[cfg_attr(feature = "deserialize", serde(default))]
+    pub structs: Vec<StructLayout>,
     pub samplers: Vec<Sampler>,
 }
 
@@ -99,16 +106,41 @@ pub struct UniformBlock {
 #[cfg_attr(feature = "deserialize", derive(serde::Deserialize))]
 pub struct Member {
     pub name: String,
+    /// DSL type: `float3`, `float4x4`, a struct's name (see
+    /// `Reflection::structs`), `T[N]` for arrays (`T[N][M]`: M arrays of
+    /// `T[N]`).
     #[cfg_attr(feature = "deserialize", serde(rename = "type"))]
     pub ty: String,
+    /// Byte offset from the start of the block or struct.
     pub offset: u32,
+    /// Byte size (a struct's own size, without the padding to 16 that
+    /// follows a nested struct).
     pub size: u32,
-    /// Stride between elements for arrays.
+    /// Stride between elements for arrays (of the outer array, for arrays
+    /// of arrays: the elements of an inner array are its size over its
+    /// length apart).
     #[cfg_attr(feature = "deserialize", serde(default))]
     pub array_stride: Option<u32>,
     /// Stride between columns for matrices.
     #[cfg_attr(feature = "deserialize", serde(default))]
     pub matrix_stride: Option<u32>,
+}
+
+/// The layout of a struct type in uniform blocks: the same on every target
+/// (std140 on GL, the identical WGSL uniform layout on WGSL/SPIR-V).
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "deserialize", derive(serde::Deserialize))]
+pub struct StructLayout {
+    /// The DSL struct's name.
+    pub name: String,
+    /// Size in bytes: WGSL's size of the struct, its last member's end
+    /// rounded up to the struct's alignment. std140 rounds a struct up to
+    /// 16 bytes; whatever follows a nested struct starts at a multiple of
+    /// 16 on every target, and a block's `size` is rounded up to 16.
+    pub size: u32,
+    /// Members with byte offsets from the start of the struct, in
+    /// declaration order.
+    pub members: Vec<Member>,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -144,6 +176,7 @@ serialize_struct!(Reflection {
     "conventions": conventions,
     "entry_points": entry_points,
     "uniform_blocks": uniform_blocks,
+    "structs": structs,
     "samplers": samplers,
 });
 
@@ -185,6 +218,12 @@ serialize_struct!(Member {
     "size": size,
     "array_stride": array_stride?,
     "matrix_stride": matrix_stride?,
+});
+
+serialize_struct!(StructLayout {
+    "name": name,
+    "size": size,
+    "members": members,
 });
 
 serialize_struct!(Sampler {

@@ -180,6 +180,7 @@ pub fn reflection() -> Reflection {
         conventions: "portable".into(),
         entry_points,
         uniform_blocks,
+        structs: vec![],
         samplers,
     }
 }
