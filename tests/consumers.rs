@@ -43,15 +43,6 @@ fn on_ci() -> bool {
     std::env::var("CI").is_ok_and(|v| v == "true")
 }
 
-fn setup() {
-    // Keeps the Vulkan loader quiet and Mesa from caching compiles (a
-    // cached shader can hide a compile failure until link).
-    if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
-        std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
-    }
-    std::env::set_var("MESA_SHADER_CACHE_DISABLE", "true");
-}
-
 fn programs() -> Programs {
     Programs::compile_source("shaders/shadow.das", SCENE).unwrap()
 }
@@ -80,7 +71,6 @@ fn image_of(c: Consumer, programs: &Programs, p: &FrameParams) -> Option<RgbaIma
 
 #[test]
 fn every_consumer_draws_the_same_frame() {
-    setup();
     let programs = programs();
     let t = 2.0;
     let p = FrameParams::new(t, W, H);
@@ -130,7 +120,6 @@ fn every_consumer_draws_the_same_frame() {
 /// make 15 pixels differ by up to 54/255).
 #[test]
 fn rewritten_scenes_draw_the_same_frame_on_every_consumer() {
-    setup();
     let usual = programs();
     let variants = [
         ("sampler parameter", support::shadow_scene_with_sampler_parameter(), 0, 0.0),
@@ -187,7 +176,6 @@ fn the_es_outputs_declare_sampler_precision() {
 }
 
 fn gles() -> Option<GlRenderer> {
-    setup();
     let _ = consumers::wgpu_gl();
     match GlRenderer::new(GlApi::Gles300) {
         Ok(r) => Some(r),
@@ -230,7 +218,6 @@ fn es_sampler_precision_matters_on_gles() {
 
 #[test]
 fn es_sampler_precision_matters_in_webgl2() {
-    setup();
     let tools = match WebGl::find() {
         Ok(t) => t,
         Err(e) if on_ci() => panic!("CI=true and no WebGL2 consumer: {e}"),
@@ -256,7 +243,6 @@ fn es_sampler_precision_matters_in_webgl2() {
 
 #[test]
 fn gl_contexts_bind_what_the_reflection_names() {
-    setup();
     let _ = consumers::wgpu_gl();
     let r = match GlRenderer::new(GlApi::Gl330) {
         Ok(r) => r,

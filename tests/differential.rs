@@ -171,9 +171,6 @@ struct Gpu {
 }
 
 fn gpu() -> Option<Gpu> {
-    let runtime = std::env::temp_dir().join("umbrac-xdg-runtime");
-    let _ = std::fs::create_dir_all(&runtime);
-    std::env::set_var("XDG_RUNTIME_DIR", &runtime);
     let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
     desc.backends = wgpu::Backends::VULKAN;
     desc.flags = wgpu::InstanceFlags::empty();

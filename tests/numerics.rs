@@ -30,9 +30,6 @@ const SCENE: &str = include_str!("../shaders/shadow.das");
 
 fn renderer() -> Option<&'static Renderer> {
     static R: OnceLock<Result<Renderer, String>> = OnceLock::new();
-    if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
-        std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
-    }
     match R.get_or_init(|| Renderer::new(Backend::Vulkan).map_err(|e| e.to_string())) {
         Ok(r) => Some(r),
         Err(e) if std::env::var("CI").is_ok_and(|v| v == "true") => panic!("CI=true and no Vulkan renderer: {e}"),

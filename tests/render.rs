@@ -44,10 +44,6 @@ fn on_ci() -> bool {
 /// One Vulkan device for the whole test binary (lavapipe is slow to start).
 fn renderer() -> Option<&'static Renderer> {
     static R: OnceLock<Result<Renderer, String>> = OnceLock::new();
-    if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
-        // Keeps the Vulkan loader quiet; harmless either way.
-        std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
-    }
     match R.get_or_init(|| Renderer::new(Backend::Vulkan).map_err(|e| e.to_string())) {
         Ok(r) => Some(r),
         Err(e) if on_ci() => panic!("CI=true and no Vulkan renderer: {e}"),

@@ -36,16 +36,8 @@ fn on_ci() -> bool {
     std::env::var("CI").is_ok_and(|v| v == "true")
 }
 
-fn env() {
-    if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
-        std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
-    }
-    std::env::set_var("MESA_SHADER_CACHE_DISABLE", "true");
-}
-
 fn renderer() -> Option<&'static Renderer> {
     static R: OnceLock<Result<Renderer, String>> = OnceLock::new();
-    env();
     match R.get_or_init(|| Renderer::new(Backend::Vulkan).map_err(|e| e.to_string())) {
         Ok(r) => Some(r),
         Err(e) if on_ci() => panic!("CI=true and no Vulkan renderer: {e}"),
@@ -57,7 +49,6 @@ fn renderer() -> Option<&'static Renderer> {
 }
 
 fn gl330() -> Option<GlRenderer> {
-    env();
     match GlRenderer::new(GlApi::Gl330) {
         Ok(r) => Some(r),
         Err(GlError::Unavailable(e)) if !on_ci() => {
