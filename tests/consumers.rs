@@ -21,11 +21,11 @@
 mod support;
 
 use std::collections::BTreeMap;
-use std::path::{Path, PathBuf};
 
 use image::RgbaImage;
+use support::gpu;
 use umbrac::render::consumers::{self, Consumer, Programs, Status};
-use umbrac::render::gl::{GlApi, GlError, GlRenderer};
+use umbrac::render::gl::{GlApi, GlError};
 use umbrac::render::glsl_set::GlslSet;
 use umbrac::render::webgl::WebGl;
 use umbrac::render::{image_ops, reference, FrameParams, View};
@@ -39,18 +39,8 @@ const MIN_SHADOW_IOU: f64 = 0.9;
 
 const SCENE: &str = include_str!("../shaders/shadow.das");
 
-fn on_ci() -> bool {
-    std::env::var("CI").is_ok_and(|v| v == "true")
-}
-
 fn programs() -> Programs {
     Programs::compile_source("shaders/shadow.das", SCENE).unwrap()
-}
-
-fn artifacts_dir() -> PathBuf {
-    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join("consumer-tests");
-    std::fs::create_dir_all(&d).unwrap();
-    d
 }
 
 /// A consumer's image, `None` (with a message) when it is not installed.
@@ -60,9 +50,8 @@ fn image_of(c: Consumer, programs: &Programs, p: &FrameParams) -> Option<RgbaIma
             eprintln!("{} ({device}): {ms:.0} ms", c.name());
             Some(image)
         }
-        Status::Unavailable { why, install } if on_ci() => panic!("CI=true and {} is unavailable: {why} ({install})", c.name()),
         Status::Unavailable { why, install } => {
-            eprintln!("skipping {}: {why} (install: {install})", c.name());
+            support::skip(format!("{} is unavailable: {why} (install: {install})", c.name()));
             None
         }
         Status::Failed(e) => panic!("{} failed: {e}", c.name()),
@@ -90,7 +79,7 @@ fn every_consumer_draws_the_same_frame() {
         let iou = image_ops::iou(&inside(image_ops::shadow_mask(&image, &image_lit)), &ref_shadow);
         eprintln!("{} vs reference: {stats}; shadow IoU {iou:.3}", c.name());
         let diff = image_ops::diff_image(&image, &reference.image, Some(skip));
-        let out = artifacts_dir().join(format!("{}_t{t}.png", c.name()));
+        let out = gpu::artifacts_dir("consumer-tests").join(format!("{}_t{t}.png", c.name()));
         image_ops::save_png(&image_ops::side_by_side(&[&image, &reference.image, &diff]), &out).unwrap();
         if stats.fraction_over > REF_MAX_FRACTION || iou < MIN_SHADOW_IOU {
             failures.push(format!("{} vs reference: {stats}; shadow IoU {iou:.3} ({})", c.name(), out.display()));
@@ -175,21 +164,9 @@ fn the_es_outputs_declare_sampler_precision() {
     assert!(!stripped.contains("highp sampler2DShadow"), "{stripped}");
 }
 
-fn gles() -> Option<GlRenderer> {
-    let _ = consumers::wgpu_gl();
-    match GlRenderer::new(GlApi::Gles300) {
-        Ok(r) => Some(r),
-        Err(GlError::Unavailable(e)) if !on_ci() => {
-            eprintln!("skipping: no GLES 3.0 context: {e}");
-            None
-        }
-        Err(e) => panic!("CI=true and no GLES 3.0 context: {e}"),
-    }
-}
-
 #[test]
 fn es_sampler_precision_matters_on_gles() {
-    let Some(r) = gles() else { return };
+    let Some(r) = gpu::gl(GlApi::Gles300) else { return };
     let p = FrameParams::new(2.0, W, H);
     let intact = r.render(&gles_set(), &p).expect("the ES output as emitted renders");
     let stats = image_ops::diff_masked(&intact, &reference::render(&p), DELTA, Some(&reference::render_frame(&p).outside_shadow_map));
@@ -218,14 +195,7 @@ fn es_sampler_precision_matters_on_gles() {
 
 #[test]
 fn es_sampler_precision_matters_in_webgl2() {
-    let tools = match WebGl::find() {
-        Ok(t) => t,
-        Err(e) if on_ci() => panic!("CI=true and no WebGL2 consumer: {e}"),
-        Err(e) => {
-            eprintln!("skipping: {e}");
-            return;
-        }
-    };
+    let Some(tools) = support::or_skip(WebGl::find(), "no WebGL2 consumer") else { return };
     let p = FrameParams::new(2.0, W, H);
     let preamble_only = tools.render(&gles_set().map_sources(without_preamble), &p).expect("naga's `uniform highp` is enough");
     let stats = image_ops::diff_masked(
@@ -243,12 +213,7 @@ fn es_sampler_precision_matters_in_webgl2() {
 
 #[test]
 fn gl_contexts_bind_what_the_reflection_names() {
-    let _ = consumers::wgpu_gl();
-    let r = match GlRenderer::new(GlApi::Gl330) {
-        Ok(r) => r,
-        Err(GlError::Unavailable(e)) if !on_ci() => return eprintln!("skipping: {e}"),
-        Err(e) => panic!("no GL 3.3 context: {e}"),
-    };
+    let Some(r) = gpu::gl(GlApi::Gl330) else { return };
     // A block renamed in the manifest but not in the shader is an error
     // that names it, not a black picture.
     let mut set = programs().glsl330;
