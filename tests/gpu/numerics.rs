@@ -11,11 +11,9 @@
 //!   non-finite lookups; 16-bit depth error reported and bounded.
 //!
 //! Without a Vulkan adapter these tests print why and pass, unless
-//! `CI=true`, where they fail (as tests/render.rs).
+//! `CI=true`, where they fail (as the render tests).
 
-#![cfg(feature = "render")]
-
-mod support;
+use crate::support;
 
 use glam::{Vec3, Vec4Swizzles};
 use image::RgbaImage;
@@ -27,7 +25,7 @@ use umbrac::render::{DepthFormat, FrameParams, Light, Program, Renderer, Setup, 
 
 const W: u32 = 160;
 const H: u32 = 120;
-const SCENE: &str = include_str!("../shaders/shadow.das");
+const SCENE: &str = include_str!("../../shaders/shadow.das");
 
 fn program(r: &Renderer, setup: &Setup, shadow_size: u32) -> Program {
     let opts = umbrac::Options { targets: vec![umbrac::Target::Wgsl], defines: setup.defines(shadow_size), ..Default::default() };

@@ -21,9 +21,7 @@
 //! exactly), IoU 0.98 - 0.99. A mirrored shadow measures 23 - 34 % and IoU
 //! below 0.13; a missing one 1.3 - 7 % and IoU 0.
 
-#![cfg(feature = "render")]
-
-mod support;
+use crate::support;
 
 use std::path::Path;
 
@@ -84,7 +82,7 @@ fn check(r: &Renderer, program: &Program, t: f32, name: &str) -> Check {
 }
 
 /// The project's scene program.
-const SCENE: &str = include_str!("../shaders/shadow.das");
+const SCENE: &str = include_str!("../../shaders/shadow.das");
 
 /// Compiles DSL text in process and picks the output the GPU gets.
 fn compiled(name: &str, text: &str, via: Via, conventions: Conventions) -> ShaderSet {

@@ -16,9 +16,7 @@
 //! Without a Vulkan adapter or an EGL GL 3.3 context the tests print why
 //! and pass, unless `CI=true`, where they fail.
 
-#![cfg(all(feature = "render", feature = "gl"))]
-
-mod support;
+use crate::support;
 
 use support::gpu;
 use umbrac::render::gl::GlApi;

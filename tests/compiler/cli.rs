@@ -3,7 +3,7 @@
 //!
 //! Tests of successful compiles use the project's own programs.
 
-mod support;
+use crate::support;
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};

@@ -1,8 +1,6 @@
 //! Golden outputs: every program under shaders/ is compiled for every target
 //! and diffed against tests/golden/<stem>/ on every run.
-//! Re-bless after an intended change with `UMBRAC_BLESS=1 cargo test --test golden`.
-
-#![cfg(feature = "golden")]
+//! Re-bless after an intended change with `UMBRAC_BLESS=1 cargo test --test compiler golden::`.
 
 use std::path::{Path, PathBuf};
 

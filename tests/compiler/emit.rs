@@ -1,7 +1,7 @@
 //! Emitter tests on naga modules built from WGSL shaped like the lowering's
 //! output (see tests/support).
 
-mod support;
+use crate::support;
 
 use support::fake_lowered;
 use umbrac::{emit, Artifact, Severity, Target};

@@ -16,9 +16,7 @@
 //!   floor outside the sun's box skipped (the reference marks them), and
 //!   the shadow masks overlap with IoU >= 0.9.
 
-#![cfg(feature = "gl")]
-
-mod support;
+use crate::support;
 
 use std::collections::BTreeMap;
 
@@ -37,7 +35,7 @@ const GPU_MAX_FRACTION: f64 = 0.005;
 const REF_MAX_FRACTION: f64 = 0.0075;
 const MIN_SHADOW_IOU: f64 = 0.9;
 
-const SCENE: &str = include_str!("../shaders/shadow.das");
+const SCENE: &str = include_str!("../../shaders/shadow.das");
 
 fn programs() -> Programs {
     Programs::compile_source("shaders/shadow.das", SCENE).unwrap()
