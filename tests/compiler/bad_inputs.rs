@@ -3,7 +3,8 @@
 //! parser, checker, CLI usage). Each file starts with its expectations:
 //!
 //! ```text
-//! // expect: LINE:COL: MESSAGE     the first error: location and message prefix
+//! // expect: LINE:COL: MESSAGE     the first diagnostic (an error, on stdout's
+//!                                  first line): location and message prefix
 //!                                  (`-:-` for errors with no location)
 //! // expect-file: NAME             the file holding that location (default: the case)
 //! // args: ARG...                  extra command-line arguments
@@ -119,13 +120,11 @@ fn run(case: &Case) -> Result<(), (String, Option<String>)> {
         }
         return Ok(());
     }
-    let first = stdout
-        .lines()
-        .filter_map(|l| serde_json::from_str::<serde_json::Value>(l).ok())
-        .find(|v| v["severity"] == "error" || v["severity"] == "bug");
-    let Some(first) = first else { return fail(format!("no JSON error diagnostic; stdout: {stdout}\nstderr: {stderr}")) };
+    // The expected error is the first thing reported: stdout's first line.
+    let first = stdout.lines().next().and_then(|l| serde_json::from_str::<serde_json::Value>(l).ok());
+    let Some(first) = first else { return fail(format!("stdout does not start with a JSON diagnostic; stdout: {stdout}\nstderr: {stderr}")) };
     if first["severity"] != "error" {
-        return fail(format!("severity {}, want error", first["severity"]));
+        return fail(format!("first diagnostic has severity {}, want error", first["severity"]));
     }
     let message = first["message"].as_str().unwrap_or("");
     let loc = &first["location"];
@@ -198,4 +197,26 @@ fn corpus_lists_enough_distinct_messages() {
         }
     }
     assert!(seen.len() >= 120, "only {} distinct messages", seen.len());
+}
+
+// Bad-input checks that cannot be corpus files: the corpus's cases must
+// fail, and it checks the first diagnostic only.
+
+/// An error in host code that no shader reaches is not reported.
+#[test]
+fn errors_in_skipped_host_code_are_not_reported() {
+    let src = "options gen2\nrequire opengl/opengl_boost\nvar @out f_color : float4\n[fragment_program]\ndef fs {\n    f_color = float4(1.0)\n}\n[export]\ndef host {\n    let x = = broken ( syntax $ here\n}\n";
+    let c = umbrac::compile_source("host.das", src, &umbrac::Options::default());
+    assert!(c.result.is_some(), "{}", c.render_diagnostics());
+    assert!(c.diagnostics.is_empty(), "{}", c.render_diagnostics());
+}
+
+/// Independent errors are all reported in one run.
+#[test]
+fn independent_errors_are_reported_together() {
+    let src = "var @out f_color : float4\n[fragment_program]\ndef fs {\n    let a = unknown_one\n    let b : int = 1.0\n    f_color = float4(unknown_two)\n}\n";
+    let c = umbrac::compile_source("multi.das", src, &umbrac::Options::default());
+    let msgs: Vec<&str> = c.diagnostics.iter().map(|d| d.message.as_str()).collect();
+    assert_eq!(msgs.len(), 3, "{msgs:?}");
+    assert!(msgs[0].contains("unknown_one") && msgs[1].contains("type mismatch") && msgs[2].contains("unknown_two"), "{msgs:?}");
 }

@@ -25,8 +25,6 @@ mod cli;
 mod constants;
 #[cfg(feature = "deserialize")]
 mod emit;
-#[cfg(feature = "cli")]
-mod errors;
 mod features;
 #[cfg(feature = "golden")]
 mod golden;
