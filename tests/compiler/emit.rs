@@ -465,13 +465,3 @@ fn glslang_needs_the_es_precision_line() {
     let err = support::glslang(&without).unwrap_err();
     assert!(err.contains("precision"), "{err}");
 }
-
-/// Writes the shadow scene's outputs to `$UMBRAC_DUMP` for inspection.
-#[test]
-fn dump_when_asked() {
-    if let Ok(dir) = std::env::var("UMBRAC_DUMP") {
-        let (arts, _) = emit_all(SHADOW);
-        std::fs::create_dir_all(&dir).unwrap();
-        support::write_all(std::path::Path::new(&dir), &arts);
-    }
-}
