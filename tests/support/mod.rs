@@ -201,6 +201,17 @@ fn interface_of(m: &naga::Module, info: &naga::valid::ModuleInfo) -> Interface {
     Interface { conventions: Conventions::Portable, resources, entry_points }
 }
 
+/// The repository root.
+pub fn repo() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// Runs the `umbrac` binary with `args` in `cwd`.
+#[cfg(feature = "cli")]
+pub fn umbrac(args: &[&str], cwd: &Path) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_umbrac")).args(args).current_dir(cwd).output().expect("run umbrac")
+}
+
 /// Whether `tool` can run; when it cannot, [`skip`].
 pub fn require_tool(tool: &str) -> bool {
     if Command::new(tool).arg("--version").output().is_ok() {
