@@ -141,7 +141,7 @@ pub fn compile_source(name: &str, text: &str, opts: &Options) -> Compilation {
 ///
 /// The stages recurse over the program's nesting, which the limits in
 /// [`syntax`] and [`sema`] bound. Measured on the deepest programs the
-/// limits accept (`tests/limits.rs`): at most 0.4 MiB of stack in optimised
+/// limits accept (`tests/compiler/limits.rs`): at most 0.4 MiB of stack in optimised
 /// builds, but up to 5.5 MiB in unoptimised ones, where umbrac's own frames
 /// are large. 32 MiB keeps a wide margin and stays within glibc's cache of
 /// thread stacks (40 MiB), so repeated compilations reuse a mapped stack.

@@ -3,7 +3,7 @@
 //! backend (WGSL), OpenGL 3.3 core (GLSL 330), OpenGL ES 3.0 (GLSL ES
 //! 3.00), WebGL2 in chromium (GLSL ES 3.00) and the CPU reference, and the
 //! pairwise differences of their images (`umbrac render --compare-backends`,
-//! `tests/consumers.rs`).
+//! `tests/gpu/consumers.rs`).
 
 use std::sync::OnceLock;
 use std::time::Instant;

@@ -1,11 +1,28 @@
 //! Helpers shared by the integration tests.
 //!
+//! - [`on_ci`], [`skip`], [`or_skip`] (`ci.rs`): what a test does when a
+//!   tool, a device or a browser it needs is missing. With `CI=true` it
+//!   fails; otherwise it prints `skipping: ...` and passes. Every test that
+//!   needs one goes through these. `ci.rs` uses nothing but std, so that
+//!   tests/build_crate.rs, which links nothing of umbrac's, includes it
+//!   alone.
+//! - [`gpu`]: the Vulkan device, wgpu's GL backend and the EGL GL/GLES
+//!   contexts, opened once per process (feature `render`).
 //! - [`fake_lowered`]: a `Lowered` built from WGSL, shaped like the real
 //!   lowering's output, so emitter tests do not depend on the front end.
 //! - Validator runners: `glslangValidator` (each GLSL file, and each
-//!   vertex+fragment pair linked) and `spirv-val`. A missing tool fails the
-//!   test when `CI=true` and skips it (with a message) otherwise.
+//!   vertex+fragment pair linked) and `spirv-val`.
+//!
+//! Nothing here changes the process's environment (another test thread may
+//! be reading it): what the GPU stack wants set comes from
+//! `.cargo/config.toml`.
 #![allow(dead_code)]
+
+mod ci;
+#[cfg(feature = "render")]
+pub mod gpu;
+
+pub use ci::*;
 
 use std::path::{Path, PathBuf};
 use std::process::Command;
@@ -185,16 +202,23 @@ fn interface_of(m: &naga::Module, info: &naga::valid::ModuleInfo) -> Interface {
     Interface { conventions: Conventions::Portable, resources, entry_points }
 }
 
-/// Whether `tool` can run. Missing: a failure under `CI=true`, else a
-/// printed skip.
+/// The repository root.
+pub fn repo() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// Runs the `umbrac` binary with `args` in `cwd`.
+#[cfg(feature = "cli")]
+pub fn umbrac(args: &[&str], cwd: &Path) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_umbrac")).args(args).current_dir(cwd).output().expect("run umbrac")
+}
+
+/// Whether `tool` can run; when it cannot, [`skip`].
 pub fn require_tool(tool: &str) -> bool {
     if Command::new(tool).arg("--version").output().is_ok() {
         return true;
     }
-    if std::env::var("CI").as_deref() == Ok("true") {
-        panic!("`{tool}` is required (CI=true) but cannot be run; install glslang-tools and spirv-tools");
-    }
-    eprintln!("skipping: `{tool}` not found (apt-get install glslang-tools spirv-tools)");
+    skip(format!("`{tool}` cannot be run (apt-get install glslang-tools spirv-tools)"));
     false
 }
 

@@ -3,7 +3,8 @@
 //! parser, checker, CLI usage). Each file starts with its expectations:
 //!
 //! ```text
-//! // expect: LINE:COL: MESSAGE     the first error: location and message prefix
+//! // expect: LINE:COL: MESSAGE     the first diagnostic (an error, on stdout's
+//!                                  first line): location and message prefix
 //!                                  (`-:-` for errors with no location)
 //! // expect-file: NAME             the file holding that location (default: the case)
 //! // args: ARG...                  extra command-line arguments
@@ -119,13 +120,11 @@ fn run(case: &Case) -> Result<(), (String, Option<String>)> {
         }
         return Ok(());
     }
-    let first = stdout
-        .lines()
-        .filter_map(|l| serde_json::from_str::<serde_json::Value>(l).ok())
-        .find(|v| v["severity"] == "error" || v["severity"] == "bug");
-    let Some(first) = first else { return fail(format!("no JSON error diagnostic; stdout: {stdout}\nstderr: {stderr}")) };
+    // The expected error is the first thing reported: stdout's first line.
+    let first = stdout.lines().next().and_then(|l| serde_json::from_str::<serde_json::Value>(l).ok());
+    let Some(first) = first else { return fail(format!("stdout does not start with a JSON diagnostic; stdout: {stdout}\nstderr: {stderr}")) };
     if first["severity"] != "error" {
-        return fail(format!("severity {}, want error", first["severity"]));
+        return fail(format!("first diagnostic has severity {}, want error", first["severity"]));
     }
     let message = first["message"].as_str().unwrap_or("");
     let loc = &first["location"];
@@ -198,4 +197,82 @@ fn corpus_lists_enough_distinct_messages() {
         }
     }
     assert!(seen.len() >= 120, "only {} distinct messages", seen.len());
+}
+
+// Bad-input checks that cannot be corpus files: the corpus's cases must
+// fail, and it checks the first diagnostic only.
+
+/// An error in host code that no shader reaches is not reported.
+#[test]
+fn errors_in_skipped_host_code_are_not_reported() {
+    let src = "options gen2\nrequire opengl/opengl_boost\nvar @out f_color : float4\n[fragment_program]\ndef fs {\n    f_color = float4(1.0)\n}\n[export]\ndef host {\n    let x = = broken ( syntax $ here\n}\n";
+    let c = umbrac::compile_source("host.das", src, &umbrac::Options::default());
+    assert!(c.result.is_some(), "{}", c.render_diagnostics());
+    assert!(c.diagnostics.is_empty(), "{}", c.render_diagnostics());
+}
+
+/// Independent errors are all reported in one run.
+#[test]
+fn independent_errors_are_reported_together() {
+    let src = "var @out f_color : float4\n[fragment_program]\ndef fs {\n    let a = unknown_one\n    let b : int = 1.0\n    f_color = float4(unknown_two)\n}\n";
+    let c = umbrac::compile_source("multi.das", src, &umbrac::Options::default());
+    let msgs: Vec<&str> = c.diagnostics.iter().map(|d| d.message.as_str()).collect();
+    assert_eq!(msgs.len(), 3, "{msgs:?}");
+    assert!(msgs[0].contains("unknown_one") && msgs[1].contains("type mismatch") && msgs[2].contains("unknown_two"), "{msgs:?}");
+}
+
+/// Every uniform layout that GLSL std140 and WGSL disagree on is refused by
+/// the checker, located at the uniform's type, as a user error (exit 1),
+/// whatever targets are requested: emit's own std140 check only catches
+/// lowering bugs. The programs are the layout cases of the bad-input corpus
+/// (`tests/bad_inputs/`, which runs them with every target through the CLI);
+/// here each is compiled with `compile_source` for each set of targets.
+#[test]
+fn refused_uniform_layouts_are_located_user_errors_for_every_target_set() {
+    use umbrac::{Options, Severity, Target};
+    const CASES: &[&str] = &[
+        "sema_bool_uniform.das",
+        "sema_uniform_bool_vector_field.das",
+        "sema_uniform_float2x2.das",
+        "sema_uniform_float3x2_field.das",
+        "sema_uniform_scalar_array.das",
+        "sema_uniform_float2_array.das",
+        "sema_uniform_float3_array_field.das",
+        "sema_uniform_struct_array_stride.das",
+        "sema_uniform_struct_field_offset.das",
+        "sema_uniform_after_nested_struct.das",
+    ];
+    let target_sets: &[&[Target]] = &[&[], &[Target::Glsl330], &[Target::Gles300], &[Target::Wgsl], &[Target::Spirv], &[Target::Wgsl, Target::Spirv]];
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/bad_inputs");
+    let mut failures = Vec::new();
+    for name in CASES {
+        let text = std::fs::read_to_string(dir.join(name)).unwrap();
+        // `// expect: LINE:COL: MESSAGE`, as `parse_case` reads it.
+        let expect = text.lines().next().and_then(|l| l.strip_prefix("// expect: ")).unwrap_or_else(|| panic!("{name}: no expect line"));
+        let mut parts = expect.splitn(3, ':');
+        let (line, col, message) = (parts.next().unwrap(), parts.next().unwrap(), parts.next().unwrap().trim_start());
+        let want = (line.parse::<usize>().unwrap(), col.parse::<usize>().unwrap());
+        for targets in target_sets {
+            let opts = Options { targets: targets.to_vec(), ..Options::default() };
+            let c = umbrac::compile_source(name, &text, &opts);
+            let what = format!("{name} for {targets:?}");
+            if c.result.is_some() {
+                failures.push(format!("{what}: compiles"));
+                continue;
+            }
+            if c.diagnostics.iter().any(|d| d.severity == Severity::Bug) {
+                failures.push(format!("{what}: internal error:\n{}", c.render_diagnostics()));
+                continue;
+            }
+            let Some(first) = c.diagnostics.iter().find(|d| d.is_error()) else {
+                failures.push(format!("{what}: no error"));
+                continue;
+            };
+            let at = first.span.and_then(|s| c.sources.line_col(s)).map(|(_, l, c)| (l, c));
+            if first.severity != Severity::Error || !first.message.starts_with(message) || at != Some(want) {
+                failures.push(format!("{what}: got {:?} {at:?} {:?}, want an error at {want:?} starting {message:?}", first.severity, first.message));
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
 }

@@ -11,37 +11,21 @@
 //!   non-finite lookups; 16-bit depth error reported and bounded.
 //!
 //! Without a Vulkan adapter these tests print why and pass, unless
-//! `CI=true`, where they fail (as tests/render.rs).
+//! `CI=true`, where they fail (as the render tests).
 
-#![cfg(feature = "render")]
-
-use std::sync::OnceLock;
+use crate::support;
 
 use glam::{Vec3, Vec4Swizzles};
 use image::RgbaImage;
 use umbrac::render::image_ops;
 use umbrac::render::reference::{self, RefFrame};
 use umbrac::render::scene::Frame;
-use umbrac::render::{Backend, DepthFormat, FrameParams, Light, Program, Renderer, Setup, ShaderSet, Via, View, World};
+use support::gpu;
+use umbrac::render::{DepthFormat, FrameParams, Light, Program, Renderer, Setup, ShaderSet, Via, View, World};
 
 const W: u32 = 160;
 const H: u32 = 120;
-const SCENE: &str = include_str!("../shaders/shadow.das");
-
-fn renderer() -> Option<&'static Renderer> {
-    static R: OnceLock<Result<Renderer, String>> = OnceLock::new();
-    if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
-        std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
-    }
-    match R.get_or_init(|| Renderer::new(Backend::Vulkan).map_err(|e| e.to_string())) {
-        Ok(r) => Some(r),
-        Err(e) if std::env::var("CI").is_ok_and(|v| v == "true") => panic!("CI=true and no Vulkan renderer: {e}"),
-        Err(e) => {
-            eprintln!("skipping numerics render test: {e}");
-            None
-        }
-    }
-}
+const SCENE: &str = include_str!("../../shaders/shadow.das");
 
 fn program(r: &Renderer, setup: &Setup, shadow_size: u32) -> Program {
     let opts = umbrac::Options { targets: vec![umbrac::Target::Wgsl], defines: setup.defines(shadow_size), ..Default::default() };
@@ -97,7 +81,7 @@ fn count(m: impl Iterator<Item = bool>) -> usize {
 /// contact, where depth bias makes light leak under a caster.
 #[test]
 fn grazing_sun_has_bounded_acne_and_leaking() {
-    let Some(r) = renderer() else { return };
+    let Some(r) = gpu::vulkan() else { return };
     let elevation = 3f32.to_radians();
     let dir = Vec3::new(elevation.cos() * 0.8, elevation.sin(), elevation.cos() * 0.6);
     for (name, mut setup, max_acne, max_leak) in [("tutorial", Setup::default(), 0.01, 0.10), ("tuned", Setup::tuned(), 0.01, 0.10)] {
@@ -137,7 +121,7 @@ fn overhead_sun_is_well_defined_and_shadows_under_the_cube() {
         let c = f.light_vp * f.cube_model.w_axis;
         assert!(c.is_finite() && (c.xy() / c.w).abs().max_element() < 1.0);
     }
-    let Some(r) = renderer() else { return };
+    let Some(r) = gpu::vulkan() else { return };
     for (name, setup) in [("tutorial", Setup::default()), ("tuned", Setup::tuned())] {
         let setup = Setup { light: Light::SunDir(Vec3::Y), ..setup };
         let prog = program(r, &setup, 1024);
@@ -163,7 +147,7 @@ fn overhead_sun_is_well_defined_and_shadows_under_the_cube() {
 /// whole number of cell pairs, so the picture should not change.
 #[test]
 fn large_world_renders_the_same_picture() {
-    let Some(r) = renderer() else { return };
+    let Some(r) = gpu::vulkan() else { return };
     let small_setup = Setup::default();
     let big_setup = Setup {
         world: World { scale: 1000.0, offset: Vec3::new(1.0e4, 0.0, 1.0e4) },
@@ -223,7 +207,7 @@ fn spot_light_behind_fragments_get_no_false_shadows() {
     }
     assert!(behind_points > 50, "the spot light should have floor behind it");
 
-    let Some(r) = renderer() else { return };
+    let Some(r) = gpu::vulkan() else { return };
     let mut errors = Vec::new();
     for depth in [DepthFormat::Depth32Float, DepthFormat::Depth16] {
         let setup = spot_setup(depth);
@@ -276,7 +260,7 @@ fn spot_light_behind_fragments_get_no_false_shadows() {
 /// 16-bit depth under the tutorial's sun: error reported and bounded.
 #[test]
 fn depth16_sun_error_is_bounded() {
-    let Some(r) = renderer() else { return };
+    let Some(r) = gpu::vulkan() else { return };
     let mut out = Vec::new();
     for depth in [DepthFormat::Depth32Float, DepthFormat::Depth16] {
         let mut setup = Setup::default();

@@ -13,7 +13,7 @@
 //! A failure prints the shrunk program; proptest records its seed under
 //! `proptest-regressions/`.
 
-mod support;
+use crate::support;
 
 use proptest::prelude::*;
 use proptest::test_runner::{Config, TestRunner};

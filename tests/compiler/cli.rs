@@ -3,15 +3,11 @@
 //!
 //! Tests of successful compiles use the project's own programs.
 
-mod support;
+use crate::support::{self, repo, umbrac};
 
 use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-
-fn umbrac(args: &[&str], cwd: &Path) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_umbrac")).args(args).current_dir(cwd).output().expect("run umbrac")
-}
+use std::process::Output;
 
 fn code(o: &Output) -> i32 {
     o.status.code().expect("exited normally (no signal, no panic abort)")
@@ -38,10 +34,6 @@ fn snapshot(dir: &Path) -> BTreeMap<PathBuf, Vec<u8>> {
         }
     }
     m
-}
-
-fn repo() -> PathBuf {
-    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
 }
 
 const BAD: &str = "[vertex_program]\ndef vs {\n    gl_Position = float4(1.0, 2.0\n}\n";

@@ -1,27 +1,14 @@
 //! Golden outputs: every program under shaders/ is compiled for every target
 //! and diffed against tests/golden/<stem>/ on every run.
-//! Re-bless after an intended change with `UMBRAC_BLESS=1 cargo test --test golden`.
-
-#![cfg(feature = "golden")]
+//! Re-bless after an intended change with `UMBRAC_BLESS=1 cargo test --test compiler golden::`.
 
 use std::path::{Path, PathBuf};
 
+/// The programs under shaders/, found as `umbrac compile shaders/` finds
+/// them.
 fn programs() -> Vec<PathBuf> {
     let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("shaders");
-    let mut out = Vec::new();
-    let mut dirs = vec![root];
-    while let Some(d) = dirs.pop() {
-        for e in std::fs::read_dir(&d).expect("shaders/ is readable") {
-            let p = e.expect("directory entry").path();
-            if p.is_dir() {
-                dirs.push(p);
-            } else if p.extension().is_some_and(|x| x == "das") && !p.to_string_lossy().contains("/include/") {
-                out.push(p);
-            }
-        }
-    }
-    out.sort();
-    out
+    umbrac::batch::programs_under(&root).expect("shaders/ is readable").into_iter().map(|f| f.path).collect()
 }
 
 #[test]

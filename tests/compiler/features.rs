@@ -6,7 +6,7 @@
 //! error, never an internal one). Some rows also assert a property of the
 //! output (`NEEDLES`).
 
-mod support;
+use crate::support;
 
 use std::collections::BTreeMap;
 use std::path::Path;
@@ -171,7 +171,7 @@ fn feature_matrix_matches_the_compiler() {
     let mut failures = Vec::new();
     for row in &rows {
         let Some(src) = snippets.get(row.id.as_str()) else {
-            failures.push(format!("docs/features.md row `{}` has no snippet in tests/features.rs", row.id));
+            failures.push(format!("docs/features.md row `{}` has no snippet in tests/compiler/features.rs", row.id));
             continue;
         };
         for (target, status) in COLUMNS.iter().zip(&row.cells) {

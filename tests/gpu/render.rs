@@ -21,13 +21,13 @@
 //! exactly), IoU 0.98 - 0.99. A mirrored shadow measures 23 - 34 % and IoU
 //! below 0.13; a missing one 1.3 - 7 % and IoU 0.
 
-#![cfg(feature = "render")]
+use crate::support;
 
-use std::path::{Path, PathBuf};
-use std::sync::OnceLock;
+use std::path::Path;
 
+use support::gpu;
 use umbrac::render::image_ops::{self, DiffStats};
-use umbrac::render::{hand, reference, Backend, FrameParams, Program, RenderError, Renderer, ShaderCode, ShaderSet, Via, View};
+use umbrac::render::{hand, reference, FrameParams, Program, RenderError, Renderer, ShaderCode, ShaderSet, Via, View};
 use umbrac::{Conventions, Options};
 
 const W: u32 = 160;
@@ -36,34 +36,6 @@ const DELTA: u8 = 8;
 const MAX_FRACTION: f64 = 0.0075;
 const MIN_SHADOW_IOU: f64 = 0.9;
 const TIMES: [f32; 4] = [0.5, 2.0, 4.0, 6.0];
-
-fn on_ci() -> bool {
-    std::env::var("CI").is_ok_and(|v| v == "true")
-}
-
-/// One Vulkan device for the whole test binary (lavapipe is slow to start).
-fn renderer() -> Option<&'static Renderer> {
-    static R: OnceLock<Result<Renderer, String>> = OnceLock::new();
-    if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
-        // Keeps the Vulkan loader quiet; harmless either way.
-        std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
-    }
-    match R.get_or_init(|| Renderer::new(Backend::Vulkan).map_err(|e| e.to_string())) {
-        Ok(r) => Some(r),
-        Err(e) if on_ci() => panic!("CI=true and no Vulkan renderer: {e}"),
-        Err(e) => {
-            eprintln!("skipping render test: {e}");
-            None
-        }
-    }
-}
-
-/// Where a failing test leaves its images.
-fn artifacts_dir() -> PathBuf {
-    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join("render-tests");
-    std::fs::create_dir_all(&d).unwrap();
-    d
-}
 
 struct Check {
     stats: DiffStats,
@@ -102,7 +74,7 @@ fn check(r: &Renderer, program: &Program, t: f32, name: &str) -> Check {
         gpu_centroid: image_ops::centroid(&gpu_shadow, W),
         ref_centroid: image_ops::centroid(&ref_shadow, W),
     };
-    let out = artifacts_dir().join(format!("{name}_t{t}.png"));
+    let out = gpu::artifacts_dir("render-tests").join(format!("{name}_t{t}.png"));
     let diff = image_ops::diff_image(&gpu, &reference.image, Some(skip));
     image_ops::save_png(&image_ops::side_by_side(&[&gpu, &reference.image, &diff]), &out).unwrap();
     eprintln!("{name} t={t}: {c} ({})", out.display());
@@ -110,7 +82,7 @@ fn check(r: &Renderer, program: &Program, t: f32, name: &str) -> Check {
 }
 
 /// The project's scene program.
-const SCENE: &str = include_str!("../shaders/shadow.das");
+const SCENE: &str = include_str!("../../shaders/shadow.das");
 
 /// Compiles DSL text in process and picks the output the GPU gets.
 fn compiled(name: &str, text: &str, via: Via, conventions: Conventions) -> ShaderSet {
@@ -128,7 +100,7 @@ fn scene(via: Via) -> ShaderSet {
 
 #[test]
 fn compiled_program_matches_the_reference() {
-    let Some(r) = renderer() else { return };
+    let Some(r) = gpu::vulkan() else { return };
     let program = r.prepare(&scene(Via::Wgsl)).unwrap();
     for t in TIMES {
         let c = check(r, &program, t, "compiled");
@@ -138,10 +110,9 @@ fn compiled_program_matches_the_reference() {
 
 #[test]
 fn compiled_spirv_and_wgsl_give_the_same_image() {
-    let Some(r) = renderer() else { return };
+    let Some(r) = gpu::vulkan() else { return };
     if !r.supports_passthrough() {
-        assert!(!on_ci(), "CI=true and {} lacks PASSTHROUGH_SHADERS", r.adapter_name());
-        eprintln!("skipping: {} lacks PASSTHROUGH_SHADERS", r.adapter_name());
+        support::skip(format!("{} lacks PASSTHROUGH_SHADERS", r.adapter_name()));
         return;
     }
     let wgsl = r.prepare(&scene(Via::Wgsl)).unwrap();
@@ -160,7 +131,7 @@ fn compiled_spirv_and_wgsl_give_the_same_image() {
 
 #[test]
 fn native_conventions_fail_the_check() {
-    let Some(r) = renderer() else { return };
+    let Some(r) = gpu::vulkan() else { return };
     // GL-convention code compiled without the clip-space adaptation: the
     // shadow map's near half is clipped and its rows are mirrored.
     let set = compiled("shaders/shadow.das", SCENE, Via::Wgsl, Conventions::Native);
@@ -174,7 +145,7 @@ fn native_conventions_fail_the_check() {
 
 #[test]
 fn reordered_and_struct_uniforms_render_the_same() {
-    let Some(r) = renderer() else { return };
+    let Some(r) = gpu::vulkan() else { return };
     let p = FrameParams::new(2.0, W, H);
     let usual = r.render(&scene(Via::Wgsl), &p).unwrap();
 
@@ -218,7 +189,7 @@ fn reordered_and_struct_uniforms_render_the_same() {
 
 #[test]
 fn the_tutorial_itself_renders() {
-    let Some(r) = renderer() else { return };
+    let Some(r) = gpu::vulkan() else { return };
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/reference/08_shadow.das");
     let Ok(text) = std::fs::read_to_string(&path) else {
         eprintln!("skipping: {} is not here", path.display());
@@ -233,7 +204,7 @@ fn the_tutorial_itself_renders() {
 
 #[test]
 fn hand_port_matches_the_reference() {
-    let Some(r) = renderer() else { return };
+    let Some(r) = gpu::vulkan() else { return };
     let program = r.prepare(&hand::shader_set()).unwrap();
     for t in TIMES {
         let c = check(r, &program, t, "hand");
@@ -243,7 +214,7 @@ fn hand_port_matches_the_reference() {
 
 #[test]
 fn mirrored_or_missing_shadows_fail_the_same_check() {
-    let Some(r) = renderer() else { return };
+    let Some(r) = gpu::vulkan() else { return };
     for variant in [hand::Variant::NoYFlip, hand::Variant::NoZRemap, hand::Variant::Native] {
         let program = r.prepare(&variant.shader_set()).unwrap();
         for t in TIMES {
@@ -255,7 +226,7 @@ fn mirrored_or_missing_shadows_fail_the_same_check() {
 
 #[test]
 fn lighting_alone_matches_the_reference() {
-    let Some(r) = renderer() else { return };
+    let Some(r) = gpu::vulkan() else { return };
     // No shadows: only rasterisation and float rounding can differ.
     for t in [1.0, 5.0] {
         let p = FrameParams::new(t, W, H).with_view(View::Lit);
@@ -269,7 +240,7 @@ fn lighting_alone_matches_the_reference() {
 
 #[test]
 fn shadow_follows_the_sun() {
-    let Some(r) = renderer() else { return };
+    let Some(r) = gpu::vulkan() else { return };
     let program = r.prepare(&scene(Via::Wgsl)).unwrap();
     let times = [0.0, 1.5, 3.0, 4.5, 6.0];
     let checks: Vec<Check> = times.iter().map(|&t| check(r, &program, t, "sun")).collect();
@@ -293,7 +264,7 @@ fn shadow_follows_the_sun() {
 
 #[test]
 fn uniform_order_comes_from_the_reflection() {
-    let Some(r) = renderer() else { return };
+    let Some(r) = gpu::vulkan() else { return };
     let p = FrameParams::new(2.0, W, H);
     let usual = r.render(&hand::shader_set(), &p).unwrap();
     // Every binding number reversed, in the WGSL and in its reflection.
@@ -322,10 +293,9 @@ fn hand_spirv() -> Vec<u32> {
 
 #[test]
 fn wgsl_and_passthrough_spirv_agree() {
-    let Some(r) = renderer() else { return };
+    let Some(r) = gpu::vulkan() else { return };
     if !r.supports_passthrough() {
-        assert!(!on_ci(), "CI=true and {} lacks PASSTHROUGH_SHADERS", r.adapter_name());
-        eprintln!("skipping: {} lacks PASSTHROUGH_SHADERS", r.adapter_name());
+        support::skip(format!("{} lacks PASSTHROUGH_SHADERS", r.adapter_name()));
         return;
     }
     let spirv = ShaderSet::single("hand.spv", ShaderCode::Spirv(hand_spirv()), hand::reflection());
@@ -341,7 +311,7 @@ fn wgsl_and_passthrough_spirv_agree() {
 
 #[test]
 fn shadow_map_view_matches_the_reference() {
-    let Some(r) = renderer() else { return };
+    let Some(r) = gpu::vulkan() else { return };
     let mut p = FrameParams::new(2.5, W, H).with_view(View::ShadowMap);
     p.shadow_size = 256;
     let gpu = r.render(&scene(Via::Wgsl), &p).unwrap();
@@ -356,7 +326,7 @@ fn shadow_map_view_matches_the_reference() {
 
 #[test]
 fn programs_that_do_not_fit_are_clear_errors() {
-    let Some(r) = renderer() else { return };
+    let Some(r) = gpu::vulkan() else { return };
     let mut set = hand::shader_set();
     set.reflection.uniform_blocks.retain(|b| b.name != "u_model");
     for e in &mut set.reflection.entry_points {
@@ -412,14 +382,8 @@ def main_fs {
 
 #[test]
 fn gl_backend_agrees_with_vulkan() {
-    let Some(vk) = renderer() else { return };
-    let gl = match Renderer::new(Backend::Gl) {
-        Ok(gl) => gl,
-        Err(e) => {
-            eprintln!("skipping the GL comparison: {e}");
-            return;
-        }
-    };
+    let Some(vk) = gpu::vulkan() else { return };
+    let Some(gl) = gpu::wgpu_gl() else { return };
     let p = FrameParams::new(3.0, W, H);
     let a = vk.render(&hand::shader_set(), &p).unwrap();
     let b = gl.render(&hand::shader_set(), &p).unwrap();
@@ -446,7 +410,7 @@ mod cli {
 
     #[test]
     fn frames_write_pngs_and_a_gif() {
-        if renderer().is_none() {
+        if gpu::vulkan().is_none() {
             return;
         }
         let dir = tempfile::tempdir().unwrap();
@@ -466,7 +430,7 @@ mod cli {
     /// on a run that succeeds, when the variable is unset).
     #[test]
     fn headless_render_without_a_runtime_dir_prints_no_errors() {
-        if renderer().is_none() {
+        if gpu::vulkan().is_none() {
             return;
         }
         let dir = tempfile::tempdir().unwrap();

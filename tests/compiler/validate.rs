@@ -1,10 +1,10 @@
 //! Every emitted output passes the independent validators: glslangValidator
 //! on each GLSL file (both profiles) and on each linkable vertex+fragment
 //! pair, spirv-val on each SPIR-V module. Runs on the golden outputs (which
-//! tests/golden.rs proves are exactly what the compiler emits) and on the
+//! tests/compiler/golden.rs proves are exactly what the compiler emits) and on the
 //! tutorial compiled verbatim.
 
-mod support;
+use crate::support;
 
 use std::path::Path;
 

@@ -16,57 +16,19 @@
 //! Without a Vulkan adapter or an EGL GL 3.3 context the tests print why
 //! and pass, unless `CI=true`, where they fail.
 
-#![cfg(all(feature = "render", feature = "gl"))]
+use crate::support;
 
-use std::path::Path;
-use std::sync::OnceLock;
-
-use umbrac::render::gl::{GlApi, GlError, GlRenderer};
+use support::gpu;
+use umbrac::render::gl::GlApi;
 use umbrac::render::image_ops;
 use umbrac::render::techniques::{gl_host, reference, wgpu_host::TechRenderer, Technique};
-use umbrac::render::{Backend, FrameParams, Renderer};
+use umbrac::render::FrameParams;
 
 const W: u32 = 160;
 const H: u32 = 120;
 const DELTA: u8 = 8;
 const MIN_IOU: f64 = 0.85;
 const TIMES: [f32; 2] = [1.0, 4.0];
-
-fn on_ci() -> bool {
-    std::env::var("CI").is_ok_and(|v| v == "true")
-}
-
-fn env() {
-    if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
-        std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
-    }
-    std::env::set_var("MESA_SHADER_CACHE_DISABLE", "true");
-}
-
-fn renderer() -> Option<&'static Renderer> {
-    static R: OnceLock<Result<Renderer, String>> = OnceLock::new();
-    env();
-    match R.get_or_init(|| Renderer::new(Backend::Vulkan).map_err(|e| e.to_string())) {
-        Ok(r) => Some(r),
-        Err(e) if on_ci() => panic!("CI=true and no Vulkan renderer: {e}"),
-        Err(e) => {
-            eprintln!("skipping the wgpu half: {e}");
-            None
-        }
-    }
-}
-
-fn gl330() -> Option<GlRenderer> {
-    env();
-    match GlRenderer::new(GlApi::Gl330) {
-        Ok(r) => Some(r),
-        Err(GlError::Unavailable(e)) if !on_ci() => {
-            eprintln!("skipping the GL 3.3 half: {e}");
-            None
-        }
-        Err(e) => panic!("CI=true and no GL 3.3 context: {e}"),
-    }
-}
 
 /// Largest fraction of differing pixels allowed, per technique.
 fn max_fraction(t: Technique) -> f64 {
@@ -90,9 +52,7 @@ fn judge(t: Technique, consumer: &str, time: f32, image: &image::RgbaImage, r: &
     if stats.fraction_over <= max_fraction(t) && iou >= MIN_IOU && shadow >= 40 {
         return None;
     }
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("technique-tests");
-    std::fs::create_dir_all(&dir).unwrap();
-    let path = dir.join(format!("{}-{consumer}-t{time}.png", t.name()));
+    let path = gpu::artifacts_dir("technique-tests").join(format!("{}-{consumer}-t{time}.png", t.name()));
     let diff = image_ops::diff_image(image, &r.image, None);
     image_ops::save_png(&image_ops::side_by_side(&[image, &r.image, &diff]), &path).unwrap();
     Some(format!(
@@ -113,7 +73,7 @@ fn check(t: Technique) {
             (time, p, reference::render(t, &p))
         })
         .collect();
-    if let Some(r) = renderer() {
+    if let Some(r) = gpu::vulkan() {
         let host = TechRenderer::new(r);
         let program = host.prepare(t, &compiled).unwrap_or_else(|e| panic!("{}: {e}", t.name()));
         for (time, p, reference) in &frames {
@@ -121,7 +81,7 @@ fn check(t: Technique) {
             failures.extend(judge(t, "wgpu", *time, &image, reference));
         }
     }
-    if let Some(gl) = gl330() {
+    if let Some(gl) = gpu::gl(GlApi::Gl330) {
         let program = gl_host::prepare(&gl, t, &compiled).unwrap_or_else(|e| panic!("{} on GL 3.3: {e}", t.name()));
         for (time, p, reference) in &frames {
             let image = gl_host::draw(&gl, &program, p).unwrap_or_else(|e| panic!("{} on GL 3.3: {e}", t.name()));

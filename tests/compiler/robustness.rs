@@ -8,9 +8,7 @@ use std::process::{Command, Output};
 
 use umbrac::{compile_file, compile_source, Compilation, Options, Severity};
 
-fn umbrac(args: &[&str], cwd: &Path) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_umbrac")).args(args).current_dir(cwd).output().expect("run umbrac")
-}
+use crate::support::umbrac;
 
 fn stderr(o: &Output) -> String {
     String::from_utf8_lossy(&o.stderr).into_owned()

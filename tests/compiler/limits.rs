@@ -4,14 +4,14 @@
 //! in whatever profile the tests are built with: in debug builds umbrac
 //! moves the work to a large-stack thread of its own, in release builds it
 //! compiles on the 2 MiB thread itself (`cargo test --release
-//! --no-default-features --test limits`, docs/robustness.md).
+//! --no-default-features --test compiler limits::`, docs/robustness.md).
 
 use umbrac::{compile_source, Compilation, Options};
 
 const STACK: usize = 2 << 20;
 
 /// Compiles on a fresh 2 MiB thread. A stack overflow aborts the whole
-/// test binary, which fails the run.
+/// test binary (every compiler test), which fails the run.
 fn compile_small_stack(src: String) -> Compilation {
     std::thread::Builder::new()
         .stack_size(STACK)

@@ -1,7 +1,7 @@
 //! Emitter tests on naga modules built from WGSL shaped like the lowering's
 //! output (see tests/support).
 
-mod support;
+use crate::support;
 
 use support::fake_lowered;
 use umbrac::{emit, Artifact, Severity, Target};
@@ -514,14 +514,4 @@ fn glslang_needs_the_es_precision_line() {
     support::glslang(&with).unwrap();
     let err = support::glslang(&without).unwrap_err();
     assert!(err.contains("precision"), "{err}");
-}
-
-/// Writes the shadow scene's outputs to `$UMBRAC_DUMP` for inspection.
-#[test]
-fn dump_when_asked() {
-    if let Ok(dir) = std::env::var("UMBRAC_DUMP") {
-        let (arts, _) = emit_all(SHADOW);
-        std::fs::create_dir_all(&dir).unwrap();
-        support::write_all(std::path::Path::new(&dir), &arts);
-    }
 }

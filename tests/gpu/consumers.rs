@@ -16,16 +16,14 @@
 //!   floor outside the sun's box skipped (the reference marks them), and
 //!   the shadow masks overlap with IoU >= 0.9.
 
-#![cfg(feature = "gl")]
-
-mod support;
+use crate::support;
 
 use std::collections::BTreeMap;
-use std::path::{Path, PathBuf};
 
 use image::RgbaImage;
+use support::gpu;
 use umbrac::render::consumers::{self, Consumer, Programs, Status};
-use umbrac::render::gl::{GlApi, GlError, GlRenderer};
+use umbrac::render::gl::{GlApi, GlError};
 use umbrac::render::glsl_set::GlslSet;
 use umbrac::render::webgl::WebGl;
 use umbrac::render::{image_ops, reference, FrameParams, View};
@@ -37,29 +35,10 @@ const GPU_MAX_FRACTION: f64 = 0.005;
 const REF_MAX_FRACTION: f64 = 0.0075;
 const MIN_SHADOW_IOU: f64 = 0.9;
 
-const SCENE: &str = include_str!("../shaders/shadow.das");
-
-fn on_ci() -> bool {
-    std::env::var("CI").is_ok_and(|v| v == "true")
-}
-
-fn setup() {
-    // Keeps the Vulkan loader quiet and Mesa from caching compiles (a
-    // cached shader can hide a compile failure until link).
-    if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
-        std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
-    }
-    std::env::set_var("MESA_SHADER_CACHE_DISABLE", "true");
-}
+const SCENE: &str = include_str!("../../shaders/shadow.das");
 
 fn programs() -> Programs {
     Programs::compile_source("shaders/shadow.das", SCENE).unwrap()
-}
-
-fn artifacts_dir() -> PathBuf {
-    let d = Path::new(env!("CARGO_TARGET_TMPDIR")).join("consumer-tests");
-    std::fs::create_dir_all(&d).unwrap();
-    d
 }
 
 /// A consumer's image, `None` (with a message) when it is not installed.
@@ -69,9 +48,8 @@ fn image_of(c: Consumer, programs: &Programs, p: &FrameParams) -> Option<RgbaIma
             eprintln!("{} ({device}): {ms:.0} ms", c.name());
             Some(image)
         }
-        Status::Unavailable { why, install } if on_ci() => panic!("CI=true and {} is unavailable: {why} ({install})", c.name()),
         Status::Unavailable { why, install } => {
-            eprintln!("skipping {}: {why} (install: {install})", c.name());
+            support::skip(format!("{} is unavailable: {why} (install: {install})", c.name()));
             None
         }
         Status::Failed(e) => panic!("{} failed: {e}", c.name()),
@@ -80,7 +58,6 @@ fn image_of(c: Consumer, programs: &Programs, p: &FrameParams) -> Option<RgbaIma
 
 #[test]
 fn every_consumer_draws_the_same_frame() {
-    setup();
     let programs = programs();
     let t = 2.0;
     let p = FrameParams::new(t, W, H);
@@ -100,7 +77,7 @@ fn every_consumer_draws_the_same_frame() {
         let iou = image_ops::iou(&inside(image_ops::shadow_mask(&image, &image_lit)), &ref_shadow);
         eprintln!("{} vs reference: {stats}; shadow IoU {iou:.3}", c.name());
         let diff = image_ops::diff_image(&image, &reference.image, Some(skip));
-        let out = artifacts_dir().join(format!("{}_t{t}.png", c.name()));
+        let out = gpu::artifacts_dir("consumer-tests").join(format!("{}_t{t}.png", c.name()));
         image_ops::save_png(&image_ops::side_by_side(&[&image, &reference.image, &diff]), &out).unwrap();
         if stats.fraction_over > REF_MAX_FRACTION || iou < MIN_SHADOW_IOU {
             failures.push(format!("{} vs reference: {stats}; shadow IoU {iou:.3} ({})", c.name(), out.display()));
@@ -130,7 +107,6 @@ fn every_consumer_draws_the_same_frame() {
 /// make 15 pixels differ by up to 54/255).
 #[test]
 fn rewritten_scenes_draw_the_same_frame_on_every_consumer() {
-    setup();
     let usual = programs();
     let variants = [
         ("sampler parameter", support::shadow_scene_with_sampler_parameter(), 0, 0.0),
@@ -186,22 +162,9 @@ fn the_es_outputs_declare_sampler_precision() {
     assert!(!stripped.contains("highp sampler2DShadow"), "{stripped}");
 }
 
-fn gles() -> Option<GlRenderer> {
-    setup();
-    let _ = consumers::wgpu_gl();
-    match GlRenderer::new(GlApi::Gles300) {
-        Ok(r) => Some(r),
-        Err(GlError::Unavailable(e)) if !on_ci() => {
-            eprintln!("skipping: no GLES 3.0 context: {e}");
-            None
-        }
-        Err(e) => panic!("CI=true and no GLES 3.0 context: {e}"),
-    }
-}
-
 #[test]
 fn es_sampler_precision_matters_on_gles() {
-    let Some(r) = gles() else { return };
+    let Some(r) = gpu::gl(GlApi::Gles300) else { return };
     let p = FrameParams::new(2.0, W, H);
     let intact = r.render(&gles_set(), &p).expect("the ES output as emitted renders");
     let stats = image_ops::diff_masked(&intact, &reference::render(&p), DELTA, Some(&reference::render_frame(&p).outside_shadow_map));
@@ -230,15 +193,7 @@ fn es_sampler_precision_matters_on_gles() {
 
 #[test]
 fn es_sampler_precision_matters_in_webgl2() {
-    setup();
-    let tools = match WebGl::find() {
-        Ok(t) => t,
-        Err(e) if on_ci() => panic!("CI=true and no WebGL2 consumer: {e}"),
-        Err(e) => {
-            eprintln!("skipping: {e}");
-            return;
-        }
-    };
+    let Some(tools) = support::or_skip(WebGl::find(), "no WebGL2 consumer") else { return };
     let p = FrameParams::new(2.0, W, H);
     let preamble_only = tools.render(&gles_set().map_sources(without_preamble), &p).expect("naga's `uniform highp` is enough");
     let stats = image_ops::diff_masked(
@@ -256,13 +211,7 @@ fn es_sampler_precision_matters_in_webgl2() {
 
 #[test]
 fn gl_contexts_bind_what_the_reflection_names() {
-    setup();
-    let _ = consumers::wgpu_gl();
-    let r = match GlRenderer::new(GlApi::Gl330) {
-        Ok(r) => r,
-        Err(GlError::Unavailable(e)) if !on_ci() => return eprintln!("skipping: {e}"),
-        Err(e) => panic!("no GL 3.3 context: {e}"),
-    };
+    let Some(r) = gpu::gl(GlApi::Gl330) else { return };
     // A block renamed in the manifest but not in the shader is an error
     // that names it, not a black picture.
     let mut set = programs().glsl330;

@@ -1,0 +1,23 @@
+//! The integration tests that draw: on wgpu (Vulkan, and its GL backend),
+//! on OpenGL 3.3 and OpenGL ES 3.0 contexts, in WebGL2 (headless chromium),
+//! against the CPU reference. One binary, so that the crate, wgpu, glow and
+//! image are linked once, and one Vulkan device (`support::gpu`) serves
+//! every test in it. A consumer that is not installed is skipped with a
+//! message, except with `CI=true`, where the test fails.
+//!
+//!     cargo test --test gpu                 # this binary
+//!     cargo test --test gpu consumers::     # one module
+
+#[path = "../support/mod.rs"]
+mod support;
+
+#[cfg(feature = "gl")]
+mod consumers;
+#[cfg(feature = "render")]
+mod differential;
+#[cfg(feature = "render")]
+mod numerics;
+#[cfg(feature = "render")]
+mod render;
+#[cfg(all(feature = "render", feature = "gl"))]
+mod techniques;
