@@ -18,6 +18,8 @@ mod differential;
 #[cfg(feature = "render")]
 mod numerics;
 #[cfg(feature = "render")]
+mod programs;
+#[cfg(feature = "render")]
 mod render;
 #[cfg(all(feature = "render", feature = "gl"))]
 mod techniques;
