@@ -18,6 +18,7 @@ impl FnBuilder<'_, '_> {
         match &e.kind {
             ExprKind::Local(id) => match self.locals[*id] {
                 LocalSlot::Var(v) => Some(self.append_plain(E::LocalVariable(v), e.span)),
+                LocalSlot::Ptr(p) => Some(p),
                 _ => None,
             },
             ExprKind::Global(g) => self.global_pointer(*g, e.span),
@@ -88,6 +89,7 @@ impl FnBuilder<'_, '_> {
                     let p = self.append_plain(E::LocalVariable(v), s);
                     self.append(E::Load { pointer: p }, s)
                 }
+                LocalSlot::Ptr(p) => self.append(E::Load { pointer: p }, s),
                 LocalSlot::Unset => {
                     let ty = self.m.ty(&e.ty);
                     self.append_plain(E::ZeroValue(ty), s)
@@ -178,19 +180,24 @@ impl FnBuilder<'_, '_> {
                 self.append(E::Select { condition: c, accept: a, reject: r }, s)
             }
             ExprKind::Call(fid, args) => {
-                let (function, args) = self.call(*fid, args, block);
+                let (function, args, write_back) = self.call(*fid, args, block);
                 let result = self.append_plain(E::CallResult(function), s);
                 self.push(block, Statement::Call { function, arguments: args, result: Some(result) }, s);
+                self.write_back(write_back, block, s);
                 result
             }
             ExprKind::Builtin(b, args) => self.builtin(*b, args, &e.ty, s, block),
             ExprKind::Construct(args) => self.construct(&e.ty, args, s, block),
+            ExprKind::Zero => {
+                let ty = self.m.ty(&e.ty);
+                self.append_plain(E::ZeroValue(ty), s)
+            }
         }
     }
 
     pub(super) fn is_place(&self, e: &Expr) -> bool {
         match &e.kind {
-            ExprKind::Local(id) => matches!(self.locals[*id], LocalSlot::Var(_)),
+            ExprKind::Local(id) => matches!(self.locals[*id], LocalSlot::Var(_) | LocalSlot::Ptr(_)),
             ExprKind::Global(g) => match self.global_slot(*g) {
                 Some(slot) => matches!(slot, LocalSlot::Var(_)),
                 None => matches!(self.m.globals[*g], GlobalSlot::Var(_)),

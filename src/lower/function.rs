@@ -21,6 +21,9 @@ pub(super) enum LocalSlot {
     Var(Handle<naga::LocalVariable>),
     /// A `let` or an unmodified parameter: an expression.
     Value(Handle<E>),
+    /// A `var p : T&` parameter: the argument, a pointer to the caller's
+    /// variable (GLSL `inout`), read and written through.
+    Ptr(Handle<E>),
     /// A sampler parameter: the sampler this specialisation was made for.
     Sampler(SamplerRef),
     Unset,
@@ -95,21 +98,37 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
         b
     }
 
-    /// Declares parameter `i` as a function argument. Parameters are
-    /// immutable, so the argument expression serves directly. A sampler
-    /// parameter is no argument: it stands for `sampler`, the one this
-    /// copy of the function is specialised for.
-    pub(super) fn add_param(&mut self, i: usize, sampler: Option<SamplerRef>) {
+    /// Declares parameter `i` as a function argument. An immutable
+    /// parameter's argument expression serves directly; a `var` one is
+    /// copied into a local variable at the start (`prologue`); a `var p :
+    /// T&` one is a pointer argument. A sampler parameter is no argument:
+    /// it stands for `sampler`, the one this copy of the function is
+    /// specialised for.
+    pub(super) fn add_param(&mut self, i: usize, sampler: Option<SamplerRef>, prologue: &mut Block) {
         let l = &self.sema_locals[i];
         if let Some(r) = sampler {
             self.locals[i] = LocalSlot::Sampler(r);
             return;
         }
-        let ty = self.m.ty(&l.ty);
+        let value_ty = self.m.ty(&l.ty);
+        let ty = match l.by_ref {
+            true => self.m.add_type(None, naga::TypeInner::Pointer { base: value_ty, space: naga::AddressSpace::Function }),
+            false => value_ty,
+        };
         let idx = self.func.arguments.len() as u32;
         self.func.arguments.push(naga::FunctionArgument { name: Some(l.name.as_str().to_owned()), ty, binding: None });
         let h = self.append_plain(E::FunctionArgument(idx), l.span);
-        self.locals[i] = LocalSlot::Value(h);
+        self.locals[i] = match (l.by_ref, l.mutable) {
+            (true, _) => LocalSlot::Ptr(h),
+            (false, false) => LocalSlot::Value(h),
+            (false, true) => {
+                // A mutable copy: the argument is its initial value.
+                let var = self.func.local_variables.append(naga::LocalVariable { name: Some(l.name.as_str().to_owned()), ty: value_ty, init: None }, span(l.span));
+                let ptr = self.append_plain(E::LocalVariable(var), l.span);
+                self.push(prologue, Statement::Store { pointer: ptr, value: h }, l.span);
+                LocalSlot::Var(var)
+            }
+        };
     }
 
     /// Appends an expression that must not be emitted.
@@ -199,7 +218,12 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
     }
 
     pub(super) fn convert(&mut self, h: Handle<E>, from: &Ty, to: Scalar, s: Span) -> Handle<E> {
-        if from.scalar() == Some(to) {
+        // An enumeration value is its storage scalar.
+        let from_scalar = match from {
+            Ty::Enum(id) => Some(self.m.p.enums[*id as usize].base),
+            _ => from.scalar(),
+        };
+        if from_scalar == Some(to) {
             return h;
         }
         let width = if to == Scalar::Bool { 1 } else { 4 };

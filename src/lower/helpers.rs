@@ -41,11 +41,13 @@ pub(super) fn lower_helper<'p>(m: &mut ModuleBuilder<'p>, f: &'p sema::Function,
     let mut b = FnBuilder::new(m, name, &f.locals, FnKind::Helper);
     b.vertex_lod = vertex_lod;
     let mut samplers = samplers.iter();
+    // Copies of `var` parameters, then the body.
+    let mut body = Block::new();
     for (i, l) in f.locals[..f.params].iter().enumerate() {
         let sampler = matches!(l.ty, Ty::Sampler(_)).then(|| *samplers.next().expect("one sampler per sampler parameter"));
-        b.add_param(i, sampler);
+        b.add_param(i, sampler, &mut body);
     }
-    let mut body = b.block(&f.body);
+    b.stmts_into(&f.body, &mut body);
     let ret = (f.ret != Ty::Void).then(|| naga::FunctionResult { ty: b.m.ty(&f.ret), binding: None });
     if ret.is_none() {
         naga::proc::ensure_block_returns(&mut body);
@@ -84,15 +86,47 @@ pub(super) fn specialised_helper(m: &mut ModuleBuilder<'_>, fid: usize, vertex_l
 }
 
 
+/// After a call: the temporaries that stood for `var p : T&` arguments,
+/// copied back to the places they stand for (GLSL `inout`'s copy-out).
+pub(super) type WriteBack = Vec<(Handle<naga::LocalVariable>, Handle<E>)>;
+
 impl FnBuilder<'_, '_> {
-    /// A call of helper `fid`: the function it reaches from here and its
-    /// argument values. A helper with sampler parameters is specialised
-    /// for the samplers given (lowered on its first such call); those
-    /// arguments are not passed.
-    pub(super) fn call(&mut self, fid: usize, args: &[Expr], block: &mut Block) -> (Handle<naga::Function>, Vec<Handle<E>>) {
+    /// A call of helper `fid`: the function it reaches from here, its
+    /// argument values, and the copies back that follow the call. A helper
+    /// with sampler parameters is specialised for the samplers given
+    /// (lowered on its first such call); those arguments are not passed.
+    /// A `var p : T&` argument is a pointer: to the caller's own local
+    /// variable where the argument is one (and no other reference
+    /// argument of the call names it), else to a temporary copy written
+    /// back after the call, as GLSL's `inout` does (a field, an element, a
+    /// global: what WGSL does not let a pointer argument name).
+    pub(super) fn call(&mut self, fid: usize, args: &[Expr], block: &mut Block) -> (Handle<naga::Function>, Vec<Handle<E>>, WriteBack) {
+        let f = &self.m.p.functions[fid];
         let mut samplers = Vec::new();
         let mut values = Vec::with_capacity(args.len());
-        for a in args {
+        let mut write_back = Vec::new();
+        let mut passed: Vec<usize> = Vec::new();
+        for (i, a) in args.iter().enumerate() {
+            if f.locals[i].by_ref {
+                let whole = match a.kind {
+                    ExprKind::Local(l) if !passed.contains(&l) && matches!(self.locals[l], LocalSlot::Var(_) | LocalSlot::Ptr(_)) => Some(l),
+                    _ => None,
+                };
+                if let Some(l) = whole {
+                    passed.push(l);
+                    values.push(self.pointer(a, block).expect("a variable is a place"));
+                    continue;
+                }
+                let place = self.pointer(a, block).expect("sema checks that a reference argument is a place");
+                let ty = self.m.ty(&a.ty);
+                let tmp = self.func.local_variables.append(naga::LocalVariable { name: Some(f.locals[i].name.as_str().to_owned()), ty, init: None }, a.span.into());
+                let tmp_ptr = self.append_plain(E::LocalVariable(tmp), a.span);
+                let value = self.append(E::Load { pointer: place }, a.span);
+                self.push(block, naga::Statement::Store { pointer: tmp_ptr, value }, a.span);
+                write_back.push((tmp, place));
+                values.push(tmp_ptr);
+                continue;
+            }
             if !matches!(a.ty, Ty::Sampler(_)) {
                 values.push(self.expr(a, block));
                 continue;
@@ -106,7 +140,16 @@ impl FnBuilder<'_, '_> {
             true => self.callee(fid),
             false => specialised_helper(self.m, fid, self.vertex_lod, samplers),
         };
-        (function, values)
+        (function, values, write_back)
+    }
+
+    /// Copies the temporaries of a call's reference arguments back.
+    pub(super) fn write_back(&mut self, write_back: WriteBack, block: &mut Block, s: crate::source::Span) {
+        for (tmp, place) in write_back {
+            let tmp_ptr = self.append_plain(E::LocalVariable(tmp), s);
+            let value = self.append(E::Load { pointer: tmp_ptr }, s);
+            self.push(block, naga::Statement::Store { pointer: place, value }, s);
+        }
     }
 
     /// The sampler expression `e` names: one known here, or an element of

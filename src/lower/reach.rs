@@ -70,6 +70,10 @@ impl EntryIo {
                 }
             }
             assigned_globals(&ep.func.body, &mut written);
+            // What the entry point passes to `var p : T&` parameters.
+            for &gid in &ep.func.ref_writes {
+                written[gid] = true;
+            }
             let mut mine = vec![false; n];
             for &gid in ep.func.uses.keys() {
                 let g = &p.globals[gid];

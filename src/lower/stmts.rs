@@ -33,9 +33,10 @@ impl FnBuilder<'_, '_> {
             Stmt::Assign { target, op, value, span: sp } => self.assign(target, *op, value, *sp, block),
             Stmt::Expr(e) => {
                 if let ExprKind::Call(fid, args) = &e.kind {
-                    let (function, args) = self.call(*fid, args, block);
+                    let (function, args, write_back) = self.call(*fid, args, block);
                     let result = (e.ty != Ty::Void).then(|| self.append_plain(E::CallResult(function), e.span));
                     self.push(block, Statement::Call { function, arguments: args, result }, e.span);
+                    self.write_back(write_back, block, e.span);
                 } else {
                     self.expr(e, block);
                 }

@@ -59,7 +59,7 @@ pub(super) fn show_ty(ty: &Ty, struct_names: &[String]) -> String {
     if let Some(name) = ty.builtin_name() {
         return name.to_string();
     }
-    sema::types::TyDisplay { ty, struct_names }.to_string()
+    sema::types::TyDisplay { ty, struct_names, enum_names: &[] }.to_string()
 }
 
 /// The naga types made so far for DSL types, and their layouts.
@@ -109,6 +109,7 @@ impl TypeTable {
             }
             // Samplers, void and error never reach here: sema only lets
             // value types into variables and expressions that have types.
+            Ty::Enum(id) => add_type(module, None, TypeInner::Scalar(naga_scalar(p.enums[*id as usize].base))),
             Ty::Sampler(_) | Ty::Void | Ty::Error => add_type(module, None, TypeInner::Scalar(naga::Scalar::F32)),
         };
         match small {

@@ -17,6 +17,10 @@ pub trait ConstEnv {
     fn lookup(&self, name: &str) -> Option<(ConstValue, Ty)>;
     /// A struct type and its field types.
     fn struct_type(&self, name: &str) -> Option<(Ty, Vec<Ty>)>;
+    /// The value of `Enum.member`, where `ty` names an enumeration.
+    fn enum_value(&self, _ty: &str, _member: &str) -> Option<(ConstValue, Ty)> {
+        None
+    }
 }
 
 /// Every name an expression mentions (so the constants it uses can be
@@ -128,7 +132,11 @@ fn eval(e: &Expr, env: &dyn ConstEnv, depth: usize) -> Result<(ConstValue, Ty), 
             let n = vals.len() as u32;
             Ok((ConstValue::Composite(vals.into_iter().map(|v| v.0).collect()), Ty::Array(Box::new(first), n)))
         }
-        ExprKind::Field(..) | ExprKind::Index(..) => Err(not_const(e, "field or element access")),
+        ExprKind::Field(base, member) => match &base.kind {
+            ExprKind::Name(ty) => env.enum_value(&ty.name, &member.name).ok_or_else(|| not_const(e, "field access")),
+            _ => Err(not_const(e, "field access")),
+        },
+        ExprKind::Index(..) | ExprKind::Named(..) => Err(not_const(e, "element access or a named argument")),
         ExprKind::Str(_) => Err(Diagnostic::error("strings are not shader values", e.span)),
     }
 }
@@ -259,7 +267,7 @@ macro_rules! fold_int {
 
 pub fn binary(op: BinaryOp, a: &ConstValue, ta: &Ty, b: &ConstValue, tb: &Ty) -> Result<(ConstValue, Ty), String> {
     use BinaryOp::*;
-    let show = |t: &Ty| super::types::TyDisplay { ty: t, struct_names: &[] }.to_string();
+    let show = |t: &Ty| super::types::TyDisplay { ty: t, struct_names: &[], enum_names: &[] }.to_string();
     let mismatch = || format!("type mismatch in constant: `{}` and `{}` operands", show(ta), show(tb));
     if matches!(op, Shl | Shr) && ta.scalar().is_some_and(|s| s.is_integer()) && tb.scalar().is_some_and(|s| s.is_integer()) && ta.width() == tb.width() {
         // The amount may be int or uint; the result has the left operand's type.

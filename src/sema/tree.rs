@@ -15,6 +15,7 @@ pub type LocalId = usize;
 #[derive(Debug, Default)]
 pub struct Program {
     pub structs: Vec<StructDef>,
+    pub enums: Vec<EnumDef>,
     pub globals: Vec<Global>,
     pub consts: Vec<Const>,
     /// Helper functions, callees before callers.
@@ -26,12 +27,26 @@ impl Program {
     pub fn struct_names(&self) -> Vec<String> {
         self.structs.iter().map(|s| s.name.clone()).collect()
     }
+
+    pub fn enum_names(&self) -> Vec<String> {
+        self.enums.iter().map(|e| e.name.clone()).collect()
+    }
 }
 
 #[derive(Debug)]
 pub struct StructDef {
     pub name: String,
     pub fields: Vec<(String, Ty, Span)>,
+    pub span: Span,
+}
+
+/// An enumeration: its values are `int` (or `uint`) constants of its own type.
+#[derive(Debug)]
+pub struct EnumDef {
+    pub name: String,
+    /// `Int` or `Uint`.
+    pub base: super::types::Scalar,
+    pub values: Vec<(String, i64)>,
     pub span: Span,
 }
 
@@ -166,6 +181,9 @@ pub struct Local {
     pub name: crate::syntax::ast::Name,
     pub ty: Ty,
     pub mutable: bool,
+    /// A `var p : T&` parameter: the caller's variable, written through
+    /// (GLSL `inout`).
+    pub by_ref: bool,
     pub span: Span,
 }
 
@@ -189,6 +207,9 @@ pub struct Function {
     pub implicit_lod: bool,
     /// Helper functions called directly.
     pub callees: std::collections::BTreeSet<FuncId>,
+    /// Globals this function's own body passes to a `var p : T&`
+    /// parameter, which the call may write.
+    pub ref_writes: Vec<GlobalId>,
 }
 
 impl Function {
@@ -206,7 +227,7 @@ pub struct EntryPoint {
     pub func: Function,
 }
 
-#[derive(Debug)]
+#[derive(Clone, Debug)]
 pub struct Expr {
     pub kind: ExprKind,
     pub ty: Ty,
@@ -276,7 +297,7 @@ impl Expr {
 /// A swizzle's component indices (0-3), held inline: no allocation.
 pub type Components = arrayvec::ArrayVec<u8, 4>;
 
-#[derive(Debug)]
+#[derive(Clone, Debug)]
 pub enum ExprKind {
     Float(f64),
     Int(i64),
@@ -302,6 +323,9 @@ pub enum ExprKind {
     /// Struct field by index.
     Field(Box<Expr>, u32),
     Index(Box<Expr>, Box<Expr>),
+    /// The zero value of `Expr::ty` (a field a named construction leaves
+    /// out and that has no initial value).
+    Zero,
 }
 
 #[derive(Debug)]

@@ -106,6 +106,9 @@ impl SamplerKind {
 /// Index of a struct in `sema::Program::structs`.
 pub type StructId = usize;
 
+/// Index of an enumeration in `sema::Program::enums`.
+pub type EnumId = u32;
+
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub enum Ty {
     Scalar(Scalar),
@@ -115,6 +118,9 @@ pub enum Ty {
     Matrix(u8, u8),
     Array(Box<Ty>, u32),
     Struct(StructId),
+    /// An enumeration: a distinct type of named `int` (or `uint`) values,
+    /// compared and used as indices, converted with `int(e)`.
+    Enum(EnumId),
     Sampler(SamplerKind),
     /// The type of a call to a function without a result.
     Void,
@@ -225,6 +231,7 @@ impl Ty {
 pub struct TyDisplay<'a> {
     pub ty: &'a Ty,
     pub struct_names: &'a [String],
+    pub enum_names: &'a [String],
 }
 
 impl fmt::Display for TyDisplay<'_> {
@@ -236,8 +243,9 @@ impl fmt::Display for TyDisplay<'_> {
             Ty::Scalar(s) => f.write_str(s.name()),
             Ty::Vector(s, n) => write!(f, "{}{}", s.name(), n),
             Ty::Matrix(c, r) => write!(f, "float{c}x{r}"),
-            Ty::Array(elem, n) => write!(f, "{}[{}]", TyDisplay { ty: elem, struct_names: self.struct_names }, n),
+            Ty::Array(elem, n) => write!(f, "{}[{}]", TyDisplay { ty: elem, ..*self }, n),
             Ty::Struct(id) => f.write_str(self.struct_names.get(*id).map(|s| s.as_str()).unwrap_or("<struct>")),
+            Ty::Enum(id) => f.write_str(self.enum_names.get(*id as usize).map(|s| s.as_str()).unwrap_or("<enum>")),
             Ty::Sampler(k) => f.write_str(k.name()),
             Ty::Void => f.write_str("void"),
             Ty::Error => f.write_str("{error}"),

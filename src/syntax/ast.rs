@@ -129,6 +129,7 @@ pub enum Item {
     Const(ConstDecl),
     Function(FunctionDecl),
     Struct(StructDecl),
+    Enum(EnumDecl),
 }
 
 /// `[name]` or `[name(key = value, flag, ...)]` before a `def` or `struct`.
@@ -202,6 +203,14 @@ pub struct Param {
     pub name: Ident,
     pub ty: TypeExpr,
     pub span: Span,
+    /// `var a : T`: a mutable copy (or, with `&`, a reference it writes).
+    pub mutable: bool,
+    /// `a : T&`: passed by reference (with `var`, GLSL `inout`).
+    pub by_ref: bool,
+    /// `a : T const`, where written (parameters are immutable anyway).
+    pub constant: Option<Span>,
+    /// `a : T = value`: filled in at calls that leave it out.
+    pub default: Option<Expr>,
 }
 
 #[derive(Clone, Debug)]
@@ -215,7 +224,20 @@ pub struct StructDecl {
 #[derive(Clone, Debug)]
 pub struct Field {
     pub name: Ident,
-    pub ty: TypeExpr,
+    /// `None` for `x = value`: the type is the value's.
+    pub ty: Option<TypeExpr>,
+    /// `x : T = value`: the field's value where a construction leaves it out.
+    pub init: Option<Expr>,
+    pub span: Span,
+}
+
+/// `enum Name [: base] { A; B = value; ... }`.
+#[derive(Clone, Debug)]
+pub struct EnumDecl {
+    pub name: Ident,
+    /// The storage type (`int` when not written).
+    pub base: Option<Ident>,
+    pub values: Vec<(Ident, Option<Expr>)>,
     pub span: Span,
 }
 
@@ -270,8 +292,11 @@ pub enum StmtKind {
     Expr(Expr),
     If { cond: Expr, then: Block, elifs: Vec<(Expr, Block)>, otherwise: Option<Block> },
     While { cond: Expr, body: Block },
-    /// `for (var in iter) body`; `iter` is an expression such as `range(a, b)`.
-    For { var: Ident, iter: Expr, body: Block },
+    /// `for (a, b in x, y) body`: one variable per iterated source (a
+    /// `range(...)` or an array), walked in parallel.
+    For { vars: Vec<Ident>, iters: Vec<Expr>, body: Block },
+    /// `with (subject) body`: the subject's fields are names in the body.
+    With { subject: Expr, body: Block },
     Return(Option<Expr>),
     Break,
     Continue,
@@ -353,4 +378,7 @@ pub enum ExprKind {
     /// A string literal, escapes resolved. The parser produces it only as an
     /// annotation argument value (`[vertex_program(name = "x")]`).
     Str(String),
+    /// `name = value` as a call argument: a field of a struct construction
+    /// (`Light(color = c, k = 1.0)`).
+    Named(Ident, Box<Expr>),
 }

@@ -22,7 +22,9 @@ pub enum ItemKind {
     Class,
     Var,
     Let,
-    /// `options`, `require`, `enum`, `typedef`, ... : never parsed.
+    /// `enum Name { ... }`: parsed when a shader names it.
+    Enum,
+    /// `options`, `require`, `typedef`, ... : never parsed.
     Other,
 }
 
@@ -223,11 +225,12 @@ pub fn split(toks: &[Token], map: &SourceMap) -> Vec<RawItem> {
             TokKind::Kw(Kw::Class) => ItemKind::Class,
             TokKind::Kw(Kw::Var) => ItemKind::Var,
             TokKind::Kw(Kw::Let) => ItemKind::Let,
+            TokKind::Ident if texts.get(toks[i].span) == "enum" => ItemKind::Enum,
             _ => ItemKind::Other,
         };
         let end = match kind {
             ItemKind::Def => scan(toks, i, Mode::Body, true, &mut stack),
-            ItemKind::Struct | ItemKind::Class => scan(toks, i, Mode::Body, false, &mut stack),
+            ItemKind::Struct | ItemKind::Class | ItemKind::Enum => scan(toks, i, Mode::Body, false, &mut stack),
             _ => scan(toks, i, Mode::Line, true, &mut stack),
         }
         .max(i + 1);
@@ -235,7 +238,7 @@ pub fn split(toks: &[Token], map: &SourceMap) -> Vec<RawItem> {
             RawItem { kind, annots, body: i..end, names: 0..0, shader_global: false, entry: false };
         let mut k = i + 1;
         match kind {
-            ItemKind::Def | ItemKind::Struct | ItemKind::Class => {
+            ItemKind::Def | ItemKind::Struct | ItemKind::Class | ItemKind::Enum => {
                 while k < end && is_modifier(&texts, toks, k) {
                     k += 1;
                 }
@@ -471,7 +474,7 @@ pub fn select(
     let mut decls = Decls { names: FxHashMap::with_capacity_and_hasher(items.len(), Default::default()), links: Vec::with_capacity(items.len()), lens: 0 };
     for (i, item) in items.iter().enumerate() {
         match item.kind {
-            ItemKind::Def | ItemKind::Struct | ItemKind::Class if !item.entry => {
+            ItemKind::Def | ItemKind::Struct | ItemKind::Class | ItemKind::Enum if !item.entry => {
                 if let Some(k) = item.first_name() {
                     decls.add(texts.get(toks[k].span), i);
                 }

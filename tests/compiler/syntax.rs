@@ -24,6 +24,7 @@ impl Parsed {
                 Item::Const(c) => c.name.name.to_string(),
                 Item::Function(f) => f.name.name.to_string(),
                 Item::Struct(s) => s.name.name.to_string(),
+                Item::Enum(e) => e.name.name.to_string(),
             })
             .collect()
     }
@@ -257,6 +258,7 @@ fn statements_and_expressions() {
             StmtKind::Break => "break",
             StmtKind::Continue => "continue",
             StmtKind::Block(_) => "block",
+            StmtKind::With { .. } => "with",
         })
         .collect();
     assert_eq!(kinds, ["local", "local", "local", "local", "local", "assign", "if", "while", "for", "block", "assign", "expr"]);

@@ -20,12 +20,13 @@ impl<'a, 'd> Checker<'a, 'd> {
         // Sized once: these tables are filled in one go.
         let mut counts = [0usize; 4];
         for item in items {
-            counts[match item {
-                ast::Item::Struct(_) => 0,
-                ast::Item::Global(_) => 1,
-                ast::Item::Const(_) => 2,
-                ast::Item::Function(_) => 3,
-            }] += 1;
+            match item {
+                ast::Item::Struct(_) => counts[0] += 1,
+                ast::Item::Global(_) => counts[1] += 1,
+                ast::Item::Const(_) => counts[2] += 1,
+                ast::Item::Function(_) => counts[3] += 1,
+                ast::Item::Enum(_) => {}
+            }
         }
         self.structs.reserve(counts[0]);
         self.globals.reserve(counts[1]);
@@ -39,7 +40,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         self.out.consts.reserve(counts[2]);
         self.out.functions.reserve(counts[3]);
         let mut seen: FxHashMap<&'a str, Span> = FxHashMap::with_capacity_and_hasher(items.len(), Default::default());
-        // Struct names first, so fields and globals can use any struct.
+        // Struct and enumeration names first, so fields and globals can use any.
         for item in items {
             if let ast::Item::Struct(s) = item {
                 self.check_unique(&mut seen, &s.name);
@@ -47,23 +48,28 @@ impl<'a, 'd> Checker<'a, 'd> {
                 self.out.structs.push(StructDef { name: s.name.name.as_str().to_string(), fields: Vec::new(), span: s.span });
             }
         }
+        self.declare_enums(&mut seen);
+        self.field_inits = vec![Vec::new(); self.out.structs.len()];
         for item in items {
             match item {
                 ast::Item::Struct(s) => {
                     let id = self.structs[s.name.name.as_str()];
                     let mut fields: Vec<(String, Ty, Span)> = Vec::new();
                     for f in &s.fields {
-                        let ty = self.resolve_type(&f.ty);
+                        // A field without a type takes its initial value's,
+                        // once constants are known (below).
+                        let ty = f.ty.as_ref().map_or(Ty::Error, |t| self.resolve_type(t));
                         if let Some((_, _, prev)) = fields.iter().find(|(n, _, _)| *n == *f.name.name) {
                             let d = Diagnostic::error(format!("field `{}` is declared twice", f.name.name), f.name.span)
                                 .with_secondary(*prev, "first declared here");
                             self.diags.push(d);
                         }
                         if !ty.is_value() && !ty.is_error() {
-                            let d = Diagnostic::error(format!("a struct field cannot have type `{}`", self.show(&ty)), f.ty.span);
+                            let d = Diagnostic::error(format!("a struct field cannot have type `{}`", self.show(&ty)), f.ty.as_ref().map_or(f.span, |t| t.span));
                             self.diags.push(d);
                         }
                         fields.push((f.name.name.as_str().to_string(), ty, f.name.span));
+                        self.field_inits[id].push(f.init.as_ref());
                     }
                     if fields.is_empty() {
                         let d = Diagnostic::error(format!("struct `{}` has no fields", s.name.name), s.name.span);
@@ -76,7 +82,12 @@ impl<'a, 'd> Checker<'a, 'd> {
                     self.const_decls.insert(&k.name.name, k);
                 }
                 ast::Item::Function(f) => {
-                    self.check_unique(&mut seen, &f.name);
+                    // Overloads share a name, and a function may be named
+                    // like a struct (its initializer).
+                    let name: &'a str = &f.name.name;
+                    if is_entry(f).is_some() || !(self.funcs.contains_key(name) || self.structs.contains_key(name)) {
+                        self.check_unique(&mut seen, &f.name);
+                    }
                     match is_entry(f) {
                         Some(stage) => {
                             if !f.params.is_empty() || f.ret.is_some() {
@@ -87,16 +98,59 @@ impl<'a, 'd> Checker<'a, 'd> {
                             self.entry_decls.push((f, stage));
                         }
                         None => {
-                            self.funcs.insert(&f.name.name, FuncState::Unchecked(self.fn_decls.len()));
+                            self.funcs.entry(name).or_default().push(self.fn_decls.len());
                             self.fn_decls.push(f);
+                            self.fn_states.push(FuncState::Unchecked);
+                            self.fn_sigs.push(None);
                         }
                     }
                 }
-                ast::Item::Global(_) => {}
+                ast::Item::Global(_) | ast::Item::Enum(_) => {}
             }
         }
+        self.enum_values();
+        self.check_field_inits();
+        self.check_overloads();
         self.check_struct_recursion();
         self.declare_globals(&mut seen);
+    }
+
+    /// Fields' initial values: constants of the field's type (or giving the
+    /// type of a field declared without one).
+    fn check_field_inits(&mut self) {
+        for item in &self.ast.items {
+            let ast::Item::Struct(s) = item else { continue };
+            let id = self.structs[s.name.name.as_str()];
+            for (i, f) in s.fields.iter().enumerate() {
+                let Some(init) = &f.init else { continue };
+                let declared = self.out.structs[id].fields[i].1.clone();
+                let what = format!("the initial value of `{}.{}`", s.name.name, f.name.name);
+                match (&f.ty, self.constant_value(init, f.ty.as_ref().map(|_| &declared).filter(|t| !t.is_error()), &what)) {
+                    (None, Some(v)) => self.out.structs[id].fields[i].1 = v.ty,
+                    (None, None) => {}
+                    (Some(_), _) => {}
+                }
+            }
+        }
+    }
+
+    /// Overloads of one name must differ in their parameter types.
+    fn check_overloads(&mut self) {
+        let groups: Vec<Vec<usize>> = self.funcs.values().filter(|ds| ds.len() > 1).cloned().collect();
+        for ds in groups {
+            let sigs: Vec<Option<Signature>> = ds.iter().map(|&d| self.signature(d)).collect();
+            for (k, &d) in ds.iter().enumerate() {
+                let Some(sig) = &sigs[k] else { continue };
+                let earlier = (0..k).find(|&j| sigs[j].as_ref().is_some_and(|s| s.params == sig.params));
+                if let Some(j) = earlier {
+                    let f = self.fn_decls[d];
+                    let e = Diagnostic::error(format!("`{}` is defined twice with the same parameter types", f.name.name), f.name.span)
+                        .with_secondary(self.fn_decls[ds[j]].name.span, "first defined here")
+                        .with_note("overloads of one name differ in their parameter types");
+                    self.diags.push(e);
+                }
+            }
+        }
     }
 
     /// Finds structs that contain themselves and structs nested deeper than
@@ -448,6 +502,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                 }
                 Ok(UniformLayout { size: round(align, end), align, std_size: round(std_align, std_end), std_align })
             }
+            Ty::Enum(_) => Err(format!("an enumeration (`{}`) cannot be in a uniform block: its storage is not portable; use `int` and compare with `int(E.value)`", self.show(ty))),
             _ => Err(format!("`{}` cannot be in a uniform block", self.show(ty))),
         }
     }
@@ -461,7 +516,10 @@ impl<'a, 'd> Checker<'a, 'd> {
                 if let Some(&sid) = self.structs.get(id.name.as_str()) {
                     return Ty::Struct(sid);
                 }
-                let candidates: Vec<&str> = self.structs.keys().copied().chain(TYPE_NAMES.iter().copied()).collect();
+                if let Some(&eid) = self.enums.get(id.name.as_str()) {
+                    return Ty::Enum(eid);
+                }
+                let candidates: Vec<&str> = self.structs.keys().chain(self.enums.keys()).copied().chain(TYPE_NAMES.iter().copied()).collect();
                 let mut d = Diagnostic::error(format!("unknown type `{}`", id.name), id.span).with_label("not a type");
                 if let Some(s) = suggest(&id.name, candidates.iter().copied()) {
                     d = d.with_note(format!("help: did you mean `{s}`?"));
@@ -579,7 +637,7 @@ impl<'a, 'd> Checker<'a, 'd> {
 
 /// Lets the constant evaluator look up other constants through the checker.
 pub(super) struct ConstEnvAdapter<'c, 'a, 'd> {
-    c: &'c Checker<'a, 'd>,
+    pub(super) c: &'c Checker<'a, 'd>,
 }
 
 impl ConstEnv for ConstEnvAdapter<'_, '_, '_> {
@@ -592,5 +650,9 @@ impl ConstEnv for ConstEnvAdapter<'_, '_, '_> {
     fn struct_type(&self, name: &str) -> Option<(Ty, Vec<Ty>)> {
         let &sid = self.c.structs.get(name)?;
         Some((Ty::Struct(sid), self.c.out.structs[sid].fields.iter().map(|f| f.1.clone()).collect()))
+    }
+
+    fn enum_value(&self, ty: &str, member: &str) -> Option<(ConstValue, Ty)> {
+        self.c.enum_const(ty, member)
     }
 }

@@ -52,6 +52,12 @@ impl<'a, 'd> Checker<'a, 'd> {
                 self.diags.push(Diagnostic::error("strings are not shader values", span));
                 err_expr(span)
             }
+            ast::ExprKind::Named(name, _) => {
+                let d = Diagnostic::error(format!("`{} = ...` names a field, which only a struct construction takes", name.name), span)
+                    .with_note("help: construct a struct as `S(field = value, ...)`; compare with `==`");
+                self.diags.push(d);
+                err_expr(span)
+            }
             ast::ExprKind::Paren(inner) => {
                 let mut x = self.check_expr(cx, inner);
                 x.span = span;
@@ -141,6 +147,11 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
             ast::ExprKind::Call { callee, args } => self.check_call(cx, callee, args, span),
             ast::ExprKind::Field(base, name) => {
+                if let ast::ExprKind::Name(ty) = &base.kind {
+                    if let Some(v) = self.enum_value_expr(cx, ty, name, span) {
+                        return v;
+                    }
+                }
                 let b = self.check_expr(cx, base);
                 self.check_field(b, name, span)
             }
@@ -150,8 +161,8 @@ impl<'a, 'd> Checker<'a, 'd> {
                 if b.ty.is_error() || i.ty.is_error() {
                     return err_expr(span);
                 }
-                if i.ty != INT && i.ty != UINT {
-                    let d = Diagnostic::error(format!("type mismatch: an index must be `int` or `uint`, found `{}`", self.show(&i.ty)), i.span);
+                if i.ty != INT && i.ty != UINT && !matches!(i.ty, Ty::Enum(_)) {
+                    let d = Diagnostic::error(format!("type mismatch: an index must be `int`, `uint` or an enumeration value, found `{}`", self.show(&i.ty)), i.span);
                     self.diags.push(d);
                     return err_expr(span);
                 }
@@ -219,6 +230,9 @@ impl<'a, 'd> Checker<'a, 'd> {
 
     /// The value of a literal or named scalar constant.
     pub(super) fn literal_value(&self, e: &Expr) -> Option<ConstValue> {
+        if matches!(e.ty, Ty::Enum(_)) {
+            return None;
+        }
         match &e.kind {
             ExprKind::Int(v) => Some(ConstValue::Int(*v)),
             ExprKind::Uint(v) => Some(ConstValue::Uint(*v)),
@@ -230,7 +244,16 @@ impl<'a, 'd> Checker<'a, 'd> {
 
     pub(super) fn check_name(&mut self, cx: &mut FnCtx<'a>, id: &'a ast::Ident) -> Expr {
         let span = id.span;
+        if !cx.withs.is_empty() {
+            if let Some(f) = self.with_field(cx, &id.name, span) {
+                return f;
+            }
+        }
         if let Some(l) = cx.lookup(&id.name) {
+            if let Some(a) = cx.aliases.get(&l) {
+                // An element of an iterated array: the element itself.
+                return Expr { span, ..a.clone() };
+            }
             return Expr { kind: ExprKind::Local(l), ty: cx.locals[l].ty.clone(), span };
         }
         if let Some(&g) = self.globals.get(id.name.as_str()) {
@@ -253,6 +276,12 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
         if self.funcs.contains_key(id.name.as_str()) || builtins::is_builtin(&id.name) {
             self.diags.push(Diagnostic::error(format!("`{}` is a function; call it with `{}(...)`", id.name, id.name), span));
+            return err_expr(span);
+        }
+        if let Some(&e) = self.enums.get(id.name.as_str()) {
+            let first = self.out.enums[e as usize].values.first().map_or("value", |v| v.0.as_str());
+            let d = Diagnostic::error(format!("`{}` is an enumeration, not a value", id.name), span).with_note(format!("help: name one of its values: `{}.{first}`", id.name));
+            self.diags.push(d);
             return err_expr(span);
         }
         let mut d = Diagnostic::error(format!("unknown name `{}`", id.name), span).with_label("not found in this scope");
@@ -317,13 +346,34 @@ impl<'a, 'd> Checker<'a, 'd> {
 
     pub(super) fn check_call(&mut self, cx: &mut FnCtx<'a>, callee: &'a ast::Ident, args: &'a [ast::Expr], span: Span) -> Expr {
         let name = callee.name.as_str();
+        // Fields by name: a struct construction (`Light(k = 1.0)`).
+        if args.iter().any(|a| matches!(a.kind, ast::ExprKind::Named(..))) {
+            return self.check_named_construction(cx, callee, args, span);
+        }
         // Constructors and casts.
         let ctor_ty = Ty::from_builtin_name(name).filter(|t| !matches!(t, Ty::Sampler(_))).or_else(|| self.structs.get(name).map(|&s| Ty::Struct(s)));
-        let xs: Vec<Expr> = args.iter().map(|a| self.check_expr(cx, a)).collect();
+        let mut xs: Vec<Expr> = args.iter().map(|a| self.check_expr(cx, a)).collect();
         if xs.iter().any(|x| x.ty.is_error()) {
             return err_expr(span);
         }
+        // A helper (or a struct's initializer, a function named like it).
+        if self.funcs.contains_key(name) {
+            match self.check_helper_call(cx, callee, xs, span, matches!(ctor_ty, Some(Ty::Struct(_)))) {
+                Ok(e) => return e,
+                Err(back) => xs = back,
+            }
+        }
         if let Some(ty) = ctor_ty {
+            // `S()`: every field takes its initial value.
+            if matches!(ty, Ty::Struct(_)) && xs.is_empty() {
+                return self.check_named_construction(cx, callee, args, span);
+            }
+            // `int(e)` / `uint(e)`: an enumeration value's number.
+            if let ([x], Ty::Scalar(Scalar::Int | Scalar::Uint)) = (xs.as_slice(), &ty) {
+                if matches!(x.ty, Ty::Enum(_)) {
+                    return Expr { kind: ExprKind::Construct(xs), ty, span };
+                }
+            }
             return self.check_constructor(ty, xs, span);
         }
         if name == "range" {
@@ -333,54 +383,6 @@ impl<'a, 'd> Checker<'a, 'd> {
         if name == "discard" {
             self.diags.push(Diagnostic::error("`discard()` is a statement and has no value", span));
             return err_expr(span);
-        }
-        if self.funcs.contains_key(name) {
-            self.call_depth = cx.depth + CALL_DEPTH;
-            let Some(fid) = self.function_id(name, callee.span) else { return err_expr(span) };
-            let f = &self.out.functions[fid];
-            let params = &f.locals[..f.params];
-            if params.len() != xs.len() {
-                let sig = self.signature_text(fid);
-                let d = Diagnostic::error(format!("wrong number of arguments: `{name}` takes {} but {} were given", params.len(), xs.len()), span)
-                    .with_secondary(f.span, "defined here")
-                    .with_note(format!("expected: {sig}"));
-                self.diags.push(d);
-                return err_expr(span);
-            }
-            if let Some((x, p)) = xs.iter().zip(params).find(|(x, p)| x.ty != p.ty) {
-                let sig = self.signature_text(fid);
-                let d = Diagnostic::error(format!("type mismatch: argument is `{}` but `{name}` expects `{}`", self.show(&x.ty), self.show(&p.ty)), x.span)
-                    .with_note(format!("expected: {sig}"));
-                self.diags.push(d);
-                return err_expr(span);
-            }
-            // A sampler argument names one sampler: the global, an element
-            // picked by a constant, or the caller's own sampler parameter.
-            for x in xs.iter().filter(|x| matches!(x.ty, Ty::Sampler(_))) {
-                match &x.kind {
-                    ExprKind::Global(_) | ExprKind::Local(_) => {}
-                    ExprKind::Index(_, i) if i.const_int(&self.out.consts).is_some() => {}
-                    _ => {
-                        let d = Diagnostic::error(format!("a sampler argument of `{name}` must be known when compiling"), x.span)
-                            .with_label("indexed at run time")
-                            .with_note("help: index the array with a constant, or call texture functions on the array element directly where the index varies");
-                        self.diags.push(d);
-                        return err_expr(span);
-                    }
-                }
-            }
-            let f = &self.out.functions[fid];
-            // The callee's global uses become the caller's (a sampler
-            // global passed to it already is one, as a name read here).
-            for &g in f.uses.keys() {
-                cx.uses.entry(g).or_insert(span);
-            }
-            if let Some(fo) = f.fragment_only {
-                cx.fragment_only.get_or_insert((span, fo.1));
-            }
-            cx.implicit_lod |= f.implicit_lod;
-            cx.callees.insert(fid);
-            return Expr { kind: ExprKind::Call(fid, xs), ty: f.ret.clone(), span };
         }
         if let Some((_, b)) = builtins::TEXTURE_FUNCTIONS.iter().find(|(n, _)| *n == name) {
             return self.check_texture_call(cx, *b, name, xs, span);
@@ -423,13 +425,6 @@ impl<'a, 'd> Checker<'a, 'd> {
                 err_expr(span)
             }
         }
-    }
-
-    pub(super) fn signature_text(&self, fid: FuncId) -> String {
-        let f = &self.out.functions[fid];
-        let ps: Vec<String> = f.locals[..f.params].iter().map(|l| format!("{} : {}", l.name, self.show(&l.ty))).collect();
-        let ret = if f.ret == Ty::Void { String::new() } else { format!(" : {}", self.show(&f.ret)) };
-        format!("{}({}){}", f.name, ps.join("; "), ret)
     }
 
     pub(super) fn check_constructor(&mut self, ty: Ty, xs: Vec<Expr>, span: Span) -> Expr {
@@ -664,6 +659,9 @@ impl<'a, 'd> Checker<'a, 'd> {
     /// The result type of `l op r`, or reports why there is none.
     pub(super) fn binary_type(&mut self, op: BinaryOp, l: &Ty, r: &Ty, span: Span) -> Option<Ty> {
         use BinaryOp::*;
+        if matches!(l, Ty::Enum(_)) || matches!(r, Ty::Enum(_)) {
+            return self.enum_binary(op, l, r, span);
+        }
         let res = match op {
             Add | Sub | Mul | Div | Mod => arith_type(op, l, r),
             Lt | Le | Gt | Ge => match (l, r) {

@@ -9,8 +9,11 @@
 //! [`decls`] (structs, globals, types, constants), [`stmts`] (functions,
 //! statements, places) and [`exprs`] (expressions, calls, operators).
 
+mod calls;
 mod decls;
+mod enums;
 mod exprs;
+mod loops;
 mod stmts;
 
 use std::collections::hash_map::Entry;
@@ -20,7 +23,7 @@ use super::builtins::{self, Builtin};
 use super::consts::{eval_const, ConstEnv};
 use super::tree::*;
 use super::limits::*;
-use super::types::{SamplerKind, Scalar, StructId, Ty, TyDisplay, BOOL, FLOAT, INT, UINT};
+use super::types::{EnumId, SamplerKind, Scalar, StructId, Ty, TyDisplay, BOOL, FLOAT, INT, UINT};
 use crate::diag::{suggest, Diagnostic, Diagnostics};
 use rustc_hash::{FxHashMap, FxHashSet};
 use crate::source::Span;
@@ -38,11 +41,24 @@ pub fn check(program: &ast::Program, diags: &mut Diagnostics) -> Option<Program>
 }
 
 
+/// Where a helper function's checking stands (per declaration: an
+/// overloaded name has several).
+#[derive(Clone, Copy)]
 enum FuncState {
-    Unchecked(usize),
+    Unchecked,
     InProgress(Span),
     Done(FuncId),
     Failed,
+}
+
+/// A helper's parameter types, resolved before its body is checked (calls
+/// pick an overload by them); `None` where a type is wrong (reported).
+#[derive(Clone)]
+struct Signature {
+    params: Vec<Ty>,
+    /// How many leading parameters a call must give: those after have
+    /// default values.
+    required: usize,
 }
 
 /// The local names visible in a body. Each name maps to its innermost
@@ -56,11 +72,29 @@ struct Scopes<'a> {
     open: Vec<(usize, LocalId)>,
 }
 
+/// A `with (subject)` block being checked: its fields are names inside.
+struct WithScope {
+    /// The subject, safe to evaluate again at each use (`loops::stable`).
+    subject: Expr,
+    id: StructId,
+    /// Locals from this one on are declared inside the block (and hide
+    /// the fields).
+    first_local: LocalId,
+}
+
 /// Per-function state while checking a body.
 struct FnCtx<'a> {
     locals: Vec<Local>,
     scopes: Scopes<'a>,
     ret: Ty,
+    /// No declared result: the first `return` decides it (its span here).
+    infer_ret: bool,
+    ret_from: Option<Span>,
+    /// Loop variables that stand for an element of an iterated array
+    /// (`for (x in arr)`): each use is this expression.
+    aliases: FxHashMap<LocalId, Expr>,
+    withs: Vec<WithScope>,
+    ref_writes: Vec<GlobalId>,
     loop_depth: usize,
     uses: BTreeMap<GlobalId, Span>,
     fragment_only: Option<(Span, &'static str)>,
@@ -70,6 +104,30 @@ struct FnCtx<'a> {
 }
 
 impl<'a> FnCtx<'a> {
+    /// A context for a body returning `ret`, starting at call depth
+    /// `depth`, with room for `locals`.
+    fn new(scopes: Scopes<'a>, ret: Ty, depth: usize, locals: usize) -> Self {
+        let mut cx = FnCtx {
+            locals: Vec::with_capacity(locals),
+            scopes,
+            ret,
+            infer_ret: false,
+            ret_from: None,
+            aliases: FxHashMap::default(),
+            withs: Vec::new(),
+            ref_writes: Vec::new(),
+            loop_depth: 0,
+            uses: BTreeMap::new(),
+            fragment_only: None,
+            implicit_lod: false,
+            callees: Default::default(),
+            depth,
+        };
+        // The parameters' scope.
+        cx.scopes.open.push((0, 0));
+        cx
+    }
+
     fn open_scope(&mut self) {
         let s = &mut self.scopes;
         s.open.push((s.shadowed.len(), self.locals.len()));
@@ -111,13 +169,20 @@ struct Checker<'a, 'd> {
     // Names are borrowed from the syntax tree.
     structs: FxHashMap<&'a str, StructId>,
     globals: FxHashMap<&'a str, GlobalId>,
+    enums: FxHashMap<&'a str, EnumId>,
     consts: FxHashMap<&'a str, ConstId>,
     const_decls: FxHashMap<&'a str, &'a ast::ConstDecl>,
     const_in_progress: Vec<&'a str>,
     /// Constants already reported as wrong: their uses report nothing more.
     failed_consts: FxHashSet<&'a str>,
-    funcs: FxHashMap<&'a str, FuncState>,
+    /// Helper function names and their declarations (indices into
+    /// `fn_decls`; several for an overloaded name).
+    funcs: FxHashMap<&'a str, Vec<usize>>,
     fn_decls: Vec<&'a ast::FunctionDecl>,
+    fn_states: Vec<FuncState>,
+    fn_sigs: Vec<Option<Option<Signature>>>,
+    /// Per struct, per field: its initial value, if declared.
+    field_inits: Vec<Vec<Option<&'a ast::Expr>>>,
     entry_decls: Vec<(&'a ast::FunctionDecl, naga::ShaderStage)>,
     builtin_vars: FxHashMap<BuiltinVar, GlobalId>,
     /// Depth at which the next helper function checked on first use starts.
@@ -156,12 +221,16 @@ impl<'a, 'd> Checker<'a, 'd> {
             out: Program::default(),
             structs: FxHashMap::default(),
             globals: FxHashMap::default(),
+            enums: FxHashMap::default(),
             consts: FxHashMap::default(),
             const_decls: FxHashMap::default(),
             const_in_progress: Vec::new(),
             failed_consts: FxHashSet::default(),
             funcs: FxHashMap::default(),
             fn_decls: Vec::new(),
+            fn_states: Vec::new(),
+            fn_sigs: Vec::new(),
+            field_inits: Vec::new(),
             entry_decls: Vec::new(),
             builtin_vars: FxHashMap::default(),
             call_depth: 0,
@@ -171,7 +240,8 @@ impl<'a, 'd> Checker<'a, 'd> {
 
     fn show(&self, ty: &Ty) -> String {
         let names: Vec<String> = self.out.structs.iter().map(|s| s.name.clone()).collect();
-        TyDisplay { ty, struct_names: &names }.to_string()
+        let enum_names = self.out.enum_names();
+        TyDisplay { ty, struct_names: &names, enum_names: &enum_names }.to_string()
     }
 
     /// Reports a name defined twice at top level.

@@ -17,7 +17,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                 self.diags.push(d);
                 continue;
             }
-            let Some(func) = self.check_function(decl, Some(stage)) else { continue };
+            let Some(func) = self.check_function(decl, Some(stage), None) else { continue };
             self.check_stage_rules(&name, stage, &func);
             self.out.entry_points.push(EntryPoint { name, stage, func });
         }
@@ -67,36 +67,39 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
     }
 
-    /// Looks up (checking on first use) a helper function.
-    pub(super) fn function_id(&mut self, name: &str, call_span: Span) -> Option<FuncId> {
-        match self.funcs.get(name)? {
-            FuncState::Done(id) => Some(*id),
+    /// The checked function of helper declaration `idx`, checked on first
+    /// use (callees land before their callers, and recursion is found).
+    pub(super) fn function_id(&mut self, idx: usize, call_span: Span) -> Option<FuncId> {
+        let decl = self.fn_decls[idx];
+        match self.fn_states[idx] {
+            FuncState::Done(id) => Some(id),
             FuncState::Failed => None,
             FuncState::InProgress(def) => {
-                let d = Diagnostic::error(format!("`{name}` calls itself; shaders cannot recurse"), call_span).with_secondary(*def, "function defined here");
+                let d = Diagnostic::error(format!("`{}` calls itself; shaders cannot recurse", decl.name.name), call_span).with_secondary(def, "function defined here");
                 self.diags.push(d);
                 None
             }
-            FuncState::Unchecked(idx) => {
-                let decl = self.fn_decls[*idx];
-                let name: &'a str = &decl.name.name;
+            FuncState::Unchecked => {
                 if self.call_depth > MAX_DEPTH {
                     let d = Diagnostic::error(format!("calls nest too deeply (limit {MAX_DEPTH} levels of nested calls, expressions and blocks)"), call_span)
                         .with_secondary(decl.name.span, "this function is called at the limit");
                     self.diags.push(d);
-                    self.funcs.insert(name, FuncState::Failed);
+                    self.fn_states[idx] = FuncState::Failed;
                     return None;
                 }
-                self.funcs.insert(name, FuncState::InProgress(decl.name.span));
-                match self.check_function(decl, None) {
-                    Some(f) => {
+                self.fn_states[idx] = FuncState::InProgress(decl.name.span);
+                let params = self.signature(idx).map(|s| s.params);
+                let checked = params.and_then(|ps| self.check_function(decl, None, Some(ps)));
+                match checked {
+                    Some(mut f) => {
+                        f.name = self.output_name(idx, &f);
                         let id = self.out.functions.len();
                         self.out.functions.push(f);
-                        self.funcs.insert(name, FuncState::Done(id));
+                        self.fn_states[idx] = FuncState::Done(id);
                         Some(id)
                     }
                     None => {
-                        self.funcs.insert(name, FuncState::Failed);
+                        self.fn_states[idx] = FuncState::Failed;
                         None
                     }
                 }
@@ -104,7 +107,48 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
     }
 
-    pub(super) fn check_function(&mut self, decl: &'a ast::FunctionDecl, entry: Option<naga::ShaderStage>) -> Option<Function> {
+    /// The parameter types of helper declaration `idx`, resolved once (a
+    /// wrong type is reported once, and the function is then `None`).
+    pub(super) fn signature(&mut self, idx: usize) -> Option<Signature> {
+        if let Some(sig) = &self.fn_sigs[idx] {
+            return sig.clone();
+        }
+        let decl = self.fn_decls[idx];
+        let errors = self.diags.error_count();
+        let params: Vec<Ty> = decl.params.iter().map(|p| self.resolve_type(&p.ty)).collect();
+        let required = decl.params.iter().rposition(|p| p.default.is_none()).map_or(0, |k| k + 1);
+        let sig = (self.diags.error_count() == errors).then_some(Signature { params, required });
+        self.fn_sigs[idx] = Some(sig.clone());
+        sig
+    }
+
+    /// The name a helper has in the output: its own, or for an overloaded
+    /// name, with its parameter types (`luma_float3`, `luma_float4`), so
+    /// every target spells each overload the same way.
+    fn output_name(&self, idx: usize, f: &Function) -> String {
+        let decl = self.fn_decls[idx];
+        let name = decl.name.name.as_str();
+        if self.funcs.get(name).is_none_or(|ds| ds.len() < 2) {
+            return name.to_string();
+        }
+        let mut out = name.to_string();
+        for l in &f.locals[..f.params] {
+            out.push('_');
+            let t = self.show(&l.ty);
+            out.extend(t.chars().map(|c| if c.is_ascii_alphanumeric() { c } else { '_' }));
+        }
+        if f.params == 0 {
+            out.push_str("_void");
+        }
+        while out.ends_with('_') {
+            out.pop();
+        }
+        out
+    }
+
+    /// Checks a function's body. `params`: the helper's parameter types,
+    /// already resolved (entry points: `None`, resolved here).
+    pub(super) fn check_function(&mut self, decl: &'a ast::FunctionDecl, entry: Option<naga::ShaderStage>, params: Option<Vec<Ty>>) -> Option<Function> {
         let errors_before = self.diags.error_count();
         let ret = match &decl.ret {
             Some(t) if entry.is_none() => self.resolve_type(t),
@@ -115,35 +159,21 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
         // Scope tables are reused from function to function (a callee is
         // checked in the middle of its first caller, hence a pool).
-        let mut scopes = self.spare_scopes.pop().unwrap_or_else(|| Scopes {
+        let scopes = self.spare_scopes.pop().unwrap_or_else(|| Scopes {
             visible: FxHashMap::with_capacity_and_hasher(16, Default::default()),
             shadowed: Vec::with_capacity(16),
             open: Vec::with_capacity(8),
         });
-        // The parameters' scope.
-        scopes.open.push((0, 0));
-        let mut cx = FnCtx {
-            locals: Vec::with_capacity(decl.params.len() + count_locals(&decl.body.stmts)),
-            scopes,
-            ret: ret.clone(),
-            loop_depth: 0,
-            uses: BTreeMap::new(),
-            fragment_only: None,
-            implicit_lod: false,
-            callees: Default::default(),
-            depth: if entry.is_some() { 0 } else { self.call_depth },
-        };
-        for p in &decl.params {
-            let ty = self.resolve_type(&p.ty);
-            // One sampler is a parameter (each call site picks the global:
-            // lowering specialises the function per sampler); an array of
-            // them is not.
-            if matches!(ty, Ty::Array(..)) && ty.is_sampler_like() {
-                let d = Diagnostic::error("an array of samplers cannot be a parameter", p.ty.span)
-                    .with_note("help: pass one element (`s[k]` with a constant `k`) to a parameter of the element's type, or use the array global directly");
-                self.diags.push(d);
-            }
-            self.declare_local(&mut cx, &p.name, ty, false);
+        let depth = if entry.is_some() { 0 } else { self.call_depth };
+        let mut cx = FnCtx::new(scopes, ret, depth, decl.params.len() + count_locals(&decl.body.stmts));
+        // No declared result: the first `return` says what it is.
+        cx.infer_ret = entry.is_none() && decl.ret.is_none();
+        let param_tys = params.unwrap_or_else(|| decl.params.iter().map(|p| self.resolve_type(&p.ty)).collect());
+        for (p, ty) in decl.params.iter().zip(param_tys) {
+            self.check_param(p, &ty);
+            let by_ref = p.by_ref && p.mutable;
+            let lid = self.declare_local(&mut cx, &p.name, ty, p.mutable);
+            cx.locals[lid].by_ref = by_ref;
         }
         let params = cx.locals.len();
         let body = self.check_block(&mut cx, &decl.body.stmts);
@@ -152,9 +182,13 @@ impl<'a, 'd> Checker<'a, 'd> {
         scopes.shadowed.clear();
         scopes.open.clear();
         self.spare_scopes.push(scopes);
+        let ret = cx.ret.clone();
         if !ret.is_error() && ret != Ty::Void && !always_returns(&body) {
-            let d = Diagnostic::error(format!("function `{}` can reach its end without returning a `{}`", decl.name.name, self.show(&ret)), decl.body.span)
+            let mut d = Diagnostic::error(format!("function `{}` can reach its end without returning a `{}`", decl.name.name, self.show(&ret)), decl.body.span)
                 .with_label("the last statement here does not return");
+            if let (true, Some(first)) = (cx.infer_ret, cx.ret_from) {
+                d = d.with_secondary(first, format!("the result type `{}` comes from this `return`", self.show(&ret)));
+            }
             self.diags.push(d);
         }
         if self.diags.error_count() > errors_before {
@@ -171,7 +205,39 @@ impl<'a, 'd> Checker<'a, 'd> {
             fragment_only: cx.fragment_only,
             implicit_lod: cx.implicit_lod,
             callees: cx.callees,
+            ref_writes: cx.ref_writes,
         })
+    }
+
+    /// The rules of one parameter: what its type may be with `var`, `&`
+    /// and `const`, and its default value.
+    fn check_param(&mut self, p: &'a ast::Param, ty: &Ty) {
+        // One sampler is a parameter (each call site picks the global:
+        // lowering specialises the function per sampler); an array of
+        // them is not.
+        if matches!(ty, Ty::Array(..)) && ty.is_sampler_like() {
+            let d = Diagnostic::error("an array of samplers cannot be a parameter", p.ty.span)
+                .with_note("help: pass one element (`s[k]` with a constant `k`) to a parameter of the element's type, or use the array global directly");
+            self.diags.push(d);
+        }
+        if let (true, Some(c)) = (p.mutable, p.constant) {
+            let d = Diagnostic::error(format!("parameter `{}` is both `var` and `const`", p.name.name), c)
+                .with_note("help: `var` makes a parameter the function may change; drop one of the two");
+            self.diags.push(d);
+        }
+        if ty.is_sampler_like() && (p.mutable || p.by_ref) {
+            let what = if p.mutable { "`var`" } else { "a reference (`&`)" };
+            let d = Diagnostic::error(format!("sampler parameter `{}` cannot be {what}", p.name.name), p.span)
+                .with_note("a sampler parameter names the sampler the call passes; declare it as `name : sampler2D`");
+            self.diags.push(d);
+        }
+        if let Some(v) = &p.default {
+            if ty.is_sampler_like() {
+                self.diags.push(Diagnostic::error("a sampler parameter cannot have a default value", v.span));
+            } else if !ty.is_error() {
+                self.constant_value(v, Some(ty), &format!("the default value of `{}`", p.name.name));
+            }
+        }
     }
 
     pub(super) fn declare_local(&mut self, cx: &mut FnCtx<'a>, id: &'a ast::Ident, ty: Ty, mutable: bool) -> LocalId {
@@ -184,7 +250,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             self.diags.push(d);
         }
         let lid = cx.locals.len();
-        cx.locals.push(Local { name: id.name.clone(), ty, mutable, span: id.span });
+        cx.locals.push(Local { name: id.name.clone(), ty, mutable, by_ref: false, span: id.span });
         cx.declare(&id.name, lid);
         lid
     }
@@ -228,6 +294,11 @@ impl<'a, 'd> Checker<'a, 'd> {
                     (Some(d), None) => {
                         if !*mutable {
                             self.diags.push(Diagnostic::error(format!("`let {}` needs a value", names.first.name), s.span));
+                        } else if self.has_field_inits(d) {
+                            let t = self.show(d);
+                            let d = Diagnostic::error(format!("`var {}` would start as zeros, but `{t}` gives fields initial values", names.first.name), s.span)
+                                .with_note(format!("help: initialise it: `var {} = {t}()` (the initial values) or with the fields you want", names.first.name));
+                            self.diags.push(d);
                         }
                         d.clone()
                     }
@@ -304,34 +375,11 @@ impl<'a, 'd> Checker<'a, 'd> {
                 cx.loop_depth -= 1;
                 out.push(Stmt::While { cond: c, body, span: s.span });
             }
-            ast::StmtKind::For { var, iter, body } => {
-                let (start, end) = self.check_range(cx, iter);
-                cx.open_scope();
-                let ty = start.ty.clone();
-                let local = self.declare_local(cx, var, ty, false);
-                cx.loop_depth += 1;
-                let body = self.check_block(cx, &body.stmts);
-                cx.loop_depth -= 1;
-                cx.close_scope();
-                out.push(Stmt::For { var: local, start, end, body, span: s.span });
-            }
+            ast::StmtKind::For { vars, iters, body } => self.check_for(cx, vars, iters, body, s.span, out),
+            ast::StmtKind::With { subject, body } => self.check_with(cx, subject, body, s.span, out),
             ast::StmtKind::Return(value) => {
                 let v = value.as_ref().map(|e| self.check_expr(cx, e));
-                match (&v, &cx.ret) {
-                    (None, Ty::Void) => {}
-                    (Some(e), Ty::Void) => {
-                        self.diags.push(Diagnostic::error("this function returns nothing, so `return` takes no value", e.span));
-                    }
-                    (None, r) if !r.is_error() => {
-                        let msg = format!("`return` needs a `{}` value here", self.show(r));
-                        self.diags.push(Diagnostic::error(msg, s.span));
-                    }
-                    (Some(e), r) if !r.is_error() && !e.ty.is_error() && e.ty != *r => {
-                        let d = Diagnostic::error(format!("type mismatch: returning `{}` from a function declared to return `{}`", self.show(&e.ty), self.show(r)), e.span);
-                        self.diags.push(d);
-                    }
-                    _ => {}
-                }
+                self.check_return(cx, v.as_ref(), s.span);
                 out.push(Stmt::Return(v, s.span));
             }
             ast::StmtKind::Break | ast::StmtKind::Continue => {
@@ -347,6 +395,59 @@ impl<'a, 'd> Checker<'a, 'd> {
                 // A nested block only scopes names; its statements run in order.
                 out.push(Stmt::If { cond: Expr { kind: ExprKind::Bool(true), ty: BOOL, span: b.span }, then: inner, otherwise: Vec::new(), span: b.span });
             }
+        }
+    }
+
+    /// `return [value]`: the value against the declared result, or (none
+    /// declared) against the first `return`, which decides it.
+    pub(super) fn check_return(&mut self, cx: &mut FnCtx<'a>, v: Option<&Expr>, span: Span) {
+        if cx.infer_ret && cx.ret_from.is_none() {
+            cx.ret_from = Some(span);
+            cx.ret = match v {
+                None => Ty::Void,
+                Some(e) if e.ty.is_sampler_like() => {
+                    self.diags.push(Diagnostic::error("functions cannot return samplers", e.span));
+                    Ty::Error
+                }
+                Some(e) if e.ty == Ty::Void => {
+                    self.diags.push(Diagnostic::error("this expression has no value to return", e.span));
+                    Ty::Error
+                }
+                Some(e) => e.ty.clone(),
+            };
+            return;
+        }
+        let inferred = cx.infer_ret.then_some(cx.ret_from).flatten();
+        match (v, &cx.ret) {
+            (None, Ty::Void) => {}
+            (Some(e), Ty::Void) => {
+                let d = match inferred {
+                    Some(first) => Diagnostic::error("this `return` gives a value, but the function's first `return` gives none", e.span)
+                        .with_secondary(first, "the first `return`, which makes the result `void`")
+                        .with_note("help: every `return` of a function gives a value of one type, or none gives a value"),
+                    // Only entry points have no result without inferring one.
+                    None => Diagnostic::error("an entry point returns nothing, so `return` takes no value", e.span)
+                        .with_note("entry points write their results to `@out`/`@inout` globals and `gl_Position`"),
+                };
+                self.diags.push(d);
+            }
+            (None, r) if !r.is_error() => {
+                let mut d = Diagnostic::error(format!("`return` needs a `{}` value here", self.show(r)), span);
+                if let Some(first) = inferred {
+                    d = d.with_secondary(first, format!("the first `return` gives a `{}`", self.show(r)));
+                }
+                self.diags.push(d);
+            }
+            (Some(e), r) if !r.is_error() && !e.ty.is_error() && e.ty != *r => {
+                let d = match inferred {
+                    Some(first) => Diagnostic::error(format!("type mismatch: this `return` gives `{}`, but the first `return` gives `{}`", self.show(&e.ty), self.show(r)), e.span)
+                        .with_secondary(first, format!("the result type `{}` comes from here", self.show(r)))
+                        .with_note("help: convert the value, or declare the result type (`def f(...) : T`)"),
+                    None => Diagnostic::error(format!("type mismatch: returning `{}` from a function declared to return `{}`", self.show(&e.ty), self.show(r)), e.span),
+                };
+                self.diags.push(d);
+            }
+            _ => {}
         }
     }
 
@@ -542,7 +643,9 @@ fn count_locals(stmts: &[ast::Stmt]) -> usize {
                     + otherwise.as_ref().map_or(0, |b| count_locals(&b.stmts))
             }
             ast::StmtKind::While { body, .. } => count_locals(&body.stmts),
-            ast::StmtKind::For { body, .. } => 1 + count_locals(&body.stmts),
+            // The loop variables and up to two hidden locals per source.
+            ast::StmtKind::For { body, vars, iters } => vars.len() + 2 * iters.len() + count_locals(&body.stmts),
+            ast::StmtKind::With { body, .. } => 2 + count_locals(&body.stmts),
             ast::StmtKind::Block(b) => count_locals(&b.stmts),
             _ => 0,
         })

@@ -71,9 +71,44 @@ impl<'m> Parser<'_, 'm> {
                 return None;
             }
         };
+        // `def f(x : int) => x + 1`: a body of one returned expression.
+        if let Some(arrow) = self.eat(P::FatArrow) {
+            self.skip_nl();
+            let value = self.expr().ok()?;
+            let span = arrow.span.to(value.span);
+            let ret_stmt = Stmt { kind: StmtKind::Return(Some(value)), span };
+            let body = Block { stmts: vec![ret_stmt], span };
+            self.expect_line_end("the function").ok()?;
+            return Some(FunctionDecl { annotations, name, params, ret, span: start.to(span), body });
+        }
         self.skip_nl();
         let body = self.block().ok()?;
         Some(FunctionDecl { annotations, name, params, ret, span: start.to(body.span), body })
+    }
+
+    /// Skips visibility and storage words after `def`, `struct`, `let` or
+    /// `enum` (`def private f`): `private` and `public` are visibility only,
+    /// which a shader has no use for; `shared` and `static` change nothing
+    /// a shader can see either. Another daslang modifier is refused by name.
+    pub(super) fn modifiers(&mut self) -> PResult<()> {
+        loop {
+            let t = self.peek();
+            let next = self.toks.get(self.pos + 1).copied();
+            if t.kind != TokKind::Ident || !next.is_some_and(|n| n.kind == TokKind::Ident) {
+                return Ok(());
+            }
+            match self.text(&t) {
+                "private" | "public" | "shared" | "static" => {
+                    self.bump();
+                }
+                m @ ("override" | "abstract" | "sealed" | "template" | "inscope" | "unsafe") => {
+                    let msg = format!("`{m}` is not supported in shader code");
+                    self.err(t, msg, "a host-only modifier");
+                    return Err(());
+                }
+                _ => return Ok(()),
+            }
+        }
     }
 
     #[allow(clippy::type_complexity)]
@@ -81,29 +116,14 @@ impl<'m> Parser<'_, 'm> {
         let annotations = self.annotations()?;
         self.skip_nl();
         self.bump(); // `def`
+        self.modifiers()?;
         let name = self.ident("a function name")?;
         let mut params = Vec::new();
         if let Some(po) = self.eat(P::LParen) {
             self.nl_skip += 1;
             if self.eat(P::RParen).is_none() {
                 loop {
-                    if self.peek().is_kw(Kw::Var) {
-                        self.bump();
-                    }
-                    let names = self.names("a parameter name", false)?;
-                    let t = self.peek();
-                    if !t.is(P::Colon) {
-                        let msg = format!("expected ':' and the parameter's type, found {}", self.describe(&t));
-                        self.err(t, msg, "expected ':'");
-                        return Err(());
-                    }
-                    self.bump();
-                    let ty = self.ty()?;
-                    if let Some(eq) = self.eat(P::Eq) {
-                        self.err(eq, "default parameter values are not supported in shader code".into(), "default value");
-                        return Err(());
-                    }
-                    share_among(names, ty, |n, ty| params.push(Param { span: n.span.to(ty.span), name: n, ty }));
+                    self.param_group(&mut params)?;
                     if self.eat(P::Semi).is_some() || self.eat(P::Comma).is_some() {
                         continue;
                     }
@@ -113,8 +133,44 @@ impl<'m> Parser<'_, 'm> {
             }
             self.nl_skip -= 1;
         }
-        let ret = if self.eat(P::Colon).is_some() { Some(self.ty()?) } else { None };
+        let ret = if self.eat(P::Colon).is_some() || self.eat(P::Arrow).is_some() { Some(self.ty()?) } else { None };
         Ok((annotations, name, params, ret))
+    }
+
+    /// `[var] a, b : T [const] [&] [= default]`: one group of parameters
+    /// sharing a type, appended to `params`.
+    pub(super) fn param_group(&mut self, params: &mut Vec<Param>) -> PResult<()> {
+        let mutable = self.peek().is_kw(Kw::Var) && {
+            self.bump();
+            true
+        };
+        let names = self.names("a parameter name", false)?;
+        let t = self.peek();
+        if !t.is(P::Colon) {
+            let msg = format!("expected ':' and the parameter's type, found {}", self.describe(&t));
+            self.err(t, msg, "expected ':'");
+            return Err(());
+        }
+        self.bump();
+        let ty = self.ty()?;
+        let mut constant = None;
+        let mut by_ref = false;
+        loop {
+            let t = self.peek();
+            if t.kind == TokKind::Ident && self.text(&t) == "const" && constant.is_none() && !by_ref {
+                constant = Some(self.bump().span);
+            } else if t.is(P::Amp) && !by_ref {
+                self.bump();
+                by_ref = true;
+            } else {
+                break;
+            }
+        }
+        let default = if self.eat(P::Eq).is_some() { Some(self.expr()?) } else { None };
+        share_among(names, (ty, default), |n, (ty, default)| {
+            params.push(Param { span: n.span.to(ty.span), name: n, ty, mutable, by_ref, constant, default })
+        });
+        Ok(())
     }
 
     pub(super) fn structure(&mut self) -> PResult<StructDecl> {
@@ -125,6 +181,7 @@ impl<'m> Parser<'_, 'm> {
             self.err(kw, "classes are not supported in shader code".into(), "used by a shader here");
             return Err(());
         }
+        self.modifiers()?;
         let name = self.ident("a struct name")?;
         self.skip_nl();
         let open = self.expect(P::LBrace)?;
@@ -145,15 +202,51 @@ impl<'m> Parser<'_, 'm> {
 
     pub(super) fn field(&mut self) -> PResult<Vec<Field>> {
         let names = self.names("a field name", false)?;
-        self.expect(P::Colon)?;
-        let ty = self.ty()?;
-        if let Some(eq) = self.eat(P::Eq) {
-            self.err(eq, "field initialisers are not supported in shader code".into(), "initialiser");
-            return Err(());
-        }
+        let ty = if self.peek().is(P::Eq) {
+            None
+        } else {
+            self.expect(P::Colon)?;
+            Some(self.ty()?)
+        };
+        let init = if self.eat(P::Eq).is_some() { Some(self.expr()?) } else { None };
         let mut fields = Vec::with_capacity(names.count());
-        share_among(names, ty, |n, ty| fields.push(Field { span: n.span.to(ty.span), name: n, ty }));
+        share_among(names, (ty, init), |n, (ty, init)| {
+            let end = ty.as_ref().map(|t| t.span).or(init.as_ref().map(|e| e.span)).unwrap_or(n.span);
+            fields.push(Field { span: n.span.to(end), name: n, ty, init })
+        });
         Ok(fields)
+    }
+
+    /// `enum [private] Name [: base] { A; B = value }`: values on their own
+    /// lines, or separated by `;` or `,`.
+    pub(super) fn enumeration(&mut self) -> PResult<EnumDecl> {
+        let kw = self.bump(); // `enum`
+        self.modifiers()?;
+        let name = self.ident("an enumeration name")?;
+        let base = if self.eat(P::Colon).is_some() { Some(self.ident("a storage type such as `int` or `uint`")?) } else { None };
+        self.skip_nl();
+        let open = self.expect(P::LBrace)?;
+        let mut values = Vec::new();
+        let end = self.braced_lines(
+            open,
+            |p| loop {
+                let n = p.ident("an enumeration value name")?;
+                let v = if p.eat(P::Eq).is_some() { Some(p.expr()?) } else { None };
+                values.push((n, v));
+                if p.eat(P::Comma).is_none() {
+                    return Ok(());
+                }
+                p.skip_nl();
+                if p.raw_peek().is(P::RBrace) {
+                    return Ok(());
+                }
+            },
+            |p, t| {
+                let msg = format!("expected newline after the enumeration value, found {}", p.describe(&t));
+                p.err(t, msg, "expected the end of the line");
+            },
+        )?;
+        Ok(EnumDecl { span: kw.span.to(end), name, base, values })
     }
 
     pub(super) fn qualifier(&mut self) -> PResult<Qualifier> {
@@ -246,6 +339,7 @@ impl<'m> Parser<'_, 'm> {
 
     pub(super) fn constant(&mut self) -> PResult<ConstDecl> {
         let kw = self.bump(); // `let`
+        self.modifiers()?;
         let name = self.ident("a constant name")?;
         let ty = if self.eat(P::Colon).is_some() { Some(self.ty()?) } else { None };
         let t = self.peek();

@@ -1,5 +1,6 @@
 //! Expressions: precedence climbing over binary operators, unary and
-//! postfix operators, calls, constructors, indexing, fields, literals.
+//! postfix operators, pipes (`x |> f(y)`), calls (with `name = value`
+//! arguments), constructors, indexing, fields, literals.
 
 use super::*;
 
@@ -77,9 +78,47 @@ impl<'m> Parser<'_, 'm> {
         let e = self.primary()?;
         // Like a chain of binary operators, each postfix operator is a level.
         let depth = self.depth;
-        let r = self.postfix_ops(e);
+        let r = self.postfix_ops(e).and_then(|e| self.pipes(e));
         self.depth = depth;
         r
+    }
+
+    /// `x |> f(y)` is `f(x, y)` and `f(y) <| x` is `f(y, x)`: daslang's
+    /// pipes, binding tighter than every operator but the postfix ones and
+    /// chaining left to right (`x |> f() |> g()` is `g(f(x))`). A bare name
+    /// is a call of no other arguments (`x |> normalize`).
+    pub(super) fn pipes(&mut self, mut e: Expr) -> PResult<Expr> {
+        loop {
+            let t = self.peek();
+            let forward = match t.kind {
+                TokKind::P(P::RPipe) => true,
+                TokKind::P(P::LPipe) => false,
+                _ => return Ok(e),
+            };
+            self.enter(t)?;
+            self.bump();
+            self.skip_nl();
+            let rhs = self.primary().and_then(|p| self.postfix_ops(p))?;
+            let (call, arg) = if forward { (rhs, e) } else { (e, rhs) };
+            let span = call.span.to(arg.span);
+            let (callee, mut args) = match call.kind {
+                ExprKind::Call { callee, args } => (callee, args),
+                ExprKind::Name(callee) => (callee, Vec::new()),
+                _ => {
+                    let d = Diagnostic::error(format!("`{}` needs a function call on its {} side", t_text(forward), if forward { "right" } else { "left" }), call.span)
+                        .with_label("not a call")
+                        .with_note("help: write `x |> f(y)` for `f(x, y)`, or `f(y) <| x` for `f(y, x)`");
+                    self.push(d);
+                    return Err(());
+                }
+            };
+            if forward {
+                args.insert(0, arg);
+            } else {
+                args.push(arg);
+            }
+            e = Expr { kind: ExprKind::Call { callee, args }, span: span.to(t.span) };
+        }
     }
 
     pub(super) fn postfix_ops(&mut self, mut e: Expr) -> PResult<Expr> {
@@ -150,6 +189,37 @@ impl<'m> Parser<'_, 'm> {
         Ok((items, end))
     }
 
+    /// The arguments of a call after its `(`: expressions, or `name =
+    /// value` (struct fields by name).
+    pub(super) fn call_args(&mut self, opener: Token) -> PResult<(Vec<Expr>, Token)> {
+        self.nl_skip += 1;
+        self.open += 1;
+        let mut items = Vec::new();
+        let end = loop {
+            if let Some(c) = self.eat(P::RParen) {
+                break c;
+            }
+            let t = self.peek();
+            let named = t.kind == TokKind::Ident && self.toks.get(self.pos + 1).is_some_and(|n| n.is(P::Eq));
+            if named {
+                self.bump();
+                self.bump(); // `=`
+                let value = self.expr()?;
+                let name = Ident { name: self.texts.name(t.span), span: t.span };
+                items.push(Expr { span: t.span.to(value.span), kind: ExprKind::Named(name, Box::new(value)) });
+            } else {
+                items.push(self.expr()?);
+            }
+            if self.eat(P::Comma).is_some() {
+                continue;
+            }
+            break self.expect_close(P::RParen, opener, "',' or ")?;
+        };
+        self.nl_skip -= 1;
+        self.open -= 1;
+        Ok((items, end))
+    }
+
     pub(super) fn primary(&mut self) -> PResult<Expr> {
         let t = self.peek();
         match t.kind {
@@ -209,9 +279,15 @@ impl<'m> Parser<'_, 'm> {
             let (items, end) = self.list(po, P::RParen)?;
             return Ok(Expr { kind: ExprKind::Array { elem: Some(elem), items }, span: t.span.to(end.span) });
         }
+        if next.is(P::LParen) && name.name == "fixed_array" {
+            // `fixed_array(a, b)`: the element type is the values'.
+            self.bump();
+            let (items, end) = self.list(next, P::RParen)?;
+            return Ok(Expr { kind: ExprKind::Array { elem: None, items }, span: t.span.to(end.span) });
+        }
         if next.is(P::LParen) {
             self.bump();
-            let (args, end) = self.list(next, P::RParen)?;
+            let (args, end) = self.call_args(next)?;
             return Ok(Expr { kind: ExprKind::Call { callee: name, args }, span: t.span.to(end.span) });
         }
         Ok(Expr { kind: ExprKind::Name(name), span: t.span })
@@ -291,6 +367,14 @@ impl<'m> Parser<'_, 'm> {
             .with_note("help: drop the `d` suffix to make it a float");
         self.push(d);
         Err(())
+    }
+}
+
+fn t_text(forward: bool) -> &'static str {
+    if forward {
+        "|>"
+    } else {
+        "<|"
     }
 }
 

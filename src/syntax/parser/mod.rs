@@ -79,6 +79,11 @@ pub(crate) fn parse_item(toks: &[Token], item: &RawItem, texts: &Texts, diags: &
                 out.push(Item::Const(c));
             }
         }
+        ItemKind::Enum => {
+            if let Ok(e) = p.enumeration() {
+                out.push(Item::Enum(e));
+            }
+        }
         ItemKind::Other => {}
     }
 }

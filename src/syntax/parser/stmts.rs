@@ -1,5 +1,6 @@
 //! Statements: blocks, `let`/`var`, assignments, `if`/`elif`/`else`,
-//! `while`, `for ... in range(...)`, `return`, `break`, `continue`.
+//! `while`, `for ... in ...`, `with`, `return`, `break`, `continue`, and
+//! the postfix `if` of a one-statement condition (`return x if (c)`).
 
 use super::*;
 
@@ -67,19 +68,20 @@ impl<'m> Parser<'_, 'm> {
             TokKind::Kw(Kw::For) => self.for_stmt()?,
             TokKind::Kw(Kw::Return) => {
                 self.bump();
-                if ends_stmt(&self.raw_peek()) {
+                let r = if ends_stmt(&self.raw_peek()) || self.raw_peek().is_kw(Kw::If) {
                     StmtKind::Return(None)
                 } else {
                     StmtKind::Return(Some(self.expr()?))
-                }
+                };
+                return self.postfix_if(t, r);
             }
             TokKind::Kw(Kw::Break) => {
                 self.bump();
-                StmtKind::Break
+                return self.postfix_if(t, StmtKind::Break);
             }
             TokKind::Kw(Kw::Continue) => {
                 self.bump();
-                StmtKind::Continue
+                return self.postfix_if(t, StmtKind::Continue);
             }
             TokKind::P(P::LBrace) => StmtKind::Block(self.block()?),
             TokKind::Kw(Kw::Elif) => {
@@ -90,9 +92,51 @@ impl<'m> Parser<'_, 'm> {
                 self.error_msg(t, "`else` without a preceding `if`", "no `if` before this");
                 return Err(());
             }
-            _ => self.expr_stmt()?,
+            TokKind::Ident if self.text(&t) == "with" && self.toks.get(self.pos + 1).is_some_and(|n| n.is(P::LParen)) => self.with_stmt()?,
+            _ => {
+                let k = self.expr_stmt()?;
+                if matches!(k, StmtKind::Expr(Expr { kind: ExprKind::Call { .. }, .. })) {
+                    return self.postfix_if(t, k);
+                }
+                k
+            }
         };
         Ok(Stmt { kind, span: t.span.to(self.last) })
+    }
+
+    /// `stmt if (cond) [else stmt]` after a `return`, `break`, `continue`
+    /// or call statement (daslang's postfix condition): the statement runs
+    /// where `cond` holds, the `else` one where it does not.
+    pub(super) fn postfix_if(&mut self, first: Token, then: StmtKind) -> PResult<Stmt> {
+        let then = Stmt { kind: then, span: first.span.to(self.last) };
+        if !self.raw_peek().is_kw(Kw::If) {
+            return Ok(then);
+        }
+        self.bump();
+        let cond = self.expr()?;
+        let otherwise = if self.raw_peek().is_kw(Kw::Else) {
+            self.bump();
+            let s = self.stmt()?;
+            if !matches!(s.kind, StmtKind::Return(_) | StmtKind::Break | StmtKind::Continue | StmtKind::Expr(_)) {
+                self.error_msg(Token::new(TokKind::Ident, s.span), "the `else` of a postfix `if` takes a `return`, `break`, `continue` or call", "not one of those");
+                return Err(());
+            }
+            Some(Block { span: s.span, stmts: vec![s] })
+        } else {
+            None
+        };
+        let span = first.span.to(self.last);
+        let then = Block { span: then.span, stmts: vec![then] };
+        Ok(Stmt { kind: StmtKind::If { cond, then, elifs: Vec::new(), otherwise }, span })
+    }
+
+    /// `with (subject) { ... }`.
+    pub(super) fn with_stmt(&mut self) -> PResult<StmtKind> {
+        self.bump(); // `with`
+        let open = self.peek();
+        let (subject, _) = self.bracketed(open, P::RParen)?;
+        let body = self.body()?;
+        Ok(StmtKind::With { subject, body })
     }
 
     pub(super) fn expr_stmt(&mut self) -> PResult<StmtKind> {
@@ -199,21 +243,27 @@ impl<'m> Parser<'_, 'm> {
             self.nl_skip += 1;
             self.open += 1;
         }
-        let var = self.ident("a loop variable name")?;
+        let mut vars = vec![self.ident("a loop variable name")?];
+        while self.eat(P::Comma).is_some() {
+            vars.push(self.ident("a loop variable name")?);
+        }
         let t = self.peek();
         if !t.is_kw(Kw::In) {
-            self.error_expected(t, "'in'");
+            self.error_expected(t, if vars.len() == 1 { "'in'" } else { "',' or 'in'" });
             return Err(());
         }
         self.bump();
-        let iter = self.expr()?;
+        let mut iters = vec![self.expr()?];
+        while self.eat(P::Comma).is_some() {
+            iters.push(self.expr()?);
+        }
         if let Some(po) = paren {
             self.expect_close(P::RParen, po, "")?;
             self.nl_skip -= 1;
             self.open -= 1;
         }
         let body = self.body()?;
-        Ok(StmtKind::For { var, iter, body })
+        Ok(StmtKind::For { vars, iters, body })
     }
 }
 

@@ -1,0 +1,326 @@
+//! Calls of helper functions: the overload the argument types pick,
+//! default values filled in for the parameters a call leaves out, and the
+//! variables passed to `var p : T&` parameters. Also struct constructions
+//! by field name (`Light(color = c)`), whose unnamed fields take their
+//! initial values, and the constant values both defaults come from.
+
+use super::*;
+
+/// Why a checked expression is not a constant value: its first part that
+/// reads or does something at run time.
+fn not_constant(e: &Expr) -> Option<(Span, &'static str)> {
+    let why = match &e.kind {
+        ExprKind::Global(_) => Some("reads a shader global"),
+        ExprKind::Local(_) => Some("reads a variable"),
+        ExprKind::Call(..) => Some("calls a function"),
+        ExprKind::Builtin(b, _) if b.is_texture() => Some("samples a texture"),
+        ExprKind::Builtin(builtins::Builtin::Derivative(..), _) => Some("takes a derivative"),
+        _ => None,
+    };
+    if let Some(w) = why {
+        return Some((e.span, w));
+    }
+    let mut found = None;
+    for_each_child(e, &mut |c| {
+        if found.is_none() {
+            found = not_constant(c);
+        }
+    });
+    found
+}
+
+/// Calls `f` on each operand of `e`.
+fn for_each_child<'e>(e: &'e Expr, f: &mut dyn FnMut(&'e Expr)) {
+    match &e.kind {
+        ExprKind::Unary(_, x) | ExprKind::Swizzle(x, _) | ExprKind::Field(x, _) => f(x),
+        ExprKind::Binary(_, lr) => {
+            f(&lr.0);
+            f(&lr.1);
+        }
+        ExprKind::Index(a, b) => {
+            f(a);
+            f(b);
+        }
+        ExprKind::Select { cond, accept, reject } => {
+            f(cond);
+            f(accept);
+            f(reject);
+        }
+        ExprKind::Call(_, xs) | ExprKind::Builtin(_, xs) | ExprKind::Construct(xs) => xs.iter().for_each(f),
+        ExprKind::Float(_) | ExprKind::Int(_) | ExprKind::Uint(_) | ExprKind::Bool(_) | ExprKind::Local(_) | ExprKind::Global(_) | ExprKind::Const(_) | ExprKind::Zero => {}
+    }
+}
+
+/// The place a `var p : T&` argument names: its root variable.
+pub(super) fn place_root(e: &Expr) -> Option<&Expr> {
+    match &e.kind {
+        ExprKind::Local(_) | ExprKind::Global(_) => Some(e),
+        ExprKind::Field(b, _) | ExprKind::Index(b, _) | ExprKind::Swizzle(b, _) => place_root(b),
+        _ => None,
+    }
+}
+
+impl<'a, 'd> Checker<'a, 'd> {
+    /// A value that must be known when compiling (a default parameter
+    /// value, a field's initial value), checked where nothing but
+    /// constants is in scope, as `ty` (`None`: any type). `what` names it
+    /// for messages. The same expression checks the same way every time,
+    /// so each call that needs it checks it again to get its own copy.
+    pub(super) fn constant_value(&mut self, e: &'a ast::Expr, ty: Option<&Ty>, what: &str) -> Option<Expr> {
+        let mut cx = FnCtx::new(Scopes::default(), Ty::Void, self.call_depth, 0);
+        let x = self.check_expr(&mut cx, e);
+        if x.ty.is_error() {
+            return None;
+        }
+        if let Some(ty) = ty.filter(|t| **t != x.ty) {
+            let d = Diagnostic::error(format!("type mismatch: {what} is `{}`, but its type is `{}`", self.show(&x.ty), self.show(ty)), x.span)
+                .with_label(format!("this is `{}`", self.show(&x.ty)));
+            self.diags.push(d);
+            return None;
+        }
+        if !x.ty.is_value() {
+            self.diags.push(Diagnostic::error(format!("{what} has no value"), x.span));
+            return None;
+        }
+        if let Some((span, why)) = not_constant(&x) {
+            let d = Diagnostic::error(format!("{what} must be a constant, but this {why}"), span)
+                .with_note("help: give literals, top-level `let` constants, enumeration values, constructors and math of those");
+            self.diags.push(d);
+            return None;
+        }
+        Some(x)
+    }
+
+    /// A call of helper `callee` with the checked arguments `xs`: the
+    /// overload their types pick, with default values for the parameters
+    /// left out. `Err(xs)` where no overload takes them and the name is a
+    /// struct's too (the call is then that struct's construction).
+    pub(super) fn check_helper_call(&mut self, cx: &mut FnCtx<'a>, callee: &'a ast::Ident, mut xs: Vec<Expr>, span: Span, is_struct: bool) -> Result<Expr, Vec<Expr>> {
+        let name = callee.name.as_str();
+        let decls = self.funcs[name].clone();
+        let mut matching = Vec::new();
+        for &d in &decls {
+            match self.signature(d) {
+                Some(sig) if sig.params.len() >= xs.len() && xs.len() >= sig.required && sig.params.iter().zip(&xs).all(|(p, x)| *p == x.ty) => matching.push(d),
+                Some(_) => {}
+                // A wrong parameter type, already reported.
+                None if decls.len() == 1 => return Ok(err_expr(span)),
+                None => {}
+            }
+        }
+        let idx = match matching.as_slice() {
+            [] if is_struct => return Err(xs),
+            [] => {
+                self.report_no_overload(name, &decls, &xs, span);
+                return Ok(err_expr(span));
+            }
+            [one] => *one,
+            several => {
+                let given: Vec<String> = xs.iter().map(|x| self.show(&x.ty)).collect();
+                let mut d = Diagnostic::error(format!("ambiguous call: {} overloads of `{name}` take ({})", several.len(), given.join(", ")), span);
+                for &k in several {
+                    d = d.with_secondary(self.fn_decls[k].name.span, "this one");
+                }
+                d = d.with_note("help: give the arguments that have default values, or remove an overload");
+                self.diags.push(d);
+                return Ok(err_expr(span));
+            }
+        };
+        self.call_depth = cx.depth + CALL_DEPTH;
+        let Some(fid) = self.function_id(idx, callee.span) else { return Ok(err_expr(span)) };
+        // Default values, filled in at the call.
+        let decl = self.fn_decls[idx];
+        for (i, p) in decl.params.iter().enumerate().skip(xs.len()) {
+            let ty = self.out.functions[fid].locals[i].ty.clone();
+            let default = p.default.as_ref().expect("the overload matched: the parameters left out have defaults");
+            match self.constant_value(default, Some(&ty), "the default value") {
+                Some(v) => xs.push(Expr { span, ..v }),
+                None => return Ok(err_expr(span)),
+            }
+        }
+        // A sampler argument names one sampler: the global, an element
+        // picked by a constant, or the caller's own sampler parameter.
+        for x in xs.iter().filter(|x| matches!(x.ty, Ty::Sampler(_))) {
+            match &x.kind {
+                ExprKind::Global(_) | ExprKind::Local(_) => {}
+                ExprKind::Index(_, i) if i.const_int(&self.out.consts).is_some() => {}
+                _ => {
+                    let d = Diagnostic::error(format!("a sampler argument of `{name}` must be known when compiling"), x.span)
+                        .with_label("indexed at run time")
+                        .with_note("help: index the array with a constant, or call texture functions on the array element directly where the index varies");
+                    self.diags.push(d);
+                    return Ok(err_expr(span));
+                }
+            }
+        }
+        // What `var p : T&` parameters write must be a variable the
+        // caller may write.
+        for i in 0..xs.len() {
+            let f = &self.out.functions[fid];
+            if !f.locals[i].by_ref {
+                continue;
+            }
+            let pname = f.locals[i].name.clone();
+            let pty = self.show(&f.locals[i].ty);
+            if let Err(why) = self.place_ok(cx, &xs[i]) {
+                let d = Diagnostic::error(format!("`{name}` writes its parameter `{pname}` (`var {pname} : {pty}&`), so the argument must be a variable the caller can write"), xs[i].span)
+                    .with_label("not writable here")
+                    .with_note(format!("{}", why.message))
+                    .with_secondary(f.span, "defined here");
+                self.diags.push(d);
+                return Ok(err_expr(span));
+            }
+            if let Some(ExprKind::Global(g)) = place_root(&xs[i]).map(|r| &r.kind) {
+                cx.ref_writes.push(*g);
+            }
+        }
+        let f = &self.out.functions[fid];
+        // The callee's global uses become the caller's (a sampler
+        // global passed to it already is one, as a name read here).
+        for &g in f.uses.keys() {
+            cx.uses.entry(g).or_insert(span);
+        }
+        if let Some(fo) = f.fragment_only {
+            cx.fragment_only.get_or_insert((span, fo.1));
+        }
+        cx.implicit_lod |= f.implicit_lod;
+        cx.callees.insert(fid);
+        Ok(Expr { kind: ExprKind::Call(fid, xs), ty: f.ret.clone(), span })
+    }
+
+    /// No overload of `name` takes `xs`: the arity or the first argument
+    /// type that does not fit (one declaration), or every signature.
+    fn report_no_overload(&mut self, name: &str, decls: &[usize], xs: &[Expr], span: Span) {
+        if let [idx] = *decls {
+            let sig = self.signature(idx).expect("a signature with a wrong type returned earlier");
+            let text = self.decl_signature_text(idx, &sig);
+            let def = self.fn_decls[idx].span;
+            let n = sig.params.len();
+            if xs.len() > n || xs.len() < sig.required {
+                let takes = if sig.required == n { n.to_string() } else { format!("{} to {n}", sig.required) };
+                let d = Diagnostic::error(format!("wrong number of arguments: `{name}` takes {takes} but {} were given", xs.len()), span)
+                    .with_secondary(def, "defined here")
+                    .with_note(format!("expected: {text}"));
+                self.diags.push(d);
+                return;
+            }
+            if let Some((x, p)) = xs.iter().zip(&sig.params).find(|(x, p)| x.ty != **p) {
+                let d = Diagnostic::error(format!("type mismatch: argument is `{}` but `{name}` expects `{}`", self.show(&x.ty), self.show(p)), x.span)
+                    .with_note(format!("expected: {text}"));
+                self.diags.push(d);
+            }
+            return;
+        }
+        let given: Vec<String> = xs.iter().map(|x| self.show(&x.ty)).collect();
+        let mut sigs = Vec::new();
+        for &d in decls {
+            if let Some(sig) = self.signature(d) {
+                sigs.push(self.decl_signature_text(d, &sig));
+            }
+        }
+        let d = Diagnostic::error(format!("no overload of `{name}` takes ({})", given.join(", ")), span).with_note(format!("the overloads are:\n  {}", sigs.join("\n  ")));
+        self.diags.push(d);
+    }
+
+    /// `name(a : T; b : U = ...)`, from a declaration and its signature.
+    pub(super) fn decl_signature_text(&self, idx: usize, sig: &Signature) -> String {
+        let decl = self.fn_decls[idx];
+        let ps: Vec<String> = decl
+            .params
+            .iter()
+            .zip(&sig.params)
+            .map(|(p, t)| {
+                let (var, r, def) = (if p.mutable { "var " } else { "" }, if p.by_ref { "&" } else { "" }, if p.default.is_some() { " = ..." } else { "" });
+                format!("{var}{} : {}{r}{def}", p.name.name, self.show(t))
+            })
+            .collect();
+        format!("{}({})", decl.name.name, ps.join("; "))
+    }
+
+    /// `S(a = x, b = y)`: the fields named take the values given, the others
+    /// their initial values (`a : float = 1.0` in the struct), or zero.
+    /// `S()` gives every field its initial value.
+    pub(super) fn check_named_construction(&mut self, cx: &mut FnCtx<'a>, callee: &'a ast::Ident, args: &'a [ast::Expr], span: Span) -> Expr {
+        let name = callee.name.as_str();
+        let Some(&sid) = self.structs.get(name) else {
+            let what = if self.funcs.contains_key(name) || builtins::is_builtin(name) { "a function" } else { "not a struct" };
+            let d = Diagnostic::error(format!("`name = value` arguments construct a struct, and `{name}` is {what}"), callee.span)
+                .with_note("help: pass a function's arguments by position, in the order of its parameters");
+            self.diags.push(d);
+            return err_expr(span);
+        };
+        let n = self.out.structs[sid].fields.len();
+        let mut given: Vec<Option<Expr>> = vec![None; n];
+        let mut ok = true;
+        for a in args {
+            let ast::ExprKind::Named(fname, value) = &a.kind else {
+                let d = Diagnostic::error(format!("a construction of `{name}` names all of its values or none"), a.span)
+                    .with_label("no field name")
+                    .with_note(format!("help: write `field = value` for this one too (the fields of `{name}`: {})", self.field_list(sid)));
+                self.diags.push(d);
+                ok = false;
+                continue;
+            };
+            let x = self.check_expr(cx, value);
+            let fields = &self.out.structs[sid].fields;
+            let Some(i) = fields.iter().position(|(f, _, _)| *f == *fname.name) else {
+                let names: Vec<&str> = fields.iter().map(|(f, _, _)| f.as_str()).collect();
+                let mut d = Diagnostic::error(format!("struct `{name}` has no field `{}`", fname.name), fname.span);
+                d = match suggest(&fname.name, names.iter().copied()) {
+                    Some(s) => d.with_note(format!("help: did you mean `{s}`?")),
+                    None => d.with_note(format!("its fields are: {}", names.join(", "))),
+                };
+                self.diags.push(d);
+                ok = false;
+                continue;
+            };
+            if let Some(prev) = &given[i] {
+                let d = Diagnostic::error(format!("field `{}` is given twice", fname.name), fname.span).with_secondary(prev.span, "first given here");
+                self.diags.push(d);
+                ok = false;
+                continue;
+            }
+            let fty = fields[i].1.clone();
+            if !x.ty.is_error() && !fty.is_error() && x.ty != fty {
+                let d = Diagnostic::error(format!("type mismatch: field `{}` of `{name}` is `{}`, given `{}`", fname.name, self.show(&fty), self.show(&x.ty)), x.span);
+                self.diags.push(d);
+                ok = false;
+            }
+            ok &= !x.ty.is_error();
+            given[i] = Some(x);
+        }
+        if !ok {
+            return err_expr(span);
+        }
+        let mut xs = Vec::with_capacity(n);
+        for (i, g) in given.into_iter().enumerate() {
+            match g {
+                Some(x) => xs.push(x),
+                None => match self.field_inits[sid][i] {
+                    Some(init) => match self.constant_value(init, None, "the initial value") {
+                        Some(v) => xs.push(Expr { span, ..v }),
+                        None => return err_expr(span),
+                    },
+                    None => xs.push(Expr { kind: ExprKind::Zero, ty: self.out.structs[sid].fields[i].1.clone(), span }),
+                },
+            }
+        }
+        Expr { kind: ExprKind::Construct(xs), ty: Ty::Struct(sid), span }
+    }
+
+    fn field_list(&self, sid: StructId) -> String {
+        self.out.structs[sid].fields.iter().map(|(f, _, _)| f.as_str()).collect::<Vec<_>>().join(", ")
+    }
+
+    /// Whether a value of `ty` has fields with initial values, which a
+    /// `var x : T` without a value would skip (daslang refuses it).
+    pub(super) fn has_field_inits(&self, ty: &Ty) -> bool {
+        match ty {
+            Ty::Struct(sid) => {
+                self.field_inits.get(*sid).is_some_and(|fs| fs.iter().any(|f| f.is_some())) || self.out.structs[*sid].fields.iter().any(|f| self.has_field_inits(&f.1))
+            }
+            Ty::Array(elem, _) => self.has_field_inits(elem),
+            _ => false,
+        }
+    }
+}

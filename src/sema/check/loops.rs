@@ -1,0 +1,281 @@
+//! `for` over ranges and fixed arrays, several walked in parallel, and
+//! `with`. Both bind names to parts of an expression evaluated once,
+//! before the block: what a subject's indices and values depend on is
+//! held in hidden `let`s first ([`Checker::stable`]), so each use of a
+//! name reads the same element a daslang reference would.
+
+use super::*;
+
+/// One source of a `for`.
+enum Source {
+    /// `range(start, end)`: `start` is stable.
+    Range { start: Expr, end: Expr },
+    /// A fixed array (`subject` is stable) of `len` elements.
+    Array { subject: Expr, len: u32 },
+}
+
+fn lit_int(k: i64, span: Span) -> Expr {
+    Expr { kind: ExprKind::Int(k), ty: INT, span }
+}
+
+fn binary(op: BinaryOp, l: Expr, r: Expr, ty: Ty, span: Span) -> Expr {
+    Expr { kind: ExprKind::Binary(op, Box::new((l, r))), ty, span }
+}
+
+/// `x` as a `uint` (its bits, for an `int`).
+fn to_uint(x: Expr) -> Expr {
+    if x.ty == UINT {
+        return x;
+    }
+    let span = x.span;
+    Expr { kind: ExprKind::Construct(vec![x]), ty: UINT, span }
+}
+
+/// `x` (a `uint`) as `ty` (`int`: its bits).
+fn from_uint(x: Expr, ty: &Ty) -> Expr {
+    if *ty == UINT {
+        return x;
+    }
+    let span = x.span;
+    Expr { kind: ExprKind::Construct(vec![x]), ty: ty.clone(), span }
+}
+
+fn break_if(cond: Expr, span: Span) -> Stmt {
+    Stmt::If { cond, then: vec![Stmt::Break(span)], otherwise: Vec::new(), span }
+}
+
+fn is_literal(e: &Expr) -> bool {
+    matches!(e.kind, ExprKind::Int(_) | ExprKind::Uint(_) | ExprKind::Const(_))
+}
+
+impl<'a, 'd> Checker<'a, 'd> {
+    /// A local the compiler adds (not visible by name), held in `cx`.
+    fn hidden_local(&mut self, cx: &mut FnCtx<'a>, name: String, ty: Ty, mutable: bool, span: Span) -> LocalId {
+        cx.locals.push(Local { name: ast::Name::new(&name), ty, mutable, by_ref: false, span });
+        cx.locals.len() - 1
+    }
+
+    /// `x` held in a hidden `let` (pushed to `pre`), as a read of it.
+    fn hold(&mut self, cx: &mut FnCtx<'a>, x: Expr, name: String, pre: &mut Vec<Stmt>) -> Expr {
+        let (ty, span) = (x.ty.clone(), x.span);
+        let id = self.hidden_local(cx, name, ty.clone(), false, span);
+        pre.push(Stmt::Local { local: id, init: Some(x), span });
+        Expr { kind: ExprKind::Local(id), ty, span }
+    }
+
+    /// `x`, safe to evaluate again at every use: a variable, constant, or
+    /// a field, component or element of one stays a place (reads see
+    /// writes, writes reach it), its run-time indices held in hidden
+    /// `let`s; any other value is held in a hidden `let`.
+    pub(super) fn stable(&mut self, cx: &mut FnCtx<'a>, x: Expr, name: &str, pre: &mut Vec<Stmt>) -> Expr {
+        let span = x.span;
+        match x.kind {
+            ExprKind::Global(_) | ExprKind::Const(_) => x,
+            ExprKind::Local(_) => x,
+            ExprKind::Field(b, i) => {
+                let b = self.stable(cx, *b, name, pre);
+                Expr { kind: ExprKind::Field(Box::new(b), i), ty: x.ty, span }
+            }
+            ExprKind::Swizzle(b, c) => {
+                let b = self.stable(cx, *b, name, pre);
+                Expr { kind: ExprKind::Swizzle(Box::new(b), c), ty: x.ty, span }
+            }
+            ExprKind::Index(b, i) => {
+                let b = self.stable(cx, *b, name, pre);
+                let fixed = is_literal(&i) || matches!(i.kind, ExprKind::Local(l) if !cx.locals[l].mutable);
+                let i = if fixed { *i } else { self.hold(cx, *i, format!("{name}_index"), pre) };
+                Expr { kind: ExprKind::Index(Box::new(b), Box::new(i)), ty: x.ty, span }
+            }
+            kind => self.hold(cx, Expr { kind, ..x }, name.to_string(), pre),
+        }
+    }
+
+    /// `for (a, b in x, y) body`: each variable takes the elements of its
+    /// source (`range(...)` or a fixed array) in step; the loop stops at
+    /// the end of the shortest.
+    pub(super) fn check_for(&mut self, cx: &mut FnCtx<'a>, vars: &'a [ast::Ident], iters: &'a [ast::Expr], body: &'a ast::Block, span: Span, out: &mut Vec<Stmt>) {
+        if vars.len() != iters.len() {
+            let d = Diagnostic::error(format!("`for` names {} loop variables for {} sources", vars.len(), iters.len()), span)
+                .with_note("help: give each source its variable, in order: `for (i, x in range(n), arr)`");
+            self.diags.push(d);
+            return;
+        }
+        let is_range = |e: &ast::Expr| matches!(&e.kind, ast::ExprKind::Call { callee, .. } if callee.name == "range");
+        if let ([var], [iter]) = (vars, iters) {
+            if is_range(iter) {
+                // The plain counting loop.
+                let (start, end) = self.check_range(cx, iter);
+                cx.open_scope();
+                let local = self.declare_local(cx, var, start.ty.clone(), false);
+                cx.loop_depth += 1;
+                let body = self.check_block(cx, &body.stmts);
+                cx.loop_depth -= 1;
+                cx.close_scope();
+                out.push(Stmt::For { var: local, start, end, body, span });
+                return;
+            }
+        }
+        cx.open_scope();
+        let mut pre = Vec::new();
+        let mut sources = Vec::with_capacity(iters.len());
+        for (var, iter) in vars.iter().zip(iters) {
+            let name = var.name.as_str();
+            let src = if is_range(iter) {
+                let (start, end) = self.check_range(cx, iter);
+                let start = if is_literal(&start) { start } else { self.hold(cx, start, format!("{name}_start"), &mut pre) };
+                Some(Source::Range { start, end })
+            } else {
+                let x = self.check_expr(cx, iter);
+                match &x.ty {
+                    Ty::Error => None,
+                    Ty::Array(_, n) => {
+                        let len = *n;
+                        let subject = self.stable(cx, x, &format!("{name}_array"), &mut pre);
+                        Some(Source::Array { subject, len })
+                    }
+                    other => {
+                        let d = Diagnostic::error(format!("`for` walks a `range(...)` or a fixed array; `{}` is neither", self.show(other)), x.span)
+                            .with_note("help: index it in a counting loop: `for (i in range(n))`");
+                        self.diags.push(d);
+                        None
+                    }
+                }
+            };
+            sources.push(src);
+        }
+        if sources.iter().any(|s| s.is_none()) {
+            cx.close_scope();
+            return;
+        }
+        let sources: Vec<Source> = sources.into_iter().map(|s| s.expect("checked above")).collect();
+        // The counter: the first range's own variable, or (the first
+        // source an array) a hidden index up to the shortest array.
+        let mut prelude = Vec::new();
+        let (counter, start, end, first_start) = match &sources[0] {
+            Source::Range { start, end } => {
+                let local = self.declare_local(cx, &vars[0], start.ty.clone(), false);
+                (local, start.clone(), end.clone(), Some(start.clone()))
+            }
+            Source::Array { .. } => {
+                let shortest = sources.iter().filter_map(|s| if let Source::Array { len, .. } = s { Some(*len) } else { None }).min().unwrap_or(0);
+                let local = self.hidden_local(cx, format!("{}_index", vars[0].name), INT, false, span);
+                (local, lit_int(0, span), lit_int(shortest as i64, span), None)
+            }
+        };
+        let counter_ty = cx.locals[counter].ty.clone();
+        let counter_expr = Expr { kind: ExprKind::Local(counter), ty: counter_ty.clone(), span };
+        // Steps taken so far, as a `uint` (exact however long the range).
+        let steps = match &first_start {
+            Some(s0) if sources.len() > 1 => {
+                let d = binary(BinaryOp::Sub, to_uint(counter_expr.clone()), to_uint(s0.clone()), UINT, span);
+                let id = self.hidden_local(cx, format!("{}_step", vars[0].name), UINT, false, span);
+                prelude.push(Stmt::Local { local: id, init: Some(d), span });
+                Some(Expr { kind: ExprKind::Local(id), ty: UINT, span })
+            }
+            Some(_) => None,
+            None => Some(to_uint(counter_expr.clone())),
+        };
+        let index = match &first_start {
+            Some(_) => steps.clone().map(|s| from_uint(s, &INT)),
+            None => Some(counter_expr.clone()),
+        };
+        let mut lets = Vec::new();
+        for (k, (var, src)) in vars.iter().zip(&sources).enumerate() {
+            match src {
+                Source::Range { .. } if k == 0 => {}
+                Source::Range { start, end } => {
+                    let steps = steps.clone().expect("a second source has a step count");
+                    // The range's length, once: `end - start` where positive.
+                    let ty = start.ty.clone();
+                    let longer = binary(BinaryOp::Gt, end.clone(), start.clone(), BOOL, span);
+                    let diff = binary(BinaryOp::Sub, to_uint(end.clone()), to_uint(start.clone()), UINT, span);
+                    let zero = Expr { kind: ExprKind::Uint(0), ty: UINT, span };
+                    let len = Expr { kind: ExprKind::Select { cond: Box::new(longer), accept: Box::new(diff), reject: Box::new(zero) }, ty: UINT, span };
+                    let len = self.hold(cx, len, format!("{}_count", var.name), &mut pre);
+                    prelude.push(break_if(binary(BinaryOp::Ge, steps.clone(), len, BOOL, span), span));
+                    let value = binary(BinaryOp::Add, start.clone(), from_uint(steps, &ty), ty.clone(), span);
+                    let local = self.declare_local(cx, var, ty, false);
+                    lets.push(Stmt::Local { local, init: Some(value), span });
+                }
+                Source::Array { subject, len } => {
+                    if first_start.is_some() {
+                        let steps = steps.clone().expect("a second source has a step count");
+                        let n = Expr { kind: ExprKind::Uint(*len as u64), ty: UINT, span };
+                        prelude.push(break_if(binary(BinaryOp::Ge, steps, n, BOOL, span), span));
+                    }
+                    let Ty::Array(elem, _) = &subject.ty else { unreachable!("an array source") };
+                    let elem = (**elem).clone();
+                    let i = index.clone().expect("an array source has an index");
+                    let element = Expr { kind: ExprKind::Index(Box::new(subject.clone()), Box::new(i)), ty: elem.clone(), span: var.span };
+                    let writable = self.place_ok(cx, subject).is_ok() && !matches!(subject.kind, ExprKind::Const(_));
+                    let local = self.declare_local(cx, var, elem.clone(), writable);
+                    if writable || elem.is_sampler_like() {
+                        // A reference: each use is the element itself.
+                        cx.aliases.insert(local, element);
+                    } else {
+                        cx.locals[local].mutable = false;
+                        lets.push(Stmt::Local { local, init: Some(element), span });
+                    }
+                }
+            }
+        }
+        prelude.extend(lets);
+        cx.loop_depth += 1;
+        let inner = self.check_block(cx, &body.stmts);
+        cx.loop_depth -= 1;
+        cx.close_scope();
+        prelude.extend(inner);
+        let for_stmt = Stmt::For { var: counter, start, end, body: prelude, span };
+        if pre.is_empty() {
+            out.push(for_stmt);
+        } else {
+            pre.push(for_stmt);
+            out.push(Stmt::If { cond: Expr { kind: ExprKind::Bool(true), ty: BOOL, span }, then: pre, otherwise: Vec::new(), span });
+        }
+    }
+
+    /// `with (subject) body`: the subject's fields are names in the body
+    /// (a local declared inside the body hides a field).
+    pub(super) fn check_with(&mut self, cx: &mut FnCtx<'a>, subject: &'a ast::Expr, body: &'a ast::Block, span: Span, out: &mut Vec<Stmt>) {
+        let x = self.check_expr(cx, subject);
+        let id = match x.ty {
+            Ty::Struct(id) => Some(id),
+            Ty::Error => None,
+            ref other => {
+                let d = Diagnostic::error(format!("`with` brings a struct's fields into scope, and `{}` is not a struct", self.show(other)), x.span)
+                    .with_note("help: name a struct value: `with (light) { ... }`");
+                self.diags.push(d);
+                None
+            }
+        };
+        let mut pre = Vec::new();
+        if let Some(id) = id {
+            let name = format!("with_{}", self.out.structs[id].name);
+            let subject = self.stable(cx, x, &name, &mut pre);
+            cx.withs.push(WithScope { subject, id, first_local: cx.locals.len() });
+        }
+        let inner = self.check_block(cx, &body.stmts);
+        if id.is_some() {
+            cx.withs.pop();
+        }
+        pre.extend(inner);
+        out.push(Stmt::If { cond: Expr { kind: ExprKind::Bool(true), ty: BOOL, span }, then: pre, otherwise: Vec::new(), span });
+    }
+
+    /// The field `name` of an enclosing `with` subject, unless a local
+    /// declared inside that `with` hides it.
+    pub(super) fn with_field(&self, cx: &FnCtx<'a>, name: &str, span: Span) -> Option<Expr> {
+        let local = cx.lookup(name);
+        for w in cx.withs.iter().rev() {
+            if local.is_some_and(|l| l >= w.first_local) {
+                return None;
+            }
+            let fields = &self.out.structs[w.id].fields;
+            if let Some(i) = fields.iter().position(|(f, _, _)| f == name) {
+                let ty = fields[i].1.clone();
+                return Some(Expr { kind: ExprKind::Field(Box::new(w.subject.clone()), i as u32), ty, span });
+            }
+        }
+        None
+    }
+}
