@@ -136,7 +136,9 @@ fn eval(e: &Expr, env: &dyn ConstEnv, depth: usize) -> Result<(ConstValue, Ty), 
             ExprKind::Name(ty) => env.enum_value(&ty.name, &member.name).ok_or_else(|| not_const(e, "field access")),
             _ => Err(not_const(e, "field access")),
         },
-        ExprKind::Index(..) | ExprKind::Named(..) => Err(not_const(e, "element access or a named argument")),
+        ExprKind::Index(..) => Err(not_const(e, "element access")),
+        ExprKind::Named(..) => Err(Diagnostic::error("a construction by field name is not supported in a top-level `let`", e.span)
+            .with_note("help: give every field in order (`S(a, b)`), or construct it inside the function that uses it")),
         ExprKind::Str(_) => Err(Diagnostic::error("strings are not shader values", e.span)),
     }
 }

@@ -97,27 +97,34 @@ impl<'a, 'd> Checker<'a, 'd> {
     /// struct's too (the call is then that struct's construction).
     pub(super) fn check_helper_call(&mut self, cx: &mut FnCtx<'a>, callee: &'a ast::Ident, mut xs: Vec<Expr>, span: Span, is_struct: bool) -> Result<Expr, Vec<Expr>> {
         let name = callee.name.as_str();
-        let decls = self.funcs[name].clone();
-        let mut matching = Vec::new();
-        for &d in &decls {
+        let count = self.funcs[name].len();
+        let mut matching = arrayvec::ArrayVec::<usize, 4>::new();
+        let mut more = 0;
+        for k in 0..count {
+            let d = self.funcs[name][k];
             match self.signature(d) {
-                Some(sig) if sig.params.len() >= xs.len() && xs.len() >= sig.required && sig.params.iter().zip(&xs).all(|(p, x)| *p == x.ty) => matching.push(d),
+                Some(sig) if sig.params.len() >= xs.len() && xs.len() >= sig.required && sig.params.iter().zip(&xs).all(|(p, x)| *p == x.ty) => {
+                    if matching.try_push(d).is_err() {
+                        more += 1;
+                    }
+                }
                 Some(_) => {}
                 // A wrong parameter type, already reported.
-                None if decls.len() == 1 => return Ok(err_expr(span)),
+                None if count == 1 => return Ok(err_expr(span)),
                 None => {}
             }
         }
         let idx = match matching.as_slice() {
             [] if is_struct => return Err(xs),
             [] => {
+                let decls = self.funcs[name].clone();
                 self.report_no_overload(name, &decls, &xs, span);
                 return Ok(err_expr(span));
             }
             [one] => *one,
             several => {
                 let given: Vec<String> = xs.iter().map(|x| self.show(&x.ty)).collect();
-                let mut d = Diagnostic::error(format!("ambiguous call: {} overloads of `{name}` take ({})", several.len(), given.join(", ")), span);
+                let mut d = Diagnostic::error(format!("ambiguous call: {} overloads of `{name}` take ({})", several.len() + more, given.join(", ")), span);
                 for &k in several {
                     d = d.with_secondary(self.fn_decls[k].name.span, "this one");
                 }

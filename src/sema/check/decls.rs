@@ -138,7 +138,7 @@ impl<'a, 'd> Checker<'a, 'd> {
     fn check_overloads(&mut self) {
         let groups: Vec<Vec<usize>> = self.funcs.values().filter(|ds| ds.len() > 1).cloned().collect();
         for ds in groups {
-            let sigs: Vec<Option<Signature>> = ds.iter().map(|&d| self.signature(d)).collect();
+            let sigs: Vec<Option<std::rc::Rc<Signature>>> = ds.iter().map(|&d| self.signature(d)).collect();
             for (k, &d) in ds.iter().enumerate() {
                 let Some(sig) = &sigs[k] else { continue };
                 let earlier = (0..k).find(|&j| sigs[j].as_ref().is_some_and(|s| s.params == sig.params));

@@ -284,6 +284,14 @@ impl<'a, 'd> Checker<'a, 'd> {
             self.diags.push(d);
             return err_expr(span);
         }
+        // A global not declared yet: only a constant (field initial value)
+        // is checked before the globals are.
+        if self.globals.is_empty() && self.ast.items.iter().any(|i| matches!(i, ast::Item::Global(g) if g.name.name == id.name)) {
+            let d = Diagnostic::error(format!("`{}` is a shader global, which a constant cannot read", id.name), span)
+                .with_note("help: give literals, top-level `let` constants, enumeration values, constructors and math of those");
+            self.diags.push(d);
+            return err_expr(span);
+        }
         let mut d = Diagnostic::error(format!("unknown name `{}`", id.name), span).with_label("not found in this scope");
         let mut candidates: Vec<&str> = cx.scopes.visible.keys().copied().collect();
         candidates.extend(self.globals.keys().copied());

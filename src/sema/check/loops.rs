@@ -95,7 +95,8 @@ impl<'a, 'd> Checker<'a, 'd> {
     /// the end of the shortest.
     pub(super) fn check_for(&mut self, cx: &mut FnCtx<'a>, vars: &'a [ast::Ident], iters: &'a [ast::Expr], body: &'a ast::Block, span: Span, out: &mut Vec<Stmt>) {
         if vars.len() != iters.len() {
-            let d = Diagnostic::error(format!("`for` names {} loop variables for {} sources", vars.len(), iters.len()), span)
+            let plural = |n: usize, what: &str| format!("{n} {what}{}", if n == 1 { "" } else { "s" });
+            let d = Diagnostic::error(format!("`for` names {} for {}", plural(vars.len(), "loop variable"), plural(iters.len(), "source")), span)
                 .with_note("help: give each source its variable, in order: `for (i, x in range(n), arr)`");
             self.diags.push(d);
             return;
@@ -165,7 +166,9 @@ impl<'a, 'd> Checker<'a, 'd> {
         let counter_ty = cx.locals[counter].ty.clone();
         let counter_expr = Expr { kind: ExprKind::Local(counter), ty: counter_ty.clone(), span };
         // Steps taken so far, as a `uint` (exact however long the range).
+        let from_zero = first_start.as_ref().is_some_and(|s0| matches!(s0.kind, ExprKind::Int(0) | ExprKind::Uint(0)));
         let steps = match &first_start {
+            Some(_) if from_zero => Some(to_uint(counter_expr.clone())),
             Some(s0) if sources.len() > 1 => {
                 let d = binary(BinaryOp::Sub, to_uint(counter_expr.clone()), to_uint(s0.clone()), UINT, span);
                 let id = self.hidden_local(cx, format!("{}_step", vars[0].name), UINT, false, span);
@@ -176,6 +179,8 @@ impl<'a, 'd> Checker<'a, 'd> {
             None => Some(to_uint(counter_expr.clone())),
         };
         let index = match &first_start {
+            // Counting from 0: the counter is the index.
+            Some(_) if from_zero && counter_ty == INT => Some(counter_expr.clone()),
             Some(_) => steps.clone().map(|s| from_uint(s, &INT)),
             None => Some(counter_expr.clone()),
         };

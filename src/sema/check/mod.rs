@@ -52,8 +52,7 @@ enum FuncState {
 }
 
 /// A helper's parameter types, resolved before its body is checked (calls
-/// pick an overload by them); `None` where a type is wrong (reported).
-#[derive(Clone)]
+/// pick an overload by them).
 struct Signature {
     params: Vec<Ty>,
     /// How many leading parameters a call must give: those after have
@@ -180,7 +179,7 @@ struct Checker<'a, 'd> {
     funcs: FxHashMap<&'a str, Vec<usize>>,
     fn_decls: Vec<&'a ast::FunctionDecl>,
     fn_states: Vec<FuncState>,
-    fn_sigs: Vec<Option<Option<Signature>>>,
+    fn_sigs: Vec<Option<Option<std::rc::Rc<Signature>>>>,
     /// Per struct, per field: its initial value, if declared.
     field_inits: Vec<Vec<Option<&'a ast::Expr>>>,
     entry_decls: Vec<(&'a ast::FunctionDecl, naga::ShaderStage)>,

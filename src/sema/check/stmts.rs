@@ -88,7 +88,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                     return None;
                 }
                 self.fn_states[idx] = FuncState::InProgress(decl.name.span);
-                let params = self.signature(idx).map(|s| s.params);
+                let params = self.signature(idx).map(|s| s.params.clone());
                 let checked = params.and_then(|ps| self.check_function(decl, None, Some(ps)));
                 match checked {
                     Some(mut f) => {
@@ -109,7 +109,7 @@ impl<'a, 'd> Checker<'a, 'd> {
 
     /// The parameter types of helper declaration `idx`, resolved once (a
     /// wrong type is reported once, and the function is then `None`).
-    pub(super) fn signature(&mut self, idx: usize) -> Option<Signature> {
+    pub(super) fn signature(&mut self, idx: usize) -> Option<std::rc::Rc<Signature>> {
         if let Some(sig) = &self.fn_sigs[idx] {
             return sig.clone();
         }
@@ -117,7 +117,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         let errors = self.diags.error_count();
         let params: Vec<Ty> = decl.params.iter().map(|p| self.resolve_type(&p.ty)).collect();
         let required = decl.params.iter().rposition(|p| p.default.is_none()).map_or(0, |k| k + 1);
-        let sig = (self.diags.error_count() == errors).then_some(Signature { params, required });
+        let sig = (self.diags.error_count() == errors).then(|| std::rc::Rc::new(Signature { params, required }));
         self.fn_sigs[idx] = Some(sig.clone());
         sig
     }

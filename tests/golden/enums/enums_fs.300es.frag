@@ -1,0 +1,46 @@
+#version 300 es
+
+precision highp float;
+precision highp int;
+
+struct enums_fs_out {
+    vec4 f_color;
+};
+const float WEIGHTS[4] = float[4](0.25, 0.5, 0.75, 1.0);
+
+layout(std140) uniform u_mode_block { int u_mode; };
+
+smooth in vec2 _vs2fs_location0;
+layout(location = 0) out vec4 _fs2p_location0;
+
+float attenuate(uint f, float d) {
+    if ((f == 1u)) {
+        return 1.0;
+    } else {
+        if ((f == 2u)) {
+            return max((1.0 - d), 0.0);
+        }
+    }
+    return (1.0 / (1.0 + ((float(f) * d) * d)));
+}
+
+float channel(vec4 c, int ch) {
+    return c[ch];
+}
+
+void main() {
+    vec2 v_uv = _vs2fs_location0;
+    vec4 f_color = vec4(0.0);
+    int _e2 = u_mode;
+    int ch_1 = ((_e2 == 0) ? 0 : 2);
+    uint f_1 = ((ch_1 > 1) ? 8u : 2u);
+    vec4 c_1 = vec4(v_uv, 0.5, 1.0);
+    float _e17 = attenuate(f_1, length(v_uv));
+    float _e19 = channel(c_1, ch_1);
+    f_color = vec4((_e19 * _e17), WEIGHTS[3], (float(ch_1) / 3.0), 1.0);
+    vec4 _e29 = f_color;
+    enums_fs_out _tmp_return = enums_fs_out(_e29);
+    _fs2p_location0 = _tmp_return.f_color;
+    return;
+}
+

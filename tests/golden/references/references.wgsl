@@ -1,0 +1,112 @@
+diagnostic(off, derivative_uniformity);
+
+struct Accum {
+    sum: vec3<f32>,
+    weight: f32,
+}
+
+struct references_vs_out {
+    @builtin(position) gl_Position: vec4<f32>,
+    @location(0) v_uv: vec2<f32>,
+}
+
+struct references_fs_out {
+    @location(0) f_color: vec4<f32>,
+}
+
+@group(0) @binding(0) 
+var<uniform> u_taps: array<vec4<f32>, 4>;
+
+fn falloff(d: f32, k: f32) -> f32 {
+    var d_1: f32;
+
+    d_1 = d;
+    let _e5 = d_1;
+    d_1 = max(_e5, 0f);
+    let _e9 = d_1;
+    d_1 = (_e9 * k);
+    let _e14 = d_1;
+    let _e16 = d_1;
+    return (1f / (1f + (_e14 * _e16)));
+}
+
+fn add_tap(acc_1: ptr<function, Accum>, c_1: vec3<f32>, w: f32) {
+    let _e5 = (*acc_1).sum;
+    (*acc_1).sum = (_e5 + (c_1 * w));
+    let _e8 = (*acc_1).weight;
+    (*acc_1).weight = (_e8 + w);
+    return;
+}
+
+fn clamp_into(x_2: ptr<function, f32>, lo: f32, hi: f32) {
+    let _e3 = (*x_2);
+    (*x_2) = clamp(_e3, lo, hi);
+    return;
+}
+
+fn mean(acc_2: Accum) -> vec3<f32> {
+    return select(vec3(0f), (acc_2.sum / vec3(acc_2.weight)), (acc_2.weight > 0f));
+}
+
+@vertex 
+fn references_vs(@location(0) a_pos: vec2<f32>) -> references_vs_out {
+    var v_uv: vec2<f32>;
+    var gl_Position: vec4<f32>;
+
+    v_uv = ((a_pos * 0.5f) + vec2(0.5f));
+    gl_Position = vec4<f32>(a_pos, 0f, 1f);
+    let _e12 = gl_Position;
+    let _e23 = v_uv;
+    return references_vs_out(vec4<f32>(_e12.x, -(_e12.y), ((_e12.z + _e12.w) * 0.5f), _e12.w), _e23);
+}
+
+@fragment 
+fn references_fs(@location(0) v_uv_1: vec2<f32>) -> references_fs_out {
+    var f_color: vec4<f32>;
+    var acc: Accum;
+    var weights: array<f32, 4>;
+    var i: i32;
+    var x: f32;
+    var c: vec3<f32>;
+    var x_1: f32;
+
+    acc = Accum(vec3(0f), 0f);
+    weights = array<f32, 4>();
+    i = 0i;
+    loop {
+        let _e11 = i;
+        if !((_e11 < 4i)) {
+            break;
+        }
+        let _e16 = i;
+        let tap = u_taps[_e16];
+        let _e21 = i;
+        let _e26 = falloff(distance(v_uv_1, tap.xy), 4f);
+        weights[_e21] = _e26;
+        let _e36 = i;
+        let _e38 = weights[_e36];
+        add_tap((&acc), vec3<f32>(tap.z, tap.w, (1f - tap.z)), _e38);
+        continuing {
+            let _e39 = i;
+            i = (_e39 + 1i);
+        }
+    }
+    let _e45 = weights[3];
+    x = _e45;
+    clamp_into((&x), 0f, 0.5f);
+    let _e49 = x;
+    weights[3] = _e49;
+    let _e52 = acc;
+    let _e53 = mean(_e52);
+    c = _e53;
+    let _e57 = c.y;
+    x_1 = _e57;
+    clamp_into((&x_1), 0.1f, 0.9f);
+    let _e61 = x_1;
+    c.y = _e61;
+    let _e64 = c;
+    let _e67 = weights[3];
+    f_color = vec4<f32>(_e64, _e67);
+    let _e70 = f_color;
+    return references_fs_out(_e70);
+}

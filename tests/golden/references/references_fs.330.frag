@@ -1,0 +1,97 @@
+#version 330 core
+struct Accum {
+    vec3 sum;
+    float weight;
+};
+struct references_fs_out {
+    vec4 f_color;
+};
+layout(std140) uniform u_taps_block { vec4 u_taps[4]; };
+
+smooth in vec2 _vs2fs_location0;
+layout(location = 0) out vec4 _fs2p_location0;
+
+float falloff(float d, float k) {
+    float d_1 = 0.0;
+    d_1 = d;
+    float _e5 = d_1;
+    d_1 = max(_e5, 0.0);
+    float _e9 = d_1;
+    d_1 = (_e9 * k);
+    float _e14 = d_1;
+    float _e16 = d_1;
+    return (1.0 / (1.0 + (_e14 * _e16)));
+}
+
+void add_tap(inout Accum acc_1, vec3 c_1, float w) {
+    vec3 _e5 = acc_1.sum;
+    acc_1.sum = (_e5 + (c_1 * w));
+    float _e8 = acc_1.weight;
+    acc_1.weight = (_e8 + w);
+    return;
+}
+
+void clamp_into(inout float x_2, float lo, float hi) {
+    float _e3 = x_2;
+    x_2 = clamp(_e3, lo, hi);
+    return;
+}
+
+vec3 mean(Accum acc_2) {
+    return ((acc_2.weight > 0.0) ? (acc_2.sum / vec3(acc_2.weight)) : vec3(0.0));
+}
+
+void main() {
+    vec2 v_uv = _vs2fs_location0;
+    vec4 f_color = vec4(0.0);
+    Accum acc = Accum(vec3(0.0), 0.0);
+    float weights[4] = float[4](0.0, 0.0, 0.0, 0.0);
+    int i = 0;
+    float x = 0.0;
+    vec3 c = vec3(0.0);
+    float x_1 = 0.0;
+    acc = Accum(vec3(0.0), 0.0);
+    weights = float[4](0.0, 0.0, 0.0, 0.0);
+    i = 0;
+    bool loop_init = true;
+    while(true) {
+        if (!loop_init) {
+            int _e39 = i;
+            i = (_e39 + 1);
+        }
+        loop_init = false;
+        int _e11 = i;
+        if (!((_e11 < 4))) {
+            break;
+        }
+        int _e16 = i;
+        vec4 tap = u_taps[_e16];
+        int _e21 = i;
+        float _e26 = falloff(distance(v_uv, tap.xy), 4.0);
+        weights[_e21] = _e26;
+        int _e36 = i;
+        float _e38 = weights[_e36];
+        add_tap(acc, vec3(tap.z, tap.w, (1.0 - tap.z)), _e38);
+    }
+    float _e45 = weights[3];
+    x = _e45;
+    clamp_into(x, 0.0, 0.5);
+    float _e49 = x;
+    weights[3] = _e49;
+    Accum _e52 = acc;
+    vec3 _e53 = mean(_e52);
+    c = _e53;
+    float _e57 = c.y;
+    x_1 = _e57;
+    clamp_into(x_1, 0.1, 0.9);
+    float _e61 = x_1;
+    c.y = _e61;
+    vec3 _e64 = c;
+    float _e67 = weights[3];
+    f_color = vec4(_e64, _e67);
+    vec4 _e70 = f_color;
+    references_fs_out _tmp_return = references_fs_out(_e70);
+    _fs2p_location0 = _tmp_return.f_color;
+    return;
+}
+

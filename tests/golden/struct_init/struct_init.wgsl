@@ -1,0 +1,90 @@
+diagnostic(off, derivative_uniformity);
+
+struct Ray {
+    origin: vec3<f32>,
+    dir: vec3<f32>,
+}
+
+struct Material {
+    albedo: vec3<f32>,
+    roughness: f32,
+    metallic: f32,
+    emissive: vec3<f32>,
+}
+
+struct struct_init_vs_out {
+    @builtin(position) gl_Position: vec4<f32>,
+    @location(0) v_uv: vec2<f32>,
+}
+
+struct struct_init_fs_out {
+    @location(0) f_color: vec4<f32>,
+}
+
+@group(0) @binding(0) 
+var<uniform> u_light_dir: vec3<f32>;
+
+fn Ray_1(from_: vec3<f32>, to: vec3<f32>) -> Ray {
+    return Ray(from_, normalize((to - from_)));
+}
+
+fn shade(m: Material, n: vec3<f32>, l: vec3<f32>) -> vec3<f32> {
+    var c_1: vec3<f32>;
+
+    c_1 = vec3<f32>();
+    {
+        let diffuse = ((m.albedo * (1f - m.metallic)) * max(dot(n, l), 0f));
+        c_1 = ((diffuse * (1f - (m.roughness * 0.5f))) + m.emissive);
+    }
+    let _e24 = c_1;
+    return _e24;
+}
+
+@vertex 
+fn struct_init_vs(@location(0) a_pos: vec2<f32>) -> struct_init_vs_out {
+    var v_uv: vec2<f32>;
+    var gl_Position: vec4<f32>;
+
+    v_uv = ((a_pos * 0.5f) + vec2(0.5f));
+    gl_Position = vec4<f32>(a_pos, 0f, 1f);
+    let _e12 = gl_Position;
+    let _e23 = v_uv;
+    return struct_init_vs_out(vec4<f32>(_e12.x, -(_e12.y), ((_e12.z + _e12.w) * 0.5f), _e12.w), _e23);
+}
+
+@fragment 
+fn struct_init_fs(@location(0) v_uv_1: vec2<f32>) -> struct_init_fs_out {
+    var f_color: vec4<f32>;
+    var glow: Material;
+    var c: vec3<f32>;
+
+    let base = Material(vec3(0.8f), 0.5f, f32(), vec3<f32>());
+    let metal = Material(vec3(0.8f), 0.2f, 1f, vec3<f32>());
+    glow = Material(vec3(0.8f), 0.5f, f32(), vec3<f32>(0.1f, 0.05f, 0f));
+    {
+        let _e26 = glow.albedo;
+        glow.albedo = (_e26 * 0.5f);
+    }
+    let _e34 = Ray_1(vec3<f32>(v_uv_1, 1f), vec3<f32>(0.5f, 0.5f, 0f));
+    let n_1 = -(_e34.dir);
+    let m_1 = select(select(2i, 1i, (v_uv_1.x < 0.66f)), 0i, (v_uv_1.x < 0.33f));
+    let _e50 = glow;
+    let _e52 = u_light_dir;
+    let _e53 = shade(_e50, n_1, _e52);
+    c = _e53;
+    if (m_1 == 0i) {
+        let _e58 = u_light_dir;
+        let _e59 = shade(base, n_1, _e58);
+        c = _e59;
+    } else {
+        if (m_1 == 1i) {
+            let _e64 = u_light_dir;
+            let _e65 = shade(metal, n_1, _e64);
+            c = _e65;
+        }
+    }
+    let _e68 = c;
+    f_color = vec4<f32>(_e68, 1f);
+    let _e72 = f_color;
+    return struct_init_fs_out(_e72);
+}

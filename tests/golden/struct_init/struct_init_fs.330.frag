@@ -1,0 +1,72 @@
+#version 330 core
+struct Ray {
+    vec3 origin;
+    vec3 dir;
+};
+struct Material {
+    vec3 albedo;
+    float roughness;
+    float metallic;
+    vec3 emissive;
+};
+struct struct_init_fs_out {
+    vec4 f_color;
+};
+layout(std140) uniform u_light_dir_block { vec3 u_light_dir; };
+
+smooth in vec2 _vs2fs_location0;
+layout(location = 0) out vec4 _fs2p_location0;
+
+Ray Ray_1(vec3 from, vec3 to) {
+    return Ray(from, normalize((to - from)));
+}
+
+vec3 shade(Material m, vec3 n, vec3 l) {
+    vec3 c_1 = vec3(0.0);
+    c_1 = vec3(0.0);
+    {
+        vec3 diffuse = ((m.albedo * (1.0 - m.metallic)) * max(dot(n, l), 0.0));
+        c_1 = ((diffuse * (1.0 - (m.roughness * 0.5))) + m.emissive);
+    }
+    vec3 _e24 = c_1;
+    return _e24;
+}
+
+void main() {
+    vec2 v_uv = _vs2fs_location0;
+    vec4 f_color = vec4(0.0);
+    Material glow = Material(vec3(0.0), 0.0, 0.0, vec3(0.0));
+    vec3 c = vec3(0.0);
+    Material base = Material(vec3(0.8), 0.5, 0.0, vec3(0.0));
+    Material metal = Material(vec3(0.8), 0.2, 1.0, vec3(0.0));
+    glow = Material(vec3(0.8), 0.5, 0.0, vec3(0.1, 0.05, 0.0));
+    {
+        vec3 _e26 = glow.albedo;
+        glow.albedo = (_e26 * 0.5);
+    }
+    Ray _e34 = Ray_1(vec3(v_uv, 1.0), vec3(0.5, 0.5, 0.0));
+    vec3 n_1 = -(_e34.dir);
+    int m_1 = ((v_uv.x < 0.33) ? 0 : ((v_uv.x < 0.66) ? 1 : 2));
+    Material _e50 = glow;
+    vec3 _e52 = u_light_dir;
+    vec3 _e53 = shade(_e50, n_1, _e52);
+    c = _e53;
+    if ((m_1 == 0)) {
+        vec3 _e58 = u_light_dir;
+        vec3 _e59 = shade(base, n_1, _e58);
+        c = _e59;
+    } else {
+        if ((m_1 == 1)) {
+            vec3 _e64 = u_light_dir;
+            vec3 _e65 = shade(metal, n_1, _e64);
+            c = _e65;
+        }
+    }
+    vec3 _e68 = c;
+    f_color = vec4(_e68, 1.0);
+    vec4 _e72 = f_color;
+    struct_init_fs_out _tmp_return = struct_init_fs_out(_e72);
+    _fs2p_location0 = _tmp_return.f_color;
+    return;
+}
+
