@@ -95,8 +95,44 @@ fn snippets() -> BTreeMap<&'static str, String> {
     add("vertex-out", vert("var @out @location = 1 o_pos : float3\nvar @out @location = 2 o_id : int", "    o_pos = float3(1.0)\n    o_id = gl_VertexID"));
     add("location-clash", vert("var @inout @location = 1 v_a : float\nvar @out @location = 1 o_b : float", "    v_a = 1.0\n    o_b = 2.0"));
     add("texture-units", frag("var @uniform @stage = 3 a : sampler2D\nvar @uniform b : sampler2D", "    f_color = texture(a, float2(0.5)) + texture(b, float2(0.5))"));
+    functions_and_data(&mut add);
     m
 }
+
+/// Functions and data as daslang writes them (issue 17): results from
+/// `return`, defaults, parameter kinds, overloads, pipes, `with`, enums,
+/// construction by field name, `for` over arrays.
+fn functions_and_data(add: &mut impl FnMut(&'static str, String)) {
+    add("inferred-result", frag("def half_of(x : float) {\n    return x * 0.5\n}\ndef twice(x : float) => x * 2.0\ndef third(x : float) -> float {\n    return x / 3.0\n}", "    f_color = float4(half_of(1.0), twice(0.25), third(1.5), 1.0)"));
+    add("default-parameters", frag("def tone(x : float; gain : float = 2.0; bias : float3 = float3(0.1)) => x * gain + bias", "    f_color = float4(tone(0.5) + tone(0.5, 1.0) + tone(0.5, 1.0, float3(0.0)), 1.0)"));
+    add("default-not-constant", frag("var @uniform u_g : float\ndef tone(x : float; gain : float = u_g) => x * gain", "    f_color = float4(tone(0.5))"));
+    add("visibility-modifiers", frag("struct private S {\n    a : float\n}\nlet private K = 0.5\nenum private E {\n    one\n}\ndef private f(s : S) : float {\n    return s.a * K\n}\ndef public g(x : float) => x", "    f_color = float4(g(f(S(1.0))))"));
+    add("var-parameters", frag("def shrink(var x : float) : float {\n    x *= 0.5\n    return x\n}", "    let a = 1.0\n    f_color = float4(shrink(a), a, 0.0, 1.0)"));
+    add("reference-parameters", frag("struct S {\n    v : float3\n}\ndef bump(var x : float&; by : float) {\n    x += by\n}\ndef grow(var s : S&) {\n    s.v *= 2.0\n    bump(s.v.x, 1.0)\n}", "    var a = 1.0\n    bump(a, 0.5)\n    var s = S(float3(1.0))\n    grow(s)\n    var arr : float[2]\n    bump(arr[1], a)\n    f_color = float4(s.v, a + arr[1])"));
+    add("reference-argument-not-writable", frag("def bump(var x : float&) {\n    x += 1.0\n}", "    let a = 1.0\n    bump(a)\n    f_color = float4(a)"));
+    add("const-parameters", frag("def scale(v : float3 const; k : float const&) : float3 {\n    return v * k\n}", "    f_color = float4(scale(float3(1.0), 0.5), 1.0)"));
+    add("overloads", frag("def luma(c : float3) => dot(c, float3(0.2126, 0.7152, 0.0722))\ndef luma(c : float4) => luma(c.rgb) * c.a", "    f_color = float4(luma(float3(0.5)), luma(float4(0.5)), 0.0, 1.0)"));
+    add("overload-same-parameters", frag("def luma(c : float3) => c.g\ndef luma(rgb : float3) => rgb.r", "    f_color = float4(luma(float3(0.5)))"));
+    add("struct-initializer-function", frag("struct Ray {\n    o : float3\n    d : float3\n}\ndef Ray(o, to : float3) : Ray {\n    return Ray(o = o, d = normalize(to - o))\n}", "    let r = Ray(float3(0.0), float3(1.0))\n    f_color = float4(r.d, 1.0)"));
+    add("pipes", frag("def tint(c, by : float3) => c * by", "    let c = float3(0.5) |> tint(float3(1.0, 0.5, 0.25)) |> normalize()\n    let d = tint(float3(1.0)) <| c\n    f_color = float4(d, 1.0)"));
+    add("postfix-if", frag("def band(x : float) : float {\n    return 0.0 if (x < 0.25)\n    return 1.0 if (x > 0.75) else return 0.5\n}\nvar @uniform u_x : float", "    var s = 0.0\n    for (i in range(8)) {\n        break if (s > u_x)\n        s += band(float(i) / 8.0)\n    }\n    f_color = float4(s)"));
+    add("with", frag("struct Light {\n    dir : float3\n    k : float\n}\nvar @uniform u_light : Light", "    var l = u_light\n    with (l) {\n        k *= 2.0\n    }\n    with (u_light) {\n        f_color = float4(dir * l.k, k)\n    }"));
+    add("enums", frag("enum Mode {\n    flat\n    lit = 4\n    toon\n}\nenum Bits : uint {\n    a = 1\n    b = 2\n}\nvar @uniform u_m : int\nlet W = fixed_array<float>(0.1, 0.2, 0.3, 0.4, 0.5, 0.6)", "    let m = u_m == 0 ? Mode.flat : Mode.toon\n    let b = m >= Mode.lit ? Bits.b : Bits.a\n    f_color = float4(W[m], float(int(m)), float(uint(b)), m != Mode.flat ? 1.0 : 0.0)"));
+    add("enum-uniform", frag("enum Mode {\n    flat\n    lit\n}\nvar @uniform u_mode : Mode", "    f_color = float4(u_mode == Mode.lit ? 1.0 : 0.0)"));
+    add("named-struct-construction", frag("struct M {\n    albedo : float3 = float3(0.8)\n    rough = 0.5\n    metal : float\n}", "    let a = M()\n    let b = M(metal = 1.0, albedo = float3(0.1))\n    f_color = float4(a.albedo * a.rough + b.albedo * b.metal, b.rough)"));
+    add("for-arrays", frag("var @uniform u_k : float4[3]", "    var acc : float[3]\n    for (a in acc) {\n        a = 0.5\n    }\n    var s = float4(0.0)\n    for (k in u_k) {\n        s += k\n    }\n    for (a in acc) {\n        s.x += a\n    }\n    f_color = s"));
+    add("for-parallel", frag("var @uniform u_k : float4[3]\nvar @uniform u_n : int", "    var s = float4(0.0)\n    for (i, k in range(u_n), u_k) {\n        s += k * float(i)\n    }\n    for (i, j in range(2, 5), range(10, 20)) {\n        s.x += float(i * j)\n    }\n    f_color = s"));
+}
+
+/// [`NEEDLES`] of the rows in `functions_and_data`.
+const NEEDLES_FUNCTIONS_AND_DATA: &[(&str, Target, &str, &str, bool)] = &[
+    ("reference-parameters", Target::Glsl330, ".330.frag", "void bump(inout float x", true),
+    ("reference-parameters", Target::Wgsl, ".wgsl", "ptr<function, f32>", true),
+    ("overloads", Target::Glsl330, ".330.frag", "float luma_float3_(vec3 c)", true),
+    ("overloads", Target::Wgsl, ".wgsl", "fn luma_float4_(", true),
+    ("default-parameters", Target::Glsl330, ".330.frag", "tone(0.5, 2.0, vec3(0.1))", true),
+    ("enums", Target::Wgsl, ".wgsl", "i32", true),
+];
 
 /// Extra properties of some outputs: (snippet, target, file suffix, text
 /// that must or must not appear).
@@ -190,7 +226,7 @@ fn feature_matrix_matches_the_compiler() {
                     let dir = tempfile::tempdir().unwrap();
                     support::write_all(dir.path(), &compiled.artifacts);
                     support::validate_dir(dir.path(), &compiled.reflection);
-                    for (id, t, suffix, needle, present) in NEEDLES {
+                    for (id, t, suffix, needle, present) in NEEDLES.iter().chain(NEEDLES_FUNCTIONS_AND_DATA) {
                         if *id != row.id || t != target {
                             continue;
                         }
