@@ -88,7 +88,15 @@ pub(super) fn specialised_helper(m: &mut ModuleBuilder<'_>, fid: usize, vertex_l
 
 /// After a call: the temporaries that stood for `var p : T&` arguments,
 /// copied back to the places they stand for (GLSL `inout`'s copy-out).
-pub(super) type WriteBack = Vec<(Handle<naga::LocalVariable>, Handle<E>)>;
+pub(super) type WriteBack = Vec<(Handle<naga::LocalVariable>, Place)>;
+
+/// Where a temporary is copied back to: a pointer, or the components
+/// `comps` of the vector of `width` components (its type `ty`) behind a
+/// pointer (a swizzle of several components has no pointer).
+pub(super) enum Place {
+    Whole(Handle<E>),
+    Components { vector: Handle<E>, comps: crate::sema::Components, width: u8, ty: Handle<naga::Type> },
+}
 
 impl FnBuilder<'_, '_> {
     /// A call of helper `fid`: the function it reaches from here, its
@@ -117,11 +125,22 @@ impl FnBuilder<'_, '_> {
                     values.push(self.pointer(a, block).expect("a variable is a place"));
                     continue;
                 }
-                let place = self.pointer(a, block).expect("sema checks that a reference argument is a place");
+                let (place, value) = match &a.kind {
+                    ExprKind::Swizzle(base, comps) if comps.len() > 1 => {
+                        let vector = self.pointer(base, block).expect("sema checks that a reference argument is a place");
+                        let whole = self.append(E::Load { pointer: vector }, a.span);
+                        let value = self.swizzle(whole, comps, a.span);
+                        let ty = self.m.ty(&base.ty);
+                        (Place::Components { vector, comps: comps.clone(), width: base.ty.width().unwrap_or(4), ty }, value)
+                    }
+                    _ => {
+                        let place = self.pointer(a, block).expect("sema checks that a reference argument is a place");
+                        (Place::Whole(place), self.append(E::Load { pointer: place }, a.span))
+                    }
+                };
                 let ty = self.m.ty(&a.ty);
                 let tmp = self.func.local_variables.append(naga::LocalVariable { name: Some(f.locals[i].name.as_str().to_owned()), ty, init: None }, a.span.into());
                 let tmp_ptr = self.append_plain(E::LocalVariable(tmp), a.span);
-                let value = self.append(E::Load { pointer: place }, a.span);
                 self.push(block, naga::Statement::Store { pointer: tmp_ptr, value }, a.span);
                 write_back.push((tmp, place));
                 values.push(tmp_ptr);
@@ -148,7 +167,21 @@ impl FnBuilder<'_, '_> {
         for (tmp, place) in write_back {
             let tmp_ptr = self.append_plain(E::LocalVariable(tmp), s);
             let value = self.append(E::Load { pointer: tmp_ptr }, s);
-            self.push(block, naga::Statement::Store { pointer: place, value }, s);
+            match place {
+                Place::Whole(pointer) => self.push(block, naga::Statement::Store { pointer, value }, s),
+                Place::Components { vector, comps, width, ty } => {
+                    // The vector with the swizzled components replaced.
+                    let old = self.append(E::Load { pointer: vector }, s);
+                    let parts = (0..width)
+                        .map(|c| match comps.iter().position(|&k| k == c) {
+                            Some(k) => self.append(E::AccessIndex { base: value, index: k as u32 }, s),
+                            None => self.append(E::AccessIndex { base: old, index: c as u32 }, s),
+                        })
+                        .collect();
+                    let whole = self.append(E::Compose { ty, components: parts }, s);
+                    self.push(block, naga::Statement::Store { pointer: vector, value: whole }, s);
+                }
+            }
         }
     }
 

@@ -138,6 +138,14 @@ def repeated(z : int) : int {
     set_both(a, a)
     return a
 }
+def twist(var p : float2&) {
+    p = p.yx
+}
+def swizzled(z : float) : float4 {
+    var c = float4(1.0, 2.0, 3.0, 4.0 + z)
+    twist(c.wy)
+    return c
+}
 def component(z : float) : float4 {
     var c = float4(z)
     bump(c.z, 2.0)
@@ -158,6 +166,8 @@ def component(z : float) : float4 {
             // Two references to one variable: written back in order, the last wins.
             "repeated(z) == 2",
             "component(fz) == float4(1.0, 0.0, 2.0, 0.0)",
+            // Two components of a vector: the others keep their values.
+            "swizzled(fz) == float4(1.0, 4.0, 3.0, 2.0)",
         ],
     );
 }

@@ -17,6 +17,12 @@ struct references_fs_out {
 @group(0) @binding(0) 
 var<uniform> u_taps: array<vec4<f32>, 4>;
 
+fn flip_y(uv_1: ptr<function, vec2<f32>>) {
+    let _e4 = (*uv_1).y;
+    (*uv_1).y = (1f - _e4);
+    return;
+}
+
 fn falloff(d: f32, k: f32) -> f32 {
     var d_1: f32;
 
@@ -48,16 +54,28 @@ fn mean(acc_2: Accum) -> vec3<f32> {
     return select(vec3(0f), (acc_2.sum / vec3(acc_2.weight)), (acc_2.weight > 0f));
 }
 
+fn saturate2_(v_1: ptr<function, vec2<f32>>) {
+    let _e1 = (*v_1);
+    (*v_1) = saturate(_e1);
+    return;
+}
+
 @vertex 
 fn references_vs(@location(0) a_pos: vec2<f32>) -> references_vs_out {
     var v_uv: vec2<f32>;
     var gl_Position: vec4<f32>;
+    var uv: vec2<f32>;
 
     v_uv = ((a_pos * 0.5f) + vec2(0.5f));
+    let _e8 = v_uv;
+    uv = _e8;
+    flip_y((&uv));
+    let _e11 = uv;
+    v_uv = _e11;
     gl_Position = vec4<f32>(a_pos, 0f, 1f);
-    let _e12 = gl_Position;
-    let _e23 = v_uv;
-    return references_vs_out(vec4<f32>(_e12.x, -(_e12.y), ((_e12.z + _e12.w) * 0.5f), _e12.w), _e23);
+    let _e17 = gl_Position;
+    let _e28 = v_uv;
+    return references_vs_out(vec4<f32>(_e17.x, -(_e17.y), ((_e17.z + _e17.w) * 0.5f), _e17.w), _e28);
 }
 
 @fragment 
@@ -69,6 +87,7 @@ fn references_fs(@location(0) v_uv_1: vec2<f32>) -> references_fs_out {
     var x: f32;
     var c: vec3<f32>;
     var x_1: f32;
+    var v: vec2<f32>;
 
     acc = Accum(vec3(0f), 0f);
     weights = array<f32, 4>();
@@ -91,22 +110,28 @@ fn references_fs(@location(0) v_uv_1: vec2<f32>) -> references_fs_out {
             i = (_e39 + 1i);
         }
     }
-    let _e45 = weights[3];
-    x = _e45;
+    let _e44 = weights[3];
+    x = _e44;
     clamp_into((&x), 0f, 0.5f);
     let _e49 = x;
     weights[3] = _e49;
     let _e52 = acc;
     let _e53 = mean(_e52);
     c = _e53;
-    let _e57 = c.y;
-    x_1 = _e57;
+    let _e56 = c.y;
+    x_1 = _e56;
     clamp_into((&x_1), 0.1f, 0.9f);
     let _e61 = x_1;
     c.y = _e61;
-    let _e64 = c;
-    let _e67 = weights[3];
-    f_color = vec4<f32>(_e64, _e67);
-    let _e70 = f_color;
-    return references_fs_out(_e70);
+    let _e63 = c;
+    v = _e63.xz;
+    saturate2_((&v));
+    let _e67 = v;
+    let _e68 = c;
+    c = vec3<f32>(_e67.x, _e68.y, _e67.y);
+    let _e75 = c;
+    let _e78 = weights[3];
+    f_color = vec4<f32>(_e75, _e78);
+    let _e81 = f_color;
+    return references_fs_out(_e81);
 }

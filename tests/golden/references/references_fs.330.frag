@@ -41,6 +41,12 @@ vec3 mean(Accum acc_2) {
     return ((acc_2.weight > 0.0) ? (acc_2.sum / vec3(acc_2.weight)) : vec3(0.0));
 }
 
+void saturate2_(inout vec2 v_1) {
+    vec2 _e1 = v_1;
+    v_1 = clamp(_e1, vec2(0.0), vec2(1.0));
+    return;
+}
+
 void main() {
     vec2 v_uv = _vs2fs_location0;
     vec4 f_color = vec4(0.0);
@@ -50,6 +56,7 @@ void main() {
     float x = 0.0;
     vec3 c = vec3(0.0);
     float x_1 = 0.0;
+    vec2 v = vec2(0.0);
     acc = Accum(vec3(0.0), 0.0);
     weights = float[4](0.0, 0.0, 0.0, 0.0);
     i = 0;
@@ -73,24 +80,30 @@ void main() {
         float _e38 = weights[_e36];
         add_tap(acc, vec3(tap.z, tap.w, (1.0 - tap.z)), _e38);
     }
-    float _e45 = weights[3];
-    x = _e45;
+    float _e44 = weights[3];
+    x = _e44;
     clamp_into(x, 0.0, 0.5);
     float _e49 = x;
     weights[3] = _e49;
     Accum _e52 = acc;
     vec3 _e53 = mean(_e52);
     c = _e53;
-    float _e57 = c.y;
-    x_1 = _e57;
+    float _e56 = c.y;
+    x_1 = _e56;
     clamp_into(x_1, 0.1, 0.9);
     float _e61 = x_1;
     c.y = _e61;
-    vec3 _e64 = c;
-    float _e67 = weights[3];
-    f_color = vec4(_e64, _e67);
-    vec4 _e70 = f_color;
-    references_fs_out _tmp_return = references_fs_out(_e70);
+    vec3 _e63 = c;
+    v = _e63.xz;
+    saturate2_(v);
+    vec2 _e67 = v;
+    vec3 _e68 = c;
+    c = vec3(_e67.x, _e68.y, _e67.y);
+    vec3 _e75 = c;
+    float _e78 = weights[3];
+    f_color = vec4(_e75, _e78);
+    vec4 _e81 = f_color;
+    references_fs_out _tmp_return = references_fs_out(_e81);
     _fs2p_location0 = _tmp_return.f_color;
     return;
 }
