@@ -296,8 +296,11 @@ impl<'a, 'd> Checker<'a, 'd> {
                             self.diags.push(Diagnostic::error(format!("`let {}` needs a value", names.first.name), s.span));
                         } else if self.has_field_inits(d) {
                             let t = self.show(d);
-                            let d = Diagnostic::error(format!("`var {}` would start as zeros, but `{t}` gives fields initial values", names.first.name), s.span)
-                                .with_note(format!("help: initialise it: `var {} = {t}()` (the initial values) or with the fields you want", names.first.name));
+                            let help = match d {
+                                Ty::Array(elem, _) => format!("help: give it a value: `var {} = fixed_array({}(), ...)`, one per element", names.first.name, self.show(elem)),
+                                _ => format!("help: initialise it: `var {} = {t}()` (the initial values) or with the fields you want", names.first.name),
+                            };
+                            let d = Diagnostic::error(format!("`var {}` would start as zeros, but `{t}` gives fields initial values", names.first.name), s.span).with_note(help);
                             self.diags.push(d);
                         }
                         d.clone()
