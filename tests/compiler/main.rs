@@ -28,6 +28,7 @@ mod emit;
 mod features;
 #[cfg(feature = "golden")]
 mod golden;
+mod language_f;
 mod limits;
 mod proptest_programs;
 #[cfg(feature = "cli")]
