@@ -303,7 +303,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         for (i, g) in given.into_iter().enumerate() {
             match g {
                 Some(x) => xs.push(x),
-                None => match self.field_inits[sid][i] {
+                None => match self.field_inits[sid].get(i).copied().flatten() {
                     Some(init) => match self.constant_value(init, None, "the initial value") {
                         Some(v) => xs.push(Expr { span, ..v }),
                         None => return err_expr(span),

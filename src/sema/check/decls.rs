@@ -55,6 +55,8 @@ impl<'a, 'd> Checker<'a, 'd> {
                 ast::Item::Struct(s) => {
                     let id = self.structs[s.name.name.as_str()];
                     let mut fields: Vec<(String, Ty, Span)> = Vec::new();
+                    // Initial values are rare: a table only where there are some.
+                    let inits = s.fields.iter().any(|f| f.init.is_some());
                     for f in &s.fields {
                         // A field without a type takes its initial value's,
                         // once constants are known (below).
@@ -69,7 +71,9 @@ impl<'a, 'd> Checker<'a, 'd> {
                             self.diags.push(d);
                         }
                         fields.push((f.name.name.as_str().to_string(), ty, f.name.span));
-                        self.field_inits[id].push(f.init.as_ref());
+                        if inits {
+                            self.field_inits[id].push(f.init.as_ref());
+                        }
                     }
                     if fields.is_empty() {
                         let d = Diagnostic::error(format!("struct `{}` has no fields", s.name.name), s.name.span);

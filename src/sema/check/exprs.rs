@@ -250,7 +250,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
         }
         if let Some(l) = cx.lookup(&id.name) {
-            if let Some(a) = cx.aliases.get(&l) {
+            if let Some(a) = (!cx.aliases.is_empty()).then(|| cx.aliases.get(&l)).flatten() {
                 // An element of an iterated array: the element itself.
                 return Expr { span, ..a.clone() };
             }

@@ -180,7 +180,8 @@ struct Checker<'a, 'd> {
     fn_decls: Vec<&'a ast::FunctionDecl>,
     fn_states: Vec<FuncState>,
     fn_sigs: Vec<Option<Option<std::rc::Rc<Signature>>>>,
-    /// Per struct, per field: its initial value, if declared.
+    /// Per struct, per field: its initial value, if declared (empty for a
+    /// struct without any).
     field_inits: Vec<Vec<Option<&'a ast::Expr>>>,
     entry_decls: Vec<(&'a ast::FunctionDecl, naga::ShaderStage)>,
     builtin_vars: FxHashMap<BuiltinVar, GlobalId>,

@@ -88,11 +88,13 @@ impl<'a, 'd> Checker<'a, 'd> {
                     return None;
                 }
                 self.fn_states[idx] = FuncState::InProgress(decl.name.span);
-                let params = self.signature(idx).map(|s| s.params.clone());
-                let checked = params.and_then(|ps| self.check_function(decl, None, Some(ps)));
+                let sig = self.signature(idx);
+                let checked = sig.and_then(|sig| self.check_function(decl, None, Some(&sig.params)));
                 match checked {
                     Some(mut f) => {
-                        f.name = self.output_name(idx, &f);
+                        if let Some(name) = self.overload_name(idx, &f) {
+                            f.name = name;
+                        }
                         let id = self.out.functions.len();
                         self.out.functions.push(f);
                         self.fn_states[idx] = FuncState::Done(id);
@@ -122,14 +124,14 @@ impl<'a, 'd> Checker<'a, 'd> {
         sig
     }
 
-    /// The name a helper has in the output: its own, or for an overloaded
-    /// name, with its parameter types (`luma_float3`, `luma_float4`), so
+    /// The name an overloaded helper has in the output: its own with its
+    /// parameter types (`luma_float3`, `luma_float4`), so
     /// every target spells each overload the same way.
-    fn output_name(&self, idx: usize, f: &Function) -> String {
+    fn overload_name(&self, idx: usize, f: &Function) -> Option<String> {
         let decl = self.fn_decls[idx];
         let name = decl.name.name.as_str();
         if self.funcs.get(name).is_none_or(|ds| ds.len() < 2) {
-            return name.to_string();
+            return None;
         }
         let mut out = name.to_string();
         for l in &f.locals[..f.params] {
@@ -143,12 +145,12 @@ impl<'a, 'd> Checker<'a, 'd> {
         while out.ends_with('_') {
             out.pop();
         }
-        out
+        Some(out)
     }
 
     /// Checks a function's body. `params`: the helper's parameter types,
     /// already resolved (entry points: `None`, resolved here).
-    pub(super) fn check_function(&mut self, decl: &'a ast::FunctionDecl, entry: Option<naga::ShaderStage>, params: Option<Vec<Ty>>) -> Option<Function> {
+    pub(super) fn check_function(&mut self, decl: &'a ast::FunctionDecl, entry: Option<naga::ShaderStage>, params: Option<&[Ty]>) -> Option<Function> {
         let errors_before = self.diags.error_count();
         let ret = match &decl.ret {
             Some(t) if entry.is_none() => self.resolve_type(t),
@@ -168,8 +170,11 @@ impl<'a, 'd> Checker<'a, 'd> {
         let mut cx = FnCtx::new(scopes, ret, depth, decl.params.len() + count_locals(&decl.body.stmts));
         // No declared result: the first `return` says what it is.
         cx.infer_ret = entry.is_none() && decl.ret.is_none();
-        let param_tys = params.unwrap_or_else(|| decl.params.iter().map(|p| self.resolve_type(&p.ty)).collect());
-        for (p, ty) in decl.params.iter().zip(param_tys) {
+        for (i, p) in decl.params.iter().enumerate() {
+            let ty = match params {
+                Some(ps) => ps[i].clone(),
+                None => self.resolve_type(&p.ty),
+            };
             self.check_param(p, &ty);
             let by_ref = p.by_ref && p.mutable;
             let lid = self.declare_local(&mut cx, &p.name, ty, p.mutable);

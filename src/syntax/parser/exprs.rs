@@ -78,7 +78,10 @@ impl<'m> Parser<'_, 'm> {
         let e = self.primary()?;
         // Like a chain of binary operators, each postfix operator is a level.
         let depth = self.depth;
-        let r = self.postfix_ops(e).and_then(|e| self.pipes(e));
+        let r = match self.postfix_ops(e) {
+            Ok(e) if matches!(self.peek().kind, TokKind::P(P::RPipe | P::LPipe)) => self.pipes(e),
+            r => r,
+        };
         self.depth = depth;
         r
     }
@@ -87,6 +90,7 @@ impl<'m> Parser<'_, 'm> {
     /// pipes, binding tighter than every operator but the postfix ones and
     /// chaining left to right (`x |> f() |> g()` is `g(f(x))`). A bare name
     /// is a call of no other arguments (`x |> normalize`).
+    #[inline(never)]
     pub(super) fn pipes(&mut self, mut e: Expr) -> PResult<Expr> {
         loop {
             let t = self.peek();
@@ -105,10 +109,7 @@ impl<'m> Parser<'_, 'm> {
                 ExprKind::Call { callee, args } => (callee, args),
                 ExprKind::Name(callee) => (callee, Vec::new()),
                 _ => {
-                    let d = Diagnostic::error(format!("`{}` needs a function call on its {} side", t_text(forward), if forward { "right" } else { "left" }), call.span)
-                        .with_label("not a call")
-                        .with_note("help: write `x |> f(y)` for `f(x, y)`, or `f(y) <| x` for `f(y, x)`");
-                    self.push(d);
+                    self.error_pipe(forward, call.span);
                     return Err(());
                 }
             };
@@ -121,6 +122,7 @@ impl<'m> Parser<'_, 'm> {
         }
     }
 
+    #[inline(always)]
     pub(super) fn postfix_ops(&mut self, mut e: Expr) -> PResult<Expr> {
         loop {
             let t = self.peek();
@@ -189,8 +191,19 @@ impl<'m> Parser<'_, 'm> {
         Ok((items, end))
     }
 
+    #[cold]
+    #[inline(never)]
+    pub(super) fn error_pipe(&mut self, forward: bool, at: Span) {
+        let d = Diagnostic::error(format!("`{}` needs a function call on its {} side", t_text(forward), if forward { "right" } else { "left" }), at)
+            .with_label("not a call")
+            .with_note("help: write `x |> f(y)` for `f(x, y)`, or `f(y) <| x` for `f(y, x)`");
+        self.push(d);
+    }
+
     /// The arguments of a call after its `(`: expressions, or `name =
-    /// value` (struct fields by name).
+    /// value` (struct fields by name). Out of line, as `list` is: it keeps
+    /// `primary` small enough to be inlined into the operator parsers.
+    #[inline(never)]
     pub(super) fn call_args(&mut self, opener: Token) -> PResult<(Vec<Expr>, Token)> {
         self.nl_skip += 1;
         self.open += 1;
@@ -220,6 +233,7 @@ impl<'m> Parser<'_, 'm> {
         Ok((items, end))
     }
 
+    #[inline(always)]
     pub(super) fn primary(&mut self) -> PResult<Expr> {
         let t = self.peek();
         match t.kind {
@@ -280,10 +294,7 @@ impl<'m> Parser<'_, 'm> {
             return Ok(Expr { kind: ExprKind::Array { elem: Some(elem), items }, span: t.span.to(end.span) });
         }
         if next.is(P::LParen) && name.name == "fixed_array" {
-            // `fixed_array(a, b)`: the element type is the values'.
-            self.bump();
-            let (items, end) = self.list(next, P::RParen)?;
-            return Ok(Expr { kind: ExprKind::Array { elem: None, items }, span: t.span.to(end.span) });
+            return self.untyped_fixed_array(t, next);
         }
         if next.is(P::LParen) {
             self.bump();
@@ -291,6 +302,14 @@ impl<'m> Parser<'_, 'm> {
             return Ok(Expr { kind: ExprKind::Call { callee: name, args }, span: t.span.to(end.span) });
         }
         Ok(Expr { kind: ExprKind::Name(name), span: t.span })
+    }
+
+    /// `fixed_array(a, b)`: the element type is the values'.
+    #[inline(never)]
+    pub(super) fn untyped_fixed_array(&mut self, t: Token, open: Token) -> PResult<Expr> {
+        self.bump();
+        let (items, end) = self.list(open, P::RParen)?;
+        Ok(Expr { kind: ExprKind::Array { elem: None, items }, span: t.span.to(end.span) })
     }
 
     #[inline(never)]

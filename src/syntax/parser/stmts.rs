@@ -54,6 +54,7 @@ impl<'m> Parser<'_, 'm> {
         self.block()
     }
 
+    #[inline(always)]
     pub(super) fn stmt(&mut self) -> PResult<Stmt> {
         let t = self.peek();
         let kind = match t.kind {
@@ -68,20 +69,20 @@ impl<'m> Parser<'_, 'm> {
             TokKind::Kw(Kw::For) => self.for_stmt()?,
             TokKind::Kw(Kw::Return) => {
                 self.bump();
-                let r = if ends_stmt(&self.raw_peek()) || self.raw_peek().is_kw(Kw::If) {
+                let p = self.raw_peek();
+                if ends_stmt(&p) || p.is_kw(Kw::If) {
                     StmtKind::Return(None)
                 } else {
                     StmtKind::Return(Some(self.expr()?))
-                };
-                return self.postfix_if(t, r);
+                }
             }
             TokKind::Kw(Kw::Break) => {
                 self.bump();
-                return self.postfix_if(t, StmtKind::Break);
+                StmtKind::Break
             }
             TokKind::Kw(Kw::Continue) => {
                 self.bump();
-                return self.postfix_if(t, StmtKind::Continue);
+                StmtKind::Continue
             }
             TokKind::P(P::LBrace) => StmtKind::Block(self.block()?),
             TokKind::Kw(Kw::Elif) => {
@@ -92,26 +93,26 @@ impl<'m> Parser<'_, 'm> {
                 self.error_msg(t, "`else` without a preceding `if`", "no `if` before this");
                 return Err(());
             }
-            TokKind::Ident if self.text(&t) == "with" && self.toks.get(self.pos + 1).is_some_and(|n| n.is(P::LParen)) => self.with_stmt()?,
-            _ => {
-                let k = self.expr_stmt()?;
-                if matches!(k, StmtKind::Expr(Expr { kind: ExprKind::Call { .. }, .. })) {
-                    return self.postfix_if(t, k);
-                }
-                k
-            }
+            TokKind::Ident if t.span.end - t.span.start == 4 && self.toks.get(self.pos + 1).is_some_and(|n| n.is(P::LParen)) && self.text(&t) == "with" => self.with_stmt()?,
+            _ => self.expr_stmt()?,
         };
+        if self.raw_peek().is_kw(Kw::If) {
+            return self.postfix_if(t, kind);
+        }
         Ok(Stmt { kind, span: t.span.to(self.last) })
     }
 
     /// `stmt if (cond) [else stmt]` after a `return`, `break`, `continue`
     /// or call statement (daslang's postfix condition): the statement runs
     /// where `cond` holds, the `else` one where it does not.
+    #[inline(never)]
     pub(super) fn postfix_if(&mut self, first: Token, then: StmtKind) -> PResult<Stmt> {
-        let then = Stmt { kind: then, span: first.span.to(self.last) };
-        if !self.raw_peek().is_kw(Kw::If) {
-            return Ok(then);
+        let if_kw = self.raw_peek();
+        if !matches!(then, StmtKind::Return(_) | StmtKind::Break | StmtKind::Continue | StmtKind::Expr(Expr { kind: ExprKind::Call { .. }, .. })) {
+            self.error_msg(if_kw, "a postfix `if` follows a `return`, `break`, `continue` or call", "after another statement");
+            return Err(());
         }
+        let then = Stmt { kind: then, span: first.span.to(self.last) };
         self.bump();
         let cond = self.expr()?;
         let otherwise = if self.raw_peek().is_kw(Kw::Else) {
@@ -131,6 +132,7 @@ impl<'m> Parser<'_, 'm> {
     }
 
     /// `with (subject) { ... }`.
+    #[inline(never)]
     pub(super) fn with_stmt(&mut self) -> PResult<StmtKind> {
         self.bump(); // `with`
         let open = self.peek();
