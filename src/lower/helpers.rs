@@ -115,6 +115,17 @@ impl FnBuilder<'_, '_> {
         let mut write_back = Vec::new();
         let mut passed: Vec<usize> = Vec::new();
         for (i, a) in args.iter().enumerate() {
+            if f.locals[i].by_ref && !self.writable(a) {
+                // A value for a `var` struct or array parameter: the
+                // callee's own copy, nothing to write back.
+                let value = self.expr(a, block);
+                let ty = self.m.ty(&a.ty);
+                let tmp = self.func.local_variables.append(naga::LocalVariable { name: Some(f.locals[i].name.as_str().to_owned()), ty, init: None }, a.span.into());
+                let tmp_ptr = self.append_plain(E::LocalVariable(tmp), a.span);
+                self.push(block, naga::Statement::Store { pointer: tmp_ptr, value }, a.span);
+                values.push(tmp_ptr);
+                continue;
+            }
             if f.locals[i].by_ref {
                 let whole = match a.kind {
                     ExprKind::Local(l) if !passed.contains(&l) && matches!(self.locals[l], LocalSlot::Var(_) | LocalSlot::Ptr(_)) => Some(l),
@@ -160,6 +171,24 @@ impl FnBuilder<'_, '_> {
             false => specialised_helper(self.m, fid, self.vertex_lod, samplers),
         };
         (function, values, write_back)
+    }
+
+    /// Whether `e` is a place this function may write: a variable, an
+    /// output or private global, or a part of one (not a uniform).
+    pub(super) fn writable(&self, e: &Expr) -> bool {
+        match &e.kind {
+            ExprKind::Local(l) => matches!(self.locals[*l], LocalSlot::Var(_) | LocalSlot::Ptr(_)),
+            ExprKind::Global(g) => match self.global_slot(*g) {
+                Some(slot) => matches!(slot, LocalSlot::Var(_)),
+                None => match self.m.globals[*g] {
+                    GlobalSlot::Var(h) => self.m.module.global_variables[h].space == naga::AddressSpace::Private,
+                    _ => false,
+                },
+            },
+            ExprKind::Field(b, _) | ExprKind::Index(b, _) => self.writable(b),
+            ExprKind::Swizzle(b, _) => self.writable(b),
+            _ => false,
+        }
     }
 
     /// Copies the temporaries of a call's reference arguments back.

@@ -108,6 +108,7 @@ fn functions_and_data(add: &mut impl FnMut(&'static str, String)) {
     add("default-not-constant", frag("var @uniform u_g : float\ndef tone(x : float; gain : float = u_g) => x * gain", "    f_color = float4(tone(0.5))"));
     add("visibility-modifiers", frag("struct private S {\n    a : float\n}\nlet private K = 0.5\nenum private E {\n    one\n}\ndef private f(s : S) : float {\n    return s.a * K\n}\ndef public g(x : float) => x", "    f_color = float4(g(f(S(1.0))))"));
     add("var-parameters", frag("def shrink(var x : float) : float {\n    x *= 0.5\n    return x\n}", "    let a = 1.0\n    f_color = float4(shrink(a), a, 0.0, 1.0)"));
+    add("var-struct-parameters", frag("struct L {\n    dir : float3\n    k : float\n}\ndef unit(var l : L) {\n    l.dir = normalize(l.dir)\n}\ndef zero(var a : float[2]) {\n    a[0] = 0.0\n}", "    var l = L(float3(2.0), 1.0)\n    unit(l)\n    unit(L(float3(1.0), 2.0))\n    var a = fixed_array(1.0, 2.0)\n    zero(a)\n    f_color = float4(l.dir, a[0] + a[1])"));
     add("reference-parameters", frag("struct S {\n    v : float3\n}\ndef bump(var x : float&; by : float) {\n    x += by\n}\ndef grow(var s : S&) {\n    s.v *= 2.0\n    bump(s.v.x, 1.0)\n}", "    var a = 1.0\n    bump(a, 0.5)\n    var s = S(float3(1.0))\n    grow(s)\n    var arr : float[2]\n    bump(arr[1], a)\n    f_color = float4(s.v, a + arr[1])"));
     add("reference-argument-not-writable", frag("def bump(var x : float&) {\n    x += 1.0\n}", "    let a = 1.0\n    bump(a)\n    f_color = float4(a)"));
     add("const-parameters", frag("def scale(v : float3 const; k : float const&) : float3 {\n    return v * k\n}", "    f_color = float4(scale(float3(1.0), 0.5), 1.0)"));
@@ -128,6 +129,7 @@ fn functions_and_data(add: &mut impl FnMut(&'static str, String)) {
 const NEEDLES_FUNCTIONS_AND_DATA: &[(&str, Target, &str, &str, bool)] = &[
     ("reference-parameters", Target::Glsl330, ".330.frag", "void bump(inout float x", true),
     ("reference-parameters", Target::Wgsl, ".wgsl", "ptr<function, f32>", true),
+    ("var-struct-parameters", Target::Glsl330, ".330.frag", "void unit(inout L l", true),
     ("overloads", Target::Glsl330, ".330.frag", "float luma_float3_(vec3 c)", true),
     ("overloads", Target::Wgsl, ".wgsl", "fn luma_float4_(", true),
     ("default-parameters", Target::Glsl330, ".330.frag", "tone(0.5, 2.0, vec3(0.1))", true),

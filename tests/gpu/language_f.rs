@@ -100,6 +100,26 @@ def grow(var s : S&) {
     s.n += 1
     bump(s.v.y, 0.5)
 }
+// A `var` struct or array parameter is the caller's variable (daslang
+// passes structs and arrays by reference), or a copy of a value.
+def reset(var s : S) {
+    s.n = 7
+    s.v.z = -1.0
+}
+def fill(var a : int[3]; k : int) {
+    for (i in range(3)) {
+        a[i] = k + i
+    }
+}
+def var_struct(z : int) : int {
+    var s = S(float3(1.0), z)
+    reset(s)
+    let t = S(float3(2.0), 3 + z)
+    reset(t)
+    var arr : int[3]
+    fill(arr, 10 + z)
+    return s.n * 1000 + int(s.v.z) * 100 + t.n * 10 + arr[2] - 12
+}
 def swap(var a, b : int&) {
     let t = a
     a = b
@@ -163,6 +183,7 @@ def component(z : float) : float4 {
             // Elements picked at run time: through a temporary, written back.
             "element(z) == 201.0",
             "swapped(z) == 43",
+            "var_struct(z) == 7000 - 100 + 30",
             // Two references to one variable: written back in order, the last wins.
             "repeated(z) == 2",
             "component(fz) == float4(1.0, 0.0, 2.0, 0.0)",

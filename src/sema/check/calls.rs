@@ -161,7 +161,8 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
         }
         // What `var p : T&` parameters write must be a variable the
-        // caller may write.
+        // caller may write. A `var` struct or array parameter (a reference
+        // in daslang too) given anything else works on a copy.
         for i in 0..xs.len() {
             let f = &self.out.functions[fid];
             if !f.locals[i].by_ref {
@@ -169,7 +170,12 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
             let pname = f.locals[i].name.clone();
             let pty = self.show(&f.locals[i].ty);
-            if let Err(why) = self.place_ok(cx, &xs[i]) {
+            let explicit = decl.params[i].by_ref;
+            let writable = self.place_ok(cx, &xs[i]);
+            if writable.is_err() && !explicit {
+                continue;
+            }
+            if let Err(why) = writable {
                 let d = Diagnostic::error(format!("`{name}` writes its parameter `{pname}` (`var {pname} : {pty}&`), so the argument must be a variable the caller can write"), xs[i].span)
                     .with_label("not writable here")
                     .with_note(format!("{}", why.message))

@@ -176,7 +176,9 @@ impl<'a, 'd> Checker<'a, 'd> {
                 None => self.resolve_type(&p.ty),
             };
             self.check_param(p, &ty);
-            let by_ref = p.by_ref && p.mutable;
+            // daslang passes structs and arrays by reference: a `var` one is
+            // the caller's variable, as `var p : T&` is.
+            let by_ref = p.mutable && (p.by_ref || matches!(ty, Ty::Struct(_) | Ty::Array(..)));
             let lid = self.declare_local(&mut cx, &p.name, ty, p.mutable);
             cx.locals[lid].by_ref = by_ref;
         }

@@ -50,8 +50,17 @@ fn clamp_into(x_2: ptr<function, f32>, lo: f32, hi: f32) {
     return;
 }
 
-fn mean(acc_2: Accum) -> vec3<f32> {
-    return select(vec3(0f), (acc_2.sum / vec3(acc_2.weight)), (acc_2.weight > 0f));
+fn settle(acc_2: ptr<function, Accum>) {
+    let _e3 = (*acc_2).weight;
+    let _e7 = (*acc_2).sum;
+    let _e9 = (*acc_2).weight;
+    (*acc_2).sum = select(vec3(0f), (_e7 / vec3(_e9)), (_e3 > 0f));
+    (*acc_2).weight = 1f;
+    return;
+}
+
+fn mean(acc_3: Accum) -> vec3<f32> {
+    return select(vec3(0f), (acc_3.sum / vec3(acc_3.weight)), (acc_3.weight > 0f));
 }
 
 fn saturate2_(v_1: ptr<function, vec2<f32>>) {
@@ -115,23 +124,24 @@ fn references_fs(@location(0) v_uv_1: vec2<f32>) -> references_fs_out {
     clamp_into((&x), 0f, 0.5f);
     let _e49 = x;
     weights[3] = _e49;
-    let _e52 = acc;
-    let _e53 = mean(_e52);
-    c = _e53;
-    let _e56 = c.y;
-    x_1 = _e56;
+    settle((&acc));
+    let _e53 = acc;
+    let _e54 = mean(_e53);
+    c = _e54;
+    let _e57 = c.y;
+    x_1 = _e57;
     clamp_into((&x_1), 0.1f, 0.9f);
-    let _e61 = x_1;
-    c.y = _e61;
-    let _e63 = c;
-    v = _e63.xz;
+    let _e62 = x_1;
+    c.y = _e62;
+    let _e64 = c;
+    v = _e64.xz;
     saturate2_((&v));
-    let _e67 = v;
-    let _e68 = c;
-    c = vec3<f32>(_e67.x, _e68.y, _e67.y);
-    let _e75 = c;
-    let _e78 = weights[3];
-    f_color = vec4<f32>(_e75, _e78);
-    let _e81 = f_color;
-    return references_fs_out(_e81);
+    let _e68 = v;
+    let _e69 = c;
+    c = vec3<f32>(_e68.x, _e69.y, _e68.y);
+    let _e76 = c;
+    let _e79 = weights[3];
+    f_color = vec4<f32>(_e76, _e79);
+    let _e82 = f_color;
+    return references_fs_out(_e82);
 }

@@ -37,8 +37,17 @@ void clamp_into(inout float x_2, float lo, float hi) {
     return;
 }
 
-vec3 mean(Accum acc_2) {
-    return ((acc_2.weight > 0.0) ? (acc_2.sum / vec3(acc_2.weight)) : vec3(0.0));
+void settle(inout Accum acc_2) {
+    float _e3 = acc_2.weight;
+    vec3 _e7 = acc_2.sum;
+    float _e9 = acc_2.weight;
+    acc_2.sum = ((_e3 > 0.0) ? (_e7 / vec3(_e9)) : vec3(0.0));
+    acc_2.weight = 1.0;
+    return;
+}
+
+vec3 mean(Accum acc_3) {
+    return ((acc_3.weight > 0.0) ? (acc_3.sum / vec3(acc_3.weight)) : vec3(0.0));
 }
 
 void saturate2_(inout vec2 v_1) {
@@ -85,25 +94,26 @@ void main() {
     clamp_into(x, 0.0, 0.5);
     float _e49 = x;
     weights[3] = _e49;
-    Accum _e52 = acc;
-    vec3 _e53 = mean(_e52);
-    c = _e53;
-    float _e56 = c.y;
-    x_1 = _e56;
+    settle(acc);
+    Accum _e53 = acc;
+    vec3 _e54 = mean(_e53);
+    c = _e54;
+    float _e57 = c.y;
+    x_1 = _e57;
     clamp_into(x_1, 0.1, 0.9);
-    float _e61 = x_1;
-    c.y = _e61;
-    vec3 _e63 = c;
-    v = _e63.xz;
+    float _e62 = x_1;
+    c.y = _e62;
+    vec3 _e64 = c;
+    v = _e64.xz;
     saturate2_(v);
-    vec2 _e67 = v;
-    vec3 _e68 = c;
-    c = vec3(_e67.x, _e68.y, _e67.y);
-    vec3 _e75 = c;
-    float _e78 = weights[3];
-    f_color = vec4(_e75, _e78);
-    vec4 _e81 = f_color;
-    references_fs_out _tmp_return = references_fs_out(_e81);
+    vec2 _e68 = v;
+    vec3 _e69 = c;
+    c = vec3(_e68.x, _e69.y, _e68.y);
+    vec3 _e76 = c;
+    float _e79 = weights[3];
+    f_color = vec4(_e76, _e79);
+    vec4 _e82 = f_color;
+    references_fs_out _tmp_return = references_fs_out(_e82);
     _fs2p_location0 = _tmp_return.f_color;
     return;
 }
