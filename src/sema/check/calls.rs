@@ -102,16 +102,14 @@ impl<'a, 'd> Checker<'a, 'd> {
         let mut more = 0;
         for k in 0..count {
             let d = self.funcs[name][k];
-            match self.signature(d) {
-                Some(sig) if sig.params.len() >= xs.len() && xs.len() >= sig.required && sig.params.iter().zip(&xs).all(|(p, x)| *p == x.ty) => {
-                    if matching.try_push(d).is_err() {
-                        more += 1;
-                    }
-                }
-                Some(_) => {}
+            let fits = match self.signature(d) {
+                Some(sig) => sig.params.len() >= xs.len() && xs.len() >= sig.required && sig.params.iter().zip(&xs).all(|(p, x)| *p == x.ty),
                 // A wrong parameter type, already reported.
                 None if count == 1 => return Ok(err_expr(span)),
-                None => {}
+                None => false,
+            };
+            if fits && matching.try_push(d).is_err() {
+                more += 1;
             }
         }
         let idx = match matching.as_slice() {
@@ -163,7 +161,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         // What `var p : T&` parameters write must be a variable the
         // caller may write. A `var` struct or array parameter (a reference
         // in daslang too) given anything else works on a copy.
-        for i in 0..xs.len() {
+        for (i, x) in xs.iter().enumerate() {
             let f = &self.out.functions[fid];
             if !f.locals[i].by_ref {
                 continue;
@@ -171,19 +169,19 @@ impl<'a, 'd> Checker<'a, 'd> {
             let pname = f.locals[i].name.clone();
             let pty = self.show(&f.locals[i].ty);
             let explicit = decl.params[i].by_ref;
-            let writable = self.place_ok(cx, &xs[i]);
+            let writable = self.place_ok(cx, x);
             if writable.is_err() && !explicit {
                 continue;
             }
             if let Err(why) = writable {
-                let d = Diagnostic::error(format!("`{name}` writes its parameter `{pname}` (`var {pname} : {pty}&`), so the argument must be a variable the caller can write"), xs[i].span)
+                let d = Diagnostic::error(format!("`{name}` writes its parameter `{pname}` (`var {pname} : {pty}&`), so the argument must be a variable the caller can write"), x.span)
                     .with_label("not writable here")
-                    .with_note(format!("{}", why.message))
+                    .with_note(why.message)
                     .with_secondary(f.span, "defined here");
                 self.diags.push(d);
                 return Ok(err_expr(span));
             }
-            if let Some(ExprKind::Global(g)) = place_root(&xs[i]).map(|r| &r.kind) {
+            if let Some(ExprKind::Global(g)) = place_root(x).map(|r| &r.kind) {
                 cx.ref_writes.push(*g);
             }
         }
