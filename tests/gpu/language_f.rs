@@ -224,6 +224,20 @@ struct Light {
     dir : float3
     k : float
 }
+def hidden(k : float) : float {
+    var l = Light(dir = float3(1.0), k = 5.0)
+    var s = 0.0
+    with (l) {
+        // The field hides the parameter.
+        s = k
+    }
+    let dir = float3(10.0)
+    with (l) {
+        // A local hides the field.
+        s += dir.x
+    }
+    return s
+}
 def lit(z : float) : float {
     var l = Light(dir = float3(1.0, 2.0, 3.0 + z), k = 2.0)
     with (l) {
@@ -251,6 +265,7 @@ def lit(z : float) : float {
             "M(metal = 1.0 + fz, id = 3).rough == 0.25 && M(metal = 1.0 + fz, id = 3).metal == 1.0 && M(rough = fz).albedo == float3(0.5)",
             // `with`: fields read and written in place; a local declared inside hides one.
             "lit(fz) == 3.0 + 3.0 + 100.0 + 3.0",
+            "hidden(fz) == 15.0",
         ],
     );
 }

@@ -239,8 +239,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
     }
 
-    /// `with (subject) body`: the subject's fields are names in the body
-    /// (a local declared inside the body hides a field).
+    /// `with (subject) body`: the subject's fields are names in the body.
     pub(super) fn check_with(&mut self, cx: &mut FnCtx<'a>, subject: &'a ast::Expr, body: &'a ast::Block, span: Span, out: &mut Vec<Stmt>) {
         let x = self.check_expr(cx, subject);
         let id = match x.ty {
@@ -257,7 +256,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         if let Some(id) = id {
             let name = format!("with_{}", self.out.structs[id].name);
             let subject = self.stable(cx, x, &name, &mut pre);
-            cx.withs.push(WithScope { subject, id, first_local: cx.locals.len() });
+            cx.withs.push(WithScope { subject, id });
         }
         let inner = self.check_block(cx, &body.stmts);
         if id.is_some() {
@@ -267,14 +266,15 @@ impl<'a, 'd> Checker<'a, 'd> {
         out.push(Stmt::If { cond: Expr { kind: ExprKind::Bool(true), ty: BOOL, span }, then: pre, otherwise: Vec::new(), span });
     }
 
-    /// The field `name` of an enclosing `with` subject, unless a local
-    /// declared inside that `with` hides it.
+    /// The field `name` of an enclosing `with` subject (the innermost that
+    /// has one). daslang looks a name up as a local variable first, then as
+    /// a `with` field, then as a parameter or a global: a local hides a
+    /// field, a field hides a parameter.
     pub(super) fn with_field(&self, cx: &FnCtx<'a>, name: &str, span: Span) -> Option<Expr> {
-        let local = cx.lookup(name);
+        if cx.lookup(name).is_some_and(|l| l >= cx.params) {
+            return None;
+        }
         for w in cx.withs.iter().rev() {
-            if local.is_some_and(|l| l >= w.first_local) {
-                return None;
-            }
             let fields = &self.out.structs[w.id].fields;
             if let Some(i) = fields.iter().position(|(f, _, _)| f == name) {
                 let ty = fields[i].1.clone();

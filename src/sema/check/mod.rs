@@ -76,9 +76,6 @@ struct WithScope {
     /// The subject, safe to evaluate again at each use (`loops::stable`).
     subject: Expr,
     id: StructId,
-    /// Locals from this one on are declared inside the block (and hide
-    /// the fields).
-    first_local: LocalId,
 }
 
 /// Per-function state while checking a body.
@@ -93,6 +90,8 @@ struct FnCtx<'a> {
     /// (`for (x in arr)`): each use is this expression.
     aliases: FxHashMap<LocalId, Expr>,
     withs: Vec<WithScope>,
+    /// Locals before this one are the parameters (which `with` fields hide).
+    params: LocalId,
     ref_writes: Vec<GlobalId>,
     loop_depth: usize,
     uses: BTreeMap<GlobalId, Span>,
@@ -114,6 +113,7 @@ impl<'a> FnCtx<'a> {
             ret_from: None,
             aliases: FxHashMap::default(),
             withs: Vec::new(),
+            params: 0,
             ref_writes: Vec::new(),
             loop_depth: 0,
             uses: BTreeMap::new(),

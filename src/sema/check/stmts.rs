@@ -183,6 +183,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             cx.locals[lid].by_ref = by_ref;
         }
         let params = cx.locals.len();
+        cx.params = params;
         let body = self.check_block(&mut cx, &decl.body.stmts);
         let mut scopes = std::mem::take(&mut cx.scopes);
         scopes.visible.clear();
