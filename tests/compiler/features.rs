@@ -103,7 +103,7 @@ fn snippets() -> BTreeMap<&'static str, String> {
 /// `return`, defaults, parameter kinds, overloads, pipes, `with`, enums,
 /// construction by field name, `for` over arrays.
 fn functions_and_data(add: &mut impl FnMut(&'static str, String)) {
-    add("inferred-result", frag("def half_of(x : float) {\n    return x * 0.5\n}\ndef twice(x : float) => x * 2.0\ndef third(x : float) -> float {\n    return x / 3.0\n}", "    f_color = float4(half_of(1.0), twice(0.25), third(1.5), 1.0)"));
+    add("inferred-result", frag("def half_of(x : float) {\n    return x * 0.5\n}\ndef twice(x : float) => x * 2.0\ndef third(x : float) -> float {\n    return x / 3.0\n}\ndef nothing(x : float) : void {\n    return\n}", "    nothing(1.0)\n    f_color = float4(half_of(1.0), twice(0.25), third(1.5), 1.0)"));
     add("default-parameters", frag("def tone(x : float; gain : float = 2.0; bias : float3 = float3(0.1)) => x * gain + bias", "    f_color = float4(tone(0.5) + tone(0.5, 1.0) + tone(0.5, 1.0, float3(0.0)), 1.0)"));
     add("default-not-constant", frag("var @uniform u_g : float\ndef tone(x : float; gain : float = u_g) => x * gain", "    f_color = float4(tone(0.5))"));
     add("visibility-modifiers", frag("struct private S {\n    a : float\n}\nlet private K = 0.5\nenum private E {\n    one\n}\ndef private f(s : S) : float {\n    return s.a * K\n}\ndef public g(x : float) => x", "    f_color = float4(g(f(S(1.0))))"));

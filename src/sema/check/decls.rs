@@ -94,7 +94,8 @@ impl<'a, 'd> Checker<'a, 'd> {
                     }
                     match is_entry(f) {
                         Some(stage) => {
-                            if !f.params.is_empty() || f.ret.is_some() {
+                            let returns = f.ret.as_ref().is_some_and(|t| !matches!(&t.kind, ast::TypeExprKind::Named(id) if id.name == "void"));
+                            if !f.params.is_empty() || returns {
                                 let d = Diagnostic::error(format!("entry point `{}` cannot take parameters or return a value", f.name.name), f.name.span)
                                     .with_note("entry points read `@in`/`@inout` globals and write `@out`/`@inout` globals and `gl_Position`");
                                 self.diags.push(d);

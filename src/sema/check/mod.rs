@@ -86,6 +86,8 @@ struct FnCtx<'a> {
     /// No declared result: the first `return` decides it (its span here).
     infer_ret: bool,
     ret_from: Option<Span>,
+    /// Checking an entry point (its `return` takes no value).
+    entry: bool,
     /// Loop variables that stand for an element of an iterated array
     /// (`for (x in arr)`): each use is this expression.
     aliases: FxHashMap<LocalId, Expr>,
@@ -111,6 +113,7 @@ impl<'a> FnCtx<'a> {
             ret,
             infer_ret: false,
             ret_from: None,
+            entry: false,
             aliases: FxHashMap::default(),
             withs: Vec::new(),
             params: 0,

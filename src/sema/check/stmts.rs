@@ -152,8 +152,10 @@ impl<'a, 'd> Checker<'a, 'd> {
     /// already resolved (entry points: `None`, resolved here).
     pub(super) fn check_function(&mut self, decl: &'a ast::FunctionDecl, entry: Option<naga::ShaderStage>, params: Option<&[Ty]>) -> Option<Function> {
         let errors_before = self.diags.error_count();
+        // `: void` says what no result type says, without inferring.
+        let is_void = |t: &ast::TypeExpr| matches!(&t.kind, ast::TypeExprKind::Named(id) if id.name == "void");
         let ret = match &decl.ret {
-            Some(t) if entry.is_none() => self.resolve_type(t),
+            Some(t) if entry.is_none() && !is_void(t) => self.resolve_type(t),
             _ => Ty::Void,
         };
         if ret.is_sampler_like() {
@@ -170,6 +172,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         let mut cx = FnCtx::new(scopes, ret, depth, decl.params.len() + count_locals(&decl.body.stmts));
         // No declared result: the first `return` says what it is.
         cx.infer_ret = entry.is_none() && decl.ret.is_none();
+        cx.entry = entry.is_some();
         for (i, p) in decl.params.iter().enumerate() {
             let ty = match params {
                 Some(ps) => ps[i].clone(),
@@ -436,7 +439,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                     Some(first) => Diagnostic::error("this `return` gives a value, but the function's first `return` gives none", e.span)
                         .with_secondary(first, "the first `return`, which makes the result `void`")
                         .with_note("help: every `return` of a function gives a value of one type, or none gives a value"),
-                    // Only entry points have no result without inferring one.
+                    None if !cx.entry => Diagnostic::error("this function is declared `: void`, so `return` takes no value", e.span),
                     None => Diagnostic::error("an entry point returns nothing, so `return` takes no value", e.span)
                         .with_note("entry points write their results to `@out`/`@inout` globals and `gl_Position`"),
                 };
