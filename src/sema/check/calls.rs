@@ -308,7 +308,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             match g {
                 Some(x) => xs.push(x),
                 None => match self.field_inits[sid].get(i).copied().flatten() {
-                    Some(init) => match self.constant_value(init, None, "the initial value") {
+                    Some(init) => match self.field_init_value(sid, i, init, span) {
                         Some(v) => xs.push(Expr { span, ..v }),
                         None => return err_expr(span),
                     },
@@ -317,6 +317,32 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
         }
         Expr { kind: ExprKind::Construct(xs), ty: Ty::Struct(sid), span }
+    }
+
+    /// The initial value `init` of field `i` of struct `sid`, checked as a
+    /// constant; one that needs itself (`struct S { a = S() }`) is an error.
+    pub(super) fn field_init_value(&mut self, sid: StructId, i: usize, init: &'a ast::Expr, at: Span) -> Option<Expr> {
+        if self.failed_inits.contains(&(sid, i)) {
+            return None;
+        }
+        let (sname, fname) = (self.out.structs[sid].name.clone(), self.out.structs[sid].fields[i].0.clone());
+        if self.inits_in_progress.contains(&(sid, i)) {
+            let mut d = Diagnostic::error(format!("the initial value of `{sname}.{fname}` needs itself"), at)
+                .with_note("help: give the field a value that does not construct its own struct");
+            if at != init.span {
+                d = d.with_secondary(init.span, "this initial value");
+            }
+            self.diags.push(d);
+            self.failed_inits.insert((sid, i));
+            return None;
+        }
+        self.inits_in_progress.push((sid, i));
+        let v = self.constant_value(init, None, &format!("the initial value of `{sname}.{fname}`"));
+        self.inits_in_progress.pop();
+        if v.is_none() {
+            self.failed_inits.insert((sid, i));
+        }
+        v
     }
 
     fn field_list(&self, sid: StructId) -> String {

@@ -129,11 +129,19 @@ impl<'a, 'd> Checker<'a, 'd> {
             for (i, f) in s.fields.iter().enumerate() {
                 let Some(init) = &f.init else { continue };
                 let declared = self.out.structs[id].fields[i].1.clone();
-                let what = format!("the initial value of `{}.{}`", s.name.name, f.name.name);
-                match (&f.ty, self.constant_value(init, f.ty.as_ref().map(|_| &declared).filter(|t| !t.is_error()), &what)) {
-                    (None, Some(v)) => self.out.structs[id].fields[i].1 = v.ty,
-                    (None, None) => {}
-                    (Some(_), _) => {}
+                let Some(v) = self.field_init_value(id, i, init, init.span) else { continue };
+                match &f.ty {
+                    // A field without a type has its value's.
+                    None => self.out.structs[id].fields[i].1 = v.ty,
+                    Some(_) if !declared.is_error() && v.ty != declared => {
+                        let d = Diagnostic::error(
+                            format!("type mismatch: the initial value of `{}.{}` is `{}`, but its type is `{}`", s.name.name, f.name.name, self.show(&v.ty), self.show(&declared)),
+                            v.span,
+                        )
+                        .with_label(format!("this is `{}`", self.show(&v.ty)));
+                        self.diags.push(d);
+                    }
+                    Some(_) => {}
                 }
             }
         }

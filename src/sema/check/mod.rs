@@ -186,6 +186,11 @@ struct Checker<'a, 'd> {
     /// Per struct, per field: its initial value, if declared (empty for a
     /// struct without any).
     field_inits: Vec<Vec<Option<&'a ast::Expr>>>,
+    /// Initial values being checked (struct, field): one that needs itself
+    /// is an error, not an endless recursion.
+    inits_in_progress: Vec<(StructId, usize)>,
+    /// Initial values already reported as wrong: their uses report nothing more.
+    failed_inits: FxHashSet<(StructId, usize)>,
     entry_decls: Vec<(&'a ast::FunctionDecl, naga::ShaderStage)>,
     builtin_vars: FxHashMap<BuiltinVar, GlobalId>,
     /// Depth at which the next helper function checked on first use starts.
@@ -234,6 +239,8 @@ impl<'a, 'd> Checker<'a, 'd> {
             fn_states: Vec::new(),
             fn_sigs: Vec::new(),
             field_inits: Vec::new(),
+            inits_in_progress: Vec::new(),
+            failed_inits: FxHashSet::default(),
             entry_decls: Vec::new(),
             builtin_vars: FxHashMap::default(),
             call_depth: 0,
