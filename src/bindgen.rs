@@ -879,6 +879,7 @@ mod tests {
             source: String::new(),
             conventions: String::new(),
             entry_points: vec![],
+            programs: vec![],
             uniform_blocks: vec![],
             structs: vec![StructLayout { name: "Light".into(), size: 16, members: vec![] }],
             samplers: vec![],

@@ -21,7 +21,7 @@ use naga::proc::Layouter;
 use naga::{ArraySize, Handle, Module, ScalarKind, ShaderStage, Type, TypeInner, VectorSize};
 
 use super::glsl::{self, EntryNames};
-use super::reflect_types::{EntryPoint, Io, Member, Reflection, Sampler, StructLayout, UniformBlock, REFLECTION_FORMAT};
+use super::reflect_types::{EntryPoint, Io, Member, ProgramLink, Reflection, Sampler, StructLayout, UniformBlock, REFLECTION_FORMAT};
 use crate::diag::Diagnostic;
 use crate::lower::{EntryInterface, IoVar, Lowered, ResourceKind};
 use crate::sema::SamplerKind;
@@ -337,11 +337,17 @@ pub fn build(
         entry_points.push(entry_point(module, ep, names, &module_files, targets, iface)?);
     }
 
+    let programs = iface
+        .links
+        .iter()
+        .map(|&(v, f)| ProgramLink { vertex: iface.entry_points[v].name.clone(), fragment: iface.entry_points[f].name.clone() })
+        .collect();
     Ok(Reflection {
         format: REFLECTION_FORMAT,
         source: source_name.to_string(),
         conventions: iface.conventions.as_str().to_string(),
         entry_points,
+        programs,
         uniform_blocks,
         structs: layouts.structs.clone(),
         samplers,

@@ -87,6 +87,9 @@ pub struct Interface {
     pub conventions: Conventions,
     pub resources: Vec<Resource>,
     pub entry_points: Vec<EntryInterface>,
+    /// `(vertex, fragment)` indices into `entry_points` of the entry
+    /// points that form one program (`sema::Link`).
+    pub links: Vec<(usize, usize)>,
 }
 
 /// The GL module of one entry point (its only entry point), validated.

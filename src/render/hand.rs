@@ -5,7 +5,7 @@
 
 use std::collections::BTreeMap;
 
-use crate::emit::reflect_types::{EntryPoint, Io, Member, Reflection, Sampler, UniformBlock, REFLECTION_FORMAT};
+use crate::emit::reflect_types::{EntryPoint, Io, Member, ProgramLink, Reflection, Sampler, UniformBlock, REFLECTION_FORMAT};
 
 use super::gpu::{ShaderCode, ShaderSet};
 
@@ -179,6 +179,10 @@ pub fn reflection() -> Reflection {
         source: FILE_NAME.into(),
         conventions: "portable".into(),
         entry_points,
+        programs: vec![
+            ProgramLink { vertex: "main_vs".into(), fragment: "main_fs".into() },
+            ProgramLink { vertex: "shadow_vs".into(), fragment: "shadow_fs".into() },
+        ],
         uniform_blocks,
         structs: vec![],
         samplers,

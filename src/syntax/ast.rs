@@ -170,8 +170,9 @@ pub enum QualifierKind {
     InOut,
     /// `@location = N`, or bare `@location` (`None`: the compiler assigns it).
     Location(Option<i64>),
-    /// `@stage = N`: the texture unit of a sampler.
-    Stage(i64),
+    /// `@stage = N`: the texture unit of a sampler; bare `@stage` (`None`):
+    /// the compiler assigns it, per program.
+    Stage(Option<i64>),
     /// Any other `@name [= value]`; semantic analysis reports it.
     Other(String),
 }

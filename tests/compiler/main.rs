@@ -29,6 +29,8 @@ mod features;
 #[cfg(feature = "golden")]
 mod golden;
 mod limits;
+#[cfg(feature = "deserialize")]
+mod programs;
 mod proptest_programs;
 #[cfg(feature = "cli")]
 mod robustness;

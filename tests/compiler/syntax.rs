@@ -170,7 +170,7 @@ fn project_shadow_program_parses() {
         Item::Global(g) if g.name.name == "shadow_map" => Some(g),
         _ => None,
     });
-    assert!(sm.unwrap().qualifiers.iter().any(|q| q.kind == QualifierKind::Stage(0)));
+    assert!(sm.unwrap().qualifiers.iter().any(|q| q.kind == QualifierKind::Stage(Some(0))));
 }
 
 #[test]

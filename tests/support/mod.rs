@@ -115,6 +115,13 @@ fn builtin_name(b: naga::BuiltIn, output: bool) -> String {
     }
 }
 
+/// Every vertex entry point with every fragment one: a WGSL test module
+/// states no programs.
+fn umbrac_links(eps: &[EntryInterface]) -> Vec<(usize, usize)> {
+    let of = |stage| eps.iter().filter(move |e| e.stage == stage).map(|e| e.index);
+    of(naga::ShaderStage::Vertex).flat_map(|v| of(naga::ShaderStage::Fragment).map(move |f| (v, f))).collect()
+}
+
 fn interface_of(m: &naga::Module, info: &naga::valid::ModuleInfo) -> Interface {
     let mut resources = Vec::new();
     let mut unit = 0;
@@ -199,7 +206,8 @@ fn interface_of(m: &naga::Module, info: &naga::valid::ModuleInfo) -> Interface {
         }
         entry_points.push(e);
     }
-    Interface { conventions: Conventions::Portable, resources, entry_points }
+    let links = umbrac_links(&entry_points);
+    Interface { conventions: Conventions::Portable, resources, entry_points, links }
 }
 
 /// The repository root.
@@ -258,18 +266,9 @@ pub fn write_all(dir: &Path, artifacts: &[Artifact]) -> Vec<PathBuf> {
         .collect()
 }
 
-/// Vertex/fragment pairs whose interfaces match: every fragment input has a
-/// vertex output at the same location with the same type.
+/// The programs of a manifest: (vertex, fragment) entry point names.
 pub fn link_pairs(r: &Reflection) -> Vec<(String, String)> {
-    let mut pairs = Vec::new();
-    for v in r.entry_points.iter().filter(|e| e.stage == "vertex") {
-        for f in r.entry_points.iter().filter(|e| e.stage == "fragment") {
-            if f.inputs.iter().all(|i| v.outputs.iter().any(|o| o.location == i.location && o.ty == i.ty)) {
-                pairs.push((v.name.clone(), f.name.clone()));
-            }
-        }
-    }
-    pairs
+    r.programs.iter().map(|p| (p.vertex.clone(), p.fragment.clone())).collect()
 }
 
 /// Runs every validator on outputs written to `dir`: glslangValidator on

@@ -185,11 +185,11 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
     }
 
+    /// Declares the shader globals. Locations and texture units written
+    /// in the source are range-checked here; the others are numbered, and
+    /// all are checked for clashes, per program once the entry points are
+    /// known (`programs.rs`).
     pub(super) fn declare_globals(&mut self, seen: &mut FxHashMap<&'a str, Span>) {
-        // Explicit locations / texture units first, per interface class, so
-        // automatic ones fill the gaps.
-        let mut taken: FxHashMap<&'static str, FxHashMap<u32, Span>> = FxHashMap::default();
-        let mut pending_auto: Vec<(GlobalId, &'static str, u32)> = Vec::new();
         let items = &self.ast.items;
         for item in items {
             let ast::Item::Global(g) = item else { continue };
@@ -201,7 +201,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             let ty = self.resolve_type(&g.ty);
             let mut class: Option<(&'static str, Span)> = None;
             let mut location: Option<(i64, Span)> = None;
-            let mut stage: Option<(i64, Span)> = None;
+            let mut stage: Option<(Option<i64>, Span)> = None;
             for q in &g.qualifiers {
                 let c = match &q.kind {
                     ast::QualifierKind::Uniform => Some("uniform"),
@@ -259,7 +259,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                         self.diags.push(Diagnostic::error("`@location` does not apply to samplers; use `@stage = N` for the texture unit", span));
                     }
                     let unit = match stage {
-                        Some((s, span)) if !(0..32).contains(&s) || s + n as i64 > 32 => {
+                        Some((Some(s), span)) if !(0..32).contains(&s) || s + n as i64 > 32 => {
                             let msg = if n > 1 {
                                 format!("texture units {s}..{} are out of range (0..=31)", s + n as i64 - 1)
                             } else {
@@ -268,29 +268,17 @@ impl<'a, 'd> Checker<'a, 'd> {
                             self.diags.push(Diagnostic::error(msg, span));
                             0
                         }
-                        Some((s, span)) => {
-                            let map = taken.entry("stage").or_default();
-                            for u in s as u32..s as u32 + n {
-                                if let Some(prev) = map.get(&u) {
-                                    let d = Diagnostic::error(format!("texture unit {u} is used twice"), span).with_secondary(*prev, "first used here");
-                                    self.diags.push(d);
-                                    break;
-                                }
-                            }
-                            for u in s as u32..s as u32 + n {
-                                map.insert(u, span);
-                            }
+                        Some((Some(s), span)) => {
+                            self.unit_spans.insert(self.out.globals.len(), span);
                             s as u32
                         }
-                        None => {
-                            pending_auto.push((self.out.globals.len(), "stage", n));
-                            0
-                        }
+                        // Bare `@stage`, or none: numbered per program.
+                        _ => 0,
                     };
                     GlobalKind::Sampler { kind, texture_unit: unit, count }
                 }
                 ("uniform", _) => {
-                    if let Some((_, span)) = location.or(stage) {
+                    if let Some(span) = location.map(|l| l.1).or(stage.map(|s| s.1)) {
                         self.diags.push(Diagnostic::error("uniform values take no `@location` or `@stage`", span));
                     }
                     if !ty.is_error() {
@@ -314,31 +302,16 @@ impl<'a, 'd> Checker<'a, 'd> {
                         let d = Diagnostic::error(format!("`@{c}` variables must be numeric scalars or vectors, not `{}`", self.show(&ty)), g.ty.span);
                         self.diags.push(d);
                     }
-                    let key = match io {
-                        IoKind::In => "in",
-                        IoKind::Out => "out",
-                        IoKind::InOut => "inout",
-                    };
                     let loc = match location {
                         Some((l, span)) if !(0..MAX_LOCATIONS as i64).contains(&l) => {
                             self.diags.push(Diagnostic::error(format!("location {l} is out of range (0..{MAX_LOCATIONS})"), span));
-                            0
+                            None
                         }
                         Some((l, span)) => {
-                            let map = taken.entry(key).or_default();
-                            if let Some(prev) = map.get(&(l as u32)) {
-                                let d = Diagnostic::error(format!("duplicate location {l} for `@{c}` variables"), span)
-                                    .with_label(format!("`{}` uses location {l}", g.name.name))
-                                    .with_secondary(*prev, "already used here");
-                                self.diags.push(d);
-                            }
-                            map.insert(l as u32, span);
-                            l as u32
+                            self.location_spans.insert(self.out.globals.len(), span);
+                            Some(l as u32)
                         }
-                        None => {
-                            pending_auto.push((self.out.globals.len(), key, 1));
-                            0
-                        }
+                        None => None,
                     };
                     let _ = class_span;
                     GlobalKind::Io { kind: io, location: loc }
@@ -346,26 +319,6 @@ impl<'a, 'd> Checker<'a, 'd> {
             };
             self.globals.insert(&g.name.name, self.out.globals.len());
             self.out.globals.push(Global { name: g.name.name.as_str().to_string(), ty, kind, span: g.name.span });
-        }
-        // Automatic locations and units: the lowest free number, in declaration order.
-        for (gid, key, count) in pending_auto {
-            let map = taken.entry(key).or_default();
-            let limit = if key == "stage" { 32 } else { MAX_LOCATIONS };
-            let Some(n) = (0..limit.saturating_sub(count - 1)).find(|n| (*n..n + count).all(|u| !map.contains_key(&u))) else {
-                let span = self.out.globals[gid].span;
-                let what = if key == "stage" { "texture unit" } else { "location" };
-                let msg = if count > 1 { format!("no {count} consecutive free {what}s left (at most {limit})") } else { format!("no free {what} left (at most {limit})") };
-                self.diags.push(Diagnostic::error(msg, span));
-                continue;
-            };
-            for u in n..n + count {
-                map.insert(u, self.out.globals[gid].span);
-            }
-            match &mut self.out.globals[gid].kind {
-                GlobalKind::Sampler { texture_unit, .. } => *texture_unit = n,
-                GlobalKind::Io { location, .. } => *location = n,
-                _ => {}
-            }
         }
     }
 

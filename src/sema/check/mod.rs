@@ -7,10 +7,13 @@
 //!
 //! The [`Checker`] is defined here; its methods are split by what they check:
 //! [`decls`] (structs, globals, types, constants), [`stmts`] (functions,
-//! statements, places) and [`exprs`] (expressions, calls, operators).
+//! statements, places), [`exprs`] (expressions, calls, operators) and
+//! [`programs`] (which entry points form a program; locations and texture
+//! units numbered and checked per program).
 
 mod decls;
 mod exprs;
+mod programs;
 mod stmts;
 
 use std::collections::hash_map::Entry;
@@ -30,6 +33,7 @@ pub fn check(program: &ast::Program, diags: &mut Diagnostics) -> Option<Program>
     let mut c = Checker::new(program, diags);
     c.declare();
     c.check_entry_points();
+    c.link_programs();
     if c.diags.has_errors() {
         None
     } else {
@@ -120,6 +124,10 @@ struct Checker<'a, 'd> {
     fn_decls: Vec<&'a ast::FunctionDecl>,
     entry_decls: Vec<(&'a ast::FunctionDecl, naga::ShaderStage)>,
     builtin_vars: FxHashMap<BuiltinVar, GlobalId>,
+    /// The `@location = N` qualifier of each global that has one, and the
+    /// `@stage = N` of each sampler that has one (for clash diagnostics).
+    location_spans: FxHashMap<GlobalId, Span>,
+    unit_spans: FxHashMap<GlobalId, Span>,
     /// Depth at which the next helper function checked on first use starts.
     call_depth: usize,
     spare_scopes: Vec<Scopes<'a>>,
@@ -164,6 +172,8 @@ impl<'a, 'd> Checker<'a, 'd> {
             fn_decls: Vec::new(),
             entry_decls: Vec::new(),
             builtin_vars: FxHashMap::default(),
+            location_spans: FxHashMap::default(),
+            unit_spans: FxHashMap::default(),
             call_depth: 0,
             spare_scopes: Vec::new(),
         }

@@ -201,14 +201,7 @@ impl<'m> Parser<'_, 'm> {
             "out" => QualifierKind::Out,
             "inout" => QualifierKind::InOut,
             "location" => QualifierKind::Location(value),
-            "stage" => match value {
-                Some(v) => QualifierKind::Stage(v),
-                None => {
-                    let msg = "`@stage` needs a texture unit: `@stage = N`".to_string();
-                    self.err(Token::new(TokKind::Ident, span), msg, "no value");
-                    return Err(());
-                }
-            },
+            "stage" => QualifierKind::Stage(value),
             other => QualifierKind::Other(other.to_string()),
         };
         Ok(Qualifier { kind, span })
