@@ -1,7 +1,7 @@
 //! The program's globals in a module: uniforms and samplers (with
 //! bindings in the GPU module, none in a GL module, which naga then names
-//! after the source), and private globals for the entry-point inputs and
-//! outputs that need one.
+//! after the source), private globals for the entry-point inputs and
+//! outputs that need one, and module variables.
 
 use naga::TypeInner;
 
@@ -129,6 +129,27 @@ impl ModuleBuilder<'_> {
                             binding: None,
                             ty,
                             init: None,
+                            memory_decorations: naga::MemoryDecorations::empty(),
+                        },
+                        span,
+                    );
+                    GlobalSlot::Var(h)
+                }
+                GlobalKind::Private { init } => {
+                    let ty = self.ty(&g.ty);
+                    // Every invocation starts from the value, or from zero
+                    // (GLSL leaves an uninitialised global undefined).
+                    let init = match init {
+                        Some(v) => self.const_expr(v, &g.ty),
+                        None => self.module.global_expressions.append(naga::Expression::ZeroValue(ty), naga::Span::UNDEFINED),
+                    };
+                    let h = self.module.global_variables.append(
+                        naga::GlobalVariable {
+                            name: Some(g.name.clone()),
+                            space: naga::AddressSpace::Private,
+                            binding: None,
+                            ty,
+                            init: Some(init),
                             memory_decorations: naga::MemoryDecorations::empty(),
                         },
                         span,

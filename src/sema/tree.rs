@@ -149,6 +149,9 @@ pub enum GlobalKind {
     /// program where none is written.
     Io { kind: IoKind, location: Option<u32> },
     Builtin(BuiltinVar),
+    /// A module variable (`var angle = 0.0`, no qualifier) a shader reaches:
+    /// private to each invocation, starting from `init` (zero when `None`).
+    Private { init: Option<ConstValue> },
 }
 
 #[derive(Clone, Debug)]

@@ -146,12 +146,15 @@ pub struct AnnotationArg {
     pub value: Option<Expr>,
 }
 
-/// `var @uniform @location = 1 name : type [= init]` at top level.
+/// `var @uniform @location = 1 name : type [= init]` at top level, or a
+/// module variable without qualifiers (`var angle = 0.0`, also inside a
+/// `var { ... }` block), whose type may come from its initialiser.
 #[derive(Clone, Debug)]
 pub struct GlobalVar {
     pub qualifiers: Vec<Qualifier>,
     pub name: Ident,
-    pub ty: TypeExpr,
+    /// `None` only for a module variable with an initialiser.
+    pub ty: Option<TypeExpr>,
     pub init: Option<Expr>,
     pub span: Span,
 }
@@ -177,7 +180,7 @@ pub enum QualifierKind {
     Other(String),
 }
 
-/// `let NAME [: type] = value` at top level.
+/// `let NAME [: type] = value` at top level (one of a `let { ... }` block too).
 #[derive(Clone, Debug)]
 pub struct ConstDecl {
     pub name: Ident,

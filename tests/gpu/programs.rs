@@ -256,3 +256,19 @@ fn lowered_constructs_hold_on_every_consumer() {
         ],
     );
 }
+
+#[test]
+fn module_variables_start_over_in_every_invocation() {
+    // Each pixel's invocation starts from the initial values: a helper
+    // that counts its calls sees the count of this invocation only, however
+    // many pixels ran before it.
+    assert_all_hold(
+        "module_variables",
+        "var calls = 0\nvar total : float\nvar {\n    step = 0.5\n}\nlet {\n    LIMIT = 3\n}\ndef tick() : int {\n    calls++\n    total += step\n    return calls\n}\ndef ticks(n : int) : int {\n    for (i in range(n)) {\n        tick()\n    }\n    return calls\n}",
+        &[
+            "calls == 0 && total == 0.0 && step == 0.5",
+            "ticks(LIMIT + z) == 3 && total == 1.5",
+            "tick() == 1 && tick() == 2",
+        ],
+    );
+}

@@ -198,10 +198,18 @@ impl<'a, 'd> Checker<'a, 'd> {
                 let d = Diagnostic::error(format!("`{}` is reserved for builtin variables", g.name.name), g.name.span);
                 self.diags.push(d);
             }
-            let ty = self.resolve_type(&g.ty);
+            if g.qualifiers.is_empty() {
+                self.declare_module_var(g);
+                continue;
+            }
+            // The parser gives every global with qualifiers a type.
+            let Some(gty) = &g.ty else { continue };
+            let ty = self.resolve_type(gty);
             let mut class: Option<(&'static str, Span)> = None;
             let mut location: Option<(i64, Span)> = None;
             let mut stage: Option<(Option<i64>, Span)> = None;
+            // An annotation already reported: no second error for the global.
+            let mut refused = false;
             for q in &g.qualifiers {
                 let c = match &q.kind {
                     ast::QualifierKind::Uniform => Some("uniform"),
@@ -218,10 +226,20 @@ impl<'a, 'd> Checker<'a, 'd> {
                         stage = Some((*s, q.span));
                         None
                     }
+                    // daslang binds `@push_constant` like `@uniform` on GL:
+                    // a uniform on every target (docs/language.md).
+                    ast::QualifierKind::Other(name) if name == "push_constant" => Some("uniform"),
                     ast::QualifierKind::Other(name) => {
-                        let d = Diagnostic::error(format!("unknown annotation `@{name}`"), q.span)
-                            .with_note("shader globals take @uniform, @in, @out, @inout, @location = N and @stage = N");
+                        let d = match name.as_str() {
+                            "ssbo" => Diagnostic::error("`@ssbo` storage buffers are not supported yet", q.span)
+                                .with_note("umbrac's targets (GLSL 330, GLSL ES 3.00, WGSL and SPIR-V vertex and fragment programs) get no storage buffers from it yet; use `@uniform` for data the shader only reads"),
+                            "groupshared" => Diagnostic::error("`@groupshared` (workgroup memory) is not supported yet", q.span)
+                                .with_note("workgroup memory belongs to compute programs, which umbrac does not compile yet"),
+                            _ => Diagnostic::error(format!("unknown annotation `@{name}`"), q.span)
+                                .with_note("shader globals take @uniform, @in, @out, @inout, @push_constant, @location = N and @stage = N"),
+                        };
                         self.diags.push(d);
+                        refused = true;
                         None
                     }
                 };
@@ -240,8 +258,14 @@ impl<'a, 'd> Checker<'a, 'd> {
                 self.diags.push(d);
             }
             let Some((class, class_span)) = class else {
-                let d = Diagnostic::error(format!("`{}` has no shader qualifier", g.name.name), g.name.span);
-                self.diags.push(d);
+                if refused {
+                    // Declared, with no type, so that its uses report nothing more.
+                    self.globals.insert(&g.name.name, self.out.globals.len());
+                    self.out.globals.push(Global { name: g.name.name.as_str().to_string(), ty: Ty::Error, kind: GlobalKind::Uniform, span: g.name.span });
+                } else {
+                    let d = Diagnostic::error(format!("`{}` has no shader qualifier", g.name.name), g.name.span);
+                    self.diags.push(d);
+                }
                 continue;
             };
             let kind = match (class, &ty) {
@@ -283,7 +307,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                     }
                     if !ty.is_error() {
                         if let Some(msg) = self.uniform_type_problem(&ty) {
-                            self.diags.push(Diagnostic::error(msg, g.ty.span));
+                            self.diags.push(Diagnostic::error(msg, gty.span));
                         }
                     }
                     GlobalKind::Uniform
@@ -299,7 +323,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                     }
                     let ok = matches!(ty, Ty::Scalar(s) | Ty::Vector(s, _) if s != Scalar::Bool) || ty.is_error();
                     if !ok {
-                        let d = Diagnostic::error(format!("`@{c}` variables must be numeric scalars or vectors, not `{}`", self.show(&ty)), g.ty.span);
+                        let d = Diagnostic::error(format!("`@{c}` variables must be numeric scalars or vectors, not `{}`", self.show(&ty)), gty.span);
                         self.diags.push(d);
                     }
                     let loc = match location {
@@ -320,6 +344,67 @@ impl<'a, 'd> Checker<'a, 'd> {
             self.globals.insert(&g.name.name, self.out.globals.len());
             self.out.globals.push(Global { name: g.name.name.as_str().to_string(), ty, kind, span: g.name.span });
         }
+    }
+
+    /// Evaluates `value` at compile time, the constants it names first.
+    /// `None` when one of those is wrong (reported already).
+    /// `own`: the constant being defined, which `value` may not name.
+    fn fold(&mut self, value: &'a ast::Expr, own: Option<&str>, use_span: Span) -> Option<Result<(ConstValue, Ty), Diagnostic>> {
+        let mut names = Vec::new();
+        crate::sema::consts::collect_names(value, &mut names);
+        let mut deps_ok = true;
+        for n in names {
+            if Some(n) != own && self.const_decls.contains_key(n) {
+                deps_ok &= self.const_id(n, use_span).is_some();
+            }
+        }
+        // A value built from a wrong constant is wrong too, but that was
+        // reported already.
+        deps_ok.then(|| eval_const(value, &ConstEnvAdapter { c: self }))
+    }
+
+    /// A module variable reached by a shader (`var angle = 0.0`): private
+    /// to each shader invocation, starting from its initial value (a
+    /// compile-time constant; zero without one).
+    fn declare_module_var(&mut self, g: &'a ast::GlobalVar) {
+        let name: &'a str = &g.name.name;
+        let declared = g.ty.as_ref().map(|t| (self.resolve_type(t), t.span));
+        let init = match &g.init {
+            None => None,
+            Some(e) => match self.fold(e, None, e.span) {
+                Some(Ok(v)) => Some(v),
+                Some(Err(d)) => {
+                    self.diags.push(d.with_note(format!("the initial value of module variable `{name}` must be a compile-time constant: every shader invocation starts with it")));
+                    return self.declare_failed(g);
+                }
+                None => return self.declare_failed(g),
+            },
+        };
+        let ty = match (&declared, &init) {
+            (Some((t, _)), Some((_, vt))) if !t.is_error() && t != vt => {
+                let d = Diagnostic::error(format!("module variable `{name}` is declared `{}` but its value is `{}`", self.show(t), self.show(vt)), g.init.as_ref().map_or(g.name.span, |e| e.span));
+                self.diags.push(d);
+                return self.declare_failed(g);
+            }
+            (Some((t, _)), _) => t.clone(),
+            (None, Some((_, vt))) => vt.clone(),
+            (None, None) => return self.declare_failed(g),
+        };
+        if ty.is_sampler_like() || ty == Ty::Void {
+            let span = declared.as_ref().map_or(g.name.span, |d| d.1);
+            let d = Diagnostic::error(format!("module variable `{name}` cannot hold a `{}`", self.show(&ty)), span)
+                .with_note("samplers are `@uniform` globals set by the host");
+            self.diags.push(d);
+            return self.declare_failed(g);
+        }
+        self.globals.insert(name, self.out.globals.len());
+        self.out.globals.push(Global { name: name.to_string(), ty, kind: GlobalKind::Private { init: init.map(|v| v.0) }, span: g.name.span });
+    }
+
+    /// Declares `g` with no type after an error: its uses report nothing more.
+    fn declare_failed(&mut self, g: &'a ast::GlobalVar) {
+        self.globals.insert(&g.name.name, self.out.globals.len());
+        self.out.globals.push(Global { name: g.name.name.as_str().to_string(), ty: Ty::Error, kind: GlobalKind::Private { init: None }, span: g.name.span });
     }
 
     /// Why a type cannot be a uniform block, if it cannot.
@@ -484,19 +569,8 @@ impl<'a, 'd> Checker<'a, 'd> {
             self.failed_consts.insert(name);
             return None;
         }
-        // Constants this one names are evaluated first.
-        let mut names = Vec::new();
-        crate::sema::consts::collect_names(&decl.value, &mut names);
         self.const_in_progress.push(name);
-        let mut deps_ok = true;
-        for n in names {
-            if n != name && self.const_decls.contains_key(n) {
-                deps_ok &= self.const_id(n, use_span).is_some();
-            }
-        }
-        // A constant built from a wrong one is wrong too, but that was
-        // reported already.
-        let value = if deps_ok { Some(eval_const(&decl.value, &ConstEnvAdapter { c: self })) } else { None };
+        let value = self.fold(&decl.value, Some(name), use_span);
         self.const_in_progress.pop();
         let (value, ty) = match value {
             Some(Ok(v)) => v,

@@ -17,6 +17,14 @@ impl<'a, 'd> Checker<'a, 'd> {
                 self.diags.push(d);
                 continue;
             }
+            if stage == naga::ShaderStage::Compute {
+                let at = decl.annotations.iter().find(|a| a.name.name == "compute_program").map_or(decl.name.span, |a| a.span);
+                let d = Diagnostic::error(format!("compute program `{name}`: compute programs are not supported yet"), at)
+                    .with_label("a compute program")
+                    .with_note("umbrac compiles vertex and fragment programs; compile the others in this file with `--entry NAME`");
+                self.diags.push(d);
+                continue;
+            }
             let Some(func) = self.check_function(decl, Some(stage)) else { continue };
             self.check_stage_rules(&name, stage, &func);
             self.out.entry_points.push(EntryPoint { name, stage, func, locations: BTreeMap::new() });
