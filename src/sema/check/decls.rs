@@ -486,6 +486,8 @@ impl<'a, 'd> Checker<'a, 'd> {
                 }
                 Ok(UniformLayout { size: round(align, end), align, std_size: round(std_align, std_end), std_align })
             }
+            // A type already reported as wrong: nothing more to say.
+            Ty::Error => Ok(UniformLayout { size: 4, align: 4, std_size: 4, std_align: 4 }),
             _ => Err(format!("`{}` cannot be in a uniform block", self.show(ty))),
         }
     }
