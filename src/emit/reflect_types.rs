@@ -137,6 +137,12 @@ pub struct Member {
     /// Stride between columns for matrices.
     #[cfg_attr(feature = "deserialize", serde(default))]
     pub matrix_stride: Option<u32>,
+    /// The member's default contents, from `var @uniform x : T = value`:
+    /// its `size` bytes as little-endian 32-bit words (floats by their
+    /// IEEE-754 bits, padding zero), to copy to `offset` before the host
+    /// sets anything. Only members of uniform blocks have one.
+    #[cfg_attr(feature = "deserialize", serde(default))]
+    pub default: Option<Vec<u32>>,
 }
 
 /// The layout of a struct type in uniform blocks: the same on every target
@@ -237,6 +243,7 @@ serialize_struct!(Member {
     "size": size,
     "array_stride": array_stride?,
     "matrix_stride": matrix_stride?,
+    "default": default?,
 });
 
 serialize_struct!(StructLayout {

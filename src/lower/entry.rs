@@ -146,7 +146,7 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
     let mut point_coord_default: Vec<(sema::GlobalId, Span)> = Vec::new();
     for (&gid, &use_span) in &ep.func.uses {
         let g = &p.globals[gid];
-        if matches!(g.kind, GlobalKind::Uniform | GlobalKind::Sampler { .. }) {
+        if matches!(g.kind, GlobalKind::Uniform { .. } | GlobalKind::Sampler { .. }) {
             iface.resources.extend(m.resource_of[gid].clone());
             continue;
         }

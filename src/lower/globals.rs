@@ -31,7 +31,7 @@ impl ModuleBuilder<'_> {
                 continue;
             }
             let slot = match &g.kind {
-                GlobalKind::Uniform => {
+                GlobalKind::Uniform { default } => {
                     let ty = self.ty(&g.ty);
                     let binding = next_binding;
                     next_binding += 1;
@@ -58,6 +58,7 @@ impl ModuleBuilder<'_> {
                             binding,
                             sampler_binding: None,
                             texture_unit: None,
+                            default: default.clone(),
                         });
                     }
                     GlobalSlot::Var(h)
@@ -115,6 +116,7 @@ impl ModuleBuilder<'_> {
                             binding: tb,
                             sampler_binding: Some(sb),
                             texture_unit: Some(*texture_unit + i),
+                            default: None,
                         });
                     }
                     GlobalSlot::Sampler { first, count: count.unwrap_or(1) }

@@ -47,6 +47,8 @@ pub struct Resource {
     pub sampler_binding: Option<u32>,
     /// GL texture unit of a sampler resource.
     pub texture_unit: Option<u32>,
+    /// The host's default value of a uniform (`var @uniform x : T = value`).
+    pub default: Option<crate::sema::ConstValue>,
 }
 
 #[derive(Clone, Debug)]

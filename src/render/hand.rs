@@ -112,6 +112,7 @@ pub fn reflection() -> Reflection {
                 size,
                 array_stride: None,
                 matrix_stride: (ty == "float4x4").then_some(16),
+                default: None,
             }],
         })
         .collect();

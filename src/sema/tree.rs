@@ -139,7 +139,10 @@ pub enum IoKind {
 
 #[derive(Clone, Debug)]
 pub enum GlobalKind {
-    Uniform,
+    /// A uniform value (or block, for a struct); `default`: the host's
+    /// default from `var @uniform x : T = value` (the manifest, the Rust
+    /// bindings and the runner use it).
+    Uniform { default: Option<ConstValue> },
     /// A sampler, or an array of `count` samplers (`ty` is `T[count]`) on
     /// consecutive texture units from `texture_unit`: its `@stage = N`, or
     /// the lowest units free in every program that uses it.

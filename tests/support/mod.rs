@@ -146,6 +146,7 @@ fn interface_of(m: &naga::Module, info: &naga::valid::ModuleInfo) -> Interface {
             binding,
             sampler_binding: None,
             texture_unit: None,
+            default: None,
         };
         if let ResourceKind::Sampler(_) = r.kind {
             let (sh, sg) = m
@@ -342,3 +343,16 @@ pub fn shadow_scene_with_texel_offsets() -> String {
     body.push_str("    return lit / 9.0\n}\n");
     format!("{}{body}{}", &scene[..start], &scene[end..])
 }
+
+/// `shaders/shadow.das` with two uniforms the scene does not set, whose
+/// defaults (`= 2.0`, `= float3(0.5)`) scale the colour back to what it
+/// was: the picture is the same only if every host uploads the defaults.
+pub fn shadow_scene_with_uniform_defaults() -> String {
+    let scene = include_str!("../../shaders/shadow.das");
+    let out = "    f_FragColor = float4(color, 1.0)\n}";
+    assert!(scene.contains(out), "shaders/shadow.das changed: update shadow_scene_with_uniform_defaults");
+    let scene = scene.replace(out, "    f_FragColor = float4(color * u_gain * u_balance, 1.0)\n}");
+    let first_uniform = scene.find("var @uniform").expect("a uniform");
+    format!("{}var @uniform u_gain : float = 2.0\nvar @uniform u_balance : float3 = float3(0.5)\n{}", &scene[..first_uniform], &scene[first_uniform..])
+}
+

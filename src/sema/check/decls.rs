@@ -252,16 +252,23 @@ impl<'a, 'd> Checker<'a, 'd> {
                     }
                 }
             }
-            if let Some(init) = &g.init {
-                let d = Diagnostic::error("shader globals cannot have an initialiser", init.span)
-                    .with_note("uniforms are set by the host; use a top-level `let` for a constant");
+            // A uniform's initial value is the host's default; other
+            // shader globals have none.
+            if let (Some(init), Some(("uniform", _))) = (&g.init, class) {
+                if ty.is_sampler_like() {
+                    let d = Diagnostic::error("samplers cannot have an initial value", init.span).with_note("the host binds a texture to each sampler");
+                    self.diags.push(d);
+                }
+            } else if let Some(init) = &g.init {
+                let d = Diagnostic::error("only `@uniform` values can have an initial value", init.span)
+                    .with_note("a uniform's initial value is the default the host sets; inputs and outputs have none");
                 self.diags.push(d);
             }
             let Some((class, class_span)) = class else {
                 if refused {
                     // Declared, with no type, so that its uses report nothing more.
                     self.globals.insert(&g.name.name, self.out.globals.len());
-                    self.out.globals.push(Global { name: g.name.name.as_str().to_string(), ty: Ty::Error, kind: GlobalKind::Uniform, span: g.name.span });
+                    self.out.globals.push(Global { name: g.name.name.as_str().to_string(), ty: Ty::Error, kind: GlobalKind::Uniform { default: None }, span: g.name.span });
                 } else {
                     let d = Diagnostic::error(format!("`{}` has no shader qualifier", g.name.name), g.name.span);
                     self.diags.push(d);
@@ -310,7 +317,8 @@ impl<'a, 'd> Checker<'a, 'd> {
                             self.diags.push(Diagnostic::error(msg, gty.span));
                         }
                     }
-                    GlobalKind::Uniform
+                    let default = g.init.as_ref().and_then(|e| self.uniform_default(&g.name.name, &ty, e));
+                    GlobalKind::Uniform { default }
                 }
                 (c, _) => {
                     let io = match c {
@@ -399,6 +407,23 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
         self.globals.insert(name, self.out.globals.len());
         self.out.globals.push(Global { name: name.to_string(), ty, kind: GlobalKind::Private { init: init.map(|v| v.0) }, span: g.name.span });
+    }
+
+    /// The default value of uniform `name` of type `ty`: a compile-time
+    /// constant of that type (reported otherwise).
+    fn uniform_default(&mut self, name: &str, ty: &Ty, init: &'a ast::Expr) -> Option<ConstValue> {
+        match self.fold(init, None, init.span)? {
+            Ok((v, vt)) if vt == *ty || ty.is_error() => Some(v),
+            Ok((_, vt)) => {
+                let d = Diagnostic::error(format!("uniform `{name}` is `{}` but its default value is `{}`", self.show(ty), self.show(&vt)), init.span);
+                self.diags.push(d);
+                None
+            }
+            Err(d) => {
+                self.diags.push(d.with_note(format!("the default value of uniform `{name}` must be a compile-time constant: the host sets it")));
+                None
+            }
+        }
     }
 
     /// Declares `g` with no type after an error: its uses report nothing more.

@@ -447,7 +447,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             ExprKind::Global(id) => {
                 let g = &self.out.globals[*id];
                 let why = match g.kind {
-                    GlobalKind::Uniform | GlobalKind::Sampler { .. } => Some("it is a uniform, set by the host"),
+                    GlobalKind::Uniform { .. } | GlobalKind::Sampler { .. } => Some("it is a uniform, set by the host"),
                     GlobalKind::Io { kind: IoKind::In, .. } => Some("it is an `@in` input"),
                     GlobalKind::Builtin(b) if !b.is_output() => Some("it is a builtin input"),
                     _ => None,
