@@ -100,6 +100,7 @@ fn snippets() -> BTreeMap<&'static str, String> {
     add("bare-stage", frag("var @uniform @stage t : sampler2D", "    f_color = texture(t, float2(0.5))"));
     add("module-variables", frag("var angle = 0.25\nvar {\n    count : int\n}\ndef step() {\n    count++\n    angle *= 2.0\n}", "    step()\n    f_color = float4(angle, float(count), 0.0, 1.0)"));
     add("let-blocks", frag("let {\n    A = 1.0; B = A * 2.0\n    C : float3 = float3(B)\n}", "    f_color = float4(C, A)"));
+    add("uniform-defaults", frag("struct G {\n    lift : float3\n    gamma : float\n}\nvar @uniform u_k : float = 0.5\nvar @uniform u_g : G = G(float3(0.1), 2.2)", "    f_color = float4(u_g.lift * u_k, u_g.gamma)"));
     add("push-constant", frag("var @push_constant pc_tint : float4", "    f_color = pc_tint"));
     add("compute-program", "var @out f_color : float4\n[compute_program(local_size_x = 8)]\ndef cs {\n    let x = 1\n}\n[fragment_program]\ndef fs {\n    f_color = float4(1.0)\n}\n".to_string());
     add("ssbo", frag("struct P {\n    v : float4\n}\nvar @ssbo buf : P", "    f_color = buf.v"));
