@@ -163,6 +163,18 @@ pub struct Global {
     pub ty: Ty,
     pub kind: GlobalKind,
     pub span: Span,
+    /// Where a uniform or sampler is bound on WGSL/SPIR-V: its `@set = N`
+    /// (else group 0) and `@binding = N` (else the lowest free in the
+    /// group, in declaration order). A sampler takes two bindings (its
+    /// texture, then its sampler), an array of samplers two per element.
+    /// `None` for other globals and for resources no entry point uses.
+    pub bind: Option<Bind>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Bind {
+    pub group: u32,
+    pub binding: u32,
 }
 
 /// A compile-time value of a top-level `let`.

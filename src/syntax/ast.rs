@@ -176,6 +176,10 @@ pub enum QualifierKind {
     /// `@stage = N`: the texture unit of a sampler; bare `@stage` (`None`):
     /// the compiler assigns it, per program.
     Stage(Option<i64>),
+    /// `@set = N`: the bind group of a uniform or sampler on WGSL/SPIR-V.
+    Set(i64),
+    /// `@binding = N`: its binding in that group.
+    Binding(i64),
     /// Any other `@name [= value]`; semantic analysis reports it.
     Other(String),
 }

@@ -101,6 +101,7 @@ fn snippets() -> BTreeMap<&'static str, String> {
     add("module-variables", frag("var angle = 0.25\nvar {\n    count : int\n}\ndef step() {\n    count++\n    angle *= 2.0\n}", "    step()\n    f_color = float4(angle, float(count), 0.0, 1.0)"));
     add("let-blocks", frag("let {\n    A = 1.0; B = A * 2.0\n    C : float3 = float3(B)\n}", "    f_color = float4(C, A)"));
     add("uniform-defaults", frag("struct G {\n    lift : float3\n    gamma : float\n}\nvar @uniform u_k : float = 0.5\nvar @uniform u_g : G = G(float3(0.1), 2.2)", "    f_color = float4(u_g.lift * u_k, u_g.gamma)"));
+    add("bind-groups", frag("var @uniform @set = 1 @binding = 2 u_a : float4\nvar @uniform @set = 1 t : sampler2D\nvar @uniform u_b : float4", "    f_color = u_a + u_b + texture(t, float2(0.5))"));
     add("push-constant", frag("var @push_constant pc_tint : float4", "    f_color = pc_tint"));
     add("compute-program", "var @out f_color : float4\n[compute_program(local_size_x = 8)]\ndef cs {\n    let x = 1\n}\n[fragment_program]\ndef fs {\n    f_color = float4(1.0)\n}\n".to_string());
     add("ssbo", frag("struct P {\n    v : float4\n}\nvar @ssbo buf : P", "    f_color = buf.v"));
@@ -135,6 +136,9 @@ const NEEDLES: &[(&str, Target, &str, &str, bool)] = &[
     ("programs-per-file", Target::Glsl330, "quad_fs.330.frag", "layout(location = 0) out", true),
     ("programs-per-file", Target::Glsl330, "other_fs.330.frag", "layout(location = 0) out", true),
     ("module-variables", Target::Glsl330, ".330.frag", "float angle = 0.25;", true),
+    ("bind-groups", Target::Wgsl, ".wgsl", "@group(1) @binding(2) ", true),
+    ("bind-groups", Target::Wgsl, ".wgsl", "@group(1) @binding(0) ", true),
+    ("bind-groups", Target::Wgsl, ".wgsl", "@group(0) @binding(0) ", true),
     ("module-variables", Target::Wgsl, ".wgsl", "var<private> count: i32 = i32();", true),
 ];
 

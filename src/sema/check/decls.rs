@@ -210,6 +210,8 @@ impl<'a, 'd> Checker<'a, 'd> {
             let mut stage: Option<(Option<i64>, Span)> = None;
             // An annotation already reported: no second error for the global.
             let mut refused = false;
+            // `@set = N`, `@binding = N`.
+            let mut bind: (Option<(i64, Span)>, Option<(i64, Span)>) = (None, None);
             for q in &g.qualifiers {
                 let c = match &q.kind {
                     ast::QualifierKind::Uniform => Some("uniform"),
@@ -224,6 +226,14 @@ impl<'a, 'd> Checker<'a, 'd> {
                     }
                     ast::QualifierKind::Stage(s) => {
                         stage = Some((*s, q.span));
+                        None
+                    }
+                    ast::QualifierKind::Set(n) => {
+                        bind.0 = Some((*n, q.span));
+                        None
+                    }
+                    ast::QualifierKind::Binding(n) => {
+                        bind.1 = Some((*n, q.span));
                         None
                     }
                     // daslang binds `@push_constant` like `@uniform` on GL:
@@ -268,7 +278,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                 if refused {
                     // Declared, with no type, so that its uses report nothing more.
                     self.globals.insert(&g.name.name, self.out.globals.len());
-                    self.out.globals.push(Global { name: g.name.name.as_str().to_string(), ty: Ty::Error, kind: GlobalKind::Uniform { default: None }, span: g.name.span });
+                    self.out.globals.push(Global { name: g.name.name.as_str().to_string(), ty: Ty::Error, kind: GlobalKind::Uniform { default: None }, span: g.name.span, bind: None });
                 } else {
                     let d = Diagnostic::error(format!("`{}` has no shader qualifier", g.name.name), g.name.span);
                     self.diags.push(d);
@@ -349,8 +359,33 @@ impl<'a, 'd> Checker<'a, 'd> {
                     GlobalKind::Io { kind: io, location: loc }
                 }
             };
+            self.written_bind(&kind, bind);
             self.globals.insert(&g.name.name, self.out.globals.len());
-            self.out.globals.push(Global { name: g.name.name.as_str().to_string(), ty, kind, span: g.name.span });
+            self.out.globals.push(Global { name: g.name.name.as_str().to_string(), ty, kind, span: g.name.span, bind: None });
+        }
+    }
+
+    /// Records (range-checked) the `@set`/`@binding` written on the global
+    /// about to be declared; only uniforms and samplers take them.
+    fn written_bind(&mut self, kind: &GlobalKind, (set, binding): (Option<(i64, Span)>, Option<(i64, Span)>)) {
+        let resource = matches!(kind, GlobalKind::Uniform { .. } | GlobalKind::Sampler { .. });
+        let mut checked = |q: Option<(i64, Span)>, what: &str, limit: i64| -> Option<(u32, Span)> {
+            let (n, span) = q?;
+            if !resource {
+                self.diags.push(Diagnostic::error(format!("`@{what}` applies only to uniforms and samplers"), span));
+                return None;
+            }
+            if !(0..limit).contains(&n) {
+                self.diags.push(Diagnostic::error(format!("`@{what} = {n}` is out of range (0..{limit})"), span));
+                return None;
+            }
+            Some((n as u32, span))
+        };
+        // wgpu's defaults: 4 bind groups, 1000 bindings per group.
+        let set = checked(set, "set", 4);
+        let binding = checked(binding, "binding", 1000);
+        if set.is_some() || binding.is_some() {
+            self.bind_written.insert(self.out.globals.len(), (set, binding));
         }
     }
 
@@ -406,7 +441,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             return self.declare_failed(g);
         }
         self.globals.insert(name, self.out.globals.len());
-        self.out.globals.push(Global { name: name.to_string(), ty, kind: GlobalKind::Private { init: init.map(|v| v.0) }, span: g.name.span });
+        self.out.globals.push(Global { name: name.to_string(), ty, kind: GlobalKind::Private { init: init.map(|v| v.0) }, span: g.name.span, bind: None });
     }
 
     /// The default value of uniform `name` of type `ty`: a compile-time
@@ -429,7 +464,7 @@ impl<'a, 'd> Checker<'a, 'd> {
     /// Declares `g` with no type after an error: its uses report nothing more.
     fn declare_failed(&mut self, g: &'a ast::GlobalVar) {
         self.globals.insert(&g.name.name, self.out.globals.len());
-        self.out.globals.push(Global { name: g.name.name.as_str().to_string(), ty: Ty::Error, kind: GlobalKind::Private { init: None }, span: g.name.span });
+        self.out.globals.push(Global { name: g.name.name.as_str().to_string(), ty: Ty::Error, kind: GlobalKind::Private { init: None }, span: g.name.span, bind: None });
     }
 
     /// Why a type cannot be a uniform block, if it cannot.

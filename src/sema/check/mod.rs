@@ -128,6 +128,8 @@ struct Checker<'a, 'd> {
     /// `@stage = N` of each sampler that has one (for clash diagnostics).
     location_spans: FxHashMap<GlobalId, Span>,
     unit_spans: FxHashMap<GlobalId, Span>,
+    /// The `@set = N` and `@binding = N` written on a resource.
+    bind_written: FxHashMap<GlobalId, (Option<(u32, Span)>, Option<(u32, Span)>)>,
     /// Depth at which the next helper function checked on first use starts.
     call_depth: usize,
     spare_scopes: Vec<Scopes<'a>>,
@@ -175,6 +177,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             builtin_vars: FxHashMap::default(),
             location_spans: FxHashMap::default(),
             unit_spans: FxHashMap::default(),
+            bind_written: FxHashMap::default(),
             call_depth: 0,
             spare_scopes: Vec::new(),
         }

@@ -81,7 +81,60 @@ impl<'a, 'd> Checker<'a, 'd> {
         let group: Vec<usize> = (0..n).map(|e| root(&mut parent, e)).collect();
         self.number_locations(&group);
         self.number_texture_units(&links);
+        self.assign_bindings();
         self.out.links = links;
+    }
+
+    /// The WGSL/SPIR-V group and binding of every uniform and sampler an
+    /// entry point uses (see `Global::bind`): the ones written first, then
+    /// the others at the lowest free bindings of their group, in
+    /// declaration order. The GPU module holds every entry point, so
+    /// bindings are unique across the file.
+    fn assign_bindings(&mut self) {
+        let used: std::collections::BTreeSet<GlobalId> = self.out.entry_points.iter().flat_map(|ep| ep.func.uses.keys().copied()).collect();
+        let slots = |g: &Global| match g.kind {
+            GlobalKind::Uniform { .. } => Some(1u32),
+            GlobalKind::Sampler { count, .. } => Some(2 * count.unwrap_or(1)),
+            _ => None,
+        };
+        // (group, binding) -> the resource holding it.
+        let mut taken: BTreeMap<(u32, u32), GlobalId> = BTreeMap::new();
+        let mut pending = Vec::new();
+        for &g in &used {
+            let Some(n) = slots(&self.out.globals[g]) else { continue };
+            let (set, binding) = self.bind_written.get(&g).copied().unwrap_or((None, None));
+            let group = set.map_or(0, |s| s.0);
+            let Some((first, span)) = binding else {
+                pending.push((g, group, n));
+                continue;
+            };
+            if let Some((at, prev)) = (first..first + n).find_map(|b| taken.get(&(group, b)).map(|&p| (b, p))) {
+                let (a, b) = (&self.out.globals[prev].name, &self.out.globals[g].name);
+                let mut d = Diagnostic::error(format!("`{a}` and `{b}` are both bound in group {group} at binding {at}"), span)
+                    .with_label(format!("`{b}` takes binding {first}{}", if n > 1 { format!("..{}", first + n - 1) } else { String::new() }));
+                if let Some(Some((_, p))) = self.bind_written.get(&prev).map(|w| w.1) {
+                    d = d.with_secondary(p, format!("`{a}` is bound here"));
+                }
+                let d = d.with_note("a sampler takes two bindings (its texture, then its sampler), an array of N samplers 2N");
+                self.diags.push(d);
+                continue;
+            }
+            for b in first..first + n {
+                taken.insert((group, b), g);
+            }
+            self.out.globals[g].bind = Some(Bind { group, binding: first });
+        }
+        for (g, group, n) in pending {
+            let free = |b: u32| (b..b + n).all(|k| !taken.contains_key(&(group, k)));
+            let Some(first) = (0..1000u32.saturating_sub(n - 1)).find(|&b| free(b)) else {
+                self.diags.push(Diagnostic::error(format!("no {n} free bindings left in group {group} (at most 1000)"), self.out.globals[g].span));
+                continue;
+            };
+            for b in first..first + n {
+                taken.insert((group, b), g);
+            }
+            self.out.globals[g].bind = Some(Bind { group, binding: first });
+        }
     }
 
     /// Where a scope's globals live, for diagnostics.

@@ -173,7 +173,7 @@ impl<'m> Parser<'_, 'm> {
             self.bump();
             let v = self.peek();
             if v.kind != TokKind::Int {
-                if matches!(name, "location" | "stage") {
+                if matches!(name, "location" | "stage" | "set" | "binding") {
                     let msg = format!("expected an integer after `@{name} =`, found {}", self.describe(&v));
                     self.err(v, msg, "expected an integer");
                     return Err(());
@@ -202,6 +202,15 @@ impl<'m> Parser<'_, 'm> {
             "inout" => QualifierKind::InOut,
             "location" => QualifierKind::Location(value),
             "stage" => QualifierKind::Stage(value),
+            "set" | "binding" => match value {
+                Some(v) if name == "set" => QualifierKind::Set(v),
+                Some(v) => QualifierKind::Binding(v),
+                None => {
+                    let msg = format!("`@{name}` needs a number: `@{name} = N`");
+                    self.err(Token::new(TokKind::Ident, span), msg, "no value");
+                    return Err(());
+                }
+            },
             other => QualifierKind::Other(other.to_string()),
         };
         Ok(Qualifier { kind, span })
