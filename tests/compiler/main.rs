@@ -30,6 +30,8 @@ mod features;
 mod golden;
 mod language_f;
 mod limits;
+#[cfg(feature = "deserialize")]
+mod programs;
 mod proptest_programs;
 #[cfg(feature = "cli")]
 mod robustness;

@@ -7,13 +7,16 @@
 //!
 //! The [`Checker`] is defined here; its methods are split by what they check:
 //! [`decls`] (structs, globals, types, constants), [`stmts`] (functions,
-//! statements, places) and [`exprs`] (expressions, calls, operators).
+//! statements, places), [`exprs`] (expressions, calls, operators) and
+//! [`programs`] (which entry points form a program; locations and texture
+//! units numbered and checked per program).
 
 mod calls;
 mod decls;
 mod enums;
 mod exprs;
 mod loops;
+mod programs;
 mod stmts;
 
 use std::collections::hash_map::Entry;
@@ -33,6 +36,7 @@ pub fn check(program: &ast::Program, diags: &mut Diagnostics) -> Option<Program>
     let mut c = Checker::new(program, diags);
     c.declare();
     c.check_entry_points();
+    c.link_programs();
     if c.diags.has_errors() {
         None
     } else {
@@ -193,6 +197,12 @@ struct Checker<'a, 'd> {
     failed_inits: FxHashSet<(StructId, usize)>,
     entry_decls: Vec<(&'a ast::FunctionDecl, naga::ShaderStage)>,
     builtin_vars: FxHashMap<BuiltinVar, GlobalId>,
+    /// The `@location = N` qualifier of each global that has one, and the
+    /// `@stage = N` of each sampler that has one (for clash diagnostics).
+    location_spans: FxHashMap<GlobalId, Span>,
+    unit_spans: FxHashMap<GlobalId, Span>,
+    /// The `@set = N` and `@binding = N` written on a resource.
+    bind_written: FxHashMap<GlobalId, (Option<(u32, Span)>, Option<(u32, Span)>)>,
     /// Depth at which the next helper function checked on first use starts.
     call_depth: usize,
     spare_scopes: Vec<Scopes<'a>>,
@@ -202,6 +212,7 @@ fn is_entry(f: &ast::FunctionDecl) -> Option<naga::ShaderStage> {
     f.annotations.iter().find_map(|a| match a.name.name.as_str() {
         "vertex_program" => Some(naga::ShaderStage::Vertex),
         "fragment_program" => Some(naga::ShaderStage::Fragment),
+        "compute_program" => Some(naga::ShaderStage::Compute),
         _ => None,
     })
 }
@@ -243,6 +254,9 @@ impl<'a, 'd> Checker<'a, 'd> {
             failed_inits: FxHashSet::default(),
             entry_decls: Vec::new(),
             builtin_vars: FxHashMap::default(),
+            location_spans: FxHashMap::default(),
+            unit_spans: FxHashMap::default(),
+            bind_written: FxHashMap::default(),
             call_depth: 0,
             spare_scopes: Vec::new(),
         }
