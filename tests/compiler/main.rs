@@ -37,4 +37,6 @@ mod proptest_programs;
 mod robustness;
 mod syntax;
 #[cfg(feature = "deserialize")]
+mod tutorials;
+#[cfg(feature = "deserialize")]
 mod validate;
