@@ -261,7 +261,7 @@ pub fn binary(op: BinaryOp, a: &ConstValue, ta: &Ty, b: &ConstValue, tb: &Ty) ->
     use BinaryOp::*;
     let show = |t: &Ty| super::types::TyDisplay { ty: t, struct_names: &[] }.to_string();
     let mismatch = || format!("type mismatch in constant: `{}` and `{}` operands", show(ta), show(tb));
-    if matches!(op, Shl | Shr) && ta.scalar().is_some_and(|s| s.is_integer()) && tb.scalar().is_some_and(|s| s.is_integer()) && ta.width() == tb.width() {
+    if matches!(op, Shl | Shr) && ta.scalar().is_some_and(|s| s.is_integer()) && tb.scalar().is_some_and(|s| s.is_integer()) && (ta.width() == tb.width() || tb.width() == Some(1)) {
         // The amount may be int or uint; the result has the left operand's type.
         let amounts: Vec<i64> = scalars(b).iter().map(|c| match c {
             ConstValue::Int(i) => *i,

@@ -584,7 +584,10 @@ pub(super) struct ConstEnvAdapter<'c, 'a, 'd> {
 
 impl ConstEnv for ConstEnvAdapter<'_, '_, '_> {
     fn lookup(&self, name: &str) -> Option<(ConstValue, Ty)> {
-        let &id = self.c.consts.get(name)?;
+        let Some(&id) = self.c.consts.get(name) else {
+            // A program's own constant hides a builtin one (`PI`).
+            return if self.c.const_decls.contains_key(name) { None } else { builtins::constant(name) };
+        };
         let k = &self.c.out.consts[id];
         Some((k.value.clone(), k.ty.clone()))
     }

@@ -67,7 +67,8 @@ impl<'a, 'd> Checker<'a, 'd> {
                     return err_expr(span);
                 }
                 let ok = match op {
-                    UnaryOp::Neg | UnaryOp::Plus => matches!(x.ty.scalar(), Some(Scalar::Float | Scalar::Int)) && !matches!(x.ty, Ty::Matrix(..)),
+                    // `-m` of a matrix is daslang's too (its math module).
+                    UnaryOp::Neg | UnaryOp::Plus => matches!(x.ty.scalar(), Some(Scalar::Float | Scalar::Int)),
                     UnaryOp::Not => x.ty == BOOL,
                     UnaryOp::BitNot => matches!(x.ty.scalar(), Some(Scalar::Int | Scalar::Uint)),
                     _ => {
@@ -255,6 +256,9 @@ impl<'a, 'd> Checker<'a, 'd> {
             self.diags.push(Diagnostic::error(format!("`{}` is a function; call it with `{}(...)`", id.name, id.name), span));
             return err_expr(span);
         }
+        if let Some(e) = self.builtin_constant(id) {
+            return e;
+        }
         let mut d = Diagnostic::error(format!("unknown name `{}`", id.name), span).with_label("not found in this scope");
         let mut candidates: Vec<&str> = cx.scopes.visible.keys().copied().collect();
         candidates.extend(self.globals.keys().copied());
@@ -334,6 +338,12 @@ impl<'a, 'd> Checker<'a, 'd> {
             self.diags.push(Diagnostic::error("`discard()` is a statement and has no value", span));
             return err_expr(span);
         }
+        if name == "sincos" && !self.funcs.contains_key(name) {
+            let d = Diagnostic::error("`sincos(x, s, c)` is a statement and has no value", span)
+                .with_note("help: it sets `s = sin(x)` and `c = cos(x)`; call it on a line of its own");
+            self.diags.push(d);
+            return err_expr(span);
+        }
         if self.funcs.contains_key(name) {
             self.call_depth = cx.depth + CALL_DEPTH;
             let Some(fid) = self.function_id(name, callee.span) else { return err_expr(span) };
@@ -384,6 +394,9 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
         if let Some((_, b)) = builtins::TEXTURE_FUNCTIONS.iter().find(|(n, _)| *n == name) {
             return self.check_texture_call(cx, *b, name, xs, span);
+        }
+        if let Some(&(_, b, kind, now)) = builtins::LEGACY_TEXTURE_FUNCTIONS.iter().find(|(n, ..)| *n == name) {
+            return self.check_legacy_texture_call(cx, callee, (b, kind, now), xs, span);
         }
         match builtins::resolve(name, xs.iter().map(|x| &x.ty)) {
             Ok(Some((b, ret))) => {
@@ -472,10 +485,12 @@ impl<'a, 'd> Checker<'a, 'd> {
                 let cols_ok = xs.len() == c && xs.iter().all(|x| x.ty == Ty::Vector(Scalar::Float, r as u8));
                 let scalars_ok = xs.len() == c * r && xs.iter().all(|x| x.ty == FLOAT);
                 let diag_ok = xs.len() == 1 && xs[0].ty == FLOAT;
-                let copy_ok = xs.len() == 1 && xs[0].ty == ty;
-                if !(cols_ok || scalars_ok || diag_ok || copy_ok) {
+                // Another matrix, any size: its upper-left part, the rest of
+                // the identity (GLSL's rule; `float3x3(m4)`).
+                let matrix_ok = xs.len() == 1 && matches!(xs[0].ty, Ty::Matrix(..));
+                if !(cols_ok || scalars_ok || diag_ok || matrix_ok) {
                     let name = self.show(&ty);
-                    return fail(self, format!("wrong arguments: `{name}` is built from {c} float{r} columns, {} floats, or one float (a diagonal)", c * r));
+                    return fail(self, format!("wrong arguments: `{name}` is built from {c} float{r} columns, {} floats, one float (a diagonal) or another matrix", c * r));
                 }
             }
             Ty::Struct(sid) => {
@@ -685,7 +700,8 @@ impl<'a, 'd> Checker<'a, 'd> {
             BitAnd | BitOr | BitXor | Shl | Shr => match (l.scalar(), r.scalar()) {
                 (Some(a), Some(b)) if a.is_integer() && b.is_integer() && !matches!(l, Ty::Matrix(..)) => {
                     let shift = matches!(op, Shl | Shr);
-                    if (shift && l.width() == r.width()) || (!shift && (l == r || (a == b && (l.width() == Some(1) || r.width() == Some(1))))) {
+                    // A shift amount is one per component or one for all (`v << 2`).
+                    if (shift && (l.width() == r.width() || r.width() == Some(1))) || (!shift && (l == r || (a == b && (l.width() == Some(1) || r.width() == Some(1))))) {
                         Ok(if l.width() == Some(1) && !shift { r.clone() } else { l.clone() })
                     } else {
                         Err(String::new())

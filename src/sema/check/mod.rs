@@ -7,10 +7,12 @@
 //!
 //! The [`Checker`] is defined here; its methods are split by what they check:
 //! [`decls`] (structs, globals, types, constants), [`stmts`] (functions,
-//! statements, places) and [`exprs`] (expressions, calls, operators).
+//! statements, places), [`exprs`] (expressions, calls, operators) and
+//! [`math`] (daslang's math module: its constants, `sincos`).
 
 mod decls;
 mod exprs;
+mod math;
 mod stmts;
 
 use std::collections::hash_map::Entry;
