@@ -53,7 +53,7 @@ fn collect_names_depth<'e>(e: &'e Expr, out: &mut Vec<&'e str>, depth: usize) {
 
 fn not_const(e: &Expr, what: &str) -> Diagnostic {
     Diagnostic::error(format!("{what} is not a constant expression"), e.span)
-        .with_note("top-level `let` values and array lengths must be computable at compile time: literals, other constants, arithmetic and constructors")
+        .with_note("top-level `let` values and array lengths must be computable at compile time: literals, other constants, arithmetic, constructors and builtin functions")
 }
 
 pub fn eval_const(e: &Expr, env: &dyn ConstEnv) -> Result<(ConstValue, Ty), Diagnostic> {
@@ -114,6 +114,10 @@ fn eval(e: &Expr, env: &dyn ConstEnv, depth: usize) -> Result<(ConstValue, Ty), 
                     return Err(Diagnostic::error(format!("wrong arguments for `{}(...)` in a constant", callee.name), e.span));
                 }
                 return Ok((ConstValue::Composite(vals.into_iter().map(|v| v.0).collect()), ty));
+            }
+            // Builtin functions: `sema::fold`.
+            if let Some(folded) = super::fold::call(&callee.name, &vals) {
+                return folded.map_err(|msg| Diagnostic::error(msg, e.span).with_note("this call is evaluated at compile time"));
             }
             Err(not_const(e, &format!("a call of `{}`", callee.name)))
         }
@@ -207,6 +211,9 @@ fn construct(ty: &Ty, vals: Vec<(ConstValue, Ty)>) -> Option<ConstValue> {
             comps.iter().map(|c| convert(c, s)).collect::<Option<Vec<_>>>().map(ConstValue::Composite)
         }
         Ty::Matrix(c, r) => {
+            if let [(m, Ty::Matrix(..))] = vals.as_slice() {
+                return Some(super::fold::matrix_from_matrix(m, c, r));
+            }
             let (c, r) = (c as usize, r as usize);
             let flat: Vec<ConstValue> = if flat.len() == 1 {
                 (0..c * r).map(|i| if i / r == i % r { flat[0].clone() } else { ConstValue::Float(0.0) }).collect()

@@ -8,6 +8,7 @@
 pub mod builtins;
 mod check;
 pub mod consts;
+pub(crate) mod fold;
 pub mod limits;
 pub mod tree;
 pub mod types;

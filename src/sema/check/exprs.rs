@@ -225,6 +225,11 @@ impl<'a, 'd> Checker<'a, 'd> {
             ExprKind::Uint(v) => Some(ConstValue::Uint(*v)),
             ExprKind::Float(v) => Some(ConstValue::Float(*v as f32 as f64)),
             ExprKind::Const(c) if matches!(self.out.consts[*c].ty, Ty::Scalar(_)) => Some(self.out.consts[*c].value.clone()),
+            ExprKind::Unary(UnaryOp::Neg, x) => match self.literal_value(x)? {
+                ConstValue::Float(v) => Some(ConstValue::Float(-v)),
+                ConstValue::Int(v) => (v as i32).checked_neg().map(|v| ConstValue::Int(v as i64)),
+                _ => None,
+            },
             _ => None,
         }
     }
@@ -406,6 +411,17 @@ impl<'a, 'd> Checker<'a, 'd> {
                 if matches!(b, Builtin::Math(naga::MathFunction::Determinant) | Builtin::Inverse) && !matches!(xs[0].ty, Ty::Matrix(c, r) if c == r) {
                     self.diags.push(Diagnostic::error(format!("`{name}` needs a square matrix"), span));
                     return err_expr(span);
+                }
+                // With constant arguments, the WGSL output is a constant
+                // expression, which WGSL evaluates at shader creation and
+                // rejects when undefined or not finite: report it here.
+                if !xs.is_empty() && !matches!(b, Builtin::Derivative(..)) {
+                    if let Some(consts) = xs.iter().map(|x| self.literal_value(x).map(|v| (v, x.ty.clone()))).collect::<Option<Vec<_>>>() {
+                        if let Some(Err(msg)) = crate::sema::fold::call(name, &consts) {
+                            self.diags.push(Diagnostic::error(msg, span).with_note("its arguments are constants, so this call is evaluated at compile time"));
+                            return err_expr(span);
+                        }
+                    }
                 }
                 Expr { kind: ExprKind::Builtin(b, xs), ty: ret, span }
             }
