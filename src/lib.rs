@@ -219,7 +219,7 @@ fn run(mut sources: SourceMap, root: source::FileId, opts: &Options) -> Compilat
         allow_outside_includes: opts.allow_outside_includes,
     };
     let program = syntax::parse(&mut sources, root, &parse_opts, &mut diags);
-    let checked = if diags.has_errors() { None } else { sema::check(&program, &mut diags) };
+    let checked = if diags.has_errors() { None } else { sema::check_for_targets(&program, &opts.targets(), &mut diags) };
     // Each tree is dropped as soon as the next stage has been built from
     // it, so the next stage's allocations reuse its memory, still in cache.
     drop(program);

@@ -31,7 +31,8 @@ impl FnBuilder<'_, '_> {
             }
             Builtin::Saturate => self.math(Mf::Saturate, &hs, s),
             Builtin::Rcp => {
-                let one = self.literal(naga::Literal::F32(1.0), s);
+                let one = self.m.float_literal(1.0, args[0].ty.scalar().unwrap_or(Scalar::Float));
+                let one = self.literal(one, s);
                 let one = self.splat_to(one, &Ty::Scalar(Scalar::Float), ret, s);
                 self.append(E::Binary { op: naga::BinaryOperator::Divide, left: one, right: hs[0] }, s)
             }
@@ -72,20 +73,20 @@ impl FnBuilder<'_, '_> {
                 if b == Builtin::DistanceSq {
                     sq
                 } else {
-                    self.reciprocal(sq, s)
+                    self.reciprocal(sq, ret, s)
                 }
             }
             Builtin::InvLength => {
                 let l = self.math(Mf::Length, &hs, s);
-                self.reciprocal(l, s)
+                self.reciprocal(l, ret, s)
             }
             Builtin::InvLengthSq => {
                 let sq = self.length_sq(hs[0], &args[0].ty, s);
-                self.reciprocal(sq, s)
+                self.reciprocal(sq, ret, s)
             }
             Builtin::InvDistance => {
                 let d = self.math(Mf::Distance, &hs, s);
-                self.reciprocal(d, s)
+                self.reciprocal(d, ret, s)
             }
             Builtin::ToInt(fun) => {
                 let r = self.math(fun, &hs, s);
@@ -122,9 +123,10 @@ impl FnBuilder<'_, '_> {
         }
     }
 
-    /// `1.0 / x` of a float.
-    fn reciprocal(&mut self, x: Handle<E>, s: Span) -> Handle<E> {
-        let one = self.literal(naga::Literal::F32(1.0), s);
+    /// `1.0 / x` of a float scalar of type `ty` (`float` or `half`).
+    fn reciprocal(&mut self, x: Handle<E>, ty: &Ty, s: Span) -> Handle<E> {
+        let one = self.m.float_literal(1.0, ty.scalar().unwrap_or(Scalar::Float));
+        let one = self.literal(one, s);
         self.append(E::Binary { op: naga::BinaryOperator::Divide, left: one, right: x }, s)
     }
 

@@ -74,7 +74,10 @@ impl FnBuilder<'_, '_> {
             }
         }
         match &e.kind {
-            ExprKind::Float(v) => self.literal(naga::Literal::F32(*v as f32), s),
+            ExprKind::Float(v) => {
+                let l = self.m.float_literal(*v, e.ty.scalar().unwrap_or(Scalar::Float));
+                self.literal(l, s)
+            }
             ExprKind::Int(v) => self.literal(naga::Literal::I32(*v as i32), s),
             ExprKind::Uint(v) => self.literal(naga::Literal::U32(*v as u32), s),
             ExprKind::Bool(v) => self.literal(naga::Literal::Bool(*v), s),

@@ -3,6 +3,8 @@
 //! Signatures are written in a small pattern language so that one table
 //! both checks calls and prints the expected signatures in errors:
 //! - `G`: float or floatN (every `G` in one signature is the same type)
+//! - `X`: like `G`, or half or halfN; `x` is the scalar of that `X` (the
+//!   functions WGSL and SPIR-V also have for `f16`)
 //! - `N`: a numeric scalar or vector, any scalar type (all `N` alike); `S`
 //!   is the scalar of that `N`
 //! - `I`: int or intN / uint or uintN (all `I` alike)
@@ -135,56 +137,57 @@ struct Entry {
 }
 
 const UNARY_G: &[Sig] = sigs!["G" <- ["G"]];
-const BINARY_G: &[Sig] = sigs!["G" <- ["G", "G"]];
+const UNARY_X: &[Sig] = sigs!["X" <- ["X"]];
+const BINARY_X: &[Sig] = sigs!["X" <- ["X", "X"]];
 
 const TABLE: &[Entry] = &[
-    Entry { name: "sin", builtin: Builtin::Math(Mf::Sin), sigs: UNARY_G },
-    Entry { name: "cos", builtin: Builtin::Math(Mf::Cos), sigs: UNARY_G },
-    Entry { name: "tan", builtin: Builtin::Math(Mf::Tan), sigs: UNARY_G },
-    Entry { name: "asin", builtin: Builtin::Math(Mf::Asin), sigs: UNARY_G },
-    Entry { name: "acos", builtin: Builtin::Math(Mf::Acos), sigs: UNARY_G },
-    Entry { name: "atan", builtin: Builtin::Math(Mf::Atan), sigs: UNARY_G },
-    Entry { name: "atan2", builtin: Builtin::Math(Mf::Atan2), sigs: BINARY_G },
-    Entry { name: "sinh", builtin: Builtin::Math(Mf::Sinh), sigs: UNARY_G },
-    Entry { name: "cosh", builtin: Builtin::Math(Mf::Cosh), sigs: UNARY_G },
-    Entry { name: "tanh", builtin: Builtin::Math(Mf::Tanh), sigs: UNARY_G },
-    Entry { name: "radians", builtin: Builtin::Math(Mf::Radians), sigs: UNARY_G },
-    Entry { name: "degrees", builtin: Builtin::Math(Mf::Degrees), sigs: UNARY_G },
-    Entry { name: "exp", builtin: Builtin::Math(Mf::Exp), sigs: UNARY_G },
-    Entry { name: "exp2", builtin: Builtin::Math(Mf::Exp2), sigs: UNARY_G },
-    Entry { name: "log", builtin: Builtin::Math(Mf::Log), sigs: UNARY_G },
-    Entry { name: "log2", builtin: Builtin::Math(Mf::Log2), sigs: UNARY_G },
-    Entry { name: "sqrt", builtin: Builtin::Math(Mf::Sqrt), sigs: UNARY_G },
-    Entry { name: "inversesqrt", builtin: Builtin::Math(Mf::InverseSqrt), sigs: UNARY_G },
-    Entry { name: "rsqrt", builtin: Builtin::Math(Mf::InverseSqrt), sigs: UNARY_G },
-    Entry { name: "floor", builtin: Builtin::Math(Mf::Floor), sigs: UNARY_G },
-    Entry { name: "ceil", builtin: Builtin::Math(Mf::Ceil), sigs: UNARY_G },
-    Entry { name: "fract", builtin: Builtin::Math(Mf::Fract), sigs: UNARY_G },
-    Entry { name: "trunc", builtin: Builtin::Math(Mf::Trunc), sigs: UNARY_G },
-    Entry { name: "round", builtin: Builtin::Math(Mf::Round), sigs: UNARY_G },
-    Entry { name: "roundEven", builtin: Builtin::Math(Mf::Round), sigs: UNARY_G },
+    Entry { name: "sin", builtin: Builtin::Math(Mf::Sin), sigs: UNARY_X },
+    Entry { name: "cos", builtin: Builtin::Math(Mf::Cos), sigs: UNARY_X },
+    Entry { name: "tan", builtin: Builtin::Math(Mf::Tan), sigs: UNARY_X },
+    Entry { name: "asin", builtin: Builtin::Math(Mf::Asin), sigs: UNARY_X },
+    Entry { name: "acos", builtin: Builtin::Math(Mf::Acos), sigs: UNARY_X },
+    Entry { name: "atan", builtin: Builtin::Math(Mf::Atan), sigs: UNARY_X },
+    Entry { name: "atan2", builtin: Builtin::Math(Mf::Atan2), sigs: BINARY_X },
+    Entry { name: "sinh", builtin: Builtin::Math(Mf::Sinh), sigs: UNARY_X },
+    Entry { name: "cosh", builtin: Builtin::Math(Mf::Cosh), sigs: UNARY_X },
+    Entry { name: "tanh", builtin: Builtin::Math(Mf::Tanh), sigs: UNARY_X },
+    Entry { name: "radians", builtin: Builtin::Math(Mf::Radians), sigs: UNARY_X },
+    Entry { name: "degrees", builtin: Builtin::Math(Mf::Degrees), sigs: UNARY_X },
+    Entry { name: "exp", builtin: Builtin::Math(Mf::Exp), sigs: UNARY_X },
+    Entry { name: "exp2", builtin: Builtin::Math(Mf::Exp2), sigs: UNARY_X },
+    Entry { name: "log", builtin: Builtin::Math(Mf::Log), sigs: UNARY_X },
+    Entry { name: "log2", builtin: Builtin::Math(Mf::Log2), sigs: UNARY_X },
+    Entry { name: "sqrt", builtin: Builtin::Math(Mf::Sqrt), sigs: UNARY_X },
+    Entry { name: "inversesqrt", builtin: Builtin::Math(Mf::InverseSqrt), sigs: UNARY_X },
+    Entry { name: "rsqrt", builtin: Builtin::Math(Mf::InverseSqrt), sigs: UNARY_X },
+    Entry { name: "floor", builtin: Builtin::Math(Mf::Floor), sigs: UNARY_X },
+    Entry { name: "ceil", builtin: Builtin::Math(Mf::Ceil), sigs: UNARY_X },
+    Entry { name: "fract", builtin: Builtin::Math(Mf::Fract), sigs: UNARY_X },
+    Entry { name: "trunc", builtin: Builtin::Math(Mf::Trunc), sigs: UNARY_X },
+    Entry { name: "round", builtin: Builtin::Math(Mf::Round), sigs: UNARY_X },
+    Entry { name: "roundEven", builtin: Builtin::Math(Mf::Round), sigs: UNARY_X },
     Entry { name: "abs", builtin: Builtin::Math(Mf::Abs), sigs: sigs!["N" <- ["N"]] },
     Entry { name: "sign", builtin: Builtin::Math(Mf::Sign), sigs: sigs!["N" <- ["N"]] },
     Entry { name: "min", builtin: Builtin::Math(Mf::Min), sigs: sigs!["N" <- ["N", "N"]; "N" <- ["N", "S"]] },
     Entry { name: "max", builtin: Builtin::Math(Mf::Max), sigs: sigs!["N" <- ["N", "N"]; "N" <- ["N", "S"]] },
     Entry { name: "clamp", builtin: Builtin::Math(Mf::Clamp), sigs: sigs!["N" <- ["N", "N", "N"]; "N" <- ["N", "S", "S"]] },
-    Entry { name: "saturate", builtin: Builtin::Saturate, sigs: UNARY_G },
-    Entry { name: "rcp", builtin: Builtin::Rcp, sigs: UNARY_G },
-    Entry { name: "mix", builtin: Builtin::Math(Mf::Mix), sigs: sigs!["G" <- ["G", "G", "G"]; "G" <- ["G", "G", "f"]] },
-    Entry { name: "lerp", builtin: Builtin::Math(Mf::Mix), sigs: sigs!["G" <- ["G", "G", "G"]; "G" <- ["G", "G", "f"]] },
-    Entry { name: "step", builtin: Builtin::Math(Mf::Step), sigs: sigs!["G" <- ["G", "G"]; "G" <- ["f", "G"]] },
-    Entry { name: "smoothstep", builtin: Builtin::Math(Mf::SmoothStep), sigs: sigs!["G" <- ["G", "G", "G"]; "G" <- ["f", "f", "G"]] },
-    Entry { name: "pow", builtin: Builtin::Math(Mf::Pow), sigs: BINARY_G },
-    Entry { name: "mod", builtin: Builtin::Mod, sigs: sigs!["G" <- ["G", "G"]; "G" <- ["G", "f"]] },
-    Entry { name: "fma", builtin: Builtin::Math(Mf::Fma), sigs: sigs!["G" <- ["G", "G", "G"]] },
-    Entry { name: "length", builtin: Builtin::Math(Mf::Length), sigs: sigs!["f" <- ["G"]] },
-    Entry { name: "distance", builtin: Builtin::Math(Mf::Distance), sigs: sigs!["f" <- ["G", "G"]] },
-    Entry { name: "dot", builtin: Builtin::Math(Mf::Dot), sigs: sigs!["f" <- ["G", "G"]] },
+    Entry { name: "saturate", builtin: Builtin::Saturate, sigs: UNARY_X },
+    Entry { name: "rcp", builtin: Builtin::Rcp, sigs: UNARY_X },
+    Entry { name: "mix", builtin: Builtin::Math(Mf::Mix), sigs: sigs!["X" <- ["X", "X", "X"]; "X" <- ["X", "X", "x"]] },
+    Entry { name: "lerp", builtin: Builtin::Math(Mf::Mix), sigs: sigs!["X" <- ["X", "X", "X"]; "X" <- ["X", "X", "x"]] },
+    Entry { name: "step", builtin: Builtin::Math(Mf::Step), sigs: sigs!["X" <- ["X", "X"]; "X" <- ["x", "X"]] },
+    Entry { name: "smoothstep", builtin: Builtin::Math(Mf::SmoothStep), sigs: sigs!["X" <- ["X", "X", "X"]; "X" <- ["x", "x", "X"]] },
+    Entry { name: "pow", builtin: Builtin::Math(Mf::Pow), sigs: BINARY_X },
+    Entry { name: "mod", builtin: Builtin::Mod, sigs: sigs!["X" <- ["X", "X"]; "X" <- ["X", "x"]] },
+    Entry { name: "fma", builtin: Builtin::Math(Mf::Fma), sigs: sigs!["X" <- ["X", "X", "X"]] },
+    Entry { name: "length", builtin: Builtin::Math(Mf::Length), sigs: sigs!["x" <- ["X"]] },
+    Entry { name: "distance", builtin: Builtin::Math(Mf::Distance), sigs: sigs!["x" <- ["X", "X"]] },
+    Entry { name: "dot", builtin: Builtin::Math(Mf::Dot), sigs: sigs!["x" <- ["X", "X"]] },
     Entry { name: "cross", builtin: Builtin::Math(Mf::Cross), sigs: sigs!["f3" <- ["f3", "f3"]] },
-    Entry { name: "normalize", builtin: Builtin::Math(Mf::Normalize), sigs: UNARY_G },
-    Entry { name: "reflect", builtin: Builtin::Math(Mf::Reflect), sigs: BINARY_G },
-    Entry { name: "refract", builtin: Builtin::Math(Mf::Refract), sigs: sigs!["G" <- ["G", "G", "f"]] },
-    Entry { name: "faceforward", builtin: Builtin::Math(Mf::FaceForward), sigs: sigs!["G" <- ["G", "G", "G"]] },
+    Entry { name: "normalize", builtin: Builtin::Math(Mf::Normalize), sigs: UNARY_X },
+    Entry { name: "reflect", builtin: Builtin::Math(Mf::Reflect), sigs: BINARY_X },
+    Entry { name: "refract", builtin: Builtin::Math(Mf::Refract), sigs: sigs!["X" <- ["X", "X", "x"]] },
+    Entry { name: "faceforward", builtin: Builtin::Math(Mf::FaceForward), sigs: sigs!["X" <- ["X", "X", "X"]] },
     Entry { name: "transpose", builtin: Builtin::Math(Mf::Transpose), sigs: sigs!["M" <- ["M"]] },
     Entry { name: "determinant", builtin: Builtin::Math(Mf::Determinant), sigs: sigs!["f" <- ["M"]] },
     Entry { name: "inverse", builtin: Builtin::Inverse, sigs: sigs!["M" <- ["M"]] },
@@ -218,18 +221,18 @@ const TABLE: &[Entry] = &[
     },
     // daslang's math module: its names for GLSL's functions, and the
     // functions daslang's own GLSL generator writes a prelude for.
-    Entry { name: "fast_normalize", builtin: Builtin::Math(Mf::Normalize), sigs: UNARY_G },
-    Entry { name: "rcp_est", builtin: Builtin::Rcp, sigs: UNARY_G },
-    Entry { name: "rsqrt_est", builtin: Builtin::Math(Mf::InverseSqrt), sigs: UNARY_G },
-    Entry { name: "atan_est", builtin: Builtin::Math(Mf::Atan), sigs: UNARY_G },
-    Entry { name: "atan2_est", builtin: Builtin::Math(Mf::Atan2), sigs: BINARY_G },
+    Entry { name: "fast_normalize", builtin: Builtin::Math(Mf::Normalize), sigs: UNARY_X },
+    Entry { name: "rcp_est", builtin: Builtin::Rcp, sigs: UNARY_X },
+    Entry { name: "rsqrt_est", builtin: Builtin::Math(Mf::InverseSqrt), sigs: UNARY_X },
+    Entry { name: "atan_est", builtin: Builtin::Math(Mf::Atan), sigs: UNARY_X },
+    Entry { name: "atan2_est", builtin: Builtin::Math(Mf::Atan2), sigs: BINARY_X },
     Entry { name: "mad", builtin: Builtin::Mad, sigs: sigs!["N" <- ["N", "N", "N"]; "N" <- ["N", "S", "N"]] },
-    Entry { name: "length_sq", builtin: Builtin::LengthSq, sigs: sigs!["f" <- ["G"]] },
-    Entry { name: "distance_sq", builtin: Builtin::DistanceSq, sigs: sigs!["f" <- ["G", "G"]] },
-    Entry { name: "inv_length", builtin: Builtin::InvLength, sigs: sigs!["f" <- ["G"]] },
-    Entry { name: "inv_length_sq", builtin: Builtin::InvLengthSq, sigs: sigs!["f" <- ["G"]] },
-    Entry { name: "inv_distance", builtin: Builtin::InvDistance, sigs: sigs!["f" <- ["G", "G"]] },
-    Entry { name: "inv_distance_sq", builtin: Builtin::InvDistanceSq, sigs: sigs!["f" <- ["G", "G"]] },
+    Entry { name: "length_sq", builtin: Builtin::LengthSq, sigs: sigs!["x" <- ["X"]] },
+    Entry { name: "distance_sq", builtin: Builtin::DistanceSq, sigs: sigs!["x" <- ["X", "X"]] },
+    Entry { name: "inv_length", builtin: Builtin::InvLength, sigs: sigs!["x" <- ["X"]] },
+    Entry { name: "inv_length_sq", builtin: Builtin::InvLengthSq, sigs: sigs!["x" <- ["X"]] },
+    Entry { name: "inv_distance", builtin: Builtin::InvDistance, sigs: sigs!["x" <- ["X", "X"]] },
+    Entry { name: "inv_distance_sq", builtin: Builtin::InvDistanceSq, sigs: sigs!["x" <- ["X", "X"]] },
     Entry { name: "floori", builtin: Builtin::ToInt(Mf::Floor), sigs: sigs!["GI" <- ["G"]] },
     Entry { name: "ceili", builtin: Builtin::ToInt(Mf::Ceil), sigs: sigs!["GI" <- ["G"]] },
     Entry { name: "roundi", builtin: Builtin::ToInt(Mf::Round), sigs: sigs!["GI" <- ["G"]] },
@@ -395,6 +398,9 @@ pub fn resolve<'t>(name: &str, args: impl ExactSizeIterator<Item = &'t Ty> + Clo
 #[derive(Default)]
 struct Bind {
     g: Option<u8>,
+    /// `X`'s scalar (float or half) and width.
+    xs: Option<Scalar>,
+    xw: Option<u8>,
     n: Option<(Scalar, u8)>,
     v: Option<(Scalar, u8)>,
     b: Option<u8>,
@@ -415,6 +421,15 @@ fn match_one(pat: &str, ty: &Ty, bind: &mut Bind) -> bool {
         "G" => match *ty {
             Ty::Scalar(Scalar::Float) => unify(&mut bind.g, 1),
             Ty::Vector(Scalar::Float, n) => unify(&mut bind.g, n),
+            _ => false,
+        },
+        "X" => match *ty {
+            Ty::Scalar(s) if s.is_float() => unify(&mut bind.xs, s) && unify(&mut bind.xw, 1),
+            Ty::Vector(s, n) if s.is_float() => unify(&mut bind.xs, s) && unify(&mut bind.xw, n),
+            _ => false,
+        },
+        "x" => match *ty {
+            Ty::Scalar(s) if s.is_float() => unify(&mut bind.xs, s),
             _ => false,
         },
         "N" => match (ty.scalar(), ty.width()) {
@@ -475,6 +490,8 @@ fn match_sig<'t>(sig: &Sig, args: impl ExactSizeIterator<Item = &'t Ty> + Clone)
     }
     Some(match sig.ret {
         "G" => Ty::vec(Scalar::Float, bind.g?),
+        "X" => Ty::vec(bind.xs.unwrap_or(Scalar::Float), bind.xw?),
+        "x" => Ty::Scalar(bind.xs.unwrap_or(Scalar::Float)),
         "GI" => Ty::vec(Scalar::Int, bind.g?),
         "GU" => Ty::vec(Scalar::Uint, bind.g?),
         "N" => {
@@ -502,6 +519,8 @@ fn match_sig<'t>(sig: &Sig, args: impl ExactSizeIterator<Item = &'t Ty> + Clone)
 fn pattern_text(p: &str) -> &'static str {
     match p {
         "G" => "floatN",
+        "X" => "floatN",
+        "x" => "float",
         "GI" => "intN",
         "GU" => "uintN",
         "N" => "T",

@@ -76,6 +76,7 @@ fn eval(e: &Expr, env: &dyn ConstEnv, depth: usize) -> Result<(ConstValue, Ty), 
         }
         ExprKind::Float(v) => Ok((ConstValue::Float(*v as f32 as f64), FLOAT)),
         ExprKind::Bool(b) => Ok((ConstValue::Bool(*b), BOOL)),
+        ExprKind::Half(v) => Ok((ConstValue::Float(*v), super::types::HALF)),
         ExprKind::Paren(x) => eval(x, env, d),
         ExprKind::Name(id) => env.lookup(&id.name).ok_or_else(|| not_const(e, &format!("`{}`", id.name))),
         ExprKind::Unary(op, x) => {
@@ -114,6 +115,9 @@ fn eval(e: &Expr, env: &dyn ConstEnv, depth: usize) -> Result<(ConstValue, Ty), 
                     return Err(Diagnostic::error(format!("wrong arguments for `{}(...)` in a constant", callee.name), e.span));
                 }
                 return Ok((ConstValue::Composite(vals.into_iter().map(|v| v.0).collect()), ty));
+            }
+            if let Some((msg, help)) = super::types::unsupported_type(&callee.name) {
+                return Err(Diagnostic::error(msg, callee.span).with_note(format!("help: {help}")));
             }
             // Builtin functions: `sema::fold`.
             if let Some(folded) = super::fold::call(&callee.name, &vals) {
@@ -190,6 +194,8 @@ pub fn convert(c: &ConstValue, to: Scalar) -> Option<ConstValue> {
             _ => (f as f32).clamp(0.0, 4294967040.0) as u32 as u64,
         }),
         Scalar::Bool => ConstValue::Bool(f != 0.0),
+        // Rounded once, to nearest even (from an f32 value or an integer).
+        Scalar::Half => ConstValue::Float(half::f16::from_f64(f).to_f64()),
     })
 }
 
@@ -309,12 +315,15 @@ pub fn binary(op: BinaryOp, a: &ConstValue, ta: &Ty, b: &ConstValue, tb: &Ty) ->
     let get = |s: &[ConstValue], i: usize| if s.len() == 1 { s[0].clone() } else { s[i].clone() };
     let result_ty = if wa >= wb { ta.clone() } else { tb.clone() };
     let cmp = matches!(op, Eq | Ne | Lt | Le | Gt | Ge | And | Or | Xor);
+    // `half` arithmetic rounds to binary16 (`sema::fold`).
+    let is_half = ta.scalar() == Some(Scalar::Half);
     if cmp && w != 1 {
         return Err("vector comparisons are not supported in constants".into());
     }
     // One component at a time; a scalar result needs no vector.
     let fold = |x: ConstValue, y: ConstValue| -> Result<ConstValue, String> {
         Ok(match (x, y) {
+            (ConstValue::Float(x), ConstValue::Float(y)) if is_half && !cmp => super::fold::half_op(op, x, y)?,
             (ConstValue::Float(x), ConstValue::Float(y)) => {
                 // In f32, one rounding per operation, as the GPU computes.
                 let (x, y) = (x as f32, y as f32);

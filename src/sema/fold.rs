@@ -37,7 +37,25 @@ pub fn call(name: &str, args: &[(ConstValue, Ty)]) -> Option<Folded> {
     };
     let vals: Vec<&ConstValue> = args.iter().map(|a| &a.0).collect();
     let tys: Vec<&Ty> = args.iter().map(|a| &a.1).collect();
-    Some(eval(name, b, &vals, &tys, &ret).map(|v| (v, ret)))
+    let value = eval(name, b, &vals, &tys, &ret);
+    // A `half` result: each component rounded (once more) to binary16.
+    let value = if ret.has_half(&[]) { value.and_then(|v| to_half(name, &v)) } else { value };
+    Some(value.map(|v| (v, ret)))
+}
+
+fn to_half(name: &str, v: &ConstValue) -> Result<ConstValue, String> {
+    match v {
+        ConstValue::Composite(cs) => cs.iter().map(|c| to_half(name, c)).collect::<Result<_, _>>().map(ConstValue::Composite),
+        ConstValue::Float(f) => {
+            let h = half::f16::from_f64(*f);
+            if h.is_finite() {
+                Ok(ConstValue::Float(h.to_f64()))
+            } else {
+                Err(format!("`{name}` is infinite in `half` here (largest 65504); constants must be finite"))
+            }
+        }
+        c => Ok(c.clone()),
+    }
 }
 
 fn show(ty: &Ty) -> String {
@@ -160,9 +178,9 @@ fn eval(name: &str, b: Builtin, v: &[&ConstValue], tys: &[&Ty], ret: &Ty) -> Res
         Builtin::Mod => component_wise(name, n, v, |x| Ok(float_mod(x[0], x[1]))),
         Builtin::Rcp => component_wise(name, n, v, |x| Ok(((1.0f32) / (x[0] as f32)) as f64)),
         Builtin::Saturate => component_wise(name, n, v, |x| Ok(x[0].clamp(0.0, 1.0))),
-        Builtin::Mad if tys[0].scalar() != Some(Scalar::Float) => int_component_wise(name, n, v, |x| x[0].checked_mul(x[1]).and_then(|p| p.checked_add(x[2]))),
+        Builtin::Mad if !tys[0].scalar().is_some_and(Scalar::is_float) => int_component_wise(name, n, v, |x| x[0].checked_mul(x[1]).and_then(|p| p.checked_add(x[2]))),
         Builtin::Mad => component_wise(name, n, v, |x| Ok(x[0] * x[1] + x[2])),
-        Builtin::Math(f) if tys[0].scalar() != Some(Scalar::Float) => match f {
+        Builtin::Math(f) if !tys[0].scalar().is_some_and(Scalar::is_float) => match f {
             Mf::Abs => int_component_wise(name, n, v, |x| x[0].checked_abs()),
             Mf::Sign => int_component_wise(name, n, v, |x| Some(x[0].signum())),
             Mf::Min => int_component_wise(name, n, v, |x| Some(x[0].min(x[1]))),
@@ -427,6 +445,33 @@ fn cofactor(m: &[Vec<f64>], col: usize, row: usize) -> f64 {
     let minor: Vec<Vec<f64>> = m.iter().enumerate().filter(|(c, _)| *c != col).map(|(_, c)| c.iter().enumerate().filter(|(r, _)| *r != row).map(|(_, x)| *x).collect()).collect();
     let sign = if (col + row) % 2 == 0 { 1.0 } else { -1.0 };
     sign * determinant(&minor)
+}
+
+/// `x op y` of two `half` constants: computed exactly in `f64` (53 bits
+/// hold every sum, product and correctly rounded quotient of binary16
+/// values closely enough) and rounded once to binary16.
+pub fn half_op(op: BinaryOp, x: f64, y: f64) -> Result<ConstValue, String> {
+    let r = match op {
+        BinaryOp::Add => x + y,
+        BinaryOp::Sub => x - y,
+        BinaryOp::Mul => x * y,
+        BinaryOp::Div if y == 0.0 => return Err("division by zero in constant".into()),
+        BinaryOp::Div => x / y,
+        BinaryOp::Mod if y == 0.0 => return Err("division by zero in constant".into()),
+        // GLSL mod, each operation rounded to binary16 as the GPU does.
+        BinaryOp::Mod => {
+            let q = half::f16::from_f64(x / y).to_f64().floor();
+            let p = half::f16::from_f64(y * q).to_f64();
+            x - p
+        }
+        _ => return Err(format!("`{}` does not apply to `half` constants", crate::sema::op_text(op))),
+    };
+    let h = half::f16::from_f64(r);
+    if h.is_finite() {
+        Ok(ConstValue::Float(h.to_f64()))
+    } else {
+        Err(format!("this constant is {} in `half` (largest 65504); constants must be finite: WGSL rejects non-finite constant expressions", if h.is_nan() { "NaN" } else { "infinite" }))
+    }
 }
 
 /// A `c` x `r` matrix from another (GLSL's rule, as the lowering builds

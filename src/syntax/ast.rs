@@ -353,4 +353,7 @@ pub enum ExprKind {
     /// A string literal, escapes resolved. The parser produces it only as an
     /// annotation argument value (`[vertex_program(name = "x")]`).
     Str(String),
+    /// A `half` literal (`1.5h`): its value, rounded once from the decimal
+    /// to the nearest binary16 value (held exactly in the `f64`).
+    Half(f64),
 }

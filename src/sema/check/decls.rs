@@ -310,7 +310,9 @@ impl<'a, 'd> Checker<'a, 'd> {
                         self.diags.push(Diagnostic::error("`@stage` applies only to samplers", span));
                     }
                     let ok = matches!(ty, Ty::Scalar(s) | Ty::Vector(s, _) if s != Scalar::Bool) || ty.is_error();
-                    if !ok {
+                    if matches!(ty, Ty::Scalar(Scalar::Half) | Ty::Vector(Scalar::Half, _)) {
+                        self.diags.push(half_interface_error(&format!("an `@{c}` variable"), g.ty.span));
+                    } else if !ok {
                         let d = Diagnostic::error(format!("`@{c}` variables must be numeric scalars or vectors, not `{}`", self.show(&ty)), g.ty.span);
                         self.diags.push(d);
                     }
@@ -384,6 +386,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             Ty::Scalar(Scalar::Bool) | Ty::Vector(Scalar::Bool, _) => {
                 Err("`bool` cannot live in a uniform block (it has no portable layout); use `int` or `uint`".into())
             }
+            Ty::Scalar(Scalar::Half) | Ty::Vector(Scalar::Half, _) => Err(HALF_INTERFACE.replace("{what}", "a uniform block")),
             Ty::Scalar(_) => Ok(UniformLayout { size: 4, align: 4, std_size: 4, std_align: 4 }),
             Ty::Vector(_, n) => {
                 let align = if *n == 2 { 8 } else { 16 };
@@ -456,7 +459,14 @@ impl<'a, 'd> Checker<'a, 'd> {
         match &t.kind {
             ast::TypeExprKind::Named(id) => {
                 if let Some(ty) = Ty::from_builtin_name(&id.name) {
+                    if ty.has_half(&[]) {
+                        self.half_used(id.span);
+                    }
                     return ty;
+                }
+                if let Some((msg, help)) = crate::sema::types::unsupported_type(&id.name) {
+                    self.diags.push(Diagnostic::error(msg, id.span).with_label("no target has this type").with_note(format!("help: {help}")));
+                    return Ty::Error;
                 }
                 if let Some(&sid) = self.structs.get(id.name.as_str()) {
                     return Ty::Struct(sid);
@@ -596,4 +606,11 @@ impl ConstEnv for ConstEnvAdapter<'_, '_, '_> {
         let &sid = self.c.structs.get(name)?;
         Some((Ty::Struct(sid), self.c.out.structs[sid].fields.iter().map(|f| f.1.clone()).collect()))
     }
+}
+
+/// What `half` cannot be, with what to do instead.
+const HALF_INTERFACE: &str = "`half` cannot be in {what}: host formats and the GPU interface of the WGSL and SPIR-V targets are 32-bit here; use `float` and convert with `half(x)` inside the shader";
+
+fn half_interface_error(what: &str, span: Span) -> Diagnostic {
+    Diagnostic::error(HALF_INTERFACE.replace("{what}", what), span)
 }

@@ -48,6 +48,10 @@ impl<'a, 'd> Checker<'a, 'd> {
                 }
             }
             ast::ExprKind::Bool(b) => mk(ExprKind::Bool(*b), BOOL),
+            ast::ExprKind::Half(v) => {
+                self.half_used(span);
+                mk(ExprKind::Float(*v), HALF)
+            }
             ast::ExprKind::Str(_) => {
                 self.diags.push(Diagnostic::error("strings are not shader values", span));
                 err_expr(span)
@@ -327,13 +331,23 @@ impl<'a, 'd> Checker<'a, 'd> {
     pub(super) fn check_call(&mut self, cx: &mut FnCtx<'a>, callee: &'a ast::Ident, args: &'a [ast::Expr], span: Span) -> Expr {
         let name = callee.name.as_str();
         // Constructors and casts.
-        let ctor_ty = Ty::from_builtin_name(name).filter(|t| !matches!(t, Ty::Sampler(_))).or_else(|| self.structs.get(name).map(|&s| Ty::Struct(s)));
+        // `half` is no daslang type: a program's own function of that name wins.
+        let ctor_ty = Ty::from_builtin_name(name)
+            .filter(|t| !matches!(t, Ty::Sampler(_)) && !(t.has_half(&[]) && self.funcs.contains_key(name)))
+            .or_else(|| self.structs.get(name).map(|&s| Ty::Struct(s)));
         let xs: Vec<Expr> = args.iter().map(|a| self.check_expr(cx, a)).collect();
         if xs.iter().any(|x| x.ty.is_error()) {
             return err_expr(span);
         }
         if let Some(ty) = ctor_ty {
+            if ty.has_half(&[]) {
+                self.half_used(callee.span);
+            }
             return self.check_constructor(ty, xs, span);
+        }
+        if let Some((msg, help)) = crate::sema::types::unsupported_type(name) {
+            self.diags.push(Diagnostic::error(msg, callee.span).with_label("a type no target has").with_note(format!("help: {help}")));
+            return err_expr(span);
         }
         if name == "range" {
             self.diags.push(Diagnostic::error("`range` can only be used as the iterator of a `for` loop", span));

@@ -8,12 +8,14 @@
 //! The [`Checker`] is defined here; its methods are split by what they check:
 //! [`decls`] (structs, globals, types, constants), [`stmts`] (functions,
 //! statements, places), [`exprs`] (expressions, calls, operators) and
-//! [`math`] (daslang's math module: its constants, `sincos`).
+//! [`math`] (daslang's math module: its constants, `sincos`) and
+//! [`targets`] (constructs only some targets have).
 
 mod decls;
 mod exprs;
 mod math;
 mod stmts;
+mod targets;
 
 use std::collections::hash_map::Entry;
 use std::collections::BTreeMap;
@@ -22,14 +24,22 @@ use super::builtins::{self, Builtin};
 use super::consts::{eval_const, ConstEnv};
 use super::tree::*;
 use super::limits::*;
-use super::types::{SamplerKind, Scalar, StructId, Ty, TyDisplay, BOOL, FLOAT, INT, UINT};
+use super::types::{SamplerKind, Scalar, StructId, Ty, TyDisplay, BOOL, FLOAT, HALF, INT, UINT};
 use crate::diag::{suggest, Diagnostic, Diagnostics};
 use rustc_hash::{FxHashMap, FxHashSet};
 use crate::source::Span;
 use crate::syntax::ast::{self, BinaryOp, UnaryOp};
 
+/// Checks a program for every target.
 pub fn check(program: &ast::Program, diags: &mut Diagnostics) -> Option<Program> {
+    check_for_targets(program, &crate::target::Target::ALL, diags)
+}
+
+/// Checks a program for the targets requested (empty: all): a construct
+/// that only some targets have (`half`) is an error naming the others.
+pub fn check_for_targets(program: &ast::Program, targets: &[crate::target::Target], diags: &mut Diagnostics) -> Option<Program> {
     let mut c = Checker::new(program, diags);
+    c.targets = if targets.is_empty() { crate::target::Target::ALL.to_vec() } else { targets.to_vec() };
     c.declare();
     c.check_entry_points();
     if c.diags.has_errors() {
@@ -125,6 +135,10 @@ struct Checker<'a, 'd> {
     /// Depth at which the next helper function checked on first use starts.
     call_depth: usize,
     spare_scopes: Vec<Scopes<'a>>,
+    /// The targets requested, for the constructs only some have.
+    targets: Vec<crate::target::Target>,
+    /// `half` was refused already (reported once, at its first use).
+    half_refused: bool,
 }
 
 fn is_entry(f: &ast::FunctionDecl) -> Option<naga::ShaderStage> {
@@ -168,6 +182,8 @@ impl<'a, 'd> Checker<'a, 'd> {
             builtin_vars: FxHashMap::default(),
             call_depth: 0,
             spare_scopes: Vec::new(),
+            targets: crate::target::Target::ALL.to_vec(),
+            half_refused: false,
         }
     }
 
@@ -225,6 +241,6 @@ pub fn op_text(op: BinaryOp) -> &'static str {
 
 /// The built-in type names, offered when a type or constructor name is misspelt.
 const TYPE_NAMES: &[&str] = &[
-    "float", "float2", "float3", "float4", "int", "int2", "int3", "int4", "uint", "uint2", "uint3", "uint4", "bool", "bool2", "bool3", "bool4", "float2x2",
+    "float", "float2", "float3", "float4", "int", "int2", "int3", "int4", "uint", "uint2", "uint3", "uint4", "bool", "bool2", "bool3", "bool4", "half", "half2", "half3", "half4", "float2x2",
     "float3x3", "float4x4", "sampler2D", "sampler2DShadow", "sampler2DArray", "sampler2DArrayShadow", "sampler3D", "samplerCube", "samplerCubeShadow",
 ];
