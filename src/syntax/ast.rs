@@ -121,6 +121,9 @@ impl fmt::Display for Name {
 pub struct Program {
     /// Items in source order.
     pub items: Vec<Item>,
+    /// Required modules that were not found, for the checker's errors
+    /// about names nothing defines.
+    pub modules_not_found: Vec<super::modules::MissingModule>,
 }
 
 #[derive(Clone, Debug)]

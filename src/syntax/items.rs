@@ -41,6 +41,9 @@ pub struct RawItem {
     pub shader_global: bool,
     /// A `def` annotated `[vertex_program]` or `[fragment_program]`.
     pub entry: bool,
+    /// From a required module (`syntax::modules`): never a starting point
+    /// of the selection, only reached by name (its globals too).
+    pub from_module: bool,
 }
 
 impl RawItem {
@@ -232,7 +235,7 @@ pub fn split(toks: &[Token], map: &SourceMap) -> Vec<RawItem> {
         }
         .max(i + 1);
         let mut item =
-            RawItem { kind, annots, body: i..end, names: 0..0, shader_global: false, entry: false };
+            RawItem { kind, annots, body: i..end, names: 0..0, shader_global: false, entry: false, from_module: false };
         let mut k = i + 1;
         match kind {
             ItemKind::Def | ItemKind::Struct | ItemKind::Class => {
@@ -481,6 +484,12 @@ pub fn select(
                     decls.add(texts.get(toks[k].span), i);
                 }
             }
+            // A module's globals are found by name.
+            ItemKind::Var if item.from_module => {
+                for k in item.names() {
+                    decls.add(texts.get(toks[k].span), i);
+                }
+            }
             _ => {}
         }
     }
@@ -488,7 +497,7 @@ pub fn select(
     let mut selected = vec![false; items.len()];
     let mut work: Vec<usize> = Vec::new();
     for (i, item) in items.iter().enumerate() {
-        if item.shader_global {
+        if item.shader_global && !item.from_module {
             selected[i] = true;
             work.push(i);
         }

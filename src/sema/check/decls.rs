@@ -476,9 +476,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                 if let Some(s) = suggest(&id.name, candidates.iter().copied()) {
                     d = d.with_note(format!("help: did you mean `{s}`?"));
                 }
-                if id.name == "double" {
-                    d = d.with_note("double precision is not available in shaders");
-                }
+                let d = self.with_missing_modules(d);
                 self.diags.push(d);
                 Ty::Error
             }

@@ -276,6 +276,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         if let Some(s) = suggest(&id.name, candidates.iter().copied()) {
             d = d.with_note(format!("help: did you mean `{s}`?"));
         }
+        let d = self.with_missing_modules(d);
         self.diags.push(d);
         err_expr(span)
     }
@@ -454,6 +455,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                 if let Some(s) = suggest(name, candidates) {
                     d = d.with_note(format!("help: did you mean `{s}`?"));
                 }
+                let d = self.with_missing_modules(d);
                 self.diags.push(d);
                 err_expr(span)
             }

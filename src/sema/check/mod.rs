@@ -208,6 +208,20 @@ impl<'a, 'd> Checker<'a, 'd> {
     }
 }
 
+impl Checker<'_, '_> {
+    /// An error about a name nothing defines, with each required module
+    /// that was not found, which might have defined it.
+    fn with_missing_modules(&self, mut d: Diagnostic) -> Diagnostic {
+        for m in &self.ast.modules_not_found {
+            d = d.with_secondary(m.span, format!("module `{}` not found: it may define this", m.name));
+            let searched: Vec<String> = m.searched.iter().map(|p| format!("`{}`", p.display())).collect();
+            let searched = if searched.is_empty() { "nowhere".to_string() } else { searched.join(", ") };
+            d = d.with_note(format!("module `{}` was not found (searched {searched}); help: {}", m.name, m.help));
+        }
+        d
+    }
+}
+
 /// A placeholder for an expression already reported as wrong (type `Error`:
 /// its uses report nothing more).
 pub(super) fn err_expr(span: Span) -> Expr {
