@@ -472,7 +472,15 @@ pub fn select(
     }
 
     let mut decls = Decls { names: FxHashMap::with_capacity_and_hasher(items.len(), Default::default()), links: Vec::with_capacity(items.len()), lens: 0 };
+    // The input's own top-level names hide a module's (`syntax::modules`).
+    let own_names: rustc_hash::FxHashSet<&str> = match items.iter().any(|item| item.from_module) {
+        true => items.iter().filter(|item| !item.from_module).flat_map(|item| item.names().map(|k| texts.get(toks[k].span))).collect(),
+        false => Default::default(),
+    };
     for (i, item) in items.iter().enumerate() {
+        if item.from_module && item.first_name().is_some_and(|k| own_names.contains(texts.get(toks[k].span))) {
+            continue;
+        }
         match item.kind {
             ItemKind::Def | ItemKind::Struct | ItemKind::Class if !item.entry => {
                 if let Some(k) = item.first_name() {

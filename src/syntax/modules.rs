@@ -166,6 +166,10 @@ pub(super) fn load(map: &mut SourceMap, root: FileId, toks: &mut Vec<Token>, raw
     loop {
         for (i, depth) in std::mem::take(&mut pending) {
             let Some(req) = require_of(toks, &raw[i], map) else { continue };
+            // daslang's builtin modules come first, whatever files exist.
+            if BUILTIN_MODULES.contains(&req.name.as_str()) {
+                continue;
+            }
             let requiring_dir = map.file_of(req.span.start).and_then(|f| map.file(f).path.as_deref().map(parent_dir)).unwrap_or_else(|| root_dir.clone());
             let (cands, help) = candidates(&req.name, &requiring_dir, opts);
             let Some(path) = cands.iter().find(|p| p.is_file()).cloned() else {
