@@ -106,6 +106,9 @@ fn eval(e: &Expr, env: &dyn ConstEnv, depth: usize) -> Result<(ConstValue, Ty), 
             _ => Err(not_const(e, "this condition")),
         },
         ExprKind::Call { callee, args } => {
+            if let Some(why) = super::fold::never_constant(&callee.name) {
+                return Err(Diagnostic::error(why, e.span));
+            }
             let vals = args.iter().map(|a| eval(a, env, d)).collect::<Result<Vec<_>, _>>()?;
             if let Some(ty) = Ty::from_builtin_name(&callee.name) {
                 return construct(&ty, vals).map(|v| (v, ty.clone())).ok_or_else(|| Diagnostic::error(format!("wrong arguments for `{}(...)` in a constant", callee.name), e.span));

@@ -21,11 +21,20 @@ use naga::MathFunction as Mf;
 
 type Folded = Result<(ConstValue, Ty), String>;
 
+/// Why a call of builtin `name` is never a constant, whatever its
+/// arguments (a texture read, a derivative).
+pub fn never_constant(name: &str) -> Option<String> {
+    if builtins::TEXTURE_FUNCTIONS.iter().any(|(n, _)| *n == name) || builtins::LEGACY_TEXTURE_FUNCTIONS.iter().any(|(n, ..)| *n == name) {
+        return Some(format!("`{name}` reads a texture when the shader runs, so it is not a constant expression"));
+    }
+    matches!(name, "dFdx" | "dFdy" | "fwidth").then(|| format!("`{name}` is a derivative across pixels, so it is not a constant expression"))
+}
+
 /// The value of builtin `name` called with constant `args`; `None` when
 /// `name` is no builtin function.
 pub fn call(name: &str, args: &[(ConstValue, Ty)]) -> Option<Folded> {
-    if builtins::TEXTURE_FUNCTIONS.iter().any(|(n, _)| *n == name) || builtins::LEGACY_TEXTURE_FUNCTIONS.iter().any(|(n, ..)| *n == name) {
-        return Some(Err(format!("`{name}` reads a texture when the shader runs, so it is not a constant expression")));
+    if let Some(why) = never_constant(name) {
+        return Some(Err(why));
     }
     let (b, ret) = match builtins::resolve(name, args.iter().map(|a| &a.1)) {
         Ok(Some(found)) => found,
