@@ -16,6 +16,8 @@ mod consumers;
 #[cfg(feature = "render")]
 mod differential;
 #[cfg(feature = "render")]
+mod features_l;
+#[cfg(feature = "render")]
 mod numerics;
 #[cfg(feature = "render")]
 mod programs;

@@ -72,7 +72,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                 }
                 let ok = match op {
                     // `-m` of a matrix is daslang's too (its math module).
-                    UnaryOp::Neg | UnaryOp::Plus => matches!(x.ty.scalar(), Some(Scalar::Float | Scalar::Int)),
+                    UnaryOp::Neg | UnaryOp::Plus => matches!(x.ty.scalar(), Some(Scalar::Float | Scalar::Half | Scalar::Int)),
                     UnaryOp::Not => x.ty == BOOL,
                     UnaryOp::BitNot => matches!(x.ty.scalar(), Some(Scalar::Int | Scalar::Uint)),
                     _ => {
