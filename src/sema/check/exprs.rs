@@ -346,10 +346,6 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
             return self.check_constructor(ty, xs, span);
         }
-        if let Some((msg, help)) = crate::sema::types::unsupported_type(name) {
-            self.diags.push(Diagnostic::error(msg, callee.span).with_label("a type no target has").with_note(format!("help: {help}")));
-            return err_expr(span);
-        }
         if name == "range" {
             self.diags.push(Diagnostic::error("`range` can only be used as the iterator of a `for` loop", span));
             return err_expr(span);
@@ -415,9 +411,6 @@ impl<'a, 'd> Checker<'a, 'd> {
         if let Some((_, b)) = builtins::TEXTURE_FUNCTIONS.iter().find(|(n, _)| *n == name) {
             return self.check_texture_call(cx, *b, name, xs, span);
         }
-        if let Some(&(_, b, kind, now)) = builtins::LEGACY_TEXTURE_FUNCTIONS.iter().find(|(n, ..)| *n == name) {
-            return self.check_legacy_texture_call(cx, callee, (b, kind, now), xs, span);
-        }
         match builtins::resolve(name, xs.iter().map(|x| &x.ty)) {
             Ok(Some((b, ret))) => {
                 if matches!(b, Builtin::Derivative(..)) {
@@ -439,6 +432,15 @@ impl<'a, 'd> Checker<'a, 'd> {
                     }
                 }
                 Expr { kind: ExprKind::Builtin(b, xs), ty: ret, span }
+            }
+            Ok(None) if builtins::LEGACY_TEXTURE_FUNCTIONS.iter().any(|(n, ..)| *n == name) => {
+                let &(_, b, kind, now) = builtins::LEGACY_TEXTURE_FUNCTIONS.iter().find(|(n, ..)| *n == name).expect("matched");
+                self.check_legacy_texture_call(cx, callee, (b, kind, now), xs, span)
+            }
+            Ok(None) if crate::sema::types::unsupported_type(name).is_some() => {
+                let (msg, help) = crate::sema::types::unsupported_type(name).expect("matched");
+                self.diags.push(Diagnostic::error(msg, callee.span).with_label("a type no target has").with_note(format!("help: {help}")));
+                err_expr(span)
             }
             Ok(None) if builtins::UNSUPPORTED.iter().any(|(n, _)| *n == name) => {
                 let why = builtins::UNSUPPORTED.iter().find(|(n, _)| *n == name).map(|(_, w)| *w).unwrap_or_default();
