@@ -452,7 +452,7 @@ fn determinant(m: &[Vec<f64>]) -> f64 {
 /// The cofactor of element (column `col`, row `row`).
 fn cofactor(m: &[Vec<f64>], col: usize, row: usize) -> f64 {
     let minor: Vec<Vec<f64>> = m.iter().enumerate().filter(|(c, _)| *c != col).map(|(_, c)| c.iter().enumerate().filter(|(r, _)| *r != row).map(|(_, x)| *x).collect()).collect();
-    let sign = if (col + row) % 2 == 0 { 1.0 } else { -1.0 };
+    let sign = if (col + row).is_multiple_of(2) { 1.0 } else { -1.0 };
     sign * determinant(&minor)
 }
 

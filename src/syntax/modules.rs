@@ -140,7 +140,7 @@ fn candidates(name: &str, dir: &Path, opts: &ParseOptions) -> (Vec<PathBuf>, &'s
 /// builtin module or a host pack, and no hint names it).
 fn may_hold_shader_code(name: &str) -> bool {
     let head = name.split('/').next().unwrap_or(name);
-    !BUILTIN_MODULES.contains(&name) && !(name.contains('/') && HOST_PACKS.contains(&head))
+    !BUILTIN_MODULES.contains(&name) && (!name.contains('/') || !HOST_PACKS.contains(&head))
 }
 
 /// One module file read.

@@ -334,7 +334,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         // Constructors and casts.
         // `half` is no daslang type: a program's own function of that name wins.
         let ctor_ty = Ty::from_builtin_name(name)
-            .filter(|t| !matches!(t, Ty::Sampler(_)) && !(t.has_half(&[]) && self.funcs.contains_key(name)))
+            .filter(|t| !matches!(t, Ty::Sampler(_)) && (!t.has_half(&[]) || !self.funcs.contains_key(name)))
             .or_else(|| self.structs.get(name).map(|&s| Ty::Struct(s)));
         let xs: Vec<Expr> = args.iter().map(|a| self.check_expr(cx, a)).collect();
         if xs.iter().any(|x| x.ty.is_error()) {
