@@ -523,7 +523,8 @@ pub fn select(
             if toks[k].kind != TokKind::Ident || !decls.may_declare(&toks[k]) {
                 continue;
             }
-            if k > 0 && matches!(toks[k - 1].kind, TokKind::P(P::Dot | P::QuestionDot | P::Arrow | P::ColonColon)) {
+            // A field (`a.b`) is no top-level name; `module::name` is.
+            if k > 0 && matches!(toks[k - 1].kind, TokKind::P(P::Dot | P::QuestionDot | P::Arrow)) {
                 continue;
             }
             let Some(d) = decls.names.get(texts.get(toks[k].span)) else { continue };

@@ -115,7 +115,7 @@ fn snippets_language_l() -> Vec<(&'static str, String)> {
         ("texture2D", frag("var @uniform t : sampler2D\nvar @uniform c : samplerCube", "    f_color = texture2D(t, float2(0.5)) + texture2DLod(t, float2(0.5), 1.0) + textureCube(c, float3(1.0))")),
         ("constant-builtin-calls", frag("let SUN : float3 = normalize(float3(0.45, 0.55, 0.85))\nlet K = cos(radians(30.0)) * PI\nlet M = float3x3(identity4x4())\nlet N = uint_noise_2D(int2(3, 4), 7u) >> 16u", "    f_color = float4(M * SUN * K, float(N))")),
         ("constant-undefined-call", frag("let K = sqrt(-1.0)", "    f_color = float4(K)")),
-        ("require-modules", "require math\nrequire glfw/glfw_boost\nrequire shaders/features/include/shaderlib/tonemap\nvar @out f_color : float4\n[fragment_program]\ndef fs {\n    f_color = float4(aces(palette_ramp(0.5)), 1.0)\n}\n".to_string()),
+        ("require-modules", "require math\nrequire glfw/glfw_boost\nrequire shaders/features/include/shaderlib/tonemap\nvar @out f_color : float4\n[fragment_program]\ndef fs {\n    f_color = float4(tonemap::aces(palette_ramp(0.5)) * math::saturate(2.0), 1.0)\n}\n".to_string()),
         ("half", frag("let K = 0.5h\ndef tone(c : half3) : half3 {\n    return c / (c + half3(K)) + sin(c) * 0.25h\n}\nvar @uniform u_x : float3", "    let h = tone(half3(u_x)) * half(2) + max(half3(float16(1.0)), half3(0.0h))\n    f_color = float4(float3(h), float(length(h)))")),
         ("half-interface", frag("var @uniform u_h : half", "    f_color = float4(float(u_h))")),
         ("small-integers", frag("", "    let b = byte2(1, 2)\n    f_color = float4(1.0)")),

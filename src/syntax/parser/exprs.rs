@@ -199,8 +199,21 @@ impl<'m> Parser<'_, 'm> {
 
     pub(super) fn name_or_call(&mut self, t: Token) -> PResult<Expr> {
         self.bump();
-        let name = Ident { name: self.texts.name(t.span), span: t.span };
-        let next = self.peek();
+        let mut name = Ident { name: self.texts.name(t.span), span: t.span };
+        let mut next = self.peek();
+        // `module::name` (`math::sin`, `_::helper`): every module's names
+        // are in one namespace (`syntax::modules`), so the qualifier goes.
+        if next.is(P::ColonColon) {
+            self.bump();
+            let n = self.peek();
+            if n.kind != TokKind::Ident {
+                self.error_expected(n, "a name after `::`");
+                return Err(());
+            }
+            self.bump();
+            name = Ident { name: self.texts.name(n.span), span: n.span };
+            next = self.peek();
+        }
         if next.is(P::Lt) && name.name == "fixed_array" {
             self.bump();
             let elem = self.ty()?;
