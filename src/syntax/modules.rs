@@ -263,3 +263,37 @@ pub(super) fn load(map: &mut SourceMap, root: FileId, toks: &mut Vec<Token>, raw
     }
     missing
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The module name of each `require` line of `text` (none for other items).
+    fn requires(text: &str) -> Vec<String> {
+        let mut map = SourceMap::new();
+        let id = map.add("t.das", None, text.to_string(), None);
+        let mut toks = Vec::new();
+        super::super::lexer::lex(&map.file(id).text, map.file(id).base, &mut toks);
+        let items = items::split(&toks, &map);
+        items.iter().filter_map(|i| require_of(&toks, i, &map)).map(|r| r.name).collect()
+    }
+
+    #[test]
+    fn require_lines_name_their_modules() {
+        let text = "options gen2\nrequire math\nrequire daslib/ast_boost public\nrequire ./helpers.das\nrequire ../shared/utility.das as util\nrequire %/daslib/random.das\nrequire ?pugixml pugixml/PUGIXML_boost public\nrequire glfw/glfw_boost\ndef f {\n    require_nothing()\n}\n";
+        assert_eq!(requires(text), ["math", "daslib/ast_boost", "./helpers.das", "../shared/utility.das", "%/daslib/random.das", "pugixml/PUGIXML_boost", "glfw/glfw_boost"]);
+    }
+
+    #[test]
+    fn where_modules_are_looked_for() {
+        let opts = ParseOptions { include_dirs: vec![PathBuf::from("inc")], daslib: vec![PathBuf::from("das/daslib")], ..Default::default() };
+        let dir = Path::new("src");
+        assert_eq!(candidates("shaderlib/noise", dir, &opts).0, [PathBuf::from("src/shaderlib/noise.das"), PathBuf::from("inc/shaderlib/noise.das")]);
+        assert_eq!(candidates("daslib/math_boost", dir, &opts).0, [PathBuf::from("das/daslib/math_boost.das")]);
+        assert_eq!(candidates("./x.das", dir, &opts).0, [PathBuf::from("src/./x.das")]);
+        assert_eq!(candidates("%/modules/x.das", dir, &opts).0, [PathBuf::from("das/modules/x.das")]);
+        assert!(candidates("daslib/math_boost", dir, &ParseOptions::default()).0.is_empty());
+        assert!(!may_hold_shader_code("glfw/glfw_boost") && !may_hold_shader_code("math"));
+        assert!(may_hold_shader_code("shaderlib/noise") && may_hold_shader_code("daslib/math_boost") && may_hold_shader_code("glfw"));
+    }
+}
