@@ -116,3 +116,33 @@ fn folded_constants_are_one_literal_in_every_output() {
     let words: Vec<u32> = spv.chunks_exact(4).map(|w| u32::from_le_bytes([w[0], w[1], w[2], w[3]])).collect();
     assert!(words.contains(&x.to_bits()), "the SPIR-V module lacks {x:?} ({:#x})", x.to_bits());
 }
+
+/// Modules requiring modules stop at `MAX_MODULE_DEPTH`, with an error at
+/// the `require` that goes too deep; as many files as `MAX_MODULES` are read.
+#[test]
+fn module_limits() {
+    use umbrac::syntax::modules::{MAX_MODULES, MAX_MODULE_DEPTH};
+    let dir = tempfile::tempdir().unwrap();
+    let n = MAX_MODULE_DEPTH + 2;
+    for i in 0..n {
+        let next = if i + 1 < n { format!("require m{}\n", i + 1) } else { String::new() };
+        let call = if i + 1 < n { format!("f{}(x)", i + 1) } else { "x".into() };
+        write(dir.path(), &format!("m{i}.das"), &format!("{next}def f{i}(x : float) : float {{\n    return {call}\n}}\n"));
+    }
+    write(dir.path(), "deep.das", "require m0\nvar @out f_color : float4\n[fragment_program]\ndef fs {\n    f_color = float4(f0(1.0))\n}\n");
+    let c = umbrac::compile_file(&dir.path().join("deep.das"), &Options::default());
+    let text = c.render_diagnostics();
+    assert!(c.result.is_none() && text.contains(&format!("modules require each other too deeply (limit {MAX_MODULE_DEPTH})")), "{text}");
+
+    let wide = tempfile::tempdir().unwrap();
+    let mut main = String::new();
+    for i in 0..=MAX_MODULES {
+        write(wide.path(), &format!("w{i}.das"), "let UNUSED = 1\n");
+        main.push_str(&format!("require w{i}\n"));
+    }
+    main.push_str("var @out f_color : float4\n[fragment_program]\ndef fs {\n    f_color = float4(1.0)\n}\n");
+    write(wide.path(), "wide.das", &main);
+    let c = umbrac::compile_file(&wide.path().join("wide.das"), &Options::default());
+    let text = c.render_diagnostics();
+    assert!(c.result.is_none() && text.contains(&format!("too many modules (limit {MAX_MODULES})")), "{text}");
+}
