@@ -146,3 +146,15 @@ fn module_limits() {
     let text = c.render_diagnostics();
     assert!(c.result.is_none() && text.contains(&format!("too many modules (limit {MAX_MODULES})")), "{text}");
 }
+
+/// Modules that require each other are each read once.
+#[test]
+fn cyclic_requires_end() {
+    let dir = tempfile::tempdir().unwrap();
+    write(dir.path(), "a.das", "require b\ndef fa(x : float) : float {\n    return fb(x) + 1.0\n}\n");
+    write(dir.path(), "b.das", "require a\ndef fb(x : float) : float {\n    return x * 2.0\n}\n");
+    write(dir.path(), "main.das", "require a\nvar @out f_color : float4\n[fragment_program]\ndef fs {\n    f_color = float4(fa(1.0))\n}\n");
+    let c = umbrac::compile_file(&dir.path().join("main.das"), &Options::default());
+    assert!(c.result.is_some() && c.diagnostics.is_empty(), "{}", c.render_diagnostics());
+    assert_eq!(c.files_read().len(), 3, "{:?}", c.files_read());
+}
