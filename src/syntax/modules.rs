@@ -237,6 +237,9 @@ pub(super) fn load(map: &mut SourceMap, root: FileId, toks: &mut Vec<Token>, raw
                 shift(&mut item.annots);
                 shift(&mut item.body);
                 shift(&mut item.names);
+                for k in &mut item.block_names {
+                    *k += base;
+                }
                 // A module's entry points are its own; its shader globals
                 // count only where a shader reaches them by name.
                 item.entry = false;

@@ -158,3 +158,18 @@ fn cyclic_requires_end() {
     assert!(c.result.is_some() && c.diagnostics.is_empty(), "{}", c.render_diagnostics());
     assert_eq!(c.files_read().len(), 3, "{:?}", c.files_read());
 }
+
+/// A module's `let { ... }` block and module variable, and a uniform's
+/// default, all from builtin calls folded at compile time.
+#[test]
+fn module_let_blocks_variables_and_defaults_fold_builtin_calls() {
+    let dir = tempfile::tempdir().unwrap();
+    write(dir.path(), "lib.das", "let {\n    SUN = normalize(float3(1.0, 2.0, 2.0))\n    K = PI / 4.0\n}\nvar counter = 0\ndef bump : float {\n    counter++\n    return float(counter) * K\n}\n");
+    write(dir.path(), "main.das", "require lib\nvar @uniform u_dir : float3 = normalize(float3(0.0, 3.0, 4.0))\nvar @out f_color : float4\n[fragment_program]\ndef fs {\n    f_color = float4(SUN * bump() + u_dir, 1.0)\n}\n");
+    let c = umbrac::compile_file(&dir.path().join("main.das"), &Options { targets: vec![Target::Wgsl], ..Default::default() });
+    let compiled = c.result.as_ref().unwrap_or_else(|| panic!("{}", c.render_diagnostics()));
+    let wgsl = compiled.artifact("main.wgsl").unwrap().text().into_owned();
+    assert!(wgsl.contains("const SUN: vec3<f32> = vec3<f32>(0.33333334f, 0.6666667f, 0.6666667f);") && wgsl.contains("var<private> counter: i32"), "{wgsl}");
+    let json = serde_json::to_string(&compiled.reflection).unwrap();
+    assert!(json.contains("\"default\""), "{json}");
+}

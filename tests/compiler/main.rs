@@ -30,6 +30,8 @@ mod language_l;
 #[cfg(feature = "golden")]
 mod golden;
 mod limits;
+#[cfg(feature = "deserialize")]
+mod programs;
 mod proptest_programs;
 #[cfg(feature = "cli")]
 mod robustness;

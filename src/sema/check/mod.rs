@@ -8,12 +8,15 @@
 //! The [`Checker`] is defined here; its methods are split by what they check:
 //! [`decls`] (structs, globals, types, constants), [`stmts`] (functions,
 //! statements, places), [`exprs`] (expressions, calls, operators) and
-//! [`math`] (daslang's math module: its constants, `sincos`) and
-//! [`targets`] (constructs only some targets have).
+//! [`programs`] (which entry points form a program; locations and texture
+//! units numbered and checked per program), [`math`] (daslang's math
+//! module: its constants, `sincos`) and [`targets`] (constructs only some
+//! targets have).
 
 mod decls;
 mod exprs;
 mod math;
+mod programs;
 mod stmts;
 mod targets;
 
@@ -42,6 +45,7 @@ pub fn check_for_targets(program: &ast::Program, targets: &[crate::target::Targe
     c.targets = if targets.is_empty() { crate::target::Target::ALL.to_vec() } else { targets.to_vec() };
     c.declare();
     c.check_entry_points();
+    c.link_programs();
     if c.diags.has_errors() {
         None
     } else {
@@ -132,6 +136,12 @@ struct Checker<'a, 'd> {
     fn_decls: Vec<&'a ast::FunctionDecl>,
     entry_decls: Vec<(&'a ast::FunctionDecl, naga::ShaderStage)>,
     builtin_vars: FxHashMap<BuiltinVar, GlobalId>,
+    /// The `@location = N` qualifier of each global that has one, and the
+    /// `@stage = N` of each sampler that has one (for clash diagnostics).
+    location_spans: FxHashMap<GlobalId, Span>,
+    unit_spans: FxHashMap<GlobalId, Span>,
+    /// The `@set = N` and `@binding = N` written on a resource.
+    bind_written: FxHashMap<GlobalId, (Option<(u32, Span)>, Option<(u32, Span)>)>,
     /// Depth at which the next helper function checked on first use starts.
     call_depth: usize,
     spare_scopes: Vec<Scopes<'a>>,
@@ -145,6 +155,7 @@ fn is_entry(f: &ast::FunctionDecl) -> Option<naga::ShaderStage> {
     f.annotations.iter().find_map(|a| match a.name.name.as_str() {
         "vertex_program" => Some(naga::ShaderStage::Vertex),
         "fragment_program" => Some(naga::ShaderStage::Fragment),
+        "compute_program" => Some(naga::ShaderStage::Compute),
         _ => None,
     })
 }
@@ -180,6 +191,9 @@ impl<'a, 'd> Checker<'a, 'd> {
             fn_decls: Vec::new(),
             entry_decls: Vec::new(),
             builtin_vars: FxHashMap::default(),
+            location_spans: FxHashMap::default(),
+            unit_spans: FxHashMap::default(),
+            bind_written: FxHashMap::default(),
             call_depth: 0,
             spare_scopes: Vec::new(),
             targets: crate::target::Target::ALL.to_vec(),

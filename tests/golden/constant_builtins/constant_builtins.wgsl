@@ -18,9 +18,6 @@ const SKY: vec3<f32> = vec3<f32>(0.35500002f, 0.39499998f, 0.6375f);
 const GOLDEN: f32 = 2.3999631f;
 const WHITE: u32 = 4294967295u;
 
-@group(0) @binding(0) 
-var<uniform> u_view_dir: vec3<f32>;
-
 @vertex 
 fn constant_builtins_vs(@location(0) a_pos: vec3<f32>) -> constant_builtins_vs_out {
     var v_dir: vec3<f32>;
