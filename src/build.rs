@@ -144,6 +144,12 @@ impl Build {
         self
     }
 
+    /// daslang's `daslib` directory, for `require daslib/NAME` (`--daslib DIR`).
+    pub fn daslib(mut self, dir: impl AsRef<Path>) -> Self {
+        self.options.daslib = Some(dir.as_ref().to_path_buf());
+        self
+    }
+
     /// Clip-space conventions of the WGSL/SPIR-V outputs (default portable).
     pub fn conventions(mut self, c: Conventions) -> Self {
         self.options.conventions = c;

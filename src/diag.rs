@@ -102,7 +102,8 @@ impl Diagnostic {
         if let Some(span) = self.span {
             for site in map.include_chain(span) {
                 if let Some((file, line, col)) = map.line_col(site) {
-                    notes.push(format!("included from {}:{}:{}", map.file(file).name, line, col));
+                    let how = if map.slice(site).starts_with("require") { "required" } else { "included" };
+                    notes.push(format!("{how} from {}:{}:{}", map.file(file).name, line, col));
                 }
             }
         }

@@ -55,6 +55,9 @@ pub struct Options {
     /// Allow `#include` to reach files outside the input's directory and the
     /// include directories.
     pub allow_outside_includes: bool,
+    /// `--daslib DIR`: daslang's `daslib` directory, where `require
+    /// daslib/NAME` finds `NAME.das`.
+    pub daslib: Option<PathBuf>,
 }
 
 impl Options {
@@ -217,9 +220,10 @@ fn run(mut sources: SourceMap, root: source::FileId, opts: &Options) -> Compilat
         include_dirs: opts.include_dirs.clone(),
         entries: opts.entries.clone(),
         allow_outside_includes: opts.allow_outside_includes,
+        daslib: opts.daslib.iter().cloned().collect(),
     };
     let program = syntax::parse(&mut sources, root, &parse_opts, &mut diags);
-    let checked = if diags.has_errors() { None } else { sema::check(&program, &mut diags) };
+    let checked = if diags.has_errors() { None } else { sema::check_for_targets(&program, &opts.targets(), &mut diags) };
     // Each tree is dropped as soon as the next stage has been built from
     // it, so the next stage's allocations reuse its memory, still in cache.
     drop(program);

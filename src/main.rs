@@ -130,6 +130,9 @@ struct CommonArgs {
     /// Let #include reach files outside the input's directory and the -I directories.
     #[arg(long)]
     allow_outside_includes: bool,
+    /// daslang's `daslib` directory, for `require daslib/NAME`.
+    #[arg(long, value_name = "DIR")]
+    daslib: Option<PathBuf>,
     /// How diagnostics are printed.
     #[arg(long, value_enum, default_value_t = MessageFormat::Human)]
     message_format: MessageFormat,
@@ -188,6 +191,7 @@ impl CommonArgs {
                 ConventionsArg::Native => Conventions::Native,
             },
             allow_outside_includes: self.allow_outside_includes,
+            daslib: self.daslib.clone(),
         }
     }
 }

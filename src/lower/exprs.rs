@@ -75,7 +75,10 @@ impl FnBuilder<'_, '_> {
             }
         }
         match &e.kind {
-            ExprKind::Float(v) => self.literal(naga::Literal::F32(*v as f32), s),
+            ExprKind::Float(v) => {
+                let l = self.m.float_literal(*v, e.ty.scalar().unwrap_or(Scalar::Float));
+                self.literal(l, s)
+            }
             ExprKind::Int(v) => self.literal(naga::Literal::I32(*v as i32), s),
             ExprKind::Uint(v) => self.literal(naga::Literal::U32(*v as u32), s),
             ExprKind::Bool(v) => self.literal(naga::Literal::Bool(*v), s),
@@ -139,6 +142,19 @@ impl FnBuilder<'_, '_> {
                     return self.append(E::Load { pointer: col }, s);
                 }
                 self.append(E::Access { base: b, index: i }, s)
+            }
+            ExprKind::Unary(UnaryOp::Neg, x) if matches!(x.ty, Ty::Matrix(..)) => {
+                // naga negates scalars and vectors: a matrix column by column.
+                let Ty::Matrix(c, _) = x.ty else { unreachable!("matched a matrix") };
+                let v = self.expr(x, block);
+                let cols = (0..c as u32)
+                    .map(|i| {
+                        let col = self.append(E::AccessIndex { base: v, index: i }, s);
+                        self.append(E::Unary { op: naga::UnaryOperator::Negate, expr: col }, s)
+                    })
+                    .collect();
+                let ty = self.m.ty(&e.ty);
+                self.append(E::Compose { ty, components: cols }, s)
             }
             ExprKind::Unary(op, x) => {
                 let v = self.expr(x, block);
@@ -266,6 +282,8 @@ impl FnBuilder<'_, '_> {
                 if rt.scalar() == Some(Scalar::Int) {
                     r = self.append(E::As { expr: r, kind: naga::ScalarKind::Uint, convert: Some(4) }, s);
                 }
+                // ... as wide as the value shifted (`v << 2` shifts every component).
+                r = self.splat_to(r, rt, lt, s);
                 if op == BinaryOp::Shl {
                     Bo::ShiftLeft
                 } else {
@@ -294,7 +312,7 @@ impl FnBuilder<'_, '_> {
                 }
                 let mut comps: Vec<Handle<E>> = hs.iter().zip(args).map(|(h, a)| self.convert(*h, &a.ty, *to, s)).collect();
                 if comps.iter().all(|&h| !self.is_emitted(h)) {
-                    comps = self.flatten_constant_vectors(comps, s);
+                    comps = self.flatten_constant_vectors(comps, *to, s);
                 }
                 let t = self.m.ty(ty);
                 self.append(E::Compose { ty: t, components: comps }, s)
@@ -303,6 +321,9 @@ impl FnBuilder<'_, '_> {
                 let t = self.m.ty(ty);
                 if hs.len() == 1 && args[0].ty == *ty {
                     return hs[0];
+                }
+                if let (1, Ty::Matrix(from_c, from_r)) = (hs.len(), &args[0].ty) {
+                    return self.matrix_from_matrix(hs[0], (*from_c, *from_r), (*c, *r), s);
                 }
                 let col_ty = self.m.ty(&Ty::Vector(Scalar::Float, *r));
                 let cols: Vec<Handle<E>> = if hs.len() == *c as usize && matches!(args[0].ty, Ty::Vector(..)) {
@@ -328,12 +349,42 @@ impl FnBuilder<'_, '_> {
         }
     }
 
+    /// A `to_c` x `to_r` matrix from a `from_c` x `from_r` one, as GLSL
+    /// defines it: element (column i, row j) comes from the argument where
+    /// it has one, from the identity elsewhere.
+    fn matrix_from_matrix(&mut self, m: Handle<E>, (from_c, from_r): (u8, u8), (to_c, to_r): (u8, u8), s: Span) -> Handle<E> {
+        let col_ty = self.m.ty(&Ty::Vector(Scalar::Float, to_r));
+        let (zero, one) = (self.literal(naga::Literal::F32(0.0), s), self.literal(naga::Literal::F32(1.0), s));
+        let mut cols = Vec::with_capacity(to_c as usize);
+        for i in 0..to_c {
+            let col = if i < from_c {
+                let src = self.append(E::AccessIndex { base: m, index: i as u32 }, s);
+                if from_r == to_r {
+                    src
+                } else if from_r > to_r {
+                    let comps: Vec<u8> = (0..to_r).collect();
+                    self.swizzle(src, &comps, s)
+                } else {
+                    let mut parts: Vec<Handle<E>> = (0..from_r).map(|j| self.append(E::AccessIndex { base: src, index: j as u32 }, s)).collect();
+                    parts.extend((from_r..to_r).map(|j| if i == j { one } else { zero }));
+                    self.append(E::Compose { ty: col_ty, components: parts }, s)
+                }
+            } else {
+                let parts = (0..to_r).map(|j| if i == j { one } else { zero }).collect();
+                self.append(E::Compose { ty: col_ty, components: parts }, s)
+            };
+            cols.push(col);
+        }
+        let ty = self.m.ty(&Ty::Matrix(to_c, to_r));
+        self.append(E::Compose { ty, components: cols }, s)
+    }
+
     /// The components of a vector built only from constants, with each
     /// vector constant replaced by its scalar values. naga's SPIR-V writer
     /// turns such a `Compose` into one `OpConstantComposite`, which must
     /// list scalars; a vector constituent (`float4(C, 1.0)` with
     /// `let C = float3(...)`) is invalid SPIR-V.
-    fn flatten_constant_vectors(&mut self, comps: Vec<Handle<E>>, s: Span) -> Vec<Handle<E>> {
+    fn flatten_constant_vectors(&mut self, comps: Vec<Handle<E>>, scalar: Scalar, s: Span) -> Vec<Handle<E>> {
         let mut out = Vec::with_capacity(4);
         for h in comps {
             let value = match self.func.expressions[h] {
@@ -344,7 +395,8 @@ impl FnBuilder<'_, '_> {
                 Some(sema::ConstValue::Composite(parts)) => {
                     for part in parts {
                         let lit = match part {
-                            sema::ConstValue::Float(v) => naga::Literal::F32(v as f32),
+                            // `float` or `half`, as the vector built.
+                            sema::ConstValue::Float(v) => self.m.float_literal(v, scalar),
                             sema::ConstValue::Int(v) => naga::Literal::I32(v as i32),
                             sema::ConstValue::Uint(v) => naga::Literal::U32(v as u32),
                             sema::ConstValue::Bool(v) => naga::Literal::Bool(v),

@@ -226,7 +226,11 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
         if from_scalar == Some(to) {
             return h;
         }
-        let width = if to == Scalar::Bool { 1 } else { 4 };
+        let width = match to {
+            Scalar::Bool => 1,
+            Scalar::Half => super::types::half_scalar(self.m.flavor).width,
+            _ => 4,
+        };
         self.append(E::As { expr: h, kind: naga_scalar(to).kind, convert: Some(width) }, s)
     }
 }

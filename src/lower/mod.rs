@@ -30,7 +30,7 @@
 //!   copies; `entry`: entry points (arguments, outputs, prologue/epilogue,
 //!   the clip-space adaptation);
 //! - `function` (the builder), `stmts`, `exprs`, `builtins`, `textures`,
-//!   `inverse`: function bodies.
+//!   `inverse`, `pack`: function bodies.
 
 mod builtins;
 mod entry;
@@ -43,6 +43,7 @@ mod helpers;
 pub mod interface;
 mod inverse;
 mod module;
+mod pack;
 mod reach;
 mod stmts;
 mod textures;

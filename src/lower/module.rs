@@ -76,7 +76,7 @@ impl<'p> ModuleBuilder<'p> {
             p,
             module: Module::default(),
             flavor,
-            types: TypeTable::default(),
+            types: TypeTable::for_flavor(flavor),
             globals: Vec::with_capacity(p.globals.len()),
             consts: vec![None; p.consts.len()],
             functions: Vec::with_capacity(p.functions.len()),
@@ -114,9 +114,26 @@ impl<'p> ModuleBuilder<'p> {
         }
     }
 
+    /// A `half` literal: `f16`, or `f32` in a GL module ([`types::half_scalar`]).
+    pub(super) fn half_literal(&self, v: f64) -> naga::Literal {
+        match self.flavor {
+            Flavor::Gl => naga::Literal::F32(v as f32),
+            Flavor::Gpu(_) => naga::Literal::F16(half::f16::from_f64(v)),
+        }
+    }
+
+    /// A float literal of `scalar` (`float` or `half`).
+    pub(super) fn float_literal(&self, v: f64, scalar: Scalar) -> naga::Literal {
+        match scalar {
+            Scalar::Half => self.half_literal(v),
+            _ => naga::Literal::F32(v as f32),
+        }
+    }
+
     /// Appends a constant value to the global expression arena.
     pub(super) fn const_expr(&mut self, v: &ConstValue, ty: &Ty) -> Handle<naga::Expression> {
         let expr = match (v, ty) {
+            (ConstValue::Float(f), Ty::Scalar(Scalar::Half)) => naga::Expression::Literal(self.half_literal(*f)),
             (ConstValue::Float(f), _) => naga::Expression::Literal(naga::Literal::F32(*f as f32)),
             (ConstValue::Int(i), _) => naga::Expression::Literal(naga::Literal::I32(*i as i32)),
             (ConstValue::Uint(u), _) => naga::Expression::Literal(naga::Literal::U32(*u as u32)),

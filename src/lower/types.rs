@@ -12,10 +12,23 @@ pub(super) fn naga_scalar(s: Scalar) -> naga::Scalar {
         Scalar::Int => naga::Scalar::I32,
         Scalar::Uint => naga::Scalar::U32,
         Scalar::Bool => naga::Scalar::BOOL,
+        Scalar::Half => naga::Scalar::F16,
     }
 }
 
-const SMALL_TYPE_SLOTS: usize = 4 * 4 + 3 * 3;
+/// The naga scalar of `half` in a module of `flavor`: `f16`, except in the
+/// GL modules, which stand in `f32`. The checker refuses `half` whenever a
+/// GLSL target is requested, so a GL module with `half` in it serves only
+/// the names GL hosts bind by (`emit` runs the GLSL writer for them) and
+/// its text is never written.
+pub(super) fn half_scalar(flavor: super::interface::Flavor) -> naga::Scalar {
+    match flavor {
+        super::interface::Flavor::Gl => naga::Scalar::F32,
+        super::interface::Flavor::Gpu(_) => naga::Scalar::F16,
+    }
+}
+
+const SMALL_TYPE_SLOTS: usize = 5 * 4 + 3 * 3;
 
 /// The slot in `TypeTable::small` of a scalar, vector or matrix.
 fn small_type_slot(ty: &Ty) -> Option<usize> {
@@ -30,11 +43,12 @@ fn small_type_slot(ty: &Ty) -> Option<usize> {
         Scalar::Int => 1,
         Scalar::Uint => 2,
         Scalar::Bool => 3,
+        Scalar::Half => 4,
     };
     match *ty {
         Ty::Scalar(s) => Some(scalar(s) * 4),
         Ty::Vector(s, n) => Some(scalar(s) * 4 + 1 + dim(n)),
-        Ty::Matrix(c, r) => Some(16 + dim(c) * 3 + dim(r)),
+        Ty::Matrix(c, r) => Some(20 + dim(c) * 3 + dim(r)),
         _ => None,
     }
 }
@@ -71,9 +85,15 @@ pub(super) struct TypeTable {
     /// Other types (arrays, structs).
     other: FxHashMap<Ty, Handle<Type>>,
     layouter: naga::proc::Layouter,
+    /// What `half` is in this module ([`half_scalar`]).
+    pub(super) half: Option<naga::Scalar>,
 }
 
 impl TypeTable {
+    pub(super) fn for_flavor(flavor: super::interface::Flavor) -> TypeTable {
+        TypeTable { half: Some(half_scalar(flavor)), ..TypeTable::default() }
+    }
+
     fn layout(&mut self, module: &Module, ty: Handle<Type>) -> naga::proc::TypeLayout {
         // The layouter only ever appends; types are never removed.
         if self.layouter.update(module.to_ctx()).is_err() {
@@ -92,9 +112,13 @@ impl TypeTable {
         if let Some(h) = known {
             return h;
         }
+        let scalar = |s: Scalar| match (s, self.half) {
+            (Scalar::Half, Some(h)) => h,
+            (s, _) => naga_scalar(s),
+        };
         let h = match ty {
-            Ty::Scalar(s) => add_type(module, None, TypeInner::Scalar(naga_scalar(*s))),
-            Ty::Vector(s, n) => add_type(module, None, TypeInner::Vector { size: vector_size(*n), scalar: naga_scalar(*s) }),
+            Ty::Scalar(s) => add_type(module, None, TypeInner::Scalar(scalar(*s))),
+            Ty::Vector(s, n) => add_type(module, None, TypeInner::Vector { size: vector_size(*n), scalar: scalar(*s) }),
             Ty::Matrix(c, r) => add_type(module, None, TypeInner::Matrix { columns: vector_size(*c), rows: vector_size(*r), scalar: naga::Scalar::F32 }),
             Ty::Array(elem, n) => {
                 let base = self.ty(module, p, elem);

@@ -13,7 +13,9 @@ pub fn validator(flavor: Flavor) -> naga::valid::Validator {
     use naga::valid::{Capabilities, ValidationFlags, Validator};
     let (flags, caps) = match flavor {
         Flavor::Gl => (ValidationFlags::all() - ValidationFlags::BINDINGS, naga::back::glsl::supported_capabilities()),
-        Flavor::Gpu(_) => (ValidationFlags::all(), Capabilities::default()),
+        // `packHalf2x16` needs SHADER_FLOAT16_IN_FLOAT32 (WebGPU has it
+        // everywhere), `half` needs SHADER_FLOAT16 (WebGPU's `shader-f16`).
+        Flavor::Gpu(_) => (ValidationFlags::all(), Capabilities::default() | Capabilities::SHADER_FLOAT16_IN_FLOAT32 | Capabilities::SHADER_FLOAT16),
     };
     Validator::new(flags, caps)
 }

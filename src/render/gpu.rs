@@ -270,8 +270,9 @@ impl Renderer {
         });
         let adapter = adapters.remove(0);
         let info = adapter.get_info();
+        // SHADER_F16: programs with `half` (WGSL `f16`), where the device has it.
         let required_features =
-            adapter.features() & (wgpu::Features::PASSTHROUGH_SHADERS | wgpu::Features::ADDRESS_MODE_CLAMP_TO_BORDER);
+            adapter.features() & (wgpu::Features::PASSTHROUGH_SHADERS | wgpu::Features::ADDRESS_MODE_CLAMP_TO_BORDER | wgpu::Features::SHADER_F16);
         let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
             label: Some("umbrac render"),
             required_features,

@@ -3,6 +3,8 @@
 //! Signatures are written in a small pattern language so that one table
 //! both checks calls and prints the expected signatures in errors:
 //! - `G`: float or floatN (every `G` in one signature is the same type)
+//! - `X`: like `G`, or half or halfN; `x` is the scalar of that `X` (the
+//!   functions WGSL and SPIR-V also have for `f16`)
 //! - `N`: a numeric scalar or vector, any scalar type (all `N` alike); `S`
 //!   is the scalar of that `N`
 //! - `I`: int or intN / uint or uintN (all `I` alike)
@@ -11,7 +13,7 @@
 
 use std::sync::OnceLock;
 
-use super::types::{Scalar, Ty, BOOL, FLOAT};
+use super::types::{SamplerKind, Scalar, Ty, BOOL, FLOAT};
 use rustc_hash::FxHashMap;
 use naga::MathFunction as Mf;
 
@@ -60,6 +62,36 @@ pub enum Builtin {
     /// `inverse(m)` of a square matrix: a helper function on every target
     /// (WGSL has none).
     Inverse,
+    // daslang's math module (`require math`), beyond GLSL's names.
+    /// `mad(a, b, c)`: `a * b + c`, two roundings (as daslang's own GLSL
+    /// prelude writes it; `fma` is the fused one). `b` may be a scalar.
+    Mad,
+    /// `length_sq(x)`: `dot(x, x)`.
+    LengthSq,
+    /// `distance_sq(a, b)`: `length_sq(a - b)`.
+    DistanceSq,
+    /// `inv_length(x)`: `1 / length(x)`.
+    InvLength,
+    /// `inv_length_sq(x)`: `1 / length_sq(x)`.
+    InvLengthSq,
+    /// `inv_distance(a, b)`: `1 / distance(a, b)`.
+    InvDistance,
+    /// `inv_distance_sq(a, b)`: `1 / distance_sq(a, b)`.
+    InvDistanceSq,
+    /// `floori`, `ceili`, `roundi`, `trunci`: the float function, then
+    /// `int(...)`.
+    ToInt(Mf),
+    /// `uint32_hash(seed)`: Squirrel Eiserloh's integer hash, as daslang's
+    /// math module computes it (wrapping `uint` arithmetic).
+    Hash,
+    /// `uint_noise_1D/2D/3D(position, seed)`: the hash of a position with a
+    /// seed, over `int`, `int2`, `int3` positions.
+    Noise,
+    /// `identity3x3()`, `identity4x4()` (and `identity2x2()`).
+    Identity,
+    /// `packUnorm4x8`, `unpackHalf2x16`, ...: one of naga's pack/unpack
+    /// functions (the GL modules compute the ones GLSL 330 or ES 300 lack).
+    Pack(Mf),
 }
 
 /// The range every target guarantees for a texel offset (GLSL's minimum
@@ -105,56 +137,57 @@ struct Entry {
 }
 
 const UNARY_G: &[Sig] = sigs!["G" <- ["G"]];
-const BINARY_G: &[Sig] = sigs!["G" <- ["G", "G"]];
+const UNARY_X: &[Sig] = sigs!["X" <- ["X"]];
+const BINARY_X: &[Sig] = sigs!["X" <- ["X", "X"]];
 
 const TABLE: &[Entry] = &[
-    Entry { name: "sin", builtin: Builtin::Math(Mf::Sin), sigs: UNARY_G },
-    Entry { name: "cos", builtin: Builtin::Math(Mf::Cos), sigs: UNARY_G },
-    Entry { name: "tan", builtin: Builtin::Math(Mf::Tan), sigs: UNARY_G },
-    Entry { name: "asin", builtin: Builtin::Math(Mf::Asin), sigs: UNARY_G },
-    Entry { name: "acos", builtin: Builtin::Math(Mf::Acos), sigs: UNARY_G },
-    Entry { name: "atan", builtin: Builtin::Math(Mf::Atan), sigs: UNARY_G },
-    Entry { name: "atan2", builtin: Builtin::Math(Mf::Atan2), sigs: BINARY_G },
-    Entry { name: "sinh", builtin: Builtin::Math(Mf::Sinh), sigs: UNARY_G },
-    Entry { name: "cosh", builtin: Builtin::Math(Mf::Cosh), sigs: UNARY_G },
-    Entry { name: "tanh", builtin: Builtin::Math(Mf::Tanh), sigs: UNARY_G },
-    Entry { name: "radians", builtin: Builtin::Math(Mf::Radians), sigs: UNARY_G },
-    Entry { name: "degrees", builtin: Builtin::Math(Mf::Degrees), sigs: UNARY_G },
-    Entry { name: "exp", builtin: Builtin::Math(Mf::Exp), sigs: UNARY_G },
-    Entry { name: "exp2", builtin: Builtin::Math(Mf::Exp2), sigs: UNARY_G },
-    Entry { name: "log", builtin: Builtin::Math(Mf::Log), sigs: UNARY_G },
-    Entry { name: "log2", builtin: Builtin::Math(Mf::Log2), sigs: UNARY_G },
-    Entry { name: "sqrt", builtin: Builtin::Math(Mf::Sqrt), sigs: UNARY_G },
-    Entry { name: "inversesqrt", builtin: Builtin::Math(Mf::InverseSqrt), sigs: UNARY_G },
-    Entry { name: "rsqrt", builtin: Builtin::Math(Mf::InverseSqrt), sigs: UNARY_G },
-    Entry { name: "floor", builtin: Builtin::Math(Mf::Floor), sigs: UNARY_G },
-    Entry { name: "ceil", builtin: Builtin::Math(Mf::Ceil), sigs: UNARY_G },
-    Entry { name: "fract", builtin: Builtin::Math(Mf::Fract), sigs: UNARY_G },
-    Entry { name: "trunc", builtin: Builtin::Math(Mf::Trunc), sigs: UNARY_G },
-    Entry { name: "round", builtin: Builtin::Math(Mf::Round), sigs: UNARY_G },
-    Entry { name: "roundEven", builtin: Builtin::Math(Mf::Round), sigs: UNARY_G },
+    Entry { name: "sin", builtin: Builtin::Math(Mf::Sin), sigs: UNARY_X },
+    Entry { name: "cos", builtin: Builtin::Math(Mf::Cos), sigs: UNARY_X },
+    Entry { name: "tan", builtin: Builtin::Math(Mf::Tan), sigs: UNARY_X },
+    Entry { name: "asin", builtin: Builtin::Math(Mf::Asin), sigs: UNARY_X },
+    Entry { name: "acos", builtin: Builtin::Math(Mf::Acos), sigs: UNARY_X },
+    Entry { name: "atan", builtin: Builtin::Math(Mf::Atan), sigs: UNARY_X },
+    Entry { name: "atan2", builtin: Builtin::Math(Mf::Atan2), sigs: BINARY_X },
+    Entry { name: "sinh", builtin: Builtin::Math(Mf::Sinh), sigs: UNARY_X },
+    Entry { name: "cosh", builtin: Builtin::Math(Mf::Cosh), sigs: UNARY_X },
+    Entry { name: "tanh", builtin: Builtin::Math(Mf::Tanh), sigs: UNARY_X },
+    Entry { name: "radians", builtin: Builtin::Math(Mf::Radians), sigs: UNARY_X },
+    Entry { name: "degrees", builtin: Builtin::Math(Mf::Degrees), sigs: UNARY_X },
+    Entry { name: "exp", builtin: Builtin::Math(Mf::Exp), sigs: UNARY_X },
+    Entry { name: "exp2", builtin: Builtin::Math(Mf::Exp2), sigs: UNARY_X },
+    Entry { name: "log", builtin: Builtin::Math(Mf::Log), sigs: UNARY_X },
+    Entry { name: "log2", builtin: Builtin::Math(Mf::Log2), sigs: UNARY_X },
+    Entry { name: "sqrt", builtin: Builtin::Math(Mf::Sqrt), sigs: UNARY_X },
+    Entry { name: "inversesqrt", builtin: Builtin::Math(Mf::InverseSqrt), sigs: UNARY_X },
+    Entry { name: "rsqrt", builtin: Builtin::Math(Mf::InverseSqrt), sigs: UNARY_X },
+    Entry { name: "floor", builtin: Builtin::Math(Mf::Floor), sigs: UNARY_X },
+    Entry { name: "ceil", builtin: Builtin::Math(Mf::Ceil), sigs: UNARY_X },
+    Entry { name: "fract", builtin: Builtin::Math(Mf::Fract), sigs: UNARY_X },
+    Entry { name: "trunc", builtin: Builtin::Math(Mf::Trunc), sigs: UNARY_X },
+    Entry { name: "round", builtin: Builtin::Math(Mf::Round), sigs: UNARY_X },
+    Entry { name: "roundEven", builtin: Builtin::Math(Mf::Round), sigs: UNARY_X },
     Entry { name: "abs", builtin: Builtin::Math(Mf::Abs), sigs: sigs!["N" <- ["N"]] },
     Entry { name: "sign", builtin: Builtin::Math(Mf::Sign), sigs: sigs!["N" <- ["N"]] },
     Entry { name: "min", builtin: Builtin::Math(Mf::Min), sigs: sigs!["N" <- ["N", "N"]; "N" <- ["N", "S"]] },
     Entry { name: "max", builtin: Builtin::Math(Mf::Max), sigs: sigs!["N" <- ["N", "N"]; "N" <- ["N", "S"]] },
     Entry { name: "clamp", builtin: Builtin::Math(Mf::Clamp), sigs: sigs!["N" <- ["N", "N", "N"]; "N" <- ["N", "S", "S"]] },
-    Entry { name: "saturate", builtin: Builtin::Saturate, sigs: UNARY_G },
-    Entry { name: "rcp", builtin: Builtin::Rcp, sigs: UNARY_G },
-    Entry { name: "mix", builtin: Builtin::Math(Mf::Mix), sigs: sigs!["G" <- ["G", "G", "G"]; "G" <- ["G", "G", "f"]] },
-    Entry { name: "lerp", builtin: Builtin::Math(Mf::Mix), sigs: sigs!["G" <- ["G", "G", "G"]; "G" <- ["G", "G", "f"]] },
-    Entry { name: "step", builtin: Builtin::Math(Mf::Step), sigs: sigs!["G" <- ["G", "G"]; "G" <- ["f", "G"]] },
-    Entry { name: "smoothstep", builtin: Builtin::Math(Mf::SmoothStep), sigs: sigs!["G" <- ["G", "G", "G"]; "G" <- ["f", "f", "G"]] },
-    Entry { name: "pow", builtin: Builtin::Math(Mf::Pow), sigs: BINARY_G },
-    Entry { name: "mod", builtin: Builtin::Mod, sigs: sigs!["G" <- ["G", "G"]; "G" <- ["G", "f"]] },
-    Entry { name: "fma", builtin: Builtin::Math(Mf::Fma), sigs: sigs!["G" <- ["G", "G", "G"]] },
-    Entry { name: "length", builtin: Builtin::Math(Mf::Length), sigs: sigs!["f" <- ["G"]] },
-    Entry { name: "distance", builtin: Builtin::Math(Mf::Distance), sigs: sigs!["f" <- ["G", "G"]] },
-    Entry { name: "dot", builtin: Builtin::Math(Mf::Dot), sigs: sigs!["f" <- ["G", "G"]] },
+    Entry { name: "saturate", builtin: Builtin::Saturate, sigs: UNARY_X },
+    Entry { name: "rcp", builtin: Builtin::Rcp, sigs: UNARY_X },
+    Entry { name: "mix", builtin: Builtin::Math(Mf::Mix), sigs: sigs!["X" <- ["X", "X", "X"]; "X" <- ["X", "X", "x"]] },
+    Entry { name: "lerp", builtin: Builtin::Math(Mf::Mix), sigs: sigs!["X" <- ["X", "X", "X"]; "X" <- ["X", "X", "x"]] },
+    Entry { name: "step", builtin: Builtin::Math(Mf::Step), sigs: sigs!["X" <- ["X", "X"]; "X" <- ["x", "X"]] },
+    Entry { name: "smoothstep", builtin: Builtin::Math(Mf::SmoothStep), sigs: sigs!["X" <- ["X", "X", "X"]; "X" <- ["x", "x", "X"]] },
+    Entry { name: "pow", builtin: Builtin::Math(Mf::Pow), sigs: BINARY_X },
+    Entry { name: "mod", builtin: Builtin::Mod, sigs: sigs!["X" <- ["X", "X"]; "X" <- ["X", "x"]] },
+    Entry { name: "fma", builtin: Builtin::Math(Mf::Fma), sigs: sigs!["X" <- ["X", "X", "X"]] },
+    Entry { name: "length", builtin: Builtin::Math(Mf::Length), sigs: sigs!["x" <- ["X"]] },
+    Entry { name: "distance", builtin: Builtin::Math(Mf::Distance), sigs: sigs!["x" <- ["X", "X"]] },
+    Entry { name: "dot", builtin: Builtin::Math(Mf::Dot), sigs: sigs!["x" <- ["X", "X"]] },
     Entry { name: "cross", builtin: Builtin::Math(Mf::Cross), sigs: sigs!["f3" <- ["f3", "f3"]] },
-    Entry { name: "normalize", builtin: Builtin::Math(Mf::Normalize), sigs: UNARY_G },
-    Entry { name: "reflect", builtin: Builtin::Math(Mf::Reflect), sigs: BINARY_G },
-    Entry { name: "refract", builtin: Builtin::Math(Mf::Refract), sigs: sigs!["G" <- ["G", "G", "f"]] },
-    Entry { name: "faceforward", builtin: Builtin::Math(Mf::FaceForward), sigs: sigs!["G" <- ["G", "G", "G"]] },
+    Entry { name: "normalize", builtin: Builtin::Math(Mf::Normalize), sigs: UNARY_X },
+    Entry { name: "reflect", builtin: Builtin::Math(Mf::Reflect), sigs: BINARY_X },
+    Entry { name: "refract", builtin: Builtin::Math(Mf::Refract), sigs: sigs!["X" <- ["X", "X", "x"]] },
+    Entry { name: "faceforward", builtin: Builtin::Math(Mf::FaceForward), sigs: sigs!["X" <- ["X", "X", "X"]] },
     Entry { name: "transpose", builtin: Builtin::Math(Mf::Transpose), sigs: sigs!["M" <- ["M"]] },
     Entry { name: "determinant", builtin: Builtin::Math(Mf::Determinant), sigs: sigs!["f" <- ["M"]] },
     Entry { name: "inverse", builtin: Builtin::Inverse, sigs: sigs!["M" <- ["M"]] },
@@ -186,6 +219,87 @@ const TABLE: &[Entry] = &[
         builtin: Builtin::Derivative(naga::DerivativeAxis::Width, naga::DerivativeControl::None),
         sigs: UNARY_G,
     },
+    // daslang's math module: its names for GLSL's functions, and the
+    // functions daslang's own GLSL generator writes a prelude for.
+    Entry { name: "fast_normalize", builtin: Builtin::Math(Mf::Normalize), sigs: UNARY_X },
+    Entry { name: "rcp_est", builtin: Builtin::Rcp, sigs: UNARY_X },
+    Entry { name: "rsqrt_est", builtin: Builtin::Math(Mf::InverseSqrt), sigs: UNARY_X },
+    Entry { name: "atan_est", builtin: Builtin::Math(Mf::Atan), sigs: UNARY_X },
+    Entry { name: "atan2_est", builtin: Builtin::Math(Mf::Atan2), sigs: BINARY_X },
+    Entry { name: "mad", builtin: Builtin::Mad, sigs: sigs!["N" <- ["N", "N", "N"]; "N" <- ["N", "S", "N"]] },
+    Entry { name: "length_sq", builtin: Builtin::LengthSq, sigs: sigs!["x" <- ["X"]] },
+    Entry { name: "distance_sq", builtin: Builtin::DistanceSq, sigs: sigs!["x" <- ["X", "X"]] },
+    Entry { name: "inv_length", builtin: Builtin::InvLength, sigs: sigs!["x" <- ["X"]] },
+    Entry { name: "inv_length_sq", builtin: Builtin::InvLengthSq, sigs: sigs!["x" <- ["X"]] },
+    Entry { name: "inv_distance", builtin: Builtin::InvDistance, sigs: sigs!["x" <- ["X", "X"]] },
+    Entry { name: "inv_distance_sq", builtin: Builtin::InvDistanceSq, sigs: sigs!["x" <- ["X", "X"]] },
+    Entry { name: "floori", builtin: Builtin::ToInt(Mf::Floor), sigs: sigs!["GI" <- ["G"]] },
+    Entry { name: "ceili", builtin: Builtin::ToInt(Mf::Ceil), sigs: sigs!["GI" <- ["G"]] },
+    Entry { name: "roundi", builtin: Builtin::ToInt(Mf::Round), sigs: sigs!["GI" <- ["G"]] },
+    Entry { name: "trunci", builtin: Builtin::ToInt(Mf::Trunc), sigs: sigs!["GI" <- ["G"]] },
+    Entry { name: "float_bits_to_int", builtin: Builtin::Bitcast(Scalar::Int), sigs: sigs!["GI" <- ["G"]] },
+    Entry { name: "float_bits_to_uint", builtin: Builtin::Bitcast(Scalar::Uint), sigs: sigs!["GU" <- ["G"]] },
+    Entry { name: "int_bits_to_float", builtin: Builtin::Bitcast(Scalar::Float), sigs: sigs!["G" <- ["GI"]] },
+    Entry { name: "uint_bits_to_float", builtin: Builtin::Bitcast(Scalar::Float), sigs: sigs!["G" <- ["GU"]] },
+    Entry { name: "uint32_hash", builtin: Builtin::Hash, sigs: sigs!["u" <- ["u"]] },
+    Entry { name: "uint_noise_1D", builtin: Builtin::Noise, sigs: sigs!["u" <- ["i", "u"]] },
+    Entry { name: "uint_noise_2D", builtin: Builtin::Noise, sigs: sigs!["u" <- ["i2", "u"]] },
+    Entry { name: "uint_noise_3D", builtin: Builtin::Noise, sigs: sigs!["u" <- ["i3", "u"]] },
+    Entry { name: "identity2x2", builtin: Builtin::Identity, sigs: sigs!["m2" <- []] },
+    Entry { name: "identity3x3", builtin: Builtin::Identity, sigs: sigs!["m3" <- []] },
+    Entry { name: "identity4x4", builtin: Builtin::Identity, sigs: sigs!["m4" <- []] },
+    // Packing (GLSL's names; WGSL's `pack4x8unorm` ...).
+    Entry { name: "packUnorm4x8", builtin: Builtin::Pack(Mf::Pack4x8unorm), sigs: sigs!["u" <- ["f4"]] },
+    Entry { name: "packSnorm4x8", builtin: Builtin::Pack(Mf::Pack4x8snorm), sigs: sigs!["u" <- ["f4"]] },
+    Entry { name: "packUnorm2x16", builtin: Builtin::Pack(Mf::Pack2x16unorm), sigs: sigs!["u" <- ["f2"]] },
+    Entry { name: "packSnorm2x16", builtin: Builtin::Pack(Mf::Pack2x16snorm), sigs: sigs!["u" <- ["f2"]] },
+    Entry { name: "packHalf2x16", builtin: Builtin::Pack(Mf::Pack2x16float), sigs: sigs!["u" <- ["f2"]] },
+    Entry { name: "unpackUnorm4x8", builtin: Builtin::Pack(Mf::Unpack4x8unorm), sigs: sigs!["f4" <- ["u"]] },
+    Entry { name: "unpackSnorm4x8", builtin: Builtin::Pack(Mf::Unpack4x8snorm), sigs: sigs!["f4" <- ["u"]] },
+    Entry { name: "unpackUnorm2x16", builtin: Builtin::Pack(Mf::Unpack2x16unorm), sigs: sigs!["f2" <- ["u"]] },
+    Entry { name: "unpackSnorm2x16", builtin: Builtin::Pack(Mf::Unpack2x16snorm), sigs: sigs!["f2" <- ["u"]] },
+    Entry { name: "unpackHalf2x16", builtin: Builtin::Pack(Mf::Unpack2x16float), sigs: sigs!["f2" <- ["u"]] },
+];
+
+/// Constants of daslang's `math` and `builtin` modules that shaders can
+/// use, with their `f32`/`i32`/`u32` values (a local or top-level name of
+/// the program hides one).
+pub const CONSTANTS: &[(&str, super::tree::ConstValue)] = {
+    use super::tree::ConstValue as C;
+    &[
+        ("PI", C::Float(std::f32::consts::PI as f64)),
+        ("FLT_EPSILON", C::Float(f32::EPSILON as f64)),
+        ("FLT_MAX", C::Float(f32::MAX as f64)),
+        ("FLT_MIN", C::Float(f32::MIN_POSITIVE as f64)),
+        ("INT_MAX", C::Int(i32::MAX as i64)),
+        ("INT_MIN", C::Int(i32::MIN as i64)),
+        ("UINT_MAX", C::Uint(u32::MAX as u64)),
+    ]
+};
+
+/// The value and type of a builtin constant.
+pub fn constant(name: &str) -> Option<(super::tree::ConstValue, Ty)> {
+    use super::tree::ConstValue as C;
+    CONSTANTS.iter().find(|(n, _)| *n == name).map(|(_, v)| {
+        let ty = match v {
+            C::Int(_) => super::types::INT,
+            C::Uint(_) => super::types::UINT,
+            _ => FLOAT,
+        };
+        (v.clone(), ty)
+    })
+}
+
+/// Names of daslang's module constants no shader type can hold, with what
+/// to do instead.
+pub const UNSUPPORTED_CONSTANTS: &[(&str, &str)] = &[
+    ("DBL_PI", "shaders have no `double`: use `PI`"),
+    ("DBL_EPSILON", "shaders have no `double`: use `FLT_EPSILON`"),
+    ("DBL_MAX", "shaders have no `double`: use `FLT_MAX`"),
+    ("DBL_MIN", "shaders have no `double`: use `FLT_MIN`"),
+    ("LONG_MAX", "shaders have no 64-bit integers: use `INT_MAX`"),
+    ("LONG_MIN", "shaders have no 64-bit integers: use `INT_MIN`"),
+    ("ULONG_MAX", "shaders have no 64-bit integers: use `UINT_MAX`"),
 ];
 
 /// Texture builtins: checked by `check_texture_call` (their signatures depend
@@ -204,12 +318,49 @@ pub const TEXTURE_FUNCTIONS: &[(&str, Builtin)] = &[
     ("texelFetchOffset", Builtin::TexelFetchOffset),
 ];
 
+/// GLSL 1.x's texture functions (`texture2D`, ...): the modern function
+/// each is, the sampler type it takes, and that function's name. They
+/// compile, with a warning.
+pub const LEGACY_TEXTURE_FUNCTIONS: &[(&str, Builtin, SamplerKind, &str)] = &[
+    ("texture2D", Builtin::Texture, SamplerKind::Sampler2D, "texture"),
+    ("texture2DLod", Builtin::TextureLod, SamplerKind::Sampler2D, "textureLod"),
+    ("texture3D", Builtin::Texture, SamplerKind::Sampler3D, "texture"),
+    ("texture3DLod", Builtin::TextureLod, SamplerKind::Sampler3D, "textureLod"),
+    ("textureCube", Builtin::Texture, SamplerKind::SamplerCube, "texture"),
+    ("textureCubeLod", Builtin::TextureLod, SamplerKind::SamplerCube, "textureLod"),
+];
+
 /// Names of GLSL functions the DSL deliberately lacks, with the reason and
 /// what to do instead.
 pub const UNSUPPORTED: &[(&str, &str)] = &[
     ("isnan", "WGSL has no isnan, and GPU compilers may assume that values are never NaN"),
     ("isinf", "WGSL has no isinf; compare against a large bound instead"),
     ("textureGather", "not supported yet"),
+    // daslang's math module: functions no target can run as daslang means
+    // them, or that build host-side data.
+    ("is_nan", "WGSL has no isnan, and GPU compilers may assume that values are never NaN"),
+    ("is_finite", "WGSL has no isinf or isnan; compare against a large bound instead"),
+    ("pack_float_to_byte", "daslang's byte rounding is its host CPU's; use packUnorm4x8(v / 255.0), which rounds to nearest on every target"),
+    ("unpack_byte_to_float", "use unpackUnorm4x8(u) * 255.0"),
+    ("quat_from_unit_arc", "quaternions are daslang host code; write the function in the shader"),
+    ("quat_from_unit_vec_ang", "quaternions are daslang host code; write the function in the shader"),
+    ("quat_from_euler", "quaternions are daslang host code; write the function in the shader"),
+    ("euler_from_quat", "quaternions are daslang host code; write the function in the shader"),
+    ("quat_mul", "quaternions are daslang host code; write the function in the shader"),
+    ("quat_mul_vec", "quaternions are daslang host code; write the function in the shader"),
+    ("quat_conjugate", "quaternions are daslang host code; write the function in the shader"),
+    ("quat_slerp", "quaternions are daslang host code; write the function in the shader"),
+    ("quat", "quaternions are daslang host code; write the function in the shader"),
+    ("translation", "build the matrix on the host and pass it as a `@uniform`"),
+    ("look_at", "build the matrix on the host and pass it as a `@uniform`"),
+    ("persp_forward", "build the matrix on the host and pass it as a `@uniform`"),
+    ("persp_reverse", "build the matrix on the host and pass it as a `@uniform`"),
+    ("compose", "build the matrix on the host and pass it as a `@uniform`"),
+    ("decompose", "decompose the matrix on the host and pass the parts as `@uniform`s"),
+    ("orthonormal_inverse", "use transpose(m) for a rotation, or inverse(m)"),
+    ("rotate", "daslang's `float3x4` is not umbrac's (docs/language.md); multiply by a `float3x3` instead"),
+    ("identity", "assign `identity4x4()` (or `identity3x3()`) instead"),
+    ("identity3x4", "daslang's `float3x4` is not umbrac's (docs/language.md); use `identity4x4()` or `float3x4(1.0)`"),
 ];
 
 /// Every builtin function name, for "did you mean" suggestions.
@@ -247,6 +398,9 @@ pub fn resolve<'t>(name: &str, args: impl ExactSizeIterator<Item = &'t Ty> + Clo
 #[derive(Default)]
 struct Bind {
     g: Option<u8>,
+    /// `X`'s scalar (float or half) and width.
+    xs: Option<Scalar>,
+    xw: Option<u8>,
     n: Option<(Scalar, u8)>,
     v: Option<(Scalar, u8)>,
     b: Option<u8>,
@@ -267,6 +421,15 @@ fn match_one(pat: &str, ty: &Ty, bind: &mut Bind) -> bool {
         "G" => match *ty {
             Ty::Scalar(Scalar::Float) => unify(&mut bind.g, 1),
             Ty::Vector(Scalar::Float, n) => unify(&mut bind.g, n),
+            _ => false,
+        },
+        "X" => match *ty {
+            Ty::Scalar(s) if s.is_float() => unify(&mut bind.xs, s) && unify(&mut bind.xw, 1),
+            Ty::Vector(s, n) if s.is_float() => unify(&mut bind.xs, s) && unify(&mut bind.xw, n),
+            _ => false,
+        },
+        "x" => match *ty {
+            Ty::Scalar(s) if s.is_float() => unify(&mut bind.xs, s),
             _ => false,
         },
         "N" => match (ty.scalar(), ty.width()) {
@@ -301,7 +464,13 @@ fn match_one(pat: &str, ty: &Ty, bind: &mut Bind) -> bool {
         },
         "f" => *ty == FLOAT,
         "b" => *ty == BOOL,
+        "i" => *ty == Ty::Scalar(Scalar::Int),
+        "u" => *ty == Ty::Scalar(Scalar::Uint),
+        "f2" => *ty == Ty::Vector(Scalar::Float, 2),
         "f3" => *ty == Ty::Vector(Scalar::Float, 3),
+        "f4" => *ty == Ty::Vector(Scalar::Float, 4),
+        "i2" => *ty == Ty::Vector(Scalar::Int, 2),
+        "i3" => *ty == Ty::Vector(Scalar::Int, 3),
         _ => false,
     }
 }
@@ -321,6 +490,8 @@ fn match_sig<'t>(sig: &Sig, args: impl ExactSizeIterator<Item = &'t Ty> + Clone)
     }
     Some(match sig.ret {
         "G" => Ty::vec(Scalar::Float, bind.g?),
+        "X" => Ty::vec(bind.xs.unwrap_or(Scalar::Float), bind.xw?),
+        "x" => Ty::Scalar(bind.xs.unwrap_or(Scalar::Float)),
         "GI" => Ty::vec(Scalar::Int, bind.g?),
         "GU" => Ty::vec(Scalar::Uint, bind.g?),
         "N" => {
@@ -334,7 +505,13 @@ fn match_sig<'t>(sig: &Sig, args: impl ExactSizeIterator<Item = &'t Ty> + Clone)
         }
         "f" => FLOAT,
         "b" => BOOL,
+        "u" => Ty::Scalar(Scalar::Uint),
+        "f2" => Ty::Vector(Scalar::Float, 2),
         "f3" => Ty::Vector(Scalar::Float, 3),
+        "f4" => Ty::Vector(Scalar::Float, 4),
+        "m2" => Ty::Matrix(2, 2),
+        "m3" => Ty::Matrix(3, 3),
+        "m4" => Ty::Matrix(4, 4),
         _ => return None,
     })
 }
@@ -342,6 +519,8 @@ fn match_sig<'t>(sig: &Sig, args: impl ExactSizeIterator<Item = &'t Ty> + Clone)
 fn pattern_text(p: &str) -> &'static str {
     match p {
         "G" => "floatN",
+        "X" => "floatN",
+        "x" => "float",
         "GI" => "intN",
         "GU" => "uintN",
         "N" => "T",
@@ -351,7 +530,16 @@ fn pattern_text(p: &str) -> &'static str {
         "M" => "floatCxR",
         "f" => "float",
         "b" => "bool",
+        "i" => "int",
+        "u" => "uint",
+        "f2" => "float2",
         "f3" => "float3",
+        "f4" => "float4",
+        "i2" => "int2",
+        "i3" => "int3",
+        "m2" => "float2x2",
+        "m3" => "float3x3",
+        "m4" => "float4x4",
         _ => "?",
     }
 }

@@ -57,7 +57,7 @@ fn collect_names_depth<'e>(e: &'e Expr, out: &mut Vec<&'e str>, depth: usize) {
 
 fn not_const(e: &Expr, what: &str) -> Diagnostic {
     Diagnostic::error(format!("{what} is not a constant expression"), e.span)
-        .with_note("top-level `let` values and array lengths must be computable at compile time: literals, other constants, arithmetic and constructors")
+        .with_note("top-level `let` values and array lengths must be computable at compile time: literals, other constants, arithmetic, constructors and builtin functions")
 }
 
 pub fn eval_const(e: &Expr, env: &dyn ConstEnv) -> Result<(ConstValue, Ty), Diagnostic> {
@@ -80,6 +80,7 @@ fn eval(e: &Expr, env: &dyn ConstEnv, depth: usize) -> Result<(ConstValue, Ty), 
         }
         ExprKind::Float(v) => Ok((ConstValue::Float(*v as f32 as f64), FLOAT)),
         ExprKind::Bool(b) => Ok((ConstValue::Bool(*b), BOOL)),
+        ExprKind::Half(v) => Ok((ConstValue::Float(*v), super::types::HALF)),
         ExprKind::Paren(x) => eval(x, env, d),
         ExprKind::Name(id) => env.lookup(&id.name).ok_or_else(|| not_const(e, &format!("`{}`", id.name))),
         ExprKind::Unary(op, x) => {
@@ -109,6 +110,9 @@ fn eval(e: &Expr, env: &dyn ConstEnv, depth: usize) -> Result<(ConstValue, Ty), 
             _ => Err(not_const(e, "this condition")),
         },
         ExprKind::Call { callee, args } => {
+            if let Some(why) = super::fold::never_constant(&callee.name) {
+                return Err(Diagnostic::error(why, e.span));
+            }
             let vals = args.iter().map(|a| eval(a, env, d)).collect::<Result<Vec<_>, _>>()?;
             if let Some(ty) = Ty::from_builtin_name(&callee.name) {
                 return construct(&ty, vals).map(|v| (v, ty.clone())).ok_or_else(|| Diagnostic::error(format!("wrong arguments for `{}(...)` in a constant", callee.name), e.span));
@@ -118,6 +122,13 @@ fn eval(e: &Expr, env: &dyn ConstEnv, depth: usize) -> Result<(ConstValue, Ty), 
                     return Err(Diagnostic::error(format!("wrong arguments for `{}(...)` in a constant", callee.name), e.span));
                 }
                 return Ok((ConstValue::Composite(vals.into_iter().map(|v| v.0).collect()), ty));
+            }
+            if let Some((msg, help)) = super::types::unsupported_type(&callee.name) {
+                return Err(Diagnostic::error(msg, callee.span).with_note(format!("help: {help}")));
+            }
+            // Builtin functions: `sema::fold`.
+            if let Some(folded) = super::fold::call(&callee.name, &vals) {
+                return folded.map_err(|msg| Diagnostic::error(msg, e.span).with_note("this call is evaluated at compile time"));
             }
             Err(not_const(e, &format!("a call of `{}`", callee.name)))
         }
@@ -196,6 +207,8 @@ pub fn convert(c: &ConstValue, to: Scalar) -> Option<ConstValue> {
             _ => (f as f32).clamp(0.0, 4294967040.0) as u32 as u64,
         }),
         Scalar::Bool => ConstValue::Bool(f != 0.0),
+        // Rounded once, to nearest even (from an f32 value or an integer).
+        Scalar::Half => ConstValue::Float(half::f16::from_f64(f).to_f64()),
     })
 }
 
@@ -217,6 +230,9 @@ fn construct(ty: &Ty, vals: Vec<(ConstValue, Ty)>) -> Option<ConstValue> {
             comps.iter().map(|c| convert(c, s)).collect::<Option<Vec<_>>>().map(ConstValue::Composite)
         }
         Ty::Matrix(c, r) => {
+            if let [(m, Ty::Matrix(..))] = vals.as_slice() {
+                return Some(super::fold::matrix_from_matrix(m, c, r));
+            }
             let (c, r) = (c as usize, r as usize);
             let flat: Vec<ConstValue> = if flat.len() == 1 {
                 (0..c * r).map(|i| if i / r == i % r { flat[0].clone() } else { ConstValue::Float(0.0) }).collect()
@@ -271,7 +287,7 @@ pub fn binary(op: BinaryOp, a: &ConstValue, ta: &Ty, b: &ConstValue, tb: &Ty) ->
     use BinaryOp::*;
     let show = |t: &Ty| super::types::TyDisplay { ty: t, struct_names: &[], enum_names: &[] }.to_string();
     let mismatch = || format!("type mismatch in constant: `{}` and `{}` operands", show(ta), show(tb));
-    if matches!(op, Shl | Shr) && ta.scalar().is_some_and(|s| s.is_integer()) && tb.scalar().is_some_and(|s| s.is_integer()) && ta.width() == tb.width() {
+    if matches!(op, Shl | Shr) && ta.scalar().is_some_and(|s| s.is_integer()) && tb.scalar().is_some_and(|s| s.is_integer()) && (ta.width() == tb.width() || tb.width() == Some(1)) {
         // The amount may be int or uint; the result has the left operand's type.
         let amounts: Vec<i64> = scalars(b).iter().map(|c| match c {
             ConstValue::Int(i) => *i,
@@ -312,12 +328,15 @@ pub fn binary(op: BinaryOp, a: &ConstValue, ta: &Ty, b: &ConstValue, tb: &Ty) ->
     let get = |s: &[ConstValue], i: usize| if s.len() == 1 { s[0].clone() } else { s[i].clone() };
     let result_ty = if wa >= wb { ta.clone() } else { tb.clone() };
     let cmp = matches!(op, Eq | Ne | Lt | Le | Gt | Ge | And | Or | Xor);
+    // `half` arithmetic rounds to binary16 (`sema::fold`).
+    let is_half = ta.scalar() == Some(Scalar::Half);
     if cmp && w != 1 {
         return Err("vector comparisons are not supported in constants".into());
     }
     // One component at a time; a scalar result needs no vector.
     let fold = |x: ConstValue, y: ConstValue| -> Result<ConstValue, String> {
         Ok(match (x, y) {
+            (ConstValue::Float(x), ConstValue::Float(y)) if is_half && !cmp => super::fold::half_op(op, x, y)?,
             (ConstValue::Float(x), ConstValue::Float(y)) => {
                 // In f32, one rounding per operation, as the GPU computes.
                 let (x, y) = (x as f32, y as f32);

@@ -8,11 +8,12 @@
 pub mod builtins;
 mod check;
 pub mod consts;
+pub(crate) mod fold;
 pub mod limits;
 pub mod tree;
 pub mod types;
 
-pub use check::{check, op_text};
+pub use check::{check, check_for_targets, op_text};
 pub use limits::{MAX_ARRAY_LEN, MAX_DEPTH, MAX_LOCATIONS};
 pub use tree::*;
 pub use types::{SamplerKind, Scalar, Ty};

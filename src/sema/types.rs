@@ -9,6 +9,9 @@ pub enum Scalar {
     Int,
     Uint,
     Bool,
+    /// `half` (`float16`): 16-bit float, WGSL's `f16` and SPIR-V's Float16;
+    /// no GLSL target has it.
+    Half,
 }
 
 impl Scalar {
@@ -18,7 +21,13 @@ impl Scalar {
             Scalar::Int => "int",
             Scalar::Uint => "uint",
             Scalar::Bool => "bool",
+            Scalar::Half => "half",
         }
+    }
+
+    /// `float` or `half`.
+    pub fn is_float(self) -> bool {
+        matches!(self, Scalar::Float | Scalar::Half)
     }
 
     pub fn is_numeric(self) -> bool {
@@ -132,13 +141,15 @@ pub const FLOAT: Ty = Ty::Scalar(Scalar::Float);
 pub const INT: Ty = Ty::Scalar(Scalar::Int);
 pub const UINT: Ty = Ty::Scalar(Scalar::Uint);
 pub const BOOL: Ty = Ty::Scalar(Scalar::Bool);
+pub const HALF: Ty = Ty::Scalar(Scalar::Half);
 
 /// Vector type names by scalar (`Scalar` order) and size 2-4.
-const VECTOR_NAMES: [[&str; 3]; 4] = [
+const VECTOR_NAMES: [[&str; 3]; 5] = [
     ["float2", "float3", "float4"],
     ["int2", "int3", "int4"],
     ["uint2", "uint3", "uint4"],
     ["bool2", "bool3", "bool4"],
+    ["half2", "half3", "half4"],
 ];
 
 /// Matrix type names by columns and rows 2-4.
@@ -201,6 +212,17 @@ impl Ty {
     }
 
     /// A sampler or an array of samplers.
+    /// Whether `half` is part of the type (a struct's fields are looked up
+    /// in `structs`).
+    pub fn has_half(&self, structs: &[super::tree::StructDef]) -> bool {
+        match self {
+            Ty::Scalar(Scalar::Half) | Ty::Vector(Scalar::Half, _) => true,
+            Ty::Array(elem, _) => elem.has_half(structs),
+            Ty::Struct(id) => structs.get(*id).is_some_and(|s| s.fields.iter().any(|f| f.1.has_half(structs))),
+            _ => false,
+        }
+    }
+
     pub fn is_sampler_like(&self) -> bool {
         match self {
             Ty::Sampler(_) => true,
@@ -214,7 +236,10 @@ impl Ty {
         if let Some(k) = SamplerKind::from_name(name) {
             return Some(Ty::Sampler(k));
         }
-        let (base, scalar) = [("float", Scalar::Float), ("int", Scalar::Int), ("uint", Scalar::Uint), ("bool", Scalar::Bool)]
+        if name == "float16" {
+            return Some(Ty::Scalar(Scalar::Half));
+        }
+        let (base, scalar) = [("float", Scalar::Float), ("int", Scalar::Int), ("uint", Scalar::Uint), ("bool", Scalar::Bool), ("half", Scalar::Half)]
             .into_iter()
             .find(|(p, _)| name.starts_with(p))?;
         let rest = &name[base.len()..];
@@ -225,6 +250,29 @@ impl Ty {
             _ => None,
         }
     }
+}
+
+/// Why a type name no target has is refused (`int8`, `byte2`, `uint64`,
+/// `double`), and what to use instead; `None` for other names.
+pub fn unsupported_type(name: &str) -> Option<(String, &'static str)> {
+    let (base, digits) = match name.find(|c: char| c.is_ascii_digit()) {
+        Some(k) => (&name[..k], &name[k..]),
+        None => (name, ""),
+    };
+    let bits = match (base, digits) {
+        ("int" | "uint", "8" | "16" | "64") => digits,
+        ("byte" | "ubyte" | "char" | "uchar", "" | "2" | "3" | "4") => "8",
+        ("short" | "ushort", "" | "2" | "3" | "4") => "16",
+        ("long" | "ulong", "" | "2" | "3" | "4") | ("int64" | "uint64", _) => "64",
+        ("double", "" | "2" | "3" | "4") => return Some((format!("`{name}` (64-bit float) is not supported by any target (glsl330, gles300, wgsl, spirv)"), "GLSL 330, GLSL ES 3.00 and WGSL have no double precision: use `float`")),
+        _ => return None,
+    };
+    let help = match bits {
+        "8" => "GLSL 330, GLSL ES 3.00 and WGSL have no 8-bit integers: use `int`/`uint` (vectors `int2`, `uint4`, ...) and mask with `& 0xFF`, or keep four bytes in a `uint` (packUnorm4x8 / unpackUnorm4x8)",
+        "16" => "GLSL 330, GLSL ES 3.00 and WGSL have no 16-bit integers: use `int`/`uint` (vectors `int2`, `uint4`, ...), or keep two halves in a `uint`",
+        _ => "GLSL 330, GLSL ES 3.00 and WGSL have no 64-bit integers: use `int`/`uint`, or two `uint`s",
+    };
+    Some((format!("`{name}` ({bits}-bit integer) is not supported by any target (glsl330, gles300, wgsl, spirv)"), help))
 }
 
 /// Displays a type by its DSL spelling; struct names come from the program.

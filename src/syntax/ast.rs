@@ -121,6 +121,9 @@ impl fmt::Display for Name {
 pub struct Program {
     /// Items in source order.
     pub items: Vec<Item>,
+    /// Required modules that were not found, for the checker's errors
+    /// about names nothing defines.
+    pub modules_not_found: Vec<super::modules::MissingModule>,
 }
 
 #[derive(Clone, Debug)]
@@ -389,4 +392,7 @@ pub enum ExprKind {
     /// `name = value` as a call argument: a field of a struct construction
     /// (`Light(color = c, k = 1.0)`).
     Named(Ident, Box<Expr>),
+    /// A `half` literal (`1.5h`): its value, rounded once from the decimal
+    /// to the nearest binary16 value (held exactly in the `f64`).
+    Half(f64),
 }

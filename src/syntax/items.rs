@@ -50,6 +50,9 @@ pub struct RawItem {
     /// A `def` annotated `[vertex_program]`, `[fragment_program]` or
     /// `[compute_program]`.
     pub entry: bool,
+    /// From a required module (`syntax::modules`): never a starting point
+    /// of the selection, only reached by name (its globals too).
+    pub from_module: bool,
 }
 
 impl RawItem {
@@ -246,7 +249,7 @@ pub fn split(toks: &[Token], map: &SourceMap) -> Vec<RawItem> {
         }
         .max(i + 1);
         let mut item =
-            RawItem { kind, annots, body: i..end, names: 0..0, block_names: Vec::new(), shader_global: false, entry: false };
+            RawItem { kind, annots, body: i..end, names: 0..0, block_names: Vec::new(), shader_global: false, entry: false, from_module: false };
         let mut k = i + 1;
         match kind {
             ItemKind::Def | ItemKind::Struct | ItemKind::Class | ItemKind::Enum => {
@@ -501,7 +504,15 @@ pub fn select(
     }
 
     let mut decls = Decls { names: FxHashMap::with_capacity_and_hasher(items.len(), Default::default()), links: Vec::with_capacity(items.len()), lens: 0 };
+    // The input's own top-level names hide a module's (`syntax::modules`).
+    let own_names: rustc_hash::FxHashSet<&str> = match items.iter().any(|item| item.from_module) {
+        true => items.iter().filter(|item| !item.from_module).flat_map(|item| item.names().map(|k| texts.get(toks[k].span))).collect(),
+        false => Default::default(),
+    };
     for (i, item) in items.iter().enumerate() {
+        if item.from_module && item.first_name().is_some_and(|k| own_names.contains(texts.get(toks[k].span))) {
+            continue;
+        }
         match item.kind {
             ItemKind::Def | ItemKind::Struct | ItemKind::Class | ItemKind::Enum if !item.entry => {
                 if let Some(k) = item.first_name() {
@@ -515,7 +526,9 @@ pub fn select(
                     decls.add(texts.get(toks[k].span), i);
                 }
             }
-            ItemKind::Var if !item.shader_global => {
+            // Module variables (a shader's, or any of a required module's)
+            // are found by name.
+            ItemKind::Var if !item.shader_global || item.from_module => {
                 for k in item.names() {
                     decls.add(texts.get(toks[k].span), i);
                 }
@@ -527,7 +540,7 @@ pub fn select(
     let mut selected = vec![false; items.len()];
     let mut work: Vec<usize> = Vec::new();
     for (i, item) in items.iter().enumerate() {
-        if item.shader_global {
+        if item.shader_global && !item.from_module {
             selected[i] = true;
             work.push(i);
         }
@@ -545,7 +558,8 @@ pub fn select(
             if toks[k].kind != TokKind::Ident || !decls.may_declare(&toks[k]) {
                 continue;
             }
-            if k > 0 && matches!(toks[k - 1].kind, TokKind::P(P::Dot | P::QuestionDot | P::Arrow | P::ColonColon)) {
+            // A field (`a.b`) is no top-level name; `module::name` is.
+            if k > 0 && matches!(toks[k - 1].kind, TokKind::P(P::Dot | P::QuestionDot | P::Arrow)) {
                 continue;
             }
             let Some(d) = decls.names.get(texts.get(toks[k].span)) else { continue };

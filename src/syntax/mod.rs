@@ -11,11 +11,13 @@
 //! - [`lexer`]: bytes to tokens, never failing
 //! - [`preprocess`]: `#include`, `#define`, `#ifdef` ... on tokens
 //! - [`items`]: top-level splitting and reachability
+//! - [`modules`]: `require`d daslang modules, read as far as shaders reach
 //! - [`parser`]: recursive descent over one selected item
 
 pub mod ast;
 pub mod items;
 pub mod lexer;
+pub mod modules;
 pub mod parser;
 pub mod preprocess;
 pub mod token;
@@ -35,6 +37,9 @@ pub struct ParseOptions {
     /// Entry points to keep; empty keeps all.
     pub entries: Vec<String>,
     pub allow_outside_includes: bool,
+    /// `--daslib DIR`: daslang's `daslib` directory, for `require daslib/...`
+    /// (a list, so that it is empty when not given).
+    pub daslib: Vec<PathBuf>,
 }
 
 /// Reads a source file as UTF-8 text (at most [`MAX_FILE_SIZE`] bytes).
@@ -84,12 +89,13 @@ pub fn parse(map: &mut SourceMap, root: FileId, opts: &ParseOptions, diags: &mut
         }
         Span::new(f.base, f.base)
     };
-    let toks = preprocess::preprocess(map, root, opts, diags);
+    let mut toks = preprocess::preprocess(map, root, opts, diags);
+    let mut raw = items::split(&toks, map);
+    let modules_not_found = modules::load(map, root, &mut toks, &mut raw, opts, diags);
     let map: &SourceMap = map;
-    let raw = items::split(&toks, map);
     let selected = items::select(&raw, &toks, map, &opts.entries, root_span, diags);
     let texts = token::Texts::new(map);
-    let mut program = ast::Program { items: Vec::with_capacity(selected.len()) };
+    let mut program = ast::Program { items: Vec::with_capacity(selected.len()), modules_not_found };
     for i in selected {
         let item = &raw[i];
         // Lexing errors count only inside items that are parsed.

@@ -107,6 +107,9 @@ fn snippets() -> BTreeMap<&'static str, String> {
     add("ssbo", frag("struct P {\n    v : float4\n}\nvar @ssbo buf : P", "    f_color = buf.v"));
     add("groupshared", frag("var @groupshared tile : float4[4]", "    f_color = tile[0]"));
     functions_and_data(&mut add);
+    for (id, src) in snippets_language_l() {
+        add(id, src);
+    }
     m
 }
 
@@ -147,6 +150,28 @@ const NEEDLES_FUNCTIONS_AND_DATA: &[(&str, Target, &str, &str, bool)] = &[
     ("enums", Target::Wgsl, ".wgsl", "i32", true),
 ];
 
+/// The rows of docs/features.md's "daslang's math module, modules and
+/// types" section.
+fn snippets_language_l() -> Vec<(&'static str, String)> {
+    vec![
+        ("matrix-from-matrix", frag("var @uniform u_m : float4x4", "    let n = float3x3(u_m)\n    let a = float4x4(n)\n    let b = float2x3(u_m)\n    let c = float4x2(float2x2(n))\n    f_color = a * float4(n * b[0], 1.0) + c[3].xyxy + (-u_m)[2]")),
+        ("math-module", frag("require math\nvar @uniform u_x : float3\nvar @uniform u_i : int2", "    let a = mad(u_x, 2.0, u_x) + mad(u_x, u_x, u_x) + fast_normalize(u_x) + float3(mad(u_i.x, 2, 1))\n    let b = length_sq(u_x) + distance_sq(u_x, a) + inv_length(u_x) + inv_length_sq(u_x) + inv_distance(u_x, a) + inv_distance_sq(u_x, a)\n    let c = rcp_est(b) + rsqrt_est(b) + atan_est(b) + atan2_est(b, 1.0)\n    let d = floori(u_x) + ceili(u_x) + roundi(u_x) + trunci(u_x) + float_bits_to_int(u_x)\n    let e = int_bits_to_float(d) + uint_bits_to_float(float_bits_to_uint(u_x))\n    let m = identity3x3() * a + (identity4x4() * float4(e, 1.0)).xyz\n    f_color = float4(m + float3(c + PI + FLT_EPSILON + FLT_MAX * 0.0 + float(INT_MAX) * 0.0), float(UINT_MAX & uint(INT_MIN + 1)))")),
+        ("sincos", frag("var @uniform u_a : float", "    var s, c : float\n    sincos(u_a, s, c)\n    f_color = float4(s, c, 0.0, 1.0)")),
+        ("noise-hash", frag("var @uniform u_seed : uint\nvar @uniform u_p : int3", "    let a = uint32_hash(u_seed) ^ uint_noise_1D(u_p.x, u_seed) ^ uint_noise_2D(u_p.xy, u_seed) ^ uint_noise_3D(u_p, u_seed)\n    f_color = float4(float(a >> 8u) / 16777216.0)")),
+        ("daslang-host-math", frag("var @uniform u_q : float4", "    f_color = float4(quat_mul_vec(u_q, float3(1.0)), 1.0)")),
+        ("pack-unpack", frag("var @uniform u_v : float4\nvar @uniform u_u : uint", "    let a = packUnorm4x8(u_v) ^ packSnorm4x8(u_v) ^ packUnorm2x16(u_v.xy) ^ packSnorm2x16(u_v.zw) ^ packHalf2x16(u_v.xy)\n    f_color = unpackUnorm4x8(a) + unpackSnorm4x8(u_u) + float4(unpackUnorm2x16(u_u), unpackSnorm2x16(a)) + float4(unpackHalf2x16(u_u), 0.0, 0.0)")),
+        ("vector-shift-scalar", frag("var @uniform u_v : int3\nvar @uniform u_n : uint", "    let a = u_v << 2\n    var b = uint4(u_n) >> u_n\n    b <<= 1u\n    f_color = float4(float3(a), float(b.x))")),
+        ("texture2D", frag("var @uniform t : sampler2D\nvar @uniform c : samplerCube", "    f_color = texture2D(t, float2(0.5)) + texture2DLod(t, float2(0.5), 1.0) + textureCube(c, float3(1.0))")),
+        ("constant-builtin-calls", frag("let SUN : float3 = normalize(float3(0.45, 0.55, 0.85))\nlet K = cos(radians(30.0)) * PI\nlet M = float3x3(identity4x4())\nlet N = uint_noise_2D(int2(3, 4), 7u) >> 16u", "    f_color = float4(M * SUN * K, float(N))")),
+        ("constant-undefined-call", frag("let K = sqrt(-1.0)", "    f_color = float4(K)")),
+        ("require-modules", "require math\nrequire glfw/glfw_boost\nrequire shaders/features/include/shaderlib/tonemap\nvar @out f_color : float4\n[fragment_program]\ndef fs {\n    f_color = float4(tonemap::aces(palette_ramp(0.5)) * math::saturate(2.0), 1.0)\n}\n".to_string()),
+        ("half", frag("let K = 0.5h\ndef tone(c : half3) : half3 {\n    return c / (c + half3(K)) + sin(c) * 0.25h\n}\nvar @uniform u_x : float3", "    let h = tone(half3(u_x)) * half(2) + max(half3(float16(1.0)), half3(0.0h))\n    f_color = float4(float3(h), float(length(h)))")),
+        ("half-interface", frag("var @uniform u_h : half", "    f_color = float4(float(u_h))")),
+        ("small-integers", frag("", "    let b = byte2(1, 2)\n    f_color = float4(1.0)")),
+        ("wide-integers-double", frag("", "    var x : int64\n    var d : double\n    f_color = float4(1.0)")),
+    ]
+}
+
 /// Extra properties of some outputs: (snippet, target, file suffix, text
 /// that must or must not appear).
 const NEEDLES: &[(&str, Target, &str, &str, bool)] = &[
@@ -178,6 +203,13 @@ const NEEDLES: &[(&str, Target, &str, &str, bool)] = &[
     ("bind-groups", Target::Wgsl, ".wgsl", "@group(1) @binding(0) ", true),
     ("bind-groups", Target::Wgsl, ".wgsl", "@group(0) @binding(0) ", true),
     ("module-variables", Target::Wgsl, ".wgsl", "var<private> count: i32 = i32();", true),
+    ("pack-unpack", Target::Glsl330, ".330.frag", "pack", false),
+    ("pack-unpack", Target::Gles300, ".300es.frag", "pack", false),
+    ("pack-unpack", Target::Wgsl, ".wgsl", "pack2x16float(", true),
+    ("half", Target::Wgsl, ".wgsl", "enable f16;", true),
+    ("constant-builtin-calls", Target::Wgsl, ".wgsl", "const SUN: vec3<f32> = vec3<f32>(0.4061643f, 0.49642307f, 0.7671993f);", true),
+    ("constant-builtin-calls", Target::Glsl330, ".330.frag", "const vec3 SUN = vec3(0.4061643, 0.49642307, 0.7671993);", true),
+    ("texture2D", Target::Glsl330, ".330.frag", "texture2D", false),
 ];
 
 #[derive(Debug, PartialEq)]

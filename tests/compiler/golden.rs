@@ -18,7 +18,7 @@ fn every_program_matches_its_golden_outputs() {
     let mut failures = Vec::new();
     for p in &programs {
         let rel = p.strip_prefix(env!("CARGO_MANIFEST_DIR")).unwrap();
-        let c = umbrac::compile_file(rel, &umbrac::Options::default());
+        let c = umbrac::compile_file(rel, &options_of(p));
         let Some(compiled) = c.result.as_ref() else {
             failures.push(format!("{} does not compile:\n{}", rel.display(), c.render_diagnostics()));
             continue;
@@ -29,4 +29,22 @@ fn every_program_matches_its_golden_outputs() {
         }
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// The options a program under shaders/ asks for on its first line,
+/// `// umbrac: --target wgsl --target spirv` (a program with a construct
+/// only some targets have: shaders/wgsl_spirv/); default: all targets.
+fn options_of(path: &Path) -> umbrac::Options {
+    let text = std::fs::read_to_string(path).unwrap_or_default();
+    let mut opts = umbrac::Options::default();
+    if let Some(args) = text.lines().next().and_then(|l| l.strip_prefix("// umbrac:")) {
+        let words: Vec<&str> = args.split_whitespace().collect();
+        for pair in words.chunks(2) {
+            match pair {
+                ["--target", t] => opts.targets.push(umbrac::Target::from_name(t).unwrap_or_else(|| panic!("{}: unknown target `{t}`", path.display()))),
+                other => panic!("{}: unknown option {other:?} on the first line", path.display()),
+            }
+        }
+    }
+    opts
 }

@@ -26,6 +26,7 @@ mod constants;
 #[cfg(feature = "deserialize")]
 mod emit;
 mod features;
+mod language_l;
 #[cfg(feature = "golden")]
 mod golden;
 mod language_f;

@@ -17,6 +17,7 @@ mod consumers;
 mod differential;
 #[cfg(feature = "render")]
 mod language_f;
+mod features_l;
 #[cfg(feature = "render")]
 mod numerics;
 #[cfg(feature = "render")]

@@ -34,21 +34,34 @@ pub fn checks(decls: &str, checks: &[&str]) -> String {
 /// Compiles `src` and draws it on every consumer available: the name of
 /// each with its pixels (four words each).
 pub fn run(name: &str, src: &str, width: u32) -> Vec<(&'static str, Vec<[u32; 4]>)> {
-    let c = umbrac::compile_source(&format!("{name}.das"), src, &umbrac::Options::default());
+    run_for(name, src, width, &umbrac::Options::default())
+}
+
+/// [`run`], compiled with `opts`: only the consumers of the targets it
+/// requests draw (all, when it requests none).
+pub fn run_for(name: &str, src: &str, width: u32, opts: &umbrac::Options) -> Vec<(&'static str, Vec<[u32; 4]>)> {
+    let targets = opts.targets();
+    let c = umbrac::compile_source(&format!("{name}.das"), src, opts);
     let Some(compiled) = c.result.as_ref().filter(|_| !c.has_errors()) else {
         panic!("{name} does not compile:\n{}\n{src}", c.render_diagnostics());
     };
     let mut out = Vec::new();
-    if let Some(r) = support::gpu::vulkan() {
-        out.push(("wgpu WGSL", wgpu_draw(r, compiled, name, false, width)));
-        if r.device().0.features().contains(wgpu::Features::PASSTHROUGH_SHADERS) {
+    let (wgsl, spirv) = (targets.contains(&umbrac::Target::Wgsl), targets.contains(&umbrac::Target::Spirv));
+    if let Some(r) = support::gpu::vulkan().filter(|_| wgsl || spirv) {
+        if wgsl {
+            out.push(("wgpu WGSL", wgpu_draw(r, compiled, name, false, width)));
+        }
+        if spirv && r.device().0.features().contains(wgpu::Features::PASSTHROUGH_SHADERS) {
             out.push(("wgpu SPIR-V", wgpu_draw(r, compiled, name, true, width)));
-        } else {
+        } else if spirv {
             support::skip("the Vulkan device lacks PASSTHROUGH_SHADERS: raw SPIR-V not run");
         }
     }
     #[cfg(feature = "gl")]
     for api in [umbrac::render::gl::GlApi::Gl330, umbrac::render::gl::GlApi::Gles300] {
+        if !targets.contains(&api.target()) {
+            continue;
+        }
         if let Some(r) = support::gpu::gl(api) {
             out.push((api.name(), gl::draw(&r, compiled, width)));
         }
@@ -60,8 +73,14 @@ pub fn run(name: &str, src: &str, width: u32) -> Vec<(&'static str, Vec<[u32; 4]
 /// where one does not hold.
 #[track_caller]
 pub fn assert_all_hold(name: &str, decls: &str, list: &[&str]) {
+    assert_all_hold_for(name, decls, list, &umbrac::Options::default());
+}
+
+/// [`assert_all_hold`] with the program compiled with `opts` ([`run_for`]).
+#[track_caller]
+pub fn assert_all_hold_for(name: &str, decls: &str, list: &[&str], opts: &umbrac::Options) {
     let src = checks(decls, list);
-    let results = run(name, &src, list.len() as u32);
+    let results = run_for(name, &src, list.len() as u32, opts);
     let mut failures = Vec::new();
     for (consumer, pixels) in &results {
         for (i, p) in pixels.iter().enumerate() {

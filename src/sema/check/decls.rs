@@ -407,7 +407,9 @@ impl<'a, 'd> Checker<'a, 'd> {
                         self.diags.push(Diagnostic::error("`@stage` applies only to samplers", span));
                     }
                     let ok = matches!(ty, Ty::Scalar(s) | Ty::Vector(s, _) if s != Scalar::Bool) || ty.is_error();
-                    if !ok {
+                    if matches!(ty, Ty::Scalar(Scalar::Half) | Ty::Vector(Scalar::Half, _)) {
+                        self.diags.push(half_interface_error(&format!("an `@{c}` variable"), gty.span));
+                    } else if !ok {
                         let d = Diagnostic::error(format!("`@{c}` variables must be numeric scalars or vectors, not `{}`", self.show(&ty)), gty.span);
                         self.diags.push(d);
                     }
@@ -549,6 +551,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             Ty::Scalar(Scalar::Bool) | Ty::Vector(Scalar::Bool, _) => {
                 Err("`bool` cannot live in a uniform block (it has no portable layout); use `int` or `uint`".into())
             }
+            Ty::Scalar(Scalar::Half) | Ty::Vector(Scalar::Half, _) => Err(HALF_INTERFACE.replace("{what}", "a uniform block")),
             Ty::Scalar(_) => Ok(UniformLayout { size: 4, align: 4, std_size: 4, std_align: 4 }),
             Ty::Vector(_, n) => {
                 let align = if *n == 2 { 8 } else { 16 };
@@ -624,7 +627,14 @@ impl<'a, 'd> Checker<'a, 'd> {
         match &t.kind {
             ast::TypeExprKind::Named(id) => {
                 if let Some(ty) = Ty::from_builtin_name(&id.name) {
+                    if ty.has_half(&[]) {
+                        self.half_used(id.span);
+                    }
                     return ty;
+                }
+                if let Some((msg, help)) = crate::sema::types::unsupported_type(&id.name) {
+                    self.diags.push(Diagnostic::error(msg, id.span).with_label("no target has this type").with_note(format!("help: {help}")));
+                    return Ty::Error;
                 }
                 if let Some(&sid) = self.structs.get(id.name.as_str()) {
                     return Ty::Struct(sid);
@@ -637,9 +647,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                 if let Some(s) = suggest(&id.name, candidates.iter().copied()) {
                     d = d.with_note(format!("help: did you mean `{s}`?"));
                 }
-                if id.name == "double" {
-                    d = d.with_note("double precision is not available in shaders");
-                }
+                let d = self.with_missing_modules(d);
                 self.diags.push(d);
                 Ty::Error
             }
@@ -744,7 +752,10 @@ pub(super) struct ConstEnvAdapter<'c, 'a, 'd> {
 
 impl ConstEnv for ConstEnvAdapter<'_, '_, '_> {
     fn lookup(&self, name: &str) -> Option<(ConstValue, Ty)> {
-        let &id = self.c.consts.get(name)?;
+        let Some(&id) = self.c.consts.get(name) else {
+            // A program's own constant hides a builtin one (`PI`).
+            return if self.c.const_decls.contains_key(name) { None } else { builtins::constant(name) };
+        };
         let k = &self.c.out.consts[id];
         Some((k.value.clone(), k.ty.clone()))
     }
@@ -757,4 +768,11 @@ impl ConstEnv for ConstEnvAdapter<'_, '_, '_> {
     fn enum_value(&self, ty: &str, member: &str) -> Option<(ConstValue, Ty)> {
         self.c.enum_const(ty, member)
     }
+}
+
+/// What `half` cannot be, with what to do instead.
+const HALF_INTERFACE: &str = "`half` cannot be in {what}: host formats and the GPU interface of the WGSL and SPIR-V targets are 32-bit here; use `float` and convert with `half(x)` inside the shader";
+
+fn half_interface_error(what: &str, span: Span) -> Diagnostic {
+    Diagnostic::error(HALF_INTERFACE.replace("{what}", what), span)
 }

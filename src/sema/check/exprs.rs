@@ -48,6 +48,10 @@ impl<'a, 'd> Checker<'a, 'd> {
                 }
             }
             ast::ExprKind::Bool(b) => mk(ExprKind::Bool(*b), BOOL),
+            ast::ExprKind::Half(v) => {
+                self.half_used(span);
+                mk(ExprKind::Float(*v), HALF)
+            }
             ast::ExprKind::Str(_) => {
                 self.diags.push(Diagnostic::error("strings are not shader values", span));
                 err_expr(span)
@@ -73,7 +77,8 @@ impl<'a, 'd> Checker<'a, 'd> {
                     return err_expr(span);
                 }
                 let ok = match op {
-                    UnaryOp::Neg | UnaryOp::Plus => matches!(x.ty.scalar(), Some(Scalar::Float | Scalar::Int)) && !matches!(x.ty, Ty::Matrix(..)),
+                    // `-m` of a matrix is daslang's too (its math module).
+                    UnaryOp::Neg | UnaryOp::Plus => matches!(x.ty.scalar(), Some(Scalar::Float | Scalar::Half | Scalar::Int)),
                     UnaryOp::Not => x.ty == BOOL,
                     UnaryOp::BitNot => matches!(x.ty.scalar(), Some(Scalar::Int | Scalar::Uint)),
                     _ => {
@@ -238,6 +243,11 @@ impl<'a, 'd> Checker<'a, 'd> {
             ExprKind::Uint(v) => Some(ConstValue::Uint(*v)),
             ExprKind::Float(v) => Some(ConstValue::Float(*v as f32 as f64)),
             ExprKind::Const(c) if matches!(self.out.consts[*c].ty, Ty::Scalar(_)) => Some(self.out.consts[*c].value.clone()),
+            ExprKind::Unary(UnaryOp::Neg, x) => match self.literal_value(x)? {
+                ConstValue::Float(v) => Some(ConstValue::Float(-v)),
+                ConstValue::Int(v) => (v as i32).checked_neg().map(|v| ConstValue::Int(v as i64)),
+                _ => None,
+            },
             _ => None,
         }
     }
@@ -292,6 +302,9 @@ impl<'a, 'd> Checker<'a, 'd> {
             self.diags.push(d);
             return err_expr(span);
         }
+        if let Some(e) = self.builtin_constant(id) {
+            return e;
+        }
         let mut d = Diagnostic::error(format!("unknown name `{}`", id.name), span).with_label("not found in this scope");
         let mut candidates: Vec<&str> = cx.scopes.visible.keys().copied().collect();
         candidates.extend(self.globals.keys().copied());
@@ -300,6 +313,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         if let Some(s) = suggest(&id.name, candidates.iter().copied()) {
             d = d.with_note(format!("help: did you mean `{s}`?"));
         }
+        let d = self.with_missing_modules(d);
         self.diags.push(d);
         err_expr(span)
     }
@@ -359,7 +373,10 @@ impl<'a, 'd> Checker<'a, 'd> {
             return self.check_named_construction(cx, callee, args, span);
         }
         // Constructors and casts.
-        let ctor_ty = Ty::from_builtin_name(name).filter(|t| !matches!(t, Ty::Sampler(_))).or_else(|| self.structs.get(name).map(|&s| Ty::Struct(s)));
+        // `half` is no daslang type: a program's own function of that name wins.
+        let ctor_ty = Ty::from_builtin_name(name)
+            .filter(|t| !matches!(t, Ty::Sampler(_)) && (!t.has_half(&[]) || !self.funcs.contains_key(name)))
+            .or_else(|| self.structs.get(name).map(|&s| Ty::Struct(s)));
         let mut xs: Vec<Expr> = args.iter().map(|a| self.check_expr(cx, a)).collect();
         if xs.iter().any(|x| x.ty.is_error()) {
             return err_expr(span);
@@ -382,6 +399,9 @@ impl<'a, 'd> Checker<'a, 'd> {
                     return Expr { kind: ExprKind::Construct(xs), ty, span };
                 }
             }
+            if ty.has_half(&[]) {
+                self.half_used(callee.span);
+            }
             return self.check_constructor(ty, xs, span);
         }
         if name == "range" {
@@ -390,6 +410,12 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
         if name == "discard" {
             self.diags.push(Diagnostic::error("`discard()` is a statement and has no value", span));
+            return err_expr(span);
+        }
+        if name == "sincos" && !self.funcs.contains_key(name) {
+            let d = Diagnostic::error("`sincos(x, s, c)` is a statement and has no value", span)
+                .with_note("help: it sets `s = sin(x)` and `c = cos(x)`; call it on a line of its own");
+            self.diags.push(d);
             return err_expr(span);
         }
         if let Some((_, b)) = builtins::TEXTURE_FUNCTIONS.iter().find(|(n, _)| *n == name) {
@@ -404,7 +430,27 @@ impl<'a, 'd> Checker<'a, 'd> {
                     self.diags.push(Diagnostic::error(format!("`{name}` needs a square matrix"), span));
                     return err_expr(span);
                 }
+                // With constant arguments, the WGSL output is a constant
+                // expression, which WGSL evaluates at shader creation and
+                // rejects when undefined or not finite: report it here.
+                if !xs.is_empty() && !matches!(b, Builtin::Derivative(..)) {
+                    if let Some(consts) = xs.iter().map(|x| self.literal_value(x).map(|v| (v, x.ty.clone()))).collect::<Option<Vec<_>>>() {
+                        if let Some(Err(msg)) = crate::sema::fold::call(name, &consts) {
+                            self.diags.push(Diagnostic::error(msg, span).with_note("its arguments are constants, so this call is evaluated at compile time"));
+                            return err_expr(span);
+                        }
+                    }
+                }
                 Expr { kind: ExprKind::Builtin(b, xs), ty: ret, span }
+            }
+            Ok(None) if builtins::LEGACY_TEXTURE_FUNCTIONS.iter().any(|(n, ..)| *n == name) => {
+                let &(_, b, kind, now) = builtins::LEGACY_TEXTURE_FUNCTIONS.iter().find(|(n, ..)| *n == name).expect("matched");
+                self.check_legacy_texture_call(cx, callee, (b, kind, now), xs, span)
+            }
+            Ok(None) if crate::sema::types::unsupported_type(name).is_some() => {
+                let (msg, help) = crate::sema::types::unsupported_type(name).expect("matched");
+                self.diags.push(Diagnostic::error(msg, callee.span).with_label("a type no target has").with_note(format!("help: {help}")));
+                err_expr(span)
             }
             Ok(None) if builtins::UNSUPPORTED.iter().any(|(n, _)| *n == name) => {
                 let why = builtins::UNSUPPORTED.iter().find(|(n, _)| *n == name).map(|(_, w)| *w).unwrap_or_default();
@@ -421,6 +467,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                 if let Some(s) = suggest(name, candidates) {
                     d = d.with_note(format!("help: did you mean `{s}`?"));
                 }
+                let d = self.with_missing_modules(d);
                 self.diags.push(d);
                 err_expr(span)
             }
@@ -475,10 +522,12 @@ impl<'a, 'd> Checker<'a, 'd> {
                 let cols_ok = xs.len() == c && xs.iter().all(|x| x.ty == Ty::Vector(Scalar::Float, r as u8));
                 let scalars_ok = xs.len() == c * r && xs.iter().all(|x| x.ty == FLOAT);
                 let diag_ok = xs.len() == 1 && xs[0].ty == FLOAT;
-                let copy_ok = xs.len() == 1 && xs[0].ty == ty;
-                if !(cols_ok || scalars_ok || diag_ok || copy_ok) {
+                // Another matrix, any size: its upper-left part, the rest of
+                // the identity (GLSL's rule; `float3x3(m4)`).
+                let matrix_ok = xs.len() == 1 && matches!(xs[0].ty, Ty::Matrix(..));
+                if !(cols_ok || scalars_ok || diag_ok || matrix_ok) {
                     let name = self.show(&ty);
-                    return fail(self, format!("wrong arguments: `{name}` is built from {c} float{r} columns, {} floats, or one float (a diagonal)", c * r));
+                    return fail(self, format!("wrong arguments: `{name}` is built from {c} float{r} columns, {} floats, one float (a diagonal) or another matrix", c * r));
                 }
             }
             Ty::Struct(sid) => {
@@ -691,7 +740,8 @@ impl<'a, 'd> Checker<'a, 'd> {
             BitAnd | BitOr | BitXor | Shl | Shr => match (l.scalar(), r.scalar()) {
                 (Some(a), Some(b)) if a.is_integer() && b.is_integer() && !matches!(l, Ty::Matrix(..)) => {
                     let shift = matches!(op, Shl | Shr);
-                    if (shift && l.width() == r.width()) || (!shift && (l == r || (a == b && (l.width() == Some(1) || r.width() == Some(1))))) {
+                    // A shift amount is one per component or one for all (`v << 2`).
+                    if (shift && (l.width() == r.width() || r.width() == Some(1))) || (!shift && (l == r || (a == b && (l.width() == Some(1) || r.width() == Some(1))))) {
                         Ok(if l.width() == Some(1) && !shift { r.clone() } else { l.clone() })
                     } else {
                         Err(String::new())

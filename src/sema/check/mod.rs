@@ -9,15 +9,19 @@
 //! [`decls`] (structs, globals, types, constants), [`stmts`] (functions,
 //! statements, places), [`exprs`] (expressions, calls, operators) and
 //! [`programs`] (which entry points form a program; locations and texture
-//! units numbered and checked per program).
+//! units numbered and checked per program), [`math`] (daslang's math
+//! module: its constants, `sincos`) and [`targets`] (constructs only some
+//! targets have).
 
 mod calls;
 mod decls;
 mod enums;
 mod exprs;
 mod loops;
+mod math;
 mod programs;
 mod stmts;
+mod targets;
 
 use std::collections::hash_map::Entry;
 use std::collections::BTreeMap;
@@ -26,14 +30,22 @@ use super::builtins::{self, Builtin};
 use super::consts::{eval_const, ConstEnv};
 use super::tree::*;
 use super::limits::*;
-use super::types::{EnumId, SamplerKind, Scalar, StructId, Ty, TyDisplay, BOOL, FLOAT, INT, UINT};
+use super::types::{EnumId, SamplerKind, Scalar, StructId, Ty, TyDisplay, BOOL, FLOAT, HALF, INT, UINT};
 use crate::diag::{suggest, Diagnostic, Diagnostics};
 use rustc_hash::{FxHashMap, FxHashSet};
 use crate::source::Span;
 use crate::syntax::ast::{self, BinaryOp, UnaryOp};
 
+/// Checks a program for every target.
 pub fn check(program: &ast::Program, diags: &mut Diagnostics) -> Option<Program> {
+    check_for_targets(program, &crate::target::Target::ALL, diags)
+}
+
+/// Checks a program for the targets requested (empty: all): a construct
+/// that only some targets have (`half`) is an error naming the others.
+pub fn check_for_targets(program: &ast::Program, targets: &[crate::target::Target], diags: &mut Diagnostics) -> Option<Program> {
     let mut c = Checker::new(program, diags);
+    c.targets = if targets.is_empty() { crate::target::Target::ALL.to_vec() } else { targets.to_vec() };
     c.declare();
     c.check_entry_points();
     c.link_programs();
@@ -206,6 +218,10 @@ struct Checker<'a, 'd> {
     /// Depth at which the next helper function checked on first use starts.
     call_depth: usize,
     spare_scopes: Vec<Scopes<'a>>,
+    /// The targets requested, for the constructs only some have.
+    targets: Vec<crate::target::Target>,
+    /// `half` was refused already (reported once, at its first use).
+    half_refused: bool,
 }
 
 fn is_entry(f: &ast::FunctionDecl) -> Option<naga::ShaderStage> {
@@ -259,6 +275,8 @@ impl<'a, 'd> Checker<'a, 'd> {
             bind_written: FxHashMap::default(),
             call_depth: 0,
             spare_scopes: Vec::new(),
+            targets: crate::target::Target::ALL.to_vec(),
+            half_refused: false,
         }
     }
 
@@ -281,6 +299,20 @@ impl<'a, 'd> Checker<'a, 'd> {
                 v.insert(id.span);
             }
         }
+    }
+}
+
+impl Checker<'_, '_> {
+    /// An error about a name nothing defines, with each required module
+    /// that was not found, which might have defined it.
+    fn with_missing_modules(&self, mut d: Diagnostic) -> Diagnostic {
+        for m in &self.ast.modules_not_found {
+            d = d.with_secondary(m.span, format!("module `{}` not found: it may define this", m.name));
+            let searched: Vec<String> = m.searched.iter().map(|p| format!("`{}`", p.display())).collect();
+            let searched = if searched.is_empty() { "nowhere".to_string() } else { searched.join(", ") };
+            d = d.with_note(format!("module `{}` was not found (searched {searched}); help: {}", m.name, m.help));
+        }
+        d
     }
 }
 
@@ -317,6 +349,6 @@ pub fn op_text(op: BinaryOp) -> &'static str {
 
 /// The built-in type names, offered when a type or constructor name is misspelt.
 const TYPE_NAMES: &[&str] = &[
-    "float", "float2", "float3", "float4", "int", "int2", "int3", "int4", "uint", "uint2", "uint3", "uint4", "bool", "bool2", "bool3", "bool4", "float2x2",
+    "float", "float2", "float3", "float4", "int", "int2", "int3", "int4", "uint", "uint2", "uint3", "uint4", "bool", "bool2", "bool3", "bool4", "half", "half2", "half3", "half4", "float2x2",
     "float3x3", "float4x4", "sampler2D", "sampler2DShadow", "sampler2DArray", "sampler2DArrayShadow", "sampler3D", "samplerCube", "samplerCubeShadow",
 ];

@@ -475,6 +475,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                 cx.fragment_only.get_or_insert((e.span, "`discard()`"));
                 out.push(Stmt::Discard(span));
             }
+            ast::ExprKind::Call { callee, args } if callee.name == "sincos" && !self.funcs.contains_key("sincos") => self.check_sincos(cx, args, e.span, out),
             ast::ExprKind::Call { .. } => {
                 let x = self.check_expr(cx, e);
                 out.push(Stmt::Expr(x));

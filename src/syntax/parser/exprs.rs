@@ -283,8 +283,21 @@ impl<'m> Parser<'_, 'm> {
 
     pub(super) fn name_or_call(&mut self, t: Token) -> PResult<Expr> {
         self.bump();
-        let name = Ident { name: self.texts.name(t.span), span: t.span };
-        let next = self.peek();
+        let mut name = Ident { name: self.texts.name(t.span), span: t.span };
+        let mut next = self.peek();
+        // `module::name` (`math::sin`, `_::helper`): every module's names
+        // are in one namespace (`syntax::modules`), so the qualifier goes.
+        if next.is(P::ColonColon) {
+            self.bump();
+            let n = self.peek();
+            if n.kind != TokKind::Ident {
+                self.error_expected(n, "a name after `::`");
+                return Err(());
+            }
+            self.bump();
+            name = Ident { name: self.texts.name(n.span), span: n.span };
+            next = self.peek();
+        }
         if next.is(P::Lt) && name.name == "fixed_array" {
             self.bump();
             let elem = self.ty()?;
@@ -338,6 +351,7 @@ impl<'m> Parser<'_, 'm> {
             "u" | "U" => ExprKind::Int(value, IntSuffix::Unsigned),
             // Rounded once, straight to f32.
             "f" | "F" if radix == 10 => ExprKind::Float(value as f32 as f64),
+            "h" | "H" if radix == 10 => return self.half_lit(t, digits),
             "d" | "D" | "lf" | "LF" if radix == 10 => return self.double_error(t),
             _ => {
                 let msg = format!("unsupported suffix `{suffix}` on integer literal `{text}`");
@@ -356,10 +370,11 @@ impl<'m> Parser<'_, 'm> {
         let suffix = &text[body.len()..];
         match suffix {
             "" | "f" | "F" => {}
+            "h" | "H" => return self.half_lit(t, body),
             "d" | "D" | "lf" | "LF" => return self.double_error(t),
             _ => {
                 let msg = format!("unsupported suffix `{suffix}` on number `{text}`");
-                let d = Diagnostic::error(msg, t.span).with_label("unsupported suffix").with_note("float literals take `f` or no suffix");
+                let d = Diagnostic::error(msg, t.span).with_label("unsupported suffix").with_note("float literals take `f` (float), `h` (half) or no suffix");
                 self.push(d);
                 return Err(());
             }
@@ -372,6 +387,29 @@ impl<'m> Parser<'_, 'm> {
                 Err(())
             }
             Ok(v) => Ok(Expr { kind: ExprKind::Float(v as f64), span: t.span }),
+            Err(_) => {
+                self.err(t, format!("invalid number `{text}`"), "invalid number");
+                Err(())
+            }
+        }
+    }
+
+    /// `1.5h`, `2h`: the decimal `digits`, rounded once to binary16 (from
+    /// its correctly rounded f64, which is within half an f64 ulp: a
+    /// second rounding to binary16 can only differ for a decimal of more
+    /// than 17 digits lying that close to a binary16 midpoint).
+    #[inline(never)]
+    pub(super) fn half_lit(&mut self, t: Token, digits: &str) -> PResult<Expr> {
+        let text = self.text(&t);
+        match digits.parse::<f64>() {
+            Ok(v) => {
+                let h = half::f16::from_f64(v);
+                if h.is_infinite() {
+                    self.err(t, format!("`{text}` is out of range for `half`"), "too large for `half` (largest 65504)");
+                    return Err(());
+                }
+                Ok(Expr { kind: ExprKind::Half(h.to_f64()), span: t.span })
+            }
             Err(_) => {
                 self.err(t, format!("invalid number `{text}`"), "invalid number");
                 Err(())

@@ -1,0 +1,28 @@
+#version 330 core
+struct constant_builtins_fs_out {
+    vec4 f_color;
+};
+const vec3 SUN_DIR = vec3(0.4061643, 0.49642307, 0.7671993);
+const float HALF_ANGLE = 0.976296;
+const ivec3 MASK = ivec3(16, 32, 48);
+const uint SEED = 3205652812u;
+const vec3 SKY = vec3(0.35500002, 0.39499998, 0.6375);
+const float GOLDEN = 2.3999631;
+const uint WHITE = 4294967295u;
+
+smooth in vec3 _vs2fs_location0;
+layout(location = 0) out vec4 _fs2p_location0;
+
+void main() {
+    vec3 v_dir = _vs2fs_location0;
+    vec4 f_color = vec4(0.0);
+    float d = dot(normalize(v_dir), SUN_DIR);
+    float sun = smoothstep(HALF_ANGLE, 1.0, d);
+    float bits = (float((((MASK.x | MASK.y) | MASK.z) & int((SEED & 63u)))) / 64.0);
+    f_color = vec4(((SKY + vec3(sun)) + vec3(((bits * GOLDEN) * 0.0))), (float((WHITE >> 24u)) / 255.0));
+    vec4 _e41 = f_color;
+    constant_builtins_fs_out _tmp_return = constant_builtins_fs_out(_e41);
+    _fs2p_location0 = _tmp_return.f_color;
+    return;
+}
+

@@ -1,0 +1,59 @@
+diagnostic(off, derivative_uniformity);
+
+struct matrix_conversions_vs_out {
+    @builtin(position) gl_Position: vec4<f32>,
+    @location(0) v_normal: vec3<f32>,
+    @location(1) v_skew: vec2<f32>,
+}
+
+struct matrix_conversions_fs_out {
+    @location(0) f_color: vec4<f32>,
+}
+
+@group(0) @binding(0) 
+var<uniform> u_model: mat4x4<f32>;
+@group(0) @binding(1) 
+var<uniform> u_view_proj: mat4x4<f32>;
+
+fn inverse_3x3_(m: mat3x3<f32>) -> mat3x3<f32> {
+    let _e5 = cross(m[1], m[2]);
+    return (transpose(mat3x3<f32>(_e5, cross(m[2], m[0]), cross(m[0], m[1]))) * (1f / dot(m[0], _e5)));
+}
+
+@vertex 
+fn matrix_conversions_vs(@location(0) a_pos: vec3<f32>, @location(1) a_normal: vec3<f32>) -> matrix_conversions_vs_out {
+    var v_normal: vec3<f32>;
+    var v_skew: vec2<f32>;
+    var gl_Position: vec4<f32>;
+
+    let _e3 = u_model;
+    let _e13 = inverse_3x3_(mat3x3<f32>(_e3[0].xyz, _e3[1].xyz, _e3[2].xyz));
+    let normal_matrix = transpose(_e13);
+    v_normal = (normal_matrix * a_normal);
+    let _e18 = u_model;
+    let flat = mat2x2<f32>(_e18[0].xy, _e18[1].xy);
+    let mirrored = mat2x2<f32>(-(flat[0]), -(flat[1]));
+    let _e35 = u_view_proj;
+    v_skew = ((mirrored * a_pos.xy) + mat2x3<f32>(_e35[0].xyz, _e35[1].xyz)[1].xy);
+    let _e47 = u_model;
+    let _e56 = mat3x3<f32>(_e47[0].xyz, _e47[1].xyz, _e47[2].xyz);
+    let rotation_only = mat4x4<f32>(vec4<f32>(_e56[0].x, _e56[0].y, _e56[0].z, 0f), vec4<f32>(_e56[1].x, _e56[1].y, _e56[1].z, 0f), vec4<f32>(_e56[2].x, _e56[2].y, _e56[2].z, 0f), vec4<f32>(0f, 0f, 0f, 1f));
+    let _e78 = u_view_proj;
+    gl_Position = ((_e78 * rotation_only) * vec4<f32>(a_pos, 1f));
+    let _e84 = gl_Position;
+    let _e95 = v_normal;
+    let _e97 = v_skew;
+    return matrix_conversions_vs_out(vec4<f32>(_e84.x, -(_e84.y), ((_e84.z + _e84.w) * 0.5f), _e84.w), _e95, _e97);
+}
+
+@fragment 
+fn matrix_conversions_fs(@location(0) v_normal_1: vec3<f32>, @location(1) v_skew_1: vec2<f32>) -> matrix_conversions_fs_out {
+    var f_color: vec4<f32>;
+
+    let n = normalize(v_normal_1);
+    let _e9 = (mat2x2<f32>(vec2<f32>(1f, 0f), vec2<f32>(0f, 1f)) * 0.5f);
+    let m_1 = mat3x3<f32>(vec3<f32>(_e9[0].x, _e9[0].y, 0f), vec3<f32>(_e9[1].x, _e9[1].y, 0f), vec3<f32>(0f, 0f, 1f));
+    f_color = (vec4<f32>((((m_1 * n) * 0.5f) + vec3(0.5f)), 1f) + vec4<f32>((v_skew_1 * 0f), 0f, 0f));
+    let _e38 = f_color;
+    return matrix_conversions_fs_out(_e38);
+}

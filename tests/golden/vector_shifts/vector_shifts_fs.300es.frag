@@ -1,0 +1,37 @@
+#version 300 es
+
+precision highp float;
+precision highp int;
+
+struct vector_shifts_fs_out {
+    vec4 f_color;
+};
+layout(std140) uniform u_bits_block { int u_bits; };
+
+layout(std140) uniform u_mask_block { uvec4 u_mask; };
+
+layout(location = 0) out vec4 _fs2p_location0;
+
+void main() {
+    vec4 FragCoord = gl_FragCoord;
+    vec4 f_color = vec4(0.0);
+    ivec3 acc = ivec3(0);
+    ivec2 texel = ivec2(FragCoord.xy);
+    ivec2 tile = (texel >> uvec2(uint(3)));
+    uvec4 _e8 = u_mask;
+    int _e10 = u_bits;
+    uvec4 unpacked = ((_e8 >> uvec4(uint(_e10))) & uvec4(255u));
+    acc = (ivec3(tile, 1) << uvec3(uint(2)));
+    ivec3 _e26 = acc;
+    acc = (_e26 << uvec3(uint(1)));
+    int _e32 = u_bits;
+    ivec3 _e33 = acc;
+    acc = (_e33 >> uvec3(uint(_e32)));
+    ivec3 _e39 = acc;
+    f_color = vec4((vec3((_e39 & ivec3(7))) / vec3(7.0)), (float(unpacked.x) / 255.0));
+    vec4 _e53 = f_color;
+    vector_shifts_fs_out _tmp_return = vector_shifts_fs_out(_e53);
+    _fs2p_location0 = _tmp_return.f_color;
+    return;
+}
+
