@@ -75,19 +75,34 @@ fn too_large(path: &Path, len: u64) -> Diagnostic {
 
 /// Preprocesses, splits and parses the root file and what it includes.
 pub fn parse(map: &mut SourceMap, root: FileId, opts: &ParseOptions, diags: &mut Diagnostics) -> ast::Program {
-    let root_span = {
-        let f = map.file(root);
-        if f.text.len() > MAX_FILE_SIZE {
-            let msg = format!("`{}` is too large: {} bytes (limit {MAX_FILE_SIZE} bytes)", f.name, f.text.len());
-            diags.push(Diagnostic::error_nowhere(msg));
-            return ast::Program::default();
-        }
-        Span::new(f.base, f.base)
-    };
+    if !root_fits(map, root, diags) {
+        return ast::Program::default();
+    }
     let toks = preprocess::preprocess(map, root, opts, diags);
-    let map: &SourceMap = map;
-    let raw = items::split(&toks, map);
-    let selected = items::select(&raw, &toks, map, &opts.entries, root_span, diags);
+    parse_preprocessed(map, root, &toks, opts, diags)
+}
+
+/// Whether the root file is small enough to preprocess; if not, the error
+/// is pushed to `diags` (as [`parse`] does).
+pub fn root_fits(map: &SourceMap, root: FileId, diags: &mut Diagnostics) -> bool {
+    let f = map.file(root);
+    if f.text.len() > MAX_FILE_SIZE {
+        let msg = format!("`{}` is too large: {} bytes (limit {MAX_FILE_SIZE} bytes)", f.name, f.text.len());
+        diags.push(Diagnostic::error_nowhere(msg));
+        return false;
+    }
+    true
+}
+
+/// The rest of [`parse`] after preprocessing: splits the token stream
+/// `preprocess` made for the root file into items, keeps what shaders
+/// reach and parses it. Separate so that a compilation whose preprocessed
+/// text is already known (a cache lookup, `crate::cache`) preprocesses once.
+pub fn parse_preprocessed(map: &SourceMap, root: FileId, toks: &[token::Token], opts: &ParseOptions, diags: &mut Diagnostics) -> ast::Program {
+    let base = map.file(root).base;
+    let root_span = Span::new(base, base);
+    let raw = items::split(toks, map);
+    let selected = items::select(&raw, toks, map, &opts.entries, root_span, diags);
     let texts = token::Texts::new(map);
     let mut program = ast::Program { items: Vec::with_capacity(selected.len()) };
     for i in selected {
@@ -102,7 +117,7 @@ pub fn parse(map: &mut SourceMap, root: FileId, opts: &ParseOptions, diags: &mut
                 diags.push(Diagnostic::error(what, t.span).with_label(e.message()));
             }
         }
-        parser::parse_item(&toks, item, &texts, diags, &mut program.items);
+        parser::parse_item(toks, item, &texts, diags, &mut program.items);
     }
     program
 }
