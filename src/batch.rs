@@ -412,4 +412,35 @@ mod tests {
         }
         assert!(compile_many(&[], 4).is_empty());
     }
+
+    #[test]
+    fn a_cached_batch_compiles_each_key_once_and_a_panic_fails_only_its_unit() {
+        let t = tempfile::tempdir().unwrap();
+        let prog = t.path().join("p.das");
+        std::fs::write(&prog, "var @out f_color : float4\n[fragment_program]\ndef fs {\n    f_color = float4(V)\n}\n").unwrap();
+        let with = |v: &str| Options { defines: vec![("V".into(), Some(v.into()))], targets: vec![crate::Target::Wgsl], ..Options::default() };
+        let units: Vec<Unit> = ["1.0", "2.0", "1.0", "3.0"].iter().map(|v| Unit { path: &prog, opts: with(v), extra: String::new() }).collect();
+        let cache = Cache::new(t.path().join("cache"), crate::cache::DEFAULT_MAX_BYTES);
+        // The unit compiled for "3.0" panics in the caller's hook.
+        let derive = |i: usize, _: &crate::Compiled| -> Result<Vec<Artifact>, String> {
+            if i == 3 {
+                panic!("hook blew up");
+            }
+            Ok(vec![])
+        };
+        for workers in [1, 3] {
+            let (out, stats) = compile_cached(&units, workers, Some(&cache), Some(&derive));
+            assert_eq!(out[2].origin, Origin::SameAs(0));
+            assert!(!out[0].failed() && !out[1].failed() && !out[2].failed());
+            assert!(out[3].failed());
+            let c = out[3].compilation.as_ref().unwrap();
+            assert_eq!(c.diagnostics[0].severity, crate::Severity::Bug);
+            assert!(c.diagnostics[0].message.contains("panicked") && c.diagnostics[0].message.contains("hook blew up"), "{:?}", c.diagnostics);
+            if workers == 1 {
+                assert_eq!((stats.compiled, stats.cached, stats.shared, stats.stored), (3, 0, 1, 2));
+            } else {
+                assert_eq!((stats.compiled, stats.cached, stats.shared), (1, 2, 1), "a hit for 1.0 and 2.0, 3.0 compiled again");
+            }
+        }
+    }
 }

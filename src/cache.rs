@@ -103,7 +103,10 @@ impl fmt::Debug for Key {
 /// still hashes as what it is.
 fn hash_tokens(h: &mut Sha256, toks: &[Token], map: &crate::SourceMap) {
     let mut buf = Vec::with_capacity(64 * 1024);
-    for t in toks {
+    // Line breaks before the first token (a comment at the top of the file)
+    // end no statement. Runs of them are one token already.
+    let first = toks.iter().position(|t| t.kind != TokKind::Newline).unwrap_or(toks.len());
+    for t in &toks[first..] {
         let text = map.slice(t.span).as_bytes();
         buf.extend_from_slice(&kind_code(t.kind).to_le_bytes());
         buf.extend_from_slice(&(text.len() as u32).to_le_bytes());

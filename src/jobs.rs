@@ -228,10 +228,12 @@ impl Batch {
         s
     }
 
-    /// Every file any job read, sorted, without repeats.
+    /// Every file any job read, sorted, without repeats, without `./`
+    /// steps (an include next to a root given as a bare name is `./x`).
     pub fn files_read(&self) -> Vec<PathBuf> {
-        let mut all: Vec<PathBuf> = self.outcomes.iter().flat_map(|o| o.files_read.iter().cloned()).collect();
-        all.extend(self.inputs.iter().map(|i| i.path.clone()));
+        let tidy = |p: &PathBuf| -> PathBuf { p.components().filter(|c| !matches!(c, std::path::Component::CurDir)).collect() };
+        let mut all: Vec<PathBuf> = self.outcomes.iter().flat_map(|o| o.files_read.iter().map(tidy)).collect();
+        all.extend(self.inputs.iter().map(|i| tidy(&i.path)));
         all.sort();
         all.dedup();
         all
