@@ -241,7 +241,7 @@ pub type Derive<'a> = dyn Fn(usize, &crate::Compiled) -> Result<Vec<Artifact>, S
 /// diagnostic of that unit only.
 pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>, derive: Option<&Derive<'_>>) -> (Vec<Outcome>, Stats) {
     enum Pre {
-        Failed(Compilation),
+        Failed(Box<Compilation>),
         Hit(Vec<Artifact>),
         Miss(Box<Preprocessed>),
     }
@@ -253,7 +253,7 @@ pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>,
             let pre = crate::preprocess_file(u.path, &u.opts);
             let files_read = pre.files_read();
             if pre.has_errors() {
-                return (Pre::Failed(pre.compile(&u.opts)), files_read, None);
+                return (Pre::Failed(Box::new(pre.compile(&u.opts))), files_read, None);
             }
             let key = Key::of(&pre, &u.opts, &u.extra);
             match cache.and_then(|c| c.get(&key)) {
@@ -261,7 +261,7 @@ pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>,
                 None => (Pre::Miss(Box::new(pre)), files_read, Some(key)),
             }
         },
-        |i, msg| (Pre::Failed(panicked_in(units[i].path, &msg)), Vec::new(), None),
+        |i, msg| (Pre::Failed(Box::new(panicked_in(units[i].path, &msg))), Vec::new(), None),
     );
 
     // Each key's first unit is compiled (or was a hit); later ones share it.
@@ -279,7 +279,7 @@ pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>,
             first_of.insert(k, i);
         }
         outcomes.push(Some(match pre {
-            Pre::Failed(c) => Outcome { artifacts: None, compilation: Some(c), files_read, origin: Origin::Compiled, key },
+            Pre::Failed(c) => Outcome { artifacts: None, compilation: Some(*c), files_read, origin: Origin::Compiled, key },
             Pre::Hit(artifacts) => {
                 stats.cached += 1;
                 Outcome { artifacts: Some(artifacts), compilation: None, files_read, origin: Origin::Cached, key }

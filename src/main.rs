@@ -416,7 +416,8 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
         None => Vec::new(),
         Some(spec) => match load_spec(spec) {
             Ok(v) => v,
-            Err((map, d)) => {
+            Err(e) => {
+                let (map, d) = *e;
                 reporter.diagnostic(&d, &map);
                 return (EXIT_ERROR, watched);
             }
@@ -515,18 +516,18 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
 }
 
 /// Reads and expands a variant spec; errors point into it.
-fn load_spec(path: &Path) -> Result<Vec<umbrac::variants::Variant>, (SourceMap, Diagnostic)> {
+fn load_spec(path: &Path) -> Result<Vec<umbrac::variants::Variant>, Box<(SourceMap, Diagnostic)>> {
     let mut map = SourceMap::new();
     let text = match std::fs::read_to_string(path) {
         Ok(t) => t,
-        Err(e) => return Err((map, Diagnostic::error_nowhere(format!("cannot read the variant spec `{}`: {e}", path.display())))),
+        Err(e) => return Err(Box::new((map, Diagnostic::error_nowhere(format!("cannot read the variant spec `{}`: {e}", path.display()))))),
     };
     let id = map.add(path.display().to_string(), Some(path.to_path_buf()), text, None);
     let spec = match umbrac::variants::Spec::parse_toml(&map, id) {
         Ok(s) => s,
-        Err(d) => return Err((map, d)),
+        Err(d) => return Err(Box::new((map, d))),
     };
-    spec.expand().map_err(|e| (SourceMap::new(), Diagnostic::error_nowhere(format!("`{}`: {e}", path.display()))))
+    spec.expand().map_err(|e| Box::new((SourceMap::new(), Diagnostic::error_nowhere(format!("`{}`: {e}", path.display())))))
 }
 
 /// `-v`: what was compiled, shared and read from the cache.
