@@ -440,6 +440,12 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
         }
         code = code.max(exit_code(f.compilation));
     }
+    // Warnings of compilations that succeeded (a cache hit had none).
+    for o in batch.outcomes.iter().filter(|o| !o.failed()) {
+        if let Some(c) = o.compilation.as_ref().filter(|c| !c.diagnostics.is_empty()) {
+            reporter.compilation(c);
+        }
+    }
     // With variants a run is all or nothing, like one compile.
     if !batch.variants.is_empty() && code != 0 {
         return (code, watched);
