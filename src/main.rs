@@ -400,8 +400,7 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
         Err(e) => return (usage_error(&e), watched),
     };
     if args.check {
-        let pairs: Vec<(PathBuf, PathBuf)> = inputs.iter().map(|i| (i.path.clone(), i.subdir.clone())).collect();
-        return (compile_check(args, targets, &pairs), watched);
+        return (compile_check(args, targets, inputs), watched);
     }
     if to_stdout {
         if inputs.len() != 1 {
@@ -521,6 +520,12 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
     (code, watched)
 }
 
+/// What a FILE argument's outputs record of it: its file name
+/// (docs/scale.md, "Determinism").
+fn file_name_of(path: &Path) -> Option<String> {
+    path.file_name().map(|n| n.to_string_lossy().into_owned())
+}
+
 /// Reads and expands a variant spec; errors point into it.
 fn load_spec(path: &Path) -> Result<Vec<umbrac::variants::Variant>, Box<(SourceMap, Diagnostic)>> {
     let mut map = SourceMap::new();
@@ -583,7 +588,8 @@ fn check(args: &CheckArgs) -> u8 {
 }
 
 fn reflect(args: &ReflectArgs) -> u8 {
-    let opts = args.common.options(Target::ALL.to_vec());
+    let mut opts = args.common.options(Target::ALL.to_vec());
+    opts.source_name = file_name_of(&args.file);
     let comps = compile_all(std::slice::from_ref(&args.file), &opts);
     let c = &comps[0];
     let mut reporter = Reporter::new(args.common.message_format);
@@ -600,24 +606,25 @@ fn reflect(args: &ReflectArgs) -> u8 {
 
 /// `compile --check`: every difference between the outputs and the files in
 /// the directory, as unified diffs on stdout; nothing is written.
-fn compile_check(args: &CompileArgs, targets: Vec<Target>, inputs: &[(PathBuf, PathBuf)]) -> u8 {
+fn compile_check(args: &CompileArgs, targets: Vec<Target>, inputs: Vec<umbrac::jobs::Input>) -> u8 {
     let opts = args.common.options(targets);
-    let files: Vec<PathBuf> = inputs.iter().map(|(f, _)| f.clone()).collect();
-    let comps = compile_all(&files, &opts);
+    let cache = args.batch.cache();
+    let settings = umbrac::jobs::Settings { options: &opts, workers: args.batch.workers(), cache: cache.as_ref() };
+    let batch = umbrac::jobs::Batch::compile(inputs, Vec::new(), &settings, None);
     let mut reporter = Reporter::new(args.common.message_format);
+    report_stats(&args.batch, &batch, cache.as_ref(), &mut reporter);
     let mut code = 0;
+    for f in batch.failures() {
+        reporter.compilation(f.compilation);
+        code = code.max(exit_code(f.compilation));
+    }
     let dir = args.out.clone().unwrap_or_else(|| PathBuf::from("."));
     // The outputs expected in each directory (a DIR input mirrors its
     // subdirectories under -o, as `compile` writes them).
     let mut expected: std::collections::BTreeMap<PathBuf, Vec<umbrac::Artifact>> = Default::default();
-    for ((_, sub), c) in inputs.iter().zip(&comps) {
-        reporter.compilation(c);
-        code = code.max(exit_code(c));
-        let out_dir = if sub.as_os_str().is_empty() { dir.clone() } else { dir.join(sub) };
-        let slot = expected.entry(out_dir).or_default();
-        if let Some(result) = c.result.as_ref().filter(|_| !c.has_errors()) {
-            slot.extend(result.artifacts.iter().cloned());
-        }
+    for (j, o) in batch.outcomes.iter().enumerate() {
+        let slot = expected.entry(batch.out_dir(j, &dir)).or_default();
+        slot.extend(o.artifacts.iter().flatten().cloned());
     }
     let mut diffs = Vec::new();
     for (d, artifacts) in &expected {
@@ -644,7 +651,8 @@ fn compile_check(args: &CompileArgs, targets: Vec<Target>, inputs: &[(PathBuf, P
 }
 
 fn bindgen(args: &BindgenArgs) -> u8 {
-    let opts = args.common.options(Target::ALL.to_vec());
+    let mut opts = args.common.options(Target::ALL.to_vec());
+    opts.source_name = file_name_of(&args.file);
     let comps = compile_all(std::slice::from_ref(&args.file), &opts);
     let c = &comps[0];
     let mut reporter = Reporter::new(args.common.message_format);
