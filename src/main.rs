@@ -35,6 +35,8 @@ use umbrac::{Compilation, Conventions, Diagnostic, Options, Severity, SourceMap,
 const EXIT_ERROR: u8 = 1;
 const EXIT_USAGE: u8 = 2;
 const EXIT_BUG: u8 = 3;
+/// Output directories written at once (they wait on the disk, not a core).
+const WRITERS: usize = 8;
 
 #[derive(Parser, Debug)]
 #[command(name = "umbrac", version, about = "Compiles daslang shaders to GLSL 330, GLSL ES 3.00, WGSL and SPIR-V")]
@@ -451,7 +453,9 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
     }
 
     let dir = args.out.clone().unwrap_or_else(|| PathBuf::from("."));
-    let mut written: Vec<(PathBuf, &Path)> = Vec::new();
+    // Which job writes where; an output two jobs would write is an error.
+    let mut owner: std::collections::HashMap<PathBuf, &Path> = Default::default();
+    let mut to_write: Vec<(usize, PathBuf)> = Vec::new();
     for (j, o) in batch.outcomes.iter().enumerate() {
         let path = &batch.inputs[batch.jobs[j].input].path;
         let Some(artifacts) = &o.artifacts else { continue };
@@ -473,8 +477,7 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
             continue;
         }
         let out_dir = batch.out_dir(j, &dir);
-        if let Some(a) = artifacts.iter().find(|a| written.iter().any(|(n, _)| *n == out_dir.join(&a.file_name))) {
-            let (_, other) = written.iter().find(|(n, _)| *n == out_dir.join(&a.file_name)).expect("found above");
+        if let Some((a, other)) = artifacts.iter().find_map(|a| owner.get(&out_dir.join(&a.file_name)).map(|o| (a, *o))) {
             reporter.plain(&Diagnostic::error_nowhere(format!(
                 "`{}` is an output of both `{}` and `{}`; nothing was written for `{}` (compile them into different directories)",
                 a.file_name,
@@ -485,8 +488,25 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
             code = code.max(EXIT_ERROR);
             continue;
         }
-        match umbrac::jobs::write_outputs(&out_dir, artifacts) {
-            Ok(()) => written.extend(artifacts.iter().map(|a| (out_dir.join(&a.file_name), path.as_path()))),
+        owner.extend(artifacts.iter().map(|a| (out_dir.join(&a.file_name), path.as_path())));
+        to_write.push((j, out_dir));
+    }
+    // Each directory atomically, several at once: the writes wait on the
+    // disk (every file is synced), not on a core.
+    let results = umbrac::batch::parallel_map(
+        to_write.len(),
+        WRITERS,
+        |k| {
+            let (j, out_dir) = &to_write[k];
+            umbrac::jobs::write_outputs(out_dir, batch.outcomes[*j].artifacts.as_deref().unwrap_or_default()).map_err(|e| e.to_string())
+        },
+        |_, msg| Err(format!("writing panicked: {msg}")),
+    );
+    let mut written: Vec<(PathBuf, &Path)> = Vec::new();
+    for ((j, out_dir), result) in to_write.iter().zip(results) {
+        let path = &batch.inputs[batch.jobs[*j].input].path;
+        match result {
+            Ok(()) => written.extend(batch.outcomes[*j].artifacts.iter().flatten().map(|a| (out_dir.join(&a.file_name), path.as_path()))),
             Err(e) => {
                 reporter.plain(&Diagnostic::error_nowhere(format!("{e}; no output of `{}` was changed", path.display())));
                 code = code.max(EXIT_ERROR);
