@@ -333,7 +333,8 @@ fn watch_latency(dir: &Path, edits: usize) -> (f64, usize) {
     wait("0.85f");
     let mut times = Vec::new();
     for i in 0..edits {
-        let k = format!("0.{:02}", 50 + i);
+        // Two digits, the last not 0 (naga writes 0.5 as `0.5f`).
+        let k = format!("0.{}{}", 1 + i / 9 % 8, 1 + i % 9);
         let edited = text.replace(marker, &format!("(0.15 + {k} * ndotl * shadow)"));
         std::thread::sleep(Duration::from_millis(150));
         let t0 = Instant::now();
