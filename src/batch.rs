@@ -443,4 +443,14 @@ mod tests {
             }
         }
     }
+
+    #[test]
+    fn an_unreadable_unit_is_a_located_error_not_a_panic() {
+        let missing = Path::new("/nonexistent/missing.das");
+        let (out, _) = compile_cached(&[Unit { path: missing, opts: Options::default(), extra: String::new() }], 2, None, None);
+        let c = out[0].compilation.as_ref().unwrap();
+        assert_eq!(c.diagnostics.len(), 1);
+        assert_eq!(c.diagnostics[0].severity, crate::Severity::Error, "{:?}", c.diagnostics);
+        assert!(c.diagnostics[0].message.contains("cannot read `/nonexistent/missing.das`"), "{:?}", c.diagnostics);
+    }
 }

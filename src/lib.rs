@@ -227,6 +227,9 @@ pub fn stem_of(name: &str) -> String {
 #[derive(Debug)]
 pub struct Preprocessed {
     sources: SourceMap,
+    /// The root's name in diagnostics (kept apart: an unreadable root is
+    /// not in `sources`).
+    name: String,
     root: source::FileId,
     tokens: Vec<syntax::token::Token>,
     diags: Diagnostics,
@@ -240,7 +243,7 @@ impl Preprocessed {
 
     /// The root file's name in diagnostics.
     pub fn root_name(&self) -> &str {
-        &self.sources.file(self.root).name
+        &self.name
     }
 
     /// The preprocessed token stream of the whole translation unit.
@@ -281,7 +284,7 @@ pub fn preprocess_file(path: &Path, opts: &Options) -> Preprocessed {
         }
         Err(d) => {
             diags.push(d);
-            Preprocessed { sources, root: 0, tokens: Vec::new(), diags }
+            Preprocessed { sources, name, root: 0, tokens: Vec::new(), diags }
         }
     }
 }
@@ -302,7 +305,8 @@ fn preprocess_root(mut sources: SourceMap, root: source::FileId, opts: &Options)
     } else {
         Vec::new()
     };
-    Preprocessed { sources, root, tokens, diags }
+    let name = sources.file(root).name.clone();
+    Preprocessed { sources, name, root, tokens, diags }
 }
 
 fn run(sources: SourceMap, root: source::FileId, opts: &Options) -> Compilation {
@@ -311,7 +315,7 @@ fn run(sources: SourceMap, root: source::FileId, opts: &Options) -> Compilation 
 
 /// Everything after preprocessing: parse, check, lower, emit.
 fn finish(pre: Preprocessed, opts: &Options) -> Compilation {
-    let Preprocessed { sources, root, tokens, mut diags } = pre;
+    let Preprocessed { sources, root, tokens, mut diags, .. } = pre;
     if diags.has_errors() || sources.is_empty() {
         let suppressed_errors = diags.suppressed();
         return Compilation { sources, diagnostics: diags.into_vec(), suppressed_errors, result: None };
