@@ -99,6 +99,7 @@ fn main() {
     .unwrap();
     let n = variants.len();
     eprintln!("{n} variants, {rounds} rounds, load {load_before}");
+    let machine_before = machine_speedup();
 
     // Cold, by jobs.
     let mut by_jobs = Vec::new();
@@ -165,11 +166,15 @@ fn main() {
     let (noop, script_ms) = build_script(&work.join("crate"), rounds);
     let watch = watch_latency(&work.join("watch"), rounds.max(9));
     let load_after = load();
+    let machine_after = machine_speedup();
 
     let j1 = by_jobs[0].1;
     let j2 = by_jobs[1].1;
     let mut t = String::new();
     t.push_str(&format!("{n} variants of `{PROG}`, median of {rounds} runs; load average {load_before} before, {load_after} after.\n\n"));
+    t.push_str(&format!(
+        "What the machine itself gave a second thread (pure arithmetic, 2 threads against 1): **{machine_before:.2}x** before, **{machine_after:.2}x** after; 2.0x is two free cores.\n\n"
+    ));
     t.push_str("| measurement | wall | CPU | ratio | goal |\n|---|---|---|---|---|\n");
     for (jobs, s) in &by_jobs {
         t.push_str(&format!("| cold, `--jobs {jobs}` | {:.0} ms | {:.0} ms | {:.0} variants/s | |\n", s.wall * 1e3, s.cpu * 1e3, n as f64 / s.wall));
@@ -210,6 +215,29 @@ fn main() {
     if let Err(e) = plot(&by_jobs, n) {
         eprintln!("plot: {e}");
     }
+}
+
+/// How much faster two threads of pure arithmetic finish the same work as
+/// one, right now: what a second job can gain on this machine at best.
+fn machine_speedup() -> f64 {
+    fn spin(n: u64) -> u64 {
+        let mut x = 0x9e3779b97f4a7c15u64;
+        for i in 0..n {
+            x = (x ^ i).wrapping_mul(0xff51afd7ed558ccd).rotate_left(17);
+        }
+        x
+    }
+    const N: u64 = 200_000_000;
+    let t0 = Instant::now();
+    std::hint::black_box(spin(2 * N));
+    let one = t0.elapsed().as_secs_f64();
+    let t0 = Instant::now();
+    std::thread::scope(|s| {
+        let a = s.spawn(|| std::hint::black_box(spin(N)));
+        std::hint::black_box(spin(N));
+        let _ = a.join();
+    });
+    one / t0.elapsed().as_secs_f64()
 }
 
 fn verdict(met: bool) -> &'static str {
