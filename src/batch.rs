@@ -9,7 +9,8 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 
-use crate::{Compilation, Diagnostic, Options, SourceMap};
+use crate::cache::{Cache, Key};
+use crate::{Artifact, Compilation, Diagnostic, Options, Preprocessed, SourceMap};
 
 /// A program found under a directory.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -137,6 +138,221 @@ fn compile_caught(job: &Job<'_>) -> Compilation {
     })
 }
 
+/// Runs `f(0)` ... `f(count - 1)` on at most `workers` compiler threads
+/// ([`crate::spawn_compiler_thread`]) and returns the results in order. A
+/// panic in one call becomes `on_panic(i, message)` for it and does not
+/// stop the others; if no thread can be started, the calls left run on
+/// the calling thread.
+pub fn parallel_map<T: Send>(count: usize, workers: usize, f: impl Fn(usize) -> T + Sync, on_panic: impl Fn(usize, String) -> T + Sync) -> Vec<T> {
+    let call = |i: usize| {
+        std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| f(i))).unwrap_or_else(|payload| on_panic(i, crate::diag::panic_message(&*payload)))
+    };
+    let results: Vec<Mutex<Option<T>>> = (0..count).map(|_| Mutex::new(None)).collect();
+    let next = AtomicUsize::new(0);
+    let run_next = || loop {
+        let i = next.fetch_add(1, Ordering::Relaxed);
+        if i >= count {
+            break;
+        }
+        let r = call(i);
+        if let Ok(mut slot) = results[i].lock() {
+            *slot = Some(r);
+        }
+    };
+    let workers = workers.clamp(1, count.max(1));
+    std::thread::scope(|s| {
+        for _ in 0..workers {
+            if crate::spawn_compiler_thread(s, run_next).is_err() {
+                break;
+            }
+        }
+    });
+    results.into_iter().enumerate().map(|(i, slot)| slot.into_inner().ok().flatten().unwrap_or_else(|| call(i))).collect()
+}
+
+// ---- Batches with a cache -------------------------------------------------
+
+/// One compilation of a cached batch ([`compile_cached`]).
+#[derive(Clone, Debug)]
+pub struct Unit<'a> {
+    pub path: &'a Path,
+    pub opts: Options,
+    /// What else the outputs depend on, for the cache key: a caller that
+    /// adds outputs of its own through `derive` names their options here.
+    pub extra: String,
+}
+
+/// Where a unit's outputs came from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Origin {
+    /// Compiled in this batch (or failed).
+    Compiled,
+    /// Read from the cache: nothing was parsed.
+    Cached,
+    /// Preprocessed to the same key as the earlier unit with this index,
+    /// whose outputs (or failure) it shares.
+    SameAs(usize),
+}
+
+/// What one unit produced.
+#[derive(Debug)]
+pub struct Outcome {
+    /// The outputs (with the `derive`d ones), if it compiled without errors.
+    pub artifacts: Option<Vec<Artifact>>,
+    /// The compilation, for a unit compiled here, or the failed
+    /// preprocessing (or panic) of any unit: its diagnostics and sources.
+    /// `None` for a cache hit and for a unit that shares another's outputs.
+    pub compilation: Option<Compilation>,
+    /// Every file read, includes too (for depfiles and `rerun-if-changed`).
+    pub files_read: Vec<PathBuf>,
+    pub origin: Origin,
+    pub key: Option<Key>,
+}
+
+impl Outcome {
+    /// Whether the unit failed; a [`Origin::SameAs`] unit fails when its
+    /// original does (look that one's diagnostics up).
+    pub fn failed(&self) -> bool {
+        self.artifacts.is_none()
+    }
+}
+
+/// Counts of a cached batch.
+#[derive(Clone, Debug, Default)]
+pub struct Stats {
+    pub compiled: usize,
+    pub cached: usize,
+    pub shared: usize,
+    /// Entries written to the cache.
+    pub stored: usize,
+    /// The first error writing the cache (the batch goes on without it).
+    pub store_error: Option<String>,
+}
+
+/// Outputs a caller adds to a unit's compiled outputs, cached with them
+/// (`umbrac::build`'s bindings module): `derive(unit index, compiled)`.
+pub type Derive<'a> = dyn Fn(usize, &crate::Compiled) -> Result<Vec<Artifact>, String> + Sync + 'a;
+
+/// Compiles every unit on at most `workers` threads, with a cache: each
+/// unit is preprocessed (in parallel) and keyed ([`Key::of`]); units with
+/// the same key are compiled once; a key found in `cache` is not compiled
+/// at all; what was compiled without any diagnostic is stored. Results come
+/// back in the units' order. A panic anywhere is an internal-error
+/// diagnostic of that unit only.
+pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>, derive: Option<&Derive<'_>>) -> (Vec<Outcome>, Stats) {
+    enum Pre {
+        Failed(Box<Compilation>),
+        Hit(Vec<Artifact>),
+        Miss(Box<Preprocessed>),
+    }
+    let first = parallel_map(
+        units.len(),
+        workers,
+        |i| {
+            let u = &units[i];
+            let pre = crate::preprocess_file(u.path, &u.opts);
+            let files_read = pre.files_read();
+            if pre.has_errors() {
+                return (Pre::Failed(Box::new(pre.compile(&u.opts))), files_read, None);
+            }
+            let key = Key::of(&pre, &u.opts, &u.extra);
+            match cache.and_then(|c| c.get(&key)) {
+                Some(artifacts) => (Pre::Hit(artifacts), files_read, Some(key)),
+                None => (Pre::Miss(Box::new(pre)), files_read, Some(key)),
+            }
+        },
+        |i, msg| (Pre::Failed(Box::new(panicked_in(units[i].path, &msg))), Vec::new(), None),
+    );
+
+    // Each key's first unit is compiled (or was a hit); later ones share it.
+    let mut first_of: std::collections::HashMap<Key, usize> = Default::default();
+    let mut outcomes: Vec<Option<Outcome>> = Vec::with_capacity(units.len());
+    let mut to_compile: Vec<(usize, Box<Preprocessed>)> = Vec::new();
+    let mut stats = Stats::default();
+    for (i, (pre, files_read, key)) in first.into_iter().enumerate() {
+        if let Some(&j) = key.as_ref().and_then(|k| first_of.get(k)) {
+            stats.shared += 1;
+            outcomes.push(Some(Outcome { artifacts: None, compilation: None, files_read, origin: Origin::SameAs(j), key }));
+            continue;
+        }
+        if let Some(k) = key {
+            first_of.insert(k, i);
+        }
+        outcomes.push(Some(match pre {
+            Pre::Failed(c) => Outcome { artifacts: None, compilation: Some(*c), files_read, origin: Origin::Compiled, key },
+            Pre::Hit(artifacts) => {
+                stats.cached += 1;
+                Outcome { artifacts: Some(artifacts), compilation: None, files_read, origin: Origin::Cached, key }
+            }
+            Pre::Miss(pre) => {
+                to_compile.push((i, pre));
+                Outcome { artifacts: None, compilation: None, files_read, origin: Origin::Compiled, key }
+            }
+        }));
+    }
+
+    let (indices, pres): (Vec<usize>, Vec<Box<Preprocessed>>) = to_compile.into_iter().unzip();
+    let pres: Vec<Mutex<Option<Box<Preprocessed>>>> = pres.into_iter().map(|p| Mutex::new(Some(p))).collect();
+    let compiled = parallel_map(
+        indices.len(),
+        workers,
+        |n| {
+            let i = indices[n];
+            let u = &units[i];
+            let pre = pres[n].lock().ok().and_then(|mut p| p.take()).expect("each unit is compiled once");
+            let mut c = pre.compile(&u.opts);
+            let mut artifacts = c.result.as_ref().filter(|_| !c.has_errors()).map(|r| r.artifacts.clone());
+            if let (Some(arts), Some(derive), Some(result)) = (artifacts.as_mut(), derive, c.result.as_ref()) {
+                match derive(i, result) {
+                    Ok(more) => arts.extend(more),
+                    Err(msg) => {
+                        c.diagnostics.push(Diagnostic::error_nowhere(format!("{}: {msg}", u.path.display())));
+                        artifacts = None;
+                    }
+                }
+            }
+            // Only a compilation that said nothing is stored: a hit must
+            // not hide a diagnostic.
+            let stored = match (&artifacts, cache, &outcome_key(&outcomes[i])) {
+                (Some(arts), Some(cache), Some(key)) if c.diagnostics.is_empty() => Some(cache.put(key, arts).map_err(|e| format!("cannot write to the cache in `{}`: {e}", cache.dir().display()))),
+                _ => None,
+            };
+            (c, artifacts, stored)
+        },
+        |n, msg| (panicked_in(units[indices[n]].path, &msg), None, None),
+    );
+    for (i, (c, artifacts, stored)) in indices.into_iter().zip(compiled) {
+        stats.compiled += 1;
+        match stored {
+            Some(Ok(())) => stats.stored += 1,
+            Some(Err(e)) => {
+                stats.store_error.get_or_insert(e);
+            }
+            None => {}
+        }
+        if let Some(o) = outcomes[i].as_mut() {
+            o.artifacts = artifacts;
+            o.compilation = Some(c);
+        }
+    }
+    let mut outcomes: Vec<Outcome> = outcomes.into_iter().map(|o| o.expect("every unit has an outcome")).collect();
+    for i in 0..outcomes.len() {
+        if let Origin::SameAs(j) = outcomes[i].origin {
+            outcomes[i].artifacts = outcomes[j].artifacts.clone();
+        }
+    }
+    (outcomes, stats)
+}
+
+fn outcome_key(o: &Option<Outcome>) -> Option<Key> {
+    o.as_ref().and_then(|o| o.key)
+}
+
+fn panicked_in(path: &Path, msg: &str) -> Compilation {
+    let msg = format!("the compiler panicked while compiling `{}`: {msg}", path.display());
+    Compilation { sources: SourceMap::new(), diagnostics: vec![Diagnostic::bug(msg, None)], suppressed_errors: 0, result: None }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -195,5 +411,46 @@ mod tests {
             assert_eq!(ok, [true, false, true], "{workers} workers");
         }
         assert!(compile_many(&[], 4).is_empty());
+    }
+
+    #[test]
+    fn a_cached_batch_compiles_each_key_once_and_a_panic_fails_only_its_unit() {
+        let t = tempfile::tempdir().unwrap();
+        let prog = t.path().join("p.das");
+        std::fs::write(&prog, "var @out f_color : float4\n[fragment_program]\ndef fs {\n    f_color = float4(V)\n}\n").unwrap();
+        let with = |v: &str| Options { defines: vec![("V".into(), Some(v.into()))], targets: vec![crate::Target::Wgsl], ..Options::default() };
+        let units: Vec<Unit> = ["1.0", "2.0", "1.0", "3.0"].iter().map(|v| Unit { path: &prog, opts: with(v), extra: String::new() }).collect();
+        let cache = Cache::new(t.path().join("cache"), crate::cache::DEFAULT_MAX_BYTES);
+        // The unit compiled for "3.0" panics in the caller's hook.
+        let derive = |i: usize, _: &crate::Compiled| -> Result<Vec<Artifact>, String> {
+            if i == 3 {
+                panic!("hook blew up");
+            }
+            Ok(vec![])
+        };
+        for workers in [1, 3] {
+            let (out, stats) = compile_cached(&units, workers, Some(&cache), Some(&derive));
+            assert_eq!(out[2].origin, Origin::SameAs(0));
+            assert!(!out[0].failed() && !out[1].failed() && !out[2].failed());
+            assert!(out[3].failed());
+            let c = out[3].compilation.as_ref().unwrap();
+            assert_eq!(c.diagnostics[0].severity, crate::Severity::Bug);
+            assert!(c.diagnostics[0].message.contains("panicked") && c.diagnostics[0].message.contains("hook blew up"), "{:?}", c.diagnostics);
+            if workers == 1 {
+                assert_eq!((stats.compiled, stats.cached, stats.shared, stats.stored), (3, 0, 1, 2));
+            } else {
+                assert_eq!((stats.compiled, stats.cached, stats.shared), (1, 2, 1), "a hit for 1.0 and 2.0, 3.0 compiled again");
+            }
+        }
+    }
+
+    #[test]
+    fn an_unreadable_unit_is_a_located_error_not_a_panic() {
+        let missing = Path::new("/nonexistent/missing.das");
+        let (out, _) = compile_cached(&[Unit { path: missing, opts: Options::default(), extra: String::new() }], 2, None, None);
+        let c = out[0].compilation.as_ref().unwrap();
+        assert_eq!(c.diagnostics.len(), 1);
+        assert_eq!(c.diagnostics[0].severity, crate::Severity::Error, "{:?}", c.diagnostics);
+        assert!(c.diagnostics[0].message.contains("cannot read `/nonexistent/missing.das`"), "{:?}", c.diagnostics);
     }
 }

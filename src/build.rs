@@ -49,12 +49,34 @@ pub struct Variant {
 #[derive(Clone, Debug, Default)]
 pub struct Build {
     variants: Vec<Variant>,
+    /// Files compiled in every variant of a spec: (file, spec).
+    specs: Vec<(PathBuf, SpecSource)>,
     dirs: Vec<PathBuf>,
+    /// `None`: `OUT_DIR/umbrac-cache`; `Some(None)`: no cache.
+    cache: Option<Option<PathBuf>>,
     options: Options,
     out_dir: Option<PathBuf>,
     bytemuck: Option<bool>,
     no_bindings: bool,
     quiet: bool,
+}
+
+#[derive(Clone, Debug)]
+enum SpecSource {
+    Spec(crate::variants::Spec),
+    #[cfg(feature = "spec")]
+    Toml(PathBuf),
+}
+
+/// One module to build: a file, its defines, and where it goes.
+#[derive(Clone, Debug)]
+struct Planned {
+    variant: Variant,
+    /// For a spec's variant, the file's module (its stem) holding the
+    /// variant's module.
+    group: Option<String>,
+    /// The manifest's `source`: the file's name, or its path under a `dir`.
+    source_name: String,
 }
 
 /// What one variant produced.
@@ -113,6 +135,38 @@ impl Build {
             name: name.to_string(),
             defines: defines.iter().map(|(n, v)| (n.to_string(), v.map(str::to_string))).collect(),
         });
+        self
+    }
+
+    /// Compiles `file` in every variant of `spec` (named variants and the
+    /// product of its axes, [`crate::variants`]) into one module named
+    /// after the file's stem, holding a module per variant and a
+    /// `VARIANTS` table of `(name, defines)`; outputs go to
+    /// `OUT_DIR/umbrac/STEM/VARIANT/`.
+    pub fn variants(mut self, file: impl AsRef<Path>, spec: &crate::variants::Spec) -> Self {
+        self.specs.push((file.as_ref().to_path_buf(), SpecSource::Spec(spec.clone())));
+        self
+    }
+
+    /// [`Build::variants`] with the spec read from a TOML file (the
+    /// format of `umbrac compile --variants`; feature `spec`). The build
+    /// reruns when it changes.
+    #[cfg(feature = "spec")]
+    pub fn variants_file(mut self, file: impl AsRef<Path>, spec: impl AsRef<Path>) -> Self {
+        self.specs.push((file.as_ref().to_path_buf(), SpecSource::Toml(spec.as_ref().to_path_buf())));
+        self
+    }
+
+    /// The compile cache's directory; default `OUT_DIR/umbrac-cache`
+    /// (docs/build.md, "The cache").
+    pub fn cache_dir(mut self, dir: impl AsRef<Path>) -> Self {
+        self.cache = Some(Some(dir.as_ref().to_path_buf()));
+        self
+    }
+
+    /// Compile everything, reading and writing no cache.
+    pub fn no_cache(mut self) -> Self {
+        self.cache = Some(None);
         self
     }
 
@@ -211,79 +265,163 @@ impl Build {
         }
         .join("umbrac");
 
-        let mut variants = self.variants.clone();
+        let err = |summary: String| Error { summary, details: String::new() };
+        let file_name = |f: &Path| f.file_name().map_or_else(|| f.display().to_string(), |n| n.to_string_lossy().into_owned());
+        let mut planned: Vec<Planned> =
+            self.variants.iter().map(|v| Planned { variant: v.clone(), group: None, source_name: file_name(&v.file) }).collect();
         for dir in &self.dirs {
             self.cargo(&format!("rerun-if-changed={}", dir.display()));
-            let found = crate::batch::programs_under(dir).map_err(|e| Error { summary: format!("cannot list shader directory {}: {e}", dir.display()), details: String::new() })?;
+            let found = crate::batch::programs_under(dir).map_err(|e| err(format!("cannot list shader directory {}: {e}", dir.display())))?;
             for f in found {
                 let name = crate::stem_of(&f.path.to_string_lossy());
-                variants.push(Variant { file: f.path, name, defines: vec![] });
+                let mut rel: Vec<String> = f.subdir.components().map(|c| c.as_os_str().to_string_lossy().into_owned()).collect();
+                rel.push(file_name(&f.path));
+                planned.push(Planned { variant: Variant { file: f.path, name, defines: vec![] }, group: None, source_name: rel.join("/") });
             }
         }
-        if variants.is_empty() {
-            return Err(Error { summary: "no shader files to compile (Build::file, ::variant or ::dir)".into(), details: String::new() });
-        }
-        for (i, v) in variants.iter().enumerate() {
-            if !valid_name(&v.name) {
-                return Err(Error { summary: format!("variant name `{}` of {} is not a Rust identifier", v.name, v.file.display()), details: String::new() });
+        for (file, source) in &self.specs {
+            let spec = match source {
+                SpecSource::Spec(s) => s.clone(),
+                #[cfg(feature = "spec")]
+                SpecSource::Toml(path) => {
+                    self.cargo(&format!("rerun-if-changed={}", path.display()));
+                    read_spec(path)?
+                }
+            };
+            let group = crate::stem_of(&file.to_string_lossy());
+            for v in spec.expand().map_err(|e| err(format!("variants of {}: {e}", file.display())))? {
+                planned.push(Planned { variant: Variant { file: file.clone(), name: v.name, defines: v.defines }, group: Some(group.clone()), source_name: file_name(file) });
             }
-            if variants[..i].iter().any(|o| o.name == v.name) {
-                return Err(Error { summary: format!("two shader variants are named `{}`; give them different names", v.name), details: String::new() });
+        }
+        if planned.is_empty() {
+            return Err(err("no shader files to compile (Build::file, ::variant, ::variants or ::dir)".into()));
+        }
+        let mut seen = std::collections::HashSet::new();
+        for p in &planned {
+            let v = &p.variant;
+            if !valid_name(&v.name) || p.group.as_ref().is_some_and(|g| !valid_name(g)) {
+                return Err(err(format!("variant name `{}` of {} is not a Rust identifier", p.group.as_ref().unwrap_or(&v.name), v.file.display())));
+            }
+            let top = p.group.as_ref().unwrap_or(&v.name);
+            if !seen.insert((p.group.clone(), v.name.clone())) || (p.group.is_none() && planned.iter().any(|o| o.group.as_ref() == Some(top))) {
+                return Err(err(format!("two shader variants are named `{top}`; give them different names")));
             }
         }
 
-        let comps = self.compile_all(&variants);
+        let bytemuck = self.bytemuck.unwrap_or(true);
+        let units: Vec<crate::batch::Unit> = planned
+            .iter()
+            .map(|p| {
+                let mut opts = self.options_for(&p.variant);
+                opts.source_name = Some(p.source_name.clone());
+                let extra = if self.no_bindings { String::new() } else { format!("bindgen module={} bytemuck={bytemuck}", p.variant.name) };
+                crate::batch::Unit { path: &p.variant.file, opts, extra }
+            })
+            .collect();
+        let derive = |i: usize, compiled: &crate::Compiled| -> Result<Vec<Artifact>, String> {
+            let opts = BindgenOptions { module_name: Some(planned[i].variant.name.clone()), bytemuck, sources: true };
+            let text = bindgen::generate(compiled, &opts)?;
+            Ok(vec![Artifact { file_name: BINDINGS.into(), target: None, entry: None, contents: text.into_bytes() }])
+        };
+        let cache = match &self.cache {
+            Some(None) => None,
+            Some(Some(d)) => Some(crate::cache::Cache::new(d, crate::cache::DEFAULT_MAX_BYTES)),
+            None => Some(crate::cache::Cache::new(out_root.with_file_name("umbrac-cache"), crate::cache::DEFAULT_MAX_BYTES)),
+        };
+        let derive_ref: Option<&crate::batch::Derive> = if self.no_bindings { None } else { Some(&derive) };
+        let (outcomes, stats) = crate::batch::compile_cached(&units, crate::batch::default_workers(), cache.as_ref(), derive_ref);
+        if stats.stored > 0 {
+            if let Some(c) = &cache {
+                c.trim();
+            }
+        }
+
         let mut failed = Vec::new();
         let mut details = String::new();
         let mut built = Vec::new();
-        let mut modules = Vec::new();
-        for (v, c) in variants.iter().zip(&comps) {
-            let mut files_read = c.files_read();
+        let mut modules: Vec<String> = Vec::new();
+        let mut groups: Vec<(String, Vec<(String, String)>)> = Vec::new();
+        let mut rerun = std::collections::BTreeSet::new();
+        for (p, o) in planned.iter().zip(&outcomes) {
+            let v = &p.variant;
+            let mut files_read = o.files_read.clone();
             let mut seen = std::collections::HashSet::new();
             files_read.retain(|f| seen.insert(f.clone()));
-            for f in &files_read {
-                self.cargo(&format!("rerun-if-changed={}", f.display()));
-            }
+            rerun.extend(files_read.iter().cloned());
             if files_read.is_empty() {
-                self.cargo(&format!("rerun-if-changed={}", v.file.display()));
+                rerun.insert(v.file.clone());
             }
-            self.report(c, &mut details);
-            let Some(result) = c.result.as_ref().filter(|_| !c.has_errors()) else {
+            // A unit that shares another's compilation shares its report too.
+            if let Some(c) = &o.compilation {
+                self.report(c, &mut details);
+            }
+            let Some(artifacts) = &o.artifacts else {
                 failed.push(v.file.display().to_string());
                 continue;
             };
-            let dir = out_root.join(&v.name);
-            write(&dir, &result.artifacts)?;
-            remove_stale(&dir, &result.artifacts);
-            let module = if self.no_bindings {
-                None
-            } else {
-                let opts = BindgenOptions { module_name: Some(v.name.clone()), bytemuck: self.bytemuck.unwrap_or(true), sources: true };
-                let text = bindgen::generate(result, &opts).map_err(|e| Error { summary: format!("{}: {e}", v.file.display()), details: String::new() })?;
-                let file_name = format!("{}.rs", v.name);
-                write(&out_root, &[Artifact { file_name: file_name.clone(), target: None, entry: None, contents: text.into_bytes() }])?;
-                modules.push(file_name);
-                Some(out_root.join(format!("{}.rs", v.name)))
+            let (outputs, bindings): (Vec<Artifact>, Vec<Artifact>) = artifacts.iter().cloned().partition(|a| a.file_name != BINDINGS);
+            let (dir, module_dir) = match &p.group {
+                None => (out_root.join(&v.name), out_root.clone()),
+                Some(g) => (out_root.join(g).join(&v.name), out_root.join(g)),
+            };
+            write(&dir, &outputs)?;
+            remove_stale(&dir, &outputs);
+            let module = match bindings.into_iter().next() {
+                Some(b) => {
+                    let file_name = format!("{}.rs", v.name);
+                    write(&module_dir, &[Artifact { file_name: file_name.clone(), ..b }])?;
+                    match &p.group {
+                        None => modules.push(file_name),
+                        Some(g) => {
+                            let at = groups.iter().position(|(n, _)| n == g).unwrap_or_else(|| {
+                                groups.push((g.clone(), Vec::new()));
+                                modules.push(format!("{g}.rs"));
+                                groups.len() - 1
+                            });
+                            groups[at].1.push((v.name.clone(), crate::variants::describe(&v.defines)));
+                        }
+                    }
+                    Some(module_dir.join(format!("{}.rs", v.name)))
+                }
+                None => None,
             };
             built.push(Built { variant: v.clone(), dir, module, files_read });
         }
+        for f in &rerun {
+            self.cargo(&format!("rerun-if-changed={}", f.display()));
+        }
         if !failed.is_empty() {
+            failed.dedup();
             let summary = format!("umbrac: {} shader file(s) failed to compile: {} (diagnostics above)", failed.len(), failed.join(", "));
             return Err(Error { summary, details });
+        }
+        let include_of = |rel: &str| {
+            if self.out_dir.is_some() {
+                // Not under OUT_DIR: include by absolute path.
+                format!("include!({:?});\n", out_root.join(rel).display().to_string())
+            } else {
+                format!("include!(concat!(env!(\"OUT_DIR\"), \"/umbrac/{rel}\"));\n")
+            }
+        };
+        for (g, variants) in &groups {
+            let mut text = format!("// @generated by umbrac: the variants of `{g}`, one module each.\npub mod {g} {{\n");
+            for (name, _) in variants {
+                text.push_str("    ");
+                text.push_str(&include_of(&format!("{g}/{name}.rs")));
+            }
+            text.push_str("    /// Every variant: its module's name and its defines.\n    pub const VARIANTS: &[(&str, &str)] = &[\n");
+            for (name, defines) in variants {
+                text.push_str(&format!("        ({name:?}, {defines:?}),\n"));
+            }
+            text.push_str("    ];\n}\n");
+            write(&out_root, &[Artifact { file_name: format!("{g}.rs"), target: None, entry: None, contents: text.into_bytes() }])?;
         }
         let index = if self.no_bindings {
             None
         } else {
             let mut text = String::from("// @generated by umbrac: every shader module of this build.\n");
             for m in &modules {
-                text.push_str(&format!("include!(concat!(env!(\"OUT_DIR\"), \"/umbrac/{m}\"));\n"));
-            }
-            if self.out_dir.is_some() {
-                // Not under OUT_DIR: include by absolute path.
-                text = String::from("// @generated by umbrac: every shader module of this build.\n");
-                for m in &modules {
-                    text.push_str(&format!("include!({:?});\n", out_root.join(m).display().to_string()));
-                }
+                text.push_str(&include_of(m));
             }
             write(&out_root, &[Artifact { file_name: "shaders.rs".into(), target: None, entry: None, contents: text.into_bytes() }])?;
             Some(out_root.join("shaders.rs"))
@@ -295,14 +433,6 @@ impl Build {
         let mut o = self.options.clone();
         o.defines.extend(v.defines.iter().cloned());
         o
-    }
-
-    /// Compiles the variants in parallel, as the CLI does
-    /// ([`crate::batch::compile_many`]).
-    fn compile_all(&self, variants: &[Variant]) -> Vec<Compilation> {
-        let opts: Vec<Options> = variants.iter().map(|v| self.options_for(v)).collect();
-        let jobs: Vec<crate::batch::Job> = variants.iter().zip(&opts).map(|(v, opts)| crate::batch::Job { path: &v.file, opts }).collect();
-        crate::batch::compile_many(&jobs, crate::batch::default_workers())
     }
 
     fn cargo(&self, line: &str) {
@@ -340,6 +470,21 @@ impl Build {
             self.cargo("warning=umbrac: compilation failed without a diagnostic");
         }
     }
+}
+
+/// The name a variant's bindings travel under in its cache entry.
+const BINDINGS: &str = "umbrac-bindings.rs";
+
+#[cfg(feature = "spec")]
+fn read_spec(path: &Path) -> Result<crate::variants::Spec, Error> {
+    let text = std::fs::read_to_string(path).map_err(|e| Error { summary: format!("cannot read the variant spec {}: {e}", path.display()), details: String::new() })?;
+    let mut map = crate::SourceMap::new();
+    let id = map.add(path.display().to_string(), Some(path.to_path_buf()), text, None);
+    crate::variants::Spec::parse_toml(&map, id).map_err(|d| {
+        let details = d.render(&map);
+        eprint!("{details}");
+        Error { summary: format!("umbrac: the variant spec {} is not valid (diagnostics above)", path.display()), details }
+    })
 }
 
 fn valid_name(s: &str) -> bool {

@@ -18,6 +18,9 @@ mod serialize;
 pub mod batch;
 pub mod bindgen;
 pub mod build;
+pub mod cache;
+pub mod depfile;
+pub mod jobs;
 pub mod diag;
 pub mod emit;
 #[cfg(feature = "golden")]
@@ -28,6 +31,9 @@ pub mod sema;
 pub mod source;
 pub mod syntax;
 pub mod target;
+pub mod variants;
+#[cfg(feature = "cli")]
+pub mod watch;
 
 #[cfg(feature = "render")]
 pub mod render;
@@ -58,6 +64,11 @@ pub struct Options {
     /// `--daslib DIR`: daslang's `daslib` directory, where `require
     /// daslib/NAME` finds `NAME.das`.
     pub daslib: Option<PathBuf>,
+    /// The name the outputs record for the input (the manifest's `source`,
+    /// the bindings' header); `None`: the name diagnostics show, the path
+    /// as given. The CLI and [`build`] set a name that does not depend on
+    /// the working directory or the machine (docs/build.md, "Determinism").
+    pub source_name: Option<String>,
 }
 
 impl Options {
@@ -213,16 +224,109 @@ pub fn stem_of(name: &str) -> String {
     Path::new(name).file_stem().map(|s| s.to_string_lossy().into_owned()).unwrap_or_else(|| "shader".into())
 }
 
-fn run(mut sources: SourceMap, root: source::FileId, opts: &Options) -> Compilation {
+/// A file read and preprocessed, not yet parsed: what the cache key
+/// ([`cache::Key`]) is computed from, and where a compilation goes on from
+/// when the key is not in the cache.
+#[derive(Debug)]
+pub struct Preprocessed {
+    sources: SourceMap,
+    /// The root's name in diagnostics (kept apart: an unreadable root is
+    /// not in `sources`).
+    name: String,
+    root: source::FileId,
+    unit: syntax::Unit,
+    diags: Diagnostics,
+}
+
+impl Preprocessed {
+    /// Every file read (the input, its includes, the `-D` definitions).
+    pub fn sources(&self) -> &SourceMap {
+        &self.sources
+    }
+
+    /// The root file's name in diagnostics.
+    pub fn root_name(&self) -> &str {
+        &self.name
+    }
+
+    /// The preprocessed token stream of the whole translation unit (the
+    /// input, its includes, and the modules it requires, as far as
+    /// shaders reach them).
+    pub fn tokens(&self) -> &[syntax::token::Token] {
+        &self.unit.tokens
+    }
+
+    /// Whether reading or preprocessing failed (then [`Preprocessed::compile`]
+    /// only reports why).
+    pub fn has_errors(&self) -> bool {
+        self.diags.has_errors()
+    }
+
+    /// Paths of every file read, as [`Compilation::files_read`] gives them.
+    pub fn files_read(&self) -> Vec<PathBuf> {
+        self.sources.files().filter_map(|(_, f)| f.path.clone()).collect()
+    }
+
+    /// Goes on from preprocessing to every output (`opts` must be the
+    /// options it was preprocessed with). Runs where [`compile_file`] runs
+    /// and, like it, turns a panic into an internal error.
+    pub fn compile(self, opts: &Options) -> Compilation {
+        let name = self.root_name().to_string();
+        on_compiler_stack(&name, move || finish(self, opts))
+    }
+}
+
+/// Reads and preprocesses a file from disk: the first step of
+/// [`compile_file`], alone.
+pub fn preprocess_file(path: &Path, opts: &Options) -> Preprocessed {
+    let mut sources = SourceMap::new();
     let mut diags = Diagnostics::new();
-    let parse_opts = syntax::ParseOptions {
+    let name = path.display().to_string();
+    match syntax::read_source(path) {
+        Ok(text) => {
+            let root = sources.add(name, Some(path.to_path_buf()), text, None);
+            preprocess_root(sources, root, opts)
+        }
+        Err(d) => {
+            diags.push(d);
+            Preprocessed { sources, name, root: 0, unit: Default::default(), diags }
+        }
+    }
+}
+
+fn parse_options(opts: &Options) -> syntax::ParseOptions {
+    syntax::ParseOptions {
         defines: opts.defines.clone(),
         include_dirs: opts.include_dirs.clone(),
         entries: opts.entries.clone(),
         allow_outside_includes: opts.allow_outside_includes,
         daslib: opts.daslib.iter().cloned().collect(),
+    }
+}
+
+fn preprocess_root(mut sources: SourceMap, root: source::FileId, opts: &Options) -> Preprocessed {
+    let mut diags = Diagnostics::new();
+    let unit = if syntax::root_fits(&sources, root, &mut diags) {
+        syntax::preprocess_unit(&mut sources, root, &parse_options(opts), &mut diags)
+    } else {
+        Default::default()
     };
-    let program = syntax::parse(&mut sources, root, &parse_opts, &mut diags);
+    let name = sources.file(root).name.clone();
+    Preprocessed { sources, name, root, unit, diags }
+}
+
+fn run(sources: SourceMap, root: source::FileId, opts: &Options) -> Compilation {
+    finish(preprocess_root(sources, root, opts), opts)
+}
+
+/// Everything after preprocessing: parse, check, lower, emit.
+fn finish(pre: Preprocessed, opts: &Options) -> Compilation {
+    let Preprocessed { sources, root, unit, mut diags, .. } = pre;
+    if diags.has_errors() || sources.is_empty() {
+        let suppressed_errors = diags.suppressed();
+        return Compilation { sources, diagnostics: diags.into_vec(), suppressed_errors, result: None };
+    }
+    let program = syntax::parse_unit(&sources, root, unit, &parse_options(opts), &mut diags);
     let checked = if diags.has_errors() { None } else { sema::check_for_targets(&program, &opts.targets(), &mut diags) };
     // Each tree is dropped as soon as the next stage has been built from
     // it, so the next stage's allocations reuse its memory, still in cache.
@@ -237,8 +341,9 @@ fn run(mut sources: SourceMap, root: source::FileId, opts: &Options) -> Compilat
                 return None;
             }
         };
-        let root_name = sources.file(root).name.clone();
-        match emit::emit(&lowered, &stem_of(&root_name), &root_name, &opts.targets()) {
+        let root_name = &sources.file(root).name;
+        let source_name = opts.source_name.as_deref().unwrap_or(root_name);
+        match emit::emit(&lowered, &stem_of(root_name), source_name, &opts.targets()) {
             Ok((artifacts, reflection)) => Some(Compiled { artifacts, reflection, lowered }),
             Err(d) => {
                 diags.push(d);

@@ -35,6 +35,8 @@ use umbrac::{Compilation, Conventions, Diagnostic, Options, Severity, SourceMap,
 const EXIT_ERROR: u8 = 1;
 const EXIT_USAGE: u8 = 2;
 const EXIT_BUG: u8 = 3;
+/// Output directories written at once (they wait on the disk, not a core).
+const WRITERS: usize = 8;
 
 #[derive(Parser, Debug)]
 #[command(name = "umbrac", version, about = "Compiles daslang shaders to GLSL 330, GLSL ES 3.00, WGSL and SPIR-V")]
@@ -75,8 +77,70 @@ struct CompileArgs {
     /// writing: print a unified diff per difference, exit 1 if any.
     #[arg(long)]
     check: bool,
+    /// Compile every variant of a TOML spec into DIR/VARIANT/ and write
+    /// DIR/variants.json (docs/build.md, "Variants").
+    #[arg(long, value_name = "SPEC.toml")]
+    variants: Option<PathBuf>,
+    /// Write a Make-syntax depfile naming every output and every file read.
+    #[arg(long, value_name = "FILE")]
+    depfile: Option<PathBuf>,
+    /// Compile, then again whenever a file read changes, until interrupted;
+    /// a failed compile leaves the last good outputs.
+    #[arg(long)]
+    watch: bool,
+    #[command(flatten)]
+    batch: BatchArgs,
     #[command(flatten)]
     common: CommonArgs,
+}
+
+#[derive(Args, Debug)]
+struct BatchArgs {
+    /// Compilations run at once; default: the cores available.
+    #[arg(short = 'j', long, value_name = "N", value_parser = clap::value_parser!(u32).range(1..=1024))]
+    jobs: Option<u32>,
+    /// Cache directory; default: $UMBRAC_CACHE_DIR, else $XDG_CACHE_HOME/umbrac, else ~/.cache/umbrac.
+    #[arg(long, value_name = "DIR", conflicts_with = "no_cache")]
+    cache: Option<PathBuf>,
+    /// Do not read or write the cache.
+    #[arg(long)]
+    no_cache: bool,
+    /// Bound on the cache's size (bytes, or with K, M or G); default 256M.
+    #[arg(long, value_name = "SIZE", value_parser = parse_size)]
+    cache_size: Option<u64>,
+    /// Print what was compiled and what came from the cache.
+    #[arg(short = 'v', long)]
+    verbose: bool,
+}
+
+fn parse_size(s: &str) -> Result<u64, String> {
+    let (digits, unit) = match s.char_indices().find(|(_, c)| !c.is_ascii_digit()) {
+        Some((i, _)) => s.split_at(i),
+        None => (s, ""),
+    };
+    let n: u64 = digits.parse().map_err(|_| format!("`{s}` is not a size (e.g. 512M)"))?;
+    let mul: u64 = match unit.to_ascii_uppercase().as_str() {
+        "" | "B" => 1,
+        "K" | "KB" | "KIB" => 1 << 10,
+        "M" | "MB" | "MIB" => 1 << 20,
+        "G" | "GB" | "GIB" => 1 << 30,
+        _ => return Err(format!("`{s}`: unknown unit `{unit}` (K, M or G)")),
+    };
+    n.checked_mul(mul).ok_or_else(|| format!("`{s}` is too large"))
+}
+
+impl BatchArgs {
+    fn workers(&self) -> usize {
+        self.jobs.map_or_else(umbrac::batch::default_workers, |n| n as usize)
+    }
+
+    fn cache(&self) -> Option<umbrac::cache::Cache> {
+        if self.no_cache {
+            return None;
+        }
+        let dir = self.cache.clone().or_else(umbrac::cache::Cache::default_dir)?;
+        Some(umbrac::cache::Cache::new(dir, self.cache_size.unwrap_or(umbrac::cache::DEFAULT_MAX_BYTES)))
+    }
 }
 
 #[derive(Args, Debug)]
@@ -84,6 +148,8 @@ struct CheckArgs {
     /// Input files or directories (as for `compile`).
     #[arg(required = true, value_name = "FILE|DIR")]
     files: Vec<PathBuf>,
+    #[command(flatten)]
+    batch: BatchArgs,
     #[command(flatten)]
     common: CommonArgs,
 }
@@ -192,6 +258,7 @@ impl CommonArgs {
             },
             allow_outside_includes: self.allow_outside_includes,
             daslib: self.daslib.clone(),
+            source_name: None,
         }
     }
 }
@@ -278,25 +345,6 @@ fn usage_error(msg: &str) -> u8 {
     EXIT_USAGE
 }
 
-/// The files to compile: each FILE as given, and the programs under each
-/// DIR ([`umbrac::batch::programs_under`]), each with the subdirectory its
-/// outputs go to (relative to the output directory).
-fn expand_inputs(inputs: &[PathBuf]) -> Result<Vec<(PathBuf, PathBuf)>, String> {
-    let mut out = Vec::new();
-    for input in inputs {
-        if !input.is_dir() {
-            out.push((input.clone(), PathBuf::new()));
-            continue;
-        }
-        let found = umbrac::batch::programs_under(input).map_err(|e| e.to_string())?;
-        if found.is_empty() {
-            return Err(format!("no `.das` files under `{}`", input.display()));
-        }
-        out.extend(found.into_iter().map(|f| (f.path, f.subdir)));
-    }
-    Ok(out)
-}
-
 /// Compiles every file with `opts`, in parallel ([`umbrac::batch::compile_many`]).
 fn compile_all(files: &[PathBuf], opts: &Options) -> Vec<Compilation> {
     let jobs: Vec<umbrac::batch::Job> = files.iter().map(|path| umbrac::batch::Job { path, opts }).collect();
@@ -324,58 +372,116 @@ fn targets_of(args: &[TargetArg]) -> Vec<Target> {
 }
 
 fn compile(args: &CompileArgs) -> u8 {
-    let targets = targets_of(&args.targets);
     let to_stdout = args.out.as_deref() == Some(Path::new("-"));
     if args.check && to_stdout {
         return usage_error("`--check` compares with the files in a directory; give `-o DIR`");
     }
-    let inputs = match expand_inputs(&args.files) {
+    if args.check && (args.variants.is_some() || args.depfile.is_some() || args.watch) {
+        return usage_error("`--check` writes nothing: it does not take --variants, --depfile or --watch");
+    }
+    if to_stdout && (args.variants.is_some() || args.depfile.is_some()) {
+        return usage_error("`-o -` prints one output; --variants and --depfile need an output directory");
+    }
+    if args.watch {
+        let mut reporter = Reporter::new(args.common.message_format);
+        return match umbrac::watch::watch(|| compile_once(args)) {
+            Ok(()) => 0,
+            Err(e) => {
+                reporter.plain(&Diagnostic::error_nowhere(e));
+                EXIT_ERROR
+            }
+        };
+    }
+    compile_once(args).0
+}
+
+/// One `compile`: the exit code, and what `--watch` waits on.
+fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
+    let targets = targets_of(&args.targets);
+    let to_stdout = args.out.as_deref() == Some(Path::new("-"));
+    let mut watched = umbrac::watch::Watched { files: args.variants.iter().cloned().collect(), dirs: args.files.iter().filter(|f| f.is_dir()).cloned().collect() };
+    watched.files.extend(args.files.iter().filter(|f| !f.is_dir()).cloned());
+    let inputs = match umbrac::jobs::inputs_of(&args.files) {
         Ok(i) => i,
-        Err(e) => return usage_error(&e),
+        Err(e) => return (usage_error(&e), watched),
     };
     if args.check {
-        return compile_check(args, targets, &inputs);
+        return (compile_check(args, targets, inputs), watched);
     }
-    let files: Vec<PathBuf> = inputs.iter().map(|(f, _)| f.clone()).collect();
     if to_stdout {
-        if files.len() != 1 {
-            return usage_error("`-o -` prints one output to stdout; give exactly one FILE");
+        if inputs.len() != 1 {
+            return (usage_error("`-o -` prints one output to stdout; give exactly one FILE"), watched);
         }
         if targets.contains(&Target::Spirv) {
-            return usage_error("`-o -` prints one text output; SPIR-V is binary (choose one --target of glsl330, gles300, wgsl)");
+            return (usage_error("`-o -` prints one text output; SPIR-V is binary (choose one --target of glsl330, gles300, wgsl)"), watched);
         }
     }
-    let opts = args.common.options(targets);
-    let comps = compile_all(&files, &opts);
-
     let mut reporter = Reporter::new(args.common.message_format);
-    let mut code = 0;
-    let dir = args.out.clone().unwrap_or_else(|| PathBuf::from("."));
-    let mut written: Vec<(PathBuf, &Path)> = Vec::new();
-    for ((path, sub), c) in inputs.iter().zip(&comps) {
-        reporter.compilation(c);
-        code = code.max(exit_code(c));
-        let Some(result) = c.result.as_ref().filter(|_| !c.has_errors()) else { continue };
+    let variants = match &args.variants {
+        None => Vec::new(),
+        Some(spec) => match load_spec(spec) {
+            Ok(v) => v,
+            Err(e) => {
+                let (map, d) = *e;
+                reporter.diagnostic(&d, &map);
+                return (EXIT_ERROR, watched);
+            }
+        },
+    };
+    let opts = args.common.options(targets);
+    let cache = args.batch.cache();
+    let settings = umbrac::jobs::Settings { options: &opts, workers: args.batch.workers(), cache: cache.as_ref() };
+    let batch = umbrac::jobs::Batch::compile(inputs, variants, &settings, None);
+    watched.files.extend(batch.files_read());
+    report_stats(&args.batch, &batch, cache.as_ref(), &mut reporter);
 
+    let mut code = 0;
+    for f in batch.failures() {
+        for d in batch.diagnostics_of(&f) {
+            reporter.diagnostic(&d, &f.compilation.sources);
+        }
+        if f.compilation.suppressed_errors > 0 {
+            reporter.plain(&Diagnostic::error_nowhere(format!("{} more errors not shown", f.compilation.suppressed_errors)));
+        }
+        code = code.max(exit_code(f.compilation));
+    }
+    // Warnings of compilations that succeeded (a cache hit had none).
+    for o in batch.outcomes.iter().filter(|o| !o.failed()) {
+        if let Some(c) = o.compilation.as_ref().filter(|c| !c.diagnostics.is_empty()) {
+            reporter.compilation(c);
+        }
+    }
+    // With variants a run is all or nothing, like one compile.
+    if !batch.variants.is_empty() && code != 0 {
+        return (code, watched);
+    }
+
+    let dir = args.out.clone().unwrap_or_else(|| PathBuf::from("."));
+    // Which job writes where; an output two jobs would write is an error.
+    let mut owner: std::collections::HashMap<PathBuf, &Path> = Default::default();
+    let mut to_write: Vec<(usize, PathBuf)> = Vec::new();
+    for (j, o) in batch.outcomes.iter().enumerate() {
+        let path = &batch.inputs[batch.jobs[j].input].path;
+        let Some(artifacts) = &o.artifacts else { continue };
         if to_stdout {
-            let outputs: Vec<_> = result.artifacts.iter().filter(|a| a.target.is_some()).collect();
+            let outputs: Vec<_> = artifacts.iter().filter(|a| a.target.is_some()).collect();
             if outputs.len() != 1 {
                 let names: Vec<_> = outputs.iter().map(|a| a.file_name.as_str()).collect();
-                return usage_error(&format!(
-                    "`-o -` needs exactly one output, but this compile has {} ({}); narrow it with --target and --entry",
-                    outputs.len(),
-                    names.join(", ")
-                ));
+                return (
+                    usage_error(&format!(
+                        "`-o -` needs exactly one output, but this compile has {} ({}); narrow it with --target and --entry",
+                        outputs.len(),
+                        names.join(", ")
+                    )),
+                    watched,
+                );
             }
             let mut out = std::io::stdout().lock();
             let _ = out.write_all(&outputs[0].contents).and_then(|_| out.flush());
             continue;
         }
-
-        // `dir.join("")` would add a trailing separator.
-        let out_dir = if sub.as_os_str().is_empty() { dir.clone() } else { dir.join(sub) };
-        if let Some(a) = result.artifacts.iter().find(|a| written.iter().any(|(n, _)| *n == out_dir.join(&a.file_name))) {
-            let (_, other) = written.iter().find(|(n, _)| *n == out_dir.join(&a.file_name)).expect("found above");
+        let out_dir = batch.out_dir(j, &dir);
+        if let Some((a, other)) = artifacts.iter().find_map(|a| owner.get(&out_dir.join(&a.file_name)).map(|o| (a, *o))) {
             reporter.plain(&Diagnostic::error_nowhere(format!(
                 "`{}` is an output of both `{}` and `{}`; nothing was written for `{}` (compile them into different directories)",
                 a.file_name,
@@ -386,35 +492,128 @@ fn compile(args: &CompileArgs) -> u8 {
             code = code.max(EXIT_ERROR);
             continue;
         }
-        match umbrac::output::write_artifacts(&out_dir, &result.artifacts) {
-            Ok(()) => written.extend(result.artifacts.iter().map(|a| (out_dir.join(&a.file_name), path.as_path()))),
+        owner.extend(artifacts.iter().map(|a| (out_dir.join(&a.file_name), path.as_path())));
+        to_write.push((j, out_dir));
+    }
+    // Each directory atomically, several at once: the writes wait on the
+    // disk (every file is synced), not on a core.
+    let results = umbrac::batch::parallel_map(
+        to_write.len(),
+        WRITERS,
+        |k| {
+            let (j, out_dir) = &to_write[k];
+            umbrac::jobs::write_outputs(out_dir, batch.outcomes[*j].artifacts.as_deref().unwrap_or_default()).map_err(|e| e.to_string())
+        },
+        |_, msg| Err(format!("writing panicked: {msg}")),
+    );
+    let mut written: Vec<(PathBuf, &Path)> = Vec::new();
+    for ((j, out_dir), result) in to_write.iter().zip(results) {
+        let path = &batch.inputs[batch.jobs[*j].input].path;
+        match result {
+            Ok(()) => written.extend(batch.outcomes[*j].artifacts.iter().flatten().map(|a| (out_dir.join(&a.file_name), path.as_path()))),
             Err(e) => {
                 reporter.plain(&Diagnostic::error_nowhere(format!("{e}; no output of `{}` was changed", path.display())));
                 code = code.max(EXIT_ERROR);
             }
         }
     }
-    code
+    if to_stdout {
+        return (code, watched);
+    }
+    if !batch.variants.is_empty() && code == 0 {
+        let manifest = umbrac::jobs::variants_artifact(&batch);
+        match umbrac::jobs::write_outputs(&dir, std::slice::from_ref(&manifest)) {
+            Ok(()) => written.push((dir.join(&manifest.file_name), Path::new(""))),
+            Err(e) => {
+                reporter.plain(&Diagnostic::error_nowhere(e.to_string()));
+                code = code.max(EXIT_ERROR);
+            }
+        }
+    }
+    // Like `gcc -MD`: a depfile only for a build that succeeded.
+    if let (Some(depfile), 0) = (&args.depfile, code) {
+        let targets: Vec<PathBuf> = written.iter().map(|(p, _)| p.clone()).collect();
+        let mut prerequisites = batch.files_read();
+        prerequisites.extend(args.variants.iter().cloned());
+        let text = umbrac::depfile::render(&targets, &prerequisites);
+        if let Err(e) = write_file(depfile, text.into_bytes()) {
+            reporter.plain(&Diagnostic::error_nowhere(e));
+            code = code.max(EXIT_ERROR);
+        }
+    }
+    (code, watched)
+}
+
+/// What a FILE argument's outputs record of it: its file name
+/// (docs/scale.md, "Determinism").
+fn file_name_of(path: &Path) -> Option<String> {
+    path.file_name().map(|n| n.to_string_lossy().into_owned())
+}
+
+/// Reads and expands a variant spec; errors point into it.
+fn load_spec(path: &Path) -> Result<Vec<umbrac::variants::Variant>, Box<(SourceMap, Diagnostic)>> {
+    let mut map = SourceMap::new();
+    let text = match std::fs::read_to_string(path) {
+        Ok(t) => t,
+        Err(e) => return Err(Box::new((map, Diagnostic::error_nowhere(format!("cannot read the variant spec `{}`: {e}", path.display()))))),
+    };
+    let id = map.add(path.display().to_string(), Some(path.to_path_buf()), text, None);
+    let spec = match umbrac::variants::Spec::parse_toml(&map, id) {
+        Ok(s) => s,
+        Err(d) => return Err(Box::new((map, d))),
+    };
+    spec.expand().map_err(|e| Box::new((SourceMap::new(), Diagnostic::error_nowhere(format!("`{}`: {e}", path.display())))))
+}
+
+/// `-v`: what was compiled, shared and read from the cache.
+fn report_stats(args: &BatchArgs, batch: &umbrac::jobs::Batch, cache: Option<&umbrac::cache::Cache>, reporter: &mut Reporter) {
+    let s = &batch.stats;
+    if let Some(e) = &s.store_error {
+        let mut d = Diagnostic::error_nowhere(e.clone());
+        d.severity = Severity::Warning;
+        reporter.plain(&d);
+    }
+    if args.verbose {
+        let where_ = cache.map_or("no cache".to_string(), |c| format!("cache {}", c.dir().display()));
+        eprintln!("umbrac: {} jobs: {} compiled, {} from the cache, {} same as another ({where_}, {} stored)", batch.jobs.len(), s.compiled, s.cached, s.shared, s.stored);
+    }
+    if s.stored > 0 {
+        if let Some(c) = cache {
+            c.trim();
+        }
+    }
+}
+
+/// Writes one file atomically.
+fn write_file(path: &Path, contents: Vec<u8>) -> Result<(), String> {
+    let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).ok_or_else(|| format!("`{}` is not a file name", path.display()))?;
+    let a = umbrac::Artifact { file_name: name, target: None, entry: None, contents };
+    umbrac::output::write_artifacts(dir, &[a]).map_err(|e| e.to_string())
 }
 
 fn check(args: &CheckArgs) -> u8 {
     let opts = args.common.options(Target::ALL.to_vec());
-    let files: Vec<PathBuf> = match expand_inputs(&args.files) {
-        Ok(i) => i.into_iter().map(|(f, _)| f).collect(),
+    let inputs = match umbrac::jobs::inputs_of(&args.files) {
+        Ok(i) => i,
         Err(e) => return usage_error(&e),
     };
-    let comps = compile_all(&files, &opts);
+    let cache = args.batch.cache();
+    let settings = umbrac::jobs::Settings { options: &opts, workers: args.batch.workers(), cache: cache.as_ref() };
+    let batch = umbrac::jobs::Batch::compile(inputs, Vec::new(), &settings, None);
     let mut reporter = Reporter::new(args.common.message_format);
+    report_stats(&args.batch, &batch, cache.as_ref(), &mut reporter);
     let mut code = 0;
-    for c in &comps {
-        reporter.compilation(c);
-        code = code.max(exit_code(c));
+    for f in batch.failures() {
+        reporter.compilation(f.compilation);
+        code = code.max(exit_code(f.compilation));
     }
     code
 }
 
 fn reflect(args: &ReflectArgs) -> u8 {
-    let opts = args.common.options(Target::ALL.to_vec());
+    let mut opts = args.common.options(Target::ALL.to_vec());
+    opts.source_name = file_name_of(&args.file);
     let comps = compile_all(std::slice::from_ref(&args.file), &opts);
     let c = &comps[0];
     let mut reporter = Reporter::new(args.common.message_format);
@@ -431,24 +630,25 @@ fn reflect(args: &ReflectArgs) -> u8 {
 
 /// `compile --check`: every difference between the outputs and the files in
 /// the directory, as unified diffs on stdout; nothing is written.
-fn compile_check(args: &CompileArgs, targets: Vec<Target>, inputs: &[(PathBuf, PathBuf)]) -> u8 {
+fn compile_check(args: &CompileArgs, targets: Vec<Target>, inputs: Vec<umbrac::jobs::Input>) -> u8 {
     let opts = args.common.options(targets);
-    let files: Vec<PathBuf> = inputs.iter().map(|(f, _)| f.clone()).collect();
-    let comps = compile_all(&files, &opts);
+    let cache = args.batch.cache();
+    let settings = umbrac::jobs::Settings { options: &opts, workers: args.batch.workers(), cache: cache.as_ref() };
+    let batch = umbrac::jobs::Batch::compile(inputs, Vec::new(), &settings, None);
     let mut reporter = Reporter::new(args.common.message_format);
+    report_stats(&args.batch, &batch, cache.as_ref(), &mut reporter);
     let mut code = 0;
+    for f in batch.failures() {
+        reporter.compilation(f.compilation);
+        code = code.max(exit_code(f.compilation));
+    }
     let dir = args.out.clone().unwrap_or_else(|| PathBuf::from("."));
     // The outputs expected in each directory (a DIR input mirrors its
     // subdirectories under -o, as `compile` writes them).
     let mut expected: std::collections::BTreeMap<PathBuf, Vec<umbrac::Artifact>> = Default::default();
-    for ((_, sub), c) in inputs.iter().zip(&comps) {
-        reporter.compilation(c);
-        code = code.max(exit_code(c));
-        let out_dir = if sub.as_os_str().is_empty() { dir.clone() } else { dir.join(sub) };
-        let slot = expected.entry(out_dir).or_default();
-        if let Some(result) = c.result.as_ref().filter(|_| !c.has_errors()) {
-            slot.extend(result.artifacts.iter().cloned());
-        }
+    for (j, o) in batch.outcomes.iter().enumerate() {
+        let slot = expected.entry(batch.out_dir(j, &dir)).or_default();
+        slot.extend(o.artifacts.iter().flatten().cloned());
     }
     let mut diffs = Vec::new();
     for (d, artifacts) in &expected {
@@ -475,7 +675,8 @@ fn compile_check(args: &CompileArgs, targets: Vec<Target>, inputs: &[(PathBuf, P
 }
 
 fn bindgen(args: &BindgenArgs) -> u8 {
-    let opts = args.common.options(Target::ALL.to_vec());
+    let mut opts = args.common.options(Target::ALL.to_vec());
+    opts.source_name = file_name_of(&args.file);
     let comps = compile_all(std::slice::from_ref(&args.file), &opts);
     let c = &comps[0];
     let mut reporter = Reporter::new(args.common.message_format);

@@ -12,6 +12,9 @@
 //!   `cargo build` with the shader's file:line:col.
 //! - `shadow_example`: builds examples/shadow-build and runs it (the run is
 //!   skipped without a Vulkan adapter unless CI=true).
+//! - `variants_crate`: 256 variants from a TOML spec (`Build::variants_file`),
+//!   a no-op build, and a rerun served from the cache without rebuilding
+//!   the crate.
 
 // Only the CI policy of tests/support: the rest would link umbrac, naga
 // and wgpu into this binary, which needs none of them.
@@ -261,4 +264,53 @@ fn shadow_example() {
     let out = String::from_utf8_lossy(&o.stdout);
     let mean: u32 = out.split("mean level ").nth(1).and_then(|s| s.split(',').next()).and_then(|s| s.parse().ok()).unwrap_or_else(|| panic!("{out}"));
     assert!((30..200).contains(&mean), "mean level {mean}: {out}");
+}
+
+/// `Build::variants_file`: the 256 variants of
+/// shaders/programs/shadow_variants.das from its TOML spec, one module per
+/// variant inside the file's module, with a `VARIANTS` table. A rerun of the
+/// build script (a shader's mtime changed, its tokens did not) serves every
+/// variant from the cache in OUT_DIR and leaves the generated files alone,
+/// so the crate itself is not recompiled.
+#[test]
+fn variants_crate() {
+    let d = tempfile::tempdir().unwrap();
+    let dir = d.path();
+    let manifest = format!(
+        "[package]\nname = \"variants-mini\"\nversion = \"0.1.0\"\nedition = \"2021\"\npublish = false\n\n[workspace]\n\n[build-dependencies]\numbrac = {{ path = {:?}, default-features = false, features = [\"spec\"] }}\n",
+        repo().display().to_string()
+    );
+    write(&dir.join("Cargo.toml"), &manifest);
+    std::fs::copy(repo().join("Cargo.lock"), dir.join("Cargo.lock")).unwrap();
+    for f in ["shadow_variants.das", "shadow_variants.toml"] {
+        std::fs::copy(repo().join("shaders/programs").join(f), dir.join(f)).unwrap();
+    }
+    write(
+        &dir.join("build.rs"),
+        "fn main() {\n    let runs = std::fs::read_to_string(\"runs.txt\").unwrap_or_default();\n    std::fs::write(\"runs.txt\", format!(\"{runs}run\\n\")).unwrap();\n    umbrac::build::Build::new()\n        .variants_file(\"shadow_variants.das\", \"shadow_variants.toml\")\n        .targets(&[umbrac::Target::Wgsl])\n        .bytemuck(false)\n        .run();\n}\n",
+    );
+    write(
+        &dir.join("src/main.rs"),
+        "#![deny(warnings)]\ninclude!(concat!(env!(\"OUT_DIR\"), \"/umbrac/shaders.rs\"));\nfn main() {\n    let (name, defines) = shadow_variants::VARIANTS[255];\n    println!(\"{} variants, last {name} ({defines}), fog wgsl {} bytes, base {} bytes\", shadow_variants::VARIANTS.len(), shadow_variants::pcf__fog::WGSL.len(), shadow_variants::base::WGSL.len());\n}\n",
+    );
+    let o = cargo(dir, &["run", "-q"]);
+    assert!(o.status.success(), "first build:\n{}", all_output(&o));
+    let out = String::from_utf8_lossy(&o.stdout).into_owned();
+    assert!(out.starts_with("256 variants, last pcf__slope_bias__border_fade__specular__rim__fog__tonemap__gamma (-D PCF -D SLOPE_BIAS"), "{out}");
+    assert_eq!(runs(dir), 1);
+
+    // A no-op build runs nothing.
+    let o = cargo(dir, &["build", "-v"]);
+    assert!(o.status.success() && all_output(&o).contains("Fresh variants-mini"), "{}", all_output(&o));
+    assert_eq!(runs(dir), 1);
+
+    // A comment added: the script reruns, every variant is a cache hit,
+    // nothing generated changes, so the crate is not rebuilt.
+    let das = dir.join("shadow_variants.das");
+    let text = std::fs::read_to_string(&das).unwrap();
+    std::fs::write(&das, format!("// touched\n{text}")).unwrap();
+    let o = cargo(dir, &["build", "-v"]);
+    assert!(o.status.success(), "{}", all_output(&o));
+    assert_eq!(runs(dir), 2, "{}", all_output(&o));
+    assert!(all_output(&o).contains("Fresh variants-mini") || !all_output(&o).contains("Running `rustc --crate-name variants_mini --edition=2021 src/main.rs"), "the crate was rebuilt:\n{}", all_output(&o));
 }

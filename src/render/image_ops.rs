@@ -137,12 +137,16 @@ pub fn depth_to_grey(width: u32, height: u32, bytes: &[u8]) -> RgbaImage {
     })
 }
 
-/// Writes a PNG, creating the parent directory.
+/// Writes a PNG, creating the parent directory. Atomically (a temporary
+/// renamed over it): a viewer of the file, or `render --watch` failing
+/// half-way, never leaves half a picture.
 pub fn save_png(image: &RgbaImage, path: &Path) -> Result<(), String> {
-    if let Some(dir) = path.parent().filter(|d| !d.as_os_str().is_empty()) {
-        std::fs::create_dir_all(dir).map_err(|e| format!("creating {}: {e}", dir.display()))?;
-    }
-    image.save_with_format(path, image::ImageFormat::Png).map_err(|e| format!("writing {}: {e}", path.display()))
+    let mut png = Vec::new();
+    image.write_to(&mut std::io::Cursor::new(&mut png), image::ImageFormat::Png).map_err(|e| format!("encoding {}: {e}", path.display()))?;
+    let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    let name = path.file_name().ok_or_else(|| format!("`{}` is not a file name", path.display()))?.to_string_lossy().into_owned();
+    let a = crate::Artifact { file_name: name, target: None, entry: None, contents: png };
+    crate::output::write_artifacts(dir, &[a]).map_err(|e| format!("writing {}: {e}", path.display()))
 }
 
 /// Writes an endlessly looping animated GIF at `fps` frames per second.

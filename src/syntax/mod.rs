@@ -80,19 +80,52 @@ fn too_large(path: &Path, len: u64) -> Diagnostic {
 
 /// Preprocesses, splits and parses the root file and what it includes.
 pub fn parse(map: &mut SourceMap, root: FileId, opts: &ParseOptions, diags: &mut Diagnostics) -> ast::Program {
-    let root_span = {
-        let f = map.file(root);
-        if f.text.len() > MAX_FILE_SIZE {
-            let msg = format!("`{}` is too large: {} bytes (limit {MAX_FILE_SIZE} bytes)", f.name, f.text.len());
-            diags.push(Diagnostic::error_nowhere(msg));
-            return ast::Program::default();
-        }
-        Span::new(f.base, f.base)
-    };
-    let mut toks = preprocess::preprocess(map, root, opts, diags);
-    let mut raw = items::split(&toks, map);
-    let modules_not_found = modules::load(map, root, &mut toks, &mut raw, opts, diags);
-    let map: &SourceMap = map;
+    if !root_fits(map, root, diags) {
+        return ast::Program::default();
+    }
+    let unit = preprocess_unit(map, root, opts, diags);
+    parse_unit(map, root, unit, opts, diags)
+}
+
+/// Whether the root file is small enough to preprocess; if not, the error
+/// is pushed to `diags` (as [`parse`] does).
+pub fn root_fits(map: &SourceMap, root: FileId, diags: &mut Diagnostics) -> bool {
+    let f = map.file(root);
+    if f.text.len() > MAX_FILE_SIZE {
+        let msg = format!("`{}` is too large: {} bytes (limit {MAX_FILE_SIZE} bytes)", f.name, f.text.len());
+        diags.push(Diagnostic::error_nowhere(msg));
+        return false;
+    }
+    true
+}
+
+/// A translation unit before any item is parsed: the root's preprocessed
+/// tokens split into top-level items, with the modules its `require`s
+/// reach read and appended. Everything a compilation's outputs depend on,
+/// so the cache keys it (`crate::cache`).
+#[derive(Debug, Default)]
+pub struct Unit {
+    pub tokens: Vec<token::Token>,
+    pub items: Vec<items::RawItem>,
+    pub modules_not_found: Vec<modules::MissingModule>,
+}
+
+/// Preprocesses the root file, splits it into items and reads the modules
+/// it requires (as far as shaders reach into them).
+pub fn preprocess_unit(map: &mut SourceMap, root: FileId, opts: &ParseOptions, diags: &mut Diagnostics) -> Unit {
+    let mut tokens = preprocess::preprocess(map, root, opts, diags);
+    let mut items = items::split(&tokens, map);
+    let modules_not_found = modules::load(map, root, &mut tokens, &mut items, opts, diags);
+    Unit { tokens, items, modules_not_found }
+}
+
+/// The rest of [`parse`] after [`preprocess_unit`]: keeps what shaders
+/// reach and parses it. Separate so that a compilation whose unit is
+/// already known (a cache lookup) reads and preprocesses once.
+pub fn parse_unit(map: &SourceMap, root: FileId, unit: Unit, opts: &ParseOptions, diags: &mut Diagnostics) -> ast::Program {
+    let base = map.file(root).base;
+    let root_span = Span::new(base, base);
+    let Unit { tokens: toks, items: raw, modules_not_found } = unit;
     let selected = items::select(&raw, &toks, map, &opts.entries, root_span, diags);
     let texts = token::Texts::new(map);
     let mut program = ast::Program { items: Vec::with_capacity(selected.len()), modules_not_found };

@@ -17,6 +17,8 @@
 mod support;
 
 #[cfg(feature = "cli")]
+mod at_scale;
+#[cfg(feature = "cli")]
 mod bad_inputs;
 #[cfg(feature = "cli")]
 mod check;

@@ -457,6 +457,47 @@ mod cli {
         assert!(!stderr.contains("error"), "stderr of a successful render: {stderr}");
     }
 
+    /// `render --watch`: an edit to the program redraws; a broken edit
+    /// prints its error and keeps the last good picture.
+    #[test]
+    fn watch_redraws_on_change_and_keeps_the_last_good_picture() {
+        if gpu::vulkan().is_none() {
+            return;
+        }
+        let dir = tempfile::tempdir().unwrap();
+        let prog = dir.path().join("scene.das");
+        std::fs::write(&prog, SCENE).unwrap();
+        let png = dir.path().join("f.png");
+        let log = dir.path().join("log");
+        let mut child = std::process::Command::new(env!("CARGO_BIN_EXE_umbrac"))
+            .args(["render", "--watch", prog.to_str().unwrap(), "--size", "32x24", "--out", png.to_str().unwrap()])
+            .stderr(std::fs::File::create(&log).unwrap())
+            .spawn()
+            .unwrap();
+        let read_log = || std::fs::read_to_string(&log).unwrap_or_default();
+        let wait_for = |what: &str, cond: &dyn Fn() -> bool| {
+            let deadline = std::time::Instant::now() + std::time::Duration::from_secs(120);
+            while !cond() {
+                assert!(std::time::Instant::now() < deadline, "timed out waiting for {what}:\n{}", read_log());
+                std::thread::sleep(std::time::Duration::from_millis(20));
+            }
+        };
+        let count = |s: &str| read_log().matches(s).count();
+        wait_for("the first picture", &|| count("[watch] ok") == 1);
+        let first = std::fs::read(&png).unwrap();
+        std::fs::write(&prog, SCENE.replacen("[fragment_program]", "[fragment_program]\ndef broken { nope }\n[fragment_program]", 1)).unwrap();
+        wait_for("the error", &|| count("[watch] failed") == 1);
+        assert_eq!(std::fs::read(&png).unwrap(), first, "the last good picture stays");
+        // The cube black: a different picture.
+        let black = SCENE.replace("var albedo = float3(0.85, 0.45, 0.30)", "var albedo = float3(0.0, 0.0, 0.0)");
+        assert_ne!(black, SCENE);
+        std::fs::write(&prog, black).unwrap();
+        wait_for("the redraw", &|| count("[watch] ok") == 2);
+        let _ = child.kill();
+        let _ = child.wait();
+        assert_ne!(std::fs::read(&png).unwrap(), first, "{}", read_log());
+    }
+
     #[test]
     fn reference_and_errors() {
         let dir = tempfile::tempdir().unwrap();

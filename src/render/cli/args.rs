@@ -98,6 +98,11 @@ pub struct RenderArgs {
     /// spot, pcf, cascades, proj, cull, rgba8-depth.
     #[arg(long, value_name = "NAME", conflicts_with_all = ["file", "compare_backends", "reflection"])]
     pub scene: Option<String>,
+    /// Render, then again whenever the program or a file it includes
+    /// changes, until interrupted; a failed compile or render keeps the
+    /// last good picture.
+    #[arg(long, conflicts_with_all = ["compare_backends", "scene"])]
+    pub watch: bool,
     /// Taps of the pcf scene's offset table: 1, 2, 4 or 9.
     #[arg(long, value_name = "N", default_value_t = 9)]
     pub pcf_taps: u32,

@@ -22,6 +22,19 @@ use frames::{frame_times, write_frames};
 
 /// Runs `umbrac render`; returns the process exit code.
 pub fn run(args: &RenderArgs) -> i32 {
+    if args.watch {
+        return match crate::watch::watch(|| (run_once(args), watched(args))) {
+            Ok(()) => 0,
+            Err(e) => {
+                eprintln!("error: {e}");
+                1
+            }
+        };
+    }
+    run_once(args).into()
+}
+
+fn run_once(args: &RenderArgs) -> u8 {
     match execute(args) {
         Ok(()) => 0,
         Err(message) => {
@@ -29,6 +42,20 @@ pub fn run(args: &RenderArgs) -> i32 {
             1
         }
     }
+}
+
+/// What `--watch` waits on: the program and every file its preprocessing
+/// reads (with the defines the render uses), and `--reflection`.
+fn watched(args: &RenderArgs) -> crate::watch::Watched {
+    let file = args.file.clone().unwrap_or_else(|| program::DEFAULT_PROGRAM.into());
+    let mut files = vec![file.clone()];
+    if file.extension().is_some_and(|x| x == "das") {
+        let params_defines = args.setup.setup().defines(args.shadow_size);
+        let opts = crate::Options { defines: params_defines, ..Default::default() };
+        files.extend(crate::preprocess_file(&file, &opts).files_read());
+    }
+    files.extend(args.reflection.iter().cloned());
+    crate::watch::Watched { files, dirs: Vec::new() }
 }
 
 fn via(args: &RenderArgs) -> Via {

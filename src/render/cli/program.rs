@@ -9,7 +9,7 @@ use crate::render::hand;
 /// The project's own scene program, used when FILE is not given and
 /// `shaders/shadow.das` is not on disk.
 const BUILTIN_PROGRAM: &str = include_str!("../../../shaders/shadow.das");
-const DEFAULT_PROGRAM: &str = "shaders/shadow.das";
+pub(crate) const DEFAULT_PROGRAM: &str = "shaders/shadow.das";
 
 /// Loads the program named on the command line.
 pub fn load_program(file: Option<&Path>, reflection: Option<&Path>, via: Via) -> Result<ShaderSet, String> {

@@ -1,0 +1,470 @@
+//! A content-addressed cache of compiled outputs.
+//!
+//! The [`Key`] of a compilation is a SHA-256 over everything its outputs
+//! depend on: the preprocessed token stream of the whole translation unit
+//! (every file read, after `#include`, `#ifdef` and `#define`, so the `-D`
+//! definitions and the include directories are in it through what they
+//! changed), the name and stem the outputs record, the targets, the entry
+//! points, the conventions, and umbrac's version and build id (a hash of
+//! the compiler's sources and its naga release, made by `build.rs`).
+//! Comments and whitespace are not tokens, so editing only them is a hit;
+//! two define sets that preprocess to the same text share one entry.
+//!
+//! An entry is one file, `DIR/v1/AB/ABCDEF...`: a header (magic, the key,
+//! the body's length and SHA-256) and the artifacts. It is written to a
+//! temporary in `DIR/tmp/` and renamed into place, so a reader sees a whole
+//! entry or none; two processes that store the same key write the same
+//! bytes, and the last rename wins. Reading checks the magic, the key, the
+//! length and the hash: an entry that fails (truncated, corrupted, from an
+//! incompatible version) is removed and reported as a miss, never served.
+//! A hit refreshes the entry's modification time; [`Cache::trim`] keeps the
+//! total size under the bound by removing the entries used longest ago.
+//!
+//! Only successful compilations with no diagnostic at all are stored, so a
+//! hit never hides a warning. Failing to read or write the cache never
+//! fails a compilation: it is then compiled, and not stored.
+
+use std::fmt;
+use std::io::Write as _;
+use std::path::{Path, PathBuf};
+use std::sync::atomic::{AtomicU32, Ordering};
+use std::time::{Duration, SystemTime};
+
+use sha2::{Digest, Sha256};
+
+use crate::syntax::token::{TokKind, Token};
+use crate::{Artifact, Options, Preprocessed, Target};
+
+/// The default bound on a cache's size: 256 MiB (the 256 variants of
+/// `shaders/variants.das` for every target take about 3 MiB).
+pub const DEFAULT_MAX_BYTES: u64 = 256 << 20;
+
+/// Entry layout version; a change makes every old entry a miss (and
+/// removes it on the first read).
+const MAGIC: &[u8; 8] = b"UMBRAC\x01\x00";
+const LAYOUT_DIR: &str = "v1";
+const HEADER_LEN: usize = 8 + 32 + 8 + 32;
+
+/// umbrac's own identity in every key: a new release or a rebuilt compiler
+/// never serves another's outputs.
+const COMPILER_ID: &str = concat!(env!("CARGO_PKG_VERSION"), "+", env!("UMBRAC_BUILD_ID"));
+
+/// A SHA-256 content hash.
+#[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct Key(pub [u8; 32]);
+
+impl Key {
+    /// The key of compiling `pre` with `opts`. `extra` separates entries
+    /// that hold more than the compiler's outputs (`umbrac::build` adds its
+    /// bindings module and names the generator's options in it).
+    pub fn of(pre: &Preprocessed, opts: &Options, extra: &str) -> Key {
+        let mut h = Sha256::new();
+        let field = |h: &mut Sha256, bytes: &[u8]| {
+            h.update((bytes.len() as u64).to_le_bytes());
+            h.update(bytes);
+        };
+        field(&mut h, b"umbrac compile key 1");
+        field(&mut h, COMPILER_ID.as_bytes());
+        let root_name = pre.root_name();
+        field(&mut h, opts.source_name.as_deref().unwrap_or(root_name).as_bytes());
+        field(&mut h, crate::stem_of(root_name).as_bytes());
+        for t in opts.targets() {
+            field(&mut h, t.name().as_bytes());
+        }
+        field(&mut h, b"entries");
+        for e in &opts.entries {
+            field(&mut h, e.as_bytes());
+        }
+        field(&mut h, format!("{:?}", opts.conventions).as_bytes());
+        field(&mut h, extra.as_bytes());
+        field(&mut h, b"tokens");
+        hash_tokens(&mut h, pre.tokens(), pre.sources());
+        Key(h.finalize().into())
+    }
+
+    /// The SHA-256 of some bytes (output hashes in `variants.json`).
+    pub fn of_bytes(bytes: &[u8]) -> Key {
+        Key(Sha256::digest(bytes).into())
+    }
+
+    pub fn hex(&self) -> String {
+        self.0.iter().map(|b| format!("{b:02x}")).collect()
+    }
+}
+
+impl fmt::Debug for Key {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "Key({})", self.hex())
+    }
+}
+
+/// Feeds each token's kind and text. The kind is given as a number so that
+/// a text that lexes differently in another context (a macro's value)
+/// still hashes as what it is.
+fn hash_tokens(h: &mut Sha256, toks: &[Token], map: &crate::SourceMap) {
+    let mut buf = Vec::with_capacity(64 * 1024);
+    // Line breaks before the first token (a comment at the top of the file)
+    // end no statement. Runs of them are one token already.
+    let first = toks.iter().position(|t| t.kind != TokKind::Newline).unwrap_or(toks.len());
+    for t in &toks[first..] {
+        let text = map.slice(t.span).as_bytes();
+        buf.extend_from_slice(&kind_code(t.kind).to_le_bytes());
+        buf.extend_from_slice(&(text.len() as u32).to_le_bytes());
+        buf.extend_from_slice(text);
+        if buf.len() >= 60 * 1024 {
+            h.update(&buf);
+            buf.clear();
+        }
+    }
+    h.update(&buf);
+}
+
+fn kind_code(k: TokKind) -> u16 {
+    match k {
+        TokKind::Ident => 1,
+        TokKind::Int => 2,
+        TokKind::Float => 3,
+        TokKind::Str => 4,
+        TokKind::Char => 5,
+        TokKind::Newline => 6,
+        TokKind::Eof => 7,
+        TokKind::Kw(kw) => 0x100 + kw as u16,
+        TokKind::P(p) => 0x200 + p as u16,
+        TokKind::Error(e) => 0x300 + e as u16,
+    }
+}
+
+/// A cache directory; see the module docs.
+#[derive(Clone, Debug)]
+pub struct Cache {
+    dir: PathBuf,
+    max_bytes: u64,
+}
+
+/// What [`Cache::trim`] did.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct Trimmed {
+    pub entries: usize,
+    pub bytes: u64,
+    pub removed: usize,
+}
+
+impl Cache {
+    /// A cache in `dir` (created on the first store) holding at most
+    /// `max_bytes` after each [`Cache::trim`].
+    pub fn new(dir: impl Into<PathBuf>, max_bytes: u64) -> Cache {
+        Cache { dir: dir.into(), max_bytes }
+    }
+
+    /// The CLI's default directory: `$UMBRAC_CACHE_DIR`, else
+    /// `$XDG_CACHE_HOME/umbrac`, else `$HOME/.cache/umbrac`; `None` if
+    /// none of them is set.
+    pub fn default_dir() -> Option<PathBuf> {
+        let var = |n: &str| std::env::var_os(n).filter(|v| !v.is_empty()).map(PathBuf::from);
+        var("UMBRAC_CACHE_DIR")
+            .or_else(|| var("XDG_CACHE_HOME").map(|d| d.join("umbrac")))
+            .or_else(|| var("HOME").map(|d| d.join(".cache").join("umbrac")))
+    }
+
+    pub fn dir(&self) -> &Path {
+        &self.dir
+    }
+
+    fn path_of(&self, key: &Key) -> PathBuf {
+        let hex = key.hex();
+        self.dir.join(LAYOUT_DIR).join(&hex[..2]).join(&hex[2..])
+    }
+
+    /// The artifacts stored under `key`, if there is a whole, intact entry.
+    /// A damaged one is removed.
+    pub fn get(&self, key: &Key) -> Option<Vec<Artifact>> {
+        let path = self.path_of(key);
+        let bytes = std::fs::read(&path).ok()?;
+        match decode(key, &bytes) {
+            Some(artifacts) => {
+                // Used now: the last to be evicted. Best effort.
+                if let Ok(f) = std::fs::File::options().write(true).open(&path) {
+                    let _ = f.set_modified(SystemTime::now());
+                }
+                Some(artifacts)
+            }
+            None => {
+                let _ = std::fs::remove_file(&path);
+                None
+            }
+        }
+    }
+
+    /// Stores `artifacts` under `key`, atomically.
+    pub fn put(&self, key: &Key, artifacts: &[Artifact]) -> std::io::Result<()> {
+        let path = self.path_of(key);
+        let tmp_dir = self.dir.join("tmp");
+        std::fs::create_dir_all(&tmp_dir)?;
+        std::fs::create_dir_all(path.parent().expect("an entry path has a parent"))?;
+        self.tag_dir();
+        let tmp = unique_temp(&tmp_dir);
+        let written = std::fs::File::options().write(true).create_new(true).open(&tmp).and_then(|mut f| f.write_all(&encode(key, artifacts)));
+        // No fsync: an entry torn by a crash fails its hash and is recompiled.
+        match written.and_then(|_| std::fs::rename(&tmp, &path)) {
+            Ok(()) => Ok(()),
+            Err(e) => {
+                let _ = std::fs::remove_file(&tmp);
+                Err(e)
+            }
+        }
+    }
+
+    /// Marks the directory as a cache for backup tools (`CACHEDIR.TAG`).
+    fn tag_dir(&self) {
+        let tag = self.dir.join("CACHEDIR.TAG");
+        if !tag.exists() {
+            let _ = std::fs::write(tag, "Signature: 8a477f597d28d172789f06886806bc55\n# umbrac's compile cache; see docs/build.md.\n");
+        }
+    }
+
+    /// Removes the entries used longest ago until the cache holds at most
+    /// its bound (down to 90 % of it, so the next stores do not trim again
+    /// at once), and temporaries older than an hour (left by killed
+    /// processes). Safe while other processes use the cache: an entry
+    /// removed under a reader is a miss for it.
+    pub fn trim(&self) -> Trimmed {
+        let mut entries: Vec<(SystemTime, u64, PathBuf)> = Vec::new();
+        let layout = self.dir.join(LAYOUT_DIR);
+        for sub in read_dir_paths(&layout) {
+            for path in read_dir_paths(&sub) {
+                if let Ok(m) = std::fs::metadata(&path) {
+                    if m.is_file() {
+                        entries.push((m.modified().unwrap_or(SystemTime::UNIX_EPOCH), m.len(), path));
+                    }
+                }
+            }
+        }
+        let hour_ago = SystemTime::now() - Duration::from_secs(3600);
+        for tmp in read_dir_paths(&self.dir.join("tmp")) {
+            if std::fs::metadata(&tmp).and_then(|m| m.modified()).is_ok_and(|t| t < hour_ago) {
+                let _ = std::fs::remove_file(&tmp);
+            }
+        }
+        let mut total: u64 = entries.iter().map(|e| e.1).sum();
+        let mut removed = 0;
+        if total > self.max_bytes {
+            let target = self.max_bytes / 10 * 9;
+            entries.sort();
+            for (_, len, path) in &entries {
+                if total <= target {
+                    break;
+                }
+                if std::fs::remove_file(path).is_ok() {
+                    removed += 1;
+                }
+                total = total.saturating_sub(*len);
+            }
+        }
+        Trimmed { entries: entries.len() - removed, bytes: total, removed }
+    }
+}
+
+fn read_dir_paths(dir: &Path) -> Vec<PathBuf> {
+    std::fs::read_dir(dir).map(|rd| rd.flatten().map(|e| e.path()).collect()).unwrap_or_default()
+}
+
+/// A temporary name no other thread or process uses: the process id, a
+/// per-process counter and the clock.
+fn unique_temp(dir: &Path) -> PathBuf {
+    static COUNTER: AtomicU32 = AtomicU32::new(0);
+    let n = COUNTER.fetch_add(1, Ordering::Relaxed);
+    let nanos = SystemTime::now().duration_since(SystemTime::UNIX_EPOCH).map(|d| d.subsec_nanos()).unwrap_or(0);
+    dir.join(format!("{}-{n}-{nanos:08x}", std::process::id()))
+}
+
+fn target_tag(t: Option<Target>) -> u8 {
+    match t {
+        None => 0,
+        Some(Target::Glsl330) => 1,
+        Some(Target::Gles300) => 2,
+        Some(Target::Wgsl) => 3,
+        Some(Target::Spirv) => 4,
+    }
+}
+
+fn tag_target(tag: u8) -> Option<Option<Target>> {
+    Some(match tag {
+        0 => None,
+        1 => Some(Target::Glsl330),
+        2 => Some(Target::Gles300),
+        3 => Some(Target::Wgsl),
+        4 => Some(Target::Spirv),
+        _ => return None,
+    })
+}
+
+fn encode(key: &Key, artifacts: &[Artifact]) -> Vec<u8> {
+    let mut body = Vec::new();
+    body.extend_from_slice(&(artifacts.len() as u32).to_le_bytes());
+    for a in artifacts {
+        body.push(target_tag(a.target));
+        put_bytes(&mut body, a.file_name.as_bytes());
+        match &a.entry {
+            Some(e) => {
+                body.push(1);
+                put_bytes(&mut body, e.as_bytes());
+            }
+            None => body.push(0),
+        }
+        put_bytes(&mut body, &a.contents);
+    }
+    let mut out = Vec::with_capacity(HEADER_LEN + body.len());
+    out.extend_from_slice(MAGIC);
+    out.extend_from_slice(&key.0);
+    out.extend_from_slice(&(body.len() as u64).to_le_bytes());
+    out.extend_from_slice(&Sha256::digest(&body));
+    out.extend_from_slice(&body);
+    out
+}
+
+fn put_bytes(out: &mut Vec<u8>, b: &[u8]) {
+    out.extend_from_slice(&(b.len() as u64).to_le_bytes());
+    out.extend_from_slice(b);
+}
+
+/// The artifacts of an entry, or `None` unless every check passes.
+fn decode(key: &Key, bytes: &[u8]) -> Option<Vec<Artifact>> {
+    let header = bytes.get(..HEADER_LEN)?;
+    let body = &bytes[HEADER_LEN..];
+    if &header[..8] != MAGIC || header[8..40] != key.0 {
+        return None;
+    }
+    let len = u64::from_le_bytes(header[40..48].try_into().ok()?);
+    if len != body.len() as u64 || Sha256::digest(body)[..] != header[48..80] {
+        return None;
+    }
+    let mut r = Reader { bytes: body };
+    let count = u32::from_le_bytes(r.take(4)?.try_into().ok()?);
+    let mut artifacts = Vec::with_capacity(count.min(1024) as usize);
+    for _ in 0..count {
+        let target = tag_target(r.take(1)?[0])?;
+        let file_name = String::from_utf8(r.bytes_field()?.to_vec()).ok()?;
+        let entry = match r.take(1)?[0] {
+            0 => None,
+            1 => Some(String::from_utf8(r.bytes_field()?.to_vec()).ok()?),
+            _ => return None,
+        };
+        let contents = r.bytes_field()?.to_vec();
+        artifacts.push(Artifact { file_name, target, entry, contents });
+    }
+    r.bytes.is_empty().then_some(artifacts)
+}
+
+struct Reader<'a> {
+    bytes: &'a [u8],
+}
+
+impl<'a> Reader<'a> {
+    fn take(&mut self, n: usize) -> Option<&'a [u8]> {
+        if self.bytes.len() < n {
+            return None;
+        }
+        let (a, b) = self.bytes.split_at(n);
+        self.bytes = b;
+        Some(a)
+    }
+
+    fn bytes_field(&mut self) -> Option<&'a [u8]> {
+        let len = u64::from_le_bytes(self.take(8)?.try_into().ok()?);
+        self.take(usize::try_from(len).ok()?)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn art(name: &str, text: &str) -> Artifact {
+        Artifact { file_name: name.into(), target: Some(Target::Wgsl), entry: Some("main_fs".into()), contents: text.as_bytes().to_vec() }
+    }
+
+    fn key(n: u8) -> Key {
+        Key([n; 32])
+    }
+
+    #[test]
+    fn stores_and_reads_back() {
+        let d = tempfile::tempdir().unwrap();
+        let c = Cache::new(d.path(), DEFAULT_MAX_BYTES);
+        assert!(c.get(&key(1)).is_none());
+        let arts = [art("a.wgsl", "fn main() {}"), Artifact { file_name: "a.reflect.json".into(), target: None, entry: None, contents: b"{}".to_vec() }];
+        c.put(&key(1), &arts).unwrap();
+        let back = c.get(&key(1)).unwrap();
+        assert_eq!(back.len(), 2);
+        assert_eq!((back[0].file_name.as_str(), back[0].target, back[0].entry.as_deref()), ("a.wgsl", Some(Target::Wgsl), Some("main_fs")));
+        assert_eq!(back[1].contents, b"{}");
+        assert!(d.path().join("CACHEDIR.TAG").is_file());
+        assert!(c.get(&key(2)).is_none());
+    }
+
+    #[test]
+    fn every_truncation_and_every_flipped_byte_is_a_miss_and_removed() {
+        let d = tempfile::tempdir().unwrap();
+        let c = Cache::new(d.path(), DEFAULT_MAX_BYTES);
+        c.put(&key(7), &[art("x.wgsl", "some shader text")]).unwrap();
+        let path = c.path_of(&key(7));
+        let good = std::fs::read(&path).unwrap();
+        for cut in 0..good.len() {
+            std::fs::write(&path, &good[..cut]).unwrap();
+            assert!(c.get(&key(7)).is_none(), "truncated to {cut} bytes");
+            assert!(!path.exists(), "a damaged entry is removed");
+        }
+        for i in 0..good.len() {
+            let mut bad = good.clone();
+            bad[i] ^= 0x20;
+            std::fs::write(&path, &bad).unwrap();
+            assert!(c.get(&key(7)).is_none(), "byte {i} flipped");
+        }
+        // An entry copied under another key's name is not served either.
+        std::fs::create_dir_all(c.path_of(&key(8)).parent().unwrap()).unwrap();
+        std::fs::write(c.path_of(&key(8)), &good).unwrap();
+        assert!(c.get(&key(8)).is_none());
+        std::fs::write(&path, &good).unwrap();
+        assert_eq!(c.get(&key(7)).unwrap()[0].text(), "some shader text");
+    }
+
+    #[test]
+    fn trim_removes_the_least_recently_used_first() {
+        let d = tempfile::tempdir().unwrap();
+        let big = "x".repeat(10_000);
+        let c = Cache::new(d.path(), 35_000);
+        for n in 0..5u8 {
+            c.put(&key(n), &[art("a", &big)]).unwrap();
+            let t = SystemTime::now() - Duration::from_secs(100 - n as u64 * 10);
+            std::fs::File::options().write(true).open(c.path_of(&key(n))).unwrap().set_modified(t).unwrap();
+        }
+        // Reading entry 0 makes it the most recently used.
+        assert!(c.get(&key(0)).is_some());
+        let t = c.trim();
+        // Five entries of ~10 kB over a 35 kB bound: down to 90 % of it.
+        assert_eq!((t.removed, t.entries), (2, 3), "{t:?}");
+        assert!(t.bytes <= 31_500);
+        let left: Vec<u8> = (0..5).filter(|&n| c.path_of(&key(n)).exists()).collect();
+        assert_eq!(left, [0, 3, 4], "the oldest, 1 and 2, go first");
+    }
+
+    #[test]
+    fn threads_storing_and_reading_one_key_never_see_a_partial_entry() {
+        let d = tempfile::tempdir().unwrap();
+        let c = Cache::new(d.path(), DEFAULT_MAX_BYTES);
+        let text = "y".repeat(200_000);
+        std::thread::scope(|s| {
+            for _ in 0..4 {
+                s.spawn(|| {
+                    for _ in 0..20 {
+                        c.put(&key(3), &[art("b", &text)]).unwrap();
+                        if let Some(a) = c.get(&key(3)) {
+                            assert_eq!(a[0].contents.len(), text.len());
+                        }
+                    }
+                });
+            }
+        });
+        assert!(read_dir_paths(&d.path().join("tmp")).is_empty(), "no temporaries left");
+    }
+}

@@ -1,0 +1,287 @@
+//! One run of the compiler over many inputs and variants: what `umbrac
+//! compile` and [`crate::build`] do between reading their arguments and
+//! writing. Every input is compiled once per variant through
+//! [`crate::batch::compile_cached`] (in parallel, deduplicated by
+//! preprocessed text, through the cache); [`Batch`] then says where each
+//! job's outputs go and writes `variants.json`.
+//!
+//! Determinism: what an output records of its input ([`Input::source_name`])
+//! is the file's name for a file given by itself, and its path relative to
+//! the directory for a file found under a directory argument, with `/`
+//! separators: never the working directory or an absolute path. Nothing
+//! else in any output depends on the order jobs finish in, the number of
+//! workers, the machine or the time.
+
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+use crate::batch::{self, Outcome, Stats, Unit};
+use crate::cache::{Cache, Key};
+use crate::variants::{describe, Variant};
+use crate::{Artifact, Compilation, Diagnostic, Options};
+
+/// An input file of a run.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Input {
+    /// The path as given (or as found under a directory given): what
+    /// diagnostics show.
+    pub path: PathBuf,
+    /// Where its outputs go, relative to the output directory (a file found
+    /// under a directory argument keeps its subdirectory).
+    pub subdir: PathBuf,
+    /// What its outputs record (the manifest's `source`): see the module docs.
+    pub source_name: String,
+}
+
+/// The inputs named by command-line arguments: each FILE, and the programs
+/// under each DIR ([`batch::programs_under`]).
+pub fn inputs_of(args: &[PathBuf]) -> Result<Vec<Input>, String> {
+    let mut out = Vec::new();
+    for arg in args {
+        if !arg.is_dir() {
+            let name = arg.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_else(|| arg.display().to_string());
+            out.push(Input { path: arg.clone(), subdir: PathBuf::new(), source_name: name });
+            continue;
+        }
+        let found = batch::programs_under(arg).map_err(|e| e.to_string())?;
+        if found.is_empty() {
+            return Err(format!("no `.das` files under `{}`", arg.display()));
+        }
+        for f in found {
+            let file = f.path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+            let mut parts: Vec<String> = f.subdir.components().map(|c| c.as_os_str().to_string_lossy().into_owned()).collect();
+            parts.push(file);
+            out.push(Input { path: f.path, subdir: f.subdir, source_name: parts.join("/") });
+        }
+    }
+    Ok(out)
+}
+
+/// One compilation of a run: an input with a variant's defines.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Job {
+    pub input: usize,
+    /// Index into [`Batch::variants`]; `None` in a run without variants.
+    pub variant: Option<usize>,
+}
+
+/// A compiled run.
+#[derive(Debug)]
+pub struct Batch {
+    pub inputs: Vec<Input>,
+    /// The variants (empty: a run without `--variants`).
+    pub variants: Vec<Variant>,
+    pub jobs: Vec<Job>,
+    /// Indexed like `jobs`.
+    pub outcomes: Vec<Outcome>,
+    pub stats: Stats,
+}
+
+/// How to run: the options every job shares, and the pool and cache.
+#[derive(Clone, Debug)]
+pub struct Settings<'a> {
+    pub options: &'a Options,
+    pub workers: usize,
+    pub cache: Option<&'a Cache>,
+}
+
+impl Batch {
+    /// Compiles every input with every variant (or once each, with none).
+    pub fn compile(inputs: Vec<Input>, variants: Vec<Variant>, settings: &Settings<'_>, derive: Option<&batch::Derive<'_>>) -> Batch {
+        let mut jobs = Vec::new();
+        for input in 0..inputs.len() {
+            if variants.is_empty() {
+                jobs.push(Job { input, variant: None });
+            } else {
+                jobs.extend((0..variants.len()).map(|v| Job { input, variant: Some(v) }));
+            }
+        }
+        let units: Vec<Unit> = jobs
+            .iter()
+            .map(|j| {
+                let input = &inputs[j.input];
+                let mut opts = settings.options.clone();
+                if let Some(v) = j.variant {
+                    opts.defines.extend(variants[v].defines.iter().cloned());
+                }
+                opts.source_name = Some(input.source_name.clone());
+                Unit { path: &input.path, opts, extra: String::new() }
+            })
+            .collect();
+        let (outcomes, stats) = batch::compile_cached(&units, settings.workers, settings.cache, derive);
+        drop(units);
+        Batch { inputs, variants, jobs, outcomes, stats }
+    }
+
+    /// Whether every job compiled.
+    pub fn succeeded(&self) -> bool {
+        self.outcomes.iter().all(|o| !o.failed())
+    }
+
+    /// The directory of job `j`'s outputs under `root`:
+    /// `root/VARIANT/SUBDIR`.
+    pub fn out_dir(&self, j: usize, root: &Path) -> PathBuf {
+        let job = self.jobs[j];
+        let mut d = root.to_path_buf();
+        if let Some(v) = job.variant {
+            d.push(&self.variants[v].name);
+        }
+        let sub = &self.inputs[job.input].subdir;
+        if !sub.as_os_str().is_empty() {
+            d.push(sub);
+        }
+        d
+    }
+
+    /// A failed job's diagnostics, once per distinct failure: jobs that
+    /// failed with the same rendered text (variants whose preprocessed
+    /// source is identical, or that hit the same error) are one group. In
+    /// a run with variants each diagnostic gets a note naming them.
+    pub fn failures(&self) -> Vec<Failure<'_>> {
+        let mut groups: Vec<Failure> = Vec::new();
+        let mut by_text: BTreeMap<String, usize> = BTreeMap::new();
+        for (j, o) in self.outcomes.iter().enumerate() {
+            if !o.failed() {
+                continue;
+            }
+            let original = match o.origin {
+                batch::Origin::SameAs(k) => k,
+                _ => j,
+            };
+            let Some(c) = self.outcomes[original].compilation.as_ref() else { continue };
+            let text = c.render_diagnostics();
+            let at = *by_text.entry(text).or_insert_with(|| {
+                groups.push(Failure { compilation: c, jobs: Vec::new() });
+                groups.len() - 1
+            });
+            groups[at].jobs.push(j);
+        }
+        groups
+    }
+
+    /// The diagnostics of a failure, with a note naming the variants it
+    /// belongs to (in a run with variants).
+    pub fn diagnostics_of(&self, f: &Failure<'_>) -> Vec<Diagnostic> {
+        let mut ds = f.compilation.diagnostics.clone();
+        if ds.is_empty() {
+            ds.push(Diagnostic::bug("compilation failed without a diagnostic", None));
+        }
+        if self.variants.is_empty() {
+            return ds;
+        }
+        let names: Vec<String> = f.jobs.iter().filter_map(|&j| self.jobs[j].variant).map(|v| {
+            let v = &self.variants[v];
+            format!("`{}` ({})", v.name, describe(&v.defines))
+        }).collect();
+        const SHOWN: usize = 4;
+        let note = if names.len() == 1 {
+            format!("in variant {}", names[0])
+        } else if names.len() <= SHOWN {
+            format!("in variants {}", names.join(", "))
+        } else {
+            format!("in {} variants: {} and {} more", names.len(), names[..SHOWN].join(", "), names.len() - SHOWN)
+        };
+        for d in &mut ds {
+            d.notes.push(note.clone());
+        }
+        ds
+    }
+
+    /// `variants.json`: each variant's defines, directory and the SHA-256
+    /// of every output, paths relative to the output directory. Sorted
+    /// (variants in spec order), so it is byte-identical across runs.
+    pub fn variants_json(&self) -> String {
+        let mut variants = Vec::new();
+        for (vi, v) in self.variants.iter().enumerate() {
+            let mut outputs = BTreeMap::new();
+            let mut same_as = None;
+            for (j, job) in self.jobs.iter().enumerate() {
+                if job.variant != Some(vi) {
+                    continue;
+                }
+                let o = &self.outcomes[j];
+                if let batch::Origin::SameAs(k) = o.origin {
+                    if let Some(kv) = self.jobs[k].variant.filter(|&kv| kv != vi) {
+                        same_as.get_or_insert(self.variants[kv].name.clone());
+                    }
+                }
+                let sub = &self.inputs[job.input].subdir;
+                for a in o.artifacts.iter().flatten() {
+                    let mut rel: Vec<String> = sub.components().map(|c| c.as_os_str().to_string_lossy().into_owned()).collect();
+                    rel.push(a.file_name.clone());
+                    outputs.insert(rel.join("/"), format!("sha256:{}", Key::of_bytes(&a.contents).hex()));
+                }
+            }
+            let defines: serde_json::Map<String, serde_json::Value> =
+                v.defines.iter().map(|(n, val)| (n.clone(), val.clone().map_or(serde_json::Value::Null, serde_json::Value::String))).collect();
+            variants.push(serde_json::json!({
+                "name": v.name,
+                "defines": defines,
+                "dir": v.name,
+                "same_source_as": same_as,
+                "outputs": outputs,
+            }));
+        }
+        let doc = serde_json::json!({ "format": 1, "variants": variants });
+        let mut s = serde_json::to_string_pretty(&doc).unwrap_or_default();
+        s.push('\n');
+        s
+    }
+
+    /// Every file any job read, sorted, without repeats, without `./`
+    /// steps (an include next to a root given as a bare name is `./x`).
+    pub fn files_read(&self) -> Vec<PathBuf> {
+        let tidy = |p: &PathBuf| -> PathBuf { p.components().filter(|c| !matches!(c, std::path::Component::CurDir)).collect() };
+        let mut all: Vec<PathBuf> = self.outcomes.iter().flat_map(|o| o.files_read.iter().map(tidy)).collect();
+        all.extend(self.inputs.iter().map(|i| tidy(&i.path)));
+        all.sort();
+        all.dedup();
+        all
+    }
+}
+
+/// Jobs that failed alike ([`Batch::failures`]).
+#[derive(Debug)]
+pub struct Failure<'a> {
+    pub compilation: &'a Compilation,
+    pub jobs: Vec<usize>,
+}
+
+/// `variants.json`'s artifact, written last into the output directory.
+pub fn variants_artifact(batch: &Batch) -> Artifact {
+    Artifact { file_name: "variants.json".into(), target: None, entry: None, contents: batch.variants_json().into_bytes() }
+}
+
+/// Writes a job's outputs into `dir`: the files whose bytes changed
+/// atomically ([`crate::output::write_artifacts`]), and for the others only
+/// a new modification time, as if rewritten (make and ninja compare
+/// times), which saves a warm run from rewriting and syncing every file.
+pub fn write_outputs(dir: &Path, artifacts: &[Artifact]) -> Result<(), crate::output::OutputError> {
+    let mut changed = Vec::new();
+    let mut same = Vec::new();
+    for a in artifacts {
+        let path = dir.join(&a.file_name);
+        let unchanged = std::fs::metadata(&path).is_ok_and(|m| m.is_file() && m.len() == a.contents.len() as u64)
+            && std::fs::read(&path).is_ok_and(|old| old == a.contents);
+        if unchanged {
+            same.push(path);
+        } else {
+            changed.push(a.clone());
+        }
+    }
+    if !changed.is_empty() {
+        crate::output::write_artifacts(dir, &changed)?;
+    }
+    let now = std::time::SystemTime::now();
+    for path in same {
+        // A file that cannot be touched is rewritten instead.
+        let touched = std::fs::File::options().write(true).open(&path).and_then(|f| f.set_modified(now));
+        if touched.is_err() {
+            let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+            if let Some(a) = artifacts.iter().find(|a| a.file_name == name) {
+                crate::output::write_artifacts(dir, std::slice::from_ref(a))?;
+            }
+        }
+    }
+    Ok(())
+}
