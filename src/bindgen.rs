@@ -16,15 +16,18 @@
 //!   columns: `float4x4` is `[[f32; 4]; 4]`, `float3x3` `[[f32; 4]; 3]`
 //!   (each column padded to 16 bytes);
 //! - `bytemuck::Pod + Zeroable` derives on those structs (optional);
-//! - `uniforms::NAME` / `samplers::NAME` modules with group, bindings, GL
-//!   block names, sampler names and texture units, and (behind the user's
+//! - `uniform_buffers::NAME` modules (a struct uniform's buffer, or a
+//!   group's loose uniforms') with group, binding, size, GL block name and
+//!   default contents; `uniforms::NAME` modules (each loose uniform) with
+//!   its GL name and type and its buffer offset; `samplers::NAME` modules
+//!   with GL names, texture units and bindings; and (behind the user's
 //!   `wgpu` cargo feature) `wgpu::BindGroupLayoutEntry` constants;
 //! - per vertex entry point a packed `Vertex` struct, GL attribute names
 //!   and locations, and (behind `wgpu`) a `wgpu::VertexBufferLayout`.
 //!
 //! Everything comes from the reflection manifest (`compiled.reflection`)
 //! and the emitted artifacts, never from the lowered modules: the structs'
-//! offsets, sizes and strides are the manifest's `uniform_blocks[].members`
+//! offsets, sizes and strides are the manifest's `uniform_buffers[].members`
 //! and, for struct types inside blocks, its `structs`, so the bindings say
 //! exactly what any host reading the manifest would lay out. The Rust type
 //! of each member follows from its DSL type name; where that type's size
@@ -67,10 +70,11 @@ impl Default for BindgenOptions {
 /// generated names collide.
 pub fn generate(compiled: &Compiled, opts: &BindgenOptions) -> Result<String, String> {
     let r = &compiled.reflection;
-    let module_name = opts.module_name.clone().unwrap_or_else(|| crate::stem_of(&r.source));
-    if !is_identifier(&module_name) {
-        return Err(format!("`{module_name}` is not a Rust identifier; choose a module name"));
-    }
+    let module_name = match &opts.module_name {
+        Some(name) if !is_identifier(name) => return Err(format!("`{name}` is not a Rust identifier; choose a module name")),
+        Some(name) => name.clone(),
+        None => module_name_of(&crate::stem_of(&r.source)),
+    };
     let mut g = Gen::new(r, opts);
     g.blocks()?;
 
@@ -126,6 +130,17 @@ const KEYWORDS: &[&str] = &[
     "pub", "ref", "return", "static", "struct", "trait", "true", "type", "unsafe", "use", "where", "while", "async", "await", "dyn", "abstract", "become",
     "box", "do", "final", "macro", "override", "priv", "typeof", "unsized", "virtual", "yield", "try", "gen",
 ];
+
+/// The module name for a file stem: the stem, with every character that
+/// cannot be in an identifier made `_`, and `_` in front of a leading digit
+/// (`08_shadow` -> `_08_shadow`, `my-shader` -> `my_shader`).
+pub fn module_name_of(stem: &str) -> String {
+    let mut s: String = stem.chars().map(|c| if c.is_ascii_alphanumeric() || c == '_' { c } else { '_' }).collect();
+    if s.is_empty() || s.starts_with(|c: char| c.is_ascii_digit()) || s == "_" {
+        s.insert(0, '_');
+    }
+    s
+}
 
 fn is_identifier(s: &str) -> bool {
     s.chars().next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_') && s.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') && s != "_"
@@ -390,18 +405,27 @@ impl<'a> Gen<'a> {
 
     fn blocks(&mut self) -> Result<(), String> {
         let r = self.r;
-        for b in &r.uniform_blocks {
-            let name = match host_type(r, &b.ty)? {
-                HostType::Struct(s) => self.struct_of(&s.name, b.size, &b.members)?,
-                _ => {
-                    let [m] = &b.members[..] else {
-                        return Err(format!("internal: uniform block `{}` of type `{}` has {} members, not one", b.name, b.ty, b.members.len()));
-                    };
+        for b in &r.uniform_buffers {
+            let name = if b.loose {
+                // The loose uniforms of a group: a struct of its own, each
+                // member in the type the buffer stores it as.
+                let mut fields = Vec::new();
+                for m in &b.members {
                     let (rust_ty, size) = self.member_ty(m)?;
-                    let name = self.unique_name(camel(&b.name));
-                    let fields = vec![Field { name: m.name.clone(), rust_ty, offset: 0, size, doc: format!("`{}`", m.ty), padding: false }];
-                    self.push_struct(name.clone(), format!("Uniform block of `var @uniform {} : {}`.", b.name, b.ty), b.size, fields)?;
-                    name
+                    let doc = match &m.storage {
+                        Some(st) => format!("`{}`, stored as `{st}`", m.ty),
+                        None => format!("`{}`", m.ty),
+                    };
+                    fields.push(Field { name: m.name.clone(), rust_ty, offset: m.offset, size, doc, padding: false });
+                }
+                let name = self.unique_name(camel(&b.ty));
+                let doc = format!("The loose uniforms of group {}: uniform buffer `{}`, {} bytes.", b.group, b.name, b.size);
+                self.push_struct(name.clone(), doc, b.size, fields)?;
+                name
+            } else {
+                match host_type(r, &b.ty)? {
+                    HostType::Struct(s) => self.struct_of(&s.name, b.size, &b.members)?,
+                    _ => return Err(format!("internal: uniform buffer `{}` is of type `{}`, no struct", b.name, b.ty)),
                 }
             };
             self.block_struct.insert(b.name.clone(), name);
@@ -462,7 +486,12 @@ impl<'a> Gen<'a> {
     /// The Rust type of a member and its size, which must be the size the
     /// manifest gives it.
     fn member_ty(&mut self, m: &'a Member) -> Result<(String, u32), String> {
-        let (rust, size) = self.rust_ty(&m.ty, m.array_stride, m.matrix_stride)?;
+        // A loose uniform stored as another type (`bool` as `uint`, a
+        // `float3x2` as `float4[3]`) is laid out as that type.
+        let (rust, size) = match &m.storage {
+            Some(st) => self.rust_ty(st, m.array_stride.or(m.matrix_stride), None)?,
+            None => self.rust_ty(&m.ty, m.array_stride, m.matrix_stride)?,
+        };
         if size != m.size {
             return Err(format!("internal: `{}` maps to `{rust}` of {size} bytes, but the manifest lays it out in {} bytes", m.ty, m.size));
         }
@@ -556,7 +585,7 @@ impl<'a> Gen<'a> {
     fn check_collisions(&self, r: &Reflection) -> Result<(), String> {
         // Structs, modules and the fixed names share the type namespace.
         let mut seen: BTreeMap<String, String> = BTreeMap::new();
-        let fixed = ["uniforms", "samplers"];
+        let fixed = ["uniform_buffers", "uniforms", "samplers"];
         for f in fixed {
             seen.insert(f.to_string(), format!("the `{f}` module"));
         }
@@ -572,10 +601,16 @@ impl<'a> Gen<'a> {
         for ep in &r.entry_points {
             add(ident(&ep.name), format!("entry point `{}`", ep.name))?;
         }
+        let mut buffers = BTreeMap::new();
+        for b in &r.uniform_buffers {
+            if let Some(prev) = buffers.insert(module_ident(&b.name), &b.name) {
+                return Err(format!("uniform buffers `{prev}` and `{}` both become `uniform_buffers::{}`; rename one", b.name, module_ident(&b.name)));
+            }
+        }
         let mut uniforms = BTreeMap::new();
-        for b in &r.uniform_blocks {
-            if let Some(prev) = uniforms.insert(module_ident(&b.name), &b.name) {
-                return Err(format!("uniforms `{prev}` and `{}` both become `uniforms::{}`; rename one", b.name, module_ident(&b.name)));
+        for u in &r.uniforms {
+            if let Some(prev) = uniforms.insert(module_ident(&u.name), &u.name) {
+                return Err(format!("uniforms `{prev}` and `{}` both become `uniforms::{}`; rename one", u.name, module_ident(&u.name)));
             }
         }
         let mut samplers = BTreeMap::new();
@@ -603,8 +638,8 @@ fn visibility(r: &Reflection, used: impl Fn(&crate::emit::reflect_types::EntryPo
 /// `(binding, expression)` of every layout entry, by group.
 fn layout_entries(r: &Reflection) -> BTreeMap<u32, Vec<(u32, String)>> {
     let mut groups: BTreeMap<u32, Vec<(u32, String)>> = BTreeMap::new();
-    for b in &r.uniform_blocks {
-        groups.entry(b.group).or_default().push((b.binding, format!("uniforms::{}::LAYOUT_ENTRY", module_ident(&b.name))));
+    for b in &r.uniform_buffers {
+        groups.entry(b.group).or_default().push((b.binding, format!("uniform_buffers::{}::LAYOUT_ENTRY", module_ident(&b.name))));
     }
     for s in &r.samplers {
         let e = groups.entry(s.group).or_default();
@@ -618,29 +653,37 @@ fn layout_entries(r: &Reflection) -> BTreeMap<u32, Vec<(u32, String)>> {
 }
 
 fn write_uniforms(w: &mut Writer, r: &Reflection, g: &Gen) {
-    w.line("/// Every uniform block: bindings, GL block names and layout entries.");
-    w.open("pub mod uniforms {");
-    for b in &r.uniform_blocks {
-        w.line(&format!("/// `var @uniform {} : {}`", b.name, b.ty));
+    w.line("/// Every uniform buffer (WGSL/SPIR-V): a struct uniform's, or a group's loose uniforms';");
+    w.line("/// bindings, GL block names and layout entries.");
+    w.open("pub mod uniform_buffers {");
+    for b in &r.uniform_buffers {
+        match b.loose {
+            true => w.line(&format!("/// The loose uniforms of group {} (`{}`)", b.group, b.name)),
+            false => w.line(&format!("/// `var @uniform {} : {}`", b.name, b.ty)),
+        }
         w.open(&format!("pub mod {} {{", module_ident(&b.name)));
-        w.line("/// The host-side struct of this block.");
+        w.line("/// The host-side struct of this buffer.");
         w.line(&format!("pub type Block = super::super::{};", g.block_struct[&b.name]));
         w.line(&format!("pub const NAME: &str = {};", str_lit(&b.name)));
         w.line(&format!("pub const GROUP: u32 = {};", b.group));
         w.line(&format!("pub const BINDING: u32 = {};", b.binding));
         w.line("/// Buffer size in bytes.");
         w.line(&format!("pub const SIZE: u64 = {};", b.size));
-        w.line("/// The block's name in GLSL: glGetUniformBlockIndex + glUniformBlockBinding.");
-        w.line(&format!("pub const GLSL_BLOCK: &str = {};", str_lit(&b.glsl_block)));
+        w.line("/// The buffer's std140 block in GLSL (glGetUniformBlockIndex + glUniformBlockBinding), if GLSL");
+        w.line("/// declares one (a loose buffer only with `--gl-uniforms blocks`).");
+        match &b.glsl_block {
+            Some(name) => w.line(&format!("pub const GLSL_BLOCK: Option<&str> = Some({});", str_lit(name))),
+            None => w.line("pub const GLSL_BLOCK: Option<&str> = None;"),
+        }
         if let Some(words) = block_default(b) {
-            w.line("/// The block's default contents (`var @uniform NAME : T = value`): upload it before");
-            w.line("/// setting anything else.");
+            w.line("/// The buffer's default contents (`var @uniform NAME : T = value`, zero where no default is");
+            w.line("/// given): upload it before setting anything else.");
             w.line(&format!("pub const DEFAULT: Block = {};", g.const_value(&g.block_struct[&b.name], &words)));
         }
         w.line("#[cfg(feature = \"wgpu\")]");
         w.open("pub const LAYOUT_ENTRY: wgpu::BindGroupLayoutEntry = wgpu::BindGroupLayoutEntry {");
         w.line(&format!("binding: {},", b.binding));
-        w.line(&format!("visibility: {},", visibility(r, |e| e.uniform_blocks.contains(&b.name))));
+        w.line(&format!("visibility: {},", visibility(r, |e| e.uniform_buffers.contains(&b.name))));
         w.line(&format!(
             "ty: wgpu::BindingType::Buffer {{ ty: wgpu::BufferBindingType::Uniform, has_dynamic_offset: false, min_binding_size: core::num::NonZeroU64::new({}) }},",
             b.size
@@ -651,17 +694,53 @@ fn write_uniforms(w: &mut Writer, r: &Reflection, g: &Gen) {
     }
     w.close("}");
     w.blank();
+    w.line("/// Every loose uniform: its GL name and type (plain `uniform` globals, set with `glUniform*`),");
+    w.line("/// and its place in its group's uniform buffer.");
+    w.open("pub mod uniforms {");
+    for u in &r.uniforms {
+        w.line(&format!("/// `var @uniform {} : {}`", u.name, u.ty));
+        w.open(&format!("pub mod {} {{", module_ident(&u.name)));
+        w.line(&format!("pub const NAME: &str = {};", str_lit(&u.name)));
+        w.line("/// Its name in GLSL (glGetUniformLocation); `None` with `--gl-uniforms blocks`.");
+        match &u.glsl_name {
+            Some(name) => w.line(&format!("pub const GLSL_NAME: Option<&str> = Some({});", str_lit(name))),
+            None => w.line("pub const GLSL_NAME: Option<&str> = None;"),
+        }
+        w.line("/// Its GLSL type: which glUniform* sets it.");
+        w.line(&format!("pub const GLSL_TYPE: &str = {};", str_lit(&u.glsl_type)));
+        w.line("/// The uniform buffer (`uniform_buffers::...`) it is a member of, and its byte offset there.");
+        w.line(&format!("pub const BUFFER: &str = {};", str_lit(&u.buffer)));
+        let offset = r.uniform_buffers.iter().find(|b| b.name == u.buffer).and_then(|b| b.members.iter().find(|m| m.name == u.name)).map_or(0, |m| m.offset);
+        w.line(&format!("pub const OFFSET: u32 = {offset};"));
+        if let Some(d) = &u.default {
+            w.line("/// Its default value as glUniform*v takes it: every component in order, as 32-bit words.");
+            let words: Vec<String> = d.iter().map(|x| format!("{x:#010x}")).collect();
+            w.line(&format!("pub const DEFAULT_WORDS: &[u32] = &[{}];", words.join(", ")));
+        }
+        w.close("}");
+    }
+    w.close("}");
+    w.blank();
 }
 
-/// The default words of a whole block, when every member has one.
-fn block_default(b: &crate::emit::reflect_types::UniformBlock) -> Option<Vec<u32>> {
+/// The default words of a whole buffer: a struct uniform's when every
+/// member has one; a loose buffer's when any member has one (the others
+/// zero).
+fn block_default(b: &crate::emit::reflect_types::UniformBuffer) -> Option<Vec<u32>> {
     let mut words = vec![0u32; b.size as usize / 4];
+    let mut any = false;
     for m in &b.members {
-        let d = m.default.as_ref()?;
+        let Some(d) = m.default.as_ref() else {
+            if b.loose {
+                continue;
+            }
+            return None;
+        };
+        any = true;
         let at = m.offset as usize / 4;
         words.get_mut(at..at + d.len())?.copy_from_slice(d);
     }
-    Some(words)
+    any.then_some(words)
 }
 
 fn write_samplers(w: &mut Writer, r: &Reflection) {
@@ -751,7 +830,7 @@ fn write_layout_entries(w: &mut Writer, r: &Reflection) {
 /// Sorted group-0 bindings an entry point uses.
 fn entry_bindings(compiled: &Compiled, ep: &crate::emit::reflect_types::EntryPoint) -> Vec<u32> {
     let r = &compiled.reflection;
-    let mut v: Vec<u32> = r.uniform_blocks.iter().filter(|b| b.group == 0 && ep.uniform_blocks.contains(&b.name)).map(|b| b.binding).collect();
+    let mut v: Vec<u32> = r.uniform_buffers.iter().filter(|b| b.group == 0 && ep.uniform_buffers.contains(&b.name)).map(|b| b.binding).collect();
     for s in r.samplers.iter().filter(|s| s.group == 0 && ep.samplers.contains(&s.name)) {
         v.extend([s.texture_binding, s.sampler_binding]);
     }
@@ -790,8 +869,9 @@ fn write_entry(w: &mut Writer, compiled: &Compiled, ep: &crate::emit::reflect_ty
         }
     }
     let names = |v: &[String]| v.iter().map(|n| str_lit(n)).collect::<Vec<_>>().join(", ");
-    w.line("/// Uniform blocks and samplers this entry point uses.");
-    w.line(&format!("pub const UNIFORM_BLOCKS: &[&str] = &[{}];", names(&ep.uniform_blocks)));
+    w.line("/// Uniform buffers, loose uniforms and samplers this entry point uses.");
+    w.line(&format!("pub const UNIFORM_BUFFERS: &[&str] = &[{}];", names(&ep.uniform_buffers)));
+    w.line(&format!("pub const UNIFORMS: &[&str] = &[{}];", names(&ep.uniforms)));
     w.line(&format!("pub const SAMPLERS: &[&str] = &[{}];", names(&ep.samplers)));
     let bindings = entry_bindings(compiled, ep).iter().map(|b| b.to_string()).collect::<Vec<_>>().join(", ");
     w.line("/// Group 0 bindings this entry point uses.");
@@ -810,7 +890,8 @@ fn write_vertex(w: &mut Writer, inputs: &[Io], opts: &BindgenOptions) -> Result<
         w.line(&format!("pub const {}_LOCATION: u32 = {};", screaming(&i.name), i.location));
     }
     let gl: Vec<String> = inputs.iter().map(|i| format!("({}, {})", str_lit(&i.glsl_name), i.location)).collect();
-    w.line("/// `(GLSL name, location)` of every vertex attribute (the GLSL declares `layout(location = N)`).");
+    w.line("/// `(GLSL name, location)` of every vertex attribute: bind each with glBindAttribLocation before");
+    w.line("/// linking (the GLSL declares `layout(location = N)` only where the source gives `@location = N`).");
     w.line(&format!("pub const GL_ATTRIBUTES: &[(&str, u32)] = &[{}];", gl.join(", ")));
     let types: Option<Vec<(String, String)>> =
         inputs.iter().map(|i| i.vertex_format.as_deref().and_then(|f| vertex_field_type(f).map(|t| (t, f.to_string())))).collect();
@@ -869,6 +950,9 @@ mod tests {
         assert_eq!(str_lit("plain"), "\"plain\"");
         assert_eq!(vertex_field_type("Float32x3").as_deref(), Some("[f32; 3]"));
         assert_eq!(vertex_field_type("Uint32").as_deref(), Some("u32"));
+        assert_eq!(module_name_of("08_shadow"), "_08_shadow");
+        assert_eq!(module_name_of("my-shader.v2"), "my_shader_v2");
+        assert!(is_identifier(&module_name_of("08_shadow")));
     }
 
     fn compile(path: &str) -> Compiled {
@@ -891,11 +975,12 @@ mod tests {
     }
 
     fn member(name: &str, ty: &str, offset: u32, size: u32, array_stride: Option<u32>) -> Member {
-        Member { name: name.into(), ty: ty.into(), offset, size, array_stride, matrix_stride: None, default: None }
+        Member { name: name.into(), ty: ty.into(), offset, size, array_stride, matrix_stride: None, storage: None, default: None }
     }
 
-    fn block(name: &str, ty: &str, size: u32, members: Vec<Member>) -> crate::emit::reflect_types::UniformBlock {
-        crate::emit::reflect_types::UniformBlock { name: name.into(), ty: ty.into(), size, group: 0, binding: 9, glsl_block: format!("{name}_block"), members }
+    /// A loose buffer of these members.
+    fn block(name: &str, ty: &str, size: u32, members: Vec<Member>) -> crate::emit::reflect_types::UniformBuffer {
+        crate::emit::reflect_types::UniformBuffer { name: name.into(), ty: ty.into(), loose: true, size, group: 0, binding: 9, glsl_block: None, members }
     }
 
     /// Layouts the checker never lets through still follow the manifest's
@@ -908,10 +993,10 @@ mod tests {
         let opts = BindgenOptions { sources: false, ..BindgenOptions::default() };
         let mut c = compile("shaders/features/math.das");
         let r = &mut c.reflection;
-        r.uniform_blocks.push(block("u_pad", "float3[2]", 32, vec![member("u_pad", "float3[2]", 0, 32, Some(16))]));
-        r.uniform_blocks.push(block("u_aoa", "float4[2][3]", 96, vec![member("u_aoa", "float4[2][3]", 0, 96, Some(32))]));
+        r.uniform_buffers.push(block("u_pad", "Pad", 32, vec![member("u_pad", "float3[2]", 0, 32, Some(16))]));
+        r.uniform_buffers.push(block("u_aoa", "Aoa", 96, vec![member("u_aoa", "float4[2][3]", 0, 96, Some(32))]));
         r.structs.push(StructLayout { name: "Tap".into(), size: 4, members: vec![member("w", "float", 0, 4, None)] });
-        r.uniform_blocks.push(block("u_taps", "Tap[2]", 32, vec![member("u_taps", "Tap[2]", 0, 32, Some(16))]));
+        r.uniform_buffers.push(block("u_taps", "Taps", 32, vec![member("u_taps", "Tap[2]", 0, 32, Some(16))]));
         let text = generate(&c, &opts).unwrap();
         for needle in [
             "pub struct Float3Stride16 {",
@@ -926,12 +1011,12 @@ mod tests {
         }
 
         let mut missing = compile("shaders/features/math.das");
-        missing.reflection.uniform_blocks.push(block("u_s", "S", 16, vec![member("s", "S", 0, 16, None)]));
+        missing.reflection.uniform_buffers.push(block("u_s", "Ss", 16, vec![member("s", "S", 0, 16, None)]));
         let e = generate(&missing, &opts).unwrap_err();
         assert!(e.contains("`S` has no host representation"), "{e}");
 
         let mut wrong = compile("shaders/features/math.das");
-        wrong.reflection.uniform_blocks.push(block("u_v", "float3", 16, vec![member("u_v", "float3", 0, 16, None)]));
+        wrong.reflection.uniform_buffers.push(block("u_v", "V", 16, vec![member("u_v", "float3", 0, 16, None)]));
         let e = generate(&wrong, &opts).unwrap_err();
         assert!(e.contains("`float3` maps to `[f32; 3]` of 12 bytes, but the manifest lays it out in 16 bytes"), "{e}");
     }
@@ -939,12 +1024,14 @@ mod tests {
     #[test]
     fn manifest_type_names() {
         let r = Reflection {
-            format: 1,
+            format: 2,
             source: String::new(),
             conventions: String::new(),
             entry_points: vec![],
             programs: vec![],
-            uniform_blocks: vec![],
+            gl_uniforms: "plain".into(),
+            uniform_buffers: vec![],
+            uniforms: vec![],
             structs: vec![StructLayout { name: "Light".into(), size: 16, members: vec![] }],
             samplers: vec![],
         };

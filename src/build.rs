@@ -210,6 +210,18 @@ impl Build {
         self
     }
 
+    /// How GLSL declares the loose uniforms (`--gl-uniforms`; default plain).
+    pub fn gl_uniforms(mut self, g: crate::GlUniforms) -> Self {
+        self.options.gl_uniforms = g;
+        self
+    }
+
+    /// Compile for devices with `n` of `limit` (`--limit NAME=N`).
+    pub fn limit(mut self, limit: crate::Limit, n: u64) -> Self {
+        self.options.limits.push((limit, n));
+        self
+    }
+
     /// Let `#include` reach files outside the input's directory and the
     /// include directories.
     pub fn allow_outside_includes(mut self, allow: bool) -> Self {

@@ -42,7 +42,8 @@ use std::path::{Path, PathBuf};
 
 pub use diag::{Diagnostic, Diagnostics, Severity};
 pub use emit::reflect_types::Reflection;
-pub use lower::{Conventions, Lowered};
+pub use emit::limits::Limit;
+pub use lower::{Conventions, GlUniforms, Lowered};
 pub use source::{SourceMap, Span};
 pub use target::{Artifact, Target};
 
@@ -58,6 +59,12 @@ pub struct Options {
     /// Entry points to compile; empty means all.
     pub entries: Vec<String>,
     pub conventions: Conventions,
+    /// How GLSL declares the loose uniforms (`--gl-uniforms`): plain
+    /// `uniform T name;` (the default) or std140 blocks.
+    pub gl_uniforms: GlUniforms,
+    /// `--limit NAME=N`: compile for devices with more of a resource than
+    /// the targets' minimums (`emit::limits`).
+    pub limits: Vec<(Limit, u64)>,
     /// Allow `#include` to reach files outside the input's directory and the
     /// include directories.
     pub allow_outside_includes: bool,
@@ -332,7 +339,7 @@ fn finish(pre: Preprocessed, opts: &Options) -> Compilation {
     // it, so the next stage's allocations reuse its memory, still in cache.
     drop(program);
     let result = checked.filter(|_| !diags.has_errors()).and_then(|checked| {
-        let lowered = lower::lower(&checked, opts.conventions);
+        let lowered = lower::lower(&checked, lower::LowerOptions { conventions: opts.conventions, gl_uniforms: opts.gl_uniforms });
         drop(checked);
         let lowered = match lowered {
             Ok(l) => l,
@@ -341,6 +348,14 @@ fn finish(pre: Preprocessed, opts: &Options) -> Compilation {
                 return None;
             }
         };
+        let mut over = Vec::new();
+        emit::limits::check(&lowered, &opts.targets(), &opts.limits, &mut over);
+        if !over.is_empty() {
+            for d in over {
+                diags.push(d);
+            }
+            return None;
+        }
         let root_name = &sources.file(root).name;
         let source_name = opts.source_name.as_deref().unwrap_or(root_name);
         match emit::emit(&lowered, &stem_of(root_name), source_name, &opts.targets()) {

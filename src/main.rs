@@ -193,6 +193,16 @@ struct CommonArgs {
     /// Clip-space conventions of the WGSL and SPIR-V outputs.
     #[arg(long, value_enum, default_value_t = ConventionsArg::Portable)]
     conventions: ConventionsArg,
+    /// How GLSL declares the loose uniforms: plain `uniform T name;` (set by
+    /// name with glUniform*, as daslang's generator writes them) or one std140
+    /// block per @set group, laid out as the WGSL/SPIR-V uniform buffer.
+    #[arg(long, value_enum, default_value_t = GlUniformsArg::Plain)]
+    gl_uniforms: GlUniformsArg,
+    /// Compile for devices with more of a resource than the targets' minimums
+    /// (repeatable), e.g. `--limit uniform-blocks=16`; docs/targets.md lists the
+    /// names and minimums.
+    #[arg(long = "limit", value_name = "NAME=N", value_parser = parse_limit)]
+    limits: Vec<(umbrac::Limit, u64)>,
     /// Let #include reach files outside the input's directory and the -I directories.
     #[arg(long)]
     allow_outside_includes: bool,
@@ -233,6 +243,20 @@ enum TargetArg {
     All,
 }
 
+fn parse_limit(s: &str) -> Result<(umbrac::Limit, u64), String> {
+    let names = || umbrac::Limit::ALL.iter().map(|l| l.name()).collect::<Vec<_>>().join(", ");
+    let (name, n) = s.split_once('=').ok_or_else(|| format!("`{s}` is not NAME=N (names: {})", names()))?;
+    let limit = umbrac::Limit::from_name(name).ok_or_else(|| format!("no limit is named `{name}` (names: {})", names()))?;
+    let n = n.parse::<u64>().map_err(|_| format!("`{n}` is not a count"))?;
+    Ok((limit, n))
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum GlUniformsArg {
+    Plain,
+    Blocks,
+}
+
 #[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
 enum ConventionsArg {
     Portable,
@@ -256,6 +280,11 @@ impl CommonArgs {
                 ConventionsArg::Portable => Conventions::Portable,
                 ConventionsArg::Native => Conventions::Native,
             },
+            gl_uniforms: match self.gl_uniforms {
+                GlUniformsArg::Plain => umbrac::GlUniforms::Plain,
+                GlUniformsArg::Blocks => umbrac::GlUniforms::Blocks,
+            },
+            limits: self.limits.clone(),
             allow_outside_includes: self.allow_outside_includes,
             daslib: self.daslib.clone(),
             source_name: None,

@@ -2,11 +2,18 @@
 //!
 //! naga's GLSL writer runs on the GL modules (`Lowered::gl`), whose resource globals carry no
 //! binding, so its namer gives samplers and uniform instances their source
-//! names. Two things are then fixed up in the text:
+//! names (where naga appends `_`, to a name ending in a digit, the source
+//! name is given back: `glsl_names`). Then the text is fixed up:
 //! - uniform blocks: naga names them `<type>_block_<N><Stage>`, which differs
 //!   between the stages of one program and is meaningless to a host. Each is
-//!   renamed to `<instance>_block` (`u_model_block`), identical in every
-//!   stage; a rename that would collide with another identifier is refused.
+//!   renamed to `<name>_ubo` (`u_cam_ubo`, as daslang's generator names
+//!   it), identical in every stage; a rename that would collide with another
+//!   identifier is refused.
+//! - plain uniforms: the GL module holds a loose uniform as a private global
+//!   (`GlEntry::uniforms`), which naga declares `T name = zero;`; that line
+//!   becomes `uniform T name;`.
+//! - attributes, varyings and colour outputs take their source names, and a
+//!   `layout(location = N)` only where the source gives one.
 //! - ES 3.00: after naga's `precision highp float; precision highp int;`,
 //!   a `precision highp T;` line for every sampler type the shader uses that
 //!   ES 3.00 gives no default precision (`sampler2DShadow`, ...).
@@ -29,7 +36,7 @@ use memchr::memmem::Finder;
 use naga::back::glsl::{Options, PipelineOptions, Version, WriterFlags};
 use naga::proc::{BoundsCheckPolicies, BoundsCheckPolicy};
 
-use super::{guard, text};
+use super::{glsl_names, guard, text};
 use crate::diag::Diagnostic;
 use crate::lower::{EntryInterface, Lowered};
 
@@ -80,6 +87,11 @@ pub fn file_name(entry: &str, stage: naga::ShaderStage, profile: Profile) -> Str
 pub struct EntryNames {
     /// Uniform global (handle index) -> uniform block name.
     pub blocks: BTreeMap<usize, String>,
+    /// Source name -> GLSL name of each plain uniform.
+    pub uniforms: BTreeMap<String, String>,
+    /// `(is an output, location)` of each `in`/`out` declared with
+    /// `layout(location = N)`.
+    pub located: std::collections::BTreeSet<(bool, u32)>,
     /// Texture global (handle index) -> `uniform sampler*` name.
     pub samplers: BTreeMap<usize, String>,
     /// Location -> name of each `in` (vertex attributes or varyings).
@@ -134,13 +146,15 @@ pub struct EntryModule<'a> {
     /// For each global of `module` (by handle index), the index of the GPU
     /// module's global of the same name, where exactly one matches.
     to_original: Vec<Option<usize>>,
+    /// [`crate::lower::GlEntry::uniforms`].
+    uniforms: &'a [(naga::Handle<naga::GlobalVariable>, String)],
 }
 
 impl<'a> EntryModule<'a> {
     pub fn new(lowered: &'a Lowered, ep: &EntryInterface) -> Result<EntryModule<'a>, Diagnostic> {
         let gl = lowered.gl.get(ep.index).ok_or_else(|| Diagnostic::bug(format!("entry point `{}` has no GL module", ep.name), None))?;
         let to_original = global_map(&gl.module, &lowered.gpu);
-        Ok(EntryModule { module: &gl.module, info: &gl.info, to_original })
+        Ok(EntryModule { module: &gl.module, info: &gl.info, to_original, uniforms: &gl.uniforms })
     }
 
     /// The GPU module's global index for a global of the GL module.
@@ -187,10 +201,11 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
 
     // Uniform blocks, in handle order so the result is deterministic.
     // naga names each `<type>_block_<N><Stage>` (declared once, never used
-    // elsewhere); the new name `<instance>_block` must be free.
+    // elsewhere); the new name `<name>_ubo` must be free.
     let mut uniforms: Vec<_> = info.uniforms.iter().collect();
     uniforms.sort_by_key(|(h, _)| h.index());
     let mut renames: Vec<(Range<usize>, String)> = Vec::new();
+    let mut instances: Vec<(String, String)> = Vec::new();
     if !uniforms.is_empty() {
         let idents = text::idents_containing(&out, &BLOCK);
         for (handle, naga_block) in uniforms {
@@ -200,18 +215,42 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
                 .next()
                 .and_then(|first| block_instance(&out[first.end..]))
                 .ok_or_else(|| bug(format!("cannot find uniform block `{naga_block}`")))?;
-            let new = [instance.trim_end_matches('_'), "_block"].concat();
-            if idents.iter().any(|(_, id)| *id == new) {
+            let original = em.original(*handle, ep)?;
+            let source = lowered.gpu.global_variables.iter().nth(original).and_then(|(_, g)| g.name.clone()).unwrap_or_else(|| instance.to_string());
+            let new = block_name(&source);
+            if idents.iter().any(|(_, id)| *id == new) || text::contains_ident(&out, &new) {
                 return Err(bug(format!("renaming uniform block `{naga_block}` to `{new}` would collide with an identifier of the same name")));
             }
             if renames.iter().any(|(_, n)| *n == new) {
                 return Err(bug(format!("two uniform blocks would both be named `{new}`")));
             }
+            instances.push((instance.to_string(), source));
             renames.extend(at.map(|r| (r, new.clone())));
-            names.blocks.insert(em.original(*handle, ep)?, new);
+            names.blocks.insert(original, new);
         }
     }
     text::apply_edits(&mut out, renames);
+    for (naga_name, source) in &instances {
+        restore_source_name(&mut out, naga_name, source);
+    }
+
+    // Plain uniforms: `T name = zero;` becomes `uniform T name;`.
+    for (handle, source) in em.uniforms {
+        let naga_name = em.module.global_variables[*handle].name.as_deref().unwrap_or(source);
+        let candidates = [naga_name.to_string(), [naga_name, "_"].concat()];
+        let Some(naga_name) = candidates.iter().find(|n| global_declaration(&out, n).is_some()) else {
+            return Err(bug(format!("cannot find the declaration of uniform `{source}`")));
+        };
+        let name = restore_source_name(&mut out, naga_name, source);
+        let line = global_declaration(&out, &name).ok_or_else(|| bug(format!("cannot find the declaration of uniform `{name}`")))?;
+        let decl = &out[line.clone()];
+        let at = text::find_ident(decl, &name).next().ok_or_else(|| bug(format!("no `{name}` in its declaration")))?;
+        let after = &decl[at + name.len()..];
+        let dims = &after[..after.find([' ', ';']).unwrap_or(after.len())];
+        let new = format!("uniform {}{name}{dims};", &decl[..at]);
+        out.replace_range(line, &new);
+        names.uniforms.insert(source.clone(), name);
+    }
 
     for (name, mapping) in &info.texture_mapping {
         if !text::contains_ident(&out, name) {
@@ -222,26 +261,34 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
         // an element of a sampler array, becomes `layers_0_`); give the
         // sampler back its own name where nothing else uses it.
         let source = lowered.gpu.global_variables.iter().nth(original).and_then(|(_, g)| g.name.as_deref());
-        let mut final_name = name.clone();
-        if let Some(src) = source {
-            if name.strip_suffix('_') == Some(src) && src.ends_with(|c: char| c.is_ascii_digit()) && !text::contains_ident(&out, src) {
-                text::replace_idents(&mut out, &[(name, src)]);
-                final_name = src.to_string();
-            }
-        }
+        let final_name = match source {
+            Some(src) => restore_source_name(&mut out, name, src),
+            None => name.clone(),
+        };
         names.samplers.insert(original, final_name);
     }
 
-    // Attributes, varyings and colour outputs are named by location
-    // (`_p2vs_location0`, `_vs2fs_location1`, `_fs2p_location0`): naga
-    // reports only those it wrote without `layout(location)`, so the names
-    // are formed here and checked against the text.
+    // Attributes, varyings and colour outputs: naga names them by location
+    // (`_p2vs_location0`, `_vs2fs_location1`, `_fs2p_location0`); each is
+    // renamed to its source name (`glsl_names`: reserved or taken names
+    // get `_`), so that a host binds it by name and the stages of a
+    // program link by name. `layout(location = N)` stays only where the
+    // source gives the location, and on the outputs of a fragment shader
+    // with several (ES 3.00 requires it there).
     let (in_prefix, out_prefix) = match ep.stage {
         naga::ShaderStage::Vertex => ("_p2vs_location", "_vs2fs_location"),
         _ => ("_vs2fs_location", "_fs2p_location"),
     };
     let declared = if ep.inputs.is_empty() && ep.outputs.is_empty() { Vec::new() } else { text::idents_containing(&out, &LOCATION) };
-    for (vars, prefix, map) in [(&ep.inputs, in_prefix, &mut names.inputs), (&ep.outputs, out_prefix, &mut names.outputs)] {
+    // ES 3.00 requires a location on each of several colour outputs; both
+    // profiles keep them there, so that one manifest describes both.
+    let mrt = ep.stage == naga::ShaderStage::Fragment && ep.outputs.len() > 1;
+    let mut renames: Vec<(String, String)> = Vec::new();
+    let mut unlocated: Vec<String> = Vec::new();
+    for (vars, prefix, map, attribute_or_output) in [
+        (&ep.inputs, in_prefix, &mut names.inputs, ep.stage == naga::ShaderStage::Vertex),
+        (&ep.outputs, out_prefix, &mut names.outputs, ep.stage == naga::ShaderStage::Fragment),
+    ] {
         for var in vars {
             let name = format!("{prefix}{}", var.location);
             if !declared.iter().any(|(_, id)| *id == name) {
@@ -252,14 +299,102 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
                     return Err(bug(format!("`{name}` has location {}, expected {}", loc.location, var.location)));
                 }
             }
-            map.insert(var.location, name);
+            // The same in every stage of a program: the lowering names what
+            // holds inputs and outputs inside the function apart (`in_`,
+            // `out_`), and the checker keeps top-level names unique and
+            // locals off them, so only reserved words are renamed.
+            let glsl = glsl_names::glsl_name(&var.name, |n| names_a_variable(&out, n));
+            // naga writes varyings without a location (they link by name).
+            if attribute_or_output && !var.explicit_location && !mrt {
+                unlocated.push(glsl.clone());
+            } else if attribute_or_output {
+                names.located.insert((std::ptr::eq(vars, &ep.outputs), var.location));
+            }
+            renames.push((name, glsl.clone()));
+            map.insert(var.location, glsl);
         }
+    }
+    let pairs: Vec<(&str, &str)> = renames.iter().map(|(a, b)| (a.as_str(), b.as_str())).collect();
+    text::replace_idents(&mut out, &pairs);
+    for name in &unlocated {
+        drop_location_qualifier(&mut out, name).ok_or_else(|| bug(format!("no `layout(location = N)` declaration of `{name}` to drop")))?;
     }
 
     if profile == Profile::Es300 {
         add_es_precision(&mut out).ok_or_else(|| bug("no `precision highp int;` line to extend".into()))?;
     }
     Ok((out, names))
+}
+
+/// Whether `name` is a variable (or function, or type) of the text: an
+/// identifier there that is not a struct member (declared in a struct's
+/// body, or read after a `.`).
+fn names_a_variable(src: &str, name: &str) -> bool {
+    text::find_ident(src, name).any(|at| {
+        if src[..at].ends_with('.') {
+            return false;
+        }
+        // Inside `struct S {` ... `};`, which naga writes at the start of lines.
+        let before = &src[..at];
+        match (before.rfind("\nstruct ").or(before.starts_with("struct ").then_some(0)), before.rfind("\n};")) {
+            (Some(open), close) => close.is_some_and(|c| c > open),
+            (None, _) => true,
+        }
+    })
+}
+
+/// The GLSL block name of uniform buffer `name` (the struct uniform's, or
+/// the loose buffer's): `<name>_ubo`.
+pub fn block_name(name: &str) -> String {
+    [name, "_ubo"].concat()
+}
+
+/// Gives a global its source name back where naga's namer changed it (it
+/// appends `_` to names ending in a digit, `layers_0` becoming
+/// `layers_0_`): the name `glsl_names` gives the source name, unless
+/// something else in the text has it. Returns the name the text uses.
+fn restore_source_name(out: &mut String, naga_name: &str, source: &str) -> String {
+    if naga_name == source {
+        return naga_name.to_string();
+    }
+    let name = glsl_names::glsl_name(source, |n| n != naga_name && text::contains_ident(out, n));
+    if name != naga_name {
+        text::replace_idents(out, &[(naga_name, &name)]);
+    }
+    name
+}
+
+/// The line range (without its newline) of the global declaration of
+/// `name`: at the start of a line (struct members are indented), the name
+/// followed by an initialiser, an array size or `;`.
+fn global_declaration(src: &str, name: &str) -> Option<Range<usize>> {
+    text::find_ident(src, name).find_map(|at| {
+        let line_start = src[..at].rfind('\n').map_or(0, |k| k + 1);
+        let line_end = src[at..].find('\n').map_or(src.len(), |k| at + k);
+        let head = &src[line_start..at];
+        let rest = &src[at + name.len()..line_end];
+        let starts_decl = !head.is_empty() && !head.starts_with([' ', '\t']) && head.ends_with(' ') && !head.trim_end().contains([' ', '(', '=']);
+        (starts_decl && (rest.starts_with(" = ") || rest.starts_with('[') || rest.starts_with(';'))).then_some(line_start..line_end)
+    })
+}
+
+/// Removes `layout(location = N) ` from the `in`/`out` declaration of
+/// `name` (a host binds it by name then).
+fn drop_location_qualifier(src: &mut String, name: &str) -> Option<()> {
+    // The global declaration, not a struct member of the same name.
+    let at = text::find_ident(src, name).find(|&at| {
+        let line_start = src[..at].rfind('\n').map_or(0, |k| k + 1);
+        let line = &src[line_start..at];
+        src[at + name.len()..].starts_with(';') && (line.starts_with("layout(location = ") || line.starts_with("in ") || line.starts_with("out ") || line.starts_with("flat ") || line.starts_with("smooth "))
+    })?;
+    let line_start = src[..at].rfind('\n').map_or(0, |k| k + 1);
+    let line = &src[line_start..at];
+    if !line.starts_with("layout(location = ") {
+        return Some(()); // written without one already
+    }
+    let close = line.find(") ")?;
+    src.replace_range(line_start..line_start + close + 2, "");
+    Some(())
 }
 
 /// Maps the globals of an entry point's GL module to the GPU module's

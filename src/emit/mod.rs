@@ -17,6 +17,8 @@
 //! what failed.
 
 pub mod glsl;
+pub mod glsl_names;
+pub mod limits;
 pub mod reflect;
 pub mod reflect_types;
 pub mod spirv;

@@ -21,10 +21,10 @@ use naga::proc::Layouter;
 use naga::{ArraySize, Handle, Module, ScalarKind, ShaderStage, Type, TypeInner, VectorSize};
 
 use super::glsl::{self, EntryNames};
-use super::reflect_types::{EntryPoint, Io, Member, ProgramLink, Reflection, Sampler, StructLayout, UniformBlock, REFLECTION_FORMAT};
+use super::reflect_types::{EntryPoint, Io, Member, ProgramLink, Reflection, Sampler, StructLayout, Uniform, UniformBuffer, REFLECTION_FORMAT};
 use crate::diag::Diagnostic;
-use crate::lower::{EntryInterface, IoVar, Lowered, ResourceKind};
-use crate::sema::{ConstValue, SamplerKind};
+use crate::lower::{EntryInterface, GlUniforms, IoVar, Lowered, ResourceKind};
+use crate::sema::{ConstValue, SamplerKind, Ty};
 use crate::target::Target;
 
 pub fn file_name(stem: &str) -> String {
@@ -64,8 +64,8 @@ pub fn uniform_layouts(lowered: &Lowered) -> Result<UniformLayouts, Diagnostic> 
 
     let mut out = Vec::with_capacity(lowered.interface.resources.len());
     let mut structs = Structs::default();
-    for r in &lowered.interface.resources {
-        let ResourceKind::Uniform { ty, dsl_type } = &r.kind else {
+    for (ri, r) in lowered.interface.resources.iter().enumerate() {
+        let ResourceKind::Uniform { ty, loose, .. } = &r.kind else {
             out.push(None);
             continue;
         };
@@ -74,28 +74,48 @@ pub fn uniform_layouts(lowered: &Lowered) -> Result<UniformLayouts, Diagnostic> 
         };
         if let Err(why) = std140(module, *ty, &r.name) {
             return Err(Diagnostic::bug(
-                format!("the lowering produced uniform block `{}` whose layout differs between GLSL std140 and the WGSL uniform rules: {why}", r.name),
+                format!("the lowering produced uniform buffer `{}` whose layout differs between GLSL std140 and the WGSL uniform rules: {why}", r.name),
                 Some(r.span),
             ));
         }
-        structs.visit(module, &layouter, *ty)?;
-        let mut members: Vec<Member> = match &t.inner {
-            TypeInner::Struct { members, .. } => members
-                .iter()
-                .enumerate()
-                .map(|(i, m)| member(module, &layouter, m.name.clone().unwrap_or_else(|| format!("_{i}")), dsl_name(module, m.ty), m.ty, m.offset))
-                .collect(),
-            _ => vec![member(module, &layouter, r.name.clone(), dsl_type.clone(), *ty, 0)],
+        structs.visit_members(module, &layouter, *ty)?;
+        if !*loose {
+            structs.visit(module, &layouter, *ty)?;
+        }
+        // A uniform of another module than umbrac's own (a test's WGSL)
+        // may be a loose value: a buffer of that one member.
+        let one = [naga::StructMember { name: Some(r.name.clone()), ty: *ty, binding: None, offset: 0 }];
+        let fields: &[naga::StructMember] = match &t.inner {
+            TypeInner::Struct { members, .. } => members,
+            _ => &one,
         };
-        if let Some(v) = &r.default {
-            let bad = |why: String| Diagnostic::bug(format!("the default of uniform `{}` does not fit its type: {why}", r.name), Some(r.span));
-            let values: Vec<(Handle<Type>, &ConstValue)> = match (&t.inner, v) {
-                (TypeInner::Struct { members, .. }, ConstValue::Composite(fields)) => members.iter().map(|m| m.ty).zip(fields).collect(),
-                (TypeInner::Struct { .. }, _) => return Err(bad("a struct default that is no composite".into())),
-                _ => vec![(*ty, v)],
-            };
-            for (m, (mty, value)) in members.iter_mut().zip(values) {
-                m.default = Some(default_words(module, &layouter, mty, value).map_err(bad)?);
+        let mut members: Vec<Member> = fields
+            .iter()
+            .enumerate()
+            .map(|(i, m)| member(module, &layouter, m.name.clone().unwrap_or_else(|| format!("_{i}")), dsl_name(module, m.ty), m.ty, m.offset))
+            .collect();
+        let bad = |why: String| Diagnostic::bug(format!("the default of uniform `{}` does not fit its type: {why}", r.name), Some(r.span));
+        if *loose {
+            // Members are the loose uniforms: their own types, and how
+            // the buffer stores them.
+            for u in lowered.interface.loose.iter().filter(|u| u.buffer == ri) {
+                let Some((m, field)) = members.get_mut(u.member as usize).zip(fields.get(u.member as usize)) else {
+                    return Err(Diagnostic::bug(format!("uniform `{}` is no member of its buffer `{}`", u.name, r.name), Some(u.span)));
+                };
+                m.ty = u.dsl_type.clone();
+                m.storage = u.storage.clone();
+                if let Ty::Matrix(..) = u.ty {
+                    // Columns stored as an array of `float4`.
+                    m.matrix_stride = m.matrix_stride.or(m.array_stride.take());
+                }
+                if let Some(v) = u.stored_default() {
+                    m.default = Some(default_words(module, &layouter, field.ty, &v).map_err(bad)?);
+                }
+            }
+        } else if let Some(v) = &r.default {
+            let ConstValue::Composite(values) = v else { return Err(bad("a struct default that is no composite".into())) };
+            for ((m, field), value) in members.iter_mut().zip(fields.iter()).zip(values) {
+                m.default = Some(default_words(module, &layouter, field.ty, value).map_err(bad)?);
             }
         }
         out.push(Some(BlockLayout { size: round_up(16, layouter[*ty].size), members }));
@@ -112,6 +132,16 @@ struct Structs {
 }
 
 impl Structs {
+    /// Adds the struct types inside the members of struct `ty`.
+    fn visit_members(&mut self, module: &Module, layouter: &Layouter, ty: Handle<Type>) -> Result<(), Diagnostic> {
+        if let TypeInner::Struct { members, .. } = &module.types[ty].inner {
+            for m in members {
+                self.visit(module, layouter, m.ty)?;
+            }
+        }
+        Ok(())
+    }
+
     /// Adds the struct types inside `ty` (and `ty` itself), each after the
     /// structs it contains.
     fn visit(&mut self, module: &Module, layouter: &Layouter, ty: Handle<Type>) -> Result<(), Diagnostic> {
@@ -160,6 +190,7 @@ fn member(module: &Module, layouter: &Layouter, name: String, ty_name: String, t
             TypeInner::Matrix { rows, scalar, .. } => Some(vec_align(rows, scalar.width as u32)),
             _ => None,
         },
+        storage: None,
         default: None,
     }
 }
@@ -216,6 +247,23 @@ fn value_words(module: &Module, layouter: &Layouter, ty: Handle<Type>, v: &Const
         }
         other => Err(format!("{other:?} has no value")),
     }
+}
+
+/// A value's components in order, as 32-bit words, no padding (what
+/// `glUniform*v` takes).
+fn flat_words(v: &ConstValue) -> Vec<u32> {
+    fn walk(v: &ConstValue, out: &mut Vec<u32>) {
+        match *v {
+            ConstValue::Float(f) => out.push((f as f32).to_bits()),
+            ConstValue::Int(i) => out.push(i as i32 as u32),
+            ConstValue::Uint(u) => out.push(u as u32),
+            ConstValue::Bool(b) => out.push(b as u32),
+            ConstValue::Composite(ref parts) => parts.iter().for_each(|p| walk(p, out)),
+        }
+    }
+    let mut out = Vec::new();
+    walk(v, &mut out);
+    out
 }
 
 /// The default words of a member of type `ty` holding `v`.
@@ -362,22 +410,40 @@ pub fn build(
         }
     }
 
-    let mut uniform_blocks = Vec::new();
+    // The GLSL name of each plain uniform, agreed by every entry point.
+    let mut uniform_glsl: BTreeMap<&str, &String> = BTreeMap::new();
+    for (ep, names) in iface.entry_points.iter().zip(glsl_names) {
+        for (source, name) in &names.uniforms {
+            match uniform_glsl.insert(source, name) {
+                Some(prev) if prev != name => {
+                    return Err(Diagnostic::bug(format!("uniform `{source}` has GLSL names `{prev}` and `{name}` in different stages (`{}`)", ep.name), None))
+                }
+                _ => {}
+            }
+        }
+    }
+
+    let mut uniform_buffers = Vec::new();
     let mut samplers = Vec::new();
     let mut next_unit = 0;
     for (ri, r) in iface.resources.iter().enumerate() {
         match &r.kind {
-            ResourceKind::Uniform { dsl_type, .. } => {
+            ResourceKind::Uniform { dsl_type, loose, .. } => {
                 let Some(Some(layout)) = layouts.blocks.get(ri) else {
                     return Err(Diagnostic::bug(format!("no layout for uniform `{}`", r.name), Some(r.span)));
                 };
-                uniform_blocks.push(UniformBlock {
+                let glsl_block = match (*loose, iface.gl_uniforms) {
+                    (true, GlUniforms::Plain) => None,
+                    _ => Some(res_glsl.get(&ri).cloned().unwrap_or_else(|| super::glsl::block_name(&r.name))),
+                };
+                uniform_buffers.push(UniformBuffer {
                     name: r.name.clone(),
                     ty: dsl_type.clone(),
+                    loose: *loose,
                     size: layout.size,
                     group: r.group,
                     binding: r.binding,
-                    glsl_block: res_glsl.get(&ri).cloned().unwrap_or_else(|| format!("{}_block", r.name)),
+                    glsl_block,
                     members: layout.members.clone(),
                 });
             }
@@ -403,6 +469,22 @@ pub fn build(
         }
     }
 
+    let uniforms = iface
+        .loose
+        .iter()
+        .map(|u| Uniform {
+            name: u.name.clone(),
+            ty: u.dsl_type.clone(),
+            buffer: iface.resources.get(u.buffer).map(|r| r.name.clone()).unwrap_or_default(),
+            glsl_name: match iface.gl_uniforms {
+                GlUniforms::Plain => Some(uniform_glsl.get(u.name.as_str()).map_or_else(|| u.name.clone(), |n| (*n).clone())),
+                GlUniforms::Blocks => None,
+            },
+            glsl_type: super::glsl_names::glsl_type(module, u.value_ty),
+            default: u.default.as_ref().map(flat_words),
+        })
+        .collect();
+
     // The per-module file names, made once for every entry point.
     let module_files = ModuleFiles { wgsl: format!("{stem}.wgsl"), spirv: format!("{stem}.spv") };
     let mut entry_points = Vec::with_capacity(iface.entry_points.len());
@@ -421,7 +503,9 @@ pub fn build(
         conventions: iface.conventions.as_str().to_string(),
         entry_points,
         programs,
-        uniform_blocks,
+        gl_uniforms: iface.gl_uniforms.as_str().to_string(),
+        uniform_buffers,
+        uniforms,
         structs: layouts.structs.clone(),
         samplers,
     })
@@ -452,7 +536,7 @@ fn entry_point(
         files.insert(t.name().to_string(), f);
     }
     let vertex = ep.stage == ShaderStage::Vertex;
-    let io = |vars: &[IoVar], glsl: &BTreeMap<u32, String>, attributes: bool, varyings: bool| -> Result<Vec<Io>, Diagnostic> {
+    let io = |vars: &[IoVar], glsl: &BTreeMap<u32, String>, output: bool, attributes: bool, varyings: bool| -> Result<Vec<Io>, Diagnostic> {
         let mut v = vars
             .iter()
             .map(|var| {
@@ -478,6 +562,7 @@ fn entry_point(
                     } else {
                         None
                     },
+                    glsl_location: names.located.contains(&(output, var.location)).then_some(var.location),
                     glsl_name,
                 })
             })
@@ -485,20 +570,21 @@ fn entry_point(
         v.sort_by_key(|io| io.location);
         Ok(v)
     };
-    let inputs = io(&ep.inputs, &names.inputs, vertex, !vertex)?;
-    let outputs = io(&ep.outputs, &names.outputs, false, vertex)?;
+    let inputs = io(&ep.inputs, &names.inputs, false, vertex, !vertex)?;
+    let outputs = io(&ep.outputs, &names.outputs, true, false, vertex)?;
 
-    let mut uniform_blocks = Vec::new();
+    let mut uniform_buffers = Vec::new();
     let mut samplers = Vec::new();
     for &ri in &ep.resources {
         let Some(r) = iface.resources.get(ri) else {
             return Err(Diagnostic::bug(format!("entry point `{}` uses resource #{ri}, which does not exist", ep.name), None));
         };
         match r.kind {
-            ResourceKind::Uniform { .. } => uniform_blocks.push(r.name.clone()),
+            ResourceKind::Uniform { .. } => uniform_buffers.push(r.name.clone()),
             ResourceKind::Sampler(_) => samplers.push(r.name.clone()),
         }
     }
+    let uniforms = ep.loose.iter().filter_map(|&u| iface.loose.get(u)).map(|u| u.name.clone()).collect();
     Ok(EntryPoint {
         name: ep.name.clone(),
         stage: stage_name(ep.stage).into(),
@@ -506,7 +592,8 @@ fn entry_point(
         inputs,
         outputs,
         builtins: ep.builtins.clone(),
-        uniform_blocks,
+        uniform_buffers,
+        uniforms,
         samplers,
     })
 }

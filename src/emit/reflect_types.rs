@@ -1,11 +1,15 @@
 //! The reflection manifest: everything a host needs to bind a compiled
 //! shader file on every target. Serialised as `STEM.reflect.json`.
 //!
-//! Binding model (the same for every target, see docs/targets.md):
-//! - every `@uniform` value that is not a sampler is one uniform block: a
-//!   struct-typed uniform is a block with the struct's fields as members, a
-//!   loose value (`var @uniform u_model : float4x4`) is a block with that one
-//!   member;
+//! Binding model (docs/targets.md says how each host binds):
+//! - a struct-typed `@uniform` is a uniform buffer of its own, with the
+//!   struct's fields as members: a std140 block `<name>_ubo` in GLSL;
+//! - the loose uniforms (`var @uniform u_model : float4x4`, every one that
+//!   is not a struct) of each `@set` group are the members of one uniform
+//!   buffer on WGSL/SPIR-V (`uniforms`, `set1_uniforms`, ...); in GLSL
+//!   they are plain `uniform T name;` globals (`uniforms`, set with
+//!   `glUniform*`), or with `--gl-uniforms blocks` the buffer as a std140
+//!   block `uniforms_ubo`;
 //! - every sampler is a texture plus (on WGSL/SPIR-V) a separate sampler
 //!   binding; on GL it is one `sampler*` uniform on a texture unit.
 
@@ -16,8 +20,11 @@
 //! defaults and in `render`).
 
 /// Bumped when the JSON shape changes incompatibly (adding a field is
-/// compatible: `structs` was added in format 1).
-pub const REFLECTION_FORMAT: u32 = 1;
+/// compatible: `structs` was added in format 1). Format 2: loose uniforms
+/// share a buffer per group (`uniform_buffers`, `uniforms`), GLSL declares
+/// them plain, and interface variables have GLSL locations only where the
+/// source gives one.
+pub const REFLECTION_FORMAT: u32 = 2;
 
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "deserialize", derive(serde::Deserialize))]
@@ -34,7 +41,14 @@ pub struct Reflection {
     /// units are numbered per program).
     #[cfg_attr(feature = "deserialize", serde(default))]
     pub programs: Vec<ProgramLink>,
-    pub uniform_blocks: Vec<UniformBlock>,
+    /// How GLSL declares the loose uniforms: `"plain"` (`uniform T name;`)
+    /// or `"blocks"` (the loose buffers as std140 blocks).
+    pub gl_uniforms: String,
+    /// What WGSL/SPIR-V bind: the struct uniforms, and a buffer per group
+    /// of the loose uniforms. In GLSL, the ones with a `glsl_block`.
+    pub uniform_buffers: Vec<UniformBuffer>,
+    /// Every loose uniform some entry point reads, in declaration order.
+    pub uniforms: Vec<Uniform>,
     /// Every struct type a uniform block is or contains, at any depth (a
     /// member's type, an array's element type), each once, a struct after
     /// the structs it contains: what a host needs to lay out a nested
@@ -68,8 +82,11 @@ pub struct EntryPoint {
     pub outputs: Vec<Io>,
     /// Builtins read or written, by their DSL names (`gl_Position`, ...).
     pub builtins: Vec<String>,
-    /// Names of the uniform blocks (`UniformBlock::name`) this stage uses.
-    pub uniform_blocks: Vec<String>,
+    /// Names of the uniform buffers (`UniformBuffer::name`) this stage uses.
+    pub uniform_buffers: Vec<String>,
+    /// Names of the loose uniforms (`Uniform::name`) this stage reads (in
+    /// GLSL's plain form, the `uniform` globals its file declares).
+    pub uniforms: Vec<String>,
     /// Names of the samplers (`Sampler::name`) this stage uses.
     pub samplers: Vec<String>,
 }
@@ -93,26 +110,67 @@ pub struct Io {
     pub interpolation: Option<String>,
     /// The identifier the GLSL output uses for it (both GLSL profiles).
     pub glsl_name: String,
+    /// The `layout(location = N)` the GLSL declares: only where the source
+    /// gives `@location = N` (and on each colour output of an ES fragment
+    /// shader with several). Otherwise the host binds by name
+    /// (`glBindAttribLocation`, `glBindFragDataLocation`; `location` is the
+    /// number to bind).
+    #[cfg_attr(feature = "deserialize", serde(default))]
+    pub glsl_location: Option<u32>,
 }
 
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "deserialize", derive(serde::Deserialize))]
-pub struct UniformBlock {
-    /// The DSL global's name.
+pub struct UniformBuffer {
+    /// The struct uniform's name, or the loose buffer's (`uniforms` for
+    /// group 0, `set1_uniforms` for group 1, ...).
     pub name: String,
-    /// DSL type of the global.
+    /// The struct's name (the loose buffer's struct: `Uniforms`, ...).
     #[cfg_attr(feature = "deserialize", serde(rename = "type"))]
     pub ty: String,
-    /// Block size in bytes (std140 on GL, the identical WGSL uniform layout
-    /// on WGSL/SPIR-V), rounded up to 16.
+    /// Whether this buffer holds the loose uniforms of its group (its
+    /// members are `Reflection::uniforms` entries).
+    pub loose: bool,
+    /// Size in bytes (the WGSL uniform layout, identical to std140 for
+    /// what a buffer holds), rounded up to 16.
     pub size: u32,
     pub group: u32,
     pub binding: u32,
-    /// The uniform block's name in GLSL (bind with glGetUniformBlockIndex +
-    /// glUniformBlockBinding); the same in every stage.
-    pub glsl_block: String,
-    /// Members with byte offsets. A loose value is one member at offset 0.
+    /// Its std140 block's name in GLSL (bind with glGetUniformBlockIndex +
+    /// glUniformBlockBinding), the same in every stage: `<name>_ubo`. A
+    /// loose buffer has one only with `--gl-uniforms blocks`.
+    #[cfg_attr(feature = "deserialize", serde(default))]
+    pub glsl_block: Option<String>,
+    /// Members with byte offsets.
     pub members: Vec<Member>,
+}
+
+/// A loose uniform: a member of its group's uniform buffer, a plain
+/// `uniform` in GLSL.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "deserialize", derive(serde::Deserialize))]
+pub struct Uniform {
+    /// The DSL global's name.
+    pub name: String,
+    /// DSL type, e.g. `float3x2`, `bool`, `float[9]`.
+    #[cfg_attr(feature = "deserialize", serde(rename = "type"))]
+    pub ty: String,
+    /// The uniform buffer (`UniformBuffer::name`) it is a member of.
+    pub buffer: String,
+    /// Its name in GLSL's plain form (`glGetUniformLocation`); `None`
+    /// with `--gl-uniforms blocks`.
+    #[cfg_attr(feature = "deserialize", serde(default))]
+    pub glsl_name: Option<String>,
+    /// Its GLSL type (`mat3x2`, `bool`, `float[9]`): which `glUniform*`
+    /// sets it.
+    pub glsl_type: String,
+    /// Its default value (`var @uniform x : T = value`) as the values a
+    /// `glUniform*v` call takes: every component in order (matrices column
+    /// by column, arrays element by element), as 32-bit words (floats by
+    /// their IEEE-754 bits, `bool` 0 or 1), no padding. The buffer layout
+    /// of the same default is the member's `default`.
+    #[cfg_attr(feature = "deserialize", serde(default))]
+    pub default: Option<Vec<u32>>,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -137,6 +195,12 @@ pub struct Member {
     /// Stride between columns for matrices.
     #[cfg_attr(feature = "deserialize", serde(default))]
     pub matrix_stride: Option<u32>,
+    /// The type the buffer stores it as, where that is not its own (a
+    /// loose uniform's only): `uint` for `bool` (0 or 1), `uintN` for
+    /// `boolN`, `float4[N]` for `float[N]` or `float2[N]` (each element in
+    /// the first components of a `float4`), `float4[C]` for `floatCx2`.
+    #[cfg_attr(feature = "deserialize", serde(default))]
+    pub storage: Option<String>,
     /// The member's default contents, from `var @uniform x : T = value`:
     /// its `size` bytes as little-endian 32-bit words (floats by their
     /// IEEE-754 bits, padding zero), to copy to `offset` before the host
@@ -195,7 +259,9 @@ serialize_struct!(Reflection {
     "conventions": conventions,
     "entry_points": entry_points,
     "programs": programs,
-    "uniform_blocks": uniform_blocks,
+    "gl_uniforms": gl_uniforms,
+    "uniform_buffers": uniform_buffers,
+    "uniforms": uniforms,
     "structs": structs,
     "samplers": samplers,
 });
@@ -212,7 +278,8 @@ serialize_struct!(EntryPoint {
     "inputs": inputs,
     "outputs": outputs,
     "builtins": builtins,
-    "uniform_blocks": uniform_blocks,
+    "uniform_buffers": uniform_buffers,
+    "uniforms": uniforms,
     "samplers": samplers,
 });
 
@@ -224,16 +291,27 @@ serialize_struct!(Io {
     "size": size,
     "interpolation": interpolation?,
     "glsl_name": glsl_name,
+    "glsl_location": glsl_location?,
 });
 
-serialize_struct!(UniformBlock {
+serialize_struct!(UniformBuffer {
     "name": name,
     "type": ty,
+    "loose": loose,
     "size": size,
     "group": group,
     "binding": binding,
-    "glsl_block": glsl_block,
+    "glsl_block": glsl_block?,
     "members": members,
+});
+
+serialize_struct!(Uniform {
+    "name": name,
+    "type": ty,
+    "buffer": buffer,
+    "glsl_name": glsl_name?,
+    "glsl_type": glsl_type,
+    "default": default?,
 });
 
 serialize_struct!(Member {
@@ -243,6 +321,7 @@ serialize_struct!(Member {
     "size": size,
     "array_stride": array_stride?,
     "matrix_stride": matrix_stride?,
+    "storage": storage?,
     "default": default?,
 });
 

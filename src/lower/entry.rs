@@ -127,7 +127,7 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
     use naga::ShaderStage::{Fragment, Vertex};
     let p = m.p;
     let stage = ep.stage;
-    let mut iface = EntryInterface { name: ep.name.clone(), stage, index, inputs: Vec::new(), outputs: Vec::new(), builtins: Vec::new(), resources: Vec::new() };
+    let mut iface = EntryInterface { name: ep.name.clone(), stage, index, inputs: Vec::new(), outputs: Vec::new(), builtins: Vec::new(), resources: Vec::new(), loose: Vec::new() };
     // Only the GPU module's interface is kept (`lower_gl_entry` drops its
     // own): a GL module leaves the lists empty.
     let describe = m.flavor != Flavor::Gl;
@@ -147,7 +147,13 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
     for (&gid, &use_span) in &ep.func.uses {
         let g = &p.globals[gid];
         if matches!(g.kind, GlobalKind::Uniform { .. } | GlobalKind::Sampler { .. }) {
-            iface.resources.extend(m.resource_of[gid].clone());
+            // The loose uniforms of a group share their buffer.
+            for r in m.resource_of[gid].clone() {
+                if !iface.resources.contains(&r) {
+                    iface.resources.push(r);
+                }
+            }
+            iface.loose.extend(m.loose_of[gid]);
             continue;
         }
         if !own[gid] && !matches!(m.globals[gid], GlobalSlot::Var(_)) {
@@ -165,7 +171,7 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
                     let interp = if stage == Fragment { interpolation(&g.ty) } else { (None, None) };
                     if describe {
                         let dsl_type = m.show_ty(&g.ty);
-                        iface.inputs.push(IoVar { name: g.name.clone(), location: l, ty, dsl_type, interpolation: interp.0 });
+                        iface.inputs.push(IoVar { name: g.name.clone(), location: l, explicit_location: matches!(g.kind, GlobalKind::Io { location: Some(_), .. }), span: g.span, ty, dsl_type, interpolation: interp.0 });
                     }
                     (location(l, interp), ty, false)
                 }
@@ -206,7 +212,7 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
                     let interp = if stage == Vertex { interpolation(&g.ty) } else { (None, None) };
                     if describe {
                         let dsl_type = m.show_ty(&g.ty);
-                        iface.outputs.push(IoVar { name: g.name.clone(), location: l, ty, dsl_type, interpolation: interp.0 });
+                        iface.outputs.push(IoVar { name: g.name.clone(), location: l, explicit_location: matches!(g.kind, GlobalKind::Io { location: Some(_), .. }), span: g.span, ty, dsl_type, interpolation: interp.0 });
                     }
                     outs.push((Some(gid), None, ty, location(l, interp), g.name.clone()));
                 }
@@ -239,10 +245,16 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
         GlobalSlot::Var(h) if !own[gid] => Some(h),
         _ => None,
     };
+    // In a GL module the interface variables take the source names (the
+    // GLSL writer names them by location; emit renames them), so what
+    // holds them inside the entry function is named apart: `in_a_pos`,
+    // `out_v_uv`, and `io_a_pos` for a private copy (`globals.rs`).
+    let gl = b.m.flavor == Flavor::Gl;
     for gid in own_outputs {
         let g = &p.globals[gid];
         let ty = b.m.ty(&g.ty);
-        b.output_local(gid, &g.name, ty, g.span);
+        let name = if gl && matches!(g.kind, GlobalKind::Io { .. }) { ["out_", &g.name].concat() } else { g.name.clone() };
+        b.output_local(gid, &name, ty, g.span);
     }
     for (gid, s) in point_coord_default {
         let h = private(b.m, gid);
@@ -255,6 +267,7 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
         // copied into a private global leaves the name to the global.
         let name = match h {
             Some(_) => ["in_", g.name.trim_start_matches("gl_")].concat(),
+            None if gl && matches!(g.kind, GlobalKind::Io { .. }) => ["in_", &g.name].concat(),
             None => g.name.trim_start_matches("gl_").to_owned(),
         };
         b.func.arguments.push(naga::FunctionArgument { name: Some(name), ty, binding: Some(binding.clone()) });

@@ -61,7 +61,7 @@ impl FnBuilder<'_, '_> {
             Some(_) => None,
             None => match self.m.globals[g] {
                 GlobalSlot::Var(h) => Some(self.append_plain(E::GlobalVariable(h), s)),
-                GlobalSlot::Sampler { .. } | GlobalSlot::Absent => None,
+                GlobalSlot::Sampler { .. } | GlobalSlot::Packed { .. } | GlobalSlot::Absent => None,
             },
         }
     }
@@ -73,6 +73,10 @@ impl FnBuilder<'_, '_> {
             if let Some(LocalSlot::Value(h)) = self.global_slot(g) {
                 return h;
             }
+        }
+        // A loose uniform, or a part of one, in a uniform buffer.
+        if let Some(v) = self.uniform_buffer_value(e, block) {
+            return v;
         }
         match &e.kind {
             ExprKind::Float(v) => {

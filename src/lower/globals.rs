@@ -1,7 +1,9 @@
 //! The program's globals in a module: uniforms and samplers (with
 //! bindings in the GPU module, none in a GL module, which naga then names
-//! after the source), private globals for the entry-point inputs and
-//! outputs that need one, and module variables.
+//! after the source; loose uniforms in the buffers of `uniforms`, or as
+//! private globals for GLSL's plain `uniform T name;`), private globals
+//! for the entry-point inputs and outputs that need one, and module
+//! variables.
 
 use naga::TypeInner;
 
@@ -33,6 +35,31 @@ impl ModuleBuilder<'_> {
                 continue;
             }
             let slot = match &g.kind {
+                GlobalKind::Uniform { .. } if g.is_loose_uniform() && self.packs_uniforms() => {
+                    let slot = self.uniform_buffer_member(gid);
+                    let buffer = self.resources.iter().position(|r| matches!(slot, GlobalSlot::Packed { buffer, .. } if r.global == buffer));
+                    self.globals.push(slot);
+                    self.resource_of.push(buffer.map_or(0..0, |b| b..b + 1));
+                    continue;
+                }
+                GlobalKind::Uniform { .. } if g.is_loose_uniform() => {
+                    // GLSL's plain form: a private global the GLSL text
+                    // then declares `uniform T name;` (`emit::glsl`).
+                    let ty = self.ty(&g.ty);
+                    let h = self.module.global_variables.append(
+                        naga::GlobalVariable {
+                            name: Some(g.name.clone()),
+                            space: naga::AddressSpace::Private,
+                            binding: None,
+                            ty,
+                            init: None,
+                            memory_decorations: naga::MemoryDecorations::empty(),
+                        },
+                        span,
+                    );
+                    self.plain_uniforms.push((h, g.name.clone()));
+                    GlobalSlot::Var(h)
+                }
                 GlobalKind::Uniform { default } => {
                     let ty = self.ty(&g.ty);
                     let sema::Bind { group, binding } = g.bind.expect("a used resource is bound");
@@ -52,7 +79,7 @@ impl ModuleBuilder<'_> {
                         self.resources.push(Resource {
                             name: g.name.clone(),
                             span: g.span,
-                            kind: ResourceKind::Uniform { ty, dsl_type },
+                            kind: ResourceKind::Uniform { ty, dsl_type, loose: false },
                             global: h,
                             sampler_global: None,
                             group,
@@ -125,9 +152,15 @@ impl ModuleBuilder<'_> {
                 GlobalKind::Io { .. } | GlobalKind::Builtin(_) if !private[gid] => GlobalSlot::Absent,
                 GlobalKind::Io { .. } | GlobalKind::Builtin(_) => {
                     let ty = self.ty(&g.ty);
+                    // A GL module's interface variables take the source
+                    // names (see `entry.rs`): the private copy is `io_NAME`.
+                    let name = match (self.flavor, &g.kind) {
+                        (Flavor::Gl, GlobalKind::Io { .. }) => ["io_", &g.name].concat(),
+                        _ => g.name.clone(),
+                    };
                     let h = self.module.global_variables.append(
                         naga::GlobalVariable {
-                            name: Some(g.name.clone()),
+                            name: Some(name),
                             space: naga::AddressSpace::Private,
                             binding: None,
                             ty,

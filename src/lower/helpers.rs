@@ -180,6 +180,8 @@ impl FnBuilder<'_, '_> {
             ExprKind::Local(l) => matches!(self.locals[*l], LocalSlot::Var(_) | LocalSlot::Ptr(_)),
             ExprKind::Global(g) => match self.global_slot(*g) {
                 Some(slot) => matches!(slot, LocalSlot::Var(_)),
+                // A plain GLSL uniform is a private global too.
+                None if matches!(self.m.p.globals[*g].kind, sema::GlobalKind::Uniform { .. }) => false,
                 None => match self.m.globals[*g] {
                     GlobalSlot::Var(h) => self.m.module.global_variables[h].space == naga::AddressSpace::Private,
                     _ => false,

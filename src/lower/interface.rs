@@ -7,7 +7,7 @@ use crate::sema::SamplerKind;
 use crate::source::Span;
 
 /// How WGSL/SPIR-V outputs treat clip space and framebuffer orientation.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum Conventions {
     /// The default: adapt GL-convention code so the same host math gives the
     /// same picture on WebGPU/Vulkan (z remapped to [0, w], y flipped; the
@@ -27,8 +27,42 @@ impl Conventions {
     }
 }
 
-/// A uniform block or sampler of the program, with its place in the GPU
-/// module.
+/// How GLSL declares the loose uniforms (those that are not structs).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum GlUniforms {
+    /// `uniform mat4 u_model;`, set by name with `glUniform*`, as daslang's
+    /// own generator writes them.
+    #[default]
+    Plain,
+    /// One std140 block per `@set` group (`uniforms_ubo`), laid out as the
+    /// WGSL/SPIR-V uniform buffer, for hosts that use uniform buffers.
+    Blocks,
+}
+
+impl GlUniforms {
+    pub fn as_str(self) -> &'static str {
+        match self {
+            GlUniforms::Plain => "plain",
+            GlUniforms::Blocks => "blocks",
+        }
+    }
+}
+
+/// How lowering builds the modules.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub struct LowerOptions {
+    pub conventions: Conventions,
+    pub gl_uniforms: GlUniforms,
+}
+
+impl From<Conventions> for LowerOptions {
+    fn from(conventions: Conventions) -> Self {
+        LowerOptions { conventions, ..LowerOptions::default() }
+    }
+}
+
+/// A uniform buffer (a struct uniform, or the loose uniforms of one
+/// group) or a sampler of the program, with its place in the GPU module.
 #[derive(Clone, Debug)]
 pub struct Resource {
     /// The DSL global's name.
@@ -47,15 +81,42 @@ pub struct Resource {
     pub sampler_binding: Option<u32>,
     /// GL texture unit of a sampler resource.
     pub texture_unit: Option<u32>,
-    /// The host's default value of a uniform (`var @uniform x : T = value`).
+    /// The host's default value of a struct uniform (`var @uniform x : T
+    /// = value`); a loose uniform's is its [`LooseUniform::default`].
+    pub default: Option<crate::sema::ConstValue>,
+}
+
+/// A loose uniform (not a struct): a member of its group's uniform buffer
+/// on WGSL/SPIR-V (and in GLSL's blocks form), a plain `uniform T name;`
+/// in GLSL otherwise.
+#[derive(Clone, Debug)]
+pub struct LooseUniform {
+    pub name: String,
+    pub span: Span,
+    /// The DSL type, and its spelling.
+    pub ty: crate::sema::Ty,
+    pub dsl_type: String,
+    /// The type it is stored as in the buffer, where that differs
+    /// (`uint` for `bool`, `float4[9]` for `float[9]`, `float4[3]` for
+    /// `float3x2`): its spelling, and the stored type in the GPU module.
+    pub storage: Option<String>,
+    pub stored_ty: naga::Handle<naga::Type>,
+    /// Its own type in the GPU module.
+    pub value_ty: naga::Handle<naga::Type>,
+    /// Index into `Interface::resources` of its buffer, and its member
+    /// index there.
+    pub buffer: usize,
+    pub member: u32,
+    /// The host's default value (`var @uniform x : T = value`).
     pub default: Option<crate::sema::ConstValue>,
 }
 
 #[derive(Clone, Debug)]
 pub enum ResourceKind {
-    /// `ty` is the global's type: a struct for a struct uniform, else the
-    /// loose value's type. `dsl_type` is its DSL spelling.
-    Uniform { ty: naga::Handle<naga::Type>, dsl_type: String },
+    /// `ty` is the global's type: the struct of a struct uniform, or the
+    /// buffer struct holding a group's loose uniforms (`loose`, whose
+    /// members are `Interface::loose` entries). `dsl_type` is its name.
+    Uniform { ty: naga::Handle<naga::Type>, dsl_type: String, loose: bool },
     Sampler(SamplerKind),
 }
 
@@ -64,6 +125,11 @@ pub enum ResourceKind {
 pub struct IoVar {
     pub name: String,
     pub location: u32,
+    /// The source gives the location (`@location = N`): GLSL declares it
+    /// (`layout(location = N)`); otherwise a GL host binds by name.
+    pub explicit_location: bool,
+    /// The global's declaration.
+    pub span: Span,
     pub ty: naga::Handle<naga::Type>,
     pub dsl_type: String,
     pub interpolation: Option<naga::Interpolation>,
@@ -82,12 +148,17 @@ pub struct EntryInterface {
     pub builtins: Vec<String>,
     /// Indices into `Interface::resources` that this entry point uses.
     pub resources: Vec<usize>,
+    /// Indices into `Interface::loose` of the loose uniforms it reads.
+    pub loose: Vec<usize>,
 }
 
 #[derive(Clone, Debug, Default)]
 pub struct Interface {
     pub conventions: Conventions,
+    pub gl_uniforms: GlUniforms,
     pub resources: Vec<Resource>,
+    /// The loose uniforms any entry point reads, in declaration order.
+    pub loose: Vec<LooseUniform>,
     pub entry_points: Vec<EntryInterface>,
     /// `(vertex, fragment)` indices into `entry_points` of the entry
     /// points that form one program (`sema::Link`).
@@ -99,6 +170,10 @@ pub struct Interface {
 pub struct GlEntry {
     pub module: naga::Module,
     pub info: naga::valid::ModuleInfo,
+    /// The private globals standing for plain uniforms (`GlUniforms::Plain`),
+    /// with their source names: the GLSL writer declares them as globals,
+    /// and `emit` makes each declaration `uniform T name;`.
+    pub uniforms: Vec<(naga::Handle<naga::GlobalVariable>, String)>,
 }
 
 /// The result of lowering: the validated modules and the interface that

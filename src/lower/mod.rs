@@ -24,8 +24,9 @@
 //!   the resources with their bindings, each entry point's inputs/outputs;
 //! - `reach`: pure analyses of the checked program (which helpers each
 //!   entry point reaches, where each entry point keeps its inputs/outputs);
-//! - `module` (with `types`, `globals`): module-level IR: types, constants,
-//!   resource and private globals; `validate`: naga's validator;
+//! - `module` (with `types`, `globals`, `uniforms`): module-level IR:
+//!   types, constants, resource and private globals, the uniform buffers
+//!   of loose uniforms; `validate`: naga's validator;
 //! - `helpers`: helper functions, with their per-stage and per-sampler
 //!   copies; `entry`: entry points (arguments, outputs, prologue/epilogue,
 //!   the clip-space adaptation);
@@ -48,9 +49,10 @@ mod reach;
 mod stmts;
 mod textures;
 mod types;
+mod uniforms;
 mod validate;
 
-pub use interface::{Conventions, EntryInterface, Flavor, GlEntry, Interface, IoVar, Lowered, Resource, ResourceKind};
+pub use interface::{Conventions, EntryInterface, Flavor, GlEntry, GlUniforms, Interface, IoVar, LooseUniform, LowerOptions, Lowered, Resource, ResourceKind};
 
 use crate::diag::Diagnostic;
 use crate::sema;
@@ -58,13 +60,15 @@ use module::ModuleBuilder;
 use reach::{EntryIo, Reach};
 
 /// Lowers a checked program into the validated modules.
-pub fn lower(program: &sema::Program, conventions: Conventions) -> Result<Lowered, Diagnostic> {
+pub fn lower(program: &sema::Program, options: impl Into<LowerOptions>) -> Result<Lowered, Diagnostic> {
+    let options = options.into();
     // Call-graph reach, once for all the modules.
     let reach = Reach::of(program);
-    let (gpu, gpu_info, interface) = gpu(program, conventions, &reach)?;
+    let (gpu, gpu_info, mut interface) = gpu(program, options.conventions, &reach)?;
+    interface.gl_uniforms = options.gl_uniforms;
     // One validator for all the GL modules: its tables are reused.
     let mut validator = validate::validator(Flavor::Gl);
-    let gl = (0..program.entry_points.len()).map(|i| gl_entry(program, i, &reach, &mut validator)).collect::<Result<_, _>>()?;
+    let gl = (0..program.entry_points.len()).map(|i| gl_entry(program, i, options.gl_uniforms, &reach, &mut validator)).collect::<Result<_, _>>()?;
     Ok(Lowered { gl, gpu, gpu_info, interface })
 }
 
@@ -74,7 +78,7 @@ pub fn lower_gpu(program: &sema::Program, conventions: Conventions) -> Result<(n
 }
 
 fn gpu(program: &sema::Program, conventions: Conventions, reach: &Reach) -> Result<(naga::Module, naga::valid::ModuleInfo, Interface), Diagnostic> {
-    let (gpu, mut interface) = build(program, Flavor::Gpu(conventions), None, reach)?;
+    let (gpu, mut interface, _) = build(program, Flavor::Gpu(conventions), GlUniforms::default(), None, reach)?;
     #[cfg(debug_assertions)]
     let gpu = fault::inject(gpu);
     let flavor = Flavor::Gpu(conventions);
@@ -84,15 +88,15 @@ fn gpu(program: &sema::Program, conventions: Conventions, reach: &Reach) -> Resu
 }
 
 /// The validated GL module of entry point `index` alone.
-pub fn lower_gl_entry(program: &sema::Program, index: usize) -> Result<GlEntry, Diagnostic> {
-    gl_entry(program, index, &Reach::of(program), &mut validate::validator(Flavor::Gl))
+pub fn lower_gl_entry(program: &sema::Program, index: usize, gl_uniforms: GlUniforms) -> Result<GlEntry, Diagnostic> {
+    gl_entry(program, index, gl_uniforms, &Reach::of(program), &mut validate::validator(Flavor::Gl))
 }
 
 /// [`lower_gl_entry`] with a validator from `validate::validator(Flavor::Gl)`.
-fn gl_entry(program: &sema::Program, index: usize, reach: &Reach, validator: &mut naga::valid::Validator) -> Result<GlEntry, Diagnostic> {
-    let (module, _) = build(program, Flavor::Gl, Some(index), reach)?;
+fn gl_entry(program: &sema::Program, index: usize, gl_uniforms: GlUniforms, reach: &Reach, validator: &mut naga::valid::Validator) -> Result<GlEntry, Diagnostic> {
+    let (module, _, uniforms) = build(program, Flavor::Gl, gl_uniforms, Some(index), reach)?;
     let info = validate::validate(validator, &module, Flavor::Gl)?;
-    Ok(GlEntry { module, info })
+    Ok(GlEntry { module, info, uniforms })
 }
 
 /// Validates a module the way [`lower`] validates its own output: a failure
@@ -104,8 +108,15 @@ pub fn validate(module: &naga::Module, flavor: Flavor) -> Result<naga::valid::Mo
 /// Builds the whole program, or (`only`) one entry point and what it
 /// reaches: globals, then helper functions (callees before callers, as
 /// sema ordered them), then entry points.
-fn build(p: &sema::Program, flavor: Flavor, only: Option<usize>, reach: &Reach) -> Result<(naga::Module, Interface), Diagnostic> {
-    let mut m = ModuleBuilder::new(p, flavor);
+#[allow(clippy::type_complexity)]
+fn build(
+    p: &sema::Program,
+    flavor: Flavor,
+    gl_uniforms: GlUniforms,
+    only: Option<usize>,
+    reach: &Reach,
+) -> Result<(naga::Module, Interface, Vec<(naga::Handle<naga::GlobalVariable>, String)>), Diagnostic> {
+    let mut m = ModuleBuilder::new(p, flavor, gl_uniforms);
     m.allow_nonuniform_derivatives();
     let io = EntryIo::of(p, only, reach);
     let only_ep = only.map(|i| &p.entry_points[i]);
@@ -128,6 +139,13 @@ fn build(p: &sema::Program, flavor: Flavor, only: Option<usize>, reach: &Reach) 
         None => p.links.iter().map(|l| (l.vertex, l.fragment)).collect(),
         Some(_) => Vec::new(),
     };
-    let interface = Interface { conventions: Conventions::default(), resources: std::mem::take(&mut m.resources), entry_points: entries, links };
-    Ok((m.module, interface))
+    let interface = Interface {
+        conventions: Conventions::default(),
+        gl_uniforms,
+        resources: std::mem::take(&mut m.resources),
+        loose: std::mem::take(&mut m.loose),
+        entry_points: entries,
+        links,
+    };
+    Ok((m.module, interface, m.plain_uniforms))
 }

@@ -4,7 +4,7 @@
 
 use naga::{Handle, Module, Type};
 
-use super::interface::{Flavor, Resource};
+use super::interface::{Flavor, GlUniforms, LooseUniform, Resource};
 use super::types::{self, TypeTable};
 use crate::sema::{self, ConstValue, Scalar, Ty};
 
@@ -17,6 +17,9 @@ pub(super) enum GlobalSlot {
     /// `ModuleBuilder::sampler_elems`, each a separate image and sampler
     /// global (naga's GLSL writer cannot write binding arrays).
     Sampler { first: usize, count: u32 },
+    /// A loose uniform: member `member` of uniform buffer `buffer`
+    /// (`lower::uniforms`).
+    Packed { buffer: Handle<naga::GlobalVariable>, member: u32 },
     /// Not declared: the module is built for one entry point, which does not
     /// use this global, or it is an input or output that every entry point
     /// using it holds itself (see `ModuleBuilder::declare_globals`).
@@ -52,6 +55,18 @@ pub(super) struct ModuleBuilder<'p> {
     pub(super) sampler_elems: Vec<(Handle<naga::GlobalVariable>, Handle<naga::GlobalVariable>)>,
     /// The program's struct names, for DSL type spellings in the interface.
     pub(super) struct_names: Vec<String>,
+    /// How a GL module declares loose uniforms.
+    pub(super) gl_uniforms: GlUniforms,
+    /// The uniform buffers of loose uniforms declared so far: where each
+    /// is bound, its global, its members.
+    pub(super) uniform_buffers: Vec<(sema::Bind, Handle<naga::GlobalVariable>, Vec<sema::GlobalId>)>,
+    /// The loose uniforms, for the interface (empty in a GL module), and
+    /// the index there of each sema global that is one.
+    pub(super) loose: Vec<LooseUniform>,
+    pub(super) loose_of: Vec<Option<usize>>,
+    /// A GL module's private globals that stand for plain uniforms
+    /// (`GlEntry::uniforms`).
+    pub(super) plain_uniforms: Vec<(Handle<naga::GlobalVariable>, String)>,
 }
 
 /// One sampler: element `elem` of sampler global `global` (0 for a single
@@ -71,7 +86,7 @@ pub(super) struct Specialised {
 }
 
 impl<'p> ModuleBuilder<'p> {
-    pub(super) fn new(p: &'p sema::Program, flavor: Flavor) -> Self {
+    pub(super) fn new(p: &'p sema::Program, flavor: Flavor, gl_uniforms: GlUniforms) -> Self {
         ModuleBuilder {
             p,
             module: Module::default(),
@@ -88,6 +103,11 @@ impl<'p> ModuleBuilder<'p> {
             sampler_elems: Vec::new(),
             // Only the GPU module's interface spells types (`show_ty`).
             struct_names: if flavor == Flavor::Gl { Vec::new() } else { p.struct_names() },
+            gl_uniforms,
+            uniform_buffers: Vec::new(),
+            loose: Vec::new(),
+            loose_of: vec![None; p.globals.len()],
+            plain_uniforms: Vec::new(),
         }
     }
 

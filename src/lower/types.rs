@@ -145,6 +145,29 @@ impl TypeTable {
         h
     }
 
+    /// A struct type laid out for the uniform address space: WGSL's rules
+    /// there (array and struct members start at multiples of 16), which
+    /// for the types a uniform buffer holds are std140's; the size is
+    /// rounded up to 16.
+    pub(super) fn uniform_struct_type(&mut self, module: &mut Module, name: String, fields: Vec<(String, Handle<Type>)>) -> Handle<Type> {
+        let mut members = Vec::with_capacity(fields.len());
+        let mut offset = 0u32;
+        for (fname, mty) in fields {
+            let layout = self.layout(module, mty);
+            let composite = matches!(module.types[mty].inner, TypeInner::Array { .. } | TypeInner::Struct { .. });
+            let align = if composite { layout.alignment.max(naga::proc::Alignment::SIXTEEN) } else { layout.alignment };
+            offset = align.round_up(offset);
+            members.push(naga::StructMember { name: Some(fname), ty: mty, binding: None, offset });
+            offset += layout.size;
+            if composite {
+                // What follows a struct or array starts on the next 16.
+                offset = naga::proc::Alignment::SIXTEEN.round_up(offset);
+            }
+        }
+        let span = naga::proc::Alignment::SIXTEEN.round_up(offset.max(16));
+        add_type(module, Some(name), TypeInner::Struct { members, span })
+    }
+
     /// A struct type with the natural (WGSL) layout.
     pub(super) fn struct_type(&mut self, module: &mut Module, name: String, fields: Vec<(String, Handle<Type>, Option<naga::Binding>)>) -> Handle<Type> {
         let mut members = Vec::with_capacity(fields.len());

@@ -181,9 +181,19 @@ pub struct Global {
     /// Where a uniform or sampler is bound on WGSL/SPIR-V: its `@set = N`
     /// (else group 0) and `@binding = N` (else the lowest free in the
     /// group, in declaration order). A sampler takes two bindings (its
-    /// texture, then its sampler), an array of samplers two per element.
+    /// texture, then its sampler), an array of samplers two per element;
+    /// the loose uniforms of a group share one binding, their uniform
+    /// buffer's (see [`Global::is_loose_uniform`]).
     /// `None` for other globals and for resources no entry point uses.
     pub bind: Option<Bind>,
+}
+
+impl Global {
+    /// A uniform that is not a struct: a member of its group's uniform
+    /// buffer on WGSL/SPIR-V, a plain `uniform T name;` in GLSL.
+    pub fn is_loose_uniform(&self) -> bool {
+        matches!(self.kind, GlobalKind::Uniform { .. }) && !matches!(self.ty, Ty::Struct(_))
+    }
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

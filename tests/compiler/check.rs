@@ -77,17 +77,20 @@ fn bindgen_writes_the_module_and_reflect_prints_the_manifest() {
     let rs = std::fs::read_to_string(d.path().join("bindings.rs")).unwrap();
     for needle in [
         "pub mod shadow {",
-        "pub struct ULightDir {",
+        "pub struct Uniforms {",
         "pub u_light_dir: [f32; 3],",
         "pub _pad0: [u8; 4],",
+        "pub type Block = super::super::Uniforms;",
         "pub const WGSL: &str",
         "pub const SPIRV: &[u32] = &[",
         "0x07230203,",
-        "pub const GLSL_BLOCK: &str = \"u_light_dir_block\";",
+        "pub const GLSL_BLOCK: Option<&str> = None;",
+        "pub const GLSL_NAME: Option<&str> = Some(\"u_light_dir\");",
+        "pub const GLSL_TYPE: &str = \"vec3\";",
         "pub const TEXTURE_UNIT: u32 = 0;",
         "pub const VERTEX_BUFFER_LAYOUT: wgpu::VertexBufferLayout<'static>",
         "#[cfg(feature = \"wgpu\")]",
-        "const _: () = assert!(core::mem::size_of::<ULightDir>() == 16);",
+        "const _: () = assert!(core::mem::size_of::<Uniforms>() == 288);",
     ] {
         assert!(rs.contains(needle), "`{needle}` missing from the bindings:\n{rs}");
     }
@@ -99,6 +102,7 @@ fn bindgen_writes_the_module_and_reflect_prints_the_manifest() {
     let o = umbrac(&["reflect", shader.to_str().unwrap()], &repo());
     assert!(o.status.success());
     let printed: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
-    assert_eq!(printed["uniform_blocks"][0]["name"], "u_light_vp");
+    assert_eq!(printed["uniform_buffers"][0]["name"], "uniforms");
+    assert_eq!(printed["uniforms"][0]["name"], "u_light_vp");
     assert_eq!(printed["samplers"][0]["glsl_name"], "shadow_map");
 }

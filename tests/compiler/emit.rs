@@ -30,9 +30,9 @@ struct shadow_vs_out {
 }
 
 @vertex
-fn shadow_vs(@location(0) a_pos: vec3<f32>) -> shadow_vs_out {
+fn shadow_vs(@location(0) in_a_pos: vec3<f32>) -> shadow_vs_out {
     var out: shadow_vs_out;
-    out.gl_Position = u_light_vp * (u_model * vec4<f32>(a_pos, 1.0));
+    out.gl_Position = u_light_vp * (u_model * vec4<f32>(in_a_pos, 1.0));
     return out;
 }
 
@@ -55,11 +55,11 @@ struct main_vs_out {
 }
 
 @vertex
-fn main_vs(@location(0) a_pos: vec3<f32>, @location(1) a_normal: vec3<f32>) -> main_vs_out {
+fn main_vs(@location(0) in_a_pos: vec3<f32>, @location(1) in_a_normal: vec3<f32>) -> main_vs_out {
     var out: main_vs_out;
-    let world = u_model * vec4<f32>(a_pos, 1.0);
+    let world = u_model * vec4<f32>(in_a_pos, 1.0);
     out.v_world_pos = world.xyz;
-    out.v_world_normal = (u_model * vec4<f32>(a_normal, 0.0)).xyz;
+    out.v_world_normal = (u_model * vec4<f32>(in_a_normal, 0.0)).xyz;
     out.v_light_space = u_light_vp * world;
     out.gl_Position = u_proj * (u_view * world);
     return out;
@@ -83,11 +83,11 @@ struct main_fs_out {
 }
 
 @fragment
-fn main_fs(@location(0) v_world_pos: vec3<f32>, @location(1) v_world_normal: vec3<f32>, @location(2) v_light_space: vec4<f32>) -> main_fs_out {
+fn main_fs(@location(0) in_v_world_pos: vec3<f32>, @location(1) in_v_world_normal: vec3<f32>, @location(2) in_v_light_space: vec4<f32>) -> main_fs_out {
     var out: main_fs_out;
-    let n = normalize(v_world_normal);
+    let n = normalize(in_v_world_normal);
     let l = normalize(u_light_dir);
-    let v = normalize(u_cam_pos - v_world_pos);
+    let v = normalize(u_cam_pos - in_v_world_pos);
     let ndotl = max(dot(n, l), 0.0);
     var albedo = vec3<f32>(0.7, 0.6, 0.5);
     if (u_is_floor > 0.5) {
@@ -95,7 +95,7 @@ fn main_fs(@location(0) v_world_pos: vec3<f32>, @location(1) v_world_normal: vec
     }
     var sun = 0.0;
     if (ndotl > 0.0) {
-        let p = v_light_space.xyz / v_light_space.w * 0.5 + 0.5;
+        let p = in_v_light_space.xyz / in_v_light_space.w * 0.5 + 0.5;
         sun = sun_visibility(p.xy, p.z - 0.002);
     }
     let h = normalize(l + v);
@@ -153,7 +153,7 @@ fn only_requested_targets() {
     let names: Vec<_> = arts.iter().map(|a| a.file_name.as_str()).collect();
     assert_eq!(names, ["shadow.wgsl", "shadow.reflect.json"]);
     // GLSL names are still in the manifest for hosts that compile later.
-    assert_eq!(refl.uniform_blocks[0].glsl_block, "u_light_vp_block");
+    assert_eq!(refl.uniform_buffers[0].glsl_block.as_deref(), Some("u_light_vp_ubo"));
     assert_eq!(refl.entry_points[0].files.keys().collect::<Vec<_>>(), ["wgsl"]);
 }
 
@@ -182,23 +182,23 @@ fn shadow_vs_declares_only_what_it_uses() {
     let uniforms: Vec<&str> = vs.lines().filter(|l| l.contains("uniform")).collect();
     assert_eq!(
         uniforms,
-        ["layout(std140) uniform u_light_vp_block { mat4x4 u_light_vp; };", "layout(std140) uniform u_model_block { mat4x4 u_model; };"],
+        ["layout(std140) uniform u_light_vp_ubo { mat4x4 u_light_vp; };", "layout(std140) uniform u_model_ubo { mat4x4 u_model; };"],
         "{vs}"
     );
     let ins: Vec<&str> = vs.lines().filter(|l| l.contains(" in ")).collect();
-    assert_eq!(ins, ["layout(location = 0) in vec3 _p2vs_location0;"], "{vs}");
+    assert_eq!(ins, ["layout(location = 0) in vec3 a_pos;"], "{vs}");
     for other in ["u_view", "u_proj", "u_light_dir", "u_cam_pos", "u_is_floor", "shadow_map", "a_normal", "main_vs_out", "sun_visibility"] {
         assert!(!vs.contains(other), "{other} in shadow_vs:\n{vs}");
     }
     // No y flip or z rewrite in GL outputs.
     assert!(!vs.contains("gl_Position.yz"), "{vs}");
     let ep = refl.entry_points.iter().find(|e| e.name == "shadow_vs").unwrap();
-    assert_eq!(ep.uniform_blocks, ["u_light_vp", "u_model"]);
+    assert_eq!(ep.uniform_buffers, ["u_light_vp", "u_model"]);
     assert!(ep.samplers.is_empty());
     assert_eq!(ep.inputs.len(), 1);
     assert_eq!(ep.inputs[0].vertex_format.as_deref(), Some("Float32x3"));
     assert_eq!(ep.inputs[0].size, 12);
-    assert_eq!(ep.inputs[0].glsl_name, "_p2vs_location0");
+    assert_eq!((ep.inputs[0].glsl_name.as_str(), ep.inputs[0].glsl_location), ("a_pos", Some(0)));
     assert_eq!(ep.builtins, ["gl_Position"]);
 }
 
@@ -211,9 +211,9 @@ fn glsl_names_match_manifest() {
         for target in ["glsl330", "gles300"] {
             let src = text(&arts, &ep.files[target]);
             assert!(!src.contains("_block_0") && !src.contains("Vertex") && !src.contains("Fragment"), "{src}");
-            for b in &ep.uniform_blocks {
-                let block = refl.uniform_blocks.iter().find(|u| &u.name == b).unwrap();
-                assert!(src.contains(&format!("uniform {} {{", block.glsl_block)), "{} not in {}:\n{src}", block.glsl_block, ep.files[target]);
+            for b in &ep.uniform_buffers {
+                let block = refl.uniform_buffers.iter().find(|u| &u.name == b).unwrap();
+                assert!(src.contains(&format!("uniform {} {{", block.glsl_block.as_deref().unwrap())), "{} not in {}:\n{src}", block.glsl_block.as_deref().unwrap(), ep.files[target]);
             }
             for s in &ep.samplers {
                 let sampler = refl.samplers.iter().find(|u| &u.name == s).unwrap();
@@ -234,8 +234,8 @@ fn glsl_names_match_manifest() {
         assert_eq!(o.glsl_name, i.glsl_name);
         assert_eq!(o.interpolation.as_deref(), Some("perspective"));
     }
-    assert_eq!(main_vs.outputs[0].glsl_name, "_vs2fs_location0");
-    assert_eq!(main_fs.outputs[0].glsl_name, "_fs2p_location0");
+    assert_eq!((main_vs.outputs[0].glsl_name.as_str(), main_vs.outputs[0].glsl_location), ("v_world_pos", None));
+    assert_eq!((main_fs.outputs[0].glsl_name.as_str(), main_fs.outputs[0].glsl_location), ("f_FragColor", Some(0)));
     assert_eq!(main_fs.outputs[0].interpolation, None);
 }
 
@@ -254,11 +254,11 @@ fn block_names_identical_across_stages() {
     let fs = text(&arts, "main_fs.330.frag");
     let shadow = text(&arts, "shadow_vs.300es.vert");
     for v in [&vs, &shadow] {
-        assert!(v.contains("uniform u_model_block { mat4x4 u_model; };") || v.contains("uniform u_model_block { highp mat4x4 u_model; };"), "{v}");
+        assert!(v.contains("uniform u_model_ubo { mat4x4 u_model; };") || v.contains("uniform u_model_ubo { highp mat4x4 u_model; };"), "{v}");
     }
-    assert!(vs.contains("uniform u_light_vp_block {"), "{vs}");
-    assert!(fs.contains("uniform u_light_dir_block {"), "{fs}");
-    assert!(fs.contains("uniform u_is_floor_block {"), "{fs}");
+    assert!(vs.contains("uniform u_light_vp_ubo {"), "{vs}");
+    assert!(fs.contains("uniform u_light_dir_ubo {"), "{fs}");
+    assert!(fs.contains("uniform u_is_floor_ubo {"), "{fs}");
     assert!(fs.contains("uniform sampler2DShadow shadow_map;"), "{fs}");
 }
 
@@ -272,15 +272,15 @@ fn sampler_reflection() {
     assert_eq!((s.dimension.as_str(), s.sample_type.as_str(), s.comparison), ("2d", "depth", true));
     let fs = refl.entry_points.iter().find(|e| e.name == "main_fs").unwrap();
     assert_eq!(fs.samplers, ["shadow_map"]);
-    assert_eq!(fs.uniform_blocks, ["u_light_dir", "u_cam_pos", "u_is_floor"]);
+    assert_eq!(fs.uniform_buffers, ["u_light_dir", "u_cam_pos", "u_is_floor"]);
 }
 
 #[test]
 fn loose_uniform_layouts() {
     let (_, refl) = emit_all(SHADOW);
-    let get = |n: &str| refl.uniform_blocks.iter().find(|b| b.name == n).unwrap();
+    let get = |n: &str| refl.uniform_buffers.iter().find(|b| b.name == n).unwrap();
     let m = get("u_model");
-    assert_eq!((m.size, m.binding, m.ty.as_str(), m.glsl_block.as_str()), (64, 1, "float4x4", "u_model_block"));
+    assert_eq!((m.size, m.binding, m.ty.as_str(), m.glsl_block.as_deref().unwrap()), (64, 1, "float4x4", "u_model_ubo"));
     assert_eq!(m.members.len(), 1);
     assert_eq!((m.members[0].name.as_str(), m.members[0].offset, m.members[0].size, m.members[0].matrix_stride), ("u_model", 0, 64, Some(16)));
     let d = get("u_light_dir");
@@ -309,24 +309,24 @@ struct Light {
 struct vs_out { @builtin(position) pos: vec4<f32>, @location(0) @interpolate(flat) id: i32, @location(1) uv: vec2<f32> }
 
 @vertex
-fn light_vs(@location(0) a_pos: vec3<f32>, @location(1) a_id: i32) -> vs_out {
-    return vs_out(vec4<f32>(a_pos * u_light.intensity, 1.0), a_id, a_pos.xy);
+fn light_vs(@location(0) in_a_pos: vec3<f32>, @location(1) in_a_id: i32) -> vs_out {
+    return vs_out(vec4<f32>(in_a_pos * u_light.intensity, 1.0), in_a_id, in_a_pos.xy);
 }
 
 @fragment
-fn light_fs(@location(0) @interpolate(flat) id: i32, @location(1) uv: vec2<f32>) -> @location(0) vec4<f32> {
-    let c = textureSample(tex, tex_sampler, uv);
-    let d = textureSampleCompareLevel(arr, arr_sampler, uv, id, 0.5);
-    let i = textureLoad(itex, vec2<i32>(uv * 4.0), 0);
-    return vec4<f32>(u_light.color * u_light.weights[id].x * d + u_light.m[0] * u_light.last, c.a + f32(i.x));
+fn light_fs(@location(0) @interpolate(flat) in_id: i32, @location(1) in_uv: vec2<f32>) -> @location(0) vec4<f32> {
+    let c = textureSample(tex, tex_sampler, in_uv);
+    let d = textureSampleCompareLevel(arr, arr_sampler, in_uv, in_id, 0.5);
+    let i = textureLoad(itex, vec2<i32>(in_uv * 4.0), 0);
+    return vec4<f32>(u_light.color * u_light.weights[in_id].x * d + u_light.m[0] * u_light.last, c.a + f32(i.x));
 }
 "#;
 
 #[test]
 fn struct_uniform_vec3_float_packing() {
     let (arts, refl) = emit_all(PACKED);
-    let b = &refl.uniform_blocks[0];
-    assert_eq!((b.name.as_str(), b.ty.as_str(), b.glsl_block.as_str()), ("u_light", "Light", "u_light_block"));
+    let b = &refl.uniform_buffers[0];
+    assert_eq!((b.name.as_str(), b.ty.as_str(), b.glsl_block.as_deref().unwrap()), ("u_light", "Light", "u_light_ubo"));
     let offs: Vec<(&str, u32, u32)> = b.members.iter().map(|m| (m.name.as_str(), m.offset, m.size)).collect();
     // vec3 + float share one 16-byte slot; the next vec3 starts a new one.
     assert_eq!(offs, [("dir", 0, 12), ("intensity", 12, 4), ("color", 16, 12), ("weights", 32, 48), ("m", 80, 48), ("last", 128, 4)]);
@@ -335,7 +335,7 @@ fn struct_uniform_vec3_float_packing() {
     assert_eq!(b.size, 144);
     let fs = text(&arts, "light_fs.300es.frag");
     assert!(fs.contains("precision highp int;\nprecision highp sampler2DArrayShadow;\nprecision highp isampler2D;\n"), "{fs}");
-    assert!(fs.contains("uniform u_light_block {"), "{fs}");
+    assert!(fs.contains("uniform u_light_ubo {"), "{fs}");
     let vs = refl.entry_points.iter().find(|e| e.name == "light_vs").unwrap();
     assert_eq!(vs.inputs[1].vertex_format.as_deref(), Some("Sint32"));
     assert_eq!(vs.outputs[0].interpolation.as_deref(), Some("flat"));
@@ -374,7 +374,7 @@ struct Pair { k: vec4<f32>, o: array<Outer, 2> }
             ("Pair", 80, vec![("k", "float4", 0, 16, None), ("o", "Outer[2]", 16, 64, Some(32))]),
         ]
     );
-    let sizes: Vec<(&str, &str, u32)> = refl.uniform_blocks.iter().map(|b| (b.name.as_str(), b.ty.as_str(), b.size)).collect();
+    let sizes: Vec<(&str, &str, u32)> = refl.uniform_buffers.iter().map(|b| (b.name.as_str(), b.ty.as_str(), b.size)).collect();
     assert_eq!(sizes, [("u_pair", "Pair", 80), ("u_outers", "Outer[3]", 96), ("u_inner", "Inner", 16)]);
 
     // The JSON carries them and reads back; a manifest written before the
@@ -386,7 +386,7 @@ struct Pair { k: vec4<f32>, o: array<Outer, 2> }
     value.as_object_mut().unwrap().remove("structs");
     let old: umbrac::Reflection = serde_json::from_value(value).unwrap();
     assert!(old.structs.is_empty());
-    assert_eq!(old.uniform_blocks, refl.uniform_blocks);
+    assert_eq!(old.uniform_buffers, refl.uniform_buffers);
 }
 
 /// The checker refuses `floatCx2` uniforms (their std140 and WGSL layouts
@@ -404,7 +404,7 @@ fn mat2_uniform_from_the_lowering_is_an_internal_error() {
     for targets in [&[][..], &[Target::Glsl330], &[Target::Wgsl, Target::Spirv]] {
         let err = emit::emit(&lowered, "rot", "rot.das", targets).unwrap_err();
         assert_eq!(err.severity, Severity::Bug, "{targets:?}: {err:?}");
-        assert!(err.message.contains("lowering produced uniform block `u_rot`"), "{err:?}");
+        assert!(err.message.contains("lowering produced uniform buffer `u_rot`"), "{err:?}");
         assert!(err.message.contains("float2x2: std140 column stride 16, WGSL column stride 8"), "{err:?}");
         assert!(err.notes.is_empty(), "an internal error gives the user no help text: {err:?}");
     }
@@ -481,11 +481,11 @@ fn validators_accept_every_output() {
 
 #[test]
 fn block_rename_collision_is_refused() {
-    // A global already called `u_model_block` makes the rename ambiguous.
+    // A global already called `u_model_ubo` makes the rename ambiguous.
     let src = r#"
 @group(0) @binding(0) var<uniform> u_model: mat4x4<f32>;
-var<private> u_model_block: vec4<f32>;
-@vertex fn vs(@location(0) p: vec4<f32>) -> @builtin(position) vec4<f32> { u_model_block = p; return u_model * u_model_block; }
+var<private> u_model_ubo: vec4<f32>;
+@vertex fn vs(@location(0) p: vec4<f32>) -> @builtin(position) vec4<f32> { u_model_ubo = p; return u_model * u_model_ubo; }
 "#;
     let lowered = fake_lowered(src);
     let err = emit::emit(&lowered, "c", "c.das", &[Target::Glsl330]).unwrap_err();

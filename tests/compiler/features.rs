@@ -43,9 +43,13 @@ fn snippets() -> BTreeMap<&'static str, String> {
     add("uniform-float3x3", frag("var @uniform u_n : float3x3", "    f_color = float4(u_n * float3(1.0), 1.0)"));
     add("uniform-float4-array", frag("var @uniform u_k : float4[8]\nvar @uniform u_i : int", "    f_color = u_k[u_i]"));
     add("uniform-struct-array", frag("struct L {\n    pos : float3\n    r : float\n}\nvar @uniform u_l : L[4]\nvar @uniform u_i : int", "    f_color = float4(u_l[u_i].pos, u_l[3].r)"));
-    add("uniform-scalar-array", frag("var @uniform u_w : float[4]", "    f_color = float4(u_w[0])"));
-    add("uniform-bool", frag("var @uniform u_b : bool", "    f_color = float4(u_b ? 1.0 : 0.0)"));
-    add("uniform-float2x2", frag("var @uniform u_m : float2x2", "    f_color = float4(u_m[0], u_m[1])"));
+    add("uniform-loose", frag("var @uniform u_a : float4\nvar @uniform u_m : float4x4", "    f_color = u_m * u_a"));
+    add("uniform-scalar-array", frag("var @uniform u_w : float[4]\nvar @uniform u_v : float2[2]\nvar @uniform u_i : int", "    f_color = float4(u_w[u_i], u_w[0], u_v[u_i])"));
+    add("uniform-bool", frag("var @uniform u_b : bool\nvar @uniform u_b2 : bool2", "    f_color = float4(u_b ? 1.0 : 0.0, u_b2.y ? 1.0 : 0.0, 0.0, 1.0)"));
+    add("uniform-float2x2", frag("var @uniform u_m : float2x2\nvar @uniform u_n : float3x2", "    f_color = float4(u_m[0], u_n[2])"));
+    add("uniform-struct-scalar-array", frag("struct S {\n    w : float[4]\n}\nvar @uniform u_s : S", "    f_color = float4(u_s.w[0])"));
+    add("uniform-struct-bool", frag("struct S {\n    b : bool\n}\nvar @uniform u_s : S", "    f_color = float4(u_s.b ? 1.0 : 0.0)"));
+    add("uniform-struct-float2x2", frag("struct S {\n    m : float2x2\n}\nvar @uniform u_s : S", "    f_color = float4(u_s.m[0], u_s.m[1])"));
     add("uniform-unpadded-nested-struct", frag("struct In {\n    a : float\n}\nstruct Out {\n    i : In\n    b : float\n}\nvar @uniform u : Out", "    f_color = float4(u.i.a + u.b)"));
     // ---------------------------------------------------------------- statements
     add("let-var", frag("", "    let a = 1.0\n    var b : float\n    var c, d = 2.0\n    b = a + c + d\n    f_color = float4(b)"));
@@ -196,8 +200,16 @@ const NEEDLES: &[(&str, Target, &str, &str, bool)] = &[
     ("gl_PointCoord", Target::Wgsl, ".wgsl", "vec2(0.5f)", true),
     ("nonuniform-sampling", Target::Wgsl, ".wgsl", "diagnostic(off, derivative_uniformity);", true),
     ("matrix-dynamic-index", Target::Wgsl, ".wgsl", "var local", true),
-    ("programs-per-file", Target::Glsl330, "quad_fs.330.frag", "layout(location = 0) out", true),
-    ("programs-per-file", Target::Glsl330, "other_fs.330.frag", "layout(location = 0) out", true),
+    ("programs-per-file", Target::Glsl330, "quad_fs.330.frag", "\nout vec4 f_color;", true),
+    ("programs-per-file", Target::Glsl330, "other_fs.330.frag", "\nout vec4 f_other;", true),
+    ("uniform-loose", Target::Glsl330, ".330.frag", "uniform mat4x4 u_m;", true),
+    ("uniform-loose", Target::Wgsl, ".wgsl", "var<uniform> uniforms: Uniforms;", true),
+    ("uniform-scalar-array", Target::Gles300, ".300es.frag", "uniform float u_w[4];", true),
+    ("uniform-scalar-array", Target::Wgsl, ".wgsl", "u_w: array<vec4<f32>, 4>,", true),
+    ("uniform-bool", Target::Glsl330, ".330.frag", "uniform bool u_b;", true),
+    ("uniform-bool", Target::Wgsl, ".wgsl", "u_b: u32,", true),
+    ("uniform-float2x2", Target::Glsl330, ".330.frag", "uniform mat3x2 u_n;", true),
+    ("uniform-float2x2", Target::Wgsl, ".wgsl", "u_n: array<vec4<f32>, 3>,", true),
     ("module-variables", Target::Glsl330, ".330.frag", "float angle = 0.25;", true),
     ("bind-groups", Target::Wgsl, ".wgsl", "@group(1) @binding(2) ", true),
     ("bind-groups", Target::Wgsl, ".wgsl", "@group(1) @binding(0) ", true),

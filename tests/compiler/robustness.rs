@@ -479,7 +479,7 @@ fn naga_validation_failure_is_an_internal_error_with_a_location() {
     let mut diags = umbrac::Diagnostics::new();
     let ast = umbrac::syntax::parse(&mut sources, root, &Default::default(), &mut diags);
     let checked = umbrac::sema::check(&ast, &mut diags).expect("checks");
-    let lowered = umbrac::lower::lower(&checked, Default::default()).expect("lowers");
+    let lowered = umbrac::lower::lower(&checked, umbrac::Conventions::default()).expect("lowers");
     let mut module = lowered.gpu.clone();
     for stmt in module.entry_points[0].function.body.iter_mut() {
         if let naga::Statement::Store { pointer, value } = stmt {

@@ -82,7 +82,7 @@ fn gl_entry(gl: &naga::Module, index: usize, src: &str) -> GlEntry {
     let info = Validator::new(ValidationFlags::all() - ValidationFlags::BINDINGS, naga::back::glsl::supported_capabilities())
         .validate(&module)
         .unwrap_or_else(|e| panic!("GL copy does not validate:\n{}", e.emit_to_string(src)));
-    GlEntry { module, info }
+    GlEntry { module, info, uniforms: Vec::new() }
 }
 
 fn sampler_kind(inner: &naga::TypeInner) -> Option<SamplerKind> {
@@ -129,7 +129,7 @@ fn interface_of(m: &naga::Module, info: &naga::valid::ModuleInfo) -> Interface {
         let name = g.name.clone().unwrap_or_default();
         let (group, binding) = g.binding.as_ref().map(|b| (b.group, b.binding)).unwrap_or((0, 0));
         let kind = match g.space {
-            naga::AddressSpace::Uniform => ResourceKind::Uniform { ty: g.ty, dsl_type: dsl_name(m, g.ty) },
+            naga::AddressSpace::Uniform => ResourceKind::Uniform { ty: g.ty, dsl_type: dsl_name(m, g.ty), loose: false },
             naga::AddressSpace::Handle => match sampler_kind(&m.types[g.ty].inner) {
                 Some(k) => ResourceKind::Sampler(k),
                 None => continue,
@@ -172,10 +172,11 @@ fn interface_of(m: &naga::Module, info: &naga::valid::ModuleInfo) -> Interface {
             outputs: vec![],
             builtins: vec![],
             resources: vec![],
+            loose: vec![],
         };
         let visit = |name: Option<&String>, ty, binding: Option<&naga::Binding>, output: bool, e: &mut EntryInterface| match binding {
             Some(naga::Binding::Location { location, interpolation, .. }) => {
-                let v = IoVar { name: name.cloned().unwrap_or_default(), location: *location, ty, dsl_type: dsl_name(m, ty), interpolation: *interpolation };
+                let v = IoVar { name: name.cloned().unwrap_or_default(), location: *location, explicit_location: true, span: Default::default(), ty, dsl_type: dsl_name(m, ty), interpolation: *interpolation };
                 if output { e.outputs.push(v) } else { e.inputs.push(v) }
             }
             Some(naga::Binding::BuiltIn(b)) => e.builtins.push(builtin_name(*b, output)),
@@ -187,7 +188,10 @@ fn interface_of(m: &naga::Module, info: &naga::valid::ModuleInfo) -> Interface {
                     visit(mem.name.as_ref(), mem.ty, mem.binding.as_ref(), false, &mut e);
                 }
             } else {
-                visit(arg.name.as_ref(), arg.ty, arg.binding.as_ref(), false, &mut e);
+                // As in the lowering's GL modules, the argument holding an
+                // input is `in_NAME` and the input is `NAME`.
+                let name = arg.name.as_ref().map(|n| n.strip_prefix("in_").unwrap_or(n).to_string());
+                visit(name.as_ref(), arg.ty, arg.binding.as_ref(), false, &mut e);
             }
         }
         if let Some(res) = &ep.function.result {
@@ -208,7 +212,7 @@ fn interface_of(m: &naga::Module, info: &naga::valid::ModuleInfo) -> Interface {
         entry_points.push(e);
     }
     let links = umbrac_links(&entry_points);
-    Interface { conventions: Conventions::Portable, resources, entry_points, links }
+    Interface { conventions: Conventions::Portable, gl_uniforms: Default::default(), resources, entry_points, links, loose: Vec::new() }
 }
 
 /// The repository root.

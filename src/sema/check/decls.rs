@@ -536,9 +536,21 @@ impl<'a, 'd> Checker<'a, 'd> {
         self.out.globals.push(Global { name: g.name.name.as_str().to_string(), ty: Ty::Error, kind: GlobalKind::Private { init: None }, span: g.name.span, bind: None });
     }
 
-    /// Why a type cannot be a uniform block, if it cannot.
+    /// Why a type cannot be a uniform, if it cannot. A struct is a uniform
+    /// block of its own, laid out alike on every target; any other type
+    /// is a loose uniform, a member of its group's uniform buffer, where
+    /// `bool`s, short-element arrays and two-row matrices are stored
+    /// padded (see `lower::packed`), so only the structs in it must share
+    /// a layout.
     pub(super) fn uniform_type_problem(&self, ty: &Ty) -> Option<String> {
-        self.uniform_layout(ty, "").err()
+        match ty {
+            Ty::Struct(_) => self.uniform_layout(ty, "").err(),
+            // Arrays of what the buffer pads (scalars, vectors, matrices);
+            // an array of structs keeps the struct's layout.
+            Ty::Array(elem, _) if matches!(**elem, Ty::Scalar(_) | Ty::Vector(..) | Ty::Matrix(..)) => self.uniform_type_problem(elem),
+            Ty::Scalar(Scalar::Bool) | Ty::Vector(Scalar::Bool, _) | Ty::Matrix(..) => None,
+            _ => self.uniform_layout(ty, "").err(),
+        }
     }
 
     /// The layout of `ty` in a uniform block, checked to be the same under

@@ -88,52 +88,101 @@ impl<'a, 'd> Checker<'a, 'd> {
     /// The WGSL/SPIR-V group and binding of every uniform and sampler an
     /// entry point uses (see `Global::bind`): the ones written first, then
     /// the others at the lowest free bindings of their group, in
-    /// declaration order. The GPU module holds every entry point, so
-    /// bindings are unique across the file.
+    /// declaration order. The loose uniforms of a group (every uniform
+    /// that is not a struct) are members of one uniform buffer, which all
+    /// of them are bound at: a `@binding = N` on any of them places the
+    /// buffer. The GPU module holds every entry point, so bindings are
+    /// unique across the file.
     fn assign_bindings(&mut self) {
         let used: std::collections::BTreeSet<GlobalId> = self.out.entry_points.iter().flat_map(|ep| ep.func.uses.keys().copied()).collect();
-        let slots = |g: &Global| match g.kind {
-            GlobalKind::Uniform { .. } => Some(1u32),
-            GlobalKind::Sampler { count, .. } => Some(2 * count.unwrap_or(1)),
-            _ => None,
-        };
-        // (group, binding) -> the resource holding it.
-        let mut taken: BTreeMap<(u32, u32), GlobalId> = BTreeMap::new();
-        let mut pending = Vec::new();
+        // What takes bindings, in declaration order of its first global:
+        // (its globals, group, how many bindings, the binding written).
+        struct Holder {
+            globals: Vec<GlobalId>,
+            group: u32,
+            slots: u32,
+            written: Option<(u32, Span, GlobalId)>,
+        }
+        let mut holders: Vec<Holder> = Vec::new();
+        let mut buffer_of_group: BTreeMap<u32, usize> = BTreeMap::new();
         for &g in &used {
-            let Some(n) = slots(&self.out.globals[g]) else { continue };
+            let global = &self.out.globals[g];
+            let slots = match global.kind {
+                GlobalKind::Uniform { .. } => 1u32,
+                GlobalKind::Sampler { count, .. } => 2 * count.unwrap_or(1),
+                _ => continue,
+            };
+            let loose = global.is_loose_uniform();
             let (set, binding) = self.bind_written.get(&g).copied().unwrap_or((None, None));
             let group = set.map_or(0, |s| s.0);
-            let Some((first, span)) = binding else {
-                pending.push((g, group, n));
+            let written = binding.map(|(b, span)| (b, span, g));
+            let at = if loose { buffer_of_group.get(&group).copied() } else { None };
+            let Some(at) = at else {
+                if loose {
+                    buffer_of_group.insert(group, holders.len());
+                }
+                holders.push(Holder { globals: vec![g], group, slots, written });
                 continue;
             };
+            let h = &mut holders[at];
+            h.globals.push(g);
+            match (h.written, written) {
+                (Some((b0, _, g0)), Some((b1, span, _))) if b0 != b1 => {
+                    let (a, b) = (&self.out.globals[g0].name, &self.out.globals[g].name);
+                    let mut d = Diagnostic::error(format!("`{a}` and `{b}` give group {group}'s uniform buffer two bindings, {b0} and {b1}"), span)
+                        .with_label(format!("`{b}` asks for binding {b1}"));
+                    if let Some(Some((_, p))) = self.bind_written.get(&g0).map(|w| w.1) {
+                        d = d.with_secondary(p, format!("`{a}` asks for binding {b0}"));
+                    }
+                    self.diags.push(d.with_note("the loose uniforms of a group (those that are not structs) are members of one uniform buffer: give one of them the `@binding`, or all the same one"));
+                }
+                (None, Some(w)) => h.written = Some(w),
+                _ => {}
+            }
+        }
+        // (group, binding) -> the holder there.
+        let mut taken: BTreeMap<(u32, u32), usize> = BTreeMap::new();
+        let mut placed: Vec<Option<u32>> = vec![None; holders.len()];
+        for (i, h) in holders.iter().enumerate() {
+            let Some((first, span, g)) = h.written else { continue };
+            let (group, n) = (h.group, h.slots);
             if let Some((at, prev)) = (first..first + n).find_map(|b| taken.get(&(group, b)).map(|&p| (b, p))) {
-                let (a, b) = (&self.out.globals[prev].name, &self.out.globals[g].name);
+                let prev_g = holders[prev].written.map_or(holders[prev].globals[0], |w| w.2);
+                let (a, b) = (&self.out.globals[prev_g].name, &self.out.globals[g].name);
                 let mut d = Diagnostic::error(format!("`{a}` and `{b}` are both bound in group {group} at binding {at}"), span)
                     .with_label(format!("`{b}` takes binding {first}{}", if n > 1 { format!("..{}", first + n - 1) } else { String::new() }));
-                if let Some(Some((_, p))) = self.bind_written.get(&prev).map(|w| w.1) {
+                if let Some(Some((_, p))) = self.bind_written.get(&prev_g).map(|w| w.1) {
                     d = d.with_secondary(p, format!("`{a}` is bound here"));
                 }
-                let d = d.with_note("a sampler takes two bindings (its texture, then its sampler), an array of N samplers 2N");
+                let d = d.with_note("a sampler takes two bindings (its texture, then its sampler), an array of N samplers 2N; the loose uniforms of a group share one");
                 self.diags.push(d);
                 continue;
             }
             for b in first..first + n {
-                taken.insert((group, b), g);
+                taken.insert((group, b), i);
             }
-            self.out.globals[g].bind = Some(Bind { group, binding: first });
+            placed[i] = Some(first);
         }
-        for (g, group, n) in pending {
+        for (i, h) in holders.iter().enumerate() {
+            if h.written.is_some() {
+                continue;
+            }
+            let (group, n) = (h.group, h.slots);
             let free = |b: u32| (b..b + n).all(|k| !taken.contains_key(&(group, k)));
             let Some(first) = (0..1000u32.saturating_sub(n - 1)).find(|&b| free(b)) else {
-                self.diags.push(Diagnostic::error(format!("no {n} free bindings left in group {group} (at most 1000)"), self.out.globals[g].span));
+                self.diags.push(Diagnostic::error(format!("no {n} free bindings left in group {group} (at most 1000)"), self.out.globals[h.globals[0]].span));
                 continue;
             };
             for b in first..first + n {
-                taken.insert((group, b), g);
+                taken.insert((group, b), i);
             }
-            self.out.globals[g].bind = Some(Bind { group, binding: first });
+            placed[i] = Some(first);
+        }
+        for (h, first) in holders.iter().zip(placed) {
+            let Some(binding) = first else { continue };
+            for &g in &h.globals {
+                self.out.globals[g].bind = Some(Bind { group: h.group, binding });
+            }
         }
     }
 

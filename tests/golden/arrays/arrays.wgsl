@@ -1,5 +1,9 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_count: i32,
+}
+
 struct arrays_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_uv: vec2<f32>,
@@ -15,7 +19,7 @@ const COLORS: array<vec3<f32>, 3> = array<vec3<f32>, 3>(vec3<f32>(1f, 0f, 0f), v
 const WEIGHTS: array<f32, 5> = array<f32, 5>(0.227027f, 0.1945946f, 0.1216216f, 0.054054f, 0.016216f);
 
 @group(0) @binding(0) 
-var<uniform> u_count: i32;
+var<uniform> uniforms: Uniforms;
 
 fn sum_first(n: i32) -> f32 {
     var acc: array<f32, 5>;
@@ -88,12 +92,12 @@ fn arrays_fs(@location(1) @interpolate(flat) v_id_1: i32) -> arrays_fs_out {
     grid[(v_id_1 & 1i)] = vec2<i32>(v_id_1, -(v_id_1));
     let g = grid[1];
     m = mat2x2<f32>(vec2<f32>(1f, 0f), vec2<f32>(0f, 1f));
-    let _e32 = u_count;
-    m[(_e32 & 1i)] = vec2(0.5f);
-    let _e40 = u_count;
-    let _e41 = sum_first(_e40);
-    let _e47 = m[1];
-    f_color = vec4<f32>(((col * _e41) + vec3<f32>(f32(g.x), _e47)), 1f);
-    let _e53 = f_color;
-    return arrays_fs_out(_e53);
+    let _e33 = uniforms.u_count;
+    m[(_e33 & 1i)] = vec2(0.5f);
+    let _e42 = uniforms.u_count;
+    let _e43 = sum_first(_e42);
+    let _e49 = m[1];
+    f_color = vec4<f32>(((col * _e43) + vec3<f32>(f32(g.x), _e49)), 1f);
+    let _e55 = f_color;
+    return arrays_fs_out(_e55);
 }

@@ -9,10 +9,10 @@ struct arrays_fs_out {
 const float WEIGHTS[5] = float[5](0.227027, 0.1945946, 0.1216216, 0.054054, 0.016216);
 const vec3 COLORS[3] = vec3[3](vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), vec3(0.0, 0.0, 1.0));
 
-layout(std140) uniform u_count_block { int u_count; };
+uniform int u_count;
 
-flat in int _vs2fs_location1;
-layout(location = 0) out vec4 _fs2p_location0;
+flat in int v_id;
+out vec4 f_color;
 
 float sum_first(int n) {
     float acc[5] = float[5](0.0, 0.0, 0.0, 0.0, 0.0);
@@ -60,16 +60,16 @@ float sum_first(int n) {
 }
 
 void main() {
-    int v_id = _vs2fs_location1;
-    vec4 f_color = vec4(0.0);
+    int in_v_id = v_id;
+    vec4 out_f_color = vec4(0.0);
     mat3x3 local = mat3x3(0.0);
     ivec2 grid[2] = ivec2[2](ivec2(0), ivec2(0));
     mat2x2 m = mat2x2(0.0);
     mat3x3 basis = mat3x3(COLORS[0], COLORS[1], COLORS[2]);
     local = basis;
-    vec3 col = local[(v_id - (3 * (v_id / 3)))];
+    vec3 col = local[(in_v_id - (3 * (in_v_id / 3)))];
     grid = ivec2[2](ivec2(0), ivec2(0));
-    grid[(v_id & 1)] = ivec2(v_id, -(v_id));
+    grid[(in_v_id & 1)] = ivec2(in_v_id, -(in_v_id));
     ivec2 g = grid[1];
     m = mat2x2(vec2(1.0, 0.0), vec2(0.0, 1.0));
     int _e34 = u_count;
@@ -77,10 +77,10 @@ void main() {
     int _e42 = u_count;
     float _e43 = sum_first(_e42);
     vec2 _e49 = m[1];
-    f_color = vec4(((col * _e43) + vec3(float(g.x), _e49)), 1.0);
-    vec4 _e55 = f_color;
+    out_f_color = vec4(((col * _e43) + vec3(float(g.x), _e49)), 1.0);
+    vec4 _e55 = out_f_color;
     arrays_fs_out _tmp_return = arrays_fs_out(_e55);
-    _fs2p_location0 = _tmp_return.f_color;
+    f_color = _tmp_return.f_color;
     return;
 }
 

@@ -3,28 +3,28 @@ struct material_vs_out {
     vec4 gen_gl_Position;
     vec2 v_uv;
 };
-layout(std140) uniform u_view_proj_block { mat4x4 u_view_proj; };
+uniform mat4x4 u_view_proj;
 
-layout(std140) uniform u_model_block { mat4x4 u_model; };
+uniform mat4x4 u_model;
 
-layout(location = 0) in vec3 _p2vs_location0;
-layout(location = 1) in vec2 _p2vs_location1;
-smooth out vec2 _vs2fs_location0;
+layout(location = 0) in vec3 a_pos;
+layout(location = 1) in vec2 a_uv;
+smooth out vec2 v_uv;
 
 void main() {
-    vec3 a_pos = _p2vs_location0;
-    vec2 a_uv = _p2vs_location1;
-    vec2 v_uv = vec2(0.0);
+    vec3 in_a_pos = a_pos;
+    vec2 in_a_uv = a_uv;
+    vec2 out_v_uv = vec2(0.0);
     vec4 gen_gl_Position = vec4(0.0);
-    v_uv = a_uv;
+    out_v_uv = in_a_uv;
     mat4x4 _e5 = u_view_proj;
     mat4x4 _e7 = u_model;
-    gen_gl_Position = ((_e5 * _e7) * vec4(a_pos, 1.0));
+    gen_gl_Position = ((_e5 * _e7) * vec4(in_a_pos, 1.0));
     vec4 _e13 = gen_gl_Position;
-    vec2 _e15 = v_uv;
+    vec2 _e15 = out_v_uv;
     material_vs_out _tmp_return = material_vs_out(_e13, _e15);
     gl_Position = _tmp_return.gen_gl_Position;
-    _vs2fs_location0 = _tmp_return.v_uv;
+    v_uv = _tmp_return.v_uv;
     return;
 }
 

@@ -2,22 +2,22 @@
 struct bright_fs_out {
     vec4 f_color;
 };
-layout(std140) uniform u_threshold_block { vec4 u_threshold; };
+uniform vec4 u_threshold;
 
 uniform sampler2D hdr_scene;
 
-smooth in vec2 _vs2fs_location0;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec2 v_uv;
+out vec4 f_color;
 
 float luminance(vec3 c) {
     return dot(c, vec3(0.2126, 0.7152, 0.0722));
 }
 
 void main() {
-    vec2 v_uv = _vs2fs_location0;
-    vec4 f_color = vec4(0.0);
+    vec2 in_v_uv = v_uv;
+    vec4 out_f_color = vec4(0.0);
     float soft = 0.0;
-    vec4 _e3 = texture(hdr_scene, vec2(v_uv));
+    vec4 _e3 = texture(hdr_scene, vec2(in_v_uv));
     vec3 c_1 = _e3.xyz;
     float _e7 = u_threshold.x;
     float _e10 = u_threshold.y;
@@ -31,10 +31,10 @@ void main() {
     float _e35 = soft;
     float _e38 = u_threshold.x;
     float contribution = (max(_e35, (_e12 - _e38)) / max(_e12, 1e-5));
-    f_color = vec4((c_1 * contribution), 1.0);
-    vec4 _e49 = f_color;
+    out_f_color = vec4((c_1 * contribution), 1.0);
+    vec4 _e49 = out_f_color;
     bright_fs_out _tmp_return = bright_fs_out(_e49);
-    _fs2p_location0 = _tmp_return.f_color;
+    f_color = _tmp_return.f_color;
     return;
 }
 

@@ -6,16 +6,16 @@ precision highp int;
 struct composite_fs_out {
     vec4 f_color;
 };
-layout(std140) uniform u_exposure_block { float u_exposure; };
+uniform float u_exposure;
 
-layout(std140) uniform u_bloom_strength_block { float u_bloom_strength; };
+uniform float u_bloom_strength;
 
 uniform highp sampler2D hdr_scene;
 
 uniform highp sampler2D bloom_src;
 
-smooth in vec2 _vs2fs_location0;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec2 v_uv;
+out vec4 f_color;
 
 vec3 aces(vec3 x) {
     vec3 a = (x * ((x * 2.51) + vec3(0.03)));
@@ -24,18 +24,18 @@ vec3 aces(vec3 x) {
 }
 
 void main() {
-    vec2 v_uv = _vs2fs_location0;
-    vec4 f_color = vec4(0.0);
-    vec4 _e3 = texture(hdr_scene, vec2(v_uv));
-    vec4 _e7 = texture(bloom_src, vec2(v_uv));
+    vec2 in_v_uv = v_uv;
+    vec4 out_f_color = vec4(0.0);
+    vec4 _e3 = texture(hdr_scene, vec2(in_v_uv));
+    vec4 _e7 = texture(bloom_src, vec2(in_v_uv));
     float _e10 = u_bloom_strength;
     vec3 hdr = (_e3.xyz + (_e7.xyz * _e10));
     float _e14 = u_exposure;
     vec3 _e16 = aces((hdr * _e14));
-    f_color = vec4(pow(_e16, vec3((1.0 / 2.2))), 1.0);
-    vec4 _e26 = f_color;
+    out_f_color = vec4(pow(_e16, vec3((1.0 / 2.2))), 1.0);
+    vec4 _e26 = out_f_color;
     composite_fs_out _tmp_return = composite_fs_out(_e26);
-    _fs2p_location0 = _tmp_return.f_color;
+    f_color = _tmp_return.f_color;
     return;
 }
 

@@ -7,21 +7,21 @@ struct fullscreen_vs_out {
     vec4 gen_gl_Position;
     vec2 v_uv;
 };
-smooth out vec2 _vs2fs_location0;
+smooth out vec2 v_uv;
 
 void main() {
     uint VertexID = uint(gl_VertexID);
-    vec2 v_uv = vec2(0.0);
+    vec2 out_v_uv = vec2(0.0);
     vec4 gen_gl_Position = vec4(0.0);
     int _e1 = int(VertexID);
     vec2 corner = vec2(float(((_e1 << uint(1)) & 2)), float((_e1 & 2)));
-    v_uv = corner;
+    out_v_uv = corner;
     gen_gl_Position = vec4(((corner * 2.0) - vec2(1.0)), 0.0, 1.0);
     vec4 _e23 = gen_gl_Position;
-    vec2 _e25 = v_uv;
+    vec2 _e25 = out_v_uv;
     fullscreen_vs_out _tmp_return = fullscreen_vs_out(_e23, _e25);
     gl_Position = _tmp_return.gen_gl_Position;
-    _vs2fs_location0 = _tmp_return.v_uv;
+    v_uv = _tmp_return.v_uv;
     return;
 }
 

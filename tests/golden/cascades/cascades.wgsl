@@ -1,5 +1,16 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_model: mat4x4<f32>,
+    u_view: mat4x4<f32>,
+    u_proj: mat4x4<f32>,
+    u_light_vp: mat4x4<f32>,
+    u_cam_pos: vec3<f32>,
+    u_is_floor: f32,
+    u_light_dir: vec3<f32>,
+    u_cascade_vp: array<mat4x4<f32>, 3>,
+}
+
 struct cascades_shadow_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
 }
@@ -21,55 +32,41 @@ struct cascades_main_fs_out {
 const CASCADES: i32 = 3i;
 
 @group(0) @binding(0) 
-var<uniform> u_model: mat4x4<f32>;
-@group(0) @binding(1) 
-var<uniform> u_view: mat4x4<f32>;
-@group(0) @binding(2) 
-var<uniform> u_proj: mat4x4<f32>;
-@group(0) @binding(3) 
-var<uniform> u_light_vp: mat4x4<f32>;
-@group(0) @binding(4) 
-var<uniform> u_cam_pos: vec3<f32>;
-@group(0) @binding(5) 
-var<uniform> u_is_floor: f32;
+var<uniform> uniforms: Uniforms;
 var<private> a_pos: vec3<f32>;
 var<private> a_normal: vec3<f32>;
 var<private> v_world_pos_1: vec3<f32>;
 var<private> v_world_normal_1: vec3<f32>;
-@group(0) @binding(6) 
-var<uniform> u_light_dir: vec3<f32>;
-@group(0) @binding(7) 
-var<uniform> u_cascade_vp: array<mat4x4<f32>, 3>;
-@group(0) @binding(8) 
+@group(0) @binding(1) 
 var cascade_maps_0_: texture_depth_2d;
-@group(0) @binding(9) 
+@group(0) @binding(2) 
 var cascade_maps_0_sampler: sampler_comparison;
-@group(0) @binding(10) 
+@group(0) @binding(3) 
 var cascade_maps_1_: texture_depth_2d;
-@group(0) @binding(11) 
+@group(0) @binding(4) 
 var cascade_maps_1_sampler: sampler_comparison;
-@group(0) @binding(12) 
+@group(0) @binding(5) 
 var cascade_maps_2_: texture_depth_2d;
-@group(0) @binding(13) 
+@group(0) @binding(6) 
 var cascade_maps_2_sampler: sampler_comparison;
 
 fn shadow_clip() -> vec4<f32> {
-    let _e1 = u_light_vp;
-    let _e3 = u_model;
-    let _e5 = a_pos;
-    return (_e1 * (_e3 * vec4<f32>(_e5, 1f)));
+    let _e2 = uniforms.u_light_vp;
+    let _e5 = uniforms.u_model;
+    let _e7 = a_pos;
+    return (_e2 * (_e5 * vec4<f32>(_e7, 1f)));
 }
 
 fn world_position() -> vec4<f32> {
-    let _e1 = u_model;
-    let _e3 = a_pos;
-    return (_e1 * vec4<f32>(_e3, 1f));
+    let _e2 = uniforms.u_model;
+    let _e4 = a_pos;
+    return (_e2 * vec4<f32>(_e4, 1f));
 }
 
 fn world_normal() -> vec3<f32> {
-    let _e1 = u_model;
-    let _e3 = a_normal;
-    return (_e1 * vec4<f32>(_e3, 0f)).xyz;
+    let _e2 = uniforms.u_model;
+    let _e4 = a_normal;
+    return (_e2 * vec4<f32>(_e4, 0f)).xyz;
 }
 
 fn to_map(clip: vec4<f32>) -> vec3<f32> {
@@ -87,16 +84,16 @@ fn pick_cascade(p: vec4<f32>) -> i32 {
         if !((_e14 < (CASCADES - 1i))) {
             break;
         }
-        let _e19 = i;
-        let _e21 = u_cascade_vp[_e19];
-        let _e23 = to_map((_e21 * p));
-        if (((((_e23.x > margin) && (_e23.y > margin)) && (_e23.x < (1f - margin))) && (_e23.y < (1f - margin))) && (_e23.z < 1f)) {
-            let _e44 = i;
-            return _e44;
+        let _e20 = i;
+        let _e22 = uniforms.u_cascade_vp[_e20];
+        let _e24 = to_map((_e22 * p));
+        if (((((_e24.x > margin) && (_e24.y > margin)) && (_e24.x < (1f - margin))) && (_e24.y < (1f - margin))) && (_e24.z < 1f)) {
+            let _e45 = i;
+            return _e45;
         }
         continuing {
-            let _e45 = i;
-            i = (_e45 + 1i);
+            let _e46 = i;
+            i = (_e46 + 1i);
         }
     }
     return (CASCADES - 1i);
@@ -104,8 +101,8 @@ fn pick_cascade(p: vec4<f32>) -> i32 {
 
 fn sun_ndotl() -> f32 {
     let _e1 = v_world_normal_1;
-    let _e4 = u_light_dir;
-    return max(dot(normalize(_e1), normalize(_e4)), 0f);
+    let _e5 = uniforms.u_light_dir;
+    return max(dot(normalize(_e1), normalize(_e5)), 0f);
 }
 
 fn slope_bias(ndotl: f32) -> f32 {
@@ -113,8 +110,8 @@ fn slope_bias(ndotl: f32) -> f32 {
 }
 
 fn surface_gloss() -> f32 {
-    let _e1 = u_is_floor;
-    return select(0.5f, 0.15f, (_e1 > 0.5f));
+    let _e2 = uniforms.u_is_floor;
+    return select(0.5f, 0.15f, (_e2 > 0.5f));
 }
 
 fn checker(p_1: vec3<f32>) -> vec3<f32> {
@@ -124,11 +121,11 @@ fn checker(p_1: vec3<f32>) -> vec3<f32> {
 }
 
 fn surface_albedo() -> vec3<f32> {
-    let _e1 = u_is_floor;
-    if (_e1 > 0.5f) {
-        let _e5 = v_world_pos_1;
-        let _e6 = checker(_e5);
-        return _e6;
+    let _e2 = uniforms.u_is_floor;
+    if (_e2 > 0.5f) {
+        let _e6 = v_world_pos_1;
+        let _e7 = checker(_e6);
+        return _e7;
     }
     return vec3<f32>(0.85f, 0.45f, 0.3f);
 }
@@ -140,20 +137,20 @@ fn hemisphere(n: vec3<f32>) -> vec3<f32> {
 fn sun_shade(visibility: f32) -> vec3<f32> {
     let _e2 = v_world_normal_1;
     let n_1 = normalize(_e2);
-    let _e5 = u_light_dir;
-    let l = normalize(_e5);
-    let _e8 = u_cam_pos;
-    let _e10 = v_world_pos_1;
-    let v = normalize((_e8 - _e10));
+    let _e6 = uniforms.u_light_dir;
+    let l = normalize(_e6);
+    let _e10 = uniforms.u_cam_pos;
+    let _e12 = v_world_pos_1;
+    let v = normalize((_e10 - _e12));
     let ndotl_1 = max(dot(n_1, l), 0f);
     let lit = select(visibility, 0f, (ndotl_1 < 0.05f));
     let h = normalize((l + v));
-    let _e28 = surface_gloss();
-    let spec = ((pow(max(dot(n_1, h), 0f), 48f) * lit) * _e28);
+    let _e30 = surface_gloss();
+    let spec = ((pow(max(dot(n_1, h), 0f), 48f) * lit) * _e30);
     let sun = vec3<f32>(1.3f, 1.15f, 0.9f);
-    let _e34 = surface_albedo();
-    let _e35 = hemisphere(n_1);
-    return ((_e34 * (_e35 + (sun * (ndotl_1 * lit)))) + vec3(spec));
+    let _e36 = surface_albedo();
+    let _e37 = hemisphere(n_1);
+    return ((_e36 * (_e37 + (sun * (ndotl_1 * lit)))) + vec3(spec));
 }
 
 @vertex 
@@ -188,13 +185,13 @@ fn cascades_main_vs(@location(0) in_a_pos_1: vec3<f32>, @location(1) in_a_normal
     v_world_pos = _e4.xyz;
     let _e8 = world_normal();
     v_world_normal = _e8;
-    let _e11 = u_proj;
-    let _e13 = u_view;
-    gl_Position_1 = (_e11 * (_e13 * _e4));
-    let _e17 = gl_Position_1;
-    let _e28 = v_world_pos;
-    let _e30 = v_world_normal;
-    return cascades_main_vs_out(vec4<f32>(_e17.x, -(_e17.y), ((_e17.z + _e17.w) * 0.5f), _e17.w), _e28, _e30);
+    let _e12 = uniforms.u_proj;
+    let _e15 = uniforms.u_view;
+    gl_Position_1 = (_e12 * (_e15 * _e4));
+    let _e19 = gl_Position_1;
+    let _e30 = v_world_pos;
+    let _e32 = v_world_normal;
+    return cascades_main_vs_out(vec4<f32>(_e19.x, -(_e19.y), ((_e19.z + _e19.w) * 0.5f), _e19.w), _e30, _e32);
 }
 
 @fragment 
@@ -207,30 +204,30 @@ fn cascades_main_fs(@location(0) in_v_world_pos: vec3<f32>, @location(1) in_v_wo
     let _e5 = v_world_pos_1;
     let p_2 = vec4<f32>(_e5, 1f);
     let _e8 = pick_cascade(p_2);
-    let _e11 = u_cascade_vp[_e8];
-    let _e13 = to_map((_e11 * p_2));
-    let _e14 = sun_ndotl();
-    let _e15 = slope_bias(_e14);
-    let bias = (_e15 * f32((1i << u32(_e8))));
-    let _e21 = _e13.xy;
-    let _e23 = (_e13.z - bias);
+    let _e12 = uniforms.u_cascade_vp[_e8];
+    let _e14 = to_map((_e12 * p_2));
+    let _e15 = sun_ndotl();
+    let _e16 = slope_bias(_e15);
+    let bias = (_e16 * f32((1i << u32(_e8))));
+    let _e22 = _e14.xy;
+    let _e24 = (_e14.z - bias);
     switch clamp(_e8, 0i, 2i) {
         case 0: {
-            let _e29 = textureSampleCompare(cascade_maps_0_, cascade_maps_0_sampler, _e21, _e23);
-            texel = _e29;
+            let _e30 = textureSampleCompare(cascade_maps_0_, cascade_maps_0_sampler, _e22, _e24);
+            texel = _e30;
         }
         case 1: {
-            let _e33 = textureSampleCompare(cascade_maps_1_, cascade_maps_1_sampler, _e21, _e23);
-            texel = _e33;
+            let _e34 = textureSampleCompare(cascade_maps_1_, cascade_maps_1_sampler, _e22, _e24);
+            texel = _e34;
         }
         default: {
-            let _e37 = textureSampleCompare(cascade_maps_2_, cascade_maps_2_sampler, _e21, _e23);
-            texel = _e37;
+            let _e38 = textureSampleCompare(cascade_maps_2_, cascade_maps_2_sampler, _e22, _e24);
+            texel = _e38;
         }
     }
     let visibility_1 = texel;
-    let _e42 = sun_shade(visibility_1);
-    f_FragColor_1 = vec4<f32>(_e42, 1f);
-    let _e46 = f_FragColor_1;
-    return cascades_main_fs_out(_e46);
+    let _e43 = sun_shade(visibility_1);
+    f_FragColor_1 = vec4<f32>(_e43, 1f);
+    let _e47 = f_FragColor_1;
+    return cascades_main_fs_out(_e47);
 }

@@ -4,17 +4,17 @@ struct cascades_main_fs_out {
 };
 const int CASCADES = 3;
 
-layout(std140) uniform u_cam_pos_block { vec3 u_cam_pos; };
+uniform vec3 u_cam_pos;
 
-layout(std140) uniform u_is_floor_block { float u_is_floor; };
+uniform float u_is_floor;
 
-vec3 v_world_pos = vec3(0.0);
+vec3 io_v_world_pos = vec3(0.0);
 
-vec3 v_world_normal = vec3(0.0);
+vec3 io_v_world_normal = vec3(0.0);
 
-layout(std140) uniform u_light_dir_block { vec3 u_light_dir; };
+uniform vec3 u_light_dir;
 
-layout(std140) uniform u_cascade_vp_block { mat4x4 u_cascade_vp[3]; };
+uniform mat4x4 u_cascade_vp[3];
 
 uniform sampler2DShadow cascade_maps_0;
 
@@ -22,9 +22,9 @@ uniform sampler2DShadow cascade_maps_1;
 
 uniform sampler2DShadow cascade_maps_2;
 
-smooth in vec3 _vs2fs_location0;
-smooth in vec3 _vs2fs_location1;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec3 v_world_pos;
+smooth in vec3 v_world_normal;
+out vec4 f_FragColor;
 
 vec3 to_map(vec4 clip) {
     return (((clip.xyz / vec3(max(clip.w, 0.0001))) * 0.5) + vec3(0.5));
@@ -57,7 +57,7 @@ int pick_cascade(vec4 p) {
 }
 
 float sun_ndotl() {
-    vec3 _e1 = v_world_normal;
+    vec3 _e1 = io_v_world_normal;
     vec3 _e4 = u_light_dir;
     return max(dot(normalize(_e1), normalize(_e4)), 0.0);
 }
@@ -80,7 +80,7 @@ vec3 checker(vec3 p_1) {
 vec3 surface_albedo() {
     float _e1 = u_is_floor;
     if ((_e1 > 0.5)) {
-        vec3 _e5 = v_world_pos;
+        vec3 _e5 = io_v_world_pos;
         vec3 _e6 = checker(_e5);
         return _e6;
     }
@@ -92,12 +92,12 @@ vec3 hemisphere(vec3 n) {
 }
 
 vec3 sun_shade(float visibility) {
-    vec3 _e2 = v_world_normal;
+    vec3 _e2 = io_v_world_normal;
     vec3 n_1 = normalize(_e2);
     vec3 _e5 = u_light_dir;
     vec3 l = normalize(_e5);
     vec3 _e8 = u_cam_pos;
-    vec3 _e10 = v_world_pos;
+    vec3 _e10 = io_v_world_pos;
     vec3 v = normalize((_e8 - _e10));
     float ndotl_1 = max(dot(n_1, l), 0.0);
     float lit = ((ndotl_1 < 0.05) ? 0.0 : visibility);
@@ -111,13 +111,13 @@ vec3 sun_shade(float visibility) {
 }
 
 void main() {
-    vec3 in_v_world_pos = _vs2fs_location0;
-    vec3 in_v_world_normal = _vs2fs_location1;
-    vec4 f_FragColor = vec4(0.0);
+    vec3 in_v_world_pos = v_world_pos;
+    vec3 in_v_world_normal = v_world_normal;
+    vec4 out_f_FragColor = vec4(0.0);
     float texel = 0.0;
-    v_world_pos = in_v_world_pos;
-    v_world_normal = in_v_world_normal;
-    vec3 _e5 = v_world_pos;
+    io_v_world_pos = in_v_world_pos;
+    io_v_world_normal = in_v_world_normal;
+    vec3 _e5 = io_v_world_pos;
     vec4 p_2 = vec4(_e5, 1.0);
     int _e8 = pick_cascade(p_2);
     mat4x4 _e11 = u_cascade_vp[_e8];
@@ -146,10 +146,10 @@ void main() {
     }
     float visibility_1 = texel;
     vec3 _e42 = sun_shade(visibility_1);
-    f_FragColor = vec4(_e42, 1.0);
-    vec4 _e46 = f_FragColor;
+    out_f_FragColor = vec4(_e42, 1.0);
+    vec4 _e46 = out_f_FragColor;
     cascades_main_fs_out _tmp_return = cascades_main_fs_out(_e46);
-    _fs2p_location0 = _tmp_return.f_FragColor;
+    f_FragColor = _tmp_return.f_FragColor;
     return;
 }
 

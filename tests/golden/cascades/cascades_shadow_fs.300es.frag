@@ -6,14 +6,14 @@ precision highp int;
 struct cascades_shadow_fs_out {
     vec4 f_FragColor;
 };
-layout(location = 0) out vec4 _fs2p_location0;
+out vec4 f_FragColor;
 
 void main() {
-    vec4 f_FragColor = vec4(0.0);
-    f_FragColor = vec4(1.0);
-    vec4 _e4 = f_FragColor;
+    vec4 out_f_FragColor = vec4(0.0);
+    out_f_FragColor = vec4(1.0);
+    vec4 _e4 = out_f_FragColor;
     cascades_shadow_fs_out _tmp_return = cascades_shadow_fs_out(_e4);
-    _fs2p_location0 = _tmp_return.f_FragColor;
+    f_FragColor = _tmp_return.f_FragColor;
     return;
 }
 

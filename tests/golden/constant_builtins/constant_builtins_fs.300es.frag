@@ -14,19 +14,19 @@ const vec3 SKY = vec3(0.35500002, 0.39499998, 0.6375);
 const float GOLDEN = 2.3999631;
 const uint WHITE = 4294967295u;
 
-smooth in vec3 _vs2fs_location0;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec3 v_dir;
+out vec4 f_color;
 
 void main() {
-    vec3 v_dir = _vs2fs_location0;
-    vec4 f_color = vec4(0.0);
-    float d = dot(normalize(v_dir), SUN_DIR);
+    vec3 in_v_dir = v_dir;
+    vec4 out_f_color = vec4(0.0);
+    float d = dot(normalize(in_v_dir), SUN_DIR);
     float sun = smoothstep(HALF_ANGLE, 1.0, d);
     float bits = (float((((MASK.x | MASK.y) | MASK.z) & int((SEED & 63u)))) / 64.0);
-    f_color = vec4(((SKY + vec3(sun)) + vec3(((bits * GOLDEN) * 0.0))), (float((WHITE >> 24u)) / 255.0));
-    vec4 _e41 = f_color;
+    out_f_color = vec4(((SKY + vec3(sun)) + vec3(((bits * GOLDEN) * 0.0))), (float((WHITE >> 24u)) / 255.0));
+    vec4 _e41 = out_f_color;
     constant_builtins_fs_out _tmp_return = constant_builtins_fs_out(_e41);
-    _fs2p_location0 = _tmp_return.f_color;
+    f_color = _tmp_return.f_color;
     return;
 }
 

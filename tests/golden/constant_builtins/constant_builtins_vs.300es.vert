@@ -9,20 +9,20 @@ struct constant_builtins_vs_out {
 };
 const mat3x3 TILT = mat3x3(vec3(0.5, 0.0, 0.0), vec3(0.0, 0.5, 0.0), vec3(0.0, 0.0, 0.5));
 
-layout(location = 0) in vec3 _p2vs_location0;
-smooth out vec3 _vs2fs_location0;
+layout(location = 0) in vec3 a_pos;
+smooth out vec3 v_dir;
 
 void main() {
-    vec3 a_pos = _p2vs_location0;
-    vec3 v_dir = vec3(0.0);
+    vec3 in_a_pos = a_pos;
+    vec3 out_v_dir = vec3(0.0);
     vec4 gen_gl_Position = vec4(0.0);
-    v_dir = (TILT * a_pos);
-    gen_gl_Position = vec4(a_pos, 1.0);
+    out_v_dir = (TILT * in_a_pos);
+    gen_gl_Position = vec4(in_a_pos, 1.0);
     vec4 _e8 = gen_gl_Position;
-    vec3 _e10 = v_dir;
+    vec3 _e10 = out_v_dir;
     constant_builtins_vs_out _tmp_return = constant_builtins_vs_out(_e8, _e10);
     gl_Position = _tmp_return.gen_gl_Position;
-    _vs2fs_location0 = _tmp_return.v_dir;
+    v_dir = _tmp_return.v_dir;
     return;
 }
 

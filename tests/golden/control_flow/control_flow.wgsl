@@ -1,5 +1,10 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_steps: i32,
+    u_threshold: f32,
+}
+
 struct flow_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_uv: vec2<f32>,
@@ -10,9 +15,7 @@ struct flow_fs_out {
 }
 
 @group(0) @binding(0) 
-var<uniform> u_steps: i32;
-@group(0) @binding(1) 
-var<uniform> u_threshold: f32;
+var<uniform> uniforms: Uniforms;
 
 fn band(x: f32) -> i32 {
     if (x < 0.25f) {
@@ -55,48 +58,48 @@ fn flow_fs(@location(0) v_uv_1: vec2<f32>) -> flow_fs_out {
     i = 0i;
     loop {
         let _e6 = i;
-        let _e8 = u_steps;
-        if !((_e6 < _e8)) {
+        let _e9 = uniforms.u_steps;
+        if !((_e6 < _e9)) {
             break;
         }
-        let _e13 = i;
-        i = (_e13 + 1i);
-        let _e16 = i;
-        if ((_e16 % 2i) == 0i) {
+        let _e14 = i;
+        i = (_e14 + 1i);
+        let _e17 = i;
+        if ((_e17 % 2i) == 0i) {
             continue;
         }
-        let _e24 = i;
-        let _e27 = acc;
-        acc = (_e27 + (1f / f32(_e24)));
-        let _e30 = acc;
-        let _e32 = u_threshold;
-        if (_e30 > _e32) {
+        let _e25 = i;
+        let _e28 = acc;
+        acc = (_e28 + (1f / f32(_e25)));
+        let _e31 = acc;
+        let _e34 = uniforms.u_threshold;
+        if (_e31 > _e34) {
             break;
         }
     }
     count = 0u;
     k = 2i;
     loop {
-        let _e39 = k;
-        if !((_e39 < 7i)) {
+        let _e41 = k;
+        if !((_e41 < 7i)) {
             break;
         }
-        let _e44 = k;
-        let _e46 = count;
-        count = (_e46 + u32(_e44));
+        let _e46 = k;
+        let _e48 = count;
+        count = (_e48 + u32(_e46));
         continuing {
-            let _e48 = k;
-            k = (_e48 + 1i);
+            let _e50 = k;
+            k = (_e50 + 1i);
         }
     }
-    let _e53 = band(v_uv_1.x);
-    level = (f32(_e53) / 3f);
-    let _e64 = level;
-    level = (_e64 * select(0.5f, 1f, (v_uv_1.y > 0.5f)));
-    let _e68 = acc;
-    let _e70 = level;
-    let _e72 = count;
-    f_color = vec4<f32>(_e68, _e70, (f32(_e72) / 20f), 1f);
-    let _e79 = f_color;
-    return flow_fs_out(_e79);
+    let _e55 = band(v_uv_1.x);
+    level = (f32(_e55) / 3f);
+    let _e66 = level;
+    level = (_e66 * select(0.5f, 1f, (v_uv_1.y > 0.5f)));
+    let _e70 = acc;
+    let _e72 = level;
+    let _e74 = count;
+    f_color = vec4<f32>(_e70, _e72, (f32(_e74) / 20f), 1f);
+    let _e81 = f_color;
+    return flow_fs_out(_e81);
 }

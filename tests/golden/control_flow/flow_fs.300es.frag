@@ -6,12 +6,12 @@ precision highp int;
 struct flow_fs_out {
     vec4 f_color;
 };
-layout(std140) uniform u_steps_block { int u_steps; };
+uniform int u_steps;
 
-layout(std140) uniform u_threshold_block { float u_threshold; };
+uniform float u_threshold;
 
-smooth in vec2 _vs2fs_location0;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec2 v_uv;
+out vec4 f_color;
 
 int band(float x) {
     if ((x < 0.25)) {
@@ -30,8 +30,8 @@ int band(float x) {
 }
 
 void main() {
-    vec2 v_uv = _vs2fs_location0;
-    vec4 f_color = vec4(0.0);
+    vec2 in_v_uv = v_uv;
+    vec4 out_f_color = vec4(0.0);
     float acc = 0.0;
     int i = 0;
     uint count = 0u;
@@ -77,17 +77,17 @@ void main() {
         uint _e48 = count;
         count = (_e48 + uint(_e46));
     }
-    int _e55 = band(v_uv.x);
+    int _e55 = band(in_v_uv.x);
     level = (float(_e55) / 3.0);
     float _e66 = level;
-    level = (_e66 * ((v_uv.y > 0.5) ? 1.0 : 0.5));
+    level = (_e66 * ((in_v_uv.y > 0.5) ? 1.0 : 0.5));
     float _e70 = acc;
     float _e72 = level;
     uint _e74 = count;
-    f_color = vec4(_e70, _e72, (float(_e74) / 20.0), 1.0);
-    vec4 _e81 = f_color;
+    out_f_color = vec4(_e70, _e72, (float(_e74) / 20.0), 1.0);
+    vec4 _e81 = out_f_color;
     flow_fs_out _tmp_return = flow_fs_out(_e81);
-    _fs2p_location0 = _tmp_return.f_color;
+    f_color = _tmp_return.f_color;
     return;
 }
 

@@ -10,23 +10,23 @@ struct cull_main_fs_out {
 const int PCF_TAPS = 4;
 const vec2 PCF_OFFSETS[4] = vec2[4](vec2(-0.5, -0.5), vec2(0.5, -0.5), vec2(-0.5, 0.5), vec2(0.5, 0.5));
 
-layout(std140) uniform u_light_vp_block { mat4x4 u_light_vp; };
+uniform mat4x4 u_light_vp;
 
-layout(std140) uniform u_cam_pos_block { vec3 u_cam_pos; };
+uniform vec3 u_cam_pos;
 
-layout(std140) uniform u_is_floor_block { float u_is_floor; };
+uniform float u_is_floor;
 
-vec3 v_world_pos = vec3(0.0);
+vec3 io_v_world_pos = vec3(0.0);
 
-vec3 v_world_normal = vec3(0.0);
+vec3 io_v_world_normal = vec3(0.0);
 
-layout(std140) uniform u_light_dir_block { vec3 u_light_dir; };
+uniform vec3 u_light_dir;
 
 uniform highp sampler2DShadow shadow_map;
 
-smooth in vec3 _vs2fs_location0;
-smooth in vec3 _vs2fs_location1;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec3 v_world_pos;
+smooth in vec3 v_world_normal;
+out vec4 f_FragColor;
 
 vec3 to_map(vec4 clip) {
     return (((clip.xyz / vec3(max(clip.w, 0.0001))) * 0.5) + vec3(0.5));
@@ -72,7 +72,7 @@ vec3 checker(vec3 p) {
 vec3 surface_albedo() {
     float _e1 = u_is_floor;
     if ((_e1 > 0.5)) {
-        vec3 _e5 = v_world_pos;
+        vec3 _e5 = io_v_world_pos;
         vec3 _e6 = checker(_e5);
         return _e6;
     }
@@ -84,12 +84,12 @@ vec3 hemisphere(vec3 n) {
 }
 
 vec3 sun_shade(float visibility) {
-    vec3 _e2 = v_world_normal;
+    vec3 _e2 = io_v_world_normal;
     vec3 n_1 = normalize(_e2);
     vec3 _e5 = u_light_dir;
     vec3 l = normalize(_e5);
     vec3 _e8 = u_cam_pos;
-    vec3 _e10 = v_world_pos;
+    vec3 _e10 = io_v_world_pos;
     vec3 v = normalize((_e8 - _e10));
     float ndotl = max(dot(n_1, l), 0.0);
     float lit = ((ndotl < 0.05) ? 0.0 : visibility);
@@ -103,20 +103,20 @@ vec3 sun_shade(float visibility) {
 }
 
 void main() {
-    vec3 in_v_world_pos = _vs2fs_location0;
-    vec3 in_v_world_normal = _vs2fs_location1;
-    vec4 f_FragColor = vec4(0.0);
-    v_world_pos = in_v_world_pos;
-    v_world_normal = in_v_world_normal;
+    vec3 in_v_world_pos = v_world_pos;
+    vec3 in_v_world_normal = v_world_normal;
+    vec4 out_f_FragColor = vec4(0.0);
+    io_v_world_pos = in_v_world_pos;
+    io_v_world_normal = in_v_world_normal;
     mat4x4 _e5 = u_light_vp;
-    vec3 _e7 = v_world_pos;
+    vec3 _e7 = io_v_world_pos;
     vec3 _e11 = to_map((_e5 * vec4(_e7, 1.0)));
     float _e14 = pcf_visibility(_e11, 0.0);
     vec3 _e15 = sun_shade(_e14);
-    f_FragColor = vec4(_e15, 1.0);
-    vec4 _e19 = f_FragColor;
+    out_f_FragColor = vec4(_e15, 1.0);
+    vec4 _e19 = out_f_FragColor;
     cull_main_fs_out _tmp_return = cull_main_fs_out(_e19);
-    _fs2p_location0 = _tmp_return.f_FragColor;
+    f_FragColor = _tmp_return.f_FragColor;
     return;
 }
 

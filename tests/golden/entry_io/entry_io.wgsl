@@ -1,5 +1,9 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_scale: f32,
+}
+
 struct entry_io_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_uv: vec2<f32>,
@@ -13,7 +17,7 @@ struct entry_io_fs_out {
 }
 
 @group(0) @binding(0) 
-var<uniform> u_scale: f32;
+var<uniform> uniforms: Uniforms;
 var<private> a_pos: vec3<f32>;
 var<private> v_tint_1: vec3<f32>;
 var<private> v_shade_1: f32;
@@ -40,27 +44,27 @@ fn entry_io_vs(@location(0) in_a_pos: vec3<f32>, @location(1) a_uv: vec2<f32>, @
     gl_VertexID = i32(in_VertexID);
     v_uv.x = a_uv.x;
     v_uv.y = (1f - a_uv.y);
-    let _e16 = u_scale;
-    let _e17 = v_uv;
-    v_uv = (_e17 * _e16);
-    let _e21 = v_uv.x;
-    set_tint(_e21);
-    let _e25 = a_pos.z;
-    v_shade = _e25;
-    let _e27 = lifted();
-    let _e29 = u_scale;
-    gl_Position = vec4<f32>((_e27 * _e29), 1f);
-    let _e34 = gl_VertexID;
-    if (_e34 > 2i) {
-        let _e41 = a_pos.x;
-        let _e42 = gl_Position.w;
-        gl_Position.w = (_e42 + _e41);
+    let _e17 = uniforms.u_scale;
+    let _e18 = v_uv;
+    v_uv = (_e18 * _e17);
+    let _e22 = v_uv.x;
+    set_tint(_e22);
+    let _e26 = a_pos.z;
+    v_shade = _e26;
+    let _e28 = lifted();
+    let _e31 = uniforms.u_scale;
+    gl_Position = vec4<f32>((_e28 * _e31), 1f);
+    let _e36 = gl_VertexID;
+    if (_e36 > 2i) {
+        let _e43 = a_pos.x;
+        let _e44 = gl_Position.w;
+        gl_Position.w = (_e44 + _e43);
     }
-    let _e45 = gl_Position;
-    let _e56 = v_uv;
-    let _e58 = v_tint_1;
-    let _e60 = v_shade;
-    return entry_io_vs_out(vec4<f32>(_e45.x, -(_e45.y), ((_e45.z + _e45.w) * 0.5f), _e45.w), _e56, _e58, _e60);
+    let _e47 = gl_Position;
+    let _e58 = v_uv;
+    let _e60 = v_tint_1;
+    let _e62 = v_shade;
+    return entry_io_vs_out(vec4<f32>(_e47.x, -(_e47.y), ((_e47.z + _e47.w) * 0.5f), _e47.w), _e58, _e60, _e62);
 }
 
 @fragment 

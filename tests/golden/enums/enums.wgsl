@@ -1,5 +1,9 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_mode: i32,
+}
+
 struct enums_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_uv: vec2<f32>,
@@ -12,7 +16,7 @@ struct enums_fs_out {
 const WEIGHTS: array<f32, 4> = array<f32, 4>(0.25f, 0.5f, 0.75f, 1f);
 
 @group(0) @binding(0) 
-var<uniform> u_mode: i32;
+var<uniform> uniforms: Uniforms;
 
 fn attenuate(f: u32, d: f32) -> f32 {
     if (f == 1u) {
@@ -45,13 +49,13 @@ fn enums_vs(@location(0) a_pos: vec2<f32>) -> enums_vs_out {
 fn enums_fs(@location(0) v_uv_1: vec2<f32>) -> enums_fs_out {
     var f_color: vec4<f32>;
 
-    let _e2 = u_mode;
-    let ch_1 = select(2i, 0i, (_e2 == 0i));
+    let _e3 = uniforms.u_mode;
+    let ch_1 = select(2i, 0i, (_e3 == 0i));
     let f_1 = select(2u, 8u, (ch_1 > 1i));
     let c_1 = vec4<f32>(v_uv_1, 0.5f, 1f);
-    let _e17 = attenuate(f_1, length(v_uv_1));
-    let _e19 = channel(c_1, ch_1);
-    f_color = vec4<f32>((_e19 * _e17), WEIGHTS[3], (f32(ch_1) / 3f), 1f);
-    let _e29 = f_color;
-    return enums_fs_out(_e29);
+    let _e18 = attenuate(f_1, length(v_uv_1));
+    let _e20 = channel(c_1, ch_1);
+    f_color = vec4<f32>((_e20 * _e18), WEIGHTS[3], (f32(ch_1) / 3f), 1f);
+    let _e30 = f_color;
+    return enums_fs_out(_e30);
 }

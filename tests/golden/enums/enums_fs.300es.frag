@@ -8,10 +8,10 @@ struct enums_fs_out {
 };
 const float WEIGHTS[4] = float[4](0.25, 0.5, 0.75, 1.0);
 
-layout(std140) uniform u_mode_block { int u_mode; };
+uniform int u_mode;
 
-smooth in vec2 _vs2fs_location0;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec2 v_uv;
+out vec4 f_color;
 
 float attenuate(uint f, float d) {
     if ((f == 1u)) {
@@ -29,18 +29,18 @@ float channel(vec4 c, int ch) {
 }
 
 void main() {
-    vec2 v_uv = _vs2fs_location0;
-    vec4 f_color = vec4(0.0);
+    vec2 in_v_uv = v_uv;
+    vec4 out_f_color = vec4(0.0);
     int _e2 = u_mode;
     int ch_1 = ((_e2 == 0) ? 0 : 2);
     uint f_1 = ((ch_1 > 1) ? 8u : 2u);
-    vec4 c_1 = vec4(v_uv, 0.5, 1.0);
-    float _e17 = attenuate(f_1, length(v_uv));
+    vec4 c_1 = vec4(in_v_uv, 0.5, 1.0);
+    float _e17 = attenuate(f_1, length(in_v_uv));
     float _e19 = channel(c_1, ch_1);
-    f_color = vec4((_e19 * _e17), WEIGHTS[3], (float(ch_1) / 3.0), 1.0);
-    vec4 _e29 = f_color;
+    out_f_color = vec4((_e19 * _e17), WEIGHTS[3], (float(ch_1) / 3.0), 1.0);
+    vec4 _e29 = out_f_color;
     enums_fs_out _tmp_return = enums_fs_out(_e29);
-    _fs2p_location0 = _tmp_return.f_color;
+    f_color = _tmp_return.f_color;
     return;
 }
 

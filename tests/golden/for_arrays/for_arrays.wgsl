@@ -5,6 +5,11 @@ struct Light {
     color: vec4<f32>,
 }
 
+struct Uniforms {
+    u_lights: array<Light, 4>,
+    u_count: i32,
+}
+
 struct for_arrays_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_uv: vec2<f32>,
@@ -17,9 +22,7 @@ struct for_arrays_fs_out {
 const KERNEL: array<f32, 3> = array<f32, 3>(0.25f, 0.5f, 0.25f);
 
 @group(0) @binding(0) 
-var<uniform> u_lights: array<Light, 4>;
-@group(0) @binding(1) 
-var<uniform> u_count: i32;
+var<uniform> uniforms: Uniforms;
 
 @vertex 
 fn for_arrays_vs(@location(0) a_pos: vec2<f32>) -> for_arrays_vs_out {
@@ -47,57 +50,57 @@ fn for_arrays_fs(@location(0) v_uv_1: vec2<f32>) -> for_arrays_fs_out {
 
     c = vec3(0f);
     i = 0i;
-    let _e7 = u_count;
+    let _e8 = uniforms.u_count;
     loop {
-        let _e8 = i;
-        if !((_e8 < _e7)) {
+        let _e9 = i;
+        if !((_e9 < _e8)) {
             break;
         }
-        let _e12 = i;
-        if (u32(_e12) >= 4u) {
+        let _e13 = i;
+        if (u32(_e13) >= 4u) {
             break;
         }
-        let _e18 = i;
-        let l = u_lights[_e18];
+        let _e20 = i;
+        let l = uniforms.u_lights[_e20];
         let d = distance(v_uv_1, l.pos.xy);
-        let _e30 = i;
-        let _e37 = c;
-        c = (_e37 + (l.color.xyz * (1f / ((1f + f32(_e30)) + (d * d)))));
+        let _e32 = i;
+        let _e39 = c;
+        c = (_e39 + (l.color.xyz * (1f / ((1f + f32(_e32)) + (d * d)))));
         continuing {
-            let _e39 = i;
-            i = (_e39 + 1i);
+            let _e41 = i;
+            i = (_e41 + 1i);
         }
     }
     taps = array<f32, 3>();
     t_index = 0i;
     loop {
-        let _e47 = t_index;
-        if !((_e47 < 3i)) {
+        let _e49 = t_index;
+        if !((_e49 < 3i)) {
             break;
         }
-        let _e52 = t_index;
-        let k = KERNEL[_e52];
-        let _e56 = t_index;
-        taps[_e56] = (k * v_uv_1.y);
+        let _e54 = t_index;
+        let k = KERNEL[_e54];
+        let _e58 = t_index;
+        taps[_e58] = (k * v_uv_1.y);
         continuing {
-            let _e60 = t_index;
-            t_index = (_e60 + 1i);
+            let _e62 = t_index;
+            t_index = (_e62 + 1i);
         }
     }
     blur = 0f;
     t_index_1 = 0i;
     loop {
-        let _e68 = t_index_1;
-        if !((_e68 < 3i)) {
+        let _e70 = t_index_1;
+        if !((_e70 < 3i)) {
             break;
         }
-        let _e74 = t_index_1;
-        let _e76 = taps[_e74];
-        let _e77 = blur;
-        blur = (_e77 + _e76);
+        let _e76 = t_index_1;
+        let _e78 = taps[_e76];
+        let _e79 = blur;
+        blur = (_e79 + _e78);
         continuing {
-            let _e79 = t_index_1;
-            t_index_1 = (_e79 + 1i);
+            let _e81 = t_index_1;
+            t_index_1 = (_e81 + 1i);
         }
     }
     ramp = 0f;
@@ -105,12 +108,12 @@ fn for_arrays_fs(@location(0) v_uv_1: vec2<f32>) -> for_arrays_fs_out {
         let j_count = select(0u, (u32(8i) - u32(5i)), (8i > 5i));
         i_1 = 1i;
         loop {
-            let _e97 = i_1;
-            if !((_e97 < 10i)) {
+            let _e99 = i_1;
+            if !((_e99 < 10i)) {
                 break;
             }
-            let _e101 = i_1;
-            let i_step = (u32(_e101) - u32(1i));
+            let _e103 = i_1;
+            let i_step = (u32(_e103) - u32(1i));
             if (i_step >= j_count) {
                 break;
             }
@@ -119,19 +122,19 @@ fn for_arrays_fs(@location(0) v_uv_1: vec2<f32>) -> for_arrays_fs_out {
             }
             let j = (5i + i32(i_step));
             let k_1 = KERNEL[i32(i_step)];
-            let _e117 = i_1;
-            let _e121 = ramp;
-            ramp = (_e121 + (f32((_e117 * j)) * k_1));
+            let _e119 = i_1;
+            let _e123 = ramp;
+            ramp = (_e123 + (f32((_e119 * j)) * k_1));
             continuing {
-                let _e123 = i_1;
-                i_1 = (_e123 + 1i);
+                let _e125 = i_1;
+                i_1 = (_e125 + 1i);
             }
         }
     }
-    let _e128 = c;
-    let _e130 = blur;
-    let _e134 = ramp;
-    f_color = vec4<f32>((_e128 + vec3(_e130)), (_e134 / 50f));
-    let _e139 = f_color;
-    return for_arrays_fs_out(_e139);
+    let _e130 = c;
+    let _e132 = blur;
+    let _e136 = ramp;
+    f_color = vec4<f32>((_e130 + vec3(_e132)), (_e136 / 50f));
+    let _e141 = f_color;
+    return for_arrays_fs_out(_e141);
 }

@@ -8,16 +8,16 @@ struct for_arrays_fs_out {
 };
 const float KERNEL[3] = float[3](0.25, 0.5, 0.25);
 
-layout(std140) uniform u_lights_block { Light u_lights[4]; };
+uniform Light u_lights[4];
 
-layout(std140) uniform u_count_block { int u_count; };
+uniform int u_count;
 
-smooth in vec2 _vs2fs_location0;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec2 v_uv;
+out vec4 f_color;
 
 void main() {
-    vec2 v_uv = _vs2fs_location0;
-    vec4 f_color = vec4(0.0);
+    vec2 in_v_uv = v_uv;
+    vec4 out_f_color = vec4(0.0);
     vec3 c = vec3(0.0);
     int i = 0;
     float taps[3] = float[3](0.0, 0.0, 0.0);
@@ -46,7 +46,7 @@ void main() {
         }
         int _e18 = i;
         Light l = u_lights[_e18];
-        float d = distance(v_uv, l.pos.xy);
+        float d = distance(in_v_uv, l.pos.xy);
         int _e30 = i;
         vec3 _e37 = c;
         c = (_e37 + (l.color.xyz * (1.0 / ((1.0 + float(_e30)) + (d * d)))));
@@ -67,7 +67,7 @@ void main() {
         int _e52 = t_index;
         float k = KERNEL[_e52];
         int _e56 = t_index;
-        taps[_e56] = (k * v_uv.y);
+        taps[_e56] = (k * in_v_uv.y);
     }
     blur = 0.0;
     t_index_1 = 0;
@@ -120,10 +120,10 @@ void main() {
     vec3 _e128 = c;
     float _e130 = blur;
     float _e134 = ramp;
-    f_color = vec4((_e128 + vec3(_e130)), (_e134 / 50.0));
-    vec4 _e139 = f_color;
+    out_f_color = vec4((_e128 + vec3(_e130)), (_e134 / 50.0));
+    vec4 _e139 = out_f_color;
     for_arrays_fs_out _tmp_return = for_arrays_fs_out(_e139);
-    _fs2p_location0 = _tmp_return.f_color;
+    f_color = _tmp_return.f_color;
     return;
 }
 

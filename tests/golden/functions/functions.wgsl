@@ -1,5 +1,9 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_time: f32,
+}
+
 struct functions_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_uv: vec2<f32>,
@@ -10,7 +14,7 @@ struct functions_fs_out {
 }
 
 @group(0) @binding(0) 
-var<uniform> u_time: f32;
+var<uniform> uniforms: Uniforms;
 
 fn wave(x: f32, t: f32) -> f32 {
     return (0.5f + (0.5f * sin(((x * 6.283f) + t))));
@@ -65,19 +69,19 @@ fn functions_vs(@location(0) a_pos: vec2<f32>) -> functions_vs_out {
 fn functions_fs(@location(0) v_uv_1: vec2<f32>) -> functions_fs_out {
     var f_color: vec4<f32>;
 
-    let _e3 = u_time;
-    let _e4 = wave(v_uv_1.x, _e3);
-    let _e6 = square(v_uv_1.y);
-    let _e13 = tint(vec3<f32>(_e4, _e6, 0.25f), vec3<f32>(1f, 0.9f, 0.8f));
-    let _e16 = vignette(v_uv_1, 0.6f, 0.75f);
-    let _e19 = vignette(v_uv_1, 0.2f, 0.75f);
-    let _e23 = vignette(v_uv_1, 0.1f, 0.9f);
-    let v = ((_e16 * _e19) * _e23);
-    let _e27 = luma_float4_(vec4<f32>(_e13, 1f));
-    let _e28 = luma_float3_(_e13);
-    let g = (_e27 + _e28);
-    let _e34 = banded((g * 0.5f));
-    f_color = vec4<f32>((_e13 * v), _e34);
-    let _e37 = f_color;
-    return functions_fs_out(_e37);
+    let _e4 = uniforms.u_time;
+    let _e5 = wave(v_uv_1.x, _e4);
+    let _e7 = square(v_uv_1.y);
+    let _e14 = tint(vec3<f32>(_e5, _e7, 0.25f), vec3<f32>(1f, 0.9f, 0.8f));
+    let _e17 = vignette(v_uv_1, 0.6f, 0.75f);
+    let _e20 = vignette(v_uv_1, 0.2f, 0.75f);
+    let _e24 = vignette(v_uv_1, 0.1f, 0.9f);
+    let v = ((_e17 * _e20) * _e24);
+    let _e28 = luma_float4_(vec4<f32>(_e14, 1f));
+    let _e29 = luma_float3_(_e14);
+    let g = (_e28 + _e29);
+    let _e35 = banded((g * 0.5f));
+    f_color = vec4<f32>((_e14 * v), _e35);
+    let _e38 = f_color;
+    return functions_fs_out(_e38);
 }

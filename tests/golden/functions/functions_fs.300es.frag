@@ -6,10 +6,10 @@ precision highp int;
 struct functions_fs_out {
     vec4 f_color;
 };
-layout(std140) uniform u_time_block { float u_time; };
+uniform float u_time;
 
-smooth in vec2 _vs2fs_location0;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec2 v_uv;
+out vec4 f_color;
 
 float wave(float x, float t) {
     return (0.5 + (0.5 * sin(((x * 6.283) + t))));
@@ -49,24 +49,24 @@ float banded(float x_2) {
 }
 
 void main() {
-    vec2 v_uv = _vs2fs_location0;
-    vec4 f_color = vec4(0.0);
+    vec2 in_v_uv = v_uv;
+    vec4 out_f_color = vec4(0.0);
     float _e3 = u_time;
-    float _e4 = wave(v_uv.x, _e3);
-    float _e6 = square(v_uv.y);
+    float _e4 = wave(in_v_uv.x, _e3);
+    float _e6 = square(in_v_uv.y);
     vec3 _e13 = tint(vec3(_e4, _e6, 0.25), vec3(1.0, 0.9, 0.8));
-    float _e16 = vignette(v_uv, 0.6, 0.75);
-    float _e19 = vignette(v_uv, 0.2, 0.75);
-    float _e23 = vignette(v_uv, 0.1, 0.9);
+    float _e16 = vignette(in_v_uv, 0.6, 0.75);
+    float _e19 = vignette(in_v_uv, 0.2, 0.75);
+    float _e23 = vignette(in_v_uv, 0.1, 0.9);
     float v = ((_e16 * _e19) * _e23);
     float _e27 = luma_float4_(vec4(_e13, 1.0));
     float _e28 = luma_float3_(_e13);
     float g = (_e27 + _e28);
     float _e34 = banded((g * 0.5));
-    f_color = vec4((_e13 * v), _e34);
-    vec4 _e37 = f_color;
+    out_f_color = vec4((_e13 * v), _e34);
+    vec4 _e37 = out_f_color;
     functions_fs_out _tmp_return = functions_fs_out(_e37);
-    _fs2p_location0 = _tmp_return.f_color;
+    f_color = _tmp_return.f_color;
     return;
 }
 

@@ -14,6 +14,10 @@ struct Surface {
     alpha_cutoff: f32,
 }
 
+struct Uniforms {
+    u_model: mat4x4<f32>,
+}
+
 struct gbuffer_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_view_pos: vec3<f32>,
@@ -33,7 +37,7 @@ var<uniform> frame: Frame;
 @group(0) @binding(1) 
 var<uniform> surface: Surface;
 @group(0) @binding(2) 
-var<uniform> u_model: mat4x4<f32>;
+var<uniform> uniforms: Uniforms;
 @group(0) @binding(3) 
 var albedo_map: texture_2d<f32>;
 @group(0) @binding(4) 
@@ -56,21 +60,21 @@ fn gbuffer_vs(@location(0) a_position: vec3<f32>, @location(1) a_normal: vec3<f3
     var gl_Position: vec4<f32>;
 
     let _e6 = frame.view;
-    let _e8 = u_model;
-    let model_view = (_e6 * _e8);
+    let _e9 = uniforms.u_model;
+    let model_view = (_e6 * _e9);
     let p = (model_view * vec4<f32>(a_position, 1f));
     v_view_pos = p.xyz;
     v_normal = (model_view * vec4<f32>(a_normal, 0f)).xyz;
     v_tangent = vec4<f32>((model_view * vec4<f32>(a_tangent.xyz, 0f)).xyz, a_tangent.w);
     v_uv = a_uv;
-    let _e32 = frame.proj;
-    gl_Position = (_e32 * p);
-    let _e35 = gl_Position;
-    let _e46 = v_view_pos;
-    let _e48 = v_normal;
-    let _e50 = v_tangent;
-    let _e52 = v_uv;
-    return gbuffer_vs_out(vec4<f32>(_e35.x, -(_e35.y), ((_e35.z + _e35.w) * 0.5f), _e35.w), _e46, _e48, _e50, _e52);
+    let _e33 = frame.proj;
+    gl_Position = (_e33 * p);
+    let _e36 = gl_Position;
+    let _e47 = v_view_pos;
+    let _e49 = v_normal;
+    let _e51 = v_tangent;
+    let _e53 = v_uv;
+    return gbuffer_vs_out(vec4<f32>(_e36.x, -(_e36.y), ((_e36.z + _e36.w) * 0.5f), _e36.w), _e47, _e49, _e51, _e53);
 }
 
 @fragment 

@@ -20,9 +20,9 @@ struct gbuffer_fs_out {
     vec4 g_normal;
     vec4 g_position;
 };
-layout(std140) uniform frame_block { Frame frame; };
+layout(std140) uniform frame_ubo { Frame frame; };
 
-layout(std140) uniform surface_block { Surface surface; };
+layout(std140) uniform surface_ubo { Surface surface; };
 
 uniform highp sampler2D albedo_map;
 
@@ -30,34 +30,34 @@ uniform highp sampler2D normal_map;
 
 uniform highp sampler2D orm_map;
 
-smooth in vec3 _vs2fs_location0;
-smooth in vec3 _vs2fs_location1;
-smooth in vec4 _vs2fs_location2;
-smooth in vec2 _vs2fs_location3;
-layout(location = 0) out vec4 _fs2p_location0;
-layout(location = 1) out vec4 _fs2p_location1;
-layout(location = 2) out vec4 _fs2p_location2;
+smooth in vec3 v_view_pos;
+smooth in vec3 v_normal;
+smooth in vec4 v_tangent;
+smooth in vec2 v_uv;
+layout(location = 0) out vec4 g_albedo;
+layout(location = 1) out vec4 g_normal;
+layout(location = 2) out vec4 g_position;
 
 void main() {
-    vec3 v_view_pos = _vs2fs_location0;
-    vec3 v_normal = _vs2fs_location1;
-    vec4 v_tangent = _vs2fs_location2;
-    vec2 v_uv = _vs2fs_location3;
-    vec4 g_albedo = vec4(0.0);
-    vec4 g_normal = vec4(0.0);
-    vec4 g_position = vec4(0.0);
+    vec3 in_v_view_pos = v_view_pos;
+    vec3 in_v_normal = v_normal;
+    vec4 in_v_tangent = v_tangent;
+    vec2 in_v_uv = v_uv;
+    vec4 out_g_albedo = vec4(0.0);
+    vec4 out_g_normal = vec4(0.0);
+    vec4 out_g_position = vec4(0.0);
     vec3 tn = vec3(0.0);
-    vec4 _e6 = texture(albedo_map, vec2(v_uv));
+    vec4 _e6 = texture(albedo_map, vec2(in_v_uv));
     vec4 _e9 = surface.base_color;
     vec4 base = (_e6 * _e9);
     float _e14 = surface.alpha_cutoff;
     if ((base.w < _e14)) {
         discard;
     }
-    vec3 n = normalize(v_normal);
-    vec3 t = normalize((v_tangent.xyz - (n * dot(n, v_tangent.xyz))));
-    vec3 b = (cross(n, t) * v_tangent.w);
-    vec4 _e29 = texture(normal_map, vec2(v_uv));
+    vec3 n = normalize(in_v_normal);
+    vec3 t = normalize((in_v_tangent.xyz - (n * dot(n, in_v_tangent.xyz))));
+    vec3 b = (cross(n, t) * in_v_tangent.w);
+    vec4 _e29 = texture(normal_map, vec2(in_v_uv));
     tn = ((_e29.xyz * 2.0) - vec3(1.0));
     vec3 _e37 = tn;
     float _e40 = surface.normal_scale;
@@ -65,23 +65,23 @@ void main() {
     tn = vec3(_e42.x, _e42.y, _e37.z);
     vec3 _e49 = tn;
     vec3 mapped = normalize((mat3x3(t, b, n) * _e49));
-    vec4 orm = texture(orm_map, vec2(v_uv));
+    vec4 orm = texture(orm_map, vec2(in_v_uv));
     float _e60 = frame.near_far.x;
     float _e65 = frame.near_far.y;
     float _e69 = frame.near_far.x;
-    float linear_depth = ((-(v_view_pos.z) - _e60) / (_e65 - _e69));
+    float linear_depth = ((-(in_v_view_pos.z) - _e60) / (_e65 - _e69));
     float _e77 = surface.roughness;
-    g_albedo = vec4(base.xyz, (orm.y * _e77));
+    out_g_albedo = vec4(base.xyz, (orm.y * _e77));
     float _e89 = surface.metalness;
-    g_normal = vec4(((mapped * 0.5) + vec3(0.5)), (orm.z * _e89));
-    g_position = vec4(v_view_pos, linear_depth);
-    vec4 _e95 = g_albedo;
-    vec4 _e97 = g_normal;
-    vec4 _e99 = g_position;
+    out_g_normal = vec4(((mapped * 0.5) + vec3(0.5)), (orm.z * _e89));
+    out_g_position = vec4(in_v_view_pos, linear_depth);
+    vec4 _e95 = out_g_albedo;
+    vec4 _e97 = out_g_normal;
+    vec4 _e99 = out_g_position;
     gbuffer_fs_out _tmp_return = gbuffer_fs_out(_e95, _e97, _e99);
-    _fs2p_location0 = _tmp_return.g_albedo;
-    _fs2p_location1 = _tmp_return.g_normal;
-    _fs2p_location2 = _tmp_return.g_position;
+    g_albedo = _tmp_return.g_albedo;
+    g_normal = _tmp_return.g_normal;
+    g_position = _tmp_return.g_position;
     return;
 }
 

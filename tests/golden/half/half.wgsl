@@ -2,6 +2,10 @@ diagnostic(off, derivative_uniformity);
 
 enable f16;
 
+struct Uniforms {
+    u_exposure: f32,
+}
+
 struct half_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_uv: vec2<f32>,
@@ -14,7 +18,7 @@ struct half_fs_out {
 const WHITE_POINT: f16 = 4h;
 
 @group(0) @binding(0) 
-var<uniform> u_exposure: f32;
+var<uniform> uniforms: Uniforms;
 
 fn reinhard(c: vec3<f16>) -> vec3<f16> {
     let w2_ = (WHITE_POINT * WHITE_POINT);
@@ -37,10 +41,10 @@ fn half_vs(@location(0) a_pos: vec2<f32>) -> half_vs_out {
 fn half_fs(@location(0) v_uv_1: vec2<f32>) -> half_fs_out {
     var f_color: vec4<f32>;
 
-    let _e4 = u_exposure;
-    let hdr = vec3<f16>((vec3<f32>(v_uv_1, 0.5f) * _e4));
-    let _e7 = reinhard(hdr);
-    f_color = vec4<f32>(vec3<f32>(_e7), f32(max(_e7.x, 0.25h)));
-    let _e16 = f_color;
-    return half_fs_out(_e16);
+    let _e5 = uniforms.u_exposure;
+    let hdr = vec3<f16>((vec3<f32>(v_uv_1, 0.5f) * _e5));
+    let _e8 = reinhard(hdr);
+    f_color = vec4<f32>(vec3<f32>(_e8), f32(max(_e8.x, 0.25h)));
+    let _e17 = f_color;
+    return half_fs_out(_e17);
 }

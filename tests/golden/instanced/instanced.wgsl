@@ -5,6 +5,12 @@ struct Instance {
     color: vec4<f32>,
 }
 
+struct Uniforms {
+    u_view_proj: mat4x4<f32>,
+    u_instances: array<Instance, 64>,
+    u_time: f32,
+}
+
 struct instanced_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_color: vec4<f32>,
@@ -20,11 +26,7 @@ struct instanced_fs_out {
 const MAX_INSTANCES: i32 = 64i;
 
 @group(0) @binding(0) 
-var<uniform> u_view_proj: mat4x4<f32>;
-@group(0) @binding(1) 
-var<uniform> u_instances: array<Instance, 64>;
-@group(0) @binding(2) 
-var<uniform> u_time: f32;
+var<uniform> uniforms: Uniforms;
 
 fn spin(p: vec3<f32>, angle: f32) -> vec3<f32> {
     let c = cos(angle);
@@ -41,25 +43,25 @@ fn instanced_vs(@location(0) a_position: vec3<f32>, @location(1) a_normal: vec3<
     var gl_Position: vec4<f32>;
 
     let _e3 = i32(InstanceID);
-    let inst = u_instances[(_e3 % MAX_INSTANCES)];
-    let _e12 = u_time;
-    let angle_1 = (_e12 + (f32(_e3) * 0.37f));
-    let _e17 = spin(a_position, angle_1);
-    let p_1 = ((_e17 * inst.offset_scale.w) + inst.offset_scale.xyz);
-    let _e25 = spin(a_normal, angle_1);
-    v_normal = _e25;
+    let inst = uniforms.u_instances[(_e3 % MAX_INSTANCES)];
+    let _e14 = uniforms.u_time;
+    let angle_1 = (_e14 + (f32(_e3) * 0.37f));
+    let _e19 = spin(a_position, angle_1);
+    let p_1 = ((_e19 * inst.offset_scale.w) + inst.offset_scale.xyz);
+    let _e27 = spin(a_normal, angle_1);
+    v_normal = _e27;
     v_color = inst.color;
     let corner = (i32(VertexID) % 3i);
     v_bary = vec3<f32>(select(0f, 1f, (corner == 0i)), select(0f, 1f, (corner == 1i)), select(0f, 1f, (corner == 2i)));
     v_instance = _e3;
-    let _e50 = u_view_proj;
-    gl_Position = (_e50 * vec4<f32>(p_1, 1f));
-    let _e55 = gl_Position;
-    let _e66 = v_color;
-    let _e68 = v_normal;
-    let _e70 = v_bary;
-    let _e72 = v_instance;
-    return instanced_vs_out(vec4<f32>(_e55.x, -(_e55.y), ((_e55.z + _e55.w) * 0.5f), _e55.w), _e66, _e68, _e70, _e72);
+    let _e53 = uniforms.u_view_proj;
+    gl_Position = (_e53 * vec4<f32>(p_1, 1f));
+    let _e58 = gl_Position;
+    let _e69 = v_color;
+    let _e71 = v_normal;
+    let _e73 = v_bary;
+    let _e75 = v_instance;
+    return instanced_vs_out(vec4<f32>(_e58.x, -(_e58.y), ((_e58.z + _e58.w) * 0.5f), _e58.w), _e69, _e71, _e73, _e75);
 }
 
 @fragment 

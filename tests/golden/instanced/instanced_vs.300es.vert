@@ -18,18 +18,18 @@ struct instanced_vs_out {
 };
 const int MAX_INSTANCES = 64;
 
-layout(std140) uniform u_view_proj_block { mat4x4 u_view_proj; };
+uniform mat4x4 u_view_proj;
 
-layout(std140) uniform u_instances_block { Instance u_instances[64]; };
+uniform Instance u_instances[64];
 
-layout(std140) uniform u_time_block { float u_time; };
+uniform float u_time;
 
-layout(location = 0) in vec3 _p2vs_location0;
-layout(location = 1) in vec3 _p2vs_location1;
-smooth out vec4 _vs2fs_location0;
-smooth out vec3 _vs2fs_location1;
-smooth out vec3 _vs2fs_location2;
-flat out int _vs2fs_location3;
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+smooth out vec4 v_color;
+smooth out vec3 v_normal;
+smooth out vec3 v_bary;
+flat out int v_instance;
 
 vec3 spin(vec3 p, float angle) {
     float c = cos(angle);
@@ -38,41 +38,41 @@ vec3 spin(vec3 p, float angle) {
 }
 
 void main() {
-    vec3 a_position = _p2vs_location0;
-    vec3 a_normal = _p2vs_location1;
+    vec3 in_a_position = a_position;
+    vec3 in_a_normal = a_normal;
     uint InstanceID = (uint(gl_InstanceID) + naga_vs_first_instance);
     uint VertexID = uint(gl_VertexID);
-    vec4 v_color = vec4(0.0);
-    vec3 v_normal = vec3(0.0);
-    vec3 v_bary = vec3(0.0);
-    int v_instance = 0;
+    vec4 out_v_color = vec4(0.0);
+    vec3 out_v_normal = vec3(0.0);
+    vec3 out_v_bary = vec3(0.0);
+    int out_v_instance = 0;
     vec4 gen_gl_Position = vec4(0.0);
     int _e3 = int(InstanceID);
     int _e5 = int(VertexID);
     Instance inst = u_instances[(_e3 - (MAX_INSTANCES * (_e3 / MAX_INSTANCES)))];
     float _e14 = u_time;
     float angle_1 = (_e14 + (float(_e3) * 0.37));
-    vec3 _e19 = spin(a_position, angle_1);
+    vec3 _e19 = spin(in_a_position, angle_1);
     vec3 p_1 = ((_e19 * inst.offset_scale.w) + inst.offset_scale.xyz);
-    vec3 _e27 = spin(a_normal, angle_1);
-    v_normal = _e27;
-    v_color = inst.color;
+    vec3 _e27 = spin(in_a_normal, angle_1);
+    out_v_normal = _e27;
+    out_v_color = inst.color;
     int corner = (_e5 - (3 * (_e5 / 3)));
-    v_bary = vec3(((corner == 0) ? 1.0 : 0.0), ((corner == 1) ? 1.0 : 0.0), ((corner == 2) ? 1.0 : 0.0));
-    v_instance = _e3;
+    out_v_bary = vec3(((corner == 0) ? 1.0 : 0.0), ((corner == 1) ? 1.0 : 0.0), ((corner == 2) ? 1.0 : 0.0));
+    out_v_instance = _e3;
     mat4x4 _e54 = u_view_proj;
     gen_gl_Position = (_e54 * vec4(p_1, 1.0));
     vec4 _e59 = gen_gl_Position;
-    vec4 _e61 = v_color;
-    vec3 _e63 = v_normal;
-    vec3 _e65 = v_bary;
-    int _e67 = v_instance;
+    vec4 _e61 = out_v_color;
+    vec3 _e63 = out_v_normal;
+    vec3 _e65 = out_v_bary;
+    int _e67 = out_v_instance;
     instanced_vs_out _tmp_return = instanced_vs_out(_e59, _e61, _e63, _e65, _e67);
     gl_Position = _tmp_return.gen_gl_Position;
-    _vs2fs_location0 = _tmp_return.v_color;
-    _vs2fs_location1 = _tmp_return.v_normal;
-    _vs2fs_location2 = _tmp_return.v_bary;
-    _vs2fs_location3 = _tmp_return.v_instance;
+    v_color = _tmp_return.v_color;
+    v_normal = _tmp_return.v_normal;
+    v_bary = _tmp_return.v_bary;
+    v_instance = _tmp_return.v_instance;
     return;
 }
 

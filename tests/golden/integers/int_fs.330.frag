@@ -8,16 +8,16 @@ const uint WRAP = 4294967295u;
 const int TRUNC = -2;
 const float FMOD = 0.5;
 
-flat in ivec2 _vs2fs_location0;
-flat in uint _vs2fs_location1;
-layout(location = 0) out vec4 _fs2p_location0;
+flat in ivec2 v_cell;
+flat in uint v_hash;
+out vec4 f_color;
 
 void main() {
-    ivec2 v_cell = _vs2fs_location0;
-    uint v_hash = _vs2fs_location1;
-    vec4 f_color = vec4(0.0);
+    ivec2 in_v_cell = v_cell;
+    uint in_v_hash = v_hash;
+    vec4 out_f_color = vec4(0.0);
     uvec2 bits = uvec2(0u);
-    ivec2 masked = ((v_cell & ivec2(255)) | (ivec2(1) << uvec2(ivec2(2, 3))));
+    ivec2 masked = ((in_v_cell & ivec2(255)) | (ivec2(1) << uvec2(ivec2(2, 3))));
     ivec2 flipped = (~(masked) ^ ivec2(NEG_MOD, NEG_DIV));
     bits = (uvec2(flipped) >> uvec2(1u, 2u));
     uvec2 _e27 = bits;
@@ -25,11 +25,11 @@ void main() {
     float f = (intBitsToFloat(1065353216) + uintBitsToFloat(floatBitsToUint(0.5)));
     uint _e37 = bits.x;
     uint _e40 = bits.y;
-    float k = ((float(((_e37 + _e40) + (v_hash & WRAP))) + float(TRUNC)) + FMOD);
-    f_color = vec4(fract((k * 0.001)), f, float((int((v_hash % 5u)) - 2)), 1.0);
-    vec4 _e64 = f_color;
+    float k = ((float(((_e37 + _e40) + (in_v_hash & WRAP))) + float(TRUNC)) + FMOD);
+    out_f_color = vec4(fract((k * 0.001)), f, float((int((in_v_hash % 5u)) - 2)), 1.0);
+    vec4 _e64 = out_f_color;
     int_fs_out _tmp_return = int_fs_out(_e64);
-    _fs2p_location0 = _tmp_return.f_color;
+    f_color = _tmp_return.f_color;
     return;
 }
 

@@ -4,11 +4,11 @@ struct int_vs_out {
     ivec2 v_cell;
     uint v_hash;
 };
-layout(std140) uniform u_seed_block { uint u_seed; };
+uniform uint u_seed;
 
-layout(location = 0) in vec2 _p2vs_location0;
-flat out ivec2 _vs2fs_location0;
-flat out uint _vs2fs_location1;
+layout(location = 0) in vec2 a_pos;
+flat out ivec2 v_cell;
+flat out uint v_hash;
 
 uint hash(uint x) {
     uint h = 0u;
@@ -26,25 +26,25 @@ uint hash(uint x) {
 }
 
 void main() {
-    vec2 a_pos = _p2vs_location0;
+    vec2 in_a_pos = a_pos;
     uint VertexID = uint(gl_VertexID);
-    ivec2 v_cell = ivec2(0);
-    uint v_hash = 0u;
+    ivec2 out_v_cell = ivec2(0);
+    uint out_v_hash = 0u;
     vec4 gen_gl_Position = vec4(0.0);
-    ivec2 cell = ivec2(floor((a_pos * 8.0)));
+    ivec2 cell = ivec2(floor((in_a_pos * 8.0)));
     ivec2 _e9 = ivec2(3);
-    v_cell = ((cell - (_e9 * (cell / _e9))) * (cell / ivec2(2, -(2))));
+    out_v_cell = ((cell - (_e9 * (cell / _e9))) * (cell / ivec2(2, -(2))));
     uint _e22 = u_seed;
     uint _e24 = hash((uint(int(VertexID)) + _e22));
-    v_hash = _e24;
-    gen_gl_Position = vec4(a_pos, 0.0, 1.0);
+    out_v_hash = _e24;
+    gen_gl_Position = vec4(in_a_pos, 0.0, 1.0);
     vec4 _e30 = gen_gl_Position;
-    ivec2 _e32 = v_cell;
-    uint _e34 = v_hash;
+    ivec2 _e32 = out_v_cell;
+    uint _e34 = out_v_hash;
     int_vs_out _tmp_return = int_vs_out(_e30, _e32, _e34);
     gl_Position = _tmp_return.gen_gl_Position;
-    _vs2fs_location0 = _tmp_return.v_cell;
-    _vs2fs_location1 = _tmp_return.v_hash;
+    v_cell = _tmp_return.v_cell;
+    v_hash = _tmp_return.v_hash;
     return;
 }
 

@@ -1,5 +1,9 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_seed: u32,
+}
+
 struct int_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) @interpolate(flat) v_cell: vec2<i32>,
@@ -17,7 +21,7 @@ const TRUNC: i32 = -2i;
 const FMOD: f32 = 0.5f;
 
 @group(0) @binding(0) 
-var<uniform> u_seed: u32;
+var<uniform> uniforms: Uniforms;
 
 fn hash(x: u32) -> u32 {
     var h: u32;
@@ -43,14 +47,14 @@ fn int_vs(@location(0) a_pos: vec2<f32>, @builtin(vertex_index) VertexID: u32) -
 
     let cell = vec2<i32>(floor((a_pos * 8f)));
     v_cell = ((cell % vec2(3i)) * (cell / vec2<i32>(2i, -(2i))));
-    let _e20 = u_seed;
-    let _e22 = hash((u32(i32(VertexID)) + _e20));
-    v_hash = _e22;
+    let _e21 = uniforms.u_seed;
+    let _e23 = hash((u32(i32(VertexID)) + _e21));
+    v_hash = _e23;
     gl_Position = vec4<f32>(a_pos, 0f, 1f);
-    let _e28 = gl_Position;
-    let _e39 = v_cell;
-    let _e41 = v_hash;
-    return int_vs_out(vec4<f32>(_e28.x, -(_e28.y), ((_e28.z + _e28.w) * 0.5f), _e28.w), _e39, _e41);
+    let _e29 = gl_Position;
+    let _e40 = v_cell;
+    let _e42 = v_hash;
+    return int_vs_out(vec4<f32>(_e29.x, -(_e29.y), ((_e29.z + _e29.w) * 0.5f), _e29.w), _e40, _e42);
 }
 
 @fragment 

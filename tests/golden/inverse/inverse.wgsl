@@ -1,5 +1,10 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_model: mat4x4<f32>,
+    u_view_proj: mat4x4<f32>,
+}
+
 struct inverse_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_normal: vec3<f32>,
@@ -11,9 +16,7 @@ struct inverse_fs_out {
 }
 
 @group(0) @binding(0) 
-var<uniform> u_model: mat4x4<f32>;
-@group(0) @binding(1) 
-var<uniform> u_view_proj: mat4x4<f32>;
+var<uniform> uniforms: Uniforms;
 
 fn inverse_3x3_(m: mat3x3<f32>) -> mat3x3<f32> {
     let _e5 = cross(m[1], m[2]);
@@ -43,25 +46,25 @@ fn inverse_vs(@location(0) a_pos: vec3<f32>, @location(1) a_normal: vec3<f32>) -
     var v_view_pos: vec3<f32>;
     var gl_Position: vec4<f32>;
 
-    let _e4 = u_model[0];
-    let _e8 = u_model[1];
-    let _e12 = u_model[2];
-    let upper = mat3x3<f32>(_e4.xyz, _e8.xyz, _e12.xyz);
-    let _e15 = inverse_3x3_(upper);
-    let normal_matrix = transpose(_e15);
+    let _e5 = uniforms.u_model[0];
+    let _e10 = uniforms.u_model[1];
+    let _e15 = uniforms.u_model[2];
+    let upper = mat3x3<f32>(_e5.xyz, _e10.xyz, _e15.xyz);
+    let _e18 = inverse_3x3_(upper);
+    let normal_matrix = transpose(_e18);
     v_normal = normalize((normal_matrix * a_normal));
-    let _e21 = u_view_proj;
-    let _e23 = u_model;
-    let clip = (_e21 * (_e23 * vec4<f32>(a_pos, 1f)));
-    let _e29 = u_view_proj;
-    let _e30 = inverse_4x4_(_e29);
-    let world = (_e30 * clip);
+    let _e25 = uniforms.u_view_proj;
+    let _e28 = uniforms.u_model;
+    let clip = (_e25 * (_e28 * vec4<f32>(a_pos, 1f)));
+    let _e35 = uniforms.u_view_proj;
+    let _e36 = inverse_4x4_(_e35);
+    let world = (_e36 * clip);
     v_view_pos = (world.xyz / vec3(world.w));
     gl_Position = clip;
-    let _e39 = gl_Position;
-    let _e50 = v_normal;
-    let _e52 = v_view_pos;
-    return inverse_vs_out(vec4<f32>(_e39.x, -(_e39.y), ((_e39.z + _e39.w) * 0.5f), _e39.w), _e50, _e52);
+    let _e45 = gl_Position;
+    let _e56 = v_normal;
+    let _e58 = v_view_pos;
+    return inverse_vs_out(vec4<f32>(_e45.x, -(_e45.y), ((_e45.z + _e45.w) * 0.5f), _e45.w), _e56, _e58);
 }
 
 @fragment 

@@ -8,14 +8,14 @@ struct inverse_vs_out {
     vec3 v_normal;
     vec3 v_view_pos;
 };
-layout(std140) uniform u_model_block { mat4x4 u_model; };
+uniform mat4x4 u_model;
 
-layout(std140) uniform u_view_proj_block { mat4x4 u_view_proj; };
+uniform mat4x4 u_view_proj;
 
-layout(location = 0) in vec3 _p2vs_location0;
-layout(location = 1) in vec3 _p2vs_location1;
-smooth out vec3 _vs2fs_location0;
-smooth out vec3 _vs2fs_location1;
+layout(location = 0) in vec3 a_pos;
+layout(location = 1) in vec3 a_normal;
+smooth out vec3 v_normal;
+smooth out vec3 v_view_pos;
 
 mat3x3 inverse_3x3_(mat3x3 m) {
     vec3 _e5 = cross(m[1], m[2]);
@@ -40,10 +40,10 @@ mat4x4 inverse_4x4_(mat4x4 m_1) {
 }
 
 void main() {
-    vec3 a_pos = _p2vs_location0;
-    vec3 a_normal = _p2vs_location1;
-    vec3 v_normal = vec3(0.0);
-    vec3 v_view_pos = vec3(0.0);
+    vec3 in_a_pos = a_pos;
+    vec3 in_a_normal = a_normal;
+    vec3 out_v_normal = vec3(0.0);
+    vec3 out_v_view_pos = vec3(0.0);
     vec4 gen_gl_Position = vec4(0.0);
     vec4 _e4 = u_model[0];
     vec4 _e8 = u_model[1];
@@ -51,22 +51,22 @@ void main() {
     mat3x3 upper = mat3x3(_e4.xyz, _e8.xyz, _e12.xyz);
     mat3x3 _e15 = inverse_3x3_(upper);
     mat3x3 normal_matrix = transpose(_e15);
-    v_normal = normalize((normal_matrix * a_normal));
+    out_v_normal = normalize((normal_matrix * in_a_normal));
     mat4x4 _e21 = u_view_proj;
     mat4x4 _e23 = u_model;
-    vec4 clip = (_e21 * (_e23 * vec4(a_pos, 1.0)));
+    vec4 clip = (_e21 * (_e23 * vec4(in_a_pos, 1.0)));
     mat4x4 _e29 = u_view_proj;
     mat4x4 _e30 = inverse_4x4_(_e29);
     vec4 world = (_e30 * clip);
-    v_view_pos = (world.xyz / vec3(world.w));
+    out_v_view_pos = (world.xyz / vec3(world.w));
     gen_gl_Position = clip;
     vec4 _e39 = gen_gl_Position;
-    vec3 _e41 = v_normal;
-    vec3 _e43 = v_view_pos;
+    vec3 _e41 = out_v_normal;
+    vec3 _e43 = out_v_view_pos;
     inverse_vs_out _tmp_return = inverse_vs_out(_e39, _e41, _e43);
     gl_Position = _tmp_return.gen_gl_Position;
-    _vs2fs_location0 = _tmp_return.v_normal;
-    _vs2fs_location1 = _tmp_return.v_view_pos;
+    v_normal = _tmp_return.v_normal;
+    v_view_pos = _tmp_return.v_view_pos;
     return;
 }
 

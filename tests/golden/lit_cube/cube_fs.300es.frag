@@ -24,18 +24,18 @@ struct Lighting {
 struct cube_fs_out {
     vec4 f_color;
 };
-layout(std140) uniform camera_block { Camera camera; };
+layout(std140) uniform camera_ubo { Camera camera; };
 
-layout(std140) uniform material_block { Material material; };
+layout(std140) uniform material_ubo { Material material; };
 
-layout(std140) uniform lighting_block { Lighting lighting; };
+layout(std140) uniform lighting_ubo { Lighting lighting; };
 
 uniform highp sampler2D diffuse_map;
 
-smooth in vec3 _vs2fs_location0;
-smooth in vec3 _vs2fs_location1;
-smooth in vec2 _vs2fs_location2;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec3 v_world;
+smooth in vec3 v_normal;
+smooth in vec2 v_uv;
+out vec4 f_color;
 
 vec3 blinn(vec3 n, vec3 l, vec3 v, vec3 color) {
     vec3 h = normalize((l + v));
@@ -47,18 +47,18 @@ vec3 blinn(vec3 n, vec3 l, vec3 v, vec3 color) {
 }
 
 void main() {
-    vec3 v_world = _vs2fs_location0;
-    vec3 v_normal = _vs2fs_location1;
-    vec2 v_uv = _vs2fs_location2;
+    vec3 in_v_world = v_world;
+    vec3 in_v_normal = v_normal;
+    vec2 in_v_uv = v_uv;
     bool FrontFacing = gl_FrontFacing;
-    vec4 f_color = vec4(0.0);
+    vec4 out_f_color = vec4(0.0);
     vec3 c = vec3(0.0);
-    vec4 _e6 = texture(diffuse_map, vec2(v_uv));
+    vec4 _e6 = texture(diffuse_map, vec2(in_v_uv));
     vec4 _e9 = material.tint;
     vec4 albedo = (_e6 * _e9);
-    vec3 n_1 = normalize((FrontFacing ? v_normal : -(v_normal)));
+    vec3 n_1 = normalize((FrontFacing ? in_v_normal : -(in_v_normal)));
     vec3 _e16 = camera.position;
-    vec3 v_1 = normalize((_e16 - v_world));
+    vec3 v_1 = normalize((_e16 - in_v_world));
     float _e23 = lighting.ambient;
     c = (albedo.xyz * _e23);
     vec3 _e29 = lighting.sun_dir;
@@ -67,7 +67,7 @@ void main() {
     vec3 _e38 = c;
     c = (_e38 + (albedo.xyz * _e36));
     vec3 _e42 = lighting.point_pos;
-    vec3 to_point = (_e42 - v_world);
+    vec3 to_point = (_e42 - in_v_world);
     float dist = length(to_point);
     float _e48 = lighting.point_range;
     float falloff = clamp((1.0 - (dist / _e48)), 0.0, 1.0);
@@ -76,10 +76,10 @@ void main() {
     vec3 _e64 = c;
     c = (_e64 + ((albedo.xyz * _e60) * (falloff * falloff)));
     vec3 _e68 = c;
-    f_color = vec4(_e68, albedo.w);
-    vec4 _e72 = f_color;
+    out_f_color = vec4(_e68, albedo.w);
+    vec4 _e72 = out_f_color;
     cube_fs_out _tmp_return = cube_fs_out(_e72);
-    _fs2p_location0 = _tmp_return.f_color;
+    f_color = _tmp_return.f_color;
     return;
 }
 

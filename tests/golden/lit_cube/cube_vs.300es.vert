@@ -14,44 +14,44 @@ struct cube_vs_out {
     vec3 v_normal;
     vec2 v_uv;
 };
-layout(std140) uniform camera_block { Camera camera; };
+layout(std140) uniform camera_ubo { Camera camera; };
 
-layout(std140) uniform u_model_block { mat4x4 u_model; };
+uniform mat4x4 u_model;
 
-layout(std140) uniform u_normal_matrix_block { mat3x3 u_normal_matrix; };
+uniform mat3x3 u_normal_matrix;
 
-layout(location = 0) in vec3 _p2vs_location0;
-layout(location = 1) in vec3 _p2vs_location1;
-layout(location = 2) in vec2 _p2vs_location2;
-smooth out vec3 _vs2fs_location0;
-smooth out vec3 _vs2fs_location1;
-smooth out vec2 _vs2fs_location2;
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec2 a_uv;
+smooth out vec3 v_world;
+smooth out vec3 v_normal;
+smooth out vec2 v_uv;
 
 void main() {
-    vec3 a_position = _p2vs_location0;
-    vec3 a_normal = _p2vs_location1;
-    vec2 a_uv = _p2vs_location2;
-    vec3 v_world = vec3(0.0);
-    vec3 v_normal = vec3(0.0);
-    vec2 v_uv = vec2(0.0);
+    vec3 in_a_position = a_position;
+    vec3 in_a_normal = a_normal;
+    vec2 in_a_uv = a_uv;
+    vec3 out_v_world = vec3(0.0);
+    vec3 out_v_normal = vec3(0.0);
+    vec2 out_v_uv = vec2(0.0);
     vec4 gen_gl_Position = vec4(0.0);
     mat4x4 _e4 = u_model;
-    vec4 world = (_e4 * vec4(a_position, 1.0));
-    v_world = world.xyz;
+    vec4 world = (_e4 * vec4(in_a_position, 1.0));
+    out_v_world = world.xyz;
     mat3x3 _e12 = u_normal_matrix;
-    v_normal = (_e12 * a_normal);
-    v_uv = a_uv;
+    out_v_normal = (_e12 * in_a_normal);
+    out_v_uv = in_a_uv;
     mat4x4 _e18 = camera.view_proj;
     gen_gl_Position = (_e18 * world);
     vec4 _e21 = gen_gl_Position;
-    vec3 _e23 = v_world;
-    vec3 _e25 = v_normal;
-    vec2 _e27 = v_uv;
+    vec3 _e23 = out_v_world;
+    vec3 _e25 = out_v_normal;
+    vec2 _e27 = out_v_uv;
     cube_vs_out _tmp_return = cube_vs_out(_e21, _e23, _e25, _e27);
     gl_Position = _tmp_return.gen_gl_Position;
-    _vs2fs_location0 = _tmp_return.v_world;
-    _vs2fs_location1 = _tmp_return.v_normal;
-    _vs2fs_location2 = _tmp_return.v_uv;
+    v_world = _tmp_return.v_world;
+    v_normal = _tmp_return.v_normal;
+    v_uv = _tmp_return.v_uv;
     return;
 }
 

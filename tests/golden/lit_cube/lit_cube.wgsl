@@ -21,6 +21,11 @@ struct Lighting {
     point_color: vec4<f32>,
 }
 
+struct Uniforms {
+    u_model: mat4x4<f32>,
+    u_normal_matrix: mat3x3<f32>,
+}
+
 struct cube_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_world: vec3<f32>,
@@ -39,12 +44,10 @@ var<uniform> material: Material;
 @group(0) @binding(2) 
 var<uniform> lighting: Lighting;
 @group(0) @binding(3) 
-var<uniform> u_model: mat4x4<f32>;
+var<uniform> uniforms: Uniforms;
 @group(0) @binding(4) 
-var<uniform> u_normal_matrix: mat3x3<f32>;
-@group(0) @binding(5) 
 var diffuse_map: texture_2d<f32>;
-@group(0) @binding(6) 
+@group(0) @binding(5) 
 var diffuse_map_sampler: sampler;
 
 fn blinn(n: vec3<f32>, l: vec3<f32>, v: vec3<f32>, color: vec3<f32>) -> vec3<f32> {
@@ -63,19 +66,19 @@ fn cube_vs(@location(0) a_position: vec3<f32>, @location(1) a_normal: vec3<f32>,
     var v_uv: vec2<f32>;
     var gl_Position: vec4<f32>;
 
-    let _e4 = u_model;
-    let world = (_e4 * vec4<f32>(a_position, 1f));
+    let _e5 = uniforms.u_model;
+    let world = (_e5 * vec4<f32>(a_position, 1f));
     v_world = world.xyz;
-    let _e12 = u_normal_matrix;
-    v_normal = (_e12 * a_normal);
+    let _e14 = uniforms.u_normal_matrix;
+    v_normal = (_e14 * a_normal);
     v_uv = a_uv;
-    let _e18 = camera.view_proj;
-    gl_Position = (_e18 * world);
-    let _e21 = gl_Position;
-    let _e32 = v_world;
-    let _e34 = v_normal;
-    let _e36 = v_uv;
-    return cube_vs_out(vec4<f32>(_e21.x, -(_e21.y), ((_e21.z + _e21.w) * 0.5f), _e21.w), _e32, _e34, _e36);
+    let _e20 = camera.view_proj;
+    gl_Position = (_e20 * world);
+    let _e23 = gl_Position;
+    let _e34 = v_world;
+    let _e36 = v_normal;
+    let _e38 = v_uv;
+    return cube_vs_out(vec4<f32>(_e23.x, -(_e23.y), ((_e23.z + _e23.w) * 0.5f), _e23.w), _e34, _e36, _e38);
 }
 
 @fragment 

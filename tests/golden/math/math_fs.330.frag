@@ -5,11 +5,11 @@ struct math_fs_out {
 const vec2 OFFSETS[4] = vec2[4](vec2(-1.0, 0.0), vec2(1.0, 0.0), vec2(0.0, -1.0), vec2(0.0, 1.0));
 const float TAU = 6.2831855;
 
-layout(std140) uniform u_time_block { float u_time; };
+uniform float u_time;
 
-smooth in vec2 _vs2fs_location0;
-flat in int _vs2fs_location1;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec2 v_uv;
+flat in int v_id;
+out vec4 f_color;
 
 mat2x2 rotate(float a) {
     float c = cos(a);
@@ -18,14 +18,14 @@ mat2x2 rotate(float a) {
 }
 
 void main() {
-    vec2 v_uv = _vs2fs_location0;
-    int v_id = _vs2fs_location1;
-    vec4 f_color = vec4(0.0);
+    vec2 in_v_uv = v_uv;
+    int in_v_id = v_id;
+    vec4 out_f_color = vec4(0.0);
     vec2 p = vec2(0.0);
     vec3 col = vec3(0.0);
     vec2 sum = vec2(0.0);
     int i = 0;
-    p = ((v_uv * 2.0) - vec2(1.0));
+    p = ((in_v_uv * 2.0) - vec2(1.0));
     float _e10 = u_time;
     mat2x2 _e11 = rotate(_e10);
     vec2 _e13 = p;
@@ -59,7 +59,7 @@ void main() {
     vec3 _e73 = col;
     vec2 _e76 = sum;
     col = ((m * _e73) + vec3(_e76, 0.0));
-    int bits = ((v_id & 7) ^ (v_id >> uint(1)));
+    int bits = ((in_v_id & 7) ^ (in_v_id >> uint(1)));
     float _e88 = p.y;
     float _e91 = p.x;
     float angle = ((atan(_e88, _e91) / TAU) + 0.5);
@@ -68,10 +68,10 @@ void main() {
     vec2 _e112 = p;
     col.y = (smoothstep(0.2, 0.8, length(_e112)) * step(0.5, float((bits - (3 * (bits / 3))))));
     vec3 _e125 = col;
-    f_color = vec4(pow(_e125, vec3((1.0 / 2.2))), 1.0);
-    vec4 _e134 = f_color;
+    out_f_color = vec4(pow(_e125, vec3((1.0 / 2.2))), 1.0);
+    vec4 _e134 = out_f_color;
     math_fs_out _tmp_return = math_fs_out(_e134);
-    _fs2p_location0 = _tmp_return.f_color;
+    f_color = _tmp_return.f_color;
     return;
 }
 

@@ -1,5 +1,10 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_time: f32,
+    u_seed: u32,
+}
+
 struct math_module_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_pos: vec2<f32>,
@@ -10,9 +15,7 @@ struct math_module_fs_out {
 }
 
 @group(0) @binding(0) 
-var<uniform> u_time: f32;
-@group(0) @binding(1) 
-var<uniform> u_seed: u32;
+var<uniform> uniforms: Uniforms;
 
 fn falloff(p: vec3<f32>, light: vec3<f32>) -> f32 {
     let _e2 = (p - light);
@@ -29,19 +32,19 @@ fn math_module_vs(@location(0) a_pos: vec2<f32>) -> math_module_vs_out {
 
     s = f32();
     c = f32();
-    let _e6 = u_time;
-    let sincos_x = ((_e6 * 2f) * 3.1415927f);
+    let _e7 = uniforms.u_time;
+    let sincos_x = ((_e7 * 2f) * 3.1415927f);
     s = sin(sincos_x);
     c = cos(sincos_x);
-    let _e17 = c;
-    let _e19 = s;
-    let _e22 = s;
-    let _e25 = c;
-    v_pos = (mat2x2<f32>(vec2<f32>(_e17, _e19), vec2<f32>(-(_e22), _e25)) * a_pos);
+    let _e18 = c;
+    let _e20 = s;
+    let _e23 = s;
+    let _e26 = c;
+    v_pos = (mat2x2<f32>(vec2<f32>(_e18, _e20), vec2<f32>(-(_e23), _e26)) * a_pos);
     gl_Position = vec4<f32>(((a_pos * 0.9f) + vec2(0.05f)), 0f, 1f);
-    let _e39 = gl_Position;
-    let _e50 = v_pos;
-    return math_module_vs_out(vec4<f32>(_e39.x, -(_e39.y), ((_e39.z + _e39.w) * 0.5f), _e39.w), _e50);
+    let _e40 = gl_Position;
+    let _e51 = v_pos;
+    return math_module_vs_out(vec4<f32>(_e40.x, -(_e40.y), ((_e40.z + _e40.w) * 0.5f), _e40.w), _e51);
 }
 
 @fragment 
@@ -49,24 +52,24 @@ fn math_module_fs(@location(0) v_pos_1: vec2<f32>) -> math_module_fs_out {
     var f_color: vec4<f32>;
 
     let cell = vec2<i32>(floor((v_pos_1 * 8f)));
-    let _e6 = u_seed;
-    let _e7 = bitcast<vec2<u32>>(cell);
-    let _e15 = (((_e7.x + (198491317u * _e7.y)) * 1759714724u) + _e6);
-    let _e20 = ((_e15 ^ (_e15 >> 8u)) + 3039394381u);
-    let _e25 = ((_e20 ^ (_e20 << 8u)) * 458671337u);
-    let grain = (f32(((_e25 ^ (_e25 >> 8u)) & 255u)) / 255f);
+    let _e7 = uniforms.u_seed;
+    let _e8 = bitcast<vec2<u32>>(cell);
+    let _e16 = (((_e8.x + (198491317u * _e8.y)) * 1759714724u) + _e7);
+    let _e21 = ((_e16 ^ (_e16 >> 8u)) + 3039394381u);
+    let _e26 = ((_e21 ^ (_e21 << 8u)) * 458671337u);
+    let grain = (f32(((_e26 ^ (_e26 >> 8u)) & 255u)) / 255f);
     let ring = fract(((1f / length(vec2<f32>(v_pos_1.x, 1f))) + (1f / (1f + dot(v_pos_1, v_pos_1)))));
     let steps = f32(((i32(ceil((ring * 4f))) + i32(round(grain))) - i32(trunc(-(1.5f)))));
-    let _e63 = (u32(cell.x) * 1759714724u);
-    let _e68 = ((_e63 ^ (_e63 >> 8u)) + 3039394381u);
-    let _e73 = ((_e68 ^ (_e68 << 8u)) * 458671337u);
-    let hash = (f32(((_e73 ^ (_e73 >> 8u)) >> 24u)) / 255f);
+    let _e64 = (u32(cell.x) * 1759714724u);
+    let _e69 = ((_e64 ^ (_e64 >> 8u)) + 3039394381u);
+    let _e74 = ((_e69 ^ (_e69 << 8u)) * 458671337u);
+    let hash = (f32(((_e74 ^ (_e74 >> 8u)) >> 24u)) / 255f);
     let p_1 = vec3<f32>(v_pos_1, 0f);
-    let _e88 = falloff(p_1, vec3<f32>(0f, 0f, 1f));
-    let _e91 = (p_1 - vec3(0f));
-    let lit = (_e88 * saturate(dot(_e91, _e91)));
+    let _e89 = falloff(p_1, vec3<f32>(0f, 0f, 1f));
+    let _e92 = (p_1 - vec3(0f));
+    let lit = (_e89 * saturate(dot(_e92, _e92)));
     let m = (mat3x3<f32>(vec3<f32>(1f, 0f, 0f), vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 0f, 1f)) * vec3<f32>(grain, ring, hash));
     f_color = vec4<f32>(((m * vec3(lit)) + vec3((steps * 0.00000011920929f))), 1f);
-    let _e113 = f_color;
-    return math_module_fs_out(_e113);
+    let _e114 = f_color;
+    return math_module_fs_out(_e114);
 }

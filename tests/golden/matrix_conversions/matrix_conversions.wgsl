@@ -1,5 +1,10 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_model: mat4x4<f32>,
+    u_view_proj: mat4x4<f32>,
+}
+
 struct matrix_conversions_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_normal: vec3<f32>,
@@ -11,9 +16,7 @@ struct matrix_conversions_fs_out {
 }
 
 @group(0) @binding(0) 
-var<uniform> u_model: mat4x4<f32>;
-@group(0) @binding(1) 
-var<uniform> u_view_proj: mat4x4<f32>;
+var<uniform> uniforms: Uniforms;
 
 fn inverse_3x3_(m: mat3x3<f32>) -> mat3x3<f32> {
     let _e5 = cross(m[1], m[2]);
@@ -26,24 +29,24 @@ fn matrix_conversions_vs(@location(0) a_pos: vec3<f32>, @location(1) a_normal: v
     var v_skew: vec2<f32>;
     var gl_Position: vec4<f32>;
 
-    let _e3 = u_model;
-    let _e13 = inverse_3x3_(mat3x3<f32>(_e3[0].xyz, _e3[1].xyz, _e3[2].xyz));
-    let normal_matrix = transpose(_e13);
+    let _e4 = uniforms.u_model;
+    let _e14 = inverse_3x3_(mat3x3<f32>(_e4[0].xyz, _e4[1].xyz, _e4[2].xyz));
+    let normal_matrix = transpose(_e14);
     v_normal = (normal_matrix * a_normal);
-    let _e18 = u_model;
-    let flat = mat2x2<f32>(_e18[0].xy, _e18[1].xy);
+    let _e20 = uniforms.u_model;
+    let flat = mat2x2<f32>(_e20[0].xy, _e20[1].xy);
     let mirrored = mat2x2<f32>(-(flat[0]), -(flat[1]));
-    let _e35 = u_view_proj;
-    v_skew = ((mirrored * a_pos.xy) + mat2x3<f32>(_e35[0].xyz, _e35[1].xyz)[1].xy);
-    let _e47 = u_model;
-    let _e56 = mat3x3<f32>(_e47[0].xyz, _e47[1].xyz, _e47[2].xyz);
-    let rotation_only = mat4x4<f32>(vec4<f32>(_e56[0].x, _e56[0].y, _e56[0].z, 0f), vec4<f32>(_e56[1].x, _e56[1].y, _e56[1].z, 0f), vec4<f32>(_e56[2].x, _e56[2].y, _e56[2].z, 0f), vec4<f32>(0f, 0f, 0f, 1f));
-    let _e78 = u_view_proj;
-    gl_Position = ((_e78 * rotation_only) * vec4<f32>(a_pos, 1f));
-    let _e84 = gl_Position;
-    let _e95 = v_normal;
-    let _e97 = v_skew;
-    return matrix_conversions_vs_out(vec4<f32>(_e84.x, -(_e84.y), ((_e84.z + _e84.w) * 0.5f), _e84.w), _e95, _e97);
+    let _e38 = uniforms.u_view_proj;
+    v_skew = ((mirrored * a_pos.xy) + mat2x3<f32>(_e38[0].xyz, _e38[1].xyz)[1].xy);
+    let _e51 = uniforms.u_model;
+    let _e60 = mat3x3<f32>(_e51[0].xyz, _e51[1].xyz, _e51[2].xyz);
+    let rotation_only = mat4x4<f32>(vec4<f32>(_e60[0].x, _e60[0].y, _e60[0].z, 0f), vec4<f32>(_e60[1].x, _e60[1].y, _e60[1].z, 0f), vec4<f32>(_e60[2].x, _e60[2].y, _e60[2].z, 0f), vec4<f32>(0f, 0f, 0f, 1f));
+    let _e83 = uniforms.u_view_proj;
+    gl_Position = ((_e83 * rotation_only) * vec4<f32>(a_pos, 1f));
+    let _e89 = gl_Position;
+    let _e100 = v_normal;
+    let _e102 = v_skew;
+    return matrix_conversions_vs_out(vec4<f32>(_e89.x, -(_e89.y), ((_e89.z + _e89.w) * 0.5f), _e89.w), _e100, _e102);
 }
 
 @fragment 

@@ -4,14 +4,14 @@ struct matrix_conversions_vs_out {
     vec3 v_normal;
     vec2 v_skew;
 };
-layout(std140) uniform u_model_block { mat4x4 u_model; };
+uniform mat4x4 u_model;
 
-layout(std140) uniform u_view_proj_block { mat4x4 u_view_proj; };
+uniform mat4x4 u_view_proj;
 
-layout(location = 0) in vec3 _p2vs_location0;
-layout(location = 1) in vec3 _p2vs_location1;
-smooth out vec3 _vs2fs_location0;
-smooth out vec2 _vs2fs_location1;
+layout(location = 0) in vec3 a_pos;
+layout(location = 1) in vec3 a_normal;
+smooth out vec3 v_normal;
+smooth out vec2 v_skew;
 
 mat3x3 inverse_3x3_(mat3x3 m) {
     vec3 _e5 = cross(m[1], m[2]);
@@ -19,32 +19,32 @@ mat3x3 inverse_3x3_(mat3x3 m) {
 }
 
 void main() {
-    vec3 a_pos = _p2vs_location0;
-    vec3 a_normal = _p2vs_location1;
-    vec3 v_normal = vec3(0.0);
-    vec2 v_skew = vec2(0.0);
+    vec3 in_a_pos = a_pos;
+    vec3 in_a_normal = a_normal;
+    vec3 out_v_normal = vec3(0.0);
+    vec2 out_v_skew = vec2(0.0);
     vec4 gen_gl_Position = vec4(0.0);
     mat4x4 _e3 = u_model;
     mat3x3 _e13 = inverse_3x3_(mat3x3(_e3[0].xyz, _e3[1].xyz, _e3[2].xyz));
     mat3x3 normal_matrix = transpose(_e13);
-    v_normal = (normal_matrix * a_normal);
+    out_v_normal = (normal_matrix * in_a_normal);
     mat4x4 _e18 = u_model;
     mat2x2 flat_ = mat2x2(_e18[0].xy, _e18[1].xy);
     mat2x2 mirrored = mat2x2(-(flat_[0]), -(flat_[1]));
     mat4x4 _e35 = u_view_proj;
-    v_skew = ((mirrored * a_pos.xy) + mat2x3(_e35[0].xyz, _e35[1].xyz)[1].xy);
+    out_v_skew = ((mirrored * in_a_pos.xy) + mat2x3(_e35[0].xyz, _e35[1].xyz)[1].xy);
     mat4x4 _e47 = u_model;
     mat3x3 _e56 = mat3x3(_e47[0].xyz, _e47[1].xyz, _e47[2].xyz);
     mat4x4 rotation_only = mat4x4(vec4(_e56[0].x, _e56[0].y, _e56[0].z, 0.0), vec4(_e56[1].x, _e56[1].y, _e56[1].z, 0.0), vec4(_e56[2].x, _e56[2].y, _e56[2].z, 0.0), vec4(0.0, 0.0, 0.0, 1.0));
     mat4x4 _e78 = u_view_proj;
-    gen_gl_Position = ((_e78 * rotation_only) * vec4(a_pos, 1.0));
+    gen_gl_Position = ((_e78 * rotation_only) * vec4(in_a_pos, 1.0));
     vec4 _e84 = gen_gl_Position;
-    vec3 _e86 = v_normal;
-    vec2 _e88 = v_skew;
+    vec3 _e86 = out_v_normal;
+    vec2 _e88 = out_v_skew;
     matrix_conversions_vs_out _tmp_return = matrix_conversions_vs_out(_e84, _e86, _e88);
     gl_Position = _tmp_return.gen_gl_Position;
-    _vs2fs_location0 = _tmp_return.v_normal;
-    _vs2fs_location1 = _tmp_return.v_skew;
+    v_normal = _tmp_return.v_normal;
+    v_skew = _tmp_return.v_skew;
     return;
 }
 

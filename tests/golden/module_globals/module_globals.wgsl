@@ -1,5 +1,9 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    pc_time: f32,
+}
+
 struct rings_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_uv: vec2<f32>,
@@ -18,7 +22,7 @@ var<private> rings_seen: i32 = i32();
 var<private> glow: f32 = 0f;
 var<private> fade: f32 = 1f;
 @group(0) @binding(0) 
-var<uniform> pc_time: f32;
+var<uniform> uniforms: Uniforms;
 
 fn visit_ring(d: f32) {
     let _e2 = rings_seen;
@@ -57,18 +61,18 @@ fn rings_fs(@location(0) v_uv_1: vec2<f32>) -> rings_fs_out {
         if !((_e10 < RINGS)) {
             break;
         }
-        let _e15 = pc_time;
-        visit_ring((d_1 + (0.01f * sin(_e15))));
+        let _e16 = uniforms.pc_time;
+        visit_ring((d_1 + (0.01f * sin(_e16))));
         continuing {
-            let _e19 = i;
-            i = (_e19 + 1i);
+            let _e20 = i;
+            i = (_e20 + 1i);
         }
     }
-    let _e25 = glow;
-    let c = mix(COOL, WARM, vec3(_e25));
-    let _e30 = fade;
-    let _e33 = rings_seen;
-    f_color = vec4<f32>((c * _e30), (f32(_e33) / f32(RINGS)));
-    let _e40 = f_color;
-    return rings_fs_out(_e40);
+    let _e26 = glow;
+    let c = mix(COOL, WARM, vec3(_e26));
+    let _e31 = fade;
+    let _e34 = rings_seen;
+    f_color = vec4<f32>((c * _e31), (f32(_e34) / f32(RINGS)));
+    let _e41 = f_color;
+    return rings_fs_out(_e41);
 }

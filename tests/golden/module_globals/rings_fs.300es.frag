@@ -17,10 +17,10 @@ float glow = 0.0;
 
 float fade = 1.0;
 
-layout(std140) uniform pc_time_block { float pc_time; };
+uniform float pc_time;
 
-smooth in vec2 _vs2fs_location0;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec2 v_uv;
+out vec4 f_color;
 
 void visit_ring(float d) {
     int _e2 = rings_seen;
@@ -36,10 +36,10 @@ void visit_ring(float d) {
 }
 
 void main() {
-    vec2 v_uv = _vs2fs_location0;
-    vec4 f_color = vec4(0.0);
+    vec2 in_v_uv = v_uv;
+    vec4 out_f_color = vec4(0.0);
     int i = 0;
-    float d_1 = (length((v_uv - vec2(0.5))) * 2.0);
+    float d_1 = (length((in_v_uv - vec2(0.5))) * 2.0);
     i = 0;
     bool loop_init = true;
     while(true) {
@@ -59,10 +59,10 @@ void main() {
     vec3 c = mix(COOL, WARM, vec3(_e25));
     float _e30 = fade;
     int _e33 = rings_seen;
-    f_color = vec4((c * _e30), (float(_e33) / float(RINGS)));
-    vec4 _e40 = f_color;
+    out_f_color = vec4((c * _e30), (float(_e33) / float(RINGS)));
+    vec4 _e40 = out_f_color;
     rings_fs_out _tmp_return = rings_fs_out(_e40);
-    _fs2p_location0 = _tmp_return.f_color;
+    f_color = _tmp_return.f_color;
     return;
 }
 

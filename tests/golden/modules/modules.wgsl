@@ -1,5 +1,9 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_exposure: f32,
+}
+
 struct modules_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_uv: vec2<f32>,
@@ -13,7 +17,7 @@ const RAMP_LO: vec3<f32> = vec3<f32>(0.02f, 0.03f, 0.1f);
 const RAMP_HI: vec3<f32> = vec3<f32>(3f, 2.2f, 1.4f);
 
 @group(0) @binding(0) 
-var<uniform> u_exposure: f32;
+var<uniform> uniforms: Uniforms;
 
 fn palette_ramp(t: f32) -> vec3<f32> {
     return mix(RAMP_LO, RAMP_HI, vec3((t * t)));
@@ -40,10 +44,10 @@ fn modules_fs(@location(0) v_uv_1: vec2<f32>) -> modules_fs_out {
     var f_color: vec4<f32>;
 
     let _e2 = palette_ramp(v_uv_1.x);
-    let _e4 = u_exposure;
-    let hdr = (_e2 * _e4);
-    let _e7 = aces(hdr);
-    f_color = vec4<f32>(_e7, 1f);
-    let _e11 = f_color;
-    return modules_fs_out(_e11);
+    let _e5 = uniforms.u_exposure;
+    let hdr = (_e2 * _e5);
+    let _e8 = aces(hdr);
+    f_color = vec4<f32>(_e8, 1f);
+    let _e12 = f_color;
+    return modules_fs_out(_e12);
 }

@@ -5,10 +5,10 @@ struct modules_fs_out {
 const vec3 RAMP_LO = vec3(0.02, 0.03, 0.1);
 const vec3 RAMP_HI = vec3(3.0, 2.2, 1.4);
 
-layout(std140) uniform u_exposure_block { float u_exposure; };
+uniform float u_exposure;
 
-smooth in vec2 _vs2fs_location0;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec2 v_uv;
+out vec4 f_color;
 
 vec3 palette_ramp(float t) {
     return mix(RAMP_LO, RAMP_HI, vec3((t * t)));
@@ -19,16 +19,16 @@ vec3 aces(vec3 x) {
 }
 
 void main() {
-    vec2 v_uv = _vs2fs_location0;
-    vec4 f_color = vec4(0.0);
-    vec3 _e2 = palette_ramp(v_uv.x);
+    vec2 in_v_uv = v_uv;
+    vec4 out_f_color = vec4(0.0);
+    vec3 _e2 = palette_ramp(in_v_uv.x);
     float _e4 = u_exposure;
     vec3 hdr = (_e2 * _e4);
     vec3 _e7 = aces(hdr);
-    f_color = vec4(_e7, 1.0);
-    vec4 _e11 = f_color;
+    out_f_color = vec4(_e7, 1.0);
+    vec4 _e11 = out_f_color;
     modules_fs_out _tmp_return = modules_fs_out(_e11);
-    _fs2p_location0 = _tmp_return.f_color;
+    f_color = _tmp_return.f_color;
     return;
 }
 

@@ -1,5 +1,9 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_view_proj: mat4x4<f32>,
+}
+
 struct gbuffer_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_normal: vec3<f32>,
@@ -14,7 +18,7 @@ struct gbuffer_fs_out {
 }
 
 @group(0) @binding(0) 
-var<uniform> u_view_proj: mat4x4<f32>;
+var<uniform> uniforms: Uniforms;
 
 @vertex 
 fn gbuffer_vs(@location(0) a_pos: vec3<f32>, @location(1) a_normal: vec3<f32>, @location(2) a_uv: vec2<f32>, @builtin(vertex_index) VertexID: u32, @builtin(instance_index) InstanceID: u32) -> gbuffer_vs_out {
@@ -23,17 +27,17 @@ fn gbuffer_vs(@location(0) a_pos: vec3<f32>, @location(1) a_normal: vec3<f32>, @
     var v_depth: f32;
     var gl_Position: vec4<f32>;
 
-    let _e8 = u_view_proj;
-    let p = (_e8 * vec4<f32>(a_pos, 1f));
+    let _e9 = uniforms.u_view_proj;
+    let p = (_e9 * vec4<f32>(a_pos, 1f));
     v_normal = a_normal;
     v_uv = (a_uv + vec2<f32>((f32(i32(VertexID)) * 0f), (f32(i32(InstanceID)) * 0f)));
     v_depth = (p.z / p.w);
     gl_Position = p;
-    let _e28 = gl_Position;
-    let _e39 = v_normal;
-    let _e41 = v_uv;
-    let _e43 = v_depth;
-    return gbuffer_vs_out(vec4<f32>(_e28.x, -(_e28.y), ((_e28.z + _e28.w) * 0.5f), _e28.w), _e39, _e41, _e43);
+    let _e29 = gl_Position;
+    let _e40 = v_normal;
+    let _e42 = v_uv;
+    let _e44 = v_depth;
+    return gbuffer_vs_out(vec4<f32>(_e29.x, -(_e29.y), ((_e29.z + _e29.w) * 0.5f), _e29.w), _e40, _e42, _e44);
 }
 
 @fragment 

@@ -13,8 +13,8 @@ uniform highp sampler2D mask;
 
 uniform highp sampler2DShadow depth;
 
-smooth in vec2 _vs2fs_location0;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec2 v_uv;
+out vec4 f_color;
 
 float march(vec2 uv) {
     float t = 0.0;
@@ -42,22 +42,22 @@ float march(vec2 uv) {
 }
 
 void main() {
-    vec2 v_uv = _vs2fs_location0;
-    vec4 f_color = vec4(0.0);
+    vec2 in_v_uv = v_uv;
+    vec4 out_f_color = vec4(0.0);
     vec4 c = vec4(0.0);
     int i = 0;
-    if ((v_uv.x < 0.1)) {
-        f_color = vec4(0.0);
-        vec4 _e8 = f_color;
+    if ((in_v_uv.x < 0.1)) {
+        out_f_color = vec4(0.0);
+        vec4 _e8 = out_f_color;
         nonuniform_fs_out _tmp_return = nonuniform_fs_out(_e8);
-        _fs2p_location0 = _tmp_return.f_color;
+        f_color = _tmp_return.f_color;
         return;
     }
-    vec4 m_1 = texture(mask, vec2(v_uv));
+    vec4 m_1 = texture(mask, vec2(in_v_uv));
     if ((m_1.w < 0.5)) {
         discard;
     }
-    vec4 _e19 = texture(albedo, vec2(v_uv));
+    vec4 _e19 = texture(albedo, vec2(in_v_uv));
     c = _e19;
     i = 0;
     bool loop_init = true;
@@ -76,18 +76,18 @@ void main() {
             break;
         }
         int _e33 = i;
-        vec4 _e41 = texture(albedo, vec2((v_uv + vec2((float(_e33) * 0.01)))));
+        vec4 _e41 = texture(albedo, vec2((in_v_uv + vec2((float(_e33) * 0.01)))));
         vec4 _e44 = c;
         c = (_e44 + (_e41 * 0.1));
     }
-    float _e55 = texture(depth, vec3(v_uv, 0.5));
+    float _e55 = texture(depth, vec3(in_v_uv, 0.5));
     float lit = ((m_1.y > 0.5) ? _e55 : 1.0);
     vec4 _e60 = c;
-    float _e63 = march(v_uv);
-    f_color = vec4(((_e60.xyz * lit) * _e63), 1.0);
-    vec4 _e68 = f_color;
+    float _e63 = march(in_v_uv);
+    out_f_color = vec4(((_e60.xyz * lit) * _e63), 1.0);
+    vec4 _e68 = out_f_color;
     nonuniform_fs_out _tmp_return = nonuniform_fs_out(_e68);
-    _fs2p_location0 = _tmp_return.f_color;
+    f_color = _tmp_return.f_color;
     return;
 }
 

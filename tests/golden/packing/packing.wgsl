@@ -1,5 +1,9 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_albedo: vec4<f32>,
+}
+
 struct packing_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_normal: vec3<f32>,
@@ -11,7 +15,7 @@ struct packing_fs_out {
 }
 
 @group(0) @binding(0) 
-var<uniform> u_albedo: vec4<f32>;
+var<uniform> uniforms: Uniforms;
 
 @vertex 
 fn packing_vs(@location(0) a_pos: vec2<f32>) -> packing_vs_out {
@@ -31,16 +35,16 @@ fn packing_fs(@location(0) v_normal_1: vec3<f32>, @builtin(position) FragCoord: 
     var f_check: vec4<f32>;
 
     let n = normalize(v_normal_1);
-    let _e4 = u_albedo;
-    let albedo = pack4x8unorm(_e4);
+    let _e5 = uniforms.u_albedo;
+    let albedo = pack4x8unorm(_e5);
     let normal = (pack2x16snorm(n.xy) ^ pack2x16unorm(((n.xy * 0.5f) + vec2(0.5f))));
     let depth = pack2x16float(vec2<f32>(FragCoord.z, n.z));
     g_packed = vec4<u32>(albedo, normal, depth, pack4x8snorm(vec4<f32>(n, -(1f))));
-    let _e29 = g_packed.w;
-    let back = (unpack4x8unorm(albedo) + unpack4x8snorm(_e29));
+    let _e30 = g_packed.w;
+    let back = (unpack4x8unorm(albedo) + unpack4x8snorm(_e30));
     let nz = ((unpack2x16float(depth).y + (unpack2x16snorm(normal).x * 0f)) + (unpack2x16unorm(normal).y * 0f));
     f_check = vec4<f32>(back.xyz, nz);
-    let _e48 = g_packed;
-    let _e50 = f_check;
-    return packing_fs_out(_e48, _e50);
+    let _e49 = g_packed;
+    let _e51 = f_check;
+    return packing_fs_out(_e49, _e51);
 }

@@ -7,20 +7,20 @@ struct packing_vs_out {
     vec4 gen_gl_Position;
     vec3 v_normal;
 };
-layout(location = 0) in vec2 _p2vs_location0;
-smooth out vec3 _vs2fs_location0;
+layout(location = 0) in vec2 a_pos;
+smooth out vec3 v_normal;
 
 void main() {
-    vec2 a_pos = _p2vs_location0;
-    vec3 v_normal = vec3(0.0);
+    vec2 in_a_pos = a_pos;
+    vec3 out_v_normal = vec3(0.0);
     vec4 gen_gl_Position = vec4(0.0);
-    v_normal = normalize(vec3(a_pos, 1.0));
-    gen_gl_Position = vec4(a_pos, 0.0, 1.0);
+    out_v_normal = normalize(vec3(in_a_pos, 1.0));
+    gen_gl_Position = vec4(in_a_pos, 0.0, 1.0);
     vec4 _e10 = gen_gl_Position;
-    vec3 _e12 = v_normal;
+    vec3 _e12 = out_v_normal;
     packing_vs_out _tmp_return = packing_vs_out(_e10, _e12);
     gl_Position = _tmp_return.gen_gl_Position;
-    _vs2fs_location0 = _tmp_return.v_normal;
+    v_normal = _tmp_return.v_normal;
     return;
 }
 

@@ -10,8 +10,8 @@ struct Ray {
 struct params_fs_out {
     vec4 f_color;
 };
-smooth in vec2 _vs2fs_location0;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec2 v_uv;
+out vec4 f_color;
 
 vec3 along(Ray r, float t) {
     return (r.origin + (r.dir * t));
@@ -47,17 +47,17 @@ vec3 blend(vec3 a, vec3 b, float t_1, vec2 uv) {
 }
 
 void main() {
-    vec2 v_uv = _vs2fs_location0;
-    vec4 f_color = vec4(0.0);
-    Ray r_1 = Ray(vec3(0.0), normalize(vec3(v_uv, -(1.0))));
+    vec2 in_v_uv = v_uv;
+    vec4 out_f_color = vec4(0.0);
+    Ray r_1 = Ray(vec3(0.0), normalize(vec3(in_v_uv, -(1.0))));
     float xs_1[4] = float[4](0.1, 0.2, 0.3, 0.4);
     vec3 _e14 = along(r_1, 2.0);
     float _e20 = total(xs_1, 3);
-    vec3 _e21 = blend(_e14, vec3(1.0, 0.5, 0.0), _e20, v_uv);
-    f_color = vec4(_e21, 1.0);
-    vec4 _e26 = f_color;
+    vec3 _e21 = blend(_e14, vec3(1.0, 0.5, 0.0), _e20, in_v_uv);
+    out_f_color = vec4(_e21, 1.0);
+    vec4 _e26 = out_f_color;
     params_fs_out _tmp_return = params_fs_out(_e26);
-    _fs2p_location0 = _tmp_return.f_color;
+    f_color = _tmp_return.f_color;
     return;
 }
 

@@ -7,20 +7,20 @@ struct params_vs_out {
     vec4 gen_gl_Position;
     vec2 v_uv;
 };
-layout(location = 0) in vec2 _p2vs_location0;
-smooth out vec2 _vs2fs_location0;
+layout(location = 0) in vec2 a_pos;
+smooth out vec2 v_uv;
 
 void main() {
-    vec2 a_pos = _p2vs_location0;
-    vec2 v_uv = vec2(0.0);
+    vec2 in_a_pos = a_pos;
+    vec2 out_v_uv = vec2(0.0);
     vec4 gen_gl_Position = vec4(0.0);
-    v_uv = a_pos;
-    gen_gl_Position = vec4(a_pos, 0.0, 1.0);
+    out_v_uv = in_a_pos;
+    gen_gl_Position = vec4(in_a_pos, 0.0, 1.0);
     vec4 _e7 = gen_gl_Position;
-    vec2 _e9 = v_uv;
+    vec2 _e9 = out_v_uv;
     params_vs_out _tmp_return = params_vs_out(_e7, _e9);
     gl_Position = _tmp_return.gen_gl_Position;
-    _vs2fs_location0 = _tmp_return.v_uv;
+    v_uv = _tmp_return.v_uv;
     return;
 }
 

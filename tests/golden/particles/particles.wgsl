@@ -1,5 +1,12 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_view_proj: mat4x4<f32>,
+    u_time: f32,
+    u_size: f32,
+    u_gravity: vec3<f32>,
+}
+
 struct particles_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_age: f32,
@@ -11,16 +18,10 @@ struct particles_fs_out {
 }
 
 @group(0) @binding(0) 
-var<uniform> u_view_proj: mat4x4<f32>;
+var<uniform> uniforms: Uniforms;
 @group(0) @binding(1) 
-var<uniform> u_time: f32;
-@group(0) @binding(2) 
-var<uniform> u_size: f32;
-@group(0) @binding(3) 
-var<uniform> u_gravity: vec3<f32>;
-@group(0) @binding(4) 
 var sprite: texture_2d<f32>;
-@group(0) @binding(5) 
+@group(0) @binding(2) 
 var sprite_sampler: sampler;
 
 @vertex 
@@ -30,24 +31,24 @@ fn particles_vs(@location(0) a_origin: vec3<f32>, @location(1) a_velocity: vec3<
     var gl_PointSize: f32;
     var gl_Position: vec4<f32>;
 
-    let _e5 = u_time;
-    let _e6 = (_e5 - a_birth);
-    let t = (_e6 - (a_life * floor((_e6 / a_life))));
+    let _e6 = uniforms.u_time;
+    let _e7 = (_e6 - a_birth);
+    let t = (_e7 - (a_life * floor((_e7 / a_life))));
     v_age = (t / a_life);
-    let _e16 = u_gravity;
-    let p = ((a_origin + (a_velocity * t)) + (_e16 * ((0.5f * t) * t)));
-    let _e23 = u_view_proj;
-    let clip = (_e23 * vec4<f32>(p, 1f));
-    let _e29 = u_size;
-    let _e32 = v_age;
-    gl_PointSize = clamp(((_e29 * (1f - (_e32 * 0.5f))) / max(clip.w, 0.001f)), 1f, 64f);
-    let _e56 = v_age;
-    v_color = mix(vec4<f32>(1f, 0.9f, 0.5f, 1f), vec4<f32>(0.8f, 0.2f, 0.1f, 0f), vec4(_e56));
+    let _e18 = uniforms.u_gravity;
+    let p = ((a_origin + (a_velocity * t)) + (_e18 * ((0.5f * t) * t)));
+    let _e26 = uniforms.u_view_proj;
+    let clip = (_e26 * vec4<f32>(p, 1f));
+    let _e33 = uniforms.u_size;
+    let _e36 = v_age;
+    gl_PointSize = clamp(((_e33 * (1f - (_e36 * 0.5f))) / max(clip.w, 0.001f)), 1f, 64f);
+    let _e60 = v_age;
+    v_color = mix(vec4<f32>(1f, 0.9f, 0.5f, 1f), vec4<f32>(0.8f, 0.2f, 0.1f, 0f), vec4(_e60));
     gl_Position = clip;
-    let _e61 = gl_Position;
-    let _e72 = v_age;
-    let _e74 = v_color;
-    return particles_vs_out(vec4<f32>(_e61.x, -(_e61.y), ((_e61.z + _e61.w) * 0.5f), _e61.w), _e72, _e74);
+    let _e65 = gl_Position;
+    let _e76 = v_age;
+    let _e78 = v_color;
+    return particles_vs_out(vec4<f32>(_e65.x, -(_e65.y), ((_e65.z + _e65.w) * 0.5f), _e65.w), _e76, _e78);
 }
 
 @fragment 

@@ -4,27 +4,27 @@ struct particles_fs_out {
 };
 uniform sampler2D sprite;
 
-smooth in vec4 _vs2fs_location1;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec4 v_color;
+out vec4 f_color;
 
 void main() {
-    vec4 v_color = _vs2fs_location1;
+    vec4 in_v_color = v_color;
     vec2 PointCoord = gl_PointCoord;
-    vec4 f_color = vec4(0.0);
+    vec4 out_f_color = vec4(0.0);
     vec2 d = ((PointCoord * 2.0) - vec2(1.0));
     float r2_ = dot(d, d);
     if ((r2_ > 1.0)) {
         discard;
     }
     vec4 tex = texture(sprite, vec2(PointCoord));
-    float alpha = ((v_color.w * tex.w) * (1.0 - r2_));
+    float alpha = ((in_v_color.w * tex.w) * (1.0 - r2_));
     if ((alpha < 0.01)) {
         discard;
     }
-    f_color = vec4((v_color.xyz * tex.xyz), alpha);
-    vec4 _e27 = f_color;
+    out_f_color = vec4((in_v_color.xyz * tex.xyz), alpha);
+    vec4 _e27 = out_f_color;
     particles_fs_out _tmp_return = particles_fs_out(_e27);
-    _fs2p_location0 = _tmp_return.f_color;
+    f_color = _tmp_return.f_color;
     return;
 }
 

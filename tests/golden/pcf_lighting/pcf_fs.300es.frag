@@ -9,15 +9,15 @@ struct pcf_fs_out {
 };
 const int PCF_RADIUS = 2;
 
-layout(std140) uniform u_light_dir_block { vec3 u_light_dir; };
+uniform vec3 u_light_dir;
 
-layout(std140) uniform u_color_block { vec4 u_color; };
+uniform vec4 u_color;
 
 uniform highp sampler2DShadow shadow_map;
 
-smooth in vec3 _vs2fs_location0;
-smooth in vec4 _vs2fs_location1;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec3 v_normal;
+smooth in vec4 v_light_pos;
+out vec4 f_color;
 
 float pcf_5x5_(vec3 coord, float bias) {
     float lit = 0.0;
@@ -63,15 +63,15 @@ float pcf_5x5_(vec3 coord, float bias) {
 }
 
 void main() {
-    vec3 v_normal = _vs2fs_location0;
-    vec4 v_light_pos = _vs2fs_location1;
-    vec4 f_color = vec4(0.0);
+    vec3 in_v_normal = v_normal;
+    vec4 in_v_light_pos = v_light_pos;
+    vec4 out_f_color = vec4(0.0);
     float shadow = 0.0;
-    vec3 n_1 = normalize(v_normal);
+    vec3 n_1 = normalize(in_v_normal);
     vec3 _e4 = u_light_dir;
     vec3 l = normalize(-(_e4));
     float ndotl = max(dot(n_1, l), 0.0);
-    vec3 coord_1 = (((v_light_pos.xyz / vec3(v_light_pos.w)) * 0.5) + vec3(0.5));
+    vec3 coord_1 = (((in_v_light_pos.xyz / vec3(in_v_light_pos.w)) * 0.5) + vec3(0.5));
     shadow = 1.0;
     if ((coord_1.z <= 1.0)) {
         float bias_1 = max((0.005 * (1.0 - ndotl)), 0.0005);
@@ -82,10 +82,10 @@ void main() {
     vec4 _e50 = u_color;
     float _e56 = shadow;
     float _e62 = u_color.w;
-    f_color = vec4((_e50.xyz * (0.15 + ((0.85 * ndotl) * _e56))), _e62);
-    vec4 _e65 = f_color;
+    out_f_color = vec4((_e50.xyz * (0.15 + ((0.85 * ndotl) * _e56))), _e62);
+    vec4 _e65 = out_f_color;
     pcf_fs_out _tmp_return = pcf_fs_out(_e65);
-    _fs2p_location0 = _tmp_return.f_color;
+    f_color = _tmp_return.f_color;
     return;
 }
 

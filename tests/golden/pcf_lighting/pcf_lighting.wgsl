@@ -1,5 +1,13 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_model: mat4x4<f32>,
+    u_view_proj: mat4x4<f32>,
+    u_light_view_proj: mat4x4<f32>,
+    u_light_dir: vec3<f32>,
+    u_color: vec4<f32>,
+}
+
 struct pcf_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_normal: vec3<f32>,
@@ -13,18 +21,10 @@ struct pcf_fs_out {
 const PCF_RADIUS: i32 = 2i;
 
 @group(0) @binding(0) 
-var<uniform> u_model: mat4x4<f32>;
+var<uniform> uniforms: Uniforms;
 @group(0) @binding(1) 
-var<uniform> u_view_proj: mat4x4<f32>;
-@group(0) @binding(2) 
-var<uniform> u_light_view_proj: mat4x4<f32>;
-@group(0) @binding(3) 
-var<uniform> u_light_dir: vec3<f32>;
-@group(0) @binding(4) 
-var<uniform> u_color: vec4<f32>;
-@group(0) @binding(5) 
 var shadow_map: texture_depth_2d;
-@group(0) @binding(6) 
+@group(0) @binding(2) 
 var shadow_map_sampler: sampler_comparison;
 
 fn pcf_5x5_(coord: vec3<f32>, bias: f32) -> f32 {
@@ -74,18 +74,18 @@ fn pcf_vs(@location(0) a_position: vec3<f32>, @location(1) a_normal: vec3<f32>) 
     var v_light_pos: vec4<f32>;
     var gl_Position: vec4<f32>;
 
-    let _e3 = u_model;
-    let world = (_e3 * vec4<f32>(a_position, 1f));
-    let _e9 = u_model;
-    v_normal = (_e9 * vec4<f32>(a_normal, 0f)).xyz;
-    let _e16 = u_light_view_proj;
-    v_light_pos = (_e16 * world);
-    let _e20 = u_view_proj;
-    gl_Position = (_e20 * world);
-    let _e23 = gl_Position;
-    let _e34 = v_normal;
-    let _e36 = v_light_pos;
-    return pcf_vs_out(vec4<f32>(_e23.x, -(_e23.y), ((_e23.z + _e23.w) * 0.5f), _e23.w), _e34, _e36);
+    let _e4 = uniforms.u_model;
+    let world = (_e4 * vec4<f32>(a_position, 1f));
+    let _e11 = uniforms.u_model;
+    v_normal = (_e11 * vec4<f32>(a_normal, 0f)).xyz;
+    let _e19 = uniforms.u_light_view_proj;
+    v_light_pos = (_e19 * world);
+    let _e24 = uniforms.u_view_proj;
+    gl_Position = (_e24 * world);
+    let _e27 = gl_Position;
+    let _e38 = v_normal;
+    let _e40 = v_light_pos;
+    return pcf_vs_out(vec4<f32>(_e27.x, -(_e27.y), ((_e27.z + _e27.w) * 0.5f), _e27.w), _e38, _e40);
 }
 
 @fragment 
@@ -94,21 +94,21 @@ fn pcf_fs(@location(0) v_normal_1: vec3<f32>, @location(1) v_light_pos_1: vec4<f
     var shadow: f32;
 
     let n_1 = normalize(v_normal_1);
-    let _e4 = u_light_dir;
-    let l = normalize(-(_e4));
+    let _e5 = uniforms.u_light_dir;
+    let l = normalize(-(_e5));
     let ndotl = max(dot(n_1, l), 0f);
     let coord_1 = (((v_light_pos_1.xyz / vec3(v_light_pos_1.w)) * 0.5f) + vec3(0.5f));
     shadow = 1f;
     if (coord_1.z <= 1f) {
         let bias_1 = max((0.005f * (1f - ndotl)), 0.0005f);
         let edge = min(min(coord_1.x, coord_1.y), min((1f - coord_1.x), (1f - coord_1.y)));
-        let _e43 = pcf_5x5_(coord_1, bias_1);
-        shadow = mix(1f, _e43, saturate((edge * 20f)));
+        let _e44 = pcf_5x5_(coord_1, bias_1);
+        shadow = mix(1f, _e44, saturate((edge * 20f)));
     }
-    let _e50 = u_color;
-    let _e56 = shadow;
-    let _e62 = u_color.w;
-    f_color = vec4<f32>((_e50.xyz * (0.15f + ((0.85f * ndotl) * _e56))), _e62);
-    let _e65 = f_color;
-    return pcf_fs_out(_e65);
+    let _e52 = uniforms.u_color;
+    let _e58 = shadow;
+    let _e65 = uniforms.u_color.w;
+    f_color = vec4<f32>((_e52.xyz * (0.15f + ((0.85f * ndotl) * _e58))), _e65);
+    let _e68 = f_color;
+    return pcf_fs_out(_e68);
 }

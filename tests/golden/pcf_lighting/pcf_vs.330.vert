@@ -4,38 +4,38 @@ struct pcf_vs_out {
     vec3 v_normal;
     vec4 v_light_pos;
 };
-layout(std140) uniform u_model_block { mat4x4 u_model; };
+uniform mat4x4 u_model;
 
-layout(std140) uniform u_view_proj_block { mat4x4 u_view_proj; };
+uniform mat4x4 u_view_proj;
 
-layout(std140) uniform u_light_view_proj_block { mat4x4 u_light_view_proj; };
+uniform mat4x4 u_light_view_proj;
 
-layout(location = 0) in vec3 _p2vs_location0;
-layout(location = 1) in vec3 _p2vs_location1;
-smooth out vec3 _vs2fs_location0;
-smooth out vec4 _vs2fs_location1;
+layout(location = 0) in vec3 a_position;
+layout(location = 1) in vec3 a_normal;
+smooth out vec3 v_normal;
+smooth out vec4 v_light_pos;
 
 void main() {
-    vec3 a_position = _p2vs_location0;
-    vec3 a_normal = _p2vs_location1;
-    vec3 v_normal = vec3(0.0);
-    vec4 v_light_pos = vec4(0.0);
+    vec3 in_a_position = a_position;
+    vec3 in_a_normal = a_normal;
+    vec3 out_v_normal = vec3(0.0);
+    vec4 out_v_light_pos = vec4(0.0);
     vec4 gen_gl_Position = vec4(0.0);
     mat4x4 _e3 = u_model;
-    vec4 world = (_e3 * vec4(a_position, 1.0));
+    vec4 world = (_e3 * vec4(in_a_position, 1.0));
     mat4x4 _e9 = u_model;
-    v_normal = (_e9 * vec4(a_normal, 0.0)).xyz;
+    out_v_normal = (_e9 * vec4(in_a_normal, 0.0)).xyz;
     mat4x4 _e16 = u_light_view_proj;
-    v_light_pos = (_e16 * world);
+    out_v_light_pos = (_e16 * world);
     mat4x4 _e20 = u_view_proj;
     gen_gl_Position = (_e20 * world);
     vec4 _e23 = gen_gl_Position;
-    vec3 _e25 = v_normal;
-    vec4 _e27 = v_light_pos;
+    vec3 _e25 = out_v_normal;
+    vec4 _e27 = out_v_light_pos;
     pcf_vs_out _tmp_return = pcf_vs_out(_e23, _e25, _e27);
     gl_Position = _tmp_return.gen_gl_Position;
-    _vs2fs_location0 = _tmp_return.v_normal;
-    _vs2fs_location1 = _tmp_return.v_light_pos;
+    v_normal = _tmp_return.v_normal;
+    v_light_pos = _tmp_return.v_light_pos;
     return;
 }
 

@@ -1,5 +1,9 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_size: f32,
+}
+
 struct points_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
 }
@@ -9,18 +13,18 @@ struct points_fs_out {
 }
 
 @group(0) @binding(0) 
-var<uniform> u_size: f32;
+var<uniform> uniforms: Uniforms;
 
 @vertex 
 fn points_vs(@location(0) a_pos: vec3<f32>) -> points_vs_out {
     var gl_PointSize: f32;
     var gl_Position: vec4<f32>;
 
-    let _e3 = u_size;
-    gl_PointSize = (_e3 / max(a_pos.z, 0.1f));
+    let _e4 = uniforms.u_size;
+    gl_PointSize = (_e4 / max(a_pos.z, 0.1f));
     gl_Position = vec4<f32>(a_pos, 1f);
-    let _e12 = gl_Position;
-    return points_vs_out(vec4<f32>(_e12.x, -(_e12.y), ((_e12.z + _e12.w) * 0.5f), _e12.w));
+    let _e13 = gl_Position;
+    return points_vs_out(vec4<f32>(_e13.x, -(_e13.y), ((_e13.z + _e13.w) * 0.5f), _e13.w));
 }
 
 @fragment 

@@ -2,19 +2,19 @@
 struct points_fs_out {
     vec4 f_color;
 };
-layout(location = 0) out vec4 _fs2p_location0;
+out vec4 f_color;
 
 void main() {
     vec2 PointCoord = gl_PointCoord;
-    vec4 f_color = vec4(0.0);
+    vec4 out_f_color = vec4(0.0);
     vec2 d = (PointCoord - vec2(0.5));
     if ((dot(d, d) > 0.25)) {
         discard;
     }
-    f_color = vec4(PointCoord, 1.0, 1.0);
-    vec4 _e12 = f_color;
+    out_f_color = vec4(PointCoord, 1.0, 1.0);
+    vec4 _e12 = out_f_color;
     points_fs_out _tmp_return = points_fs_out(_e12);
-    _fs2p_location0 = _tmp_return.f_color;
+    f_color = _tmp_return.f_color;
     return;
 }
 

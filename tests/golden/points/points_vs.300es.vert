@@ -7,17 +7,17 @@ struct points_vs_out {
     vec4 gen_gl_Position;
     float gen_gl_PointSize;
 };
-layout(std140) uniform u_size_block { float u_size; };
+uniform float u_size;
 
-layout(location = 0) in vec3 _p2vs_location0;
+layout(location = 0) in vec3 a_pos;
 
 void main() {
-    vec3 a_pos = _p2vs_location0;
+    vec3 in_a_pos = a_pos;
     float gen_gl_PointSize = 0.0;
     vec4 gen_gl_Position = vec4(0.0);
     float _e3 = u_size;
-    gen_gl_PointSize = (_e3 / max(a_pos.z, 0.1));
-    gen_gl_Position = vec4(a_pos, 1.0);
+    gen_gl_PointSize = (_e3 / max(in_a_pos.z, 0.1));
+    gen_gl_Position = vec4(in_a_pos, 1.0);
     vec4 _e12 = gen_gl_Position;
     float _e14 = gen_gl_PointSize;
     points_vs_out _tmp_return = points_vs_out(_e12, _e14);

@@ -1,5 +1,10 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_mvp: mat4x4<f32>,
+    u_light_dir: vec3<f32>,
+}
+
 struct pp_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_normal: vec3<f32>,
@@ -10,9 +15,7 @@ struct pp_fs_out {
 }
 
 @group(0) @binding(0) 
-var<uniform> u_mvp: mat4x4<f32>;
-@group(0) @binding(1) 
-var<uniform> u_light_dir: vec3<f32>;
+var<uniform> uniforms: Uniforms;
 
 fn lambert(n: vec3<f32>, l: vec3<f32>) -> f32 {
     return (max(dot(n, l), 0f) + 0.15f);
@@ -24,11 +27,11 @@ fn pp_vs(@location(0) a_pos: vec3<f32>, @location(1) a_normal: vec3<f32>) -> pp_
     var gl_Position: vec4<f32>;
 
     v_normal = a_normal;
-    let _e5 = u_mvp;
-    gl_Position = (_e5 * vec4<f32>(a_pos, 1f));
-    let _e10 = gl_Position;
-    let _e21 = v_normal;
-    return pp_vs_out(vec4<f32>(_e10.x, -(_e10.y), ((_e10.z + _e10.w) * 0.5f), _e10.w), _e21);
+    let _e6 = uniforms.u_mvp;
+    gl_Position = (_e6 * vec4<f32>(a_pos, 1f));
+    let _e11 = gl_Position;
+    let _e22 = v_normal;
+    return pp_vs_out(vec4<f32>(_e11.x, -(_e11.y), ((_e11.z + _e11.w) * 0.5f), _e11.w), _e22);
 }
 
 @fragment 
@@ -37,13 +40,13 @@ fn pp_fs(@location(0) v_normal_1: vec3<f32>) -> pp_fs_out {
     var c: vec3<f32>;
 
     let n_1 = normalize(v_normal_1);
-    let _e4 = u_light_dir;
-    let _e5 = lambert(n_1, _e4);
-    c = vec3(_e5);
-    let _e9 = c;
-    c = (_e9 * 0.9f);
-    let _e13 = c;
-    f_color = vec4<f32>(_e13, 1f);
-    let _e17 = f_color;
-    return pp_fs_out(_e17);
+    let _e5 = uniforms.u_light_dir;
+    let _e6 = lambert(n_1, _e5);
+    c = vec3(_e6);
+    let _e10 = c;
+    c = (_e10 * 0.9f);
+    let _e14 = c;
+    f_color = vec4<f32>(_e14, 1f);
+    let _e18 = f_color;
+    return pp_fs_out(_e18);
 }

@@ -1,5 +1,15 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_model: mat4x4<f32>,
+    u_view: mat4x4<f32>,
+    u_proj: mat4x4<f32>,
+    u_light_vp: mat4x4<f32>,
+    u_cam_pos: vec3<f32>,
+    u_is_floor: f32,
+    u_light_dir: vec3<f32>,
+}
+
 struct proj_shadow_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
 }
@@ -20,45 +30,33 @@ struct proj_main_fs_out {
 }
 
 @group(0) @binding(0) 
-var<uniform> u_model: mat4x4<f32>;
-@group(0) @binding(1) 
-var<uniform> u_view: mat4x4<f32>;
-@group(0) @binding(2) 
-var<uniform> u_proj: mat4x4<f32>;
-@group(0) @binding(3) 
-var<uniform> u_light_vp: mat4x4<f32>;
-@group(0) @binding(4) 
-var<uniform> u_cam_pos: vec3<f32>;
-@group(0) @binding(5) 
-var<uniform> u_is_floor: f32;
+var<uniform> uniforms: Uniforms;
 var<private> a_pos: vec3<f32>;
 var<private> a_normal: vec3<f32>;
 var<private> v_world_pos_1: vec3<f32>;
 var<private> v_world_normal_1: vec3<f32>;
-@group(0) @binding(6) 
-var<uniform> u_light_dir: vec3<f32>;
-@group(0) @binding(7) 
+@group(0) @binding(1) 
 var shadow_map: texture_depth_2d;
-@group(0) @binding(8) 
+@group(0) @binding(2) 
 var shadow_map_sampler: sampler_comparison;
 
 fn shadow_clip() -> vec4<f32> {
-    let _e1 = u_light_vp;
-    let _e3 = u_model;
-    let _e5 = a_pos;
-    return (_e1 * (_e3 * vec4<f32>(_e5, 1f)));
+    let _e2 = uniforms.u_light_vp;
+    let _e5 = uniforms.u_model;
+    let _e7 = a_pos;
+    return (_e2 * (_e5 * vec4<f32>(_e7, 1f)));
 }
 
 fn world_position() -> vec4<f32> {
-    let _e1 = u_model;
-    let _e3 = a_pos;
-    return (_e1 * vec4<f32>(_e3, 1f));
+    let _e2 = uniforms.u_model;
+    let _e4 = a_pos;
+    return (_e2 * vec4<f32>(_e4, 1f));
 }
 
 fn world_normal() -> vec3<f32> {
-    let _e1 = u_model;
-    let _e3 = a_normal;
-    return (_e1 * vec4<f32>(_e3, 0f)).xyz;
+    let _e2 = uniforms.u_model;
+    let _e4 = a_normal;
+    return (_e2 * vec4<f32>(_e4, 0f)).xyz;
 }
 
 fn bias_matrix() -> mat4x4<f32> {
@@ -67,8 +65,8 @@ fn bias_matrix() -> mat4x4<f32> {
 
 fn sun_ndotl() -> f32 {
     let _e1 = v_world_normal_1;
-    let _e4 = u_light_dir;
-    return max(dot(normalize(_e1), normalize(_e4)), 0f);
+    let _e5 = uniforms.u_light_dir;
+    return max(dot(normalize(_e1), normalize(_e5)), 0f);
 }
 
 fn slope_bias(ndotl: f32) -> f32 {
@@ -76,8 +74,8 @@ fn slope_bias(ndotl: f32) -> f32 {
 }
 
 fn surface_gloss() -> f32 {
-    let _e1 = u_is_floor;
-    return select(0.5f, 0.15f, (_e1 > 0.5f));
+    let _e2 = uniforms.u_is_floor;
+    return select(0.5f, 0.15f, (_e2 > 0.5f));
 }
 
 fn checker(p: vec3<f32>) -> vec3<f32> {
@@ -87,11 +85,11 @@ fn checker(p: vec3<f32>) -> vec3<f32> {
 }
 
 fn surface_albedo() -> vec3<f32> {
-    let _e1 = u_is_floor;
-    if (_e1 > 0.5f) {
-        let _e5 = v_world_pos_1;
-        let _e6 = checker(_e5);
-        return _e6;
+    let _e2 = uniforms.u_is_floor;
+    if (_e2 > 0.5f) {
+        let _e6 = v_world_pos_1;
+        let _e7 = checker(_e6);
+        return _e7;
     }
     return vec3<f32>(0.85f, 0.45f, 0.3f);
 }
@@ -103,20 +101,20 @@ fn hemisphere(n: vec3<f32>) -> vec3<f32> {
 fn sun_shade(visibility: f32) -> vec3<f32> {
     let _e2 = v_world_normal_1;
     let n_1 = normalize(_e2);
-    let _e5 = u_light_dir;
-    let l = normalize(_e5);
-    let _e8 = u_cam_pos;
-    let _e10 = v_world_pos_1;
-    let v = normalize((_e8 - _e10));
+    let _e6 = uniforms.u_light_dir;
+    let l = normalize(_e6);
+    let _e10 = uniforms.u_cam_pos;
+    let _e12 = v_world_pos_1;
+    let v = normalize((_e10 - _e12));
     let ndotl_1 = max(dot(n_1, l), 0f);
     let lit = select(visibility, 0f, (ndotl_1 < 0.05f));
     let h = normalize((l + v));
-    let _e28 = surface_gloss();
-    let spec = ((pow(max(dot(n_1, h), 0f), 48f) * lit) * _e28);
+    let _e30 = surface_gloss();
+    let spec = ((pow(max(dot(n_1, h), 0f), 48f) * lit) * _e30);
     let sun = vec3<f32>(1.3f, 1.15f, 0.9f);
-    let _e34 = surface_albedo();
-    let _e35 = hemisphere(n_1);
-    return ((_e34 * (_e35 + (sun * (ndotl_1 * lit)))) + vec3(spec));
+    let _e36 = surface_albedo();
+    let _e37 = hemisphere(n_1);
+    return ((_e36 * (_e37 + (sun * (ndotl_1 * lit)))) + vec3(spec));
 }
 
 @vertex 
@@ -153,16 +151,16 @@ fn proj_main_vs(@location(0) in_a_pos_1: vec3<f32>, @location(1) in_a_normal: ve
     let _e8 = world_normal();
     v_world_normal = _e8;
     let _e10 = bias_matrix();
-    let _e12 = u_light_vp;
-    v_shadow_coord = ((_e10 * _e12) * _e4);
-    let _e17 = u_proj;
-    let _e19 = u_view;
-    gl_Position_1 = (_e17 * (_e19 * _e4));
-    let _e23 = gl_Position_1;
-    let _e34 = v_world_pos;
-    let _e36 = v_world_normal;
-    let _e38 = v_shadow_coord;
-    return proj_main_vs_out(vec4<f32>(_e23.x, -(_e23.y), ((_e23.z + _e23.w) * 0.5f), _e23.w), _e34, _e36, _e38);
+    let _e13 = uniforms.u_light_vp;
+    v_shadow_coord = ((_e10 * _e13) * _e4);
+    let _e19 = uniforms.u_proj;
+    let _e22 = uniforms.u_view;
+    gl_Position_1 = (_e19 * (_e22 * _e4));
+    let _e26 = gl_Position_1;
+    let _e37 = v_world_pos;
+    let _e39 = v_world_normal;
+    let _e41 = v_shadow_coord;
+    return proj_main_vs_out(vec4<f32>(_e26.x, -(_e26.y), ((_e26.z + _e26.w) * 0.5f), _e26.w), _e37, _e39, _e41);
 }
 
 @fragment 

@@ -2,25 +2,25 @@
 struct proj_main_fs_out {
     vec4 f_FragColor;
 };
-layout(std140) uniform u_cam_pos_block { vec3 u_cam_pos; };
+uniform vec3 u_cam_pos;
 
-layout(std140) uniform u_is_floor_block { float u_is_floor; };
+uniform float u_is_floor;
 
-vec3 v_world_pos = vec3(0.0);
+vec3 io_v_world_pos = vec3(0.0);
 
-vec3 v_world_normal = vec3(0.0);
+vec3 io_v_world_normal = vec3(0.0);
 
-layout(std140) uniform u_light_dir_block { vec3 u_light_dir; };
+uniform vec3 u_light_dir;
 
 uniform sampler2DShadow shadow_map;
 
-smooth in vec3 _vs2fs_location0;
-smooth in vec3 _vs2fs_location1;
-smooth in vec4 _vs2fs_location2;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec3 v_world_pos;
+smooth in vec3 v_world_normal;
+smooth in vec4 v_shadow_coord;
+out vec4 f_FragColor;
 
 float sun_ndotl() {
-    vec3 _e1 = v_world_normal;
+    vec3 _e1 = io_v_world_normal;
     vec3 _e4 = u_light_dir;
     return max(dot(normalize(_e1), normalize(_e4)), 0.0);
 }
@@ -43,7 +43,7 @@ vec3 checker(vec3 p) {
 vec3 surface_albedo() {
     float _e1 = u_is_floor;
     if ((_e1 > 0.5)) {
-        vec3 _e5 = v_world_pos;
+        vec3 _e5 = io_v_world_pos;
         vec3 _e6 = checker(_e5);
         return _e6;
     }
@@ -55,12 +55,12 @@ vec3 hemisphere(vec3 n) {
 }
 
 vec3 sun_shade(float visibility) {
-    vec3 _e2 = v_world_normal;
+    vec3 _e2 = io_v_world_normal;
     vec3 n_1 = normalize(_e2);
     vec3 _e5 = u_light_dir;
     vec3 l = normalize(_e5);
     vec3 _e8 = u_cam_pos;
-    vec3 _e10 = v_world_pos;
+    vec3 _e10 = io_v_world_pos;
     vec3 v = normalize((_e8 - _e10));
     float ndotl_1 = max(dot(n_1, l), 0.0);
     float lit = ((ndotl_1 < 0.05) ? 0.0 : visibility);
@@ -74,21 +74,21 @@ vec3 sun_shade(float visibility) {
 }
 
 void main() {
-    vec3 in_v_world_pos = _vs2fs_location0;
-    vec3 in_v_world_normal = _vs2fs_location1;
-    vec4 v_shadow_coord = _vs2fs_location2;
-    vec4 f_FragColor = vec4(0.0);
-    v_world_pos = in_v_world_pos;
-    v_world_normal = in_v_world_normal;
+    vec3 in_v_world_pos = v_world_pos;
+    vec3 in_v_world_normal = v_world_normal;
+    vec4 in_v_shadow_coord = v_shadow_coord;
+    vec4 out_f_FragColor = vec4(0.0);
+    io_v_world_pos = in_v_world_pos;
+    io_v_world_normal = in_v_world_normal;
     float _e7 = sun_ndotl();
     float _e8 = slope_bias(_e7);
-    vec4 biased = vec4(v_shadow_coord.xy, (v_shadow_coord.z - (_e8 * v_shadow_coord.w)), v_shadow_coord.w);
+    vec4 biased = vec4(in_v_shadow_coord.xy, (in_v_shadow_coord.z - (_e8 * in_v_shadow_coord.w)), in_v_shadow_coord.w);
     float _e23 = texture(shadow_map, vec3((biased.xy / vec2(biased.w)), (biased.z / biased.w)));
     vec3 _e24 = sun_shade(_e23);
-    f_FragColor = vec4(_e24, 1.0);
-    vec4 _e28 = f_FragColor;
+    out_f_FragColor = vec4(_e24, 1.0);
+    vec4 _e28 = out_f_FragColor;
     proj_main_fs_out _tmp_return = proj_main_fs_out(_e28);
-    _fs2p_location0 = _tmp_return.f_FragColor;
+    f_FragColor = _tmp_return.f_FragColor;
     return;
 }
 

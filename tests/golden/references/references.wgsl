@@ -1,5 +1,9 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_taps: array<vec4<f32>, 4>,
+}
+
 struct Accum {
     sum: vec3<f32>,
     weight: f32,
@@ -15,7 +19,7 @@ struct references_fs_out {
 }
 
 @group(0) @binding(0) 
-var<uniform> u_taps: array<vec4<f32>, 4>;
+var<uniform> uniforms: Uniforms;
 
 fn flip_y(uv_1: ptr<function, vec2<f32>>) {
     let _e4 = (*uv_1).y;
@@ -106,42 +110,42 @@ fn references_fs(@location(0) v_uv_1: vec2<f32>) -> references_fs_out {
         if !((_e11 < 4i)) {
             break;
         }
-        let _e16 = i;
-        let tap = u_taps[_e16];
-        let _e21 = i;
-        let _e26 = falloff(distance(v_uv_1, tap.xy), 4f);
-        weights[_e21] = _e26;
-        let _e36 = i;
-        let _e38 = weights[_e36];
-        add_tap((&acc), vec3<f32>(tap.z, tap.w, (1f - tap.z)), _e38);
+        let _e17 = i;
+        let tap = uniforms.u_taps[_e17];
+        let _e22 = i;
+        let _e27 = falloff(distance(v_uv_1, tap.xy), 4f);
+        weights[_e22] = _e27;
+        let _e37 = i;
+        let _e39 = weights[_e37];
+        add_tap((&acc), vec3<f32>(tap.z, tap.w, (1f - tap.z)), _e39);
         continuing {
-            let _e39 = i;
-            i = (_e39 + 1i);
+            let _e40 = i;
+            i = (_e40 + 1i);
         }
     }
-    let _e44 = weights[3];
-    x = _e44;
+    let _e45 = weights[3];
+    x = _e45;
     clamp_into((&x), 0f, 0.5f);
-    let _e49 = x;
-    weights[3] = _e49;
+    let _e50 = x;
+    weights[3] = _e50;
     settle((&acc));
-    let _e53 = acc;
-    let _e54 = mean(_e53);
-    c = _e54;
-    let _e57 = c.y;
-    x_1 = _e57;
+    let _e54 = acc;
+    let _e55 = mean(_e54);
+    c = _e55;
+    let _e58 = c.y;
+    x_1 = _e58;
     clamp_into((&x_1), 0.1f, 0.9f);
-    let _e62 = x_1;
-    c.y = _e62;
-    let _e64 = c;
-    v = _e64.xz;
+    let _e63 = x_1;
+    c.y = _e63;
+    let _e65 = c;
+    v = _e65.xz;
     saturate2_((&v));
-    let _e68 = v;
-    let _e69 = c;
-    c = vec3<f32>(_e68.x, _e69.y, _e68.y);
-    let _e76 = c;
-    let _e79 = weights[3];
-    f_color = vec4<f32>(_e76, _e79);
-    let _e82 = f_color;
-    return references_fs_out(_e82);
+    let _e69 = v;
+    let _e70 = c;
+    c = vec3<f32>(_e69.x, _e70.y, _e69.y);
+    let _e77 = c;
+    let _e80 = weights[3];
+    f_color = vec4<f32>(_e77, _e80);
+    let _e83 = f_color;
+    return references_fs_out(_e83);
 }

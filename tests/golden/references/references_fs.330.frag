@@ -6,10 +6,10 @@ struct Accum {
 struct references_fs_out {
     vec4 f_color;
 };
-layout(std140) uniform u_taps_block { vec4 u_taps[4]; };
+uniform vec4 u_taps[4];
 
-smooth in vec2 _vs2fs_location0;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec2 v_uv;
+out vec4 f_color;
 
 float falloff(float d, float k) {
     float d_1 = 0.0;
@@ -57,8 +57,8 @@ void saturate2_(inout vec2 v_1) {
 }
 
 void main() {
-    vec2 v_uv = _vs2fs_location0;
-    vec4 f_color = vec4(0.0);
+    vec2 in_v_uv = v_uv;
+    vec4 out_f_color = vec4(0.0);
     Accum acc = Accum(vec3(0.0), 0.0);
     float weights[4] = float[4](0.0, 0.0, 0.0, 0.0);
     int i = 0;
@@ -83,7 +83,7 @@ void main() {
         int _e16 = i;
         vec4 tap = u_taps[_e16];
         int _e21 = i;
-        float _e26 = falloff(distance(v_uv, tap.xy), 4.0);
+        float _e26 = falloff(distance(in_v_uv, tap.xy), 4.0);
         weights[_e21] = _e26;
         int _e36 = i;
         float _e38 = weights[_e36];
@@ -111,10 +111,10 @@ void main() {
     c = vec3(_e68.x, _e69.y, _e68.y);
     vec3 _e76 = c;
     float _e79 = weights[3];
-    f_color = vec4(_e76, _e79);
-    vec4 _e82 = f_color;
+    out_f_color = vec4(_e76, _e79);
+    vec4 _e82 = out_f_color;
     references_fs_out _tmp_return = references_fs_out(_e82);
-    _fs2p_location0 = _tmp_return.f_color;
+    f_color = _tmp_return.f_color;
     return;
 }
 

@@ -1,5 +1,15 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_model: mat4x4<f32>,
+    u_view: mat4x4<f32>,
+    u_proj: mat4x4<f32>,
+    u_light_vp: mat4x4<f32>,
+    u_cam_pos: vec3<f32>,
+    u_is_floor: f32,
+    u_light_dir: vec3<f32>,
+}
+
 struct rgba8_main_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_world_pos: vec3<f32>,
@@ -21,45 +31,33 @@ struct rgba8_main_fs_out {
 const DEPTH_BIAS: f32 = 0.0015f;
 
 @group(0) @binding(0) 
-var<uniform> u_model: mat4x4<f32>;
-@group(0) @binding(1) 
-var<uniform> u_view: mat4x4<f32>;
-@group(0) @binding(2) 
-var<uniform> u_proj: mat4x4<f32>;
-@group(0) @binding(3) 
-var<uniform> u_light_vp: mat4x4<f32>;
-@group(0) @binding(4) 
-var<uniform> u_cam_pos: vec3<f32>;
-@group(0) @binding(5) 
-var<uniform> u_is_floor: f32;
+var<uniform> uniforms: Uniforms;
 var<private> a_pos: vec3<f32>;
 var<private> a_normal: vec3<f32>;
 var<private> v_world_pos_1: vec3<f32>;
 var<private> v_world_normal_1: vec3<f32>;
-@group(0) @binding(6) 
-var<uniform> u_light_dir: vec3<f32>;
-@group(0) @binding(7) 
+@group(0) @binding(1) 
 var shadow_rgba: texture_2d<f32>;
-@group(0) @binding(8) 
+@group(0) @binding(2) 
 var shadow_rgba_sampler: sampler;
 
 fn world_position() -> vec4<f32> {
-    let _e1 = u_model;
-    let _e3 = a_pos;
-    return (_e1 * vec4<f32>(_e3, 1f));
+    let _e2 = uniforms.u_model;
+    let _e4 = a_pos;
+    return (_e2 * vec4<f32>(_e4, 1f));
 }
 
 fn world_normal() -> vec3<f32> {
-    let _e1 = u_model;
-    let _e3 = a_normal;
-    return (_e1 * vec4<f32>(_e3, 0f)).xyz;
+    let _e2 = uniforms.u_model;
+    let _e4 = a_normal;
+    return (_e2 * vec4<f32>(_e4, 0f)).xyz;
 }
 
 fn shadow_clip() -> vec4<f32> {
-    let _e1 = u_light_vp;
-    let _e3 = u_model;
-    let _e5 = a_pos;
-    return (_e1 * (_e3 * vec4<f32>(_e5, 1f)));
+    let _e2 = uniforms.u_light_vp;
+    let _e5 = uniforms.u_model;
+    let _e7 = a_pos;
+    return (_e2 * (_e5 * vec4<f32>(_e7, 1f)));
 }
 
 fn encode_depth(d: f32) -> vec4<f32> {
@@ -77,8 +75,8 @@ fn decode_depth(rgba: vec4<f32>) -> f32 {
 
 fn sun_ndotl() -> f32 {
     let _e1 = v_world_normal_1;
-    let _e4 = u_light_dir;
-    return max(dot(normalize(_e1), normalize(_e4)), 0f);
+    let _e5 = uniforms.u_light_dir;
+    return max(dot(normalize(_e1), normalize(_e5)), 0f);
 }
 
 fn slope_bias(ndotl: f32) -> f32 {
@@ -86,8 +84,8 @@ fn slope_bias(ndotl: f32) -> f32 {
 }
 
 fn surface_gloss() -> f32 {
-    let _e1 = u_is_floor;
-    return select(0.5f, 0.15f, (_e1 > 0.5f));
+    let _e2 = uniforms.u_is_floor;
+    return select(0.5f, 0.15f, (_e2 > 0.5f));
 }
 
 fn checker(p: vec3<f32>) -> vec3<f32> {
@@ -97,11 +95,11 @@ fn checker(p: vec3<f32>) -> vec3<f32> {
 }
 
 fn surface_albedo() -> vec3<f32> {
-    let _e1 = u_is_floor;
-    if (_e1 > 0.5f) {
-        let _e5 = v_world_pos_1;
-        let _e6 = checker(_e5);
-        return _e6;
+    let _e2 = uniforms.u_is_floor;
+    if (_e2 > 0.5f) {
+        let _e6 = v_world_pos_1;
+        let _e7 = checker(_e6);
+        return _e7;
     }
     return vec3<f32>(0.85f, 0.45f, 0.3f);
 }
@@ -113,20 +111,20 @@ fn hemisphere(n: vec3<f32>) -> vec3<f32> {
 fn sun_shade(visibility: f32) -> vec3<f32> {
     let _e2 = v_world_normal_1;
     let n_1 = normalize(_e2);
-    let _e5 = u_light_dir;
-    let l = normalize(_e5);
-    let _e8 = u_cam_pos;
-    let _e10 = v_world_pos_1;
-    let v = normalize((_e8 - _e10));
+    let _e6 = uniforms.u_light_dir;
+    let l = normalize(_e6);
+    let _e10 = uniforms.u_cam_pos;
+    let _e12 = v_world_pos_1;
+    let v = normalize((_e10 - _e12));
     let ndotl_1 = max(dot(n_1, l), 0f);
     let lit = select(visibility, 0f, (ndotl_1 < 0.05f));
     let h = normalize((l + v));
-    let _e28 = surface_gloss();
-    let spec = ((pow(max(dot(n_1, h), 0f), 48f) * lit) * _e28);
+    let _e30 = surface_gloss();
+    let spec = ((pow(max(dot(n_1, h), 0f), 48f) * lit) * _e30);
     let sun = vec3<f32>(1.3f, 1.15f, 0.9f);
-    let _e34 = surface_albedo();
-    let _e35 = hemisphere(n_1);
-    return ((_e34 * (_e35 + (sun * (ndotl_1 * lit)))) + vec3(spec));
+    let _e36 = surface_albedo();
+    let _e37 = hemisphere(n_1);
+    return ((_e36 * (_e37 + (sun * (ndotl_1 * lit)))) + vec3(spec));
 }
 
 @vertex 
@@ -141,13 +139,13 @@ fn rgba8_main_vs(@location(0) in_a_pos: vec3<f32>, @location(1) in_a_normal: vec
     v_world_pos = _e4.xyz;
     let _e8 = world_normal();
     v_world_normal = _e8;
-    let _e11 = u_proj;
-    let _e13 = u_view;
-    gl_Position = (_e11 * (_e13 * _e4));
-    let _e17 = gl_Position;
-    let _e28 = v_world_pos;
-    let _e30 = v_world_normal;
-    return rgba8_main_vs_out(vec4<f32>(_e17.x, -(_e17.y), ((_e17.z + _e17.w) * 0.5f), _e17.w), _e28, _e30);
+    let _e12 = uniforms.u_proj;
+    let _e15 = uniforms.u_view;
+    gl_Position = (_e12 * (_e15 * _e4));
+    let _e19 = gl_Position;
+    let _e30 = v_world_pos;
+    let _e32 = v_world_normal;
+    return rgba8_main_vs_out(vec4<f32>(_e19.x, -(_e19.y), ((_e19.z + _e19.w) * 0.5f), _e19.w), _e30, _e32);
 }
 
 @vertex 
@@ -177,16 +175,16 @@ fn rgba8_main_fs(@location(0) in_v_world_pos: vec3<f32>, @location(1) in_v_world
 
     v_world_pos_1 = in_v_world_pos;
     v_world_normal_1 = in_v_world_normal;
-    let _e5 = u_light_vp;
-    let _e7 = v_world_pos_1;
-    let _e11 = to_map((_e5 * vec4<f32>(_e7, 1f)));
-    let _e15 = textureSample(shadow_rgba, shadow_rgba_sampler, _e11.xy);
-    let _e16 = decode_depth(_e15);
-    let _e20 = sun_ndotl();
-    let _e21 = slope_bias(_e20);
-    let visibility_1 = select(1f, 0f, (((_e11.z - DEPTH_BIAS) - _e21) > _e16));
-    let _e28 = sun_shade(visibility_1);
-    f_FragColor_1 = vec4<f32>(_e28, 1f);
-    let _e32 = f_FragColor_1;
-    return rgba8_main_fs_out(_e32);
+    let _e6 = uniforms.u_light_vp;
+    let _e8 = v_world_pos_1;
+    let _e12 = to_map((_e6 * vec4<f32>(_e8, 1f)));
+    let _e16 = textureSample(shadow_rgba, shadow_rgba_sampler, _e12.xy);
+    let _e17 = decode_depth(_e16);
+    let _e21 = sun_ndotl();
+    let _e22 = slope_bias(_e21);
+    let visibility_1 = select(1f, 0f, (((_e12.z - DEPTH_BIAS) - _e22) > _e17));
+    let _e29 = sun_shade(visibility_1);
+    f_FragColor_1 = vec4<f32>(_e29, 1f);
+    let _e33 = f_FragColor_1;
+    return rgba8_main_fs_out(_e33);
 }

@@ -4,23 +4,23 @@ struct rgba8_main_fs_out {
 };
 const float DEPTH_BIAS = 0.0015;
 
-layout(std140) uniform u_light_vp_block { mat4x4 u_light_vp; };
+uniform mat4x4 u_light_vp;
 
-layout(std140) uniform u_cam_pos_block { vec3 u_cam_pos; };
+uniform vec3 u_cam_pos;
 
-layout(std140) uniform u_is_floor_block { float u_is_floor; };
+uniform float u_is_floor;
 
-vec3 v_world_pos = vec3(0.0);
+vec3 io_v_world_pos = vec3(0.0);
 
-vec3 v_world_normal = vec3(0.0);
+vec3 io_v_world_normal = vec3(0.0);
 
-layout(std140) uniform u_light_dir_block { vec3 u_light_dir; };
+uniform vec3 u_light_dir;
 
 uniform sampler2D shadow_rgba;
 
-smooth in vec3 _vs2fs_location0;
-smooth in vec3 _vs2fs_location1;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec3 v_world_pos;
+smooth in vec3 v_world_normal;
+out vec4 f_FragColor;
 
 vec3 to_map(vec4 clip) {
     return (((clip.xyz / vec3(max(clip.w, 0.0001))) * 0.5) + vec3(0.5));
@@ -31,7 +31,7 @@ float decode_depth(vec4 rgba) {
 }
 
 float sun_ndotl() {
-    vec3 _e1 = v_world_normal;
+    vec3 _e1 = io_v_world_normal;
     vec3 _e4 = u_light_dir;
     return max(dot(normalize(_e1), normalize(_e4)), 0.0);
 }
@@ -54,7 +54,7 @@ vec3 checker(vec3 p) {
 vec3 surface_albedo() {
     float _e1 = u_is_floor;
     if ((_e1 > 0.5)) {
-        vec3 _e5 = v_world_pos;
+        vec3 _e5 = io_v_world_pos;
         vec3 _e6 = checker(_e5);
         return _e6;
     }
@@ -66,12 +66,12 @@ vec3 hemisphere(vec3 n) {
 }
 
 vec3 sun_shade(float visibility) {
-    vec3 _e2 = v_world_normal;
+    vec3 _e2 = io_v_world_normal;
     vec3 n_1 = normalize(_e2);
     vec3 _e5 = u_light_dir;
     vec3 l = normalize(_e5);
     vec3 _e8 = u_cam_pos;
-    vec3 _e10 = v_world_pos;
+    vec3 _e10 = io_v_world_pos;
     vec3 v = normalize((_e8 - _e10));
     float ndotl_1 = max(dot(n_1, l), 0.0);
     float lit = ((ndotl_1 < 0.05) ? 0.0 : visibility);
@@ -85,13 +85,13 @@ vec3 sun_shade(float visibility) {
 }
 
 void main() {
-    vec3 in_v_world_pos = _vs2fs_location0;
-    vec3 in_v_world_normal = _vs2fs_location1;
-    vec4 f_FragColor = vec4(0.0);
-    v_world_pos = in_v_world_pos;
-    v_world_normal = in_v_world_normal;
+    vec3 in_v_world_pos = v_world_pos;
+    vec3 in_v_world_normal = v_world_normal;
+    vec4 out_f_FragColor = vec4(0.0);
+    io_v_world_pos = in_v_world_pos;
+    io_v_world_normal = in_v_world_normal;
     mat4x4 _e5 = u_light_vp;
-    vec3 _e7 = v_world_pos;
+    vec3 _e7 = io_v_world_pos;
     vec3 _e11 = to_map((_e5 * vec4(_e7, 1.0)));
     vec4 _e15 = texture(shadow_rgba, vec2(_e11.xy));
     float _e16 = decode_depth(_e15);
@@ -99,10 +99,10 @@ void main() {
     float _e21 = slope_bias(_e20);
     float visibility_1 = ((((_e11.z - DEPTH_BIAS) - _e21) > _e16) ? 0.0 : 1.0);
     vec3 _e28 = sun_shade(visibility_1);
-    f_FragColor = vec4(_e28, 1.0);
-    vec4 _e32 = f_FragColor;
+    out_f_FragColor = vec4(_e28, 1.0);
+    vec4 _e32 = out_f_FragColor;
     rgba8_main_fs_out _tmp_return = rgba8_main_fs_out(_e32);
-    _fs2p_location0 = _tmp_return.f_FragColor;
+    f_FragColor = _tmp_return.f_FragColor;
     return;
 }
 

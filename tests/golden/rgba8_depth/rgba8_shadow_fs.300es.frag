@@ -6,7 +6,7 @@ precision highp int;
 struct rgba8_shadow_fs_out {
     vec4 f_FragColor;
 };
-layout(location = 0) out vec4 _fs2p_location0;
+out vec4 f_FragColor;
 
 vec4 encode_depth(float d) {
     vec4 digits = fract((d * vec4(1.0, 255.0, 65025.0, 16581375.0)));
@@ -15,12 +15,12 @@ vec4 encode_depth(float d) {
 
 void main() {
     vec4 FragCoord = gl_FragCoord;
-    vec4 f_FragColor = vec4(0.0);
+    vec4 out_f_FragColor = vec4(0.0);
     vec4 _e3 = encode_depth(FragCoord.z);
-    f_FragColor = _e3;
-    vec4 _e5 = f_FragColor;
+    out_f_FragColor = _e3;
+    vec4 _e5 = out_f_FragColor;
     rgba8_shadow_fs_out _tmp_return = rgba8_shadow_fs_out(_e5);
-    _fs2p_location0 = _tmp_return.f_FragColor;
+    f_FragColor = _tmp_return.f_FragColor;
     return;
 }
 

@@ -6,25 +6,25 @@ precision highp int;
 struct rgba8_shadow_vs_out {
     vec4 gen_gl_Position;
 };
-layout(std140) uniform u_model_block { mat4x4 u_model; };
+uniform mat4x4 u_model;
 
-layout(std140) uniform u_light_vp_block { mat4x4 u_light_vp; };
+uniform mat4x4 u_light_vp;
 
-vec3 a_pos = vec3(0.0);
+vec3 io_a_pos = vec3(0.0);
 
-layout(location = 0) in vec3 _p2vs_location0;
+layout(location = 0) in vec3 a_pos;
 
 vec4 shadow_clip() {
     mat4x4 _e1 = u_light_vp;
     mat4x4 _e3 = u_model;
-    vec3 _e5 = a_pos;
+    vec3 _e5 = io_a_pos;
     return (_e1 * (_e3 * vec4(_e5, 1.0)));
 }
 
 void main() {
-    vec3 in_a_pos = _p2vs_location0;
+    vec3 in_a_pos = a_pos;
     vec4 gen_gl_Position = vec4(0.0);
-    a_pos = in_a_pos;
+    io_a_pos = in_a_pos;
     vec4 _e3 = shadow_clip();
     gen_gl_Position = _e3;
     vec4 _e5 = gen_gl_Position;

@@ -12,10 +12,10 @@ uniform sampler2DShadow shadows_0;
 
 uniform sampler2DShadow shadows_1;
 
-layout(std140) uniform u_pick_block { int u_pick; };
+uniform int u_pick;
 
-smooth in vec2 _vs2fs_location0;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec2 v_uv;
+out vec4 f_color;
 
 vec4 layer(int i_1, vec2 uv) {
     vec4 texel_2 = vec4(0.0);
@@ -41,20 +41,20 @@ vec4 layer(int i_1, vec2 uv) {
 }
 
 void main() {
-    vec2 v_uv = _vs2fs_location0;
-    vec4 f_color = vec4(0.0);
+    vec2 in_v_uv = v_uv;
+    vec4 out_f_color = vec4(0.0);
     vec4 c = vec4(0.0);
     ivec2 texel = ivec2(0);
     float lit = 0.0;
     int i = 0;
     float texel_1 = 0.0;
-    vec4 _e4 = texture(layers_0, vec2(v_uv));
+    vec4 _e4 = texture(layers_0, vec2(in_v_uv));
     c = (_e4 * 0.5);
-    vec4 _e13 = textureLod(layers_2, vec2((v_uv * 4.0)), 0.0);
+    vec4 _e13 = textureLod(layers_2, vec2((in_v_uv * 4.0)), 0.0);
     vec4 _e14 = c;
     c = (_e14 + _e13);
     int _e18 = u_pick;
-    vec4 _e19 = layer(_e18, v_uv);
+    vec4 _e19 = layer(_e18, in_v_uv);
     vec4 _e20 = c;
     c = (_e20 + _e19);
     int _e24 = u_pick;
@@ -89,12 +89,12 @@ void main() {
         int _e55 = i;
         switch(min(max(_e55, 0), 1)) {
             case 0: {
-                float _e61 = texture(shadows_0, vec3(v_uv, 0.5));
+                float _e61 = texture(shadows_0, vec3(in_v_uv, 0.5));
                 texel_1 = _e61;
                 break;
             }
             default: {
-                float _e65 = texture(shadows_1, vec3(v_uv, 0.5));
+                float _e65 = texture(shadows_1, vec3(in_v_uv, 0.5));
                 texel_1 = _e65;
                 break;
             }
@@ -105,10 +105,10 @@ void main() {
     }
     vec4 _e76 = c;
     float _e78 = lit;
-    f_color = ((_e76 * _e78) + vec4((float(size.x) * 0.0)));
-    vec4 _e87 = f_color;
+    out_f_color = ((_e76 * _e78) + vec4((float(size.x) * 0.0)));
+    vec4 _e87 = out_f_color;
     layers_fs_out _tmp_return = layers_fs_out(_e87);
-    _fs2p_location0 = _tmp_return.f_color;
+    f_color = _tmp_return.f_color;
     return;
 }
 

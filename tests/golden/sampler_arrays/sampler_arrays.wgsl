@@ -1,5 +1,9 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_pick: i32,
+}
+
 struct layers_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_uv: vec2<f32>,
@@ -32,7 +36,7 @@ var shadows_1_: texture_depth_2d;
 @group(0) @binding(9) 
 var shadows_1_sampler: sampler_comparison;
 @group(0) @binding(10) 
-var<uniform> u_pick: i32;
+var<uniform> uniforms: Uniforms;
 
 fn layer(i_1: i32, uv: vec2<f32>) -> vec4<f32> {
     var texel_2: vec4<f32>;
@@ -81,55 +85,55 @@ fn layers_fs(@location(0) v_uv_1: vec2<f32>) -> layers_fs_out {
     let _e13 = textureSampleLevel(layers_2_, layers_2_sampler, (v_uv_1 * 4f), 0f);
     let _e14 = c;
     c = (_e14 + _e13);
-    let _e18 = u_pick;
-    let _e19 = layer(_e18, v_uv_1);
-    let _e20 = c;
-    c = (_e20 + _e19);
-    let _e24 = u_pick;
-    switch clamp((_e24 + 1i), 0i, 2i) {
+    let _e19 = uniforms.u_pick;
+    let _e20 = layer(_e19, v_uv_1);
+    let _e21 = c;
+    c = (_e21 + _e20);
+    let _e26 = uniforms.u_pick;
+    switch clamp((_e26 + 1i), 0i, 2i) {
         case 0: {
-            let _e31 = textureDimensions(layers_0_, 0i);
-            texel = vec2<i32>(_e31);
+            let _e33 = textureDimensions(layers_0_, 0i);
+            texel = vec2<i32>(_e33);
         }
         case 1: {
-            let _e35 = textureDimensions(layers_1_, 0i);
-            texel = vec2<i32>(_e35);
+            let _e37 = textureDimensions(layers_1_, 0i);
+            texel = vec2<i32>(_e37);
         }
         default: {
-            let _e39 = textureDimensions(layers_2_, 0i);
-            texel = vec2<i32>(_e39);
+            let _e41 = textureDimensions(layers_2_, 0i);
+            texel = vec2<i32>(_e41);
         }
     }
     let size = texel;
     lit = 0f;
     i = 0i;
     loop {
-        let _e49 = i;
-        if !((_e49 < 2i)) {
+        let _e51 = i;
+        if !((_e51 < 2i)) {
             break;
         }
-        let _e55 = i;
-        switch clamp(_e55, 0i, 1i) {
+        let _e57 = i;
+        switch clamp(_e57, 0i, 1i) {
             case 0: {
-                let _e61 = textureSampleCompare(shadows_0_, shadows_0_sampler, v_uv_1, 0.5f);
-                texel_1 = _e61;
+                let _e63 = textureSampleCompare(shadows_0_, shadows_0_sampler, v_uv_1, 0.5f);
+                texel_1 = _e63;
             }
             default: {
-                let _e65 = textureSampleCompare(shadows_1_, shadows_1_sampler, v_uv_1, 0.5f);
-                texel_1 = _e65;
+                let _e67 = textureSampleCompare(shadows_1_, shadows_1_sampler, v_uv_1, 0.5f);
+                texel_1 = _e67;
             }
         }
-        let _e68 = texel_1;
-        let _e69 = lit;
-        lit = (_e69 + _e68);
+        let _e70 = texel_1;
+        let _e71 = lit;
+        lit = (_e71 + _e70);
         continuing {
-            let _e71 = i;
-            i = (_e71 + 1i);
+            let _e73 = i;
+            i = (_e73 + 1i);
         }
     }
-    let _e76 = c;
-    let _e78 = lit;
-    f_color = ((_e76 * _e78) + vec4((f32(size.x) * 0f)));
-    let _e87 = f_color;
-    return layers_fs_out(_e87);
+    let _e78 = c;
+    let _e80 = lit;
+    f_color = ((_e78 * _e80) + vec4((f32(size.x) * 0f)));
+    let _e89 = f_color;
+    return layers_fs_out(_e89);
 }

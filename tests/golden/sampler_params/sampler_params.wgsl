@@ -1,5 +1,9 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_texel: f32,
+}
+
 struct sampler_params_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_uv: vec2<f32>,
@@ -31,7 +35,7 @@ var cascades_1_: texture_depth_2d;
 @group(0) @binding(9) 
 var cascades_1_sampler: sampler_comparison;
 @group(0) @binding(10) 
-var<uniform> u_texel: f32;
+var<uniform> uniforms: Uniforms;
 
 fn tap_detail_vertex(uv: vec2<f32>) -> vec4<f32> {
     let _e3 = textureSampleLevel(detail, detail_sampler, uv, 0.0);
@@ -44,11 +48,11 @@ fn tap_albedo(uv_1: vec2<f32>) -> vec4<f32> {
 }
 
 fn blur_albedo(uv_2: vec2<f32>) -> vec4<f32> {
-    let _e2 = u_texel;
-    let _e6 = tap_albedo((uv_2 - vec2<f32>(_e2, 0f)));
-    let _e8 = u_texel;
-    let _e12 = tap_albedo((uv_2 + vec2<f32>(_e8, 0f)));
-    return ((_e6 + _e12) * 0.5f);
+    let _e3 = uniforms.u_texel;
+    let _e7 = tap_albedo((uv_2 - vec2<f32>(_e3, 0f)));
+    let _e10 = uniforms.u_texel;
+    let _e14 = tap_albedo((uv_2 + vec2<f32>(_e10, 0f)));
+    return ((_e7 + _e14) * 0.5f);
 }
 
 fn tap_detail(uv_3: vec2<f32>) -> vec4<f32> {
@@ -57,11 +61,11 @@ fn tap_detail(uv_3: vec2<f32>) -> vec4<f32> {
 }
 
 fn blur_detail(uv_4: vec2<f32>) -> vec4<f32> {
-    let _e2 = u_texel;
-    let _e6 = tap_detail((uv_4 - vec2<f32>(_e2, 0f)));
-    let _e8 = u_texel;
-    let _e12 = tap_detail((uv_4 + vec2<f32>(_e8, 0f)));
-    return ((_e6 + _e12) * 0.5f);
+    let _e3 = uniforms.u_texel;
+    let _e7 = tap_detail((uv_4 - vec2<f32>(_e3, 0f)));
+    let _e10 = uniforms.u_texel;
+    let _e14 = tap_detail((uv_4 + vec2<f32>(_e10, 0f)));
+    return ((_e7 + _e14) * 0.5f);
 }
 
 fn pcf_sun_shadow(uv_5: vec2<f32>, depth: f32) -> f32 {
@@ -84,22 +88,22 @@ fn pcf_sun_shadow(uv_5: vec2<f32>, depth: f32) -> f32 {
             }
             let _e20 = x;
             let _e23 = y;
-            let _e27 = u_texel;
-            let _e32 = textureSampleCompare(sun_shadow, sun_shadow_sampler, (uv_5 + (vec2<f32>(f32(_e20), f32(_e23)) * _e27)), depth);
-            let _e33 = lit;
-            lit = (_e33 + _e32);
+            let _e28 = uniforms.u_texel;
+            let _e33 = textureSampleCompare(sun_shadow, sun_shadow_sampler, (uv_5 + (vec2<f32>(f32(_e20), f32(_e23)) * _e28)), depth);
+            let _e34 = lit;
+            lit = (_e34 + _e33);
             continuing {
-                let _e35 = x;
-                x = (_e35 + 1i);
+                let _e36 = x;
+                x = (_e36 + 1i);
             }
         }
         continuing {
-            let _e38 = y;
-            y = (_e38 + 1i);
+            let _e39 = y;
+            y = (_e39 + 1i);
         }
     }
-    let _e42 = lit;
-    return (_e42 / 9f);
+    let _e43 = lit;
+    return (_e43 / 9f);
 }
 
 fn pcf_cascades_1_(uv_6: vec2<f32>, depth_1: f32) -> f32 {
@@ -122,22 +126,22 @@ fn pcf_cascades_1_(uv_6: vec2<f32>, depth_1: f32) -> f32 {
             }
             let _e20 = x_1;
             let _e23 = y_1;
-            let _e27 = u_texel;
-            let _e32 = textureSampleCompare(cascades_1_, cascades_1_sampler, (uv_6 + (vec2<f32>(f32(_e20), f32(_e23)) * _e27)), depth_1);
-            let _e33 = lit_1;
-            lit_1 = (_e33 + _e32);
+            let _e28 = uniforms.u_texel;
+            let _e33 = textureSampleCompare(cascades_1_, cascades_1_sampler, (uv_6 + (vec2<f32>(f32(_e20), f32(_e23)) * _e28)), depth_1);
+            let _e34 = lit_1;
+            lit_1 = (_e34 + _e33);
             continuing {
-                let _e35 = x_1;
-                x_1 = (_e35 + 1i);
+                let _e36 = x_1;
+                x_1 = (_e36 + 1i);
             }
         }
         continuing {
-            let _e38 = y_1;
-            y_1 = (_e38 + 1i);
+            let _e39 = y_1;
+            y_1 = (_e39 + 1i);
         }
     }
-    let _e42 = lit_1;
-    return (_e42 / 9f);
+    let _e43 = lit_1;
+    return (_e43 / 9f);
 }
 
 @vertex 

@@ -15,11 +15,11 @@ uniform highp sampler2DShadow sun_shadow;
 
 uniform highp sampler2DShadow cascades_1;
 
-layout(std140) uniform u_texel_block { float u_texel; };
+uniform float u_texel;
 
-smooth in vec2 _vs2fs_location0;
-smooth in float _vs2fs_location1;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec2 v_uv;
+smooth in float v_height;
+out vec4 f_color;
 
 vec4 tap_albedo(vec2 uv) {
     vec4 _e3 = texture(albedo, vec2(uv));
@@ -130,20 +130,20 @@ float pcf_cascades_1_(vec2 uv_5, float depth_1) {
 }
 
 void main() {
-    vec2 v_uv = _vs2fs_location0;
-    float v_height = _vs2fs_location1;
-    vec4 f_color = vec4(0.0);
-    vec4 _e2 = blur_albedo(v_uv);
-    vec4 _e7 = blur_detail((v_uv * 4.0));
+    vec2 in_v_uv = v_uv;
+    float in_v_height = v_height;
+    vec4 out_f_color = vec4(0.0);
+    vec4 _e2 = blur_albedo(in_v_uv);
+    vec4 _e7 = blur_detail((in_v_uv * 4.0));
     vec4 base = ((_e2 * 0.75) + (_e7 * 0.25));
-    float _e12 = pcf_sun_shadow(v_uv, 0.5);
-    float _e13 = pcf_cascades_1_(v_uv, v_height);
+    float _e12 = pcf_sun_shadow(in_v_uv, 0.5);
+    float _e13 = pcf_cascades_1_(in_v_uv, in_v_height);
     float lit_2 = (_e12 * _e13);
-    vec4 _e18 = tap_detail(v_uv);
-    f_color = vec4((base.xyz * lit_2), _e18.w);
-    vec4 _e22 = f_color;
+    vec4 _e18 = tap_detail(in_v_uv);
+    out_f_color = vec4((base.xyz * lit_2), _e18.w);
+    vec4 _e22 = out_f_color;
     sampler_params_fs_out _tmp_return = sampler_params_fs_out(_e22);
-    _fs2p_location0 = _tmp_return.f_color;
+    f_color = _tmp_return.f_color;
     return;
 }
 

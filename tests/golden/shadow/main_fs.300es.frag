@@ -10,18 +10,18 @@ struct main_fs_out {
 const float SHADOW_MAP_SIZE = 1024.0;
 const int PCF_RADIUS = 1;
 
-layout(std140) uniform u_light_dir_block { vec3 u_light_dir; };
+uniform vec3 u_light_dir;
 
-layout(std140) uniform u_cam_pos_block { vec3 u_cam_pos; };
+uniform vec3 u_cam_pos;
 
-layout(std140) uniform u_is_floor_block { float u_is_floor; };
+uniform float u_is_floor;
 
 uniform highp sampler2DShadow shadow_map;
 
-smooth in vec3 _vs2fs_location0;
-smooth in vec3 _vs2fs_location1;
-smooth in vec4 _vs2fs_location2;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec3 v_world_pos;
+smooth in vec3 v_world_normal;
+smooth in vec4 v_light_space;
+out vec4 f_FragColor;
 
 float sun_visibility(vec2 uv, float depth) {
     float lit_1 = 0.0;
@@ -77,21 +77,21 @@ vec3 floor_albedo(vec3 p) {
 }
 
 void main() {
-    vec3 v_world_pos = _vs2fs_location0;
-    vec3 v_world_normal = _vs2fs_location1;
-    vec4 v_light_space = _vs2fs_location2;
-    vec4 f_FragColor = vec4(0.0);
+    vec3 in_v_world_pos = v_world_pos;
+    vec3 in_v_world_normal = v_world_normal;
+    vec4 in_v_light_space = v_light_space;
+    vec4 out_f_FragColor = vec4(0.0);
     float lit = 0.0;
     vec3 albedo = vec3(0.0);
     float gloss = 0.0;
-    vec3 n = normalize(v_world_normal);
+    vec3 n = normalize(in_v_world_normal);
     vec3 _e5 = u_light_dir;
     vec3 l = normalize(_e5);
     vec3 _e8 = u_cam_pos;
-    vec3 v = normalize((_e8 - v_world_pos));
+    vec3 v = normalize((_e8 - in_v_world_pos));
     float ndotl = max(dot(n, l), 0.0);
-    float clip_w = max(v_light_space.w, 0.0001);
-    vec3 ndc = (v_light_space.xyz / vec3(clip_w));
+    float clip_w = max(in_v_light_space.w, 0.0001);
+    vec3 ndc = (in_v_light_space.xyz / vec3(clip_w));
     vec2 uv_1 = ((ndc.xy * 0.5) + vec2(0.5));
     float depth_1 = ((ndc.z * 0.5) + 0.5);
     float bias = max((0.0025 * (1.0 - ndotl)), 0.0008);
@@ -107,7 +107,7 @@ void main() {
     gloss = 0.5;
     float _e71 = u_is_floor;
     if ((_e71 > 0.5)) {
-        vec3 _e75 = floor_albedo(v_world_pos);
+        vec3 _e75 = floor_albedo(in_v_world_pos);
         albedo = _e75;
         gloss = 0.15;
     }
@@ -118,10 +118,10 @@ void main() {
     vec3 _e92 = albedo;
     float _e94 = lit;
     vec3 color = ((_e92 * (ambient + (sun_color * (ndotl * _e94)))) + vec3(spec));
-    f_FragColor = vec4(color, 1.0);
-    vec4 _e105 = f_FragColor;
+    out_f_FragColor = vec4(color, 1.0);
+    vec4 _e105 = out_f_FragColor;
     main_fs_out _tmp_return = main_fs_out(_e105);
-    _fs2p_location0 = _tmp_return.f_FragColor;
+    f_FragColor = _tmp_return.f_FragColor;
     return;
 }
 

@@ -1,5 +1,15 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_light_vp: mat4x4<f32>,
+    u_model: mat4x4<f32>,
+    u_view: mat4x4<f32>,
+    u_proj: mat4x4<f32>,
+    u_light_dir: vec3<f32>,
+    u_cam_pos: vec3<f32>,
+    u_is_floor: f32,
+}
+
 struct shadow_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
 }
@@ -23,22 +33,10 @@ const SHADOW_MAP_SIZE: f32 = 1024f;
 const PCF_RADIUS: i32 = 1i;
 
 @group(0) @binding(0) 
-var<uniform> u_light_vp: mat4x4<f32>;
+var<uniform> uniforms: Uniforms;
 @group(0) @binding(1) 
-var<uniform> u_model: mat4x4<f32>;
-@group(0) @binding(2) 
-var<uniform> u_view: mat4x4<f32>;
-@group(0) @binding(3) 
-var<uniform> u_proj: mat4x4<f32>;
-@group(0) @binding(4) 
-var<uniform> u_light_dir: vec3<f32>;
-@group(0) @binding(5) 
-var<uniform> u_cam_pos: vec3<f32>;
-@group(0) @binding(6) 
-var<uniform> u_is_floor: f32;
-@group(0) @binding(7) 
 var shadow_map: texture_depth_2d;
-@group(0) @binding(8) 
+@group(0) @binding(2) 
 var shadow_map_sampler: sampler_comparison;
 
 fn sun_visibility(uv: vec2<f32>, depth: f32) -> f32 {
@@ -95,11 +93,11 @@ fn floor_albedo(p: vec3<f32>) -> vec3<f32> {
 fn shadow_vs(@location(0) a_pos: vec3<f32>) -> shadow_vs_out {
     var gl_Position: vec4<f32>;
 
-    let _e3 = u_light_vp;
-    let _e5 = u_model;
-    gl_Position = (_e3 * (_e5 * vec4<f32>(a_pos, 1f)));
-    let _e11 = gl_Position;
-    return shadow_vs_out(vec4<f32>(_e11.x, -(_e11.y), ((_e11.z + _e11.w) * 0.5f), _e11.w));
+    let _e4 = uniforms.u_light_vp;
+    let _e7 = uniforms.u_model;
+    gl_Position = (_e4 * (_e7 * vec4<f32>(a_pos, 1f)));
+    let _e13 = gl_Position;
+    return shadow_vs_out(vec4<f32>(_e13.x, -(_e13.y), ((_e13.z + _e13.w) * 0.5f), _e13.w));
 }
 
 @fragment 
@@ -118,21 +116,21 @@ fn main_vs(@location(0) a_pos_1: vec3<f32>, @location(1) a_normal: vec3<f32>) ->
     var v_light_space: vec4<f32>;
     var gl_Position_1: vec4<f32>;
 
-    let _e3 = u_model;
-    let world = (_e3 * vec4<f32>(a_pos_1, 1f));
+    let _e4 = uniforms.u_model;
+    let world = (_e4 * vec4<f32>(a_pos_1, 1f));
     v_world_pos = world.xyz;
-    let _e11 = u_model;
-    v_world_normal = (_e11 * vec4<f32>(a_normal, 0f)).xyz;
-    let _e18 = u_light_vp;
-    v_light_space = (_e18 * world);
-    let _e22 = u_proj;
-    let _e24 = u_view;
-    gl_Position_1 = (_e22 * (_e24 * world));
-    let _e28 = gl_Position_1;
-    let _e39 = v_world_pos;
-    let _e41 = v_world_normal;
-    let _e43 = v_light_space;
-    return main_vs_out(vec4<f32>(_e28.x, -(_e28.y), ((_e28.z + _e28.w) * 0.5f), _e28.w), _e39, _e41, _e43);
+    let _e13 = uniforms.u_model;
+    v_world_normal = (_e13 * vec4<f32>(a_normal, 0f)).xyz;
+    let _e21 = uniforms.u_light_vp;
+    v_light_space = (_e21 * world);
+    let _e26 = uniforms.u_proj;
+    let _e29 = uniforms.u_view;
+    gl_Position_1 = (_e26 * (_e29 * world));
+    let _e33 = gl_Position_1;
+    let _e44 = v_world_pos;
+    let _e46 = v_world_normal;
+    let _e48 = v_light_space;
+    return main_vs_out(vec4<f32>(_e33.x, -(_e33.y), ((_e33.z + _e33.w) * 0.5f), _e33.w), _e44, _e46, _e48);
 }
 
 @fragment 
@@ -143,18 +141,18 @@ fn main_fs(@location(0) v_world_pos_1: vec3<f32>, @location(1) v_world_normal_1:
     var gloss: f32;
 
     let n = normalize(v_world_normal_1);
-    let _e5 = u_light_dir;
-    let l = normalize(_e5);
-    let _e8 = u_cam_pos;
-    let v = normalize((_e8 - v_world_pos_1));
+    let _e6 = uniforms.u_light_dir;
+    let l = normalize(_e6);
+    let _e10 = uniforms.u_cam_pos;
+    let v = normalize((_e10 - v_world_pos_1));
     let ndotl = max(dot(n, l), 0f);
     let clip_w = max(v_light_space_1.w, 0.0001f);
     let ndc = (v_light_space_1.xyz / vec3(clip_w));
     let uv_1 = ((ndc.xy * 0.5f) + vec2(0.5f));
     let depth_1 = ((ndc.z * 0.5f) + 0.5f);
     let bias = max((0.0025f * (1f - ndotl)), 0.0008f);
-    let _e39 = sun_visibility(uv_1, (depth_1 - bias));
-    lit = _e39;
+    let _e41 = sun_visibility(uv_1, (depth_1 - bias));
+    lit = _e41;
     if (ndotl < 0.05f) {
         lit = 0f;
     }
@@ -163,20 +161,20 @@ fn main_fs(@location(0) v_world_pos_1: vec3<f32>, @location(1) v_world_normal_1:
     let sun_color = vec3<f32>(1.3f, 1.15f, 0.9f);
     albedo = vec3<f32>(0.85f, 0.45f, 0.3f);
     gloss = 0.5f;
-    let _e71 = u_is_floor;
-    if (_e71 > 0.5f) {
-        let _e75 = floor_albedo(v_world_pos_1);
-        albedo = _e75;
+    let _e74 = uniforms.u_is_floor;
+    if (_e74 > 0.5f) {
+        let _e78 = floor_albedo(v_world_pos_1);
+        albedo = _e78;
         gloss = 0.15f;
     }
     let h = normalize((l + v));
-    let _e86 = lit;
-    let _e89 = gloss;
-    let spec = ((pow(max(dot(n, h), 0f), 48f) * _e86) * _e89);
-    let _e92 = albedo;
-    let _e94 = lit;
-    let color = ((_e92 * (ambient + (sun_color * (ndotl * _e94)))) + vec3(spec));
+    let _e89 = lit;
+    let _e92 = gloss;
+    let spec = ((pow(max(dot(n, h), 0f), 48f) * _e89) * _e92);
+    let _e95 = albedo;
+    let _e97 = lit;
+    let color = ((_e95 * (ambient + (sun_color * (ndotl * _e97)))) + vec3(spec));
     f_FragColor_1 = vec4<f32>(color, 1f);
-    let _e105 = f_FragColor_1;
-    return main_fs_out(_e105);
+    let _e108 = f_FragColor_1;
+    return main_fs_out(_e108);
 }

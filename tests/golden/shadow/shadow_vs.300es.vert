@@ -6,18 +6,18 @@ precision highp int;
 struct shadow_vs_out {
     vec4 gen_gl_Position;
 };
-layout(std140) uniform u_light_vp_block { mat4x4 u_light_vp; };
+uniform mat4x4 u_light_vp;
 
-layout(std140) uniform u_model_block { mat4x4 u_model; };
+uniform mat4x4 u_model;
 
-layout(location = 0) in vec3 _p2vs_location0;
+layout(location = 0) in vec3 a_pos;
 
 void main() {
-    vec3 a_pos = _p2vs_location0;
+    vec3 in_a_pos = a_pos;
     vec4 gen_gl_Position = vec4(0.0);
     mat4x4 _e3 = u_light_vp;
     mat4x4 _e5 = u_model;
-    gen_gl_Position = (_e3 * (_e5 * vec4(a_pos, 1.0)));
+    gen_gl_Position = (_e3 * (_e5 * vec4(in_a_pos, 1.0)));
     vec4 _e11 = gen_gl_Position;
     shadow_vs_out _tmp_return = shadow_vs_out(_e11);
     gl_Position = _tmp_return.gen_gl_Position;

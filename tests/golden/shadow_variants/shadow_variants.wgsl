@@ -1,5 +1,14 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_model: mat4x4<f32>,
+    u_view_proj: mat4x4<f32>,
+    u_light_view_proj: mat4x4<f32>,
+    u_light_dir: vec3<f32>,
+    u_eye: vec3<f32>,
+    u_color: vec4<f32>,
+}
+
 struct variants_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_normal: vec3<f32>,
@@ -12,20 +21,10 @@ struct variants_fs_out {
 }
 
 @group(0) @binding(0) 
-var<uniform> u_model: mat4x4<f32>;
+var<uniform> uniforms: Uniforms;
 @group(0) @binding(1) 
-var<uniform> u_view_proj: mat4x4<f32>;
-@group(0) @binding(2) 
-var<uniform> u_light_view_proj: mat4x4<f32>;
-@group(0) @binding(3) 
-var<uniform> u_light_dir: vec3<f32>;
-@group(0) @binding(4) 
-var<uniform> u_eye: vec3<f32>;
-@group(0) @binding(5) 
-var<uniform> u_color: vec4<f32>;
-@group(0) @binding(6) 
 var shadow_map: texture_depth_2d;
-@group(0) @binding(7) 
+@group(0) @binding(2) 
 var shadow_map_sampler: sampler_comparison;
 var<private> v_light_pos_1: vec4<f32>;
 
@@ -52,20 +51,20 @@ fn variants_vs(@location(0) a_position: vec3<f32>, @location(1) a_normal: vec3<f
     var v_light_pos: vec4<f32>;
     var gl_Position: vec4<f32>;
 
-    let _e3 = u_model;
-    let world = (_e3 * vec4<f32>(a_position, 1f));
+    let _e4 = uniforms.u_model;
+    let world = (_e4 * vec4<f32>(a_position, 1f));
     v_world = world.xyz;
-    let _e11 = u_model;
-    v_normal = (_e11 * vec4<f32>(a_normal, 0f)).xyz;
-    let _e18 = u_light_view_proj;
-    v_light_pos = (_e18 * world);
-    let _e22 = u_view_proj;
-    gl_Position = (_e22 * world);
-    let _e25 = gl_Position;
-    let _e36 = v_normal;
-    let _e38 = v_world;
-    let _e40 = v_light_pos;
-    return variants_vs_out(vec4<f32>(_e25.x, -(_e25.y), ((_e25.z + _e25.w) * 0.5f), _e25.w), _e36, _e38, _e40);
+    let _e13 = uniforms.u_model;
+    v_normal = (_e13 * vec4<f32>(a_normal, 0f)).xyz;
+    let _e21 = uniforms.u_light_view_proj;
+    v_light_pos = (_e21 * world);
+    let _e26 = uniforms.u_view_proj;
+    gl_Position = (_e26 * world);
+    let _e29 = gl_Position;
+    let _e40 = v_normal;
+    let _e42 = v_world;
+    let _e44 = v_light_pos;
+    return variants_vs_out(vec4<f32>(_e29.x, -(_e29.y), ((_e29.z + _e29.w) * 0.5f), _e29.w), _e40, _e42, _e44);
 }
 
 @fragment 
@@ -75,17 +74,17 @@ fn variants_fs(@location(0) v_normal_1: vec3<f32>, @location(1) v_world_1: vec3<
 
     v_light_pos_1 = in_v_light_pos;
     let n = normalize(v_normal_1);
-    let _e6 = u_light_dir;
-    let l = normalize(-(_e6));
-    let _e10 = u_eye;
-    let v = normalize((_e10 - v_world_1));
+    let _e7 = uniforms.u_light_dir;
+    let l = normalize(-(_e7));
+    let _e12 = uniforms.u_eye;
+    let v = normalize((_e12 - v_world_1));
     let ndotl_1 = max(dot(n, l), 0f);
-    let _e16 = shadow_factor(ndotl_1);
-    let _e19 = u_color;
-    color = (_e19.xyz * (0.15f + ((0.85f * ndotl_1) * _e16)));
-    let _e29 = color;
-    let _e32 = u_color.w;
-    f_color = vec4<f32>(_e29, _e32);
-    let _e35 = f_color;
-    return variants_fs_out(_e35);
+    let _e18 = shadow_factor(ndotl_1);
+    let _e22 = uniforms.u_color;
+    color = (_e22.xyz * (0.15f + ((0.85f * ndotl_1) * _e18)));
+    let _e32 = color;
+    let _e36 = uniforms.u_color.w;
+    f_color = vec4<f32>(_e32, _e36);
+    let _e39 = f_color;
+    return variants_fs_out(_e39);
 }

@@ -7,20 +7,20 @@ precision highp sampler2DShadow;
 struct variants_fs_out {
     vec4 f_color;
 };
-layout(std140) uniform u_light_dir_block { vec3 u_light_dir; };
+uniform vec3 u_light_dir;
 
-layout(std140) uniform u_eye_block { vec3 u_eye; };
+uniform vec3 u_eye;
 
-layout(std140) uniform u_color_block { vec4 u_color; };
+uniform vec4 u_color;
 
 uniform highp sampler2DShadow shadow_map;
 
-vec4 v_light_pos = vec4(0.0);
+vec4 io_v_light_pos = vec4(0.0);
 
-smooth in vec3 _vs2fs_location0;
-smooth in vec3 _vs2fs_location1;
-smooth in vec4 _vs2fs_location2;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec3 v_normal;
+smooth in vec3 v_world;
+smooth in vec4 v_light_pos;
+out vec4 f_color;
 
 float shadow_lookup(vec3 coord, float bias) {
     float _e7 = texture(shadow_map, vec3(coord.xy, (coord.z - bias)));
@@ -28,8 +28,8 @@ float shadow_lookup(vec3 coord, float bias) {
 }
 
 float shadow_factor(float ndotl) {
-    vec4 _e2 = v_light_pos;
-    float _e6 = v_light_pos.w;
+    vec4 _e2 = io_v_light_pos;
+    float _e6 = io_v_light_pos.w;
     vec3 coord_1 = (((_e2.xyz / vec3(_e6)) * 0.5) + vec3(0.5));
     if ((coord_1.z > 1.0)) {
         return 1.0;
@@ -39,27 +39,27 @@ float shadow_factor(float ndotl) {
 }
 
 void main() {
-    vec3 v_normal = _vs2fs_location0;
-    vec3 v_world = _vs2fs_location1;
-    vec4 in_v_light_pos = _vs2fs_location2;
-    vec4 f_color = vec4(0.0);
+    vec3 in_v_normal = v_normal;
+    vec3 in_v_world = v_world;
+    vec4 in_v_light_pos = v_light_pos;
+    vec4 out_f_color = vec4(0.0);
     vec3 color = vec3(0.0);
-    v_light_pos = in_v_light_pos;
-    vec3 n = normalize(v_normal);
+    io_v_light_pos = in_v_light_pos;
+    vec3 n = normalize(in_v_normal);
     vec3 _e6 = u_light_dir;
     vec3 l = normalize(-(_e6));
     vec3 _e10 = u_eye;
-    vec3 v = normalize((_e10 - v_world));
+    vec3 v = normalize((_e10 - in_v_world));
     float ndotl_1 = max(dot(n, l), 0.0);
     float _e16 = shadow_factor(ndotl_1);
     vec4 _e19 = u_color;
     color = (_e19.xyz * (0.15 + ((0.85 * ndotl_1) * _e16)));
     vec3 _e29 = color;
     float _e32 = u_color.w;
-    f_color = vec4(_e29, _e32);
-    vec4 _e35 = f_color;
+    out_f_color = vec4(_e29, _e32);
+    vec4 _e35 = out_f_color;
     variants_fs_out _tmp_return = variants_fs_out(_e35);
-    _fs2p_location0 = _tmp_return.f_color;
+    f_color = _tmp_return.f_color;
     return;
 }
 

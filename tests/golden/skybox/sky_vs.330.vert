@@ -3,31 +3,31 @@ struct sky_vs_out {
     vec4 gen_gl_Position;
     vec3 v_dir;
 };
-layout(std140) uniform u_view_block { mat4x4 u_view; };
+uniform mat4x4 u_view;
 
-layout(std140) uniform u_proj_block { mat4x4 u_proj; };
+uniform mat4x4 u_proj;
 
-layout(location = 0) in vec3 _p2vs_location0;
-smooth out vec3 _vs2fs_location0;
+layout(location = 0) in vec3 a_position;
+smooth out vec3 v_dir;
 
 void main() {
-    vec3 a_position = _p2vs_location0;
-    vec3 v_dir = vec3(0.0);
+    vec3 in_a_position = a_position;
+    vec3 out_v_dir = vec3(0.0);
     vec4 gen_gl_Position = vec4(0.0);
     vec4 _e3 = u_view[0];
     vec4 _e7 = u_view[1];
     vec4 _e11 = u_view[2];
     mat3x3 rot = mat3x3(_e3.xyz, _e7.xyz, _e11.xyz);
     mat4x4 view = mat4x4(vec4(rot[0], 0.0), vec4(rot[1], 0.0), vec4(rot[2], 0.0), vec4(0.0, 0.0, 0.0, 1.0));
-    v_dir = a_position;
+    out_v_dir = in_a_position;
     mat4x4 _e31 = u_proj;
-    vec4 p = ((_e31 * view) * vec4(a_position, 1.0));
+    vec4 p = ((_e31 * view) * vec4(in_a_position, 1.0));
     gen_gl_Position = p.xyww;
     vec4 _e39 = gen_gl_Position;
-    vec3 _e41 = v_dir;
+    vec3 _e41 = out_v_dir;
     sky_vs_out _tmp_return = sky_vs_out(_e39, _e41);
     gl_Position = _tmp_return.gen_gl_Position;
-    _vs2fs_location0 = _tmp_return.v_dir;
+    v_dir = _tmp_return.v_dir;
     return;
 }
 

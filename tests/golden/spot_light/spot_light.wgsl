@@ -1,5 +1,16 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_model: mat4x4<f32>,
+    u_view: mat4x4<f32>,
+    u_proj: mat4x4<f32>,
+    u_light_vp: mat4x4<f32>,
+    u_cam_pos: vec3<f32>,
+    u_is_floor: f32,
+    u_light_pos: vec3<f32>,
+    u_spot_dir: vec3<f32>,
+}
+
 struct spot_shadow_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
 }
@@ -24,51 +35,37 @@ const DEPTH_BIAS: f32 = 0.0006f;
 const SHADOW_FACTOR: f32 = 0.5f;
 
 @group(0) @binding(0) 
-var<uniform> u_model: mat4x4<f32>;
-@group(0) @binding(1) 
-var<uniform> u_view: mat4x4<f32>;
-@group(0) @binding(2) 
-var<uniform> u_proj: mat4x4<f32>;
-@group(0) @binding(3) 
-var<uniform> u_light_vp: mat4x4<f32>;
-@group(0) @binding(4) 
-var<uniform> u_cam_pos: vec3<f32>;
-@group(0) @binding(5) 
-var<uniform> u_is_floor: f32;
+var<uniform> uniforms: Uniforms;
 var<private> a_pos: vec3<f32>;
 var<private> a_normal: vec3<f32>;
 var<private> v_world_pos_1: vec3<f32>;
-@group(0) @binding(6) 
-var<uniform> u_light_pos: vec3<f32>;
-@group(0) @binding(7) 
-var<uniform> u_spot_dir: vec3<f32>;
-@group(0) @binding(8) 
+@group(0) @binding(1) 
 var shadow_map: texture_2d<f32>;
-@group(0) @binding(9) 
+@group(0) @binding(2) 
 var shadow_map_sampler: sampler;
 
 fn shadow_clip() -> vec4<f32> {
-    let _e1 = u_light_vp;
-    let _e3 = u_model;
-    let _e5 = a_pos;
-    return (_e1 * (_e3 * vec4<f32>(_e5, 1f)));
+    let _e2 = uniforms.u_light_vp;
+    let _e5 = uniforms.u_model;
+    let _e7 = a_pos;
+    return (_e2 * (_e5 * vec4<f32>(_e7, 1f)));
 }
 
 fn world_position() -> vec4<f32> {
-    let _e1 = u_model;
-    let _e3 = a_pos;
-    return (_e1 * vec4<f32>(_e3, 1f));
+    let _e2 = uniforms.u_model;
+    let _e4 = a_pos;
+    return (_e2 * vec4<f32>(_e4, 1f));
 }
 
 fn world_normal() -> vec3<f32> {
-    let _e1 = u_model;
-    let _e3 = a_normal;
-    return (_e1 * vec4<f32>(_e3, 0f)).xyz;
+    let _e2 = uniforms.u_model;
+    let _e4 = a_normal;
+    return (_e2 * vec4<f32>(_e4, 0f)).xyz;
 }
 
 fn cone(to_light: vec3<f32>) -> f32 {
-    let _e5 = u_spot_dir;
-    return smoothstep(SPOT_COS_OUTER, SPOT_COS_INNER, dot(-(to_light), normalize(_e5)));
+    let _e6 = uniforms.u_spot_dir;
+    return smoothstep(SPOT_COS_OUTER, SPOT_COS_INNER, dot(-(to_light), normalize(_e6)));
 }
 
 fn to_map(clip: vec4<f32>) -> vec3<f32> {
@@ -76,16 +73,16 @@ fn to_map(clip: vec4<f32>) -> vec3<f32> {
 }
 
 fn spot_shadow(world: vec3<f32>) -> f32 {
-    let _e2 = u_light_vp;
-    let _e6 = to_map((_e2 * vec4<f32>(world, 1f)));
-    let _e10 = textureSample(shadow_map, shadow_map_sampler, _e6.xy);
-    let stored = _e10.x;
-    return select(1f, SHADOW_FACTOR, ((_e6.z - DEPTH_BIAS) > stored));
+    let _e3 = uniforms.u_light_vp;
+    let _e7 = to_map((_e3 * vec4<f32>(world, 1f)));
+    let _e11 = textureSample(shadow_map, shadow_map_sampler, _e7.xy);
+    let stored = _e11.x;
+    return select(1f, SHADOW_FACTOR, ((_e7.z - DEPTH_BIAS) > stored));
 }
 
 fn surface_gloss() -> f32 {
-    let _e1 = u_is_floor;
-    return select(0.5f, 0.15f, (_e1 > 0.5f));
+    let _e2 = uniforms.u_is_floor;
+    return select(0.5f, 0.15f, (_e2 > 0.5f));
 }
 
 fn checker(p: vec3<f32>) -> vec3<f32> {
@@ -95,11 +92,11 @@ fn checker(p: vec3<f32>) -> vec3<f32> {
 }
 
 fn surface_albedo() -> vec3<f32> {
-    let _e1 = u_is_floor;
-    if (_e1 > 0.5f) {
-        let _e5 = v_world_pos_1;
-        let _e6 = checker(_e5);
-        return _e6;
+    let _e2 = uniforms.u_is_floor;
+    if (_e2 > 0.5f) {
+        let _e6 = v_world_pos_1;
+        let _e7 = checker(_e6);
+        return _e7;
     }
     return vec3<f32>(0.85f, 0.45f, 0.3f);
 }
@@ -140,13 +137,13 @@ fn spot_main_vs(@location(0) in_a_pos_1: vec3<f32>, @location(1) in_a_normal: ve
     v_world_pos = _e4.xyz;
     let _e8 = world_normal();
     v_world_normal = _e8;
-    let _e11 = u_proj;
-    let _e13 = u_view;
-    gl_Position_1 = (_e11 * (_e13 * _e4));
-    let _e17 = gl_Position_1;
-    let _e28 = v_world_pos;
-    let _e30 = v_world_normal;
-    return spot_main_vs_out(vec4<f32>(_e17.x, -(_e17.y), ((_e17.z + _e17.w) * 0.5f), _e17.w), _e28, _e30);
+    let _e12 = uniforms.u_proj;
+    let _e15 = uniforms.u_view;
+    gl_Position_1 = (_e12 * (_e15 * _e4));
+    let _e19 = gl_Position_1;
+    let _e30 = v_world_pos;
+    let _e32 = v_world_normal;
+    return spot_main_vs_out(vec4<f32>(_e19.x, -(_e19.y), ((_e19.z + _e19.w) * 0.5f), _e19.w), _e30, _e32);
 }
 
 @fragment 
@@ -155,25 +152,25 @@ fn spot_main_fs(@location(0) in_v_world_pos: vec3<f32>, @location(1) v_world_nor
 
     v_world_pos_1 = in_v_world_pos;
     let n_1 = normalize(v_world_normal_1);
-    let _e5 = u_light_pos;
-    let _e7 = v_world_pos_1;
-    let l = normalize((_e5 - _e7));
-    let _e11 = u_cam_pos;
-    let _e13 = v_world_pos_1;
-    let v = normalize((_e11 - _e13));
+    let _e6 = uniforms.u_light_pos;
+    let _e8 = v_world_pos_1;
+    let l = normalize((_e6 - _e8));
+    let _e13 = uniforms.u_cam_pos;
+    let _e15 = v_world_pos_1;
+    let v = normalize((_e13 - _e15));
     let ndotl = max(dot(n_1, l), 0f);
-    let _e19 = cone(l);
-    let _e21 = v_world_pos_1;
-    let _e22 = spot_shadow(_e21);
-    let light = (_e19 * _e22);
+    let _e21 = cone(l);
+    let _e23 = v_world_pos_1;
+    let _e24 = spot_shadow(_e23);
+    let light = (_e21 * _e24);
     let h = normalize((l + v));
-    let _e33 = surface_gloss();
-    let spec = select(0f, (pow(max(dot(n_1, h), 0f), 48f) * _e33), (ndotl > 0f));
+    let _e35 = surface_gloss();
+    let spec = select(0f, (pow(max(dot(n_1, h), 0f), 48f) * _e35), (ndotl > 0f));
     let color = vec3<f32>(1.25f, 1.15f, 0.95f);
-    let _e41 = surface_albedo();
-    let _e42 = hemisphere(n_1);
-    let rgb = ((_e41 * (_e42 + (color * (ndotl * light)))) + vec3((spec * light)));
+    let _e43 = surface_albedo();
+    let _e44 = hemisphere(n_1);
+    let rgb = ((_e43 * (_e44 + (color * (ndotl * light)))) + vec3((spec * light)));
     f_FragColor_1 = vec4<f32>(rgb, 1f);
-    let _e54 = f_FragColor_1;
-    return spot_main_fs_out(_e54);
+    let _e56 = f_FragColor_1;
+    return spot_main_fs_out(_e56);
 }

@@ -11,23 +11,23 @@ const float SPOT_COS_INNER = 0.9063;
 const float DEPTH_BIAS = 0.0006;
 const float SHADOW_FACTOR = 0.5;
 
-layout(std140) uniform u_light_vp_block { mat4x4 u_light_vp; };
+uniform mat4x4 u_light_vp;
 
-layout(std140) uniform u_cam_pos_block { vec3 u_cam_pos; };
+uniform vec3 u_cam_pos;
 
-layout(std140) uniform u_is_floor_block { float u_is_floor; };
+uniform float u_is_floor;
 
-vec3 v_world_pos = vec3(0.0);
+vec3 io_v_world_pos = vec3(0.0);
 
-layout(std140) uniform u_light_pos_block { vec3 u_light_pos; };
+uniform vec3 u_light_pos;
 
-layout(std140) uniform u_spot_dir_block { vec3 u_spot_dir; };
+uniform vec3 u_spot_dir;
 
 uniform highp sampler2D shadow_map;
 
-smooth in vec3 _vs2fs_location0;
-smooth in vec3 _vs2fs_location1;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec3 v_world_pos;
+smooth in vec3 v_world_normal;
+out vec4 f_FragColor;
 
 float cone(vec3 to_light) {
     vec3 _e5 = u_spot_dir;
@@ -60,7 +60,7 @@ vec3 checker(vec3 p) {
 vec3 surface_albedo() {
     float _e1 = u_is_floor;
     if ((_e1 > 0.5)) {
-        vec3 _e5 = v_world_pos;
+        vec3 _e5 = io_v_world_pos;
         vec3 _e6 = checker(_e5);
         return _e6;
     }
@@ -72,20 +72,20 @@ vec3 hemisphere(vec3 n) {
 }
 
 void main() {
-    vec3 in_v_world_pos = _vs2fs_location0;
-    vec3 v_world_normal = _vs2fs_location1;
-    vec4 f_FragColor = vec4(0.0);
-    v_world_pos = in_v_world_pos;
-    vec3 n_1 = normalize(v_world_normal);
+    vec3 in_v_world_pos = v_world_pos;
+    vec3 in_v_world_normal = v_world_normal;
+    vec4 out_f_FragColor = vec4(0.0);
+    io_v_world_pos = in_v_world_pos;
+    vec3 n_1 = normalize(in_v_world_normal);
     vec3 _e5 = u_light_pos;
-    vec3 _e7 = v_world_pos;
+    vec3 _e7 = io_v_world_pos;
     vec3 l = normalize((_e5 - _e7));
     vec3 _e11 = u_cam_pos;
-    vec3 _e13 = v_world_pos;
+    vec3 _e13 = io_v_world_pos;
     vec3 v = normalize((_e11 - _e13));
     float ndotl = max(dot(n_1, l), 0.0);
     float _e19 = cone(l);
-    vec3 _e21 = v_world_pos;
+    vec3 _e21 = io_v_world_pos;
     float _e22 = spot_shadow(_e21);
     float light = (_e19 * _e22);
     vec3 h = normalize((l + v));
@@ -95,10 +95,10 @@ void main() {
     vec3 _e41 = surface_albedo();
     vec3 _e42 = hemisphere(n_1);
     vec3 rgb = ((_e41 * (_e42 + (color * (ndotl * light)))) + vec3((spec * light)));
-    f_FragColor = vec4(rgb, 1.0);
-    vec4 _e54 = f_FragColor;
+    out_f_FragColor = vec4(rgb, 1.0);
+    vec4 _e54 = out_f_FragColor;
     spot_main_fs_out _tmp_return = spot_main_fs_out(_e54);
-    _fs2p_location0 = _tmp_return.f_FragColor;
+    f_FragColor = _tmp_return.f_FragColor;
     return;
 }
 

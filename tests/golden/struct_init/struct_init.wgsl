@@ -1,5 +1,9 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_light_dir: vec3<f32>,
+}
+
 struct Ray {
     origin: vec3<f32>,
     dir: vec3<f32>,
@@ -22,7 +26,7 @@ struct struct_init_fs_out {
 }
 
 @group(0) @binding(0) 
-var<uniform> u_light_dir: vec3<f32>;
+var<uniform> uniforms: Uniforms;
 
 fn Ray_1(from_: vec3<f32>, to: vec3<f32>) -> Ray {
     return Ray(from_, normalize((to - from_)));
@@ -69,22 +73,22 @@ fn struct_init_fs(@location(0) v_uv_1: vec2<f32>) -> struct_init_fs_out {
     let n_1 = -(_e34.dir);
     let m_1 = select(select(2i, 1i, (v_uv_1.x < 0.66f)), 0i, (v_uv_1.x < 0.33f));
     let _e50 = glow;
-    let _e52 = u_light_dir;
-    let _e53 = shade(_e50, n_1, _e52);
-    c = _e53;
+    let _e53 = uniforms.u_light_dir;
+    let _e54 = shade(_e50, n_1, _e53);
+    c = _e54;
     if (m_1 == 0i) {
-        let _e58 = u_light_dir;
-        let _e59 = shade(base, n_1, _e58);
-        c = _e59;
+        let _e60 = uniforms.u_light_dir;
+        let _e61 = shade(base, n_1, _e60);
+        c = _e61;
     } else {
         if (m_1 == 1i) {
-            let _e64 = u_light_dir;
-            let _e65 = shade(metal, n_1, _e64);
-            c = _e65;
+            let _e67 = uniforms.u_light_dir;
+            let _e68 = shade(metal, n_1, _e67);
+            c = _e68;
         }
     }
-    let _e68 = c;
-    f_color = vec4<f32>(_e68, 1f);
-    let _e72 = f_color;
-    return struct_init_fs_out(_e72);
+    let _e71 = c;
+    f_color = vec4<f32>(_e71, 1f);
+    let _e75 = f_color;
+    return struct_init_fs_out(_e75);
 }

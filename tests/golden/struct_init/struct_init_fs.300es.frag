@@ -16,10 +16,10 @@ struct Material {
 struct struct_init_fs_out {
     vec4 f_color;
 };
-layout(std140) uniform u_light_dir_block { vec3 u_light_dir; };
+uniform vec3 u_light_dir;
 
-smooth in vec2 _vs2fs_location0;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec2 v_uv;
+out vec4 f_color;
 
 Ray Ray_1(vec3 from, vec3 to) {
     return Ray(from, normalize((to - from)));
@@ -37,8 +37,8 @@ vec3 shade(Material m, vec3 n, vec3 l) {
 }
 
 void main() {
-    vec2 v_uv = _vs2fs_location0;
-    vec4 f_color = vec4(0.0);
+    vec2 in_v_uv = v_uv;
+    vec4 out_f_color = vec4(0.0);
     Material glow = Material(vec3(0.0), 0.0, 0.0, vec3(0.0));
     vec3 c = vec3(0.0);
     Material base = Material(vec3(0.8), 0.5, 0.0, vec3(0.0));
@@ -48,9 +48,9 @@ void main() {
         vec3 _e26 = glow.albedo;
         glow.albedo = (_e26 * 0.5);
     }
-    Ray _e34 = Ray_1(vec3(v_uv, 1.0), vec3(0.5, 0.5, 0.0));
+    Ray _e34 = Ray_1(vec3(in_v_uv, 1.0), vec3(0.5, 0.5, 0.0));
     vec3 n_1 = -(_e34.dir);
-    int m_1 = ((v_uv.x < 0.33) ? 0 : ((v_uv.x < 0.66) ? 1 : 2));
+    int m_1 = ((in_v_uv.x < 0.33) ? 0 : ((in_v_uv.x < 0.66) ? 1 : 2));
     Material _e50 = glow;
     vec3 _e52 = u_light_dir;
     vec3 _e53 = shade(_e50, n_1, _e52);
@@ -67,10 +67,10 @@ void main() {
         }
     }
     vec3 _e68 = c;
-    f_color = vec4(_e68, 1.0);
-    vec4 _e72 = f_color;
+    out_f_color = vec4(_e68, 1.0);
+    vec4 _e72 = out_f_color;
     struct_init_fs_out _tmp_return = struct_init_fs_out(_e72);
-    _fs2p_location0 = _tmp_return.f_color;
+    f_color = _tmp_return.f_color;
     return;
 }
 

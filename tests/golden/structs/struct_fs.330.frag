@@ -11,10 +11,10 @@ struct Material {
 struct struct_fs_out {
     vec4 f_color;
 };
-layout(std140) uniform light_block { Light light; };
+layout(std140) uniform light_ubo { Light light; };
 
-smooth in vec3 _vs2fs_location0;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec3 v_normal;
+out vec4 f_color;
 
 vec3 shade(Material m_1, vec3 n, Light l) {
     float ndotl = clamp(dot(n, -(l.dir)), 0.0, 1.0);
@@ -22,20 +22,20 @@ vec3 shade(Material m_1, vec3 n, Light l) {
 }
 
 void main() {
-    vec3 v_normal = _vs2fs_location0;
-    vec4 f_color = vec4(0.0);
+    vec3 in_v_normal = v_normal;
+    vec4 out_f_color = vec4(0.0);
     Material m = Material(vec3(0.0), 0.0);
     m = Material(vec3(0.0), 0.0);
     m.albedo = vec3(0.8, 0.6, 0.4);
     m.roughness = 0.5;
     Material _e13 = m;
     Light _e16 = light;
-    vec3 _e17 = shade(_e13, normalize(v_normal), _e16);
+    vec3 _e17 = shade(_e13, normalize(in_v_normal), _e16);
     float _e21 = m.roughness;
-    f_color = vec4((_e17 + vec3((_e21 * 0.1))), 1.0);
-    vec4 _e29 = f_color;
+    out_f_color = vec4((_e17 + vec3((_e21 * 0.1))), 1.0);
+    vec4 _e29 = out_f_color;
     struct_fs_out _tmp_return = struct_fs_out(_e29);
-    _fs2p_location0 = _tmp_return.f_color;
+    f_color = _tmp_return.f_color;
     return;
 }
 

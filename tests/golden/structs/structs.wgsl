@@ -6,6 +6,10 @@ struct Light {
     color: vec4<f32>,
 }
 
+struct Uniforms {
+    u_mvp: mat4x4<f32>,
+}
+
 struct Material {
     albedo: vec3<f32>,
     roughness: f32,
@@ -23,7 +27,7 @@ struct struct_fs_out {
 @group(0) @binding(0) 
 var<uniform> light: Light;
 @group(0) @binding(1) 
-var<uniform> u_mvp: mat4x4<f32>;
+var<uniform> uniforms: Uniforms;
 
 fn shade(m_1: Material, n: vec3<f32>, l: Light) -> vec3<f32> {
     let ndotl = saturate(dot(n, -(l.dir)));
@@ -36,11 +40,11 @@ fn struct_vs(@location(0) a_pos: vec3<f32>, @location(1) a_normal: vec3<f32>) ->
     var gl_Position: vec4<f32>;
 
     v_normal = a_normal;
-    let _e5 = u_mvp;
-    gl_Position = (_e5 * vec4<f32>(a_pos, 1f));
-    let _e10 = gl_Position;
-    let _e21 = v_normal;
-    return struct_vs_out(vec4<f32>(_e10.x, -(_e10.y), ((_e10.z + _e10.w) * 0.5f), _e10.w), _e21);
+    let _e6 = uniforms.u_mvp;
+    gl_Position = (_e6 * vec4<f32>(a_pos, 1f));
+    let _e11 = gl_Position;
+    let _e22 = v_normal;
+    return struct_vs_out(vec4<f32>(_e11.x, -(_e11.y), ((_e11.z + _e11.w) * 0.5f), _e11.w), _e22);
 }
 
 @fragment 

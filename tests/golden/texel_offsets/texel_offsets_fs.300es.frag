@@ -17,8 +17,8 @@ uniform highp sampler3D volume;
 
 uniform highp sampler2DShadow sun_shadow;
 
-smooth in vec2 _vs2fs_location0;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec2 v_uv;
+out vec4 f_color;
 
 float pcf4_(vec2 uv, float depth) {
     float lit = 0.0;
@@ -38,20 +38,20 @@ float pcf4_(vec2 uv, float depth) {
 }
 
 void main() {
-    vec2 v_uv = _vs2fs_location0;
+    vec2 in_v_uv = v_uv;
     vec4 FragCoord = gl_FragCoord;
-    vec4 f_color = vec4(0.0);
+    vec4 out_f_color = vec4(0.0);
     vec4 c = vec4(0.0);
-    vec4 _e8 = textureOffset(albedo, vec2(v_uv), ivec2(-2, 3));
+    vec4 _e8 = textureOffset(albedo, vec2(in_v_uv), ivec2(-2, 3));
     c = _e8;
-    vec4 _e16 = textureOffset(albedo, vec2(v_uv), ivec2(-1, 0), 0.5);
+    vec4 _e16 = textureOffset(albedo, vec2(in_v_uv), ivec2(-1, 0), 0.5);
     vec4 _e17 = c;
     c = (_e17 + _e16);
-    vec3 _e21 = vec3(v_uv, 1.0);
+    vec3 _e21 = vec3(in_v_uv, 1.0);
     vec4 _e32 = textureLodOffset(layers, vec3(_e21.xy, int(roundEven(_e21.z))), 0.0, ivec2(7, -8));
     vec4 _e33 = c;
     c = (_e33 + _e32);
-    vec4 _e44 = textureOffset(volume, vec3(vec3(v_uv, 0.5)), ivec3(0, 1, -1));
+    vec4 _e44 = textureOffset(volume, vec3(vec3(in_v_uv, 0.5)), ivec3(0, 1, -1));
     vec4 _e45 = c;
     c = (_e45 + _e44);
     vec4 _e56 = texelFetch(albedo, (ivec2(FragCoord.xy) + ivec2(1, 1)), 0);
@@ -62,11 +62,11 @@ void main() {
     vec4 _e73 = c;
     c = (_e73 + _e72);
     vec4 _e77 = c;
-    float _e79 = pcf4_(v_uv, 0.5);
-    f_color = (_e77 * _e79);
-    vec4 _e82 = f_color;
+    float _e79 = pcf4_(in_v_uv, 0.5);
+    out_f_color = (_e77 * _e79);
+    vec4 _e82 = out_f_color;
     texel_offsets_fs_out _tmp_return = texel_offsets_fs_out(_e82);
-    _fs2p_location0 = _tmp_return.f_color;
+    f_color = _tmp_return.f_color;
     return;
 }
 

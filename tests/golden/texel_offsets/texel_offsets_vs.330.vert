@@ -5,23 +5,23 @@ struct texel_offsets_vs_out {
 };
 uniform sampler2D albedo;
 
-layout(location = 0) in vec2 _p2vs_location0;
-smooth out vec2 _vs2fs_location0;
+layout(location = 0) in vec2 a_pos;
+smooth out vec2 v_uv;
 
 void main() {
-    vec2 a_pos = _p2vs_location0;
-    vec2 v_uv = vec2(0.0);
+    vec2 in_a_pos = a_pos;
+    vec2 out_v_uv = vec2(0.0);
     vec4 gen_gl_Position = vec4(0.0);
-    v_uv = ((a_pos * 0.5) + vec2(0.5));
-    vec2 _e8 = v_uv;
+    out_v_uv = ((in_a_pos * 0.5) + vec2(0.5));
+    vec2 _e8 = out_v_uv;
     vec4 _e14 = textureLodOffset(albedo, vec2(_e8), 0.0, ivec2(-1, 0));
     float h = _e14.x;
-    gen_gl_Position = vec4(a_pos, h, 1.0);
+    gen_gl_Position = vec4(in_a_pos, h, 1.0);
     vec4 _e20 = gen_gl_Position;
-    vec2 _e22 = v_uv;
+    vec2 _e22 = out_v_uv;
     texel_offsets_vs_out _tmp_return = texel_offsets_vs_out(_e20, _e22);
     gl_Position = _tmp_return.gen_gl_Position;
-    _vs2fs_location0 = _tmp_return.v_uv;
+    v_uv = _tmp_return.v_uv;
     return;
 }
 

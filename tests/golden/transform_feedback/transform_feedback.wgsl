@@ -1,5 +1,9 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_dt: f32,
+}
+
 struct feedback_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_speed: f32,
@@ -9,7 +13,7 @@ struct feedback_vs_out {
 }
 
 @group(0) @binding(0) 
-var<uniform> u_dt: f32;
+var<uniform> uniforms: Uniforms;
 
 @vertex 
 fn feedback_vs(@location(0) a_pos: vec3<f32>, @location(1) a_vel: vec3<f32>) -> feedback_vs_out {
@@ -19,20 +23,20 @@ fn feedback_vs(@location(0) a_pos: vec3<f32>, @location(1) a_vel: vec3<f32>) -> 
     var o_alive: i32;
     var gl_Position: vec4<f32>;
 
-    let _e8 = u_dt;
-    let v = (a_vel + (vec3<f32>(0f, -(9.81f), 0f) * _e8));
-    let _e13 = u_dt;
-    o_pos = (a_pos + (v * _e13));
+    let _e9 = uniforms.u_dt;
+    let v = (a_vel + (vec3<f32>(0f, -(9.81f), 0f) * _e9));
+    let _e15 = uniforms.u_dt;
+    o_pos = (a_pos + (v * _e15));
     o_vel = v;
-    let _e20 = o_pos.y;
-    o_alive = select(0i, 1i, (_e20 > 0f));
+    let _e22 = o_pos.y;
+    o_alive = select(0i, 1i, (_e22 > 0f));
     v_speed = length(v);
-    let _e30 = o_pos;
-    gl_Position = vec4<f32>(_e30, 1f);
-    let _e34 = gl_Position;
-    let _e45 = v_speed;
-    let _e47 = o_pos;
-    let _e49 = o_vel;
-    let _e51 = o_alive;
-    return feedback_vs_out(vec4<f32>(_e34.x, -(_e34.y), ((_e34.z + _e34.w) * 0.5f), _e34.w), _e45, _e47, _e49, _e51);
+    let _e32 = o_pos;
+    gl_Position = vec4<f32>(_e32, 1f);
+    let _e36 = gl_Position;
+    let _e47 = v_speed;
+    let _e49 = o_pos;
+    let _e51 = o_vel;
+    let _e53 = o_alive;
+    return feedback_vs_out(vec4<f32>(_e36.x, -(_e36.y), ((_e36.z + _e36.w) * 0.5f), _e36.w), _e47, _e49, _e51, _e53);
 }

@@ -1,5 +1,11 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_exposure: f32,
+    u_steps: i32,
+    u_basis: mat3x3<f32>,
+}
+
 struct Grade {
     lift: vec3<f32>,
     gamma: f32,
@@ -16,13 +22,9 @@ struct grade_fs_out {
 }
 
 @group(0) @binding(0) 
-var<uniform> u_exposure: f32;
+var<uniform> uniforms: Uniforms;
 @group(0) @binding(1) 
-var<uniform> u_steps: i32;
-@group(0) @binding(2) 
 var<uniform> u_grade: Grade;
-@group(0) @binding(3) 
-var<uniform> u_basis: mat3x3<f32>;
 
 @vertex 
 fn grade_vs(@location(0) a_pos: vec2<f32>) -> grade_vs_out {
@@ -40,16 +42,16 @@ fn grade_vs(@location(0) a_pos: vec2<f32>) -> grade_vs_out {
 fn grade_fs(@location(0) v_uv_1: vec2<f32>) -> grade_fs_out {
     var f_color: vec4<f32>;
 
-    let _e3 = u_steps;
-    let _e8 = u_steps;
-    let banded = (floor((v_uv_1.x * f32(_e3))) / f32(_e8));
-    let _e12 = u_basis;
-    let _e18 = u_exposure;
-    let _e22 = u_grade.lift;
-    let c = (((_e12 * vec3<f32>(banded, v_uv_1.y, 0.5f)) * _e18) + _e22);
-    let _e28 = u_grade.gamma;
-    let _e36 = u_grade.gain;
-    f_color = (vec4<f32>(pow(c, vec3((1f / _e28))), 1f) * _e36);
-    let _e39 = f_color;
-    return grade_fs_out(_e39);
+    let _e4 = uniforms.u_steps;
+    let _e10 = uniforms.u_steps;
+    let banded = (floor((v_uv_1.x * f32(_e4))) / f32(_e10));
+    let _e15 = uniforms.u_basis;
+    let _e22 = uniforms.u_exposure;
+    let _e26 = u_grade.lift;
+    let c = (((_e15 * vec3<f32>(banded, v_uv_1.y, 0.5f)) * _e22) + _e26);
+    let _e32 = u_grade.gamma;
+    let _e40 = u_grade.gain;
+    f_color = (vec4<f32>(pow(c, vec3((1f / _e32))), 1f) * _e40);
+    let _e43 = f_color;
+    return grade_fs_out(_e43);
 }

@@ -19,15 +19,15 @@ struct Scene {
 struct layout_fs_out {
     vec4 f_color;
 };
-layout(std140) uniform scene_block { Scene scene; };
+layout(std140) uniform scene_ubo { Scene scene; };
 
-layout(std140) uniform u_kernel_block { vec4 u_kernel[8]; };
+uniform vec4 u_kernel[8];
 
-layout(std140) uniform u_lights_block { Light u_lights[2]; };
+uniform Light u_lights[2];
 
-smooth in vec3 _vs2fs_location0;
-smooth in vec3 _vs2fs_location1;
-layout(location = 0) out vec4 _fs2p_location0;
+smooth in vec3 v_pos;
+smooth in vec3 v_normal;
+out vec4 f_color;
 
 vec3 light_at(Light l, vec3 p, vec3 n) {
     vec3 d = (l.position - p);
@@ -36,15 +36,15 @@ vec3 light_at(Light l, vec3 p, vec3 n) {
 }
 
 void main() {
-    vec3 v_pos = _vs2fs_location0;
-    vec3 v_normal = _vs2fs_location1;
-    vec4 f_color = vec4(0.0);
+    vec3 in_v_pos = v_pos;
+    vec3 in_v_normal = v_normal;
+    vec4 out_f_color = vec4(0.0);
     vec3 c = vec3(0.0);
     int i = 0;
     int i_1 = 0;
     float k = 0.0;
     int i_2 = 0;
-    vec3 n_1 = normalize(v_normal);
+    vec3 n_1 = normalize(in_v_normal);
     c = vec3(0.0);
     i = 0;
     int _e10 = scene.light_count;
@@ -61,7 +61,7 @@ void main() {
         }
         int _e18 = i;
         Light _e20 = scene.lights[_e18];
-        vec3 _e21 = light_at(_e20, v_pos, n_1);
+        vec3 _e21 = light_at(_e20, in_v_pos, n_1);
         vec3 _e22 = c;
         c = (_e22 + _e21);
     }
@@ -79,7 +79,7 @@ void main() {
         }
         int _e36 = i_1;
         Light _e38 = u_lights[_e36];
-        vec3 _e39 = light_at(_e38, v_pos, n_1);
+        vec3 _e39 = light_at(_e38, in_v_pos, n_1);
         vec3 _e40 = c;
         c = (_e40 + _e39);
     }
@@ -104,7 +104,7 @@ void main() {
         k = (_e67 + (_e59 + _e65));
     }
     float _e75 = scene.fog.density;
-    float f = exp((-(_e75) * length(v_pos)));
+    float f = exp((-(_e75) * length(in_v_pos)));
     vec3 _e84 = scene.fog.color;
     vec3 _e86 = c;
     float _e89 = scene.exposure;
@@ -112,10 +112,10 @@ void main() {
     vec3 _e95 = c;
     vec2 _e98 = scene.tint;
     float _e103 = k;
-    f_color = vec4(((_e95 * vec3(_e98, 1.0)) + vec3((_e103 * 0.001))), 1.0);
-    vec4 _e111 = f_color;
+    out_f_color = vec4(((_e95 * vec3(_e98, 1.0)) + vec3((_e103 * 0.001))), 1.0);
+    vec4 _e111 = out_f_color;
     layout_fs_out _tmp_return = layout_fs_out(_e111);
-    _fs2p_location0 = _tmp_return.f_color;
+    f_color = _tmp_return.f_color;
     return;
 }
 

@@ -21,33 +21,33 @@ struct layout_vs_out {
     vec3 v_pos;
     vec3 v_normal;
 };
-layout(std140) uniform scene_block { Scene scene; };
+layout(std140) uniform scene_ubo { Scene scene; };
 
-layout(std140) uniform u_mvp_block { mat4x4 u_mvp; };
+uniform mat4x4 u_mvp;
 
-layout(location = 0) in vec3 _p2vs_location0;
-layout(location = 1) in vec3 _p2vs_location1;
-smooth out vec3 _vs2fs_location0;
-smooth out vec3 _vs2fs_location1;
+layout(location = 0) in vec3 a_pos;
+layout(location = 1) in vec3 a_normal;
+smooth out vec3 v_pos;
+smooth out vec3 v_normal;
 
 void main() {
-    vec3 a_pos = _p2vs_location0;
-    vec3 a_normal = _p2vs_location1;
-    vec3 v_pos = vec3(0.0);
-    vec3 v_normal = vec3(0.0);
+    vec3 in_a_pos = a_pos;
+    vec3 in_a_normal = a_normal;
+    vec3 out_v_pos = vec3(0.0);
+    vec3 out_v_normal = vec3(0.0);
     vec4 gen_gl_Position = vec4(0.0);
-    v_pos = a_pos;
+    out_v_pos = in_a_pos;
     mat3x3 _e6 = scene.normal_matrix;
-    v_normal = (_e6 * a_normal);
+    out_v_normal = (_e6 * in_a_normal);
     mat4x4 _e10 = u_mvp;
-    gen_gl_Position = (_e10 * vec4(a_pos, 1.0));
+    gen_gl_Position = (_e10 * vec4(in_a_pos, 1.0));
     vec4 _e15 = gen_gl_Position;
-    vec3 _e17 = v_pos;
-    vec3 _e19 = v_normal;
+    vec3 _e17 = out_v_pos;
+    vec3 _e19 = out_v_normal;
     layout_vs_out _tmp_return = layout_vs_out(_e15, _e17, _e19);
     gl_Position = _tmp_return.gen_gl_Position;
-    _vs2fs_location0 = _tmp_return.v_pos;
-    _vs2fs_location1 = _tmp_return.v_normal;
+    v_pos = _tmp_return.v_pos;
+    v_normal = _tmp_return.v_normal;
     return;
 }
 

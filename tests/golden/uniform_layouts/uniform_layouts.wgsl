@@ -20,6 +20,12 @@ struct Scene {
     tint: vec2<f32>,
 }
 
+struct Uniforms {
+    u_kernel: array<vec4<f32>, 8>,
+    u_lights: array<Light, 2>,
+    u_mvp: mat4x4<f32>,
+}
+
 struct layout_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_pos: vec3<f32>,
@@ -33,11 +39,7 @@ struct layout_fs_out {
 @group(0) @binding(0) 
 var<uniform> scene: Scene;
 @group(0) @binding(1) 
-var<uniform> u_kernel: array<vec4<f32>, 8>;
-@group(0) @binding(2) 
-var<uniform> u_lights: array<Light, 2>;
-@group(0) @binding(3) 
-var<uniform> u_mvp: mat4x4<f32>;
+var<uniform> uniforms: Uniforms;
 
 fn light_at(l: Light, p: vec3<f32>, n: vec3<f32>) -> vec3<f32> {
     let d = (l.position - p);
@@ -54,12 +56,12 @@ fn layout_vs(@location(0) a_pos: vec3<f32>, @location(1) a_normal: vec3<f32>) ->
     v_pos = a_pos;
     let _e6 = scene.normal_matrix;
     v_normal = (_e6 * a_normal);
-    let _e10 = u_mvp;
-    gl_Position = (_e10 * vec4<f32>(a_pos, 1f));
-    let _e15 = gl_Position;
-    let _e26 = v_pos;
-    let _e28 = v_normal;
-    return layout_vs_out(vec4<f32>(_e15.x, -(_e15.y), ((_e15.z + _e15.w) * 0.5f), _e15.w), _e26, _e28);
+    let _e11 = uniforms.u_mvp;
+    gl_Position = (_e11 * vec4<f32>(a_pos, 1f));
+    let _e16 = gl_Position;
+    let _e27 = v_pos;
+    let _e29 = v_normal;
+    return layout_vs_out(vec4<f32>(_e16.x, -(_e16.y), ((_e16.z + _e16.w) * 0.5f), _e16.w), _e27, _e29);
 }
 
 @fragment 
@@ -96,44 +98,44 @@ fn layout_fs(@location(0) v_pos_1: vec3<f32>, @location(1) v_normal_1: vec3<f32>
         if !((_e30 < 2i)) {
             break;
         }
-        let _e36 = i_1;
-        let _e38 = u_lights[_e36];
-        let _e39 = light_at(_e38, v_pos_1, n_1);
-        let _e40 = c;
-        c = (_e40 + _e39);
+        let _e37 = i_1;
+        let _e39 = uniforms.u_lights[_e37];
+        let _e40 = light_at(_e39, v_pos_1, n_1);
+        let _e41 = c;
+        c = (_e41 + _e40);
         continuing {
-            let _e42 = i_1;
-            i_1 = (_e42 + 1i);
+            let _e43 = i_1;
+            i_1 = (_e43 + 1i);
         }
     }
     k = 0f;
     i_2 = 0i;
     loop {
-        let _e50 = i_2;
-        if !((_e50 < 8i)) {
+        let _e51 = i_2;
+        if !((_e51 < 8i)) {
             break;
         }
-        let _e56 = i_2;
-        let _e59 = u_kernel[_e56].x;
-        let _e62 = i_2;
-        let _e65 = u_kernel[_e62].w;
-        let _e67 = k;
-        k = (_e67 + (_e59 + _e65));
+        let _e58 = i_2;
+        let _e61 = uniforms.u_kernel[_e58].x;
+        let _e65 = i_2;
+        let _e68 = uniforms.u_kernel[_e65].w;
+        let _e70 = k;
+        k = (_e70 + (_e61 + _e68));
         continuing {
-            let _e69 = i_2;
-            i_2 = (_e69 + 1i);
+            let _e72 = i_2;
+            i_2 = (_e72 + 1i);
         }
     }
-    let _e75 = scene.fog.density;
-    let f = exp((-(_e75) * length(v_pos_1)));
-    let _e84 = scene.fog.color;
-    let _e86 = c;
-    let _e89 = scene.exposure;
-    c = mix(_e84, (_e86 * _e89), vec3(f));
-    let _e95 = c;
-    let _e98 = scene.tint;
-    let _e103 = k;
-    f_color = vec4<f32>(((_e95 * vec3<f32>(_e98, 1f)) + vec3((_e103 * 0.001f))), 1f);
-    let _e111 = f_color;
-    return layout_fs_out(_e111);
+    let _e78 = scene.fog.density;
+    let f = exp((-(_e78) * length(v_pos_1)));
+    let _e87 = scene.fog.color;
+    let _e89 = c;
+    let _e92 = scene.exposure;
+    c = mix(_e87, (_e89 * _e92), vec3(f));
+    let _e98 = c;
+    let _e101 = scene.tint;
+    let _e106 = k;
+    f_color = vec4<f32>(((_e98 * vec3<f32>(_e101, 1f)) + vec3((_e106 * 0.001f))), 1f);
+    let _e114 = f_color;
+    return layout_fs_out(_e114);
 }

@@ -1,13 +1,16 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_bits: i32,
+    u_mask: vec4<u32>,
+}
+
 struct vector_shifts_fs_out {
     @location(0) f_color: vec4<f32>,
 }
 
 @group(0) @binding(0) 
-var<uniform> u_bits: i32;
-@group(0) @binding(1) 
-var<uniform> u_mask: vec4<u32>;
+var<uniform> uniforms: Uniforms;
 
 @fragment 
 fn vector_shifts_fs(@builtin(position) FragCoord: vec4<f32>) -> vector_shifts_fs_out {
@@ -16,17 +19,17 @@ fn vector_shifts_fs(@builtin(position) FragCoord: vec4<f32>) -> vector_shifts_fs
 
     let texel = vec2<i32>(FragCoord.xy);
     let tile = (texel >> vec2(u32(3i)));
-    let _e8 = u_mask;
-    let _e10 = u_bits;
-    let unpacked = ((_e8 >> vec4(u32(_e10))) & vec4(255u));
+    let _e9 = uniforms.u_mask;
+    let _e12 = uniforms.u_bits;
+    let unpacked = ((_e9 >> vec4(u32(_e12))) & vec4(255u));
     acc = (vec3<i32>(tile, 1i) << vec3(u32(2i)));
-    let _e26 = acc;
-    acc = (_e26 << vec3(u32(1i)));
-    let _e32 = u_bits;
-    let _e33 = acc;
-    acc = (_e33 >> vec3(u32(_e32)));
-    let _e39 = acc;
-    f_color = vec4<f32>((vec3<f32>((_e39 & vec3(7i))) / vec3(7f)), (f32(unpacked.x) / 255f));
-    let _e53 = f_color;
-    return vector_shifts_fs_out(_e53);
+    let _e28 = acc;
+    acc = (_e28 << vec3(u32(1i)));
+    let _e35 = uniforms.u_bits;
+    let _e36 = acc;
+    acc = (_e36 >> vec3(u32(_e35)));
+    let _e42 = acc;
+    f_color = vec4<f32>((vec3<f32>((_e42 & vec3(7i))) / vec3(7f)), (f32(unpacked.x) / 255f));
+    let _e56 = f_color;
+    return vector_shifts_fs_out(_e56);
 }

@@ -2,15 +2,15 @@
 struct vector_shifts_fs_out {
     vec4 f_color;
 };
-layout(std140) uniform u_bits_block { int u_bits; };
+uniform int u_bits;
 
-layout(std140) uniform u_mask_block { uvec4 u_mask; };
+uniform uvec4 u_mask;
 
-layout(location = 0) out vec4 _fs2p_location0;
+out vec4 f_color;
 
 void main() {
     vec4 FragCoord = gl_FragCoord;
-    vec4 f_color = vec4(0.0);
+    vec4 out_f_color = vec4(0.0);
     ivec3 acc = ivec3(0);
     ivec2 texel = ivec2(FragCoord.xy);
     ivec2 tile = (texel >> uvec2(uint(3)));
@@ -24,10 +24,10 @@ void main() {
     ivec3 _e33 = acc;
     acc = (_e33 >> uvec3(uint(_e32)));
     ivec3 _e39 = acc;
-    f_color = vec4((vec3((_e39 & ivec3(7))) / vec3(7.0)), (float(unpacked.x) / 255.0));
-    vec4 _e53 = f_color;
+    out_f_color = vec4((vec3((_e39 & ivec3(7))) / vec3(7.0)), (float(unpacked.x) / 255.0));
+    vec4 _e53 = out_f_color;
     vector_shifts_fs_out _tmp_return = vector_shifts_fs_out(_e53);
-    _fs2p_location0 = _tmp_return.f_color;
+    f_color = _tmp_return.f_color;
     return;
 }
 

@@ -13,11 +13,11 @@ uniform highp sampler2D heightmap;
 
 uniform highp sampler2DShadow shadow;
 
-layout(std140) uniform u_mvp_block { mat4x4 u_mvp; };
+uniform mat4x4 u_mvp;
 
-layout(location = 0) in vec2 _p2vs_location0;
-smooth out vec2 _vs2fs_location0;
-smooth out float _vs2fs_location1;
+layout(location = 0) in vec2 a_pos;
+smooth out vec2 v_uv;
+smooth out float v_height;
 
 float height_at_vertex(vec2 uv) {
     vec4 _e3 = textureLod(heightmap, vec2(uv), 0.0);
@@ -25,31 +25,31 @@ float height_at_vertex(vec2 uv) {
 }
 
 void main() {
-    vec2 a_pos = _p2vs_location0;
-    vec2 v_uv = vec2(0.0);
-    float v_height = 0.0;
+    vec2 in_a_pos = a_pos;
+    vec2 out_v_uv = vec2(0.0);
+    float out_v_height = 0.0;
     vec4 gen_gl_Position = vec4(0.0);
-    v_uv = ((a_pos * 0.5) + vec2(0.5));
-    vec2 _e8 = v_uv;
+    out_v_uv = ((in_a_pos * 0.5) + vec2(0.5));
+    vec2 _e8 = out_v_uv;
     float _e9 = height_at_vertex(_e8);
-    vec2 _e11 = v_uv;
+    vec2 _e11 = out_v_uv;
     vec4 _e15 = textureLod(heightmap, vec2(_e11), 1.0);
     float h = (_e9 + _e15.y);
-    vec2 _e20 = v_uv;
+    vec2 _e20 = out_v_uv;
     float _e24 = textureLod(shadow, vec3(_e20, 0.5), 0.0);
-    vec2 _e27 = v_uv;
+    vec2 _e27 = out_v_uv;
     vec3 _e29 = vec3(_e27, 1.0);
     vec4 _e36 = textureLod(heightmap, vec2((_e29.xy / vec2(_e29.z))), 0.0);
-    v_height = ((h * _e24) + _e36.z);
+    out_v_height = ((h * _e24) + _e36.z);
     mat4x4 _e41 = u_mvp;
-    gen_gl_Position = (_e41 * vec4(a_pos.x, h, a_pos.y, 1.0));
+    gen_gl_Position = (_e41 * vec4(in_a_pos.x, h, in_a_pos.y, 1.0));
     vec4 _e48 = gen_gl_Position;
-    vec2 _e50 = v_uv;
-    float _e52 = v_height;
+    vec2 _e50 = out_v_uv;
+    float _e52 = out_v_height;
     terrain_vs_out _tmp_return = terrain_vs_out(_e48, _e50, _e52);
     gl_Position = _tmp_return.gen_gl_Position;
-    _vs2fs_location0 = _tmp_return.v_uv;
-    _vs2fs_location1 = _tmp_return.v_height;
+    v_uv = _tmp_return.v_uv;
+    v_height = _tmp_return.v_height;
     return;
 }
 

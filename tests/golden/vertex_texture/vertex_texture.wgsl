@@ -1,5 +1,9 @@
 diagnostic(off, derivative_uniformity);
 
+struct Uniforms {
+    u_mvp: mat4x4<f32>,
+}
+
 struct terrain_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_uv: vec2<f32>,
@@ -19,7 +23,7 @@ var shadow: texture_depth_2d;
 @group(0) @binding(3) 
 var shadow_sampler: sampler_comparison;
 @group(0) @binding(4) 
-var<uniform> u_mvp: mat4x4<f32>;
+var<uniform> uniforms: Uniforms;
 
 fn height_at(uv: vec2<f32>) -> f32 {
     let _e3 = textureSample(heightmap, heightmap_sampler, uv);
@@ -49,12 +53,12 @@ fn terrain_vs(@location(0) a_pos: vec2<f32>) -> terrain_vs_out {
     let _e29 = vec3<f32>(_e27, 1f);
     let _e36 = textureSampleLevel(heightmap, heightmap_sampler, (_e29.xy / vec2(_e29.z)), 0.0);
     v_height = ((h * _e24) + _e36.z);
-    let _e41 = u_mvp;
-    gl_Position = (_e41 * vec4<f32>(a_pos.x, h, a_pos.y, 1f));
-    let _e48 = gl_Position;
-    let _e59 = v_uv;
-    let _e61 = v_height;
-    return terrain_vs_out(vec4<f32>(_e48.x, -(_e48.y), ((_e48.z + _e48.w) * 0.5f), _e48.w), _e59, _e61);
+    let _e42 = uniforms.u_mvp;
+    gl_Position = (_e42 * vec4<f32>(a_pos.x, h, a_pos.y, 1f));
+    let _e49 = gl_Position;
+    let _e60 = v_uv;
+    let _e62 = v_height;
+    return terrain_vs_out(vec4<f32>(_e49.x, -(_e49.y), ((_e49.z + _e49.w) * 0.5f), _e49.w), _e60, _e62);
 }
 
 @fragment 
