@@ -128,11 +128,12 @@ enum Family {
 }
 
 impl Family {
-    fn label(self) -> &'static str {
+    /// Who guarantees the minimums, as a sentence's subject and verb.
+    fn promise(self) -> &'static str {
         match self {
-            Family::Gl330 => "GL 3.3 core",
-            Family::Es300 => "GLES 3.0 and WebGL2",
-            Family::Wgpu => "wgpu's default limits (WebGPU)",
+            Family::Gl330 => "GL 3.3 core guarantees",
+            Family::Es300 => "GLES 3.0 and WebGL2 guarantee",
+            Family::Wgpu => "wgpu's default limits (WebGPU's) allow",
         }
     }
 
@@ -224,7 +225,7 @@ pub fn check(lowered: &Lowered, targets: &[Target], raised: &[(Limit, u64)], dia
                 return;
             }
             let Some((_, span, name)) = used.items.iter().find(|(total, ..)| *total > allowed) else { return };
-            let stated = if allowed == minimum { format!("the {minimum} that {} guarantees ({api})", family.label()) } else { format!("the stated limit of {allowed}") };
+            let stated = if allowed == minimum { format!("the {minimum} that {} ({api})", family.promise()) } else { format!("the stated limit of {allowed}") };
             diags.push(
                 Diagnostic::error(format!("{whose} uses {} {} in {}, over {stated}", used.count, limit.what(), family.target()), *span)
                     .with_label(format!("`{name}` goes over the limit"))

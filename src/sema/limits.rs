@@ -4,8 +4,13 @@
 
 /// Largest `T[N]` accepted.
 pub const MAX_ARRAY_LEN: u64 = 65_536;
-/// Highest `@location` accepted (exclusive).
-pub const MAX_LOCATIONS: u32 = 16;
+/// Highest `@location` accepted (exclusive): a bound on the checker's
+/// tables. What devices guarantee (16 attributes, 15 or 16 varyings) is
+/// checked per target by `emit::limits`, which `--limit` can raise.
+pub const MAX_LOCATIONS: u32 = 32;
+/// Highest `@set` accepted (exclusive), likewise: wgpu's default of 4 bind
+/// groups is checked by `emit::limits`.
+pub const MAX_SETS: i64 = 32;
 /// Nesting depth of expressions and blocks the checker follows. A call of a
 /// helper function that is checked on first use starts the callee at the
 /// caller's depth plus [`CALL_DEPTH`], so chains of calls count too.

@@ -33,7 +33,8 @@ fn every_program_matches_its_golden_outputs() {
 
 /// The options a program under shaders/ asks for on its first line,
 /// `// umbrac: --target wgsl --target spirv` (a program with a construct
-/// only some targets have: shaders/wgsl_spirv/); default: all targets.
+/// only some targets have: shaders/wgsl_spirv/), or `// umbrac:
+/// --gl-uniforms blocks`; default: all targets, plain GL uniforms.
 fn options_of(path: &Path) -> umbrac::Options {
     let text = std::fs::read_to_string(path).unwrap_or_default();
     let mut opts = umbrac::Options::default();
@@ -42,6 +43,7 @@ fn options_of(path: &Path) -> umbrac::Options {
         for pair in words.chunks(2) {
             match pair {
                 ["--target", t] => opts.targets.push(umbrac::Target::from_name(t).unwrap_or_else(|| panic!("{}: unknown target `{t}`", path.display()))),
+                ["--gl-uniforms", "blocks"] => opts.gl_uniforms = umbrac::GlUniforms::Blocks,
                 other => panic!("{}: unknown option {other:?} on the first line", path.display()),
             }
         }

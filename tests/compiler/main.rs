@@ -25,6 +25,7 @@ mod check;
 #[cfg(feature = "cli")]
 mod cli;
 mod constants;
+mod device_limits;
 #[cfg(feature = "deserialize")]
 mod emit;
 mod features;

@@ -450,8 +450,9 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
             Some((n as u32, span))
         };
-        // wgpu's defaults: 4 bind groups, 1000 bindings per group.
-        let set = checked(set, "set", 4);
+        // Bounds of the checker's tables; wgpu's default of 4 bind groups
+        // is checked per target (`emit::limits`); 1000 bindings per group.
+        let set = checked(set, "set", crate::sema::limits::MAX_SETS);
         let binding = checked(binding, "binding", 1000);
         if set.is_some() || binding.is_some() {
             self.bind_written.insert(self.out.globals.len(), (set, binding));

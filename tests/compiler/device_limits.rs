@@ -1,0 +1,130 @@
+//! The minimum limits of each target's devices (`emit::limits`): a program
+//! over one is an error on that target that names the resource, the count
+//! and the limit, at the declaration that goes over; one within them
+//! compiles; `--limit NAME=N` (`Options::limits`) compiles for more.
+
+use umbrac::{compile_source, Compilation, Limit, Options, Target};
+
+fn compile(src: &str, targets: &[Target], limits: &[(Limit, u64)]) -> Compilation {
+    let opts = Options { targets: targets.to_vec(), limits: limits.to_vec(), ..Options::default() };
+    compile_source("limits.das", src, &opts)
+}
+
+/// The error messages of a compilation (none when it compiled).
+fn errors(c: &Compilation) -> Vec<String> {
+    c.diagnostics.iter().filter(|d| d.severity == umbrac::Severity::Error).map(|d| d.message.clone()).collect()
+}
+
+/// A fragment program that reads `decls`' uniforms in `body`.
+fn frag(decls: &str, body: &str) -> String {
+    format!("{decls}\nvar @out f_color : float4\n[fragment_program]\ndef fs {{\n    var s = 0.0\n{body}\n    f_color = float4(s)\n}}\n")
+}
+
+const ALL: &[Target] = &[Target::Glsl330, Target::Gles300, Target::Wgsl, Target::Spirv];
+
+fn each_target() -> impl Iterator<Item = Target> {
+    ALL.iter().copied()
+}
+
+/// `n` struct uniforms, each its own block / buffer, all read.
+fn struct_uniforms(n: usize) -> String {
+    let decls: String = (0..n).map(|i| format!("var @uniform u_s{i} : S\n")).collect();
+    let body: String = (0..n).map(|i| format!("    s += u_s{i}.v.x\n")).collect();
+    frag(&format!("struct S {{\n    v : float4\n}}\n{decls}"), &body)
+}
+
+#[test]
+fn many_loose_uniforms_fit_every_target() {
+    // daslang's glTF tutorial has 22 loose uniforms; one buffer holds them.
+    let decls: String = (0..22).map(|i| format!("var @uniform u_f{i} : float\n")).collect();
+    let body: String = (0..22).map(|i| format!("    s += u_f{i}\n")).collect();
+    for t in each_target() {
+        let c = compile(&frag(&decls, &body), &[t], &[]);
+        assert!(c.result.is_some(), "{t:?}:\n{}", c.render_diagnostics());
+    }
+}
+
+#[test]
+fn thirteen_uniform_blocks_are_over_the_limit_everywhere() {
+    let src = struct_uniforms(13);
+    for t in each_target() {
+        let c = compile(&src, &[t], &[]);
+        let e = errors(&c);
+        let (what, limit, api) = match t {
+            Target::Glsl330 | Target::Gles300 => ("13 uniform blocks", "12", "GL_MAX_FRAGMENT_UNIFORM_BLOCKS"),
+            _ => ("13 uniform buffers", "12", "max_uniform_buffers_per_shader_stage"),
+        };
+        assert!(c.result.is_none() && e.len() == 1, "{t:?}: {e:?}");
+        assert!(e[0].starts_with(&format!("fragment entry point `fs` uses {what} in ")) && e[0].contains(&format!("over the {limit} that")) && e[0].contains(api), "{t:?}: {e:?}");
+        // The error points at the thirteenth, with the option that raises it.
+        let d = &c.diagnostics[0];
+        let span = d.span.expect("located");
+        assert_eq!(&src[span.start as usize..span.end as usize], "u_s12", "{t:?}");
+        let name = if matches!(t, Target::Glsl330 | Target::Gles300) { "uniform-blocks" } else { "uniform-buffers" };
+        assert!(d.notes.iter().any(|n| n.contains(&format!("--limit {name}=N"))), "{t:?}: {:?}", d.notes);
+        // Stated higher, it compiles.
+        let raised = [(Limit::from_name(name).unwrap(), 16)];
+        let c = compile(&src, &[t], &raised);
+        assert!(c.result.is_some(), "{t:?} with {name}=16:\n{}", c.render_diagnostics());
+    }
+    assert!(compile(&struct_uniforms(12), ALL, &[]).result.is_some());
+}
+
+#[test]
+fn uniform_vectors_are_counted_per_stage_against_es_fragment_minimum() {
+    // 230 float4 loose uniforms: over ES 3.00's 224 fragment vectors, within
+    // GL 3.3's 256; one buffer on WGSL/SPIR-V.
+    let decls = "var @uniform u_big : float4[230]\nvar @uniform u_i : int";
+    let src = frag(decls, "    s += u_big[u_i].x");
+    let es = compile(&src, &[Target::Gles300], &[]);
+    let e = errors(&es);
+    assert!(e.len() == 1 && e[0].contains("uses 231 uniform vectors in GLSL ES 3.00, over the 224 that GLES 3.0 and WebGL2 guarantee (GL_MAX_FRAGMENT_UNIFORM_VECTORS)"), "{e:?}");
+    for t in [Target::Glsl330, Target::Wgsl, Target::Spirv] {
+        let c = compile(&src, &[t], &[]);
+        assert!(c.result.is_some(), "{t:?}:\n{}", c.render_diagnostics());
+    }
+    // In blocks, the same uniforms count as one block, not as vectors.
+    let opts = Options { targets: vec![Target::Gles300], gl_uniforms: umbrac::GlUniforms::Blocks, ..Options::default() };
+    let c = compile_source("limits.das", &src, &opts);
+    assert!(c.result.is_some(), "{}", c.render_diagnostics());
+}
+
+#[test]
+fn attributes_varyings_textures_and_outputs() {
+    // 17 vertex attributes.
+    let attrs: String = (0..17).map(|i| format!("var @in a_{i}x : float\n")).collect();
+    let sum: String = (0..17).map(|i| format!(" + a_{i}x")).collect();
+    let vs = format!("{attrs}[vertex_program]\ndef vs {{\n    gl_Position = float4(0.0{sum})\n}}\n");
+    for t in each_target() {
+        let e = errors(&compile(&vs, &[t], &[]));
+        assert!(e.len() == 1 && e[0].contains("uses 17 vertex attribute locations") && e[0].contains("over the 16"), "{t:?}: {e:?}");
+    }
+    // 17 samplers in one stage: texture units on GL, textures and samplers on wgpu.
+    let decls: String = (0..17).map(|i| format!("var @uniform t{i}x : sampler2D\n")).collect();
+    let body: String = (0..17).map(|i| format!("    s += texture(t{i}x, float2(0.5)).x\n")).collect();
+    let src = frag(&decls, &body);
+    let gl = errors(&compile(&src, &[Target::Glsl330], &[]));
+    assert!(gl.len() == 1 && gl[0].contains("uses 17 texture units in GLSL 330, over the 16") && gl[0].contains("GL_MAX_TEXTURE_IMAGE_UNITS"), "{gl:?}");
+    let gpu = errors(&compile(&src, &[Target::Wgsl], &[]));
+    assert!(gpu.len() == 2 && gpu[0].contains("17 sampled textures") && gpu[1].contains("17 samplers"), "{gpu:?}");
+    // 5 colour outputs: over ES 3.00's 4 draw buffers, within GL 3.3's 8.
+    let outs: String = (0..5).map(|i| format!("var @out @location = {i} o_{i}x : float4\n")).collect();
+    let writes: String = (0..5).map(|i| format!("    o_{i}x = float4(1.0)\n")).collect();
+    let mrt = format!("{outs}[fragment_program]\ndef fs {{\n{writes}}}\n");
+    let es = errors(&compile(&mrt, &[Target::Gles300], &[]));
+    assert!(es.len() == 1 && es[0].contains("uses 5 colour outputs in GLSL ES 3.00, over the 4") && es[0].contains("GL_MAX_DRAW_BUFFERS"), "{es:?}");
+    assert!(compile(&mrt, &[Target::Glsl330, Target::Wgsl], &[]).result.is_some());
+}
+
+#[test]
+fn bind_groups_and_buffer_size() {
+    let src = frag("var @uniform @set = 4 u_far : float", "    s += u_far");
+    let e = errors(&compile(&src, &[Target::Wgsl], &[]));
+    assert!(e.len() == 1 && e[0].contains("uses 5 bind groups in WGSL/SPIR-V, over the 4") && e[0].contains("max_bind_groups"), "{e:?}");
+    assert!(compile(&src, &[Target::Glsl330, Target::Gles300], &[]).result.is_some(), "GL has no bind groups");
+    // A loose buffer of 20 KiB: over GL's 16 KiB block only in blocks form.
+    let big = frag("var @uniform u_big : float4[1280]\nvar @uniform u_i : int", "    s += u_big[u_i].x");
+    let opts = Options { targets: vec![Target::Glsl330], gl_uniforms: umbrac::GlUniforms::Blocks, limits: vec![(Limit::UniformVectors, 2000)], ..Options::default() };
+    let e = errors(&compile_source("limits.das", &big, &opts));
+    assert!(e.len() == 1 && e[0].contains("bytes in one uniform block in GLSL 330, over the 16384"), "{e:?}");
+}

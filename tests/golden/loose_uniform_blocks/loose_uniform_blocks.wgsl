@@ -1,0 +1,133 @@
+diagnostic(off, derivative_uniformity);
+
+struct Uniforms {
+    u_scale: f32,
+    u_offset: vec2<f32>,
+    u_tint: vec3<f32>,
+    u_color: vec4<f32>,
+    u_flip: u32,
+    u_mask: vec2<u32>,
+    u_count: i32,
+    u_index: u32,
+    u_weights: array<vec4<f32>, 9>,
+    u_taps: array<vec4<f32>, 3>,
+    u_shear: array<vec4<f32>, 3>,
+    u_rot: array<vec4<f32>, 2>,
+    u_basis: mat3x3<f32>,
+    u_model: mat4x4<f32>,
+    u_steps: array<vec4<i32>, 4>,
+    u_gains: array<vec3<f32>, 2>,
+    u_bias: f32,
+    u_levels: vec2<u32>,
+    u_on: vec3<u32>,
+    u_mix: array<vec4<f32>, 4>,
+}
+
+struct loose_vs_out {
+    @builtin(position) gl_Position: vec4<f32>,
+    @location(0) v_p: vec2<f32>,
+    @location(1) v_m: vec2<f32>,
+    @location(2) v_k: f32,
+}
+
+struct loose_fs_out {
+    @location(0) f_color: vec4<f32>,
+}
+
+@group(0) @binding(0) 
+var<uniform> uniforms: Uniforms;
+
+@vertex 
+fn loose_vs(@location(0) a_pos: vec2<f32>) -> loose_vs_out {
+    var v_p: vec2<f32>;
+    var v_m: vec2<f32>;
+    var v_k: f32;
+    var gl_Position: vec4<f32>;
+
+    let _e5 = uniforms.u_shear[0];
+    let _e8 = uniforms.u_shear[1];
+    let _e11 = uniforms.u_shear[2];
+    let _e19 = uniforms.u_offset;
+    v_p = ((mat3x2<f32>(_e5.xy, _e8.xy, _e11.xy) * vec3<f32>(a_pos, 1f)) + _e19);
+    let _e25 = uniforms.u_rot[0];
+    let _e28 = uniforms.u_rot[1];
+    v_m = (mat2x2<f32>(_e25.xy, _e28.xy) * a_pos);
+    let _e36 = uniforms.u_weights[0];
+    let _e41 = uniforms.u_weights[8];
+    let _e45 = uniforms.u_count;
+    let _e51 = uniforms.u_flip;
+    let _e61 = uniforms.u_steps[3];
+    v_k = (((_e36.x + (_e41.x * f32(_e45))) + select(0f, 0.25f, (_e51 != 0u))) + (f32(_e61.x) * 0.01f));
+    let _e70 = uniforms.u_model;
+    let _e73 = uniforms.u_scale;
+    gl_Position = (_e70 * vec4<f32>((a_pos * _e73), 0f, 1f));
+    let _e80 = gl_Position;
+    let _e91 = v_p;
+    let _e93 = v_m;
+    let _e95 = v_k;
+    return loose_vs_out(vec4<f32>(_e80.x, -(_e80.y), ((_e80.z + _e80.w) * 0.5f), _e80.w), _e91, _e93, _e95);
+}
+
+@fragment 
+fn loose_fs(@location(0) v_p_1: vec2<f32>, @location(1) v_m_1: vec2<f32>, @location(2) v_k_1: f32) -> loose_fs_out {
+    var f_color: vec4<f32>;
+    var s: f32;
+    var i: i32;
+    var on: f32;
+
+    s = 0f;
+    i = 0i;
+    loop {
+        let _e8 = i;
+        if !((_e8 < 9i)) {
+            break;
+        }
+        let _e15 = i;
+        let _e17 = uniforms.u_weights[_e15];
+        let _e19 = s;
+        s = (_e19 + _e17.x);
+        continuing {
+            let _e21 = i;
+            i = (_e21 + 1i);
+        }
+    }
+    let _e28 = uniforms.u_index;
+    let _e31 = uniforms.u_taps[_e28].x;
+    let _e36 = uniforms.u_taps[2].y;
+    let t = (_e31 + _e36);
+    let _e40 = uniforms.u_basis;
+    let _e43 = uniforms.u_tint;
+    let c = (_e40 * _e43);
+    let _e48 = uniforms.u_gains[1];
+    let _e51 = uniforms.u_bias;
+    let g = (_e48 * _e51);
+    let _e59 = uniforms.u_mix[0];
+    let _e62 = uniforms.u_mix[1];
+    let _e65 = uniforms.u_mix[2];
+    let _e68 = uniforms.u_mix[3];
+    let mx = (vec2<f32>(v_p_1.x, v_m_1.y) * mat4x2<f32>(_e59.xy, _e62.xy, _e65.xy, _e68.xy));
+    let _e76 = uniforms.u_mask.y;
+    on = select(0f, 0.05f, (_e76 != 0u));
+    let _e85 = uniforms.u_on.x;
+    if (_e85 != 0u) {
+        let _e90 = on;
+        on = (_e90 + 0.1f);
+    }
+    let _e95 = uniforms.u_on.z;
+    if (_e95 != 0u) {
+        let _e100 = on;
+        on = (_e100 + 0.2f);
+    }
+    let _e105 = uniforms.u_levels.x;
+    let _e109 = uniforms.u_levels.y;
+    let lv = (f32((_e105 + _e109)) * 0.01f);
+    let _e116 = uniforms.u_color;
+    let base = (((_e116.xyz * 0.5f) + (c * 0.1f)) + g);
+    let _e133 = on;
+    let _e144 = s;
+    let _e151 = uniforms.u_steps[1];
+    let rgb = (((base + (vec3<f32>(v_p_1.x, v_p_1.y, v_k_1) * 0.25f)) + (vec3<f32>(mx.x, (mx.y + _e133), (mx.z + lv)) * 0.1f)) + vec3((((t * 0.1f) + (_e144 * 0.02f)) + (f32(_e151.x) * 0.01f))));
+    f_color = vec4<f32>(clamp(rgb, vec3(0f), vec3(1f)), 1f);
+    let _e168 = f_color;
+    return loose_fs_out(_e168);
+}
