@@ -106,3 +106,43 @@ fn bindgen_writes_the_module_and_reflect_prints_the_manifest() {
     assert_eq!(printed["uniforms"][0]["name"], "u_light_vp");
     assert_eq!(printed["samplers"][0]["glsl_name"], "shadow_map");
 }
+
+/// A file named as daslang's tutorials are (`08_shadow.das`) gets a valid
+/// module name (`_08_shadow`); a module name given explicitly must be one.
+#[test]
+fn bindgen_makes_a_module_name_from_any_file_name() {
+    let d = tempfile::tempdir().unwrap();
+    std::fs::copy(repo().join("shaders/shadow.das"), d.path().join("08_shadow.das")).unwrap();
+    std::fs::copy(repo().join("shaders/shadow.das"), d.path().join("my-shader.das")).unwrap();
+    let o = umbrac(&["bindgen", "08_shadow.das", "-o", "b.rs"], d.path());
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let rs = std::fs::read_to_string(d.path().join("b.rs")).unwrap();
+    assert!(rs.contains("pub mod _08_shadow {"), "{}", &rs[..400]);
+    let o = umbrac(&["bindgen", "my-shader.das"], d.path());
+    assert!(o.status.success() && text(&o.stdout).contains("pub mod my_shader {"), "{}", text(&o.stderr));
+    let o = umbrac(&["bindgen", "08_shadow.das", "--module", "08x"], d.path());
+    assert_eq!(o.status.code(), Some(1), "{}", text(&o.stderr));
+    assert!(text(&o.stderr).contains("not a Rust identifier"), "{}", text(&o.stderr));
+}
+
+/// `--gl-uniforms blocks` and `--limit NAME=N` reach the compiler; a bad
+/// `--limit` is a usage error that lists the names.
+#[test]
+fn gl_uniform_form_and_limits_on_the_command_line() {
+    let d = tempfile::tempdir().unwrap();
+    let shader = repo().join("shaders/shadow.das");
+    let o = umbrac(&["compile", shader.to_str().unwrap(), "-o", "blocks", "--gl-uniforms", "blocks", "--target", "glsl330"], d.path());
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let vs = std::fs::read_to_string(d.path().join("blocks/main_vs.330.vert")).unwrap();
+    assert!(vs.contains("layout(std140) uniform uniforms_ubo { Uniforms uniforms; };") && !vs.contains("uniform mat4x4 u_model;"), "{vs}");
+    let manifest: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(d.path().join("blocks/shadow.reflect.json")).unwrap()).unwrap();
+    assert_eq!(manifest["gl_uniforms"], "blocks");
+    assert_eq!(manifest["uniform_buffers"][0]["glsl_block"], "uniforms_ubo");
+
+    let o = umbrac(&["compile", shader.to_str().unwrap(), "-o", "x", "--limit", "uniform-blocks=16", "--limit", "texture-units=32"], d.path());
+    assert!(o.status.success(), "{}", text(&o.stderr));
+    let o = umbrac(&["compile", shader.to_str().unwrap(), "-o", "y", "--limit", "uniform-blobs=3"], d.path());
+    assert_eq!(o.status.code(), Some(2));
+    assert!(text(&o.stderr).contains("no limit is named `uniform-blobs`") && text(&o.stderr).contains("uniform-buffers"), "{}", text(&o.stderr));
+    assert!(!d.path().join("y").exists());
+}

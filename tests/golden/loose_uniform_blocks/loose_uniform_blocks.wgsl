@@ -23,14 +23,14 @@ struct Uniforms {
     u_mix: array<vec4<f32>, 4>,
 }
 
-struct loose_vs_out {
+struct blocks_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_p: vec2<f32>,
     @location(1) v_m: vec2<f32>,
     @location(2) v_k: f32,
 }
 
-struct loose_fs_out {
+struct blocks_fs_out {
     @location(0) f_color: vec4<f32>,
 }
 
@@ -38,7 +38,7 @@ struct loose_fs_out {
 var<uniform> uniforms: Uniforms;
 
 @vertex 
-fn loose_vs(@location(0) a_pos: vec2<f32>) -> loose_vs_out {
+fn blocks_vs(@location(0) a_pos: vec2<f32>) -> blocks_vs_out {
     var v_p: vec2<f32>;
     var v_m: vec2<f32>;
     var v_k: f32;
@@ -65,11 +65,11 @@ fn loose_vs(@location(0) a_pos: vec2<f32>) -> loose_vs_out {
     let _e91 = v_p;
     let _e93 = v_m;
     let _e95 = v_k;
-    return loose_vs_out(vec4<f32>(_e80.x, -(_e80.y), ((_e80.z + _e80.w) * 0.5f), _e80.w), _e91, _e93, _e95);
+    return blocks_vs_out(vec4<f32>(_e80.x, -(_e80.y), ((_e80.z + _e80.w) * 0.5f), _e80.w), _e91, _e93, _e95);
 }
 
 @fragment 
-fn loose_fs(@location(0) v_p_1: vec2<f32>, @location(1) v_m_1: vec2<f32>, @location(2) v_k_1: f32) -> loose_fs_out {
+fn blocks_fs(@location(0) v_p_1: vec2<f32>, @location(1) v_m_1: vec2<f32>, @location(2) v_k_1: f32) -> blocks_fs_out {
     var f_color: vec4<f32>;
     var s: f32;
     var i: i32;
@@ -129,5 +129,5 @@ fn loose_fs(@location(0) v_p_1: vec2<f32>, @location(1) v_m_1: vec2<f32>, @locat
     let rgb = (((base + (vec3<f32>(v_p_1.x, v_p_1.y, v_k_1) * 0.25f)) + (vec3<f32>(mx.x, (mx.y + _e133), (mx.z + lv)) * 0.1f)) + vec3((((t * 0.1f) + (_e144 * 0.02f)) + (f32(_e151.x) * 0.01f))));
     f_color = vec4<f32>(clamp(rgb, vec3(0f), vec3(1f)), 1f);
     let _e168 = f_color;
-    return loose_fs_out(_e168);
+    return blocks_fs_out(_e168);
 }

@@ -1,8 +1,4 @@
-#version 300 es
-
-precision highp float;
-precision highp int;
-
+#version 330 core
 struct Uniforms {
     float u_scale;
     vec2 u_offset;
@@ -25,7 +21,7 @@ struct Uniforms {
     uvec3 u_on;
     vec4 u_mix[4];
 };
-struct loose_fs_out {
+struct blocks_fs_out {
     vec4 f_color;
 };
 layout(std140) uniform uniforms_ubo { Uniforms uniforms; };
@@ -99,7 +95,7 @@ void main() {
     vec3 rgb = (((base + (vec3(in_v_p.x, in_v_p.y, in_v_k) * 0.25)) + (vec3(mx.x, (mx.y + _e133), (mx.z + lv)) * 0.1)) + vec3((((t * 0.1) + (_e144 * 0.02)) + (float(_e151.x) * 0.01))));
     out_f_color = vec4(clamp(rgb, vec3(0.0), vec3(1.0)), 1.0);
     vec4 _e168 = out_f_color;
-    loose_fs_out _tmp_return = loose_fs_out(_e168);
+    blocks_fs_out _tmp_return = blocks_fs_out(_e168);
     f_color = _tmp_return.f_color;
     return;
 }

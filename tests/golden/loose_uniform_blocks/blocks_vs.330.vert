@@ -21,7 +21,7 @@ struct Uniforms {
     uvec3 u_on;
     vec4 u_mix[4];
 };
-struct loose_vs_out {
+struct blocks_vs_out {
     vec4 gen_gl_Position;
     vec2 v_p;
     vec2 v_m;
@@ -61,7 +61,7 @@ void main() {
     vec2 _e82 = out_v_p;
     vec2 _e84 = out_v_m;
     float _e86 = out_v_k;
-    loose_vs_out _tmp_return = loose_vs_out(_e80, _e82, _e84, _e86);
+    blocks_vs_out _tmp_return = blocks_vs_out(_e80, _e82, _e84, _e86);
     gl_Position = _tmp_return.gen_gl_Position;
     v_p = _tmp_return.v_p;
     v_m = _tmp_return.v_m;
