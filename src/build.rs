@@ -120,10 +120,12 @@ impl Build {
         Build::default()
     }
 
-    /// Compiles `file` with no extra defines into a module named after its stem.
+    /// Compiles `file` with no extra defines into a module named after its
+    /// stem, made a Rust identifier (`08_shadow.das` -> `_08_shadow`,
+    /// `bindgen::module_name_of`).
     pub fn file(mut self, file: impl AsRef<Path>) -> Self {
         let file = file.as_ref().to_path_buf();
-        let name = crate::stem_of(&file.to_string_lossy());
+        let name = crate::bindgen::module_name_of(&crate::stem_of(&file.to_string_lossy()));
         self.variants.push(Variant { file, name, defines: vec![] });
         self
     }
@@ -285,7 +287,7 @@ impl Build {
             self.cargo(&format!("rerun-if-changed={}", dir.display()));
             let found = crate::batch::programs_under(dir).map_err(|e| err(format!("cannot list shader directory {}: {e}", dir.display())))?;
             for f in found {
-                let name = crate::stem_of(&f.path.to_string_lossy());
+                let name = crate::bindgen::module_name_of(&crate::stem_of(&f.path.to_string_lossy()));
                 let mut rel: Vec<String> = f.subdir.components().map(|c| c.as_os_str().to_string_lossy().into_owned()).collect();
                 rel.push(file_name(&f.path));
                 planned.push(Planned { variant: Variant { file: f.path, name, defines: vec![] }, group: None, source_name: rel.join("/") });

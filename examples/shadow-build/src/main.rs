@@ -1,5 +1,5 @@
 //! Renders umbrac's shadow scene headless with wgpu and writes a PNG, using
-//! only what build.rs generated: the WGSL, the uniform block structs, the
+//! only what build.rs generated: the WGSL, the uniform buffer struct, the
 //! binding constants, the bind group layout entries and the vertex layout.
 //!
 //! Usage: `shadow-build [OUT.png]` (default `shadow.png`). Exit status 2
@@ -10,7 +10,7 @@ include!(concat!(env!("OUT_DIR"), "/umbrac/shaders.rs"));
 
 use glam::camera::rh::{proj::opengl, view::look_at_mat4};
 use glam::{Mat4, Quat, Vec3};
-use shadow::{main_fs, main_vs, samplers, shadow_fs, shadow_vs, uniforms};
+use shadow::{main_fs, main_vs, samplers, shadow_fs, shadow_vs, uniform_buffers};
 use wgpu::util::DeviceExt;
 
 const WIDTH: u32 = 640;
@@ -77,24 +77,23 @@ fn main() {
     let (device, queue) = pollster::block_on(adapter.request_device(&Default::default())).expect("open a device");
     let scene = Scene::at(0.8);
 
-    // One set of uniform buffers per draw (cube, floor): u_model and
-    // u_is_floor differ between draws. The structs are the generated ones.
+    // One uniform buffer per draw (cube, floor): the loose uniforms of
+    // group 0 in the generated struct; u_model and u_is_floor differ
+    // between draws.
     let buffer = |bytes: &[u8], usage| device.create_buffer_init(&wgpu::util::BufferInitDescriptor { label: None, contents: bytes, usage });
-    let uniform = |bytes: &[u8]| buffer(bytes, wgpu::BufferUsages::UNIFORM);
-    let shared = [
-        (uniforms::u_light_vp::BINDING, uniform(bytemuck::bytes_of(&shadow::ULightVp::new(scene.light_vp.to_cols_array_2d())))),
-        (uniforms::u_view::BINDING, uniform(bytemuck::bytes_of(&shadow::UView::new(scene.view.to_cols_array_2d())))),
-        (uniforms::u_proj::BINDING, uniform(bytemuck::bytes_of(&shadow::UProj::new(scene.proj.to_cols_array_2d())))),
-        (uniforms::u_light_dir::BINDING, uniform(bytemuck::bytes_of(&shadow::ULightDir::new(scene.light_dir.into())))),
-        (uniforms::u_cam_pos::BINDING, uniform(bytemuck::bytes_of(&shadow::UCamPos::new(scene.cam_pos.into())))),
-    ];
-    let per_draw: Vec<[(u32, wgpu::Buffer); 2]> = [(scene.cube_model, 0.0), (Mat4::IDENTITY, 1.0)]
+    let per_draw: Vec<wgpu::Buffer> = [(scene.cube_model, 0.0), (Mat4::IDENTITY, 1.0)]
         .iter()
         .map(|(model, is_floor)| {
-            [
-                (uniforms::u_model::BINDING, uniform(bytemuck::bytes_of(&shadow::UModel::new(model.to_cols_array_2d())))),
-                (uniforms::u_is_floor::BINDING, uniform(bytemuck::bytes_of(&shadow::UIsFloor::new(*is_floor)))),
-            ]
+            let values = shadow::Uniforms::new(
+                scene.light_vp.to_cols_array_2d(),
+                model.to_cols_array_2d(),
+                scene.view.to_cols_array_2d(),
+                scene.proj.to_cols_array_2d(),
+                scene.light_dir.into(),
+                scene.cam_pos.into(),
+                *is_floor,
+            );
+            buffer(bytemuck::bytes_of(&values), wgpu::BufferUsages::UNIFORM)
         })
         .collect();
     let meshes: Vec<(wgpu::Buffer, wgpu::Buffer, u32)> = meshes()
@@ -159,8 +158,7 @@ fn main() {
 
     // Bind groups per draw: each pass binds exactly the bindings its layout has.
     let bind_group = |layout: &wgpu::BindGroupLayout, used: &[u32], draw: usize| {
-        let mut entries: Vec<wgpu::BindGroupEntry> =
-            shared.iter().chain(&per_draw[draw]).map(|(binding, b)| wgpu::BindGroupEntry { binding: *binding, resource: b.as_entire_binding() }).collect();
+        let mut entries = vec![wgpu::BindGroupEntry { binding: uniform_buffers::uniforms::BINDING, resource: per_draw[draw].as_entire_binding() }];
         entries.push(wgpu::BindGroupEntry { binding: samplers::shadow_map::TEXTURE_BINDING, resource: wgpu::BindingResource::TextureView(&shadow_view) });
         entries.push(wgpu::BindGroupEntry { binding: samplers::shadow_map::SAMPLER_BINDING, resource: wgpu::BindingResource::Sampler(&sampler) });
         entries.retain(|e| used.contains(&e.binding));
