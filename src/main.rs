@@ -29,6 +29,8 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
+
+mod cli;
 use codespan_reporting::term::termcolor::{ColorChoice, StandardStream};
 use umbrac::{Compilation, Conventions, Diagnostic, Options, Severity, SourceMap, Target};
 
@@ -57,7 +59,7 @@ enum Command {
     Bindgen(BindgenArgs),
     /// Render the shadow scene from compiled shaders.
     #[cfg(feature = "render")]
-    Render(umbrac::render::cli::RenderArgs),
+    Render(cli::render::RenderArgs),
 }
 
 #[derive(Args, Debug)]
@@ -280,7 +282,7 @@ fn main() -> ExitCode {
             if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
                 std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
             }
-            umbrac::render::cli::run(&args).clamp(0, 255) as u8
+            cli::render::run(&args)
         }
     };
     ExitCode::from(code)

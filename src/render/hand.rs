@@ -7,7 +7,7 @@ use std::collections::BTreeMap;
 
 use crate::emit::reflect_types::{EntryPoint, Io, Member, ProgramLink, Reflection, Sampler, UniformBlock, REFLECTION_FORMAT};
 
-use super::gpu::{ShaderCode, ShaderSet};
+use super::program::{ShaderCode, ShaderSet};
 
 /// The hand-written WGSL text.
 pub const WGSL: &str = include_str!("../../shaders/hand/shadow.wgsl");

@@ -23,10 +23,8 @@ use std::collections::BTreeMap;
 use image::RgbaImage;
 use support::gpu;
 use umbrac::render::consumers::{self, Consumer, Programs, Status};
-use umbrac::render::gl::{GlApi, GlError};
-use umbrac::render::glsl_set::GlslSet;
-use umbrac::render::webgl::WebGl;
-use umbrac::render::{image_ops, reference, FrameParams, View};
+use umbrac::render::exec::webgl::WebGl;
+use umbrac::render::{image_ops, reference, ExecError, FrameParams, SceneExecutor, ShaderSet, View};
 
 const W: u32 = 160;
 const H: u32 = 120;
@@ -149,14 +147,14 @@ fn without_any_sampler_precision(text: &str) -> String {
     without_preamble(text).replace("uniform highp sampler2DShadow", "uniform sampler2DShadow")
 }
 
-fn gles_set() -> GlslSet {
+fn gles_set() -> ShaderSet {
     programs().gles300
 }
 
 #[test]
 fn the_es_outputs_declare_sampler_precision() {
     let set = gles_set();
-    let (file, text) = set.entry("main_fs").unwrap();
+    let (file, text) = set.glsl("main_fs").unwrap();
     assert!(text.lines().any(|l| l.trim() == "precision highp sampler2DShadow;"), "{file} lacks the preamble:\n{text}");
     assert!(text.contains("uniform highp sampler2DShadow"), "{file}: naga's declaration changed:\n{text}");
     // The edits below really remove every precision for the sampler.
@@ -166,20 +164,20 @@ fn the_es_outputs_declare_sampler_precision() {
 
 #[test]
 fn es_sampler_precision_matters_on_gles() {
-    let Some(r) = gpu::gl(GlApi::Gles300) else { return };
+    let Some(r) = gpu::gl(Consumer::Gles300) else { return };
     let p = FrameParams::new(2.0, W, H);
-    let intact = r.render(&gles_set(), &p).expect("the ES output as emitted renders");
+    let intact = r.render_scene(&gles_set(), &p).expect("the ES output as emitted renders");
     let stats = image_ops::diff_masked(&intact, &reference::render(&p), DELTA, Some(&reference::render_frame(&p).outside_shadow_map));
     assert!(stats.fraction_over <= REF_MAX_FRACTION, "{stats}");
 
     // Without the preamble line the declaration's own `highp` still gives
     // the sampler a precision: it compiles and renders the same picture.
-    let preamble_only = r.render(&gles_set().map_sources(without_preamble), &p).expect("naga's `uniform highp` is enough");
+    let preamble_only = r.render_scene(&gles_set().map_sources(without_preamble), &p).expect("naga's `uniform highp` is enough");
     assert_eq!(image_ops::diff(&intact, &preamble_only, 0).over, 0);
 
     // Without any precision for sampler2DShadow the ES compiler refuses.
-    match r.prepare(&gles_set().map_sources(without_any_sampler_precision)) {
-        Err(GlError::Compile { file, log }) => {
+    match r.prepare_scene(&gles_set().map_sources(without_any_sampler_precision)) {
+        Err(ExecError::Compile { file, log }) => {
             eprintln!("{file}: {log}");
             assert!(file.starts_with("main_fs"), "{file}");
             assert!(log.to_lowercase().contains("precision"), "{log}");
@@ -190,22 +188,22 @@ fn es_sampler_precision_matters_on_gles() {
 
     // Desktop GLSL 330 has no precision rules at all: its output carries none.
     let glsl330 = programs().glsl330;
-    assert!(glsl330.files.values().all(|t| !t.contains("precision highp sampler2DShadow")));
+    assert!(glsl330.modules.iter().all(|m| !matches!(m, umbrac::render::ShaderCode::Glsl { text, .. } if text.contains("precision highp sampler2DShadow"))));
 }
 
 #[test]
 fn es_sampler_precision_matters_in_webgl2() {
     let Some(tools) = support::or_skip(WebGl::find(), "no WebGL2 consumer") else { return };
     let p = FrameParams::new(2.0, W, H);
-    let preamble_only = tools.render(&gles_set().map_sources(without_preamble), &p).expect("naga's `uniform highp` is enough");
+    let preamble_only = tools.render_scene(&gles_set().map_sources(without_preamble), &p).expect("naga's `uniform highp` is enough");
     let stats = image_ops::diff_masked(
-        &preamble_only.image,
+        &preamble_only,
         &reference::render(&p),
         DELTA,
         Some(&reference::render_frame(&p).outside_shadow_map),
     );
     assert!(stats.fraction_over <= REF_MAX_FRACTION, "{stats}");
-    let err = tools.render(&gles_set().map_sources(without_any_sampler_precision), &p).expect_err("no precision compiled in WebGL2");
+    let err = tools.render_scene(&gles_set().map_sources(without_any_sampler_precision), &p).expect_err("no precision compiled in WebGL2").to_string();
     eprintln!("webgl2: {err}");
     assert!(err.contains("main_fs") && err.contains("does not compile"), "{err}");
     assert!(err.to_lowercase().contains("precision"), "{err}");
@@ -213,22 +211,22 @@ fn es_sampler_precision_matters_in_webgl2() {
 
 #[test]
 fn gl_contexts_bind_what_the_reflection_names() {
-    let Some(r) = gpu::gl(GlApi::Gl330) else { return };
+    let Some(r) = gpu::gl(Consumer::Gl330) else { return };
     // A block renamed in the manifest but not in the shader is an error
     // that names it, not a black picture.
     let mut set = programs().glsl330;
-    set.reflection.uniform_blocks[0].glsl_block = "nowhere_block".into();
-    let err = r.prepare(&set).err().expect("a missing block must not bind").to_string();
+    set.reflection.as_mut().unwrap().uniform_blocks[0].glsl_block = "nowhere_block".into();
+    let err = r.prepare_scene(&set).err().expect("a missing block must not bind").to_string();
     assert!(err.contains("nowhere_block"), "{err}");
     // So is an attribute location the driver disagrees with.
     let mut set = programs().glsl330;
-    for e in &mut set.reflection.entry_points {
+    for e in &mut set.reflection.as_mut().unwrap().entry_points {
         for i in &mut e.inputs {
             if i.name == "a_normal" {
                 i.location = 5;
             }
         }
     }
-    let err = r.prepare(&set).err().expect("a wrong location must not bind").to_string();
+    let err = r.prepare_scene(&set).err().expect("a wrong location must not bind").to_string();
     assert!(err.contains("location"), "{err}");
 }
