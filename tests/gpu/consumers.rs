@@ -230,3 +230,68 @@ fn gl_contexts_bind_what_the_reflection_names() {
     let err = r.prepare_scene(&set).err().expect("a wrong location must not bind").to_string();
     assert!(err.contains("location"), "{err}");
 }
+
+/// daslang's own generator's GLSL for the tutorial (`../shared/reference/
+/// dasglsl-glsl/08_shadow/`, 330 and ES 3.00) as a set with no manifest,
+/// or `None` (with a message) when `../shared` is not here.
+fn daslang_glsl(consumer: Consumer) -> Option<ShaderSet> {
+    let mut dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/reference/dasglsl-glsl/08_shadow");
+    if consumer == Consumer::Gles300 {
+        dir.push("es300");
+    }
+    if !dir.is_dir() {
+        eprintln!("skipping: {} is not here", dir.display());
+        return None;
+    }
+    let entries = ["shadow_vs", "shadow_fs", "main_vs", "main_fs"].map(|e| {
+        let file = format!("{e}.glsl");
+        let text = std::fs::read_to_string(dir.join(&file)).unwrap();
+        (e.to_string(), file, text)
+    });
+    Some(ShaderSet::glsl_by_name("daslang's 08_shadow GLSL", consumer.target().unwrap(), entries))
+}
+
+/// A host that binds everything by the names in the source, as the
+/// tutorials' hosts bind daslang's GLSL (`glGetUniformLocation`,
+/// `glUniform*`, `glGetAttribLocation`), with no manifest at all, draws the
+/// shadow scene on GL 3.3 and GLES 3.0 within the reference rule, and
+/// agrees with umbrac's output bound from its manifest.
+#[test]
+fn a_host_binding_by_source_names_draws_the_scene() {
+    let p = FrameParams::new(2.0, W, H);
+    let lit = p.with_view(View::Lit);
+    let reference = reference::render_frame(&p);
+    let skip = &reference.outside_shadow_map;
+    let inside = |m: Vec<bool>| m.into_iter().zip(skip).map(|(m, s)| m && !s).collect::<Vec<_>>();
+    let ref_shadow = inside(image_ops::shadow_mask(&reference.image, &reference::render(&lit)));
+    for consumer in [Consumer::Gl330, Consumer::Gles300] {
+        let Some(set) = daslang_glsl(consumer) else { return };
+        let Some(r) = gpu::gl(consumer) else { continue };
+        assert!(set.reflection.is_none());
+        let program = r.prepare_scene(&set).unwrap_or_else(|e| panic!("{}: {e}", consumer.name()));
+        let image = r.draw_scene(&program, &p).unwrap();
+        let image_lit = r.draw_scene(&program, &lit).unwrap();
+        let stats = image_ops::diff_masked(&image, &reference.image, DELTA, Some(skip));
+        let iou = image_ops::iou(&inside(image_ops::shadow_mask(&image, &image_lit)), &ref_shadow);
+        eprintln!("{} by name, daslang's GLSL vs reference: {stats}; shadow IoU {iou:.3}", consumer.name());
+        assert!(stats.fraction_over <= REF_MAX_FRACTION && iou >= MIN_SHADOW_IOU, "{}: {stats}; IoU {iou:.3}", consumer.name());
+        let ours = r.render_scene(programs().for_consumer(consumer).unwrap(), &p).unwrap();
+        let stats = image_ops::diff(&image, &ours, DELTA);
+        eprintln!("{} by name vs umbrac's output from its manifest: {stats}", consumer.name());
+        assert!(stats.fraction_over <= GPU_MAX_FRACTION, "{}: {stats}", consumer.name());
+    }
+}
+
+/// By name, a uniform the scene has no value for, or an attribute its
+/// meshes lack, is an error naming it.
+#[test]
+fn a_by_name_host_names_what_it_cannot_bind() {
+    let Some(set) = daslang_glsl(Consumer::Gl330) else { return };
+    let Some(r) = gpu::gl(Consumer::Gl330) else { return };
+    let renamed = set.clone().map_sources(|t| t.replace("u_is_floor", "u_floor"));
+    let err = r.prepare_scene(&renamed).err().expect("an unknown uniform must not bind").to_string();
+    assert!(err.contains("uniform `u_floor` is not a value the scene sets"), "{err}");
+    let renamed = set.map_sources(|t| t.replace("a_normal", "a_norm"));
+    let err = r.prepare_scene(&renamed).err().expect("an unknown attribute must not bind").to_string();
+    assert!(err.contains("attribute `a_norm` is not in the shadow scene's meshes"), "{err}");
+}

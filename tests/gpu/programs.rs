@@ -163,3 +163,22 @@ fn uniform_defaults_reach_every_consumer_in_their_groups() {
     );
 }
 
+
+#[test]
+fn checks_hold_in_webgl2() {
+    // The self-checking frame plan (an integer target read back as words)
+    // in the browser too, once: each program costs a chromium start.
+    use umbrac::render::exec::webgl::WebGl;
+    use umbrac::render::{plan, Executor, ShaderSet};
+    let Some(page) = support::or_skip(WebGl::find(), "no WebGL2 consumer") else { return };
+    let list = ["fz == 0.0", "(-7 + z) % 3 == -1", "(-7.5 + fz) % 2.0 == 0.5", "fz == 1.0"];
+    let src = checks("", &list);
+    let c = umbrac::compile_source("webgl_checks.das", &src, &umbrac::Options::default());
+    let compiled = c.result.as_ref().filter(|_| !c.has_errors()).expect("compiles");
+    let set = ShaderSet::from_compiled("webgl checks", compiled, umbrac::Target::Gles300).unwrap();
+    let plan = plan::checks::plan("prog_vs", "prog_fs", list.len() as u32);
+    let prepared = page.prepare(&set, &plan).unwrap();
+    let words = page.run(&prepared, &plan).unwrap().words().expect("words");
+    assert_eq!(words.iter().map(|p| p[0]).collect::<Vec<_>>(), [1, 1, 1, 0], "{words:?}");
+    assert_eq!(words.iter().map(|p| p[1]).collect::<Vec<_>>(), [0, 1, 2, 3], "pixel i reports x = i");
+}

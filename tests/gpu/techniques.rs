@@ -129,3 +129,24 @@ fn front_face_culling_without_bias() {
 fn rgba8_encoded_depth() {
     check(Technique::Rgba8Depth);
 }
+
+/// The same plans in WebGL2 (the page runs any plan, not only the
+/// tutorial's): three shadow passes and an array of shadow samplers, and
+/// depth encoded into an RGBA8 target read without compare. WebGL2 has no
+/// clamp-to-border; these scenes do not use it.
+#[test]
+fn technique_scenes_run_in_webgl2() {
+    use umbrac::render::exec::webgl::WebGl;
+    let Some(page) = support::or_skip(WebGl::find(), "no WebGL2 consumer") else { return };
+    let mut failures = Vec::new();
+    for t in [Technique::Cascades, Technique::Rgba8Depth] {
+        let compiled = t.compile().unwrap_or_else(|e| panic!("{e}"));
+        let set = ShaderSet::from_compiled(t.name(), &compiled, Target::Gles300).unwrap();
+        let p = FrameParams::new(TIMES[1], W, H);
+        let plan = techniques::plan(t, &p);
+        let program = page.prepare(&set, &plan).unwrap_or_else(|e| panic!("{} in WebGL2: {e}", t.name()));
+        let image = page.run(&program, &plan).unwrap_or_else(|e| panic!("{} in WebGL2: {e}", t.name())).into_image();
+        failures.extend(judge(t, "webgl2", TIMES[1], &image, &reference::render(t, &p)));
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
