@@ -54,7 +54,7 @@ pub fn write(out: &mut [u8], slot: &Slot, value: &Value) -> Result<(), String> {
         }
         Ok(())
     };
-    for i in 0..value.len() {
+    for i in 0..value.elements() {
         let base = slot.offset as usize + i * array_stride;
         let words = value.element(i);
         if rows > 0 {
@@ -137,7 +137,7 @@ mod tests {
         write(&mut out, &slot("float3x2", 0, None, Some(16)), &m).unwrap();
         let at = |o: usize| f32::from_le_bytes(out[o..o + 4].try_into().unwrap());
         assert_eq!((at(0), at(4), at(16), at(36)), (1.0, 2.0, 3.0, 6.0));
-        assert!(write(&mut vec![0u8; 8], &slot("float3", 0, None, None), &Value::vec3(glam::Vec3::ONE)).is_err());
+        assert!(write(&mut [0u8; 8], &slot("float3", 0, None, None), &Value::vec3(glam::Vec3::ONE)).is_err());
     }
 
     #[test]

@@ -114,7 +114,7 @@ impl Value {
     }
 
     /// Elements (1 for a value that is not an array).
-    pub fn len(&self) -> usize {
+    pub fn elements(&self) -> usize {
         self.array.map_or(1, |n| n as usize)
     }
 
@@ -193,6 +193,6 @@ mod tests {
         assert_eq!(Value::array(vec![Value::mat4(Mat4::IDENTITY); 3]).dsl_type(), "float4x4[3]");
         assert_eq!(Value::bool(true).dsl_type(), "bool");
         let m = Value::array(vec![Value::int(1), Value::int(2)]);
-        assert_eq!((m.len(), m.element(1)), (2, &[2u32][..]));
+        assert_eq!((m.elements(), m.element(1)), (2, &[2u32][..]));
     }
 }
