@@ -140,7 +140,7 @@ pub fn run(opts: &RenderOptions, progress: &mut dyn Progress) -> Result<(), Stri
 
 fn draw<E: Executor>(e: &E, set: &super::ShaderSet, opts: &RenderOptions, params: FrameParams, progress: &mut dyn Progress) -> Result<(), String> {
     let prepared = e.prepare(set, &tutorial::plan(&params)).map_err(|e| e.to_string())?;
-    eprintln!("rendering {} ({} on {}) on {}", set.label, set.target.name(), opts.consumer.name(), e.device_name());
+    eprintln!("rendering {} ({}) on {}: {}", set.label, set.target.name(), opts.consumer.name(), e.device_name());
     let times = frame_times(opts);
     write_frames(opts, &times, |p| e.run(&prepared, &tutorial::plan(p)).map(|r| r.into_image()).map_err(|e: ExecError| e.to_string()), params, progress)
 }
