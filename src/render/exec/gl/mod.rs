@@ -15,6 +15,7 @@
 //! held by an [`objects::Obj`] and deleted on every path.
 
 mod by_name;
+mod frame;
 pub mod objects;
 
 use std::cell::RefCell;
@@ -22,12 +23,11 @@ use std::collections::HashMap;
 use std::rc::Rc;
 
 use glow::HasContext;
-use image::RgbaImage;
 use khronos_egl as egl;
 
-use crate::render::bind::{self, gl::GlProgram, gl::UniformCall};
+use crate::render::bind::{self, gl::GlProgram};
 use crate::render::consumers::Consumer;
-use crate::render::plan::{Cull, Format, FramePlan, Geometry, Mesh, Pass, Sampling, Value};
+use crate::render::plan::{FramePlan, Mesh, Pass};
 use crate::render::program::ShaderSet;
 use crate::Target;
 
@@ -54,6 +54,9 @@ pub struct Context {
 impl Context {
     /// The GL functions, with this context current.
     pub fn current(&self) -> Result<&glow::Context, ExecError> {
+        if self.egl.get_current_context() == Some(self.context) {
+            return Ok(&self.gl);
+        }
         self.egl
             .make_current(self.display, None, None, Some(self.context))
             .map_err(|e| ExecError::Api(format!("eglMakeCurrent: {e}")))?;
@@ -349,243 +352,10 @@ impl GlExecutor {
         linked.vaos.borrow_mut().push((key, vao));
         Ok(raw)
     }
-
-    fn frame(&self, prepared: &GlPrepared, plan: &FramePlan) -> Result<Readback, ExecError> {
-        let gl = self.ctx.current()?;
-        let es = self.consumer == Consumer::Gles300;
-        let obj = |r: Result<glow::Texture, String>| r.map(|t| Obj::new(&self.ctx, t)).map_err(ExecError::Api);
-        // SAFETY (whole body): GL calls on the current context with objects
-        // made here, each held by an `Obj`; read_pixels fills buffers of the
-        // exact size.
-        unsafe {
-            let mut textures = Vec::new();
-            for t in &plan.targets {
-                let tex = obj(gl.create_texture())?;
-                gl.bind_texture(glow::TEXTURE_2D, Some(tex.raw()));
-                let (internal, format, ty) = match t.format {
-                    Format::Rgba8 => (glow::RGBA8, glow::RGBA, glow::UNSIGNED_BYTE),
-                    Format::Rgba32Uint => (glow::RGBA32UI, glow::RGBA_INTEGER, glow::UNSIGNED_INT),
-                    Format::Depth16 => (glow::DEPTH_COMPONENT16, glow::DEPTH_COMPONENT, glow::UNSIGNED_SHORT),
-                    Format::Depth24Plus => (glow::DEPTH_COMPONENT24, glow::DEPTH_COMPONENT, glow::UNSIGNED_INT),
-                    Format::Depth32Float => (glow::DEPTH_COMPONENT32F, glow::DEPTH_COMPONENT, glow::FLOAT),
-                };
-                gl.tex_image_2d(glow::TEXTURE_2D, 0, internal as i32, t.width as i32, t.height as i32, 0, format, ty, glow::PixelUnpackData::Slice(None));
-                // One level, complete without a sampler object too.
-                gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MIN_FILTER, glow::NEAREST as i32);
-                gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAG_FILTER, glow::NEAREST as i32);
-                gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAX_LEVEL, 0);
-                textures.push(tex);
-            }
-            gl.bind_texture(glow::TEXTURE_2D, None);
-            let framebuffer = |color: Option<usize>, depth: Option<usize>| -> Result<Obj<glow::Framebuffer>, ExecError> {
-                let fbo = Obj::new(&self.ctx, gl.create_framebuffer().map_err(ExecError::Api)?);
-                gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo.raw()));
-                match color {
-                    Some(c) => {
-                        gl.framebuffer_texture_2d(glow::FRAMEBUFFER, glow::COLOR_ATTACHMENT0, glow::TEXTURE_2D, Some(textures[c].raw()), 0);
-                        gl.draw_buffers(&[glow::COLOR_ATTACHMENT0]);
-                        gl.read_buffer(glow::COLOR_ATTACHMENT0);
-                    }
-                    None => {
-                        gl.draw_buffers(&[glow::NONE]);
-                        gl.read_buffer(glow::NONE);
-                    }
-                }
-                if let Some(d) = depth {
-                    gl.framebuffer_texture_2d(glow::FRAMEBUFFER, glow::DEPTH_ATTACHMENT, glow::TEXTURE_2D, Some(textures[d].raw()), 0);
-                }
-                let status = gl.check_framebuffer_status(glow::FRAMEBUFFER);
-                if status != glow::FRAMEBUFFER_COMPLETE {
-                    return Err(ExecError::Api(format!("incomplete framebuffer {status:#06x}")));
-                }
-                Ok(fbo)
-            };
-            gl.disable(glow::BLEND);
-            gl.front_face(glow::CCW);
-            gl.depth_func(glow::LESS);
-            gl.depth_mask(true);
-            for (index, pass) in plan.passes.iter().enumerate() {
-                let linked = self.linked(prepared, plan, index)?;
-                let fbo = framebuffer(pass.color.map(|a| a.target.0), pass.depth.map(|a| a.target.0))?;
-                let drawn = pass.color.map(|a| a.target).or(pass.depth.map(|a| a.target)).expect("a pass has an attachment (checked)");
-                let (w, h) = (plan.target(drawn).width as i32, plan.target(drawn).height as i32);
-                gl.viewport(0, 0, w, h);
-                if let Some(c) = pass.color {
-                    if plan.target(c.target).format == Format::Rgba32Uint {
-                        gl.clear_buffer_u32_slice(glow::COLOR, 0, &c.clear.map(|x| x as u32));
-                    } else {
-                        gl.clear_color(c.clear[0] as f32, c.clear[1] as f32, c.clear[2] as f32, c.clear[3] as f32);
-                        gl.clear(glow::COLOR_BUFFER_BIT);
-                    }
-                }
-                match pass.depth {
-                    Some(d) => {
-                        gl.enable(glow::DEPTH_TEST);
-                        gl.clear_depth_f32(d.clear);
-                        gl.clear(glow::DEPTH_BUFFER_BIT);
-                    }
-                    None => gl.disable(glow::DEPTH_TEST),
-                }
-                match pass.cull {
-                    Cull::None => gl.disable(glow::CULL_FACE),
-                    Cull::Front | Cull::Back => {
-                        gl.enable(glow::CULL_FACE);
-                        gl.cull_face(if pass.cull == Cull::Front { glow::FRONT } else { glow::BACK });
-                    }
-                }
-                if pass.depth_bias {
-                    gl.enable(glow::POLYGON_OFFSET_FILL);
-                    gl.polygon_offset(2.0, 4.0);
-                } else {
-                    gl.disable(glow::POLYGON_OFFSET_FILL);
-                }
-                gl.use_program(Some(linked.program.raw()));
-                let units = bind::gl::textures(&linked.binding, pass).map_err(ExecError::Program)?;
-                let mut samplers = Vec::new();
-                for &(unit, t) in &units {
-                    let input = &pass.textures[t];
-                    samplers.push(self.sampler(input.sampling, es)?);
-                    gl.active_texture(glow::TEXTURE0 + unit);
-                    gl.bind_texture(glow::TEXTURE_2D, Some(textures[input.target.0].raw()));
-                    gl.bind_sampler(unit, Some(samplers.last().expect("pushed").raw()));
-                }
-                gl.active_texture(glow::TEXTURE0);
-                let mut ubos: HashMap<u32, Obj<glow::Buffer>> = HashMap::new();
-                for draw in &pass.draws {
-                    let data = bind::gl::draw(&linked.binding, pass, draw, plan.unset).map_err(ExecError::Program)?;
-                    for (point, mut bytes) in data.blocks {
-                        bytes.resize(linked.block_sizes.get(&point).copied().unwrap_or(0).max(bytes.len()), 0);
-                        let ubo = match ubos.get(&point) {
-                            Some(b) => b.raw(),
-                            None => {
-                                let b = Obj::new(&self.ctx, gl.create_buffer().map_err(ExecError::Api)?);
-                                let raw = b.raw();
-                                ubos.insert(point, b);
-                                raw
-                            }
-                        };
-                        gl.bind_buffer(glow::UNIFORM_BUFFER, Some(ubo));
-                        gl.buffer_data_u8_slice(glow::UNIFORM_BUFFER, &bytes, glow::DYNAMIC_DRAW);
-                        gl.bind_buffer_base(glow::UNIFORM_BUFFER, point, Some(ubo));
-                    }
-                    for (name, value) in &data.uniforms {
-                        set_uniform(gl, linked.uniform_locations.get(name), value);
-                    }
-                    match draw.geometry {
-                        Geometry::Mesh(m) => {
-                            let count = self.mesh(m)?.index_count;
-                            gl.bind_vertex_array(Some(self.vao(&linked, Some(m))?));
-                            gl.draw_elements(glow::TRIANGLES, count, glow::UNSIGNED_INT, 0);
-                        }
-                        Geometry::Vertices(n) => {
-                            gl.bind_vertex_array(Some(self.vao(&linked, None)?));
-                            gl.draw_arrays(glow::TRIANGLES, 0, n as i32);
-                        }
-                    }
-                    gl.bind_vertex_array(None);
-                }
-                for &(unit, _) in &units {
-                    gl.active_texture(glow::TEXTURE0 + unit);
-                    gl.bind_texture(glow::TEXTURE_2D, None);
-                    gl.bind_sampler(unit, None);
-                }
-                gl.active_texture(glow::TEXTURE0);
-                gl.use_program(None);
-                gl.bind_buffer(glow::UNIFORM_BUFFER, None);
-                drop(fbo);
-            }
-            gl.disable(glow::POLYGON_OFFSET_FILL);
-            gl.disable(glow::CULL_FACE);
-
-            // Read the target back through a framebuffer of its own.
-            let t = plan.target(plan.readback);
-            let (w, h) = (t.width as i32, t.height as i32);
-            let depth = t.format.is_depth();
-            let fbo = if depth { framebuffer(None, Some(plan.readback.0))? } else { framebuffer(Some(plan.readback.0), None)? };
-            gl.pixel_store_i32(glow::PACK_ALIGNMENT, 1);
-            let (format, ty, texel) = match t.format {
-                Format::Rgba8 => (glow::RGBA, glow::UNSIGNED_BYTE, 4),
-                Format::Rgba32Uint => (glow::RGBA_INTEGER, glow::UNSIGNED_INT, 16),
-                _ => (glow::DEPTH_COMPONENT, glow::FLOAT, 4),
-            };
-            let mut bytes = vec![0u8; (w * h) as usize * texel];
-            gl.read_pixels(0, 0, w, h, format, ty, glow::PixelPackData::Slice(Some(&mut bytes)));
-            gl.bind_framebuffer(glow::FRAMEBUFFER, None);
-            drop(fbo);
-            // GL returns rows bottom first; pictures are top row first.
-            let row = w as usize * texel;
-            let bytes: Vec<u8> = bytes.chunks_exact(row).rev().flatten().copied().collect();
-            let (w, h) = (w as u32, h as u32);
-            Ok(match t.format {
-                Format::Rgba8 => Readback::Rgba8(RgbaImage::from_raw(w, h, bytes).expect("w * h * 4 bytes")),
-                Format::Rgba32Uint => Readback::Words { width: w, height: h, words: bytemuck::cast_slice(&bytes).to_vec() },
-                _ => Readback::Depth { width: w, height: h, depths: bytemuck::cast_slice(&bytes).to_vec() },
-            })
-        }
-    }
-
-    /// A sampler object for `s` (GLES 3.0 has no clamp to border: edge).
-    fn sampler(&self, s: Sampling, es: bool) -> Result<Obj<glow::Sampler>, ExecError> {
-        let gl = self.ctx.current()?;
-        // SAFETY: sampler state on the current context.
-        unsafe {
-            let sampler = Obj::new(&self.ctx, gl.create_sampler().map_err(ExecError::Api)?);
-            let filter = if s.linear { glow::LINEAR } else { glow::NEAREST } as i32;
-            let wrap = if s.border && !es { glow::CLAMP_TO_BORDER } else { glow::CLAMP_TO_EDGE } as i32;
-            let raw = sampler.raw();
-            gl.sampler_parameter_i32(raw, glow::TEXTURE_MIN_FILTER, filter);
-            gl.sampler_parameter_i32(raw, glow::TEXTURE_MAG_FILTER, filter);
-            gl.sampler_parameter_i32(raw, glow::TEXTURE_WRAP_S, wrap);
-            gl.sampler_parameter_i32(raw, glow::TEXTURE_WRAP_T, wrap);
-            if s.border && !es {
-                gl.sampler_parameter_f32_slice(raw, glow::TEXTURE_BORDER_COLOR, &[1.0; 4]);
-            }
-            if s.compare {
-                gl.sampler_parameter_i32(raw, glow::TEXTURE_COMPARE_MODE, glow::COMPARE_REF_TO_TEXTURE as i32);
-                gl.sampler_parameter_i32(raw, glow::TEXTURE_COMPARE_FUNC, glow::LEQUAL as i32);
-            }
-            Ok(sampler)
-        }
-    }
 }
 
 fn problems_error(set: &ShaderSet, pass: &Pass, what: &str, problems: Vec<String>) -> ExecError {
     ExecError::Program(format!("the {} pass of {} does not match {what}:\n  - {}", pass.name, set.label, problems.join("\n  - ")))
-}
-
-/// `glUniform*` for a value at `loc` (none: the program does not use it).
-unsafe fn set_uniform(gl: &glow::Context, loc: Option<&glow::UniformLocation>, v: &Value) {
-    let f = v.as_f32();
-    let i: Vec<i32> = v.words.iter().map(|w| *w as i32).collect();
-    let u = &v.words;
-    // SAFETY: uniform calls on the current context with the program in use.
-    unsafe {
-        match UniformCall::of(v) {
-            UniformCall::Float(1) => gl.uniform_1_f32_slice(loc, &f),
-            UniformCall::Float(2) => gl.uniform_2_f32_slice(loc, &f),
-            UniformCall::Float(3) => gl.uniform_3_f32_slice(loc, &f),
-            UniformCall::Float(_) => gl.uniform_4_f32_slice(loc, &f),
-            UniformCall::Int(1) => gl.uniform_1_i32_slice(loc, &i),
-            UniformCall::Int(2) => gl.uniform_2_i32_slice(loc, &i),
-            UniformCall::Int(3) => gl.uniform_3_i32_slice(loc, &i),
-            UniformCall::Int(_) => gl.uniform_4_i32_slice(loc, &i),
-            UniformCall::Uint(1) => gl.uniform_1_u32_slice(loc, u),
-            UniformCall::Uint(2) => gl.uniform_2_u32_slice(loc, u),
-            UniformCall::Uint(3) => gl.uniform_3_u32_slice(loc, u),
-            UniformCall::Uint(_) => gl.uniform_4_u32_slice(loc, u),
-            UniformCall::Matrix { columns, rows } => match (columns, rows) {
-                (2, 2) => gl.uniform_matrix_2_f32_slice(loc, false, &f),
-                (2, 3) => gl.uniform_matrix_2x3_f32_slice(loc, false, &f),
-                (2, 4) => gl.uniform_matrix_2x4_f32_slice(loc, false, &f),
-                (3, 2) => gl.uniform_matrix_3x2_f32_slice(loc, false, &f),
-                (3, 3) => gl.uniform_matrix_3_f32_slice(loc, false, &f),
-                (3, 4) => gl.uniform_matrix_3x4_f32_slice(loc, false, &f),
-                (4, 2) => gl.uniform_matrix_4x2_f32_slice(loc, false, &f),
-                (4, 3) => gl.uniform_matrix_4x3_f32_slice(loc, false, &f),
-                _ => gl.uniform_matrix_4_f32_slice(loc, false, &f),
-            },
-        }
-    }
 }
 
 impl Executor for GlExecutor {
