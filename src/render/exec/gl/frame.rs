@@ -4,6 +4,7 @@
 //! read-back target through a framebuffer of its own. Every object is an
 //! [`Obj`], deleted when the frame ends, however it ends.
 
+use std::collections::hash_map::Entry;
 use std::collections::HashMap;
 
 use glow::HasContext;
@@ -157,8 +158,8 @@ impl GlExecutor {
                     let data = bind::gl::draw(&linked.binding, pass, draw, plan.unset).map_err(ExecError::Program)?;
                     for (point, mut bytes) in data.blocks {
                         bytes.resize(linked.block_sizes.get(&point).copied().unwrap_or(0).max(bytes.len()), 0);
-                        if !ubos.contains_key(&point) {
-                            ubos.insert(point, Obj::new(&self.ctx, gl.create_buffer().map_err(ExecError::Api)?));
+                        if let Entry::Vacant(slot) = ubos.entry(point) {
+                            slot.insert(Obj::new(&self.ctx, gl.create_buffer().map_err(ExecError::Api)?));
                         }
                         let ubo = ubos[&point].raw();
                         gl.bind_buffer(glow::UNIFORM_BUFFER, Some(ubo));
