@@ -29,10 +29,11 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
-
-mod cli;
 use codespan_reporting::term::termcolor::{ColorChoice, StandardStream};
 use umbrac::{Compilation, Conventions, Diagnostic, Options, Severity, SourceMap, Target};
+
+/// Subcommands' argument types that live in their own files.
+mod cli;
 
 const EXIT_ERROR: u8 = 1;
 const EXIT_USAGE: u8 = 2;
