@@ -5,7 +5,7 @@
 //!
 //! Data flows one way: the options -> [`program`] (what to draw) -> an
 //! executor -> [`frames`] (what is written). `--compare-backends` is in
-//! [`consumers`], the technique scenes (`--scene`) in [`techniques`].
+//! `consumers`, the technique scenes (`--scene`) in `techniques`.
 
 mod consumers;
 pub mod frames;

@@ -6,7 +6,7 @@
 //!
 //! What a program binds comes from [`bind::gl`] (from the manifest), or,
 //! for a set without a manifest, from the linked program itself
-//! ([`by_name`]: everything looked up by its source name, as GL hosts
+//! (`by_name`: everything looked up by its source name, as GL hosts
 //! written for daslang's own generator do). Either way the linked program
 //! must agree: a block, sampler, uniform or attribute it lacks, or an
 //! attribute at another location, is an error naming it, not a black
