@@ -8,7 +8,7 @@
 //!     cargo bench --bench report -- all
 //!
 //! Each prints markdown tables; they are also written to target/perf/NAME.md.
-//! Frame times are wall-clock times of `Renderer::draw` (encode, submit,
+//! Frame times are wall-clock times of `the wgpu executor's `run`` (encode, submit,
 //! render, read back), median of many frames after warm-up, with the 10th
 //! and 90th percentiles.
 
@@ -22,7 +22,8 @@ use std::path::Path;
 use support::*;
 use umbrac::render::image_ops;
 use umbrac::render::reference;
-use umbrac::render::{hand, Backend, DepthFormat, Filter, Fit, FrameParams, Program, Renderer, Setup, ShaderSet, Via, View};
+use umbrac::render::exec::wgpu::{WgpuExecutor, WgpuProgram};
+use umbrac::render::{hand, DepthFormat, Filter, Fit, FrameParams, SceneExecutor, Setup, ShaderSet, View};
 
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).filter(|a| !a.starts_with("--")).collect();
@@ -36,14 +37,8 @@ fn main() {
     }
     std::fs::create_dir_all("target/perf").unwrap();
     std::fs::create_dir_all("docs/images").unwrap();
-    let mut renderer: Option<Renderer> = None;
-    let mut gpu = || -> &'static Renderer {
-        if renderer.is_none() {
-            renderer = Some(Renderer::new(Backend::Vulkan).expect("a Vulkan adapter (lavapipe: apt-get install mesa-vulkan-drivers)"));
-        }
-        // The renderer lives until the process ends.
-        unsafe { &*(renderer.as_ref().unwrap() as *const Renderer) }
-    };
+    // One Vulkan device for the whole run.
+    let gpu = || -> &'static WgpuExecutor { umbrac::render::consumers::vulkan().expect("a Vulkan adapter (lavapipe: apt-get install mesa-vulkan-drivers)") };
     for mode in modes {
         let md = match mode {
             "scaling" => scaling(),
@@ -210,22 +205,22 @@ fn compiled_set(defines: Vec<(String, Option<String>)>) -> ShaderSet {
     let opts = umbrac::Options { targets: vec![umbrac::Target::Wgsl], defines, ..Default::default() };
     let c = umbrac::compile_source("shaders/shadow.das", SHADOW_DAS, &opts);
     assert!(!c.has_errors(), "{}", c.render_diagnostics());
-    ShaderSet::from_compiled("shaders/shadow.das", c.result.as_ref().unwrap(), Via::Wgsl).unwrap()
+    ShaderSet::from_compiled("shaders/shadow.das", c.result.as_ref().unwrap(), umbrac::Target::Wgsl).unwrap()
 }
 
 /// Frame times of several (program, params) pairs, measured round-robin so
 /// that load changes on the shared machine hit all of them alike.
-fn interleaved(r: &Renderer, cases: &[(&Program, FrameParams)], warmup: usize, frames: usize) -> Vec<Timing> {
+fn interleaved(r: &WgpuExecutor, cases: &[(&WgpuProgram, FrameParams)], warmup: usize, frames: usize) -> Vec<Timing> {
     for _ in 0..warmup {
         for (p, params) in cases {
-            r.draw(p, params).unwrap();
+            r.draw_scene(p, params).unwrap();
         }
     }
     let mut samples = vec![Vec::with_capacity(frames); cases.len()];
     for _ in 0..frames {
         for (i, (p, params)) in cases.iter().enumerate() {
             let t = std::time::Instant::now();
-            std::hint::black_box(r.draw(p, params).unwrap());
+            std::hint::black_box(r.draw_scene(p, params).unwrap());
             samples[i].push(t.elapsed());
         }
     }
@@ -236,9 +231,9 @@ fn ms(t: &Timing) -> String {
     format!("{:.2} ({:.2}-{:.2})", t.median() * 1e3, t.p10() * 1e3, t.p90() * 1e3)
 }
 
-fn frames(r: &Renderer) -> String {
-    let generated = r.prepare(&compiled_set(Vec::new())).unwrap();
-    let handwritten = r.prepare(&hand::shader_set()).unwrap();
+fn frames(r: &WgpuExecutor) -> String {
+    let generated = r.prepare_scene(&compiled_set(Vec::new())).unwrap();
+    let handwritten = r.prepare_scene(&hand::shader_set()).unwrap();
     let mut md = String::new();
     writeln!(md, "### Frame time: generated vs hand-written WGSL\n\n{} on {}; {FW}x{FH}, shadow map 1024, t = 2; 10 warm-up rounds, 120 frames each, interleaved. Median (p10-p90), ms; on a shared machine the 10th percentile is the steadiest estimate of the undisturbed frame.\n", machine(), r.adapter_name()).unwrap();
     writeln!(md, "| run | umbrac WGSL | hand WGSL | ratio of medians | ratio of p10 |").unwrap();
@@ -266,7 +261,7 @@ struct Truth {
     geometry: Vec<bool>,
 }
 
-fn truths(r: &Renderer, base: &Program, sw: u32, sh: u32) -> Vec<Truth> {
+fn truths(r: &WgpuExecutor, base: &WgpuProgram, sw: u32, sh: u32) -> Vec<Truth> {
     SWEEP_TIMES
         .iter()
         .map(|&t| {
@@ -274,7 +269,7 @@ fn truths(r: &Renderer, base: &Program, sw: u32, sh: u32) -> Vec<Truth> {
             let reference = reference::render_frame(&params);
             let ref_lit = reference::render(&params.with_view(View::Lit));
             let ref_mask = image_ops::shadow_mask(&reference.image, &ref_lit);
-            let gpu_lit = r.draw(base, &params.with_view(View::Lit)).unwrap();
+            let gpu_lit = r.draw_scene(base, &params.with_view(View::Lit)).unwrap();
             let bg = image::Rgba([10u8, 13, 23, 255]);
             let geometry = ref_lit.pixels().map(|p| *p != bg).collect();
             Truth { params, reference, ref_mask, gpu_lit, geometry }
@@ -286,13 +281,13 @@ fn truths(r: &Renderer, base: &Program, sw: u32, sh: u32) -> Vec<Truth> {
 /// lit/shadowed class differs from the reference; the same counting only
 /// pixels inside the tutorial's +-4 light box; mean colour error in 1/255
 /// over geometry pixels), averaged over the sweep's times.
-fn shadow_error(r: &Renderer, program: &Program, setup: Setup, shadow_size: u32, truths: &[Truth]) -> (f64, f64, f64) {
+fn shadow_error(r: &WgpuExecutor, program: &WgpuProgram, setup: Setup, shadow_size: u32, truths: &[Truth]) -> (f64, f64, f64) {
     let (mut mis, mut mis_in, mut col) = (0.0, 0.0, 0.0);
     for tr in truths {
         let mut p = tr.params;
         p.setup = setup;
         p.shadow_size = shadow_size;
-        let img = r.draw(program, &p).unwrap();
+        let img = r.draw_scene(program, &p).unwrap();
         let mask = image_ops::shadow_mask(&img, &tr.gpu_lit);
         let skip: Vec<bool> = tr.geometry.iter().map(|g| !g).collect();
         let n = tr.geometry.iter().filter(|g| **g).count().max(1);
@@ -338,7 +333,7 @@ fn with(size: u32, filter: Filter, fit: Fit, depth: DepthFormat, casters_only: b
     Config { size, setup }
 }
 
-fn sweep(r: &Renderer) -> String {
+fn sweep(r: &WgpuExecutor) -> String {
     let mut configs = Vec::new();
     for size in [256, 512, 1024, 2048, 4096] {
         for filter in Filter::ALL {
@@ -356,13 +351,13 @@ fn sweep(r: &Renderer) -> String {
             }
         }
     }
-    let mut programs: BTreeMap<(u32, u32), Program> = BTreeMap::new();
-    let base = r.prepare(&compiled_set(Vec::new())).unwrap();
+    let mut programs: BTreeMap<(u32, u32), WgpuProgram> = BTreeMap::new();
+    let base = r.prepare_scene(&compiled_set(Vec::new())).unwrap();
     let truths = truths(r, &base, FW, FH);
     let mut rows = Vec::new();
     for (i, cfg) in configs.iter().enumerate() {
         let key = (cfg.setup.shadow.filter.radius(), cfg.size);
-        let program = programs.entry(key).or_insert_with(|| r.prepare(&compiled_set(cfg.setup.defines(cfg.size))).unwrap());
+        let program = programs.entry(key).or_insert_with(|| r.prepare_scene(&compiled_set(cfg.setup.defines(cfg.size))).unwrap());
         let (mis, mis_in, col) = shadow_error(r, program, cfg.setup, cfg.size, &truths);
         let mut p = FrameParams::new(2.0, FW, FH);
         p.setup = cfg.setup;
@@ -453,11 +448,11 @@ fn plot_sweep(rows: &[Row], tutorial: &Row) -> Result<(), Box<dyn std::error::Er
 
 // ---------------------------------------------------------------- A/B
 
-fn ab(r: &Renderer) -> String {
-    let tutorial_prog = r.prepare(&compiled_set(Vec::new())).unwrap();
+fn ab(r: &WgpuExecutor) -> String {
+    let tutorial_prog = r.prepare_scene(&compiled_set(Vec::new())).unwrap();
     let tuned = Setup::tuned();
     let size = Setup::TUNED_SHADOW_SIZE;
-    let tuned_prog = r.prepare(&compiled_set(tuned.defines(size))).unwrap();
+    let tuned_prog = r.prepare_scene(&compiled_set(tuned.defines(size))).unwrap();
     let base = FrameParams::new(2.0, FW, FH);
     let variants: Vec<(&str, Setup)> = vec![
         ("tutorial", Setup::default()),
@@ -466,7 +461,7 @@ fn ab(r: &Renderer) -> String {
         ("tutorial + tight fit + casters only", { let mut s = Setup::default(); s.shadow.fit = Fit::Tight; s.shadow.casters_only = true; s }),
         ("tuned (tight fit + casters only + 2x2 filter)", tuned),
     ];
-    let cases: Vec<(&Program, FrameParams)> = variants
+    let cases: Vec<(&WgpuProgram, FrameParams)> = variants
         .iter()
         .map(|(_, s)| {
             let mut p = base;

@@ -32,6 +32,9 @@ use clap::{Args, Parser, Subcommand, ValueEnum};
 use codespan_reporting::term::termcolor::{ColorChoice, StandardStream};
 use umbrac::{Compilation, Conventions, Diagnostic, Options, Severity, SourceMap, Target};
 
+/// Subcommands' argument types that live in their own files.
+mod cli;
+
 const EXIT_ERROR: u8 = 1;
 const EXIT_USAGE: u8 = 2;
 const EXIT_BUG: u8 = 3;
@@ -57,7 +60,7 @@ enum Command {
     Bindgen(BindgenArgs),
     /// Render the shadow scene from compiled shaders.
     #[cfg(feature = "render")]
-    Render(umbrac::render::cli::RenderArgs),
+    Render(cli::render::RenderArgs),
 }
 
 #[derive(Args, Debug)]
@@ -309,7 +312,7 @@ fn main() -> ExitCode {
             if std::env::var_os("XDG_RUNTIME_DIR").is_none() {
                 std::env::set_var("XDG_RUNTIME_DIR", std::env::temp_dir());
             }
-            umbrac::render::cli::run(&args).clamp(0, 255) as u8
+            cli::render::run(&args)
         }
     };
     ExitCode::from(code)

@@ -1,22 +1,33 @@
-// The WebGL2 consumer of umbrac's GLSL ES 3.00 output.
+// The WebGL2 executor of umbrac's frame plans (src/render/exec/webgl.rs).
 //
-// Everything bound comes from the reflection manifest: uniform blocks by
-// their `glsl_block` names (getUniformBlockIndex + uniformBlockBinding),
-// filled at the manifest's member offsets; the shadow sampler by its
-// `glsl_name` (getUniformLocation + uniform1i with its `texture_unit`);
-// attributes at the manifest's locations. The host values (matrices,
-// meshes, sizes) come ready-made in data/scene.json, written by umbrac
-// from the same code the other consumers use.
+// data/plan.json is a frame plan with everything bound already resolved
+// by umbrac from the program's manifest (src/render/bind/gl.rs, the code
+// the native GL executor runs too): for each pass's program, the GLSL
+// names of its uniform blocks and their binding points, its samplers and
+// their texture units, its attributes and their locations, its uniforms
+// set by name; for each draw, every block's words and every uniform's
+// value with the call that sets it. This page makes the targets, compiles
+// and links the .300es.* files, checks that each linked program has what
+// it is told to bind, draws, and reads the target back. It reads no
+// manifest and does no math.
 //
 // The result goes to window.umbracResult: { ok, width, height, pixels
-// (base64 RGBA read back from the canvas, rows bottom first), renderer }
-// or { ok: false, error }.
+// (base64 of the target read back, rows bottom first), renderer } or
+// { ok: false, kind, error, file, pass, log }.
 
 const DATA = 'data/';
 
+class PageError extends Error {
+  constructor(kind, message, extra = {}) {
+    super(message);
+    this.kind = kind;
+    Object.assign(this, extra);
+  }
+}
+
 async function fetchOk(path) {
   const r = await fetch(DATA + path, { cache: 'no-store' });
-  if (!r.ok) throw new Error(`fetching ${path}: HTTP ${r.status}`);
+  if (!r.ok) throw new PageError('api', `fetching ${path}: HTTP ${r.status}`);
   return r;
 }
 
@@ -25,262 +36,281 @@ function compile(gl, type, file, source) {
   gl.shaderSource(s, source);
   gl.compileShader(s);
   if (!gl.getShaderParameter(s, gl.COMPILE_STATUS)) {
-    const log = gl.getShaderInfoLog(s);
+    const log = gl.getShaderInfoLog(s).trim();
     gl.deleteShader(s);
-    throw new Error(`${file} does not compile: ${log.trim()}`);
+    throw new PageError('compile', `${file} does not compile: ${log}`, { file, log });
   }
   return s;
 }
 
-// A uniform block's bytes for one draw: a loose value (one member named
-// like the block, or of the block's type) is the scene value of the
-// block's name; a struct block's members are scene values by member name;
-// a member the scene does not set keeps the manifest's default.
-function blockBytes(block, size, values) {
-  const bytes = new ArrayBuffer(Math.max(size, block.size));
-  const view = new DataView(bytes);
-  const loose = block.members.length === 1 &&
-    (block.members[0].name === block.name || block.members[0].type === block.type);
-  for (const m of block.members) {
-    const name = loose ? block.name : m.name;
-    const v = values[name];
-    if (v === undefined && m.default) {
-      // A value the scene does not set keeps its default (its words).
-      m.default.forEach((w, i) => view.setUint32(m.offset + 4 * i, w, true));
+// Texel formats: [internal format, format, type, bytes per texel].
+function formatOf(gl, name) {
+  switch (name) {
+    case 'rgba8': return [gl.RGBA8, gl.RGBA, gl.UNSIGNED_BYTE, 4];
+    case 'rgba32uint': return [gl.RGBA32UI, gl.RGBA_INTEGER, gl.UNSIGNED_INT, 16];
+    case 'depth16': return [gl.DEPTH_COMPONENT16, gl.DEPTH_COMPONENT, gl.UNSIGNED_SHORT, 2];
+    case 'depth24plus': return [gl.DEPTH_COMPONENT24, gl.DEPTH_COMPONENT, gl.UNSIGNED_INT, 4];
+    case 'depth32float': return [gl.DEPTH_COMPONENT32F, gl.DEPTH_COMPONENT, gl.FLOAT, 4];
+    default: throw new PageError('api', `unknown target format ${name}`);
+  }
+}
+
+const isDepth = (name) => name.startsWith('depth');
+
+// A uniform's words as the typed array its call takes.
+function uniformData(u) {
+  const words = new Uint32Array(u.words);
+  if (u.call.endsWith('uiv')) return words;
+  if (u.call.endsWith('iv')) return new Int32Array(words.buffer);
+  return new Float32Array(words.buffer);
+}
+
+async function link(gl, p, sources, meshes) {
+  const vs = compile(gl, gl.VERTEX_SHADER, p.vertex, sources[p.vertex]);
+  const fs = compile(gl, gl.FRAGMENT_SHADER, p.fragment, sources[p.fragment]);
+  const program = gl.createProgram();
+  gl.attachShader(program, vs);
+  gl.attachShader(program, fs);
+  // Attributes the GLSL declares without a location take the manifest's.
+  for (const a of p.attributes) {
+    if (a.location !== null) gl.bindAttribLocation(program, a.location, a.name);
+  }
+  gl.linkProgram(program);
+  gl.deleteShader(vs);
+  gl.deleteShader(fs);
+  if (!gl.getProgramParameter(program, gl.LINK_STATUS)) {
+    const log = gl.getProgramInfoLog(program).trim();
+    throw new PageError('link', `the ${p.pass} pass's program does not link: ${log}`, { pass: p.pass, log });
+  }
+  const problems = [];
+  const blockSize = {};
+  gl.useProgram(program);
+  for (const b of p.blocks) {
+    const index = gl.getUniformBlockIndex(program, b.name);
+    if (index === gl.INVALID_INDEX) {
+      problems.push(`uniform block \`${b.name}\` is not in the linked program`);
       continue;
     }
-    if (v === undefined) throw new Error(`uniform \`${name}\` is not a value the scene sets and has no default`);
-    const put = (at, x) => view.setFloat32(at, x, true);
-    if (m.type === 'float4x4') {
-      const stride = m.matrix_stride ?? 16;
-      for (let c = 0; c < 4; c++) for (let r = 0; r < 4; r++) put(m.offset + c * stride + r * 4, v[c * 4 + r]);
-    } else if (m.type === 'float3') {
-      for (let i = 0; i < 3; i++) put(m.offset + i * 4, v[i]);
-    } else if (m.type === 'float') {
-      put(m.offset, v);
-    } else {
-      throw new Error(`uniform \`${name}\` has type ${m.type}, which the scene does not set`);
-    }
+    gl.uniformBlockBinding(program, index, b.point);
+    blockSize[b.point] = Math.max(b.size, gl.getActiveUniformBlockParameter(program, index, gl.UNIFORM_BLOCK_DATA_SIZE));
   }
-  return new Uint8Array(bytes);
+  for (const s of p.samplers) {
+    const loc = gl.getUniformLocation(program, s.name);
+    if (loc === null) problems.push(`sampler \`${s.name}\` is not in the linked program`);
+    else gl.uniform1i(loc, s.unit);
+  }
+  const locations = {};
+  // A driver may drop a uniform the program does not need: not an error.
+  for (const name of p.uniforms) {
+    const loc = gl.getUniformLocation(program, name);
+    if (loc !== null) locations[name] = loc;
+  }
+  gl.useProgram(null);
+  const attributes = [];
+  for (const a of p.attributes) {
+    const loc = gl.getAttribLocation(program, a.name);
+    if (loc < 0) problems.push(`attribute \`${a.name}\` is not in the linked program`);
+    else if (a.location !== null && loc !== a.location) {
+      problems.push(`attribute \`${a.name}\` is at location ${loc} in the linked program, ${a.location} in the reflection`);
+    } else attributes.push({ ...a, location: loc });
+  }
+  if (problems.length) {
+    throw new PageError('program', `the ${p.pass} pass does not match its reflection:\n  - ${problems.join('\n  - ')}`);
+  }
+  // One vertex array per mesh, and one with no buffers.
+  const vaos = { '': gl.createVertexArray() };
+  for (const [name, m] of Object.entries(meshes)) {
+    const vao = gl.createVertexArray();
+    gl.bindVertexArray(vao);
+    gl.bindBuffer(gl.ARRAY_BUFFER, m.vbo);
+    for (const a of attributes) {
+      gl.enableVertexAttribArray(a.location);
+      gl.vertexAttribPointer(a.location, a.components, gl.FLOAT, false, m.stride, a.offset);
+    }
+    gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, m.ibo);
+    gl.bindVertexArray(null);
+    vaos[name] = vao;
+  }
+  return { program, blockSize, locations, vaos };
 }
 
 async function main() {
-  const scene = await (await fetchOk('scene.json')).json();
-  const manifest = await (await fetchOk(scene.manifest)).json();
-  const { width, height } = scene;
-  const n = scene.shadow_size;
+  const plan = await (await fetchOk('plan.json')).json();
+  const readTarget = plan.targets[plan.readback];
   const canvas = document.getElementById('view');
-  canvas.width = width;
-  canvas.height = height;
+  canvas.width = readTarget.width;
+  canvas.height = readTarget.height;
   const gl = canvas.getContext('webgl2', { antialias: false, alpha: false, depth: false, preserveDrawingBuffer: true });
-  if (!gl) throw new Error('this browser gives no WebGL2 context');
+  if (!gl) throw new PageError('api', 'this browser gives no WebGL2 context');
   const info = gl.getExtension('WEBGL_debug_renderer_info');
   const renderer = gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER);
 
-  const entry = (name) => {
-    const e = manifest.entry_points.find((e) => e.name === name);
-    if (!e) throw new Error(`the manifest has no entry point \`${name}\``);
-    if (!e.files.gles300) throw new Error(`entry point \`${name}\` has no gles300 file`);
-    return e;
-  };
-
-  // Meshes.
+  const sources = {};
+  for (const p of plan.programs) {
+    for (const f of [p.vertex, p.fragment]) {
+      if (!(f in sources)) sources[f] = await (await fetchOk(f)).text();
+    }
+  }
   const meshes = {};
-  for (const [name, m] of Object.entries(scene.meshes)) {
+  for (const [name, m] of Object.entries(plan.meshes)) {
     const vbo = gl.createBuffer();
     gl.bindBuffer(gl.ARRAY_BUFFER, vbo);
     gl.bufferData(gl.ARRAY_BUFFER, new Float32Array(m.vertices), gl.STATIC_DRAW);
-    meshes[name] = { vbo, indices: new Uint32Array(m.indices) };
+    const ibo = gl.createBuffer();
+    gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, ibo);
+    gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, new Uint32Array(m.indices), gl.STATIC_DRAW);
+    meshes[name] = { vbo, ibo, count: m.indices.length, stride: m.stride };
   }
+  gl.bindBuffer(gl.ARRAY_BUFFER, null);
+  const programs = [];
+  for (const p of plan.programs) programs.push(await link(gl, p, sources, meshes));
 
-  // One uniform buffer per manifest block, at binding point = its index.
-  const ubos = manifest.uniform_blocks.map(() => gl.createBuffer());
-  const uboSize = manifest.uniform_blocks.map((b) => b.size);
-
-  async function link(label, pass) {
-    const ve = entry(pass.vertex);
-    const fe = entry(pass.fragment);
-    const vsText = await (await fetchOk(ve.files.gles300)).text();
-    const fsText = await (await fetchOk(fe.files.gles300)).text();
-    const vs = compile(gl, gl.VERTEX_SHADER, ve.files.gles300, vsText);
-    const fs = compile(gl, gl.FRAGMENT_SHADER, fe.files.gles300, fsText);
-    const program = gl.createProgram();
-    gl.attachShader(program, vs);
-    gl.attachShader(program, fs);
-    gl.linkProgram(program);
-    if (!gl.getProgramParameter(program, gl.LINK_STATUS)) {
-      throw new Error(`the ${label} pass's program does not link: ${gl.getProgramInfoLog(program).trim()}`);
-    }
-    const problems = [];
-    const usedBlocks = new Set([...ve.uniform_blocks, ...fe.uniform_blocks]);
-    const usedSamplers = new Set([...ve.samplers, ...fe.samplers]);
-    const blocks = [];
-    gl.useProgram(program);
-    manifest.uniform_blocks.forEach((b, i) => {
-      if (!usedBlocks.has(b.name)) return;
-      const index = gl.getUniformBlockIndex(program, b.glsl_block);
-      if (index === gl.INVALID_INDEX) {
-        problems.push(`uniform block \`${b.glsl_block}\` is not in the linked program`);
-        return;
-      }
-      gl.uniformBlockBinding(program, index, i);
-      const size = gl.getActiveUniformBlockParameter(program, index, gl.UNIFORM_BLOCK_DATA_SIZE);
-      uboSize[i] = Math.max(uboSize[i], size);
-      blocks.push(i);
-    });
-    let shadowUnit = null;
-    for (const s of manifest.samplers) {
-      if (!usedSamplers.has(s.name)) continue;
-      if (!(s.comparison && s.sample_type === 'depth' && s.dimension === '2d')) {
-        problems.push(`sampler \`${s.name}\` is a ${s.type}; the scene's only texture is the shadow map`);
-        continue;
-      }
-      const loc = gl.getUniformLocation(program, s.glsl_name);
-      if (loc === null) {
-        problems.push(`sampler \`${s.glsl_name}\` is not in the linked program`);
-        continue;
-      }
-      gl.uniform1i(loc, s.texture_unit);
-      shadowUnit = s.texture_unit;
-    }
-    gl.useProgram(null);
-    const attributes = [];
-    for (const input of ve.inputs) {
-      const field = scene.vertex.fields[input.name];
-      if (!field) {
-        problems.push(`vertex input \`${input.name}\` is not in the scene's meshes`);
-        continue;
-      }
-      const loc = gl.getAttribLocation(program, input.glsl_name);
-      if (loc !== input.location) {
-        problems.push(`attribute \`${input.glsl_name}\` is at location ${loc} in the linked program, ${input.location} in the manifest`);
-      }
-      attributes.push({ location: input.location, offset: field.offset, components: field.components });
-    }
-    if (problems.length) throw new Error(`the ${label} pass does not match the manifest: ${problems.join('; ')}`);
-    const vaos = {};
-    for (const [name, m] of Object.entries(meshes)) {
-      const vao = gl.createVertexArray();
-      gl.bindVertexArray(vao);
-      gl.bindBuffer(gl.ARRAY_BUFFER, m.vbo);
-      for (const a of attributes) {
-        gl.enableVertexAttribArray(a.location);
-        gl.vertexAttribPointer(a.location, a.components, gl.FLOAT, false, scene.vertex.stride, a.offset);
-      }
-      const ibo = gl.createBuffer();
-      gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, ibo);
-      gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, m.indices, gl.STATIC_DRAW);
-      gl.bindVertexArray(null);
-      vaos[name] = { vao, count: m.indices.length };
-    }
-    return { program, blocks, shadowUnit, vaos };
-  }
-
-  const shadowPass = await link('shadow', scene.passes.shadow);
-  const mainPass = await link('main', scene.passes.main);
-  ubos.forEach((ubo, i) => {
-    gl.bindBuffer(gl.UNIFORM_BUFFER, ubo);
-    gl.bufferData(gl.UNIFORM_BUFFER, uboSize[i], gl.DYNAMIC_DRAW);
+  const textures = plan.targets.map((t) => {
+    const tex = gl.createTexture();
+    gl.bindTexture(gl.TEXTURE_2D, tex);
+    const [internal] = formatOf(gl, t.format);
+    gl.texStorage2D(gl.TEXTURE_2D, 1, internal, t.width, t.height);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+    return tex;
   });
-  gl.bindBuffer(gl.UNIFORM_BUFFER, null);
-
-  // The shadow map: a depth texture with hardware compare, linear, clamped.
-  const shadowTex = gl.createTexture();
-  gl.bindTexture(gl.TEXTURE_2D, shadowTex);
-  gl.texStorage2D(gl.TEXTURE_2D, 1, gl.DEPTH_COMPONENT32F, n, n);
-  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR);
-  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
-  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
-  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
-  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_COMPARE_MODE, gl.COMPARE_REF_TO_TEXTURE);
-  gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_COMPARE_FUNC, gl.LEQUAL);
   gl.bindTexture(gl.TEXTURE_2D, null);
-  const shadowFbo = gl.createFramebuffer();
-  gl.bindFramebuffer(gl.FRAMEBUFFER, shadowFbo);
-  gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.TEXTURE_2D, shadowTex, 0);
-  gl.drawBuffers([gl.NONE]);
-  gl.readBuffer(gl.NONE);
-  const shadowStatus = gl.checkFramebufferStatus(gl.FRAMEBUFFER);
-
-  // The main pass's target: RGBA8 colour, 32-bit float depth.
-  const colorRb = gl.createRenderbuffer();
-  gl.bindRenderbuffer(gl.RENDERBUFFER, colorRb);
-  gl.renderbufferStorage(gl.RENDERBUFFER, gl.RGBA8, width, height);
-  const depthRb = gl.createRenderbuffer();
-  gl.bindRenderbuffer(gl.RENDERBUFFER, depthRb);
-  gl.renderbufferStorage(gl.RENDERBUFFER, gl.DEPTH_COMPONENT32F, width, height);
-  const colorFbo = gl.createFramebuffer();
-  gl.bindFramebuffer(gl.FRAMEBUFFER, colorFbo);
-  gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.RENDERBUFFER, colorRb);
-  gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, depthRb);
-  const colorStatus = gl.checkFramebufferStatus(gl.FRAMEBUFFER);
-  if (shadowStatus !== gl.FRAMEBUFFER_COMPLETE || colorStatus !== gl.FRAMEBUFFER_COMPLETE) {
-    throw new Error(`incomplete framebuffer (shadow ${shadowStatus}, colour ${colorStatus})`);
-  }
-
-  const drawAll = (pass) => {
-    for (const d of scene.draws) {
-      for (const i of pass.blocks) {
-        gl.bindBuffer(gl.UNIFORM_BUFFER, ubos[i]);
-        gl.bufferSubData(gl.UNIFORM_BUFFER, 0, blockBytes(manifest.uniform_blocks[i], uboSize[i], d.values));
-        gl.bindBufferBase(gl.UNIFORM_BUFFER, i, ubos[i]);
-      }
-      const v = pass.vaos[d.mesh];
-      gl.bindVertexArray(v.vao);
-      gl.drawElements(gl.TRIANGLES, v.count, gl.UNSIGNED_INT, 0);
-      gl.bindVertexArray(null);
+  const framebuffer = (color, depth) => {
+    const fbo = gl.createFramebuffer();
+    gl.bindFramebuffer(gl.FRAMEBUFFER, fbo);
+    if (color !== null) {
+      gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, textures[color], 0);
+      gl.drawBuffers([gl.COLOR_ATTACHMENT0]);
+      gl.readBuffer(gl.COLOR_ATTACHMENT0);
+    } else {
+      gl.drawBuffers([gl.NONE]);
+      gl.readBuffer(gl.NONE);
     }
+    if (depth !== null) gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.TEXTURE_2D, textures[depth], 0);
+    const status = gl.checkFramebufferStatus(gl.FRAMEBUFFER);
+    if (status !== gl.FRAMEBUFFER_COMPLETE) throw new PageError('api', `incomplete framebuffer ${status}`);
+    return fbo;
   };
+  const sampler = (t) => {
+    const s = gl.createSampler();
+    const filter = t.linear ? gl.LINEAR : gl.NEAREST;
+    gl.samplerParameteri(s, gl.TEXTURE_MIN_FILTER, filter);
+    gl.samplerParameteri(s, gl.TEXTURE_MAG_FILTER, filter);
+    // WebGL2 has no clamp to border: lookups outside clamp to the edge.
+    gl.samplerParameteri(s, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
+    gl.samplerParameteri(s, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
+    if (t.compare) {
+      gl.samplerParameteri(s, gl.TEXTURE_COMPARE_MODE, gl.COMPARE_REF_TO_TEXTURE);
+      gl.samplerParameteri(s, gl.TEXTURE_COMPARE_FUNC, gl.LEQUAL);
+    }
+    return s;
+  };
+  const ubos = {};
+  const ubo = (point) => (ubos[point] ??= gl.createBuffer());
 
-  gl.disable(gl.CULL_FACE);
   gl.disable(gl.BLEND);
-  gl.enable(gl.DEPTH_TEST);
+  gl.frontFace(gl.CCW);
   gl.depthFunc(gl.LESS);
   gl.depthMask(true);
-
-  // Pass 1: depth from the sun.
-  gl.bindFramebuffer(gl.FRAMEBUFFER, shadowFbo);
-  gl.viewport(0, 0, n, n);
-  gl.clearDepth(1.0);
-  gl.clear(gl.DEPTH_BUFFER_BIT);
-  if (scene.view !== 'lit') {
-    gl.enable(gl.POLYGON_OFFSET_FILL);
-    gl.polygonOffset(scene.polygon_offset.factor, scene.polygon_offset.units);
-    gl.useProgram(shadowPass.program);
-    drawAll(shadowPass);
-    gl.disable(gl.POLYGON_OFFSET_FILL);
+  for (const pass of plan.passes) {
+    const p = programs[pass.program];
+    const fbo = framebuffer(pass.color ? pass.color.target : null, pass.depth ? pass.depth.target : null);
+    const drawn = plan.targets[(pass.color ?? pass.depth).target];
+    gl.viewport(0, 0, drawn.width, drawn.height);
+    if (pass.color) {
+      const c = pass.color.clear;
+      if (plan.targets[pass.color.target].format === 'rgba32uint') gl.clearBufferuiv(gl.COLOR, 0, new Uint32Array(c));
+      else {
+        gl.clearColor(c[0], c[1], c[2], c[3]);
+        gl.clear(gl.COLOR_BUFFER_BIT);
+      }
+    }
+    if (pass.depth) {
+      gl.enable(gl.DEPTH_TEST);
+      gl.clearDepth(pass.depth.clear);
+      gl.clear(gl.DEPTH_BUFFER_BIT);
+    } else gl.disable(gl.DEPTH_TEST);
+    if (pass.cull === 'none') gl.disable(gl.CULL_FACE);
+    else {
+      gl.enable(gl.CULL_FACE);
+      gl.cullFace(pass.cull === 'front' ? gl.FRONT : gl.BACK);
+    }
+    if (pass.depth_bias) {
+      gl.enable(gl.POLYGON_OFFSET_FILL);
+      gl.polygonOffset(2.0, 4.0);
+    } else gl.disable(gl.POLYGON_OFFSET_FILL);
+    gl.useProgram(p.program);
+    const samplers = [];
+    for (const t of pass.textures) {
+      const s = sampler(t);
+      samplers.push(s);
+      gl.activeTexture(gl.TEXTURE0 + t.unit);
+      gl.bindTexture(gl.TEXTURE_2D, textures[t.target]);
+      gl.bindSampler(t.unit, s);
+    }
+    gl.activeTexture(gl.TEXTURE0);
+    for (const d of pass.draws) {
+      for (const b of d.blocks) {
+        const bytes = new Uint8Array(Math.max(p.blockSize[b.point] ?? 0, 4 * b.words.length));
+        const view = new DataView(bytes.buffer);
+        b.words.forEach((w, i) => view.setUint32(4 * i, w, true));
+        gl.bindBuffer(gl.UNIFORM_BUFFER, ubo(b.point));
+        gl.bufferData(gl.UNIFORM_BUFFER, bytes, gl.DYNAMIC_DRAW);
+        gl.bindBufferBase(gl.UNIFORM_BUFFER, b.point, ubo(b.point));
+      }
+      for (const u of d.uniforms) {
+        const loc = p.locations[u.name];
+        if (loc === undefined) continue;
+        if (u.matrix) gl[u.call](loc, false, uniformData(u));
+        else gl[u.call](loc, uniformData(u));
+      }
+      if (d.mesh !== null) {
+        gl.bindVertexArray(p.vaos[d.mesh]);
+        gl.drawElements(gl.TRIANGLES, meshes[d.mesh].count, gl.UNSIGNED_INT, 0);
+      } else {
+        gl.bindVertexArray(p.vaos['']);
+        gl.drawArrays(gl.TRIANGLES, 0, d.vertices);
+      }
+      gl.bindVertexArray(null);
+    }
+    for (const t of pass.textures) {
+      gl.activeTexture(gl.TEXTURE0 + t.unit);
+      gl.bindTexture(gl.TEXTURE_2D, null);
+      gl.bindSampler(t.unit, null);
+    }
+    gl.activeTexture(gl.TEXTURE0);
+    samplers.forEach((s) => gl.deleteSampler(s));
+    gl.useProgram(null);
+    gl.deleteFramebuffer(fbo);
   }
+  gl.disable(gl.POLYGON_OFFSET_FILL);
+  gl.disable(gl.CULL_FACE);
 
-  // Pass 2: the lit scene.
-  gl.bindFramebuffer(gl.FRAMEBUFFER, colorFbo);
-  gl.viewport(0, 0, width, height);
-  gl.clearColor(scene.clear[0], scene.clear[1], scene.clear[2], 1.0);
-  gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
-  gl.useProgram(mainPass.program);
-  if (mainPass.shadowUnit !== null) {
-    gl.activeTexture(gl.TEXTURE0 + mainPass.shadowUnit);
-    gl.bindTexture(gl.TEXTURE_2D, shadowTex);
-  }
-  drawAll(mainPass);
-  gl.useProgram(null);
-
-  // Read the frame from the framebuffer it was drawn to, copy it to the
-  // canvas and read the canvas back: the two must agree.
-  const fromFbo = new Uint8Array(width * height * 4);
+  // Read the target from a framebuffer of its own. A colour frame is also
+  // copied to the canvas and read back from there: the two must agree.
+  if (isDepth(readTarget.format)) throw new PageError('api', 'WebGL2 cannot read depth back');
+  const [, format, type, texel] = formatOf(gl, readTarget.format);
+  const { width, height } = readTarget;
+  const readFbo = framebuffer(plan.readback, null);
   gl.pixelStorei(gl.PACK_ALIGNMENT, 1);
-  gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, fromFbo);
-  gl.bindFramebuffer(gl.READ_FRAMEBUFFER, colorFbo);
-  gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, null);
-  gl.blitFramebuffer(0, 0, width, height, 0, 0, width, height, gl.COLOR_BUFFER_BIT, gl.NEAREST);
-  gl.bindFramebuffer(gl.FRAMEBUFFER, null);
-  const pixels = new Uint8Array(width * height * 4);
-  gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+  const integer = readTarget.format === 'rgba32uint';
+  const fromFbo = integer ? new Uint32Array(width * height * 4) : new Uint8Array(width * height * texel);
+  gl.readPixels(0, 0, width, height, format, type, fromFbo);
+  let pixels = new Uint8Array(fromFbo.buffer);
+  if (!integer) {
+    gl.bindFramebuffer(gl.READ_FRAMEBUFFER, readFbo);
+    gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, null);
+    gl.blitFramebuffer(0, 0, width, height, 0, 0, width, height, gl.COLOR_BUFFER_BIT, gl.NEAREST);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    const fromCanvas = new Uint8Array(width * height * 4);
+    gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, fromCanvas);
+    let mismatched = 0;
+    for (let i = 0; i < fromCanvas.length; i++) if (fromCanvas[i] !== fromFbo[i]) mismatched++;
+    if (mismatched) throw new PageError('api', `the canvas differs from the framebuffer drawn in ${mismatched} bytes`);
+    pixels = fromCanvas;
+  }
   const err = gl.getError();
-  if (err !== gl.NO_ERROR) throw new Error(`WebGL error ${err}`);
-  let mismatched = 0;
-  for (let i = 0; i < pixels.length; i++) if (pixels[i] !== fromFbo[i]) mismatched++;
-  if (mismatched) throw new Error(`the canvas differs from the framebuffer drawn in ${mismatched} bytes`);
+  if (err !== gl.NO_ERROR) throw new PageError('api', `WebGL error ${err}`);
 
   let binary = '';
   for (let i = 0; i < pixels.length; i += 0x8000) binary += String.fromCharCode.apply(null, pixels.subarray(i, i + 0x8000));
@@ -290,5 +320,8 @@ async function main() {
 const status = document.getElementById('status');
 main().then(
   (r) => { status.textContent = `drawn on ${r.renderer}`; window.umbracResult = r; },
-  (e) => { status.textContent = `error: ${e.message}`; window.umbracResult = { ok: false, error: e.message }; },
+  (e) => {
+    status.textContent = `error: ${e.message}`;
+    window.umbracResult = { ok: false, kind: e.kind ?? 'api', error: e.message, file: e.file, pass: e.pass, log: e.log };
+  },
 );

@@ -1,21 +1,20 @@
-//! Every consumer of every emitted target, side by side: one frame of the
-//! scene from one compilation on wgpu/Vulkan (WGSL and SPIR-V), wgpu's GL
-//! backend (WGSL), OpenGL 3.3 core (GLSL 330), OpenGL ES 3.0 (GLSL ES
-//! 3.00), WebGL2 in chromium (GLSL ES 3.00) and the CPU reference, and the
-//! pairwise differences of their images (`umbrac render --compare-backends`,
-//! `tests/gpu/consumers.rs`).
+//! Every consumer of every emitted target, side by side: the one enum
+//! that says which ([`Consumer`]), a compiled program in the form each
+//! takes ([`Programs`]), running a plan on any of them ([`run`]), and the
+//! tutorial scene on each with the pairwise differences of their images
+//! (`umbrac render --compare-backends`, `tests/gpu/consumers.rs`).
 
 use std::sync::OnceLock;
 use std::time::Instant;
 
 use image::RgbaImage;
 
-use super::glsl_set::GlslSet;
-use super::gpu::{Backend, RenderError, Renderer, ShaderSet, Via};
+use super::exec::{wgpu::WgpuExecutor, webgl::WebGl, ExecError, Executor, Readback};
 use super::image_ops::{self, DiffStats};
+use super::plan::{tutorial, FramePlan};
+use super::program::ShaderSet;
 use super::reference;
 use super::scene::{FrameParams, View};
-use super::webgl::{self, WebGl};
 use crate::Target;
 
 /// One consumer of the compiler's output.
@@ -33,20 +32,14 @@ pub enum Consumer {
     Gles300,
     /// WebGL2 in headless chromium, the `.300es.*` files.
     WebGl2,
-    /// The CPU ray-cast reference (exact shadows).
+    /// The CPU ray-cast reference (exact shadows; the tutorial and
+    /// technique scenes only).
     Reference,
 }
 
 impl Consumer {
-    pub const ALL: [Consumer; 7] = [
-        Consumer::VulkanWgsl,
-        Consumer::VulkanSpirv,
-        Consumer::WgpuGl,
-        Consumer::Gl330,
-        Consumer::Gles300,
-        Consumer::WebGl2,
-        Consumer::Reference,
-    ];
+    pub const ALL: [Consumer; 7] =
+        [Consumer::VulkanWgsl, Consumer::VulkanSpirv, Consumer::WgpuGl, Consumer::Gl330, Consumer::Gles300, Consumer::WebGl2, Consumer::Reference];
 
     pub fn name(self) -> &'static str {
         match self {
@@ -58,6 +51,10 @@ impl Consumer {
             Consumer::WebGl2 => "webgl2",
             Consumer::Reference => "reference",
         }
+    }
+
+    pub fn from_name(name: &str) -> Option<Consumer> {
+        Consumer::ALL.into_iter().find(|c| c.name() == name)
     }
 
     /// What runs what.
@@ -77,15 +74,27 @@ impl Consumer {
     pub fn is_gpu(self) -> bool {
         self != Consumer::Reference
     }
+
+    /// The compiler output it runs.
+    pub fn target(self) -> Option<Target> {
+        Some(match self {
+            Consumer::VulkanWgsl | Consumer::WgpuGl => Target::Wgsl,
+            Consumer::VulkanSpirv => Target::Spirv,
+            Consumer::Gl330 => Target::Glsl330,
+            Consumer::Gles300 | Consumer::WebGl2 => Target::Gles300,
+            Consumer::Reference => return None,
+        })
+    }
 }
 
 /// The compiled program in every form the consumers take.
+#[derive(Clone, Debug)]
 pub struct Programs {
     pub label: String,
     pub wgsl: ShaderSet,
     pub spirv: ShaderSet,
-    pub glsl330: GlslSet,
-    pub gles300: GlslSet,
+    pub glsl330: ShaderSet,
+    pub gles300: ShaderSet,
 }
 
 impl Programs {
@@ -93,10 +102,10 @@ impl Programs {
     pub fn from_compiled(label: &str, compiled: &crate::Compiled) -> Result<Programs, String> {
         Ok(Programs {
             label: label.to_string(),
-            wgsl: ShaderSet::from_compiled(label, compiled, Via::Wgsl).map_err(|e| e.to_string())?,
-            spirv: ShaderSet::from_compiled(label, compiled, Via::Spirv).map_err(|e| e.to_string())?,
-            glsl330: GlslSet::from_compiled(label, compiled, Target::Glsl330)?,
-            gles300: GlslSet::from_compiled(label, compiled, Target::Gles300)?,
+            wgsl: ShaderSet::from_compiled(label, compiled, Target::Wgsl)?,
+            spirv: ShaderSet::from_compiled(label, compiled, Target::Spirv)?,
+            glsl330: ShaderSet::from_compiled(label, compiled, Target::Glsl330)?,
+            gles300: ShaderSet::from_compiled(label, compiled, Target::Gles300)?,
         })
     }
 
@@ -107,6 +116,16 @@ impl Programs {
             Some(compiled) if !c.has_errors() => Programs::from_compiled(name, compiled),
             _ => Err(format!("{name} did not compile:\n{}", c.render_diagnostics())),
         }
+    }
+
+    /// The form `c` runs (none for the reference).
+    pub fn for_consumer(&self, c: Consumer) -> Option<&ShaderSet> {
+        Some(match c.target()? {
+            Target::Wgsl => &self.wgsl,
+            Target::Spirv => &self.spirv,
+            Target::Glsl330 => &self.glsl330,
+            Target::Gles300 => &self.gles300,
+        })
     }
 }
 
@@ -135,105 +154,74 @@ impl Status {
     }
 }
 
+impl From<ExecError> for Status {
+    fn from(e: ExecError) -> Status {
+        match e {
+            ExecError::Unavailable { why, install, .. } => Status::Unavailable { why, install },
+            other => Status::Failed(other.to_string()),
+        }
+    }
+}
+
 /// wgpu's GL backend lives for the whole process: dropping its last device
-/// terminates the EGL display, which it shares with [`super::gl`]'s
+/// terminates the EGL display, which it shares with the GL executor's
 /// contexts (both use Mesa's surfaceless platform). Open it before any
-/// [`super::gl::GlRenderer`].
-pub fn wgpu_gl() -> Result<&'static Renderer, String> {
-    static R: OnceLock<Result<Renderer, String>> = OnceLock::new();
-    R.get_or_init(|| Renderer::new(Backend::Gl).map_err(|e| e.to_string())).as_ref().map_err(|e| e.clone())
+/// [`super::exec::gl::GlExecutor`].
+pub fn wgpu_gl() -> Result<&'static WgpuExecutor, ExecError> {
+    static R: OnceLock<Result<WgpuExecutor, ExecError>> = OnceLock::new();
+    R.get_or_init(|| WgpuExecutor::new(Consumer::WgpuGl)).as_ref().map_err(|e| e.clone())
 }
 
-/// The Vulkan device, one per process.
-pub fn vulkan() -> Result<&'static Renderer, RenderError> {
-    static R: OnceLock<Result<Renderer, RenderError>> = OnceLock::new();
-    R.get_or_init(|| Renderer::new(Backend::Vulkan)).as_ref().map_err(|e| e.clone())
+/// The Vulkan device, one per process (both Vulkan consumers).
+pub fn vulkan() -> Result<&'static WgpuExecutor, ExecError> {
+    static R: OnceLock<Result<WgpuExecutor, ExecError>> = OnceLock::new();
+    R.get_or_init(|| WgpuExecutor::new(Consumer::VulkanWgsl)).as_ref().map_err(|e| e.clone())
 }
 
-fn timed(f: impl FnOnce() -> Result<(RgbaImage, String), Status>) -> Status {
-    let started = Instant::now();
-    match f() {
-        Ok((image, device)) => Status::Rendered { image, device, ms: started.elapsed().as_secs_f64() * 1e3 },
-        Err(s) => s,
-    }
+fn once<E: Executor>(e: &E, set: &ShaderSet, plan: &FramePlan) -> Result<(Readback, String), ExecError> {
+    let prepared = e.prepare(set, plan)?;
+    Ok((e.run(&prepared, plan)?, e.device_name()))
 }
 
-fn wgpu_status(e: RenderError) -> Status {
-    match e {
-        RenderError::NoAdapter { backend, detail } => Status::Unavailable {
-            why: format!("no wgpu {} adapter ({detail})", backend.name()),
-            install: match backend {
-                Backend::Vulkan => "apt-get install mesa-vulkan-drivers libvulkan1 (lavapipe)".into(),
-                Backend::Gl => "apt-get install libegl1 libegl-mesa0 libgl1-mesa-dri (llvmpipe)".into(),
-            },
-        },
-        RenderError::MissingFeature { feature, why } => {
-            Status::Unavailable { why: format!("the adapter lacks {feature} ({why})"), install: "a Vulkan driver with it (lavapipe has it)".into() }
-        }
-        other => Status::Failed(other.to_string()),
-    }
-}
-
-/// Renders one frame on one consumer. GPU consumers that are not
-/// installed say so; the GL ones open (and close) their context here.
-pub fn render(consumer: Consumer, programs: &Programs, params: &FrameParams) -> Status {
+/// Runs `plan` with `set` (in the form `consumer` takes) on `consumer`,
+/// opening (and closing) a GL context or a browser for it. Returns what
+/// came back and the device it ran on.
+pub fn run(consumer: Consumer, set: &ShaderSet, plan: &FramePlan) -> Result<(Readback, String), ExecError> {
     match consumer {
-        Consumer::VulkanWgsl | Consumer::VulkanSpirv => timed(|| {
-            let r = vulkan().map_err(|e| wgpu_status(e.clone()))?;
-            let set = if consumer == Consumer::VulkanWgsl { &programs.wgsl } else { &programs.spirv };
-            let image = r.render(set, params).map_err(wgpu_status)?;
-            Ok((image, r.adapter_name()))
-        }),
-        Consumer::WgpuGl => timed(|| {
-            let r = wgpu_gl().map_err(|e| Status::Unavailable {
-                why: e,
-                install: "apt-get install libegl1 libegl-mesa0 libgl1-mesa-dri (llvmpipe)".into(),
-            })?;
-            let image = r.render(&programs.wgsl, params).map_err(wgpu_status)?;
-            Ok((image, r.adapter_name()))
-        }),
-        Consumer::Gl330 | Consumer::Gles300 => render_gl(consumer, programs, params),
-        Consumer::WebGl2 => {
-            let tools = match WebGl::find() {
-                Ok(t) => t,
-                Err(why) => return Status::Unavailable { why, install: webgl::INSTALL_HINT.into() },
-            };
-            timed(|| {
-                let f = tools.render(&programs.gles300, params).map_err(Status::Failed)?;
-                Ok((f.image, format!("{} (chromium {})", f.renderer, f.browser)))
-            })
-        }
-        Consumer::Reference => timed(|| Ok((reference::render(params), "CPU".into()))),
+        Consumer::VulkanWgsl | Consumer::VulkanSpirv => once(vulkan()?, set, plan),
+        Consumer::WgpuGl => once(wgpu_gl()?, set, plan),
+        Consumer::Gl330 | Consumer::Gles300 => run_gl(consumer, set, plan),
+        Consumer::WebGl2 => once(&WebGl::find()?, set, plan),
+        Consumer::Reference => Err(ExecError::Unsupported("the CPU reference draws its scenes itself, not plans".into())),
     }
 }
 
 #[cfg(feature = "gl")]
-fn render_gl(consumer: Consumer, programs: &Programs, params: &FrameParams) -> Status {
-    use super::gl::{GlApi, GlError, GlRenderer};
-    let (api, set) = match consumer {
-        Consumer::Gl330 => (GlApi::Gl330, &programs.glsl330),
-        _ => (GlApi::Gles300, &programs.gles300),
-    };
+fn run_gl(consumer: Consumer, set: &ShaderSet, plan: &FramePlan) -> Result<(Readback, String), ExecError> {
     // See `wgpu_gl`: its display must outlive these contexts.
     let _ = wgpu_gl();
-    let r = match GlRenderer::new(api) {
-        Ok(r) => r,
-        Err(GlError::Unavailable(why)) => {
-            return Status::Unavailable { why, install: GlApi::install_hint().trim_start_matches("on Debian/Ubuntu: ").into() }
-        }
-        Err(e) => return Status::Failed(e.to_string()),
-    };
-    timed(|| {
-        let image = r.render(set, params).map_err(|e| Status::Failed(e.to_string()))?;
-        Ok((image, r.adapter_name()))
-    })
+    once(&super::exec::gl::GlExecutor::new(consumer)?, set, plan)
 }
 
 #[cfg(not(feature = "gl"))]
-fn render_gl(_: Consumer, _: &Programs, _: &FrameParams) -> Status {
-    Status::Unavailable {
+fn run_gl(consumer: Consumer, _: &ShaderSet, _: &FramePlan) -> Result<(Readback, String), ExecError> {
+    Err(ExecError::Unavailable {
+        consumer,
         why: "umbrac was built without the `gl` feature".into(),
         install: "cargo build --features gl (no system packages needed to build)".into(),
+    })
+}
+
+/// Renders one frame of the tutorial scene on one consumer.
+pub fn render(consumer: Consumer, programs: &Programs, params: &FrameParams) -> Status {
+    let started = Instant::now();
+    let result = match programs.for_consumer(consumer) {
+        None => Ok((reference::render(params), "CPU".to_string())),
+        Some(set) => run(consumer, set, &tutorial::plan(params)).map(|(r, device)| (r.into_image(), device)),
+    };
+    match result {
+        Ok((image, device)) => Status::Rendered { image, device, ms: started.elapsed().as_secs_f64() * 1e3 },
+        Err(e) => e.into(),
     }
 }
 

@@ -5,9 +5,9 @@
 
 use std::collections::BTreeMap;
 
-use crate::emit::reflect_types::{EntryPoint, Io, Member, ProgramLink, Reflection, Sampler, UniformBlock, REFLECTION_FORMAT};
+use crate::emit::reflect_types::{EntryPoint, Io, Member, ProgramLink, Reflection, Sampler, Uniform, UniformBuffer, REFLECTION_FORMAT};
 
-use super::gpu::{ShaderCode, ShaderSet};
+use super::program::{ShaderCode, ShaderSet};
 
 /// The hand-written WGSL text.
 pub const WGSL: &str = include_str!("../../shaders/hand/shadow.wgsl");
@@ -90,21 +90,25 @@ fn io(name: &str, location: u32, ty: &str, vertex_input: bool) -> Io {
         size,
         interpolation: (!vertex_input).then(|| "perspective".to_string()),
         glsl_name: name.into(),
+        glsl_location: vertex_input.then_some(location),
     }
 }
 
-/// The reflection of the hand shader, built the way the compiler builds one.
+/// The reflection of the hand shader, in the shape the compiler emits. The
+/// hand WGSL binds each uniform on its own (as umbrac did before loose
+/// uniforms shared a buffer): seven one-member buffers.
 pub fn reflection() -> Reflection {
-    let uniform_blocks: Vec<UniformBlock> = UNIFORMS
+    let uniform_buffers: Vec<UniformBuffer> = UNIFORMS
         .iter()
         .enumerate()
-        .map(|(i, &(name, ty, size))| UniformBlock {
+        .map(|(i, &(name, ty, size))| UniformBuffer {
             name: name.into(),
             ty: ty.into(),
+            loose: true,
             size: size.next_multiple_of(16),
             group: 0,
             binding: i as u32,
-            glsl_block: format!("{name}_block"),
+            glsl_block: None,
             members: vec![Member {
                 name: name.into(),
                 ty: ty.into(),
@@ -112,8 +116,25 @@ pub fn reflection() -> Reflection {
                 size,
                 array_stride: None,
                 matrix_stride: (ty == "float4x4").then_some(16),
+                storage: None,
                 default: None,
             }],
+        })
+        .collect();
+    let uniforms: Vec<Uniform> = UNIFORMS
+        .iter()
+        .map(|&(name, ty, _)| Uniform {
+            name: name.into(),
+            ty: ty.into(),
+            buffer: name.into(),
+            glsl_name: Some(name.into()),
+            glsl_type: match ty {
+                "float4x4" => "mat4",
+                "float3" => "vec3",
+                _ => "float",
+            }
+            .into(),
+            default: None,
         })
         .collect();
     let samplers = vec![Sampler {
@@ -141,7 +162,8 @@ pub fn reflection() -> Reflection {
             inputs: vec![io("a_pos", 0, "float3", true)],
             outputs: vec![],
             builtins: strings(&["gl_Position"]),
-            uniform_blocks: strings(&["u_light_vp", "u_model"]),
+            uniform_buffers: strings(&["u_light_vp", "u_model"]),
+            uniforms: strings(&["u_light_vp", "u_model"]),
             samplers: vec![],
         },
         EntryPoint {
@@ -151,7 +173,8 @@ pub fn reflection() -> Reflection {
             inputs: vec![],
             outputs: vec![Io { interpolation: None, ..io("f_FragColor", 0, "float4", false) }],
             builtins: vec![],
-            uniform_blocks: vec![],
+            uniform_buffers: vec![],
+            uniforms: vec![],
             samplers: vec![],
         },
         EntryPoint {
@@ -161,7 +184,8 @@ pub fn reflection() -> Reflection {
             inputs: vec![io("a_pos", 0, "float3", true), io("a_normal", 1, "float3", true)],
             outputs: varyings(),
             builtins: strings(&["gl_Position"]),
-            uniform_blocks: strings(&["u_light_vp", "u_model", "u_view", "u_proj"]),
+            uniform_buffers: strings(&["u_light_vp", "u_model", "u_view", "u_proj"]),
+            uniforms: strings(&["u_light_vp", "u_model", "u_view", "u_proj"]),
             samplers: vec![],
         },
         EntryPoint {
@@ -171,7 +195,8 @@ pub fn reflection() -> Reflection {
             inputs: varyings(),
             outputs: vec![Io { interpolation: None, ..io("f_FragColor", 0, "float4", false) }],
             builtins: vec![],
-            uniform_blocks: strings(&["u_light_dir", "u_cam_pos", "u_is_floor"]),
+            uniform_buffers: strings(&["u_light_dir", "u_cam_pos", "u_is_floor"]),
+            uniforms: strings(&["u_light_dir", "u_cam_pos", "u_is_floor"]),
             samplers: strings(&["shadow_map"]),
         },
     ];
@@ -184,7 +209,9 @@ pub fn reflection() -> Reflection {
             ProgramLink { vertex: "main_vs".into(), fragment: "main_fs".into() },
             ProgramLink { vertex: "shadow_vs".into(), fragment: "shadow_fs".into() },
         ],
-        uniform_blocks,
+        gl_uniforms: "plain".into(),
+        uniform_buffers,
+        uniforms,
         structs: vec![],
         samplers,
     }
@@ -203,7 +230,7 @@ pub fn rebound(new_binding: impl Fn(u32) -> u32) -> ShaderSet {
         text = text.replace(&format!("@binding(#{old}#)"), &format!("@binding({})", new_binding(old)));
     }
     let mut r = reflection();
-    for b in &mut r.uniform_blocks {
+    for b in &mut r.uniform_buffers {
         b.binding = new_binding(b.binding);
     }
     for s in &mut r.samplers {

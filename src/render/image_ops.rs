@@ -176,6 +176,73 @@ pub fn side_by_side(images: &[&RgbaImage]) -> RgbaImage {
     out
 }
 
+/// Height of the label bar [`labelled_strip`] puts above each image.
+pub const LABEL_HEIGHT: u32 = 24;
+
+/// A one-bit canvas embedded-graphics draws text into.
+struct Mask {
+    width: u32,
+    height: u32,
+    on: Vec<bool>,
+}
+
+impl embedded_graphics::geometry::OriginDimensions for Mask {
+    fn size(&self) -> embedded_graphics::geometry::Size {
+        embedded_graphics::geometry::Size::new(self.width, self.height)
+    }
+}
+
+impl embedded_graphics::draw_target::DrawTarget for Mask {
+    type Color = embedded_graphics::pixelcolor::BinaryColor;
+    type Error = std::convert::Infallible;
+
+    fn draw_iter<I>(&mut self, pixels: I) -> Result<(), Self::Error>
+    where
+        I: IntoIterator<Item = embedded_graphics::Pixel<Self::Color>>,
+    {
+        for embedded_graphics::Pixel(p, c) in pixels {
+            if p.x >= 0 && p.y >= 0 && (p.x as u32) < self.width && (p.y as u32) < self.height && c.is_on() {
+                self.on[(p.y as u32 * self.width + p.x as u32) as usize] = true;
+            }
+        }
+        Ok(())
+    }
+}
+
+/// `text` in white on a dark bar `width` x [`LABEL_HEIGHT`], in a built-in
+/// 10 x 20 bitmap font (cut at the bar's right edge).
+pub fn label(text: &str, width: u32) -> RgbaImage {
+    use embedded_graphics::mono_font::{ascii::FONT_10X20, MonoTextStyle};
+    use embedded_graphics::pixelcolor::BinaryColor;
+    use embedded_graphics::prelude::*;
+    use embedded_graphics::text::{Baseline, Text};
+    let mut mask = Mask { width, height: LABEL_HEIGHT, on: vec![false; (width * LABEL_HEIGHT) as usize] };
+    let style = MonoTextStyle::new(&FONT_10X20, BinaryColor::On);
+    let Ok(_) = Text::with_baseline(text, Point::new(6, 2), style, Baseline::Top).draw(&mut mask);
+    RgbaImage::from_fn(width, LABEL_HEIGHT, |x, y| {
+        if mask.on[(y * width + x) as usize] {
+            Rgba([255, 255, 255, 255])
+        } else {
+            Rgba([24, 24, 32, 255])
+        }
+    })
+}
+
+/// Images side by side, each under a bar with its name (the consumers
+/// picture: `umbrac render --compare-backends` writes it as `OUT.all.png`).
+pub fn labelled_strip(images: &[(&str, &RgbaImage)]) -> RgbaImage {
+    let labelled: Vec<RgbaImage> = images
+        .iter()
+        .map(|(name, image)| {
+            let mut out = RgbaImage::from_pixel(image.width(), image.height() + LABEL_HEIGHT, Rgba([0, 0, 0, 255]));
+            image::imageops::replace(&mut out, &label(name, image.width()), 0, 0);
+            image::imageops::replace(&mut out, *image, 0, LABEL_HEIGHT as i64);
+            out
+        })
+        .collect();
+    side_by_side(&labelled.iter().collect::<Vec<_>>())
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -200,5 +267,18 @@ mod tests {
         assert!((iou(&a, &b) - 1.0 / 3.0).abs() < 1e-9);
         assert_eq!(centroid(&a, 2), Some((1.0, 0.5)));
         assert_eq!(centroid(&[false; 4], 2), None);
+    }
+
+    #[test]
+    fn labels_are_drawn_and_differ_by_name() {
+        let a = label("gl330", 120);
+        let b = label("gles300", 120);
+        let white = |i: &RgbaImage| i.pixels().filter(|p| p[0] == 255).count();
+        assert!(white(&a) > 40, "some text is drawn");
+        assert_ne!(a, b);
+        let img = RgbaImage::from_pixel(50, 10, Rgba([9, 9, 9, 255]));
+        let strip = labelled_strip(&[("a", &img), ("b", &img)]);
+        assert_eq!(strip.dimensions(), (100, 10 + LABEL_HEIGHT));
+        assert_eq!(strip.get_pixel(75, LABEL_HEIGHT + 5), &Rgba([9, 9, 9, 255]));
     }
 }

@@ -1,45 +1,51 @@
-//! The wgpu runner: renders the tutorial's shadow scene from compiled
-//! shaders, headless, and checks it against a CPU reference.
+//! The runner: renders the tutorial's shadow scene, the technique scenes
+//! and self-checking programs from compiled shaders on every consumer,
+//! headless, and checks them against CPU references.
 //!
-//! - [`tutorial`]: the tutorial scene's numbers (sizes, the sun's orbit, the camera);
-//! - [`scene`]: the host side (meshes, GL-convention matrices, uniform values);
-//! - [`interface`]: fits a program's reflection to the scene (every binding,
-//!   offset and attribute location the renderer uses comes from there);
-//! - [`gpu`]: the wgpu renderer ([`Renderer`], [`ShaderSet`]);
+//! Data flows one way: a scene describes its frame once as a
+//! [`plan::FramePlan`]; [`bind`] fits a program's manifest to it (every
+//! binding, offset and location comes from there); an executor in
+//! [`exec`] runs it on a consumer ([`consumers::Consumer`]):
+//!
+//! - [`tutorial`], [`scene`], [`setup`]: the tutorial scene's numbers and
+//!   host math (meshes, GL-convention matrices);
+//! - [`plan`]: frame plans, and the tutorial's ([`plan::tutorial`]);
+//!   [`techniques`]: the technique scenes' plans;
+//! - [`program`]: a program in the form one consumer takes ([`ShaderSet`]);
+//! - [`bind`]: plan + manifest -> what each pass binds, per target family;
+//! - [`exec`]: the wgpu, GL and WebGL2 executors, one error type;
+//! - [`consumers`]: the consumers side by side;
 //! - [`reference`]: the CPU ray-cast reference with exact sun visibility;
-//! - [`image_ops`]: comparisons, shadow masks, PNG and GIF output;
+//! - [`image_ops`]: comparisons, shadow masks, labels, PNG and GIF output;
 //! - [`hand`]: the hand-written WGSL port and its reflection;
-//! - `cli`: the `umbrac render` command (feature `cli`).
+//! - [`command`]: `umbrac render` (its options; the binary parses them).
 //!
 //! ```no_run
-//! use umbrac::render::{hand, reference, image_ops, FrameParams, Renderer, Backend};
-//! let renderer = Renderer::new(Backend::Vulkan)?;
+//! use umbrac::render::{consumers, hand, reference, image_ops, FrameParams, SceneExecutor};
+//! let vulkan = consumers::vulkan()?;
 //! let params = FrameParams::new(2.0, 160, 120);
-//! let gpu = renderer.render(&hand::shader_set(), &params)?;
+//! let gpu = vulkan.render_scene(&hand::shader_set(), &params)?;
 //! let cpu = reference::render(&params);
 //! println!("{}", image_ops::diff(&gpu, &cpu, 24));
-//! # Ok::<(), umbrac::render::RenderError>(())
+//! # Ok::<(), umbrac::render::ExecError>(())
 //! ```
 
+pub mod bind;
+pub mod command;
 pub mod consumers;
-#[cfg(feature = "gl")]
-pub mod gl;
-pub mod glsl_set;
-pub mod gpu;
+pub mod exec;
 pub mod hand;
 pub mod image_ops;
-pub mod interface;
+pub mod plan;
+pub mod program;
 pub mod reference;
 pub mod scene;
 pub mod setup;
-mod setup_gpu;
 pub mod techniques;
 pub mod tutorial;
-pub mod webgl;
 
-#[cfg(feature = "cli")]
-pub mod cli;
-
-pub use gpu::{Backend, Program, RenderError, Renderer, ShaderCode, ShaderSet, Via};
+pub use consumers::Consumer;
+pub use exec::{ExecError, Executor, Readback, SceneExecutor};
+pub use program::{ShaderCode, ShaderSet};
 pub use scene::{FrameParams, View};
 pub use setup::{DepthFormat, Filter, Fit, Light, Quality, Setup, ShadowOptions, World};

@@ -5,7 +5,11 @@
 
 use glam::camera::rh::proj::opengl;
 use glam::camera::rh::view::look_at_mat4;
+use std::sync::LazyLock;
+
 use glam::{Mat4, Quat, Vec3};
+
+use super::plan;
 
 pub use super::tutorial::*;
 
@@ -25,6 +29,8 @@ pub enum View {
 }
 
 impl View {
+    pub const ALL: [View; 3] = [View::Final, View::ShadowMap, View::Lit];
+
     pub fn name(self) -> &'static str {
         match self {
             View::Final => "final",
@@ -77,12 +83,26 @@ pub const VERTEX_STRIDE: u64 = std::mem::size_of::<Vertex>() as u64;
 pub const ATTR_POS: &str = "a_pos";
 pub const ATTR_NORMAL: &str = "a_normal";
 
-/// Offset of a named vertex attribute in [`Vertex`].
-pub fn attribute_offset(name: &str) -> Option<u64> {
-    match name {
-        ATTR_POS => Some(0),
-        ATTR_NORMAL => Some(12),
-        _ => None,
+/// The scene's meshes as frame plans draw them (uploaded once per
+/// executor): `a_pos` at byte 0 and `a_normal` at 12, both `Float32x3`.
+pub fn mesh(object: Object) -> &'static plan::Mesh {
+    static CUBE: LazyLock<plan::Mesh> = LazyLock::new(|| plan_mesh("cube", cube_mesh()));
+    static FLOOR: LazyLock<plan::Mesh> = LazyLock::new(|| plan_mesh("floor", floor_mesh()));
+    match object {
+        Object::Cube => &CUBE,
+        Object::Floor => &FLOOR,
+    }
+}
+
+fn plan_mesh(name: &'static str, m: Mesh) -> plan::Mesh {
+    let field = |name, offset| plan::Field { name, offset, format: plan::VertexFormat::Float32x3 };
+    plan::Mesh {
+        name,
+        vertices: bytemuck::cast_slice(&m.vertices).to_vec(),
+        stride: VERTEX_STRIDE as u32,
+        fields: vec![field(ATTR_POS, 0), field(ATTR_NORMAL, 12)],
+        indices: m.indices,
+        position: ATTR_POS,
     }
 }
 
@@ -225,30 +245,6 @@ impl Frame {
             Draw { object: Object::Floor, model: self.floor_model, is_floor: 1.0 },
         ]
     }
-
-    /// The value of a scene uniform for one draw, by its DSL name.
-    pub fn uniform(&self, name: &str, draw: &Draw) -> Option<UniformValue> {
-        Some(match name {
-            "u_light_vp" => UniformValue::Mat4(self.light_vp),
-            "u_model" => UniformValue::Mat4(draw.model),
-            "u_view" => UniformValue::Mat4(self.view),
-            "u_proj" => UniformValue::Mat4(self.proj),
-            "u_light_dir" => UniformValue::Vec3(self.light_dir),
-            "u_cam_pos" => UniformValue::Vec3(self.cam_pos),
-            "u_is_floor" => UniformValue::Float(draw.is_floor),
-            _ => return None,
-        })
-    }
-}
-
-/// Names of every uniform value the scene provides.
-pub const UNIFORM_NAMES: [&str; 7] =
-    ["u_light_vp", "u_model", "u_view", "u_proj", "u_light_dir", "u_cam_pos", "u_is_floor"];
-
-/// The DSL type of a scene uniform, by name.
-pub fn uniform_type(name: &str) -> Option<&'static str> {
-    let f = Frame::at(0.0, 1.0);
-    f.uniform(name, &f.draws()[0]).map(|v| v.dsl_type())
 }
 
 /// Uniforms a program must declare for the scene to draw anything sensible.
@@ -271,48 +267,6 @@ pub struct Draw {
     pub object: Object,
     pub model: Mat4,
     pub is_floor: f32,
-}
-
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum UniformValue {
-    Float(f32),
-    Vec3(Vec3),
-    Mat4(Mat4),
-}
-
-impl UniformValue {
-    /// The DSL type this value has.
-    pub fn dsl_type(&self) -> &'static str {
-        match self {
-            UniformValue::Float(_) => "float",
-            UniformValue::Vec3(_) => "float3",
-            UniformValue::Mat4(_) => "float4x4",
-        }
-    }
-
-    /// Writes the value at the start of `out` with the given matrix column
-    /// stride (16 for a std140 / WGSL `mat4x4<f32>`). Returns false if `out`
-    /// is too short.
-    pub fn write(&self, out: &mut [u8], matrix_stride: usize) -> bool {
-        let put = |out: &mut [u8], at: usize, vals: &[f32]| -> bool {
-            let bytes: &[u8] = bytemuck::cast_slice(vals);
-            match out.get_mut(at..at + bytes.len()) {
-                Some(dst) => {
-                    dst.copy_from_slice(bytes);
-                    true
-                }
-                None => false,
-            }
-        };
-        match self {
-            UniformValue::Float(f) => put(out, 0, &[*f]),
-            UniformValue::Vec3(v) => put(out, 0, &v.to_array()),
-            UniformValue::Mat4(m) => {
-                let cols = m.to_cols_array_2d();
-                cols.iter().enumerate().all(|(i, c)| put(out, i * matrix_stride, c))
-            }
-        }
-    }
 }
 
 #[cfg(test)]

@@ -81,6 +81,8 @@ pub enum Fit {
 }
 
 impl Fit {
+    pub const ALL: [Fit; 2] = [Fit::Fixed, Fit::Tight];
+
     pub fn name(self) -> &'static str {
         match self {
             Fit::Fixed => "fixed",
@@ -106,14 +108,6 @@ impl DepthFormat {
             DepthFormat::Depth16 => "depth16",
             DepthFormat::Depth24Plus => "depth24plus",
             DepthFormat::Depth32Float => "depth32float",
-        }
-    }
-
-    pub fn wgpu(self) -> wgpu::TextureFormat {
-        match self {
-            DepthFormat::Depth16 => wgpu::TextureFormat::Depth16Unorm,
-            DepthFormat::Depth24Plus => wgpu::TextureFormat::Depth24Plus,
-            DepthFormat::Depth32Float => wgpu::TextureFormat::Depth32Float,
         }
     }
 }
@@ -199,6 +193,17 @@ pub enum Quality {
     /// Less than half the tutorial's shadow error for no more frame time
     /// (docs/performance.md).
     Tuned,
+}
+
+impl Quality {
+    pub const ALL: [Quality; 2] = [Quality::Tutorial, Quality::Tuned];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            Quality::Tutorial => "tutorial",
+            Quality::Tuned => "tuned",
+        }
+    }
 }
 
 impl Setup {

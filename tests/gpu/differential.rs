@@ -165,141 +165,29 @@ fn compile(src: &str) -> umbrac::Compilation {
     umbrac::compile_source("differential.das", src, &umbrac::Options::default())
 }
 
-struct Gpu {
-    device: wgpu::Device,
-    queue: wgpu::Queue,
-    name: String,
-}
-
-fn gpu() -> Option<Gpu> {
-    support::gpu::check_environment();
-    let mut desc = wgpu::InstanceDescriptor::new_without_display_handle();
-    desc.backends = wgpu::Backends::VULKAN;
-    desc.flags = wgpu::InstanceFlags::empty();
-    let instance = wgpu::Instance::new(desc);
-    let adapters = pollster::block_on(instance.enumerate_adapters(wgpu::Backends::VULKAN));
-    let Some(adapter) = adapters.into_iter().next() else {
-        support::skip("no Vulkan adapter (apt-get install mesa-vulkan-drivers)");
-        return None;
-    };
-    let info = adapter.get_info();
-    let required_features = adapter.features() & wgpu::Features::PASSTHROUGH_SHADERS;
-    let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
-        label: Some("differential"),
-        required_features,
-        ..Default::default()
-    }))
-    .expect("the adapter opens a device");
-    Some(Gpu { device, queue, name: format!("{} ({})", info.name, info.driver) })
-}
-
-/// Draws the program once into a `width` x 1 Rgba32Uint target and
-/// returns each pixel's four words.
-fn run(gpu: &Gpu, module: &wgpu::ShaderModule, width: u32) -> Vec<[u32; 4]> {
-    let dev = &gpu.device;
-    // No resources; an explicit empty layout (passthrough modules cannot
-    // derive one).
-    let layout = dev.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor { label: Some("differential"), bind_group_layouts: &[], immediate_size: 0 });
-    let pipeline = dev.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-        label: Some("differential"),
-        layout: Some(&layout),
-        vertex: wgpu::VertexState { module, entry_point: Some("diff_vs"), compilation_options: Default::default(), buffers: &[] },
-        fragment: Some(wgpu::FragmentState {
-            module,
-            entry_point: Some("diff_fs"),
-            compilation_options: Default::default(),
-            targets: &[Some(wgpu::ColorTargetState { format: wgpu::TextureFormat::Rgba32Uint, blend: None, write_mask: wgpu::ColorWrites::ALL })],
-        }),
-        primitive: wgpu::PrimitiveState { cull_mode: None, ..Default::default() },
-        depth_stencil: None,
-        multisample: Default::default(),
-        multiview_mask: None,
-        cache: None,
-    });
-    let target = dev.create_texture(&wgpu::TextureDescriptor {
-        label: Some("results"),
-        size: wgpu::Extent3d { width, height: 1, depth_or_array_layers: 1 },
-        mip_level_count: 1,
-        sample_count: 1,
-        dimension: wgpu::TextureDimension::D2,
-        format: wgpu::TextureFormat::Rgba32Uint,
-        usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
-        view_formats: &[],
-    });
-    let view = target.create_view(&Default::default());
-    let row = (16 * width).next_multiple_of(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT);
-    let readback = dev.create_buffer(&wgpu::BufferDescriptor {
-        label: Some("readback"),
-        size: row as u64,
-        usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ,
-        mapped_at_creation: false,
-    });
-    let mut enc = dev.create_command_encoder(&Default::default());
-    {
-        let mut pass = enc.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("differential"),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: &view,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations { load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT), store: wgpu::StoreOp::Store },
-            })],
-            ..Default::default()
-        });
-        pass.set_pipeline(&pipeline);
-        pass.draw(0..3, 0..1);
+/// The program's words at each pixel, drawn as a self-checking frame plan
+/// (`diff_vs` / `diff_fs` into a `width` x 1 integer target) from the WGSL
+/// output, and from the SPIR-V output unchanged where the device allows
+/// (`PASSTHROUGH_SHADERS`). No Vulkan device: empty (after `support::skip`).
+fn results(compiled: &umbrac::Compiled, width: u32) -> Vec<(&'static str, Vec<[u32; 4]>)> {
+    use umbrac::render::{plan, Executor, ShaderSet};
+    let Some(gpu) = support::gpu::vulkan() else { return Vec::new() };
+    let plan = plan::checks::plan("diff_vs", "diff_fs", width);
+    let mut forms = vec![("WGSL", umbrac::Target::Wgsl)];
+    if gpu.supports_passthrough() {
+        forms.push(("SPIR-V", umbrac::Target::Spirv));
+    } else {
+        support::skip(format!("{} lacks PASSTHROUGH_SHADERS: SPIR-V not run, WGSL only", gpu.adapter_name()));
     }
-    enc.copy_texture_to_buffer(
-        wgpu::TexelCopyTextureInfo { texture: &target, mip_level: 0, origin: wgpu::Origin3d::ZERO, aspect: wgpu::TextureAspect::All },
-        wgpu::TexelCopyBufferInfo { buffer: &readback, layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(row), rows_per_image: Some(1) } },
-        wgpu::Extent3d { width, height: 1, depth_or_array_layers: 1 },
-    );
-    gpu.queue.submit([enc.finish()]);
-    let slice = readback.slice(..);
-    slice.map_async(wgpu::MapMode::Read, |r| r.expect("readback maps"));
-    dev.poll(wgpu::PollType::wait_indefinitely()).expect("the device finishes");
-    let data = slice.get_mapped_range().expect("mapped").to_vec();
-    let words: Vec<u32> = data.chunks_exact(4).map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect();
-    words.chunks_exact(4).take(width as usize).map(|w| [w[0], w[1], w[2], w[3]]).collect()
-}
-
-/// The program's entry points `diff_vs`/`diff_fs` as the device takes
-/// them: from the WGSL output, and from the SPIR-V output unchanged where
-/// the device allows (`PASSTHROUGH_SHADERS`).
-fn modules(gpu: &Gpu, compiled: &umbrac::Compiled, stem: &str) -> Vec<(&'static str, wgpu::ShaderModule)> {
-    let wgsl = compiled.artifact(&format!("{stem}.wgsl")).expect("WGSL output").text().into_owned();
-    let module = gpu.device.create_shader_module(wgpu::ShaderModuleDescriptor { label: Some("wgsl"), source: wgpu::ShaderSource::Wgsl(wgsl.into()) });
-    let mut out = vec![("WGSL", module)];
-    if !gpu.device.features().contains(wgpu::Features::PASSTHROUGH_SHADERS) {
-        support::skip(format!("{} lacks PASSTHROUGH_SHADERS: SPIR-V not run, WGSL only", gpu.name));
-        return out;
-    }
-    let spv = &compiled.artifact(&format!("{stem}.spv")).expect("SPIR-V output").contents;
-    let words: Vec<u32> = spv.chunks_exact(4).map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect();
-    let entry_points: Vec<wgpu::PassthroughShaderEntryPoint> =
-        ["diff_vs", "diff_fs"].into_iter().map(|n| wgpu::PassthroughShaderEntryPoint { name: n.into(), workgroup_size: (0, 0, 0) }).collect();
-    // SAFETY: a SPIR-V module umbrac emitted and naga validated (and
-    // tests/compiler/validate.rs runs spirv-val over the same writer's output).
-    let module = unsafe {
-        gpu.device.create_shader_module_passthrough(wgpu::ShaderModuleDescriptorPassthrough {
-            label: Some("spirv"),
-            entry_points: entry_points.into(),
-            spirv: Some(words.as_slice().into()),
-            ..Default::default()
+    forms
+        .into_iter()
+        .map(|(label, target)| {
+            let set = ShaderSet::from_compiled(label, compiled, target).unwrap();
+            let prepared = gpu.prepare(&set, &plan).unwrap_or_else(|e| panic!("wgpu rejected the {label} program: {e}"));
+            let readback = gpu.run(&prepared, &plan).unwrap_or_else(|e| panic!("the {label} program failed to draw: {e}"));
+            (label, readback.words().expect("an integer target"))
         })
-    };
-    out.push(("SPIR-V", module));
-    out
-}
-
-/// Runs `module` and fails on any validation error wgpu reports.
-fn run_checked(gpu: &Gpu, label: &str, module: &wgpu::ShaderModule, width: u32) -> Vec<[u32; 4]> {
-    let scope = gpu.device.push_error_scope(wgpu::ErrorFilter::Validation);
-    let results = run(gpu, module, width);
-    if let Some(e) = pollster::block_on(scope.pop()) {
-        panic!("wgpu rejected the {label} pipeline: {e}");
-    }
-    results
+        .collect()
 }
 
 fn show(v: u32, r: R) -> String {
@@ -343,10 +231,9 @@ fn constant_folding_matches_the_gpu() {
     let src = program();
     let c = compile(&src);
     let compiled = c.result.as_ref().unwrap_or_else(|| panic!("the differential program does not compile:\n{}\n{src}", c.render_diagnostics()));
-    let Some(gpu) = gpu() else { return };
-    eprintln!("device: {}", gpu.name);
-    for (label, module) in modules(&gpu, compiled, "differential") {
-        check(label, &run_checked(&gpu, label, &module, CASES.len() as u32));
+
+    for (label, words) in results(compiled, CASES.len() as u32) {
+        check(label, &words);
     }
 }
 
@@ -421,10 +308,8 @@ fn matrix_inverse_matches_f64_on_the_gpu() {
     src.push_str("    f_out = r\n}\n");
     let c = compile(&src);
     let compiled = c.result.as_ref().unwrap_or_else(|| panic!("the inverse program does not compile:\n{}\n{src}", c.render_diagnostics()));
-    let Some(gpu) = gpu() else { return };
-    eprintln!("device: {}", gpu.name);
-    for (label, module) in modules(&gpu, compiled, "differential") {
-        let results = run_checked(&gpu, label, &module, pixels.len() as u32);
+
+    for (label, results) in results(compiled, pixels.len() as u32) {
         let mut failures = Vec::new();
         for (k, (name, n, _)) in cases.iter().enumerate() {
             let want = inverse_f64(*n, &inputs[k]);

@@ -21,17 +21,18 @@ use umbrac::render::image_ops;
 use umbrac::render::reference::{self, RefFrame};
 use umbrac::render::scene::Frame;
 use support::gpu;
-use umbrac::render::{DepthFormat, FrameParams, Light, Program, Renderer, Setup, ShaderSet, Via, View, World};
+use umbrac::render::exec::wgpu::{WgpuExecutor, WgpuProgram};
+use umbrac::render::{DepthFormat, FrameParams, Light, SceneExecutor, Setup, ShaderSet, View, World};
 
 const W: u32 = 160;
 const H: u32 = 120;
 const SCENE: &str = include_str!("../../shaders/shadow.das");
 
-fn program(r: &Renderer, setup: &Setup, shadow_size: u32) -> Program {
+fn program(r: &WgpuExecutor, setup: &Setup, shadow_size: u32) -> WgpuProgram {
     let opts = umbrac::Options { targets: vec![umbrac::Target::Wgsl], defines: setup.defines(shadow_size), ..Default::default() };
     let c = umbrac::compile_source("shaders/shadow.das", SCENE, &opts);
     assert!(!c.has_errors(), "{}", c.render_diagnostics());
-    r.prepare(&ShaderSet::from_compiled("shadow", c.result.as_ref().unwrap(), Via::Wgsl).unwrap()).unwrap()
+    r.prepare_scene(&ShaderSet::from_compiled("shadow", c.result.as_ref().unwrap(), umbrac::Target::Wgsl).unwrap()).unwrap()
 }
 
 fn params(t: f32, setup: Setup) -> FrameParams {
@@ -59,9 +60,9 @@ struct Outcome {
 
 /// GPU and reference frames, with each one's shadow mask from its own
 /// unshadowed (`lit`) image at `threshold`.
-fn render(r: &Renderer, program: &Program, p: FrameParams, threshold: f32) -> Outcome {
-    let gpu = r.draw(program, &p).unwrap();
-    let gpu_lit = r.draw(program, &p.with_view(View::Lit)).unwrap();
+fn render(r: &WgpuExecutor, program: &WgpuProgram, p: FrameParams, threshold: f32) -> Outcome {
+    let gpu = r.draw_scene(program, &p).unwrap();
+    let gpu_lit = r.draw_scene(program, &p.with_view(View::Lit)).unwrap();
     let reference = reference::render_frame(&p);
     let ref_lit = reference::render(&p.with_view(View::Lit));
     let gpu_shadow = darker(&gpu, &gpu_lit, threshold);
@@ -157,7 +158,7 @@ fn large_world_renders_the_same_picture() {
     let small_prog = program(r, &small_setup, 1024);
     let big_prog = program(r, &big_setup, 1024);
     for t in [0.5, 4.0] {
-        let small = r.draw(&small_prog, &params(t, small_setup)).unwrap();
+        let small = r.draw_scene(&small_prog, &params(t, small_setup)).unwrap();
         let big = render(r, &big_prog, params(t, big_setup), 24.0);
         let skip = &big.reference.outside_shadow_map;
         let vs_ref = image_ops::diff_masked(&big.gpu, &big.reference.image, 8, Some(skip));

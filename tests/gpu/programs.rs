@@ -38,32 +38,42 @@ pub fn run(name: &str, src: &str, width: u32) -> Vec<(&'static str, Vec<[u32; 4]
 }
 
 /// [`run`], compiled with `opts`: only the consumers of the targets it
-/// requests draw (all, when it requests none).
+/// requests draw (all, when it requests none). Each draws the same frame
+/// plan ([`umbrac::render::plan::checks`]).
 pub fn run_for(name: &str, src: &str, width: u32, opts: &umbrac::Options) -> Vec<(&'static str, Vec<[u32; 4]>)> {
+    use umbrac::render::{plan, Executor, ShaderSet};
+    use umbrac::Target;
     let targets = opts.targets();
     let c = umbrac::compile_source(&format!("{name}.das"), src, opts);
     let Some(compiled) = c.result.as_ref().filter(|_| !c.has_errors()) else {
         panic!("{name} does not compile:\n{}\n{src}", c.render_diagnostics());
     };
+    let plan = plan::checks::plan("prog_vs", "prog_fs", width);
+    fn draw<E: Executor>(e: &E, consumer: &str, compiled: &umbrac::Compiled, target: Target, plan: &plan::FramePlan) -> Vec<[u32; 4]> {
+        let set = ShaderSet::from_compiled(consumer, compiled, target).unwrap();
+        let prepared = e.prepare(&set, plan).unwrap_or_else(|e| panic!("{consumer} refuses the program: {e}"));
+        let readback = e.run(&prepared, plan).unwrap_or_else(|e| panic!("{consumer} fails to draw it: {e}"));
+        readback.words().expect("an integer target reads back as words")
+    }
     let mut out = Vec::new();
-    let (wgsl, spirv) = (targets.contains(&umbrac::Target::Wgsl), targets.contains(&umbrac::Target::Spirv));
-    if let Some(r) = support::gpu::vulkan().filter(|_| wgsl || spirv) {
-        if wgsl {
-            out.push(("wgpu WGSL", wgpu_draw(r, compiled, name, false, width)));
+    if let Some(r) = support::gpu::vulkan().filter(|_| targets.contains(&Target::Wgsl) || targets.contains(&Target::Spirv)) {
+        if targets.contains(&Target::Wgsl) {
+            out.push(("wgpu WGSL", draw(r, "wgpu WGSL", compiled, Target::Wgsl, &plan)));
         }
-        if spirv && r.device().0.features().contains(wgpu::Features::PASSTHROUGH_SHADERS) {
-            out.push(("wgpu SPIR-V", wgpu_draw(r, compiled, name, true, width)));
-        } else if spirv {
+        if targets.contains(&Target::Spirv) && r.supports_passthrough() {
+            out.push(("wgpu SPIR-V", draw(r, "wgpu SPIR-V", compiled, Target::Spirv, &plan)));
+        } else if targets.contains(&Target::Spirv) {
             support::skip("the Vulkan device lacks PASSTHROUGH_SHADERS: raw SPIR-V not run");
         }
     }
     #[cfg(feature = "gl")]
-    for api in [umbrac::render::gl::GlApi::Gl330, umbrac::render::gl::GlApi::Gles300] {
-        if !targets.contains(&api.target()) {
+    for consumer in [umbrac::render::Consumer::Gl330, umbrac::render::Consumer::Gles300] {
+        let target = consumer.target().expect("a GL consumer runs GLSL");
+        if !targets.contains(&target) {
             continue;
         }
-        if let Some(r) = support::gpu::gl(api) {
-            out.push((api.name(), gl::draw(&r, compiled, width)));
+        if let Some(r) = support::gpu::gl(consumer) {
+            out.push((consumer.name(), draw(&r, consumer.name(), compiled, target, &plan)));
         }
     }
     out
@@ -91,230 +101,6 @@ pub fn assert_all_hold_for(name: &str, decls: &str, list: &[&str], opts: &umbrac
     }
     assert!(failures.is_empty(), "{name}:\n{}\n\nprogram:\n{src}", failures.join("\n"));
     eprintln!("{name}: {} checks hold on {}", list.len(), results.iter().map(|r| r.0).collect::<Vec<_>>().join(", "));
-}
-
-fn wgpu_draw(r: &umbrac::render::Renderer, compiled: &umbrac::Compiled, stem: &str, spirv: bool, width: u32) -> Vec<[u32; 4]> {
-    let (dev, queue) = r.device();
-    let module = if spirv {
-        let spv = &compiled.artifact(&format!("{stem}.spv")).expect("SPIR-V output").contents;
-        let words: Vec<u32> = spv.chunks_exact(4).map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect();
-        let entry_points: Vec<wgpu::PassthroughShaderEntryPoint> =
-            ["prog_vs", "prog_fs"].into_iter().map(|n| wgpu::PassthroughShaderEntryPoint { name: n.into(), workgroup_size: (0, 0, 0) }).collect();
-        // SAFETY: a SPIR-V module umbrac emitted and naga validated (the
-        // compiler tests run spirv-val over the same writer's output).
-        unsafe {
-            dev.create_shader_module_passthrough(wgpu::ShaderModuleDescriptorPassthrough {
-                label: Some("spirv"),
-                entry_points: entry_points.into(),
-                spirv: Some(words.as_slice().into()),
-                ..Default::default()
-            })
-        }
-    } else {
-        let wgsl = compiled.artifact(&format!("{stem}.wgsl")).expect("WGSL output").text().into_owned();
-        dev.create_shader_module(wgpu::ShaderModuleDescriptor { label: Some("wgsl"), source: wgpu::ShaderSource::Wgsl(wgsl.into()) })
-    };
-    let scope = dev.push_error_scope(wgpu::ErrorFilter::Validation);
-    // Every uniform block, in its group at its binding, holding its
-    // default (zero where it has none).
-    let r_ = &compiled.reflection;
-    let buffers: Vec<wgpu::Buffer> = r_
-        .uniform_blocks
-        .iter()
-        .map(|b| {
-            let bytes: Vec<u8> = default_words(b).iter().flat_map(|w| w.to_le_bytes()).collect();
-            wgpu::util::DeviceExt::create_buffer_init(dev, &wgpu::util::BufferInitDescriptor { label: Some(&b.name), contents: &bytes, usage: wgpu::BufferUsages::UNIFORM })
-        })
-        .collect();
-    let groups: std::collections::BTreeSet<u32> = r_.uniform_blocks.iter().map(|b| b.group).collect();
-    let group_count = groups.iter().max().map_or(0, |g| g + 1);
-    let layouts: Vec<wgpu::BindGroupLayout> = (0..group_count)
-        .map(|g| {
-            let mut entries: Vec<wgpu::BindGroupLayoutEntry> = r_
-                .uniform_blocks
-                .iter()
-                .filter(|b| b.group == g)
-                .map(|b| wgpu::BindGroupLayoutEntry {
-                    binding: b.binding,
-                    visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
-                    ty: wgpu::BindingType::Buffer { ty: wgpu::BufferBindingType::Uniform, has_dynamic_offset: false, min_binding_size: None },
-                    count: None,
-                })
-                .collect();
-            entries.sort_by_key(|e| e.binding);
-            dev.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor { label: None, entries: &entries })
-        })
-        .collect();
-    let bind_groups: Vec<wgpu::BindGroup> = (0..group_count)
-        .map(|g| {
-            let entries: Vec<wgpu::BindGroupEntry> = r_
-                .uniform_blocks
-                .iter()
-                .zip(&buffers)
-                .filter(|(b, _)| b.group == g)
-                .map(|(b, buf)| wgpu::BindGroupEntry { binding: b.binding, resource: buf.as_entire_binding() })
-                .collect();
-            dev.create_bind_group(&wgpu::BindGroupDescriptor { label: None, layout: &layouts[g as usize], entries: &entries })
-        })
-        .collect();
-    let layout_refs: Vec<Option<&wgpu::BindGroupLayout>> = layouts.iter().map(Some).collect();
-    let layout = dev.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor { label: Some("program"), bind_group_layouts: &layout_refs, immediate_size: 0 });
-    let pipeline = dev.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
-        label: Some("program"),
-        layout: Some(&layout),
-        vertex: wgpu::VertexState { module: &module, entry_point: Some("prog_vs"), compilation_options: Default::default(), buffers: &[] },
-        fragment: Some(wgpu::FragmentState {
-            module: &module,
-            entry_point: Some("prog_fs"),
-            compilation_options: Default::default(),
-            targets: &[Some(wgpu::ColorTargetState { format: wgpu::TextureFormat::Rgba32Uint, blend: None, write_mask: wgpu::ColorWrites::ALL })],
-        }),
-        primitive: wgpu::PrimitiveState { cull_mode: None, ..Default::default() },
-        depth_stencil: None,
-        multisample: Default::default(),
-        multiview_mask: None,
-        cache: None,
-    });
-    let target = dev.create_texture(&wgpu::TextureDescriptor {
-        label: Some("results"),
-        size: wgpu::Extent3d { width, height: 1, depth_or_array_layers: 1 },
-        mip_level_count: 1,
-        sample_count: 1,
-        dimension: wgpu::TextureDimension::D2,
-        format: wgpu::TextureFormat::Rgba32Uint,
-        usage: wgpu::TextureUsages::RENDER_ATTACHMENT | wgpu::TextureUsages::COPY_SRC,
-        view_formats: &[],
-    });
-    let view = target.create_view(&Default::default());
-    let row = (16 * width).next_multiple_of(wgpu::COPY_BYTES_PER_ROW_ALIGNMENT);
-    let readback = dev.create_buffer(&wgpu::BufferDescriptor { label: Some("readback"), size: row as u64, usage: wgpu::BufferUsages::COPY_DST | wgpu::BufferUsages::MAP_READ, mapped_at_creation: false });
-    let mut enc = dev.create_command_encoder(&Default::default());
-    {
-        let mut pass = enc.begin_render_pass(&wgpu::RenderPassDescriptor {
-            label: Some("program"),
-            color_attachments: &[Some(wgpu::RenderPassColorAttachment {
-                view: &view,
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations { load: wgpu::LoadOp::Clear(wgpu::Color::TRANSPARENT), store: wgpu::StoreOp::Store },
-            })],
-            ..Default::default()
-        });
-        pass.set_pipeline(&pipeline);
-        for (g, bg) in bind_groups.iter().enumerate() {
-            pass.set_bind_group(g as u32, bg, &[]);
-        }
-        pass.draw(0..3, 0..1);
-    }
-    enc.copy_texture_to_buffer(
-        wgpu::TexelCopyTextureInfo { texture: &target, mip_level: 0, origin: wgpu::Origin3d::ZERO, aspect: wgpu::TextureAspect::All },
-        wgpu::TexelCopyBufferInfo { buffer: &readback, layout: wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(row), rows_per_image: Some(1) } },
-        wgpu::Extent3d { width, height: 1, depth_or_array_layers: 1 },
-    );
-    queue.submit([enc.finish()]);
-    let slice = readback.slice(..);
-    slice.map_async(wgpu::MapMode::Read, |m| m.expect("readback maps"));
-    dev.poll(wgpu::PollType::wait_indefinitely()).expect("the device finishes");
-    if let Some(e) = pollster::block_on(scope.pop()) {
-        panic!("wgpu rejected the {} pipeline of {stem}: {e}", if spirv { "SPIR-V" } else { "WGSL" });
-    }
-    let data = slice.get_mapped_range().expect("mapped").to_vec();
-    words(&data, width)
-}
-
-/// A uniform block's default contents (`var @uniform x : T = value`),
-/// zero where it has none.
-fn default_words(b: &umbrac::emit::reflect_types::UniformBlock) -> Vec<u32> {
-    let mut words = vec![0u32; b.size as usize / 4];
-    for m in &b.members {
-        if let Some(d) = &m.default {
-            let at = m.offset as usize / 4;
-            words[at..at + d.len()].copy_from_slice(d);
-        }
-    }
-    words
-}
-
-fn words(data: &[u8], width: u32) -> Vec<[u32; 4]> {
-    let w: Vec<u32> = data.chunks_exact(4).map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect();
-    w.chunks_exact(4).take(width as usize).map(|p| [p[0], p[1], p[2], p[3]]).collect()
-}
-
-#[cfg(feature = "gl")]
-mod gl {
-    use glow::HasContext;
-    use umbrac::render::gl::GlRenderer;
-
-    fn source(compiled: &umbrac::Compiled, r: &GlRenderer, entry: &str) -> String {
-        let target = r.api().target();
-        let a = compiled.artifacts.iter().find(|a| a.target == Some(target) && a.entry.as_deref() == Some(entry));
-        a.unwrap_or_else(|| panic!("no {} output for `{entry}`", target.name())).text().into_owned()
-    }
-
-    /// Compiles, links and draws the program's `prog_vs`/`prog_fs` into an
-    /// RGBA32UI framebuffer of `width` x 1 and reads it back.
-    pub fn draw(r: &GlRenderer, compiled: &umbrac::Compiled, width: u32) -> Vec<[u32; 4]> {
-        let gl = r.context().expect("the GL context is current");
-        let (vs, fs) = (source(compiled, r, "prog_vs"), source(compiled, r, "prog_fs"));
-        // SAFETY: calls on the current context with objects made here;
-        // every object is deleted before returning.
-        unsafe {
-            let program = gl.create_program().expect("a program");
-            let mut shaders = Vec::new();
-            for (kind, text) in [(glow::VERTEX_SHADER, &vs), (glow::FRAGMENT_SHADER, &fs)] {
-                let s = gl.create_shader(kind).expect("a shader");
-                gl.shader_source(s, text);
-                gl.compile_shader(s);
-                assert!(gl.get_shader_compile_status(s), "{}: the driver rejects\n{text}\n{}", r.api().name(), gl.get_shader_info_log(s));
-                gl.attach_shader(program, s);
-                shaders.push(s);
-            }
-            gl.link_program(program);
-            assert!(gl.get_program_link_status(program), "{}: link failed: {}", r.api().name(), gl.get_program_info_log(program));
-            // Every uniform block by its GLSL name, holding its default.
-            let mut ubos = Vec::new();
-            for (point, b) in compiled.reflection.uniform_blocks.iter().enumerate() {
-                let Some(index) = gl.get_uniform_block_index(program, &b.glsl_block) else { continue };
-                gl.uniform_block_binding(program, index, point as u32);
-                let ubo = gl.create_buffer().expect("a buffer");
-                gl.bind_buffer(glow::UNIFORM_BUFFER, Some(ubo));
-                let bytes: Vec<u8> = super::default_words(b).iter().flat_map(|w| w.to_le_bytes()).collect();
-                gl.buffer_data_u8_slice(glow::UNIFORM_BUFFER, &bytes, glow::STATIC_DRAW);
-                gl.bind_buffer_base(glow::UNIFORM_BUFFER, point as u32, Some(ubo));
-                ubos.push(ubo);
-            }
-            let texture = gl.create_texture().expect("a texture");
-            gl.bind_texture(glow::TEXTURE_2D, Some(texture));
-            gl.tex_storage_2d(glow::TEXTURE_2D, 1, glow::RGBA32UI, width as i32, 1);
-            let fbo = gl.create_framebuffer().expect("a framebuffer");
-            gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo));
-            gl.framebuffer_texture_2d(glow::FRAMEBUFFER, glow::COLOR_ATTACHMENT0, glow::TEXTURE_2D, Some(texture), 0);
-            assert_eq!(gl.check_framebuffer_status(glow::FRAMEBUFFER), glow::FRAMEBUFFER_COMPLETE, "RGBA32UI framebuffer");
-            gl.viewport(0, 0, width as i32, 1);
-            gl.clear_buffer_u32_slice(glow::COLOR, 0, &[0, 0, 0, 0]);
-            let vao = gl.create_vertex_array().expect("a vertex array");
-            gl.bind_vertex_array(Some(vao));
-            gl.use_program(Some(program));
-            gl.draw_arrays(glow::TRIANGLES, 0, 3);
-            let mut data = vec![0u8; 16 * width as usize];
-            gl.read_pixels(0, 0, width as i32, 1, glow::RGBA_INTEGER, glow::UNSIGNED_INT, glow::PixelPackData::Slice(Some(&mut data)));
-            let err = gl.get_error();
-            gl.bind_vertex_array(None);
-            gl.delete_vertex_array(vao);
-            gl.bind_framebuffer(glow::FRAMEBUFFER, None);
-            gl.delete_framebuffer(fbo);
-            gl.delete_texture(texture);
-            for s in shaders {
-                gl.delete_shader(s);
-            }
-            for ubo in ubos {
-                gl.delete_buffer(ubo);
-            }
-            gl.delete_program(program);
-            assert_eq!(err, glow::NO_ERROR, "{}: GL error {err:#x}", r.api().name());
-            super::words(&data, width)
-        }
-    }
 }
 
 #[test]
@@ -377,3 +163,22 @@ fn uniform_defaults_reach_every_consumer_in_their_groups() {
     );
 }
 
+
+#[test]
+fn checks_hold_in_webgl2() {
+    // The self-checking frame plan (an integer target read back as words)
+    // in the browser too, once: each program costs a chromium start.
+    use umbrac::render::exec::webgl::WebGl;
+    use umbrac::render::{plan, Executor, ShaderSet};
+    let Some(page) = support::or_skip(WebGl::find(), "no WebGL2 consumer") else { return };
+    let list = ["fz == 0.0", "(-7 + z) % 3 == -1", "(-7.5 + fz) % 2.0 == 0.5", "fz == 1.0"];
+    let src = checks("", &list);
+    let c = umbrac::compile_source("webgl_checks.das", &src, &umbrac::Options::default());
+    let compiled = c.result.as_ref().filter(|_| !c.has_errors()).expect("compiles");
+    let set = ShaderSet::from_compiled("webgl checks", compiled, umbrac::Target::Gles300).unwrap();
+    let plan = plan::checks::plan("prog_vs", "prog_fs", list.len() as u32);
+    let prepared = page.prepare(&set, &plan).unwrap();
+    let words = page.run(&prepared, &plan).unwrap().words().expect("words");
+    assert_eq!(words.iter().map(|p| p[0]).collect::<Vec<_>>(), [1, 1, 1, 0], "{words:?}");
+    assert_eq!(words.iter().map(|p| p[1]).collect::<Vec<_>>(), [0, 1, 2, 3], "pixel i reports x = i");
+}

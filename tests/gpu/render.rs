@@ -27,8 +27,9 @@ use std::path::Path;
 
 use support::gpu;
 use umbrac::render::image_ops::{self, DiffStats};
-use umbrac::render::{hand, reference, FrameParams, Program, RenderError, Renderer, ShaderCode, ShaderSet, Via, View};
-use umbrac::{Conventions, Options};
+use umbrac::render::exec::wgpu::{WgpuExecutor, WgpuProgram};
+use umbrac::render::{hand, reference, ExecError, FrameParams, SceneExecutor, ShaderCode, ShaderSet, View};
+use umbrac::{Conventions, Options, Target};
 
 const W: u32 = 160;
 const H: u32 = 120;
@@ -57,10 +58,10 @@ impl std::fmt::Display for Check {
 }
 
 /// Renders frame `t` on the GPU and on the CPU and compares them.
-fn check(r: &Renderer, program: &Program, t: f32, name: &str) -> Check {
+fn check(r: &WgpuExecutor, program: &WgpuProgram, t: f32, name: &str) -> Check {
     let p = FrameParams::new(t, W, H);
-    let gpu = r.draw(program, &p).expect("render");
-    let gpu_lit = r.draw(program, &p.with_view(View::Lit)).expect("render lit");
+    let gpu = r.draw_scene(program, &p).expect("render");
+    let gpu_lit = r.draw_scene(program, &p.with_view(View::Lit)).expect("render lit");
     let reference = reference::render_frame(&p);
     let ref_lit = reference::render(&p.with_view(View::Lit));
     let skip = &reference.outside_shadow_map;
@@ -85,8 +86,8 @@ fn check(r: &Renderer, program: &Program, t: f32, name: &str) -> Check {
 const SCENE: &str = include_str!("../../shaders/shadow.das");
 
 /// Compiles DSL text in process and picks the output the GPU gets.
-fn compiled(name: &str, text: &str, via: Via, conventions: Conventions) -> ShaderSet {
-    let opts = Options { targets: vec![via.target()], conventions, ..Default::default() };
+fn compiled(name: &str, text: &str, via: Target, conventions: Conventions) -> ShaderSet {
+    let opts = Options { targets: vec![via], conventions, ..Default::default() };
     let c = umbrac::compile_source(name, text, &opts);
     let Some(result) = c.result.as_ref().filter(|_| !c.has_errors()) else {
         panic!("{name} did not compile:\n{}", c.render_diagnostics());
@@ -94,14 +95,14 @@ fn compiled(name: &str, text: &str, via: Via, conventions: Conventions) -> Shade
     ShaderSet::from_compiled(name, result, via).unwrap()
 }
 
-fn scene(via: Via) -> ShaderSet {
+fn scene(via: Target) -> ShaderSet {
     compiled("shaders/shadow.das", SCENE, via, Conventions::Portable)
 }
 
 #[test]
 fn compiled_program_matches_the_reference() {
     let Some(r) = gpu::vulkan() else { return };
-    let program = r.prepare(&scene(Via::Wgsl)).unwrap();
+    let program = r.prepare_scene(&scene(Target::Wgsl)).unwrap();
     for t in TIMES {
         let c = check(r, &program, t, "compiled");
         assert!(c.passes(), "t = {t}: {c}");
@@ -115,12 +116,12 @@ fn compiled_spirv_and_wgsl_give_the_same_image() {
         support::skip(format!("{} lacks PASSTHROUGH_SHADERS", r.adapter_name()));
         return;
     }
-    let wgsl = r.prepare(&scene(Via::Wgsl)).unwrap();
-    let spirv = r.prepare(&scene(Via::Spirv)).unwrap();
+    let wgsl = r.prepare_scene(&scene(Target::Wgsl)).unwrap();
+    let spirv = r.prepare_scene(&scene(Target::Spirv)).unwrap();
     for t in [0.5, 3.0] {
         let p = FrameParams::new(t, W, H);
-        let a = r.draw(&wgsl, &p).unwrap();
-        let b = r.draw(&spirv, &p).unwrap();
+        let a = r.draw_scene(&wgsl, &p).unwrap();
+        let b = r.draw_scene(&spirv, &p).unwrap();
         let stats = image_ops::diff(&a, &b, 1);
         eprintln!("compiled wgsl vs spirv t={t}: {stats}");
         assert!(stats.fraction_over <= 0.001, "t = {t}: {stats}");
@@ -134,9 +135,9 @@ fn native_conventions_fail_the_check() {
     let Some(r) = gpu::vulkan() else { return };
     // GL-convention code compiled without the clip-space adaptation: the
     // shadow map's near half is clipped and its rows are mirrored.
-    let set = compiled("shaders/shadow.das", SCENE, Via::Wgsl, Conventions::Native);
-    assert_eq!(set.reflection.conventions, "native");
-    let program = r.prepare(&set).unwrap();
+    let set = compiled("shaders/shadow.das", SCENE, Target::Wgsl, Conventions::Native);
+    assert_eq!(set.reflection.as_ref().unwrap().conventions, "native");
+    let program = r.prepare_scene(&set).unwrap();
     for t in TIMES {
         let c = check(r, &program, t, "compiled_native");
         assert!(!c.passes(), "native conventions at t = {t} passed: {c}");
@@ -147,7 +148,7 @@ fn native_conventions_fail_the_check() {
 fn reordered_and_struct_uniforms_render_the_same() {
     let Some(r) = gpu::vulkan() else { return };
     let p = FrameParams::new(2.0, W, H);
-    let usual = r.render(&scene(Via::Wgsl), &p).unwrap();
+    let usual = r.render_scene(&scene(Target::Wgsl), &p).unwrap();
 
     // The uniform declarations in reverse order: every binding moves.
     let lines: Vec<&str> = SCENE.lines().collect();
@@ -159,18 +160,18 @@ fn reordered_and_struct_uniforms_render_the_same() {
         reordered.insert(first + i, u);
     }
     let reordered = reordered.join("\n");
-    let set = compiled("reordered.das", &reordered, Via::Wgsl, Conventions::Portable);
-    assert_eq!(set.reflection.uniform_blocks[0].name, "u_is_floor");
-    assert_eq!(set.reflection.samplers[0].texture_binding, 0, "the shadow map now comes first");
-    let image = r.render(&set, &p).unwrap();
+    let set = compiled("reordered.das", &reordered, Target::Wgsl, Conventions::Portable);
+    assert_eq!(set.reflection.as_ref().unwrap().uniform_blocks[0].name, "u_is_floor");
+    assert_eq!(set.reflection.as_ref().unwrap().samplers[0].texture_binding, 0, "the shadow map now comes first");
+    let image = r.render_scene(&set, &p).unwrap();
     assert_eq!(image_ops::diff(&usual, &image, 0).over, 0, "reordered uniforms changed the picture");
     // The same program as SPIR-V handed to Vulkan unchanged: wgpu numbers
     // Vulkan descriptors by their place in the layout, so the shadow pass
     // (which uses bindings 7 and 8 only) needs every binding in its layout;
     // with only its own two it drew an empty shadow map.
     if r.supports_passthrough() {
-        let set = compiled("reordered.das", &reordered, Via::Spirv, Conventions::Portable);
-        let image = r.render(&set, &p).unwrap();
+        let set = compiled("reordered.das", &reordered, Target::Spirv, Conventions::Portable);
+        let image = r.render_scene(&set, &p).unwrap();
         let stats = image_ops::diff(&usual, &image, 0);
         assert_eq!(stats.over, 0, "reordered uniforms through SPIR-V changed the picture: {stats}");
     }
@@ -189,10 +190,10 @@ fn reordered_and_struct_uniforms_render_the_same() {
     .replace("lighting.u_is_floor : float", "u_is_floor : float")
     .replace("lighting.u_cam_pos : float3", "u_cam_pos : float3")
     .replace("lighting.u_light_dir : float3", "u_light_dir : float3");
-    let set = compiled("struct.das", &text, Via::Wgsl, Conventions::Portable);
-    let block = set.reflection.uniform_blocks.iter().find(|b| b.name == "lighting").expect("a `lighting` block");
+    let set = compiled("struct.das", &text, Target::Wgsl, Conventions::Portable);
+    let block = set.reflection.as_ref().unwrap().uniform_blocks.iter().find(|b| b.name == "lighting").expect("a `lighting` block");
     assert_eq!(block.members.len(), 3);
-    let image = r.render(&set, &p).unwrap();
+    let image = r.render_scene(&set, &p).unwrap();
     let stats = image_ops::diff(&usual, &image, 0);
     assert_eq!(stats.over, 0, "a struct block changed the picture: {stats}");
 }
@@ -205,7 +206,7 @@ fn the_tutorial_itself_renders() {
         eprintln!("skipping: {} is not here", path.display());
         return;
     };
-    let program = r.prepare(&compiled("08_shadow.das", &text, Via::Wgsl, Conventions::Portable)).unwrap();
+    let program = r.prepare_scene(&compiled("08_shadow.das", &text, Target::Wgsl, Conventions::Portable)).unwrap();
     for t in [1.0, 4.0] {
         let c = check(r, &program, t, "tutorial");
         assert!(c.passes(), "t = {t}: {c}");
@@ -215,7 +216,7 @@ fn the_tutorial_itself_renders() {
 #[test]
 fn hand_port_matches_the_reference() {
     let Some(r) = gpu::vulkan() else { return };
-    let program = r.prepare(&hand::shader_set()).unwrap();
+    let program = r.prepare_scene(&hand::shader_set()).unwrap();
     for t in TIMES {
         let c = check(r, &program, t, "hand");
         assert!(c.passes(), "t = {t}: {c}");
@@ -226,7 +227,7 @@ fn hand_port_matches_the_reference() {
 fn mirrored_or_missing_shadows_fail_the_same_check() {
     let Some(r) = gpu::vulkan() else { return };
     for variant in [hand::Variant::NoYFlip, hand::Variant::NoZRemap, hand::Variant::Native] {
-        let program = r.prepare(&variant.shader_set()).unwrap();
+        let program = r.prepare_scene(&variant.shader_set()).unwrap();
         for t in TIMES {
             let c = check(r, &program, t, &format!("{variant:?}"));
             assert!(!c.passes(), "{variant:?} at t = {t} passed: {c}");
@@ -240,7 +241,7 @@ fn lighting_alone_matches_the_reference() {
     // No shadows: only rasterisation and float rounding can differ.
     for t in [1.0, 5.0] {
         let p = FrameParams::new(t, W, H).with_view(View::Lit);
-        let gpu = r.render(&hand::shader_set(), &p).unwrap();
+        let gpu = r.render_scene(&hand::shader_set(), &p).unwrap();
         let cpu = reference::render(&p);
         let stats = image_ops::diff(&gpu, &cpu, 2);
         eprintln!("lit t={t}: {stats}");
@@ -251,7 +252,7 @@ fn lighting_alone_matches_the_reference() {
 #[test]
 fn shadow_follows_the_sun() {
     let Some(r) = gpu::vulkan() else { return };
-    let program = r.prepare(&scene(Via::Wgsl)).unwrap();
+    let program = r.prepare_scene(&scene(Target::Wgsl)).unwrap();
     let times = [0.0, 1.5, 3.0, 4.5, 6.0];
     let checks: Vec<Check> = times.iter().map(|&t| check(r, &program, t, "sun")).collect();
     let mut previous: Option<((f64, f64), (f64, f64))> = None;
@@ -276,17 +277,17 @@ fn shadow_follows_the_sun() {
 fn uniform_order_comes_from_the_reflection() {
     let Some(r) = gpu::vulkan() else { return };
     let p = FrameParams::new(2.0, W, H);
-    let usual = r.render(&hand::shader_set(), &p).unwrap();
+    let usual = r.render_scene(&hand::shader_set(), &p).unwrap();
     // Every binding number reversed, in the WGSL and in its reflection.
-    let reversed = r.render(&hand::rebound(|b| 8 - b), &p).unwrap();
+    let reversed = r.render_scene(&hand::rebound(|b| 8 - b), &p).unwrap();
     let stats = image_ops::diff(&usual, &reversed, 0);
     assert_eq!(stats.over, 0, "{stats}");
     // The same WGSL with the usual reflection does not fit: wgpu rejects
     // the pipeline and the renderer says so instead of panicking.
     let mut mismatched = hand::rebound(|b| 8 - b);
-    mismatched.reflection = hand::reflection();
-    let err = r.render(&mismatched, &p).unwrap_err();
-    assert!(matches!(err, RenderError::Program(_)), "{err}");
+    mismatched.reflection = Some(hand::reflection());
+    let err = r.render_scene(&mismatched, &p).unwrap_err();
+    assert!(matches!(err, ExecError::Link { .. }), "{err}");
 }
 
 /// SPIR-V of the hand port made by naga with the options wgpu uses itself
@@ -311,8 +312,8 @@ fn wgsl_and_passthrough_spirv_agree() {
     let spirv = ShaderSet::single("hand.spv", ShaderCode::Spirv(hand_spirv()), hand::reflection());
     for t in [0.5, 3.0] {
         let p = FrameParams::new(t, W, H);
-        let a = r.render(&hand::shader_set(), &p).unwrap();
-        let b = r.render(&spirv, &p).unwrap();
+        let a = r.render_scene(&hand::shader_set(), &p).unwrap();
+        let b = r.render_scene(&spirv, &p).unwrap();
         let stats = image_ops::diff(&a, &b, 1);
         eprintln!("wgsl vs spirv t={t}: {stats}");
         assert!(stats.fraction_over <= 0.001, "t = {t}: {stats}");
@@ -324,7 +325,7 @@ fn shadow_map_view_matches_the_reference() {
     let Some(r) = gpu::vulkan() else { return };
     let mut p = FrameParams::new(2.5, W, H).with_view(View::ShadowMap);
     p.shadow_size = 256;
-    let gpu = r.render(&scene(Via::Wgsl), &p).unwrap();
+    let gpu = r.render_scene(&scene(Target::Wgsl), &p).unwrap();
     let cpu = reference::render(&p);
     assert_eq!(gpu.dimensions(), (256, 256));
     let stats = image_ops::diff(&gpu, &cpu, DELTA);
@@ -338,14 +339,15 @@ fn shadow_map_view_matches_the_reference() {
 fn programs_that_do_not_fit_are_clear_errors() {
     let Some(r) = gpu::vulkan() else { return };
     let mut set = hand::shader_set();
-    set.reflection.uniform_blocks.retain(|b| b.name != "u_model");
-    for e in &mut set.reflection.entry_points {
+    let manifest = set.reflection.as_mut().unwrap();
+    manifest.uniform_blocks.retain(|b| b.name != "u_model");
+    for e in &mut manifest.entry_points {
         e.uniform_blocks.retain(|b| b != "u_model");
         e.inputs.retain(|i| i.name != "a_pos");
     }
-    let err = r.prepare(&set).err().expect("a program without u_model must be refused");
+    let err = r.prepare_scene(&set).err().expect("a program without u_model must be refused");
     let text = err.to_string();
-    assert!(matches!(err, RenderError::Interface(_)), "{text}");
+    assert!(matches!(err, ExecError::Interface(_)), "{text}");
     assert!(text.contains("no `u_model` uniform"), "{text}");
     assert!(text.contains("no `a_pos` vertex input in `main_vs`"), "{text}");
 
@@ -372,7 +374,7 @@ def main_fs {
     f_FragColor = u_tint
 }
 "#;
-    let err = r.prepare(&compiled("other.das", other, Via::Wgsl, Conventions::Portable)).err().expect("refused");
+    let err = r.prepare_scene(&compiled("other.das", other, Target::Wgsl, Conventions::Portable)).err().expect("refused");
     let text = err.to_string();
     eprintln!("{text}");
     for needle in [
@@ -386,8 +388,8 @@ def main_fs {
     }
 
     let broken = ShaderSet::single("broken.wgsl", ShaderCode::Wgsl("fn oops( {".into()), hand::reflection());
-    let err = r.prepare(&broken).err().expect("WGSL that does not parse must be refused");
-    assert!(matches!(err, RenderError::Program(_)), "{err}");
+    let err = r.prepare_scene(&broken).err().expect("WGSL that does not parse must be refused");
+    assert!(matches!(err, ExecError::Compile { .. }), "{err}");
 }
 
 #[test]
@@ -395,27 +397,20 @@ fn gl_backend_agrees_with_vulkan() {
     let Some(vk) = gpu::vulkan() else { return };
     let Some(gl) = gpu::wgpu_gl() else { return };
     let p = FrameParams::new(3.0, W, H);
-    let a = vk.render(&hand::shader_set(), &p).unwrap();
-    let b = gl.render(&hand::shader_set(), &p).unwrap();
+    let a = vk.render_scene(&hand::shader_set(), &p).unwrap();
+    let b = gl.render_scene(&hand::shader_set(), &p).unwrap();
     let stats = image_ops::diff(&a, &b, DELTA);
     eprintln!("vulkan vs gl ({}): {stats}", gl.adapter_name());
     assert!(stats.fraction_over <= 0.002, "{stats}");
 }
 
-#[cfg(feature = "cli")]
-mod cli {
+mod command {
     use super::*;
-    use clap::Parser;
-    use umbrac::render::cli::{run, RenderArgs};
+    use umbrac::render::command::{run, Quiet, RenderOptions};
+    use umbrac::render::Consumer;
 
-    #[derive(Parser)]
-    struct Cli {
-        #[command(flatten)]
-        args: RenderArgs,
-    }
-
-    fn args(list: &[&str]) -> RenderArgs {
-        Cli::try_parse_from(std::iter::once("render").chain(list.iter().copied())).unwrap().args
+    fn opts(file: Option<&str>) -> RenderOptions {
+        RenderOptions { file: file.map(Into::into), ..Default::default() }
     }
 
     #[test]
@@ -426,8 +421,8 @@ mod cli {
         let dir = tempfile::tempdir().unwrap();
         let out = dir.path().to_str().unwrap();
         let hand = concat!(env!("CARGO_MANIFEST_DIR"), "/shaders/hand/shadow.wgsl");
-        let code = run(&args(&[hand, "--frames", "3", "--fps", "10", "--size", "64x48", "--out-dir", out]));
-        assert_eq!(code, 0);
+        let o = RenderOptions { frames: Some(3), fps: 10.0, size: (64, 48), out_dir: out.into(), ..opts(Some(hand)) };
+        run(&o, &mut Quiet).unwrap();
         for f in ["frame_0000.png", "frame_0002.png", "animation.gif"] {
             assert!(dir.path().join(f).is_file(), "{f} missing");
         }
@@ -502,11 +497,12 @@ mod cli {
     fn reference_and_errors() {
         let dir = tempfile::tempdir().unwrap();
         let png = dir.path().join("ref.png");
-        assert_eq!(run(&args(&["--reference", "--size", "32x24", "--out", png.to_str().unwrap()])), 0);
+        run(&RenderOptions { reference: true, size: (32, 24), out: png.clone(), ..opts(None) }, &mut Quiet).unwrap();
         assert!(png.is_file());
-        assert_eq!(run(&args(&["/nonexistent/scene.wgsl"])), 1);
+        assert!(run(&opts(Some("/nonexistent/scene.wgsl")), &mut Quiet).is_err());
         let hand = concat!(env!("CARGO_MANIFEST_DIR"), "/shaders/hand/shadow.wgsl");
-        assert_eq!(run(&args(&[hand, "--via", "spirv"])), 1);
+        let err = run(&RenderOptions { consumer: Consumer::VulkanSpirv, ..opts(Some(hand)) }, &mut Quiet).unwrap_err();
+        assert!(err.contains("--via spirv needs a .das or .spv program"), "{err}");
     }
 }
 

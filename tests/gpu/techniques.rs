@@ -19,10 +19,10 @@
 use crate::support;
 
 use support::gpu;
-use umbrac::render::gl::GlApi;
 use umbrac::render::image_ops;
-use umbrac::render::techniques::{gl_host, reference, wgpu_host::TechRenderer, Technique};
-use umbrac::render::FrameParams;
+use umbrac::render::techniques::{self, reference, Technique};
+use umbrac::render::{Consumer, Executor, FrameParams, ShaderSet};
+use umbrac::Target;
 
 const W: u32 = 160;
 const H: u32 = 120;
@@ -73,21 +73,22 @@ fn check(t: Technique) {
             (time, p, reference::render(t, &p))
         })
         .collect();
+    // One plan per frame, run by each executor.
+    let mut run = |consumer: &str, e: &dyn Fn(&umbrac::render::plan::FramePlan) -> Result<image::RgbaImage, String>| {
+        for (time, p, reference) in &frames {
+            let image = e(&techniques::plan(t, p)).unwrap_or_else(|e| panic!("{} on {consumer}: {e}", t.name()));
+            failures.extend(judge(t, consumer, *time, &image, reference));
+        }
+    };
     if let Some(r) = gpu::vulkan() {
-        let host = TechRenderer::new(r);
-        let program = host.prepare(t, &compiled).unwrap_or_else(|e| panic!("{}: {e}", t.name()));
-        for (time, p, reference) in &frames {
-            let image = host.draw(&program, p).unwrap_or_else(|e| panic!("{}: {e}", t.name()));
-            failures.extend(judge(t, "wgpu", *time, &image, reference));
-        }
+        let set = ShaderSet::from_compiled(t.name(), &compiled, Target::Wgsl).unwrap();
+        let program = r.prepare(&set, &techniques::plan(t, &frames[0].1)).unwrap_or_else(|e| panic!("{}: {e}", t.name()));
+        run("wgpu", &|plan| r.run(&program, plan).map(|x| x.into_image()).map_err(|e| e.to_string()));
     }
-    if let Some(gl) = gpu::gl(GlApi::Gl330) {
-        let program = gl_host::prepare(&gl, t, &compiled).unwrap_or_else(|e| panic!("{} on GL 3.3: {e}", t.name()));
-        for (time, p, reference) in &frames {
-            let image = gl_host::draw(&gl, &program, p).unwrap_or_else(|e| panic!("{} on GL 3.3: {e}", t.name()));
-            failures.extend(judge(t, "gl330", *time, &image, reference));
-        }
-        gl_host::release(&gl, program);
+    if let Some(gl) = gpu::gl(Consumer::Gl330) {
+        let set = ShaderSet::from_compiled(t.name(), &compiled, Target::Glsl330).unwrap();
+        let program = gl.prepare(&set, &techniques::plan(t, &frames[0].1)).unwrap_or_else(|e| panic!("{} on GL 3.3: {e}", t.name()));
+        run("gl330", &|plan| gl.run(&program, plan).map(|x| x.into_image()).map_err(|e| e.to_string()));
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
@@ -127,4 +128,25 @@ fn front_face_culling_without_bias() {
 #[test]
 fn rgba8_encoded_depth() {
     check(Technique::Rgba8Depth);
+}
+
+/// The same plans in WebGL2 (the page runs any plan, not only the
+/// tutorial's): three shadow passes and an array of shadow samplers, and
+/// depth encoded into an RGBA8 target read without compare. WebGL2 has no
+/// clamp-to-border; these scenes do not use it.
+#[test]
+fn technique_scenes_run_in_webgl2() {
+    use umbrac::render::exec::webgl::WebGl;
+    let Some(page) = support::or_skip(WebGl::find(), "no WebGL2 consumer") else { return };
+    let mut failures = Vec::new();
+    for t in [Technique::Cascades, Technique::Rgba8Depth] {
+        let compiled = t.compile().unwrap_or_else(|e| panic!("{e}"));
+        let set = ShaderSet::from_compiled(t.name(), &compiled, Target::Gles300).unwrap();
+        let p = FrameParams::new(TIMES[1], W, H);
+        let plan = techniques::plan(t, &p);
+        let program = page.prepare(&set, &plan).unwrap_or_else(|e| panic!("{} in WebGL2: {e}", t.name()));
+        let image = page.run(&program, &plan).unwrap_or_else(|e| panic!("{} in WebGL2: {e}", t.name())).into_image();
+        failures.extend(judge(t, "webgl2", TIMES[1], &image, &reference::render(t, &p)));
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
 }

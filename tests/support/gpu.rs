@@ -6,13 +6,16 @@ use std::path::{Path, PathBuf};
 use std::sync::Once;
 
 #[cfg(feature = "gl")]
-use umbrac::render::gl::{GlApi, GlError, GlRenderer};
-use umbrac::render::{consumers, Renderer};
+use umbrac::render::exec::gl::GlExecutor;
+use umbrac::render::exec::wgpu::WgpuExecutor;
+#[cfg(feature = "gl")]
+use umbrac::render::{Consumer, ExecError};
+use umbrac::render::consumers;
 
 /// The process's Vulkan device (`consumers::vulkan`, the one the consumer
 /// tests draw on too).
 #[track_caller]
-pub fn vulkan() -> Option<&'static Renderer> {
+pub fn vulkan() -> Option<&'static WgpuExecutor> {
     check_environment();
     super::or_skip(consumers::vulkan(), "no Vulkan renderer")
 }
@@ -20,7 +23,7 @@ pub fn vulkan() -> Option<&'static Renderer> {
 /// wgpu's GL backend, one per process (`consumers::wgpu_gl`): dropping a
 /// GL device would terminate the EGL display the GL contexts share.
 #[track_caller]
-pub fn wgpu_gl() -> Option<&'static Renderer> {
+pub fn wgpu_gl() -> Option<&'static WgpuExecutor> {
     check_environment();
     super::or_skip(consumers::wgpu_gl(), "no wgpu GL renderer")
 }
@@ -29,18 +32,18 @@ pub fn wgpu_gl() -> Option<&'static Renderer> {
 /// installed: [`super::skip`]; any other error fails the test.
 #[cfg(feature = "gl")]
 #[track_caller]
-pub fn gl(api: GlApi) -> Option<GlRenderer> {
+pub fn gl(consumer: Consumer) -> Option<GlExecutor> {
     check_environment();
     // wgpu's GL backend shares the EGL display and must be open before any
     // context (see `consumers::wgpu_gl`).
     let _ = consumers::wgpu_gl();
-    match GlRenderer::new(api) {
+    match GlExecutor::new(consumer) {
         Ok(r) => Some(r),
-        Err(GlError::Unavailable(e)) => {
-            super::skip(format!("no {} context: {e}", api.name()));
+        Err(e @ ExecError::Unavailable { .. }) => {
+            super::skip(format!("no {} context: {e}", consumer.name()));
             None
         }
-        Err(e) => panic!("no {} context: {e}", api.name()),
+        Err(e) => panic!("no {} context: {e}", consumer.name()),
     }
 }
 

@@ -1,18 +1,15 @@
 //! The classic shadow techniques as scenes the runner renders: each is a DSL
 //! program under `shaders/techniques/` plus the host state it needs (light
 //! matrices, one or three shadow targets of depth or RGBA8, culling, bias),
-//! drawn on wgpu ([`wgpu_host`]) and on the GL 3.3 / GLES 3.0 consumer
-//! ([`gl_host`]), and checked against a CPU ray-cast reference
-//! ([`reference`]) with exact visibility from the same light.
+//! described as a frame plan ([`TechFrame::plan`]) that every executor
+//! runs, and checked against a CPU ray-cast reference ([`reference`]) with
+//! exact visibility from the same light.
 //!
 //! The meshes, camera, cube motion and sun direction are the tutorial
 //! scene's ([`super::scene`]). What differs per technique is here, and what
 //! each program binds comes from its reflection, by name.
 
 pub mod reference;
-pub mod wgpu_host;
-#[cfg(feature = "gl")]
-pub mod gl_host;
 
 use std::path::{Path, PathBuf};
 
@@ -20,8 +17,7 @@ use glam::camera::rh::proj::opengl;
 use glam::camera::rh::view::look_at_mat4;
 use glam::{Mat4, Vec3};
 
-use crate::emit::reflect_types::{Reflection, Sampler};
-
+use super::plan::{Attachment, Cull, Draw, Format, FramePlan, Geometry, Pass, Sampling, TargetId, TextureInput, Value, Values};
 use super::scene::{self, Frame, FrameParams, Object};
 
 /// One technique scene.
@@ -164,26 +160,6 @@ impl Technique {
     }
 }
 
-/// A uniform value the technique host sets.
-#[derive(Clone, Debug, PartialEq)]
-pub enum Value {
-    Float(f32),
-    Vec3(Vec3),
-    Mat4(Mat4),
-    Mat4Array(Vec<Mat4>),
-}
-
-impl Value {
-    fn dsl_type(&self) -> String {
-        match self {
-            Value::Float(_) => "float".into(),
-            Value::Vec3(_) => "float3".into(),
-            Value::Mat4(_) => "float4x4".into(),
-            Value::Mat4Array(v) => format!("float4x4[{}]", v.len()),
-        }
-    }
-}
-
 /// Everything a technique frame computes on the host.
 #[derive(Clone, Debug)]
 pub struct TechFrame {
@@ -224,82 +200,92 @@ impl TechFrame {
         TechFrame { technique, base, layer_vp, spot_pos, spot_dir }
     }
 
-    /// A uniform's value for a draw in a pass (`layer`: the shadow layer
-    /// being drawn, or None in the main pass).
-    pub fn uniform(&self, name: &str, draw: Object, layer: Option<usize>) -> Option<Value> {
+    /// The frame as a plan: one shadow pass per layer into its map, then
+    /// the lit scene sampling every map, cube then floor in each.
+    pub fn plan(&self, params: &FrameParams) -> FramePlan {
+        let t = self.technique;
         let f = &self.base;
-        Some(match name {
-            "u_model" => Value::Mat4(if draw == Object::Cube { f.cube_model } else { Mat4::IDENTITY }),
-            "u_is_floor" => Value::Float(if draw == Object::Floor { 1.0 } else { 0.0 }),
-            "u_view" => Value::Mat4(f.view),
-            "u_proj" => Value::Mat4(f.proj),
-            "u_cam_pos" => Value::Vec3(f.cam_pos),
-            "u_light_vp" => Value::Mat4(self.layer_vp[layer.unwrap_or(0)]),
-            "u_light_dir" => Value::Vec3(f.light_dir),
-            "u_cascade_vp" => Value::Mat4Array(self.layer_vp.clone()),
-            "u_light_pos" => Value::Vec3(self.spot_pos),
-            "u_spot_dir" => Value::Vec3(self.spot_dir),
-            _ => return None,
-        })
+        let mut plan = FramePlan {
+            scene: format!("the {} scene", t.name()),
+            targets: Vec::new(),
+            passes: Vec::new(),
+            readback: TargetId(0),
+            required: Vec::new(),
+            unset: Default::default(),
+        };
+        let n = params.shadow_size;
+        let rgba = t.target() == ShadowTarget::Rgba8;
+        let maps: Vec<TargetId> = (0..t.layers())
+            .map(|i| plan.add_target(&format!("shadow map {i}"), n, n, if rgba { Format::Rgba8 } else { Format::Depth32Float }))
+            .collect();
+        let map_depth = rgba.then(|| plan.add_target("shadow map depth", n, n, Format::Depth32Float));
+        let color = plan.add_target("colour", params.width, params.height, Format::Rgba8);
+        let depth = plan.add_target("depth", params.width, params.height, Format::Depth32Float);
+        let values = Values::new()
+            .with("u_view", Value::mat4(f.view))
+            .with("u_proj", Value::mat4(f.proj))
+            .with("u_cam_pos", Value::vec3(f.cam_pos))
+            .with("u_light_vp", Value::mat4(self.layer_vp[0]))
+            .with("u_light_dir", Value::vec3(f.light_dir))
+            .with("u_cascade_vp", Value::array(self.layer_vp.iter().map(|m| Value::mat4(*m)).collect()))
+            .with("u_light_pos", Value::vec3(self.spot_pos))
+            .with("u_spot_dir", Value::vec3(self.spot_dir));
+        let draws: Vec<Draw> = DRAWS
+            .iter()
+            .map(|&object| Draw {
+                geometry: Geometry::Mesh(scene::mesh(object)),
+                values: Values::new()
+                    .with("u_model", Value::mat4(if object == Object::Cube { f.cube_model } else { Mat4::IDENTITY }))
+                    .with("u_is_floor", Value::float(if object == Object::Floor { 1.0 } else { 0.0 })),
+            })
+            .collect();
+        let [(shadow_vs, shadow_fs), (main_vs, main_fs)] = t.passes();
+        for (i, &map) in maps.iter().enumerate() {
+            plan.passes.push(Pass {
+                name: if maps.len() > 1 { format!("shadow {i}") } else { "shadow".into() },
+                vertex: shadow_vs.clone(),
+                fragment: shadow_fs.clone(),
+                color: rgba.then_some(Attachment { target: map, clear: [1.0; 4] }),
+                depth: Some(Attachment { target: map_depth.unwrap_or(map), clear: 1.0 }),
+                cull: if t.cull_front() { Cull::Front } else { Cull::None },
+                depth_bias: t.depth_bias(),
+                textures: Vec::new(),
+                values: values.clone().with("u_light_vp", Value::mat4(self.layer_vp[i])),
+                draws: draws.clone(),
+            });
+        }
+        let textures = match t {
+            Technique::Cascades => {
+                maps.iter().enumerate().map(|(i, &m)| TextureInput { sampler: format!("cascade_maps[{i}]"), target: m, sampling: Sampling::SHADOW }).collect()
+            }
+            Technique::Spot => vec![TextureInput { sampler: "shadow_map".into(), target: maps[0], sampling: Sampling::NEAREST }],
+            Technique::Rgba8Depth => vec![TextureInput { sampler: "shadow_rgba".into(), target: maps[0], sampling: Sampling::NEAREST }],
+            _ => vec![TextureInput { sampler: "shadow_map".into(), target: maps[0], sampling: Sampling::SHADOW }],
+        };
+        let c = scene::CLEAR;
+        plan.passes.push(Pass {
+            name: "main".into(),
+            vertex: main_vs,
+            fragment: main_fs,
+            color: Some(Attachment { target: color, clear: [c[0], c[1], c[2], 1.0] }),
+            depth: Some(Attachment { target: depth, clear: 1.0 }),
+            cull: Cull::None,
+            depth_bias: false,
+            textures,
+            values,
+            draws,
+        });
+        plan.readback = color;
+        plan
     }
 }
 
 /// The draws of either pass: cube, then floor.
 pub const DRAWS: [Object; 2] = [Object::Cube, Object::Floor];
 
-/// Fills one uniform block's bytes (std140 = the WGSL layout) for a draw.
-pub fn block_bytes(frame: &TechFrame, r: &Reflection, block: usize, draw: Object, layer: Option<usize>, size: usize) -> Result<Vec<u8>, String> {
-    let b = &r.uniform_blocks[block];
-    let mut out = vec![0u8; size.max(b.size as usize)];
-    let loose = b.members.len() == 1 && (b.members[0].name == b.name || b.members[0].ty == b.ty);
-    for m in &b.members {
-        let name = if loose { b.name.as_str() } else { m.name.as_str() };
-        let value = frame.uniform(name, draw, layer).ok_or_else(|| format!("uniform `{name}` is not a value the technique scenes set"))?;
-        if value.dsl_type() != m.ty {
-            return Err(format!("uniform `{name}` is {} but the scene sets a {}", m.ty, value.dsl_type()));
-        }
-        let at = m.offset as usize;
-        let stride = m.matrix_stride.unwrap_or(16) as usize;
-        let overrun = || format!("uniform `{name}` overruns its block");
-        match &value {
-            Value::Float(v) => put(&mut out, at, &[*v]).ok_or_else(overrun)?,
-            Value::Vec3(v) => put(&mut out, at, &v.to_array()).ok_or_else(overrun)?,
-            Value::Mat4(mat) => put_mat(&mut out, at, stride, mat).ok_or_else(overrun)?,
-            Value::Mat4Array(ms) => {
-                let array_stride = m.array_stride.unwrap_or(64) as usize;
-                for (i, mat) in ms.iter().enumerate() {
-                    put_mat(&mut out, at + i * array_stride, stride, mat).ok_or_else(overrun)?;
-                }
-            }
-        }
-    }
-    Ok(out)
-}
-
-fn put(out: &mut [u8], at: usize, vals: &[f32]) -> Option<()> {
-    let bytes: &[u8] = bytemuck::cast_slice(vals);
-    out.get_mut(at..at + bytes.len())?.copy_from_slice(bytes);
-    Some(())
-}
-
-fn put_mat(out: &mut [u8], at: usize, stride: usize, m: &Mat4) -> Option<()> {
-    for (i, c) in m.to_cols_array_2d().iter().enumerate() {
-        put(out, at + i * stride, c)?;
-    }
-    Some(())
-}
-
-/// Which shadow layer a sampler reads: `name[i]` reads layer i, a plain
-/// name layer 0.
-pub fn sampler_layer(s: &Sampler) -> usize {
-    s.name
-        .rsplit_once('[')
-        .and_then(|(_, rest)| rest.trim_end_matches(']').parse().ok())
-        .unwrap_or(0)
-}
-
-pub fn entry<'r>(r: &'r Reflection, name: &str) -> Result<&'r crate::emit::reflect_types::EntryPoint, String> {
-    r.entry_points.iter().find(|e| e.name == name).ok_or_else(|| format!("the program has no entry point `{name}`"))
+/// The technique scene `technique` at `params` as a plan.
+pub fn plan(technique: Technique, params: &FrameParams) -> FramePlan {
+    TechFrame::new(technique, params).plan(params)
 }
 
 impl Technique {

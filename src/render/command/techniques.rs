@@ -5,12 +5,13 @@ use std::time::Instant;
 
 use image::RgbaImage;
 
-use super::args::{BackendArg, RenderArgs, ViewArg};
-use crate::render::gpu::{Backend, Renderer};
+use super::RenderOptions;
+use crate::render::consumers::{self, Consumer};
+use crate::render::exec::{ExecError, Executor};
 use crate::render::image_ops;
-use crate::render::scene::FrameParams;
-
-use crate::render::techniques::{reference, wgpu_host, Technique};
+use crate::render::program::ShaderSet;
+use crate::render::scene::{FrameParams, View};
+use crate::render::techniques::{self, reference, Technique};
 
 /// Frames timed after the warm-up frame.
 const TIMED_FRAMES: u32 = 5;
@@ -31,14 +32,22 @@ fn timed(mut frame: impl FnMut() -> Result<RgbaImage, String>) -> Result<(RgbaIm
     Ok((image, start.elapsed().as_secs_f64() * 1000.0 / TIMED_FRAMES as f64))
 }
 
-pub fn run(args: &RenderArgs) -> Result<(), String> {
+/// Prepares the technique's program for its plan, then times frames.
+fn draw<E: Executor>(e: &E, set: &ShaderSet, technique: Technique, params: &FrameParams) -> Result<(RgbaImage, f64, String), String> {
+    let plan = techniques::plan(technique, params);
+    let prepared = e.prepare(set, &plan).map_err(|e| e.to_string())?;
+    let (image, ms) = timed(|| e.run(&prepared, &plan).map(|r| r.into_image()).map_err(|e: ExecError| e.to_string()))?;
+    Ok((image, ms, e.device_name()))
+}
+
+pub fn run(args: &RenderOptions) -> Result<(), String> {
     let name = args.scene.as_deref().unwrap_or_default();
     if ![1, 2, 4, 9].contains(&args.pcf_taps) {
         return Err(format!("--pcf-taps {} must be 1, 2, 4 or 9", args.pcf_taps));
     }
     let technique = Technique::parse(name, args.pcf_taps)
         .ok_or_else(|| format!("unknown --scene `{name}` (the scenes are spot, pcf, cascades, proj, cull, rgba8-depth)"))?;
-    if args.view != ViewArg::Final || args.frames.is_some() {
+    if args.view != View::Final || args.frames.is_some() {
         return Err("technique scenes render the final view of one frame (no --view, no --frames)".into());
     }
     if args.shadow_size == 0 || args.shadow_size > 16384 {
@@ -56,30 +65,21 @@ pub fn run(args: &RenderArgs) -> Result<(), String> {
         return Ok(());
     }
     let compiled = technique.compile()?;
-    let (image, ms, device) = match args.backend {
-        BackendArg::Vulkan | BackendArg::Gl => {
-            let backend = if args.backend == BackendArg::Vulkan { Backend::Vulkan } else { Backend::Gl };
-            let renderer = Renderer::new(backend).map_err(|e| e.to_string())?;
-            let host = wgpu_host::TechRenderer::new(&renderer);
-            let program = host.prepare(technique, &compiled)?;
-            let (image, ms) = timed(|| host.draw(&program, &params))?;
-            (image, ms, format!("wgpu {} on {}", backend.name(), renderer.adapter_name()))
-        }
+    let c = args.consumer;
+    let target = c.target().ok_or("the CPU reference of a technique scene is --reference")?;
+    let set = ShaderSet::from_compiled(technique.name(), &compiled, target)?;
+    let (image, ms, device) = match c {
+        Consumer::VulkanWgsl | Consumer::VulkanSpirv => draw(consumers::vulkan().map_err(|e| e.to_string())?, &set, technique, &params)?,
+        Consumer::WgpuGl => draw(consumers::wgpu_gl().map_err(|e| e.to_string())?, &set, technique, &params)?,
         #[cfg(feature = "gl")]
-        BackendArg::Gl330 | BackendArg::Gles300 => {
-            use crate::render::gl::{GlApi, GlRenderer};
-            use crate::render::techniques::gl_host;
-            let api = if args.backend == BackendArg::Gl330 { GlApi::Gl330 } else { GlApi::Gles300 };
-            let r = GlRenderer::new(api).map_err(|e| e.to_string())?;
-            let program = gl_host::prepare(&r, technique, &compiled)?;
-            let result = timed(|| gl_host::draw(&r, &program, &params));
-            gl_host::release(&r, program);
-            let (image, ms) = result?;
-            (image, ms, format!("{} on {}", api.name(), r.adapter_name()))
+        Consumer::Gl330 | Consumer::Gles300 => {
+            let _ = consumers::wgpu_gl();
+            draw(&crate::render::exec::gl::GlExecutor::new(c).map_err(|e| e.to_string())?, &set, technique, &params)?
         }
-        #[cfg(not(feature = "gl"))]
-        BackendArg::Gl330 | BackendArg::Gles300 => return Err("built without the `gl` feature".into()),
+        Consumer::WebGl2 => draw(&crate::render::exec::webgl::WebGl::find().map_err(|e| e.to_string())?, &set, technique, &params)?,
+        other => return Err(format!("{} cannot draw the technique scenes here", other.name())),
     };
+    let device = format!("{} on {device}", c.name());
     save(&image, &args.out)?;
     println!(
         "wrote {} ({} scene, {}x{}, shadow map {}, {device}): {ms:.1} ms per frame (mean of {TIMED_FRAMES} after a warm-up, readback included)",

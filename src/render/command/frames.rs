@@ -4,11 +4,11 @@
 use std::path::Path;
 use std::time::Instant;
 
+use super::{Progress, RenderOptions};
 use crate::render::scene::{FrameParams, View};
 use crate::render::{image_ops, reference};
-use super::args::RenderArgs;
 
-pub fn frame_times(args: &RenderArgs) -> Vec<f32> {
+pub fn frame_times(args: &RenderOptions) -> Vec<f32> {
     match args.frames {
         None => vec![args.time],
         Some(n) => (0..n).map(|i| args.time + i as f32 / args.fps).collect(),
@@ -16,10 +16,11 @@ pub fn frame_times(args: &RenderArgs) -> Vec<f32> {
 }
 
 pub fn write_frames(
-    args: &RenderArgs,
+    args: &RenderOptions,
     times: &[f32],
     mut render: impl FnMut(&FrameParams) -> Result<image::RgbaImage, String>,
     base: FrameParams,
+    progress: &mut dyn Progress,
 ) -> Result<(), String> {
     if args.frames.is_none() {
         let started = Instant::now();
@@ -39,25 +40,19 @@ pub fn write_frames(
         }
         return Ok(());
     }
-    let bar = indicatif::ProgressBar::new(times.len() as u64);
-    bar.set_style(
-        indicatif::ProgressStyle::with_template("{prefix} [{bar:40}] {pos}/{len} frames, {per_sec}, eta {eta}")
-            .expect("valid template")
-            .progress_chars("=> "),
-    );
-    bar.set_prefix("rendering");
+    progress.start(times.len());
     let mut images = Vec::with_capacity(times.len());
     for (i, &t) in times.iter().enumerate() {
         let image = render(&FrameParams { time: t, ..base })?;
         let path = args.out_dir.join(format!("frame_{i:04}.png"));
         image_ops::save_png(&image, &path)?;
         images.push(image);
-        bar.inc(1);
+        progress.frame_done();
     }
-    bar.set_prefix("encoding gif");
+    progress.encoding();
     let gif = args.out_dir.join("animation.gif");
     image_ops::save_gif(&images, args.fps, &gif)?;
-    bar.finish_and_clear();
+    progress.finish();
     eprintln!(
         "wrote {} frames to {}/frame_0000.png .. frame_{:04}.png and {}",
         images.len(),

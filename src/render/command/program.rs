@@ -3,30 +3,36 @@
 
 use std::path::Path;
 
-use crate::render::gpu::{ShaderCode, ShaderSet, Via};
+use crate::render::consumers::Consumer;
 use crate::render::hand;
+use crate::render::program::{ShaderCode, ShaderSet};
+use crate::Target;
 
 /// The project's own scene program, used when FILE is not given and
 /// `shaders/shadow.das` is not on disk.
 const BUILTIN_PROGRAM: &str = include_str!("../../../shaders/shadow.das");
 pub(crate) const DEFAULT_PROGRAM: &str = "shaders/shadow.das";
 
-/// Loads the program named on the command line.
-pub fn load_program(file: Option<&Path>, reflection: Option<&Path>, via: Via) -> Result<ShaderSet, String> {
-    load_program_with(file, reflection, via, Vec::new())
+/// Loads the program named on the command line, in the form `consumer` runs.
+pub fn load_program(file: Option<&Path>, reflection: Option<&Path>, consumer: Consumer) -> Result<ShaderSet, String> {
+    load_program_with(file, reflection, consumer, Vec::new())
 }
 
 /// [`load_program`] with `-D` definitions for a .das program.
 pub fn load_program_with(
     file: Option<&Path>,
     reflection: Option<&Path>,
-    via: Via,
+    consumer: Consumer,
     defines: Vec<(String, Option<String>)>,
 ) -> Result<ShaderSet, String> {
+    let target = consumer.target().ok_or_else(|| format!("{} runs no compiled program", consumer.name()))?;
     let ext = file.and_then(|p| p.extension()).and_then(|e| e.to_str());
     if let (Some(path), Some(ext @ ("wgsl" | "spv"))) = (file, ext) {
+        if !matches!(target, Target::Wgsl | Target::Spirv) {
+            return Err(format!("the GL consumers run the compiler's GLSL: give a .das program, not a .{ext} file"));
+        }
         let code = if ext == "wgsl" {
-            if via != Via::Wgsl {
+            if target != Target::Wgsl {
                 return Err(format!("{} is WGSL; --via spirv needs a .das or .spv program", path.display()));
             }
             ShaderCode::Wgsl(std::fs::read_to_string(path).map_err(|e| format!("reading {}: {e}", path.display()))?)
@@ -43,9 +49,9 @@ pub fn load_program_with(
         };
         return Ok(ShaderSet::single(path.display().to_string(), code, refl));
     }
-    let opts = crate::Options { targets: vec![via.target()], defines, ..Default::default() };
+    let opts = crate::Options { targets: vec![target], defines, ..Default::default() };
     match compile_program(file, &opts) {
-        (name, Some(compiled)) => ShaderSet::from_compiled(name, &compiled, via).map_err(|e| e.to_string()),
+        (name, Some(compiled)) => ShaderSet::from_compiled(name, &compiled, target),
         (name, None) => Err(format!(
             "{name} did not compile (the hand-written port renders with `umbrac render {}`)",
             hand::FILE_NAME

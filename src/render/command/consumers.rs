@@ -2,55 +2,27 @@
 
 use std::path::Path;
 
-use super::args::RenderArgs;
 use super::program::compile_program;
+use super::RenderOptions;
 use crate::render::consumers::{self, Consumer, Programs, Status};
 use crate::render::image_ops;
 use crate::render::scene::FrameParams;
-use crate::Target;
 
 /// The difference (out of 255) above which the comparison counts a pixel.
 pub const DELTA: u8 = 8;
 
-fn compile(file: Option<&Path>, targets: Vec<Target>) -> Result<(String, crate::Compiled), String> {
+fn compile(file: Option<&Path>) -> Result<(String, crate::Compiled), String> {
     if let Some(ext @ ("wgsl" | "spv")) = file.and_then(|p| p.extension()).and_then(|e| e.to_str()) {
-        return Err(format!("the GL consumers run the compiler's GLSL: give a .das program, not a .{ext} file"));
+        return Err(format!("--compare-backends runs every target of a .das program, not a .{ext} file"));
     }
-    let opts = crate::Options { targets, ..Default::default() };
-    match compile_program(file, &opts) {
+    match compile_program(file, &crate::Options::default()) {
         (name, Some(compiled)) => Ok((name, compiled)),
         (name, None) => Err(format!("{name} did not compile")),
     }
 }
 
-#[cfg(feature = "gl")]
-pub(super) fn render_gl(args: &RenderArgs, params: FrameParams) -> Result<(), String> {
-    use super::args::BackendArg;
-    use super::frames::{frame_times, write_frames};
-    use crate::render::gl::{GlApi, GlRenderer};
-    use crate::render::glsl_set::GlslSet;
-    let api = if args.backend == BackendArg::Gl330 { GlApi::Gl330 } else { GlApi::Gles300 };
-    if args.via != super::args::ViaArg::Wgsl {
-        return Err(format!("--via picks what wgpu gets; --backend {} runs the {} files", api.name(), api.target().name()));
-    }
-    let (name, compiled) = compile(args.file.as_deref(), vec![api.target()])?;
-    let set = GlslSet::from_compiled(name, &compiled, api.target())?;
-    let renderer = GlRenderer::new(api).map_err(|e| e.to_string())?;
-    let program = renderer.prepare(&set).map_err(|e| e.to_string())?;
-    eprintln!("rendering {} ({}) on {}", set.label, api.target().name(), renderer.adapter_name());
-    let times = frame_times(args);
-    let result = write_frames(args, &times, |p| renderer.draw(&program, p).map_err(|e| e.to_string()), params);
-    renderer.release(program);
-    result
-}
-
-#[cfg(not(feature = "gl"))]
-pub(super) fn render_gl(_: &RenderArgs, _: FrameParams) -> Result<(), String> {
-    Err("this umbrac was built without the `gl` feature (cargo build --features gl)".into())
-}
-
-pub(super) fn compare_backends(args: &RenderArgs, params: FrameParams) -> Result<(), String> {
-    let (name, compiled) = compile(args.file.as_deref(), Vec::new())?;
+pub(super) fn compare_backends(args: &RenderOptions, params: FrameParams) -> Result<(), String> {
+    let (name, compiled) = compile(args.file.as_deref())?;
     let programs = Programs::from_compiled(&name, &compiled)?;
     eprintln!(
         "{name} at t = {}, {}x{}, shadow map {}, view {}:",
@@ -93,10 +65,10 @@ pub(super) fn compare_backends(args: &RenderArgs, params: FrameParams) -> Result
         }
         eprintln!("wrote OUT.CONSUMER.diff.png: each consumer's difference from {}", base.name());
     }
-    let all: Vec<&image::RgbaImage> = results.iter().filter_map(|(_, s)| s.image()).collect();
+    let all: Vec<(&str, &image::RgbaImage)> = results.iter().filter_map(|(c, s)| Some((c.name(), s.image()?))).collect();
     let strip = stem.with_extension("all.png");
-    image_ops::save_png(&image_ops::side_by_side(&all), &strip)?;
-    eprintln!("wrote {}: every rendered image, left to right in the order above", strip.display());
+    image_ops::save_png(&image_ops::labelled_strip(&all), &strip)?;
+    eprintln!("wrote {}: every rendered image, left to right in the order above, each under its consumer's name", strip.display());
     let pairs = consumers::pairwise(&results, &params, DELTA);
     println!();
     print!("{}", consumers::table(&pairs, DELTA));

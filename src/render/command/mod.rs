@@ -1,0 +1,160 @@
+//! `umbrac render`: what it does, with its options as a plain struct
+//! ([`RenderOptions`]). The binary parses the command line into one
+//! (`src/cli/render.rs`), shows progress and runs `--watch`; the library
+//! needs no argument parser.
+//!
+//! Data flows one way: the options -> [`program`] (what to draw) -> an
+//! executor -> [`frames`] (what is written). `--compare-backends` is in
+//! `consumers`, the technique scenes (`--scene`) in `techniques`.
+
+mod consumers;
+pub mod frames;
+pub mod program;
+mod techniques;
+
+use std::path::PathBuf;
+
+pub use program::{load_program, load_program_with};
+
+use super::consumers::Consumer;
+use super::exec::{ExecError, Executor};
+use super::plan::tutorial;
+use super::reference;
+use super::scene::{FrameParams, View, DEFAULT_SHADOW_SIZE};
+use super::setup::Setup;
+use frames::{frame_times, write_frames};
+
+/// Everything `umbrac render` can be asked (docs/runner.md).
+#[derive(Clone, Debug, PartialEq)]
+pub struct RenderOptions {
+    /// The scene program: a .das file compiled in process (default
+    /// `shaders/shadow.das`), or a ready .wgsl / .spv file.
+    pub file: Option<PathBuf>,
+    /// The PNG of a single frame.
+    pub out: PathBuf,
+    /// Scene time in seconds (the first frame's, with `frames`).
+    pub time: f32,
+    pub size: (u32, u32),
+    /// An animation of this many frames, `time + i / fps` each.
+    pub frames: Option<u32>,
+    pub fps: f32,
+    /// Where `frames` writes.
+    pub out_dir: PathBuf,
+    /// Which consumer draws (`--backend` with `--via`).
+    pub consumer: Consumer,
+    pub shadow_size: u32,
+    pub view: View,
+    /// The manifest of a .wgsl / .spv `file`.
+    pub reflection: Option<PathBuf>,
+    /// Write the CPU reference instead.
+    pub reference: bool,
+    /// Also write the CPU reference and the difference, and print it.
+    pub compare: bool,
+    pub setup: Setup,
+    /// One frame on every consumer, side by side.
+    pub compare_backends: bool,
+    /// A technique scene (docs/gallery.md) instead of the tutorial's.
+    pub scene: Option<String>,
+    /// Taps of the `pcf` scene's offset table.
+    pub pcf_taps: u32,
+}
+
+impl Default for RenderOptions {
+    fn default() -> RenderOptions {
+        RenderOptions {
+            file: None,
+            out: "frame.png".into(),
+            time: 0.0,
+            size: (640, 480),
+            frames: None,
+            fps: 30.0,
+            out_dir: "frames".into(),
+            consumer: Consumer::VulkanWgsl,
+            shadow_size: DEFAULT_SHADOW_SIZE,
+            view: View::Final,
+            reflection: None,
+            reference: false,
+            compare: false,
+            setup: Setup::default(),
+            compare_backends: false,
+            scene: None,
+            pcf_taps: 9,
+        }
+    }
+}
+
+/// How far an animation is, for a progress bar.
+pub trait Progress {
+    /// `total` frames are about to be drawn.
+    fn start(&mut self, _total: usize) {}
+    fn frame_done(&mut self) {}
+    /// Every frame is drawn; the GIF is being encoded.
+    fn encoding(&mut self) {}
+    fn finish(&mut self) {}
+}
+
+/// No progress shown.
+pub struct Quiet;
+
+impl Progress for Quiet {}
+
+/// Runs `umbrac render` once; the error is one message for stderr.
+pub fn run(opts: &RenderOptions, progress: &mut dyn Progress) -> Result<(), String> {
+    if opts.scene.is_some() {
+        return techniques::run(opts);
+    }
+    let (width, height) = opts.size;
+    let mut params = FrameParams::new(opts.time, width, height);
+    params.shadow_size = opts.shadow_size;
+    params.view = opts.view;
+    params.setup = opts.setup;
+    if opts.shadow_size == 0 || opts.shadow_size > 16384 {
+        return Err(format!("--shadow-size {} must be between 1 and 16384", opts.shadow_size));
+    }
+    if let Some(n) = opts.frames {
+        if n == 0 || opts.fps.is_nan() || opts.fps <= 0.0 {
+            return Err("--frames needs N >= 1 and --fps above 0".into());
+        }
+    }
+    if opts.reference {
+        return write_frames(opts, &frame_times(opts), |p| Ok(reference::render(p)), params, progress);
+    }
+    if opts.compare_backends {
+        return consumers::compare_backends(opts, params);
+    }
+    let defines = params.setup.defines(params.shadow_size);
+    let set = load_program_with(opts.file.as_deref(), opts.reflection.as_deref(), opts.consumer, defines)?;
+    match opts.consumer {
+        Consumer::VulkanWgsl | Consumer::VulkanSpirv => draw(super::consumers::vulkan().map_err(|e| e.to_string())?, &set, opts, params, progress),
+        Consumer::WgpuGl => draw(super::consumers::wgpu_gl().map_err(|e| e.to_string())?, &set, opts, params, progress),
+        #[cfg(feature = "gl")]
+        Consumer::Gl330 | Consumer::Gles300 => {
+            let _ = super::consumers::wgpu_gl();
+            let gl = super::exec::gl::GlExecutor::new(opts.consumer).map_err(|e| e.to_string())?;
+            draw(&gl, &set, opts, params, progress)
+        }
+        Consumer::WebGl2 => draw(&super::exec::webgl::WebGl::find().map_err(|e| e.to_string())?, &set, opts, params, progress),
+        other => Err(format!("{} cannot draw here ({})", other.name(), other.description())),
+    }
+}
+
+fn draw<E: Executor>(e: &E, set: &super::ShaderSet, opts: &RenderOptions, params: FrameParams, progress: &mut dyn Progress) -> Result<(), String> {
+    let prepared = e.prepare(set, &tutorial::plan(&params)).map_err(|e| e.to_string())?;
+    eprintln!("rendering {} ({}) on {}: {}", set.label, set.target.name(), opts.consumer.name(), e.device_name());
+    let times = frame_times(opts);
+    write_frames(opts, &times, |p| e.run(&prepared, &tutorial::plan(p)).map(|r| r.into_image()).map_err(|e: ExecError| e.to_string()), params, progress)
+}
+
+/// What `--watch` waits on: the program and every file its preprocessing
+/// reads (with the defines the render uses), and `--reflection`.
+#[cfg(feature = "cli")]
+pub fn watched(opts: &RenderOptions) -> crate::watch::Watched {
+    let file = opts.file.clone().unwrap_or_else(|| program::DEFAULT_PROGRAM.into());
+    let mut files = vec![file.clone()];
+    if file.extension().is_some_and(|x| x == "das") {
+        let options = crate::Options { defines: opts.setup.defines(opts.shadow_size), ..Default::default() };
+        files.extend(crate::preprocess_file(&file, &options).files_read());
+    }
+    files.extend(opts.reflection.iter().cloned());
+    crate::watch::Watched { files, dirs: Vec::new() }
+}
