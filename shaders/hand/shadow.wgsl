@@ -1,22 +1,26 @@
 // A hand-written WGSL port of shaders/shadow.das, kept beside the compiler's
 // output as a peer for benchmarks and as a known-good shader for the runner.
 //
-// It has the binding model umbrac emits for that program: group 0, one
-// uniform buffer per `@uniform` value in declaration order, then the shadow
-// map's depth texture followed by its comparison sampler. The host math is
+// It has the binding model umbrac emits for that program: group 0, the
+// loose uniforms as the members of one uniform buffer in declaration order
+// (binding 0), then the shadow map's depth texture followed by its
+// comparison sampler. The host math is
 // OpenGL's; every vertex entry point ends in `gl_to_target`, umbrac's
 // "portable" clip-space adaptation (depth [-w, w] -> [0, w], y mirrored), so
 // the rendered image comes out bottom row first and the host flips it.
 
-@group(0) @binding(0) var<uniform> u_light_vp: mat4x4<f32>;
-@group(0) @binding(1) var<uniform> u_model: mat4x4<f32>;
-@group(0) @binding(2) var<uniform> u_view: mat4x4<f32>;
-@group(0) @binding(3) var<uniform> u_proj: mat4x4<f32>;
-@group(0) @binding(4) var<uniform> u_light_dir: vec3<f32>;
-@group(0) @binding(5) var<uniform> u_cam_pos: vec3<f32>;
-@group(0) @binding(6) var<uniform> u_is_floor: f32;
-@group(0) @binding(7) var shadow_map: texture_depth_2d;
-@group(0) @binding(8) var shadow_map_cmp: sampler_comparison;
+struct Uniforms {
+    u_light_vp: mat4x4<f32>,
+    u_model: mat4x4<f32>,
+    u_view: mat4x4<f32>,
+    u_proj: mat4x4<f32>,
+    u_light_dir: vec3<f32>,
+    u_cam_pos: vec3<f32>,
+    u_is_floor: f32,
+}
+@group(0) @binding(0) var<uniform> uniforms: Uniforms;
+@group(0) @binding(1) var shadow_map: texture_depth_2d;
+@group(0) @binding(2) var shadow_map_cmp: sampler_comparison;
 
 const SHADOW_TEXEL: f32 = 1.0 / 1024.0;
 
@@ -40,7 +44,7 @@ fn gl_to_target(p: vec4<f32>) -> vec4<f32> {
 @vertex
 fn shadow_vs(@location(0) a_pos: vec3<f32>) -> ShadowOut {
     var out: ShadowOut;
-    out.clip = gl_to_target(u_light_vp * (u_model * vec4<f32>(a_pos, 1.0)));
+    out.clip = gl_to_target(uniforms.u_light_vp * (uniforms.u_model * vec4<f32>(a_pos, 1.0)));
     return out;
 }
 
@@ -53,11 +57,11 @@ fn shadow_fs() -> @location(0) vec4<f32> {
 @vertex
 fn main_vs(@location(0) a_pos: vec3<f32>, @location(1) a_normal: vec3<f32>) -> MainOut {
     var out: MainOut;
-    let world = u_model * vec4<f32>(a_pos, 1.0);
+    let world = uniforms.u_model * vec4<f32>(a_pos, 1.0);
     out.world_pos = world.xyz;
-    out.world_normal = (u_model * vec4<f32>(a_normal, 0.0)).xyz;
-    out.light_clip = u_light_vp * world;
-    out.clip = gl_to_target(u_proj * (u_view * world));
+    out.world_normal = (uniforms.u_model * vec4<f32>(a_normal, 0.0)).xyz;
+    out.light_clip = uniforms.u_light_vp * world;
+    out.clip = gl_to_target(uniforms.u_proj * (uniforms.u_view * world));
     return out;
 }
 
@@ -83,8 +87,8 @@ fn checker(p: vec3<f32>) -> vec3<f32> {
 @fragment
 fn main_fs(in: MainOut) -> @location(0) vec4<f32> {
     let n = normalize(in.world_normal);
-    let l = normalize(u_light_dir);
-    let v = normalize(u_cam_pos - in.world_pos);
+    let l = normalize(uniforms.u_light_dir);
+    let v = normalize(uniforms.u_cam_pos - in.world_pos);
     let n_dot_l = max(dot(n, l), 0.0);
 
     // The stored depth and the lookup are both in GL's [0, 1] window range.
@@ -101,7 +105,7 @@ fn main_fs(in: MainOut) -> @location(0) vec4<f32> {
     let ambient = mix(vec3<f32>(0.10, 0.09, 0.08), vec3<f32>(0.30, 0.34, 0.42), vec3<f32>(sky));
     var albedo = vec3<f32>(0.85, 0.45, 0.30);
     var gloss = 0.5;
-    if (u_is_floor > 0.5) {
+    if (uniforms.u_is_floor > 0.5) {
         albedo = checker(in.world_pos);
         gloss = 0.15;
     }

@@ -94,39 +94,47 @@ fn io(name: &str, location: u32, ty: &str, vertex_input: bool) -> Io {
     }
 }
 
-/// The reflection of the hand shader, in the shape the compiler emits. The
-/// hand WGSL binds each uniform on its own (as umbrac did before loose
-/// uniforms shared a buffer): seven one-member buffers.
+/// The reflection of the hand shader, in the shape the compiler emits:
+/// the loose uniforms in one buffer at binding 0, the shadow map at 1 and 2.
 pub fn reflection() -> Reflection {
-    let uniform_buffers: Vec<UniformBuffer> = UNIFORMS
+    let mut offset = 0u32;
+    let members: Vec<Member> = UNIFORMS
         .iter()
-        .enumerate()
-        .map(|(i, &(name, ty, size))| UniformBuffer {
-            name: name.into(),
-            ty: ty.into(),
-            loose: true,
-            size: size.next_multiple_of(16),
-            group: 0,
-            binding: i as u32,
-            glsl_block: None,
-            members: vec![Member {
+        .map(|&(name, ty, size)| {
+            // WGSL's uniform layout: a matrix or a float3 starts on 16 bytes,
+            // a float after a float3 shares its slot.
+            let align = if size >= 12 { 16 } else { 4 };
+            offset = offset.next_multiple_of(align);
+            let m = Member {
                 name: name.into(),
                 ty: ty.into(),
-                offset: 0,
+                offset,
                 size,
                 array_stride: None,
                 matrix_stride: (ty == "float4x4").then_some(16),
                 storage: None,
                 default: None,
-            }],
+            };
+            offset += size;
+            m
         })
         .collect();
+    let uniform_buffers = vec![UniformBuffer {
+        name: "uniforms".into(),
+        ty: "Uniforms".into(),
+        loose: true,
+        size: offset.next_multiple_of(16),
+        group: 0,
+        binding: 0,
+        glsl_block: None,
+        members,
+    }];
     let uniforms: Vec<Uniform> = UNIFORMS
         .iter()
         .map(|&(name, ty, _)| Uniform {
             name: name.into(),
             ty: ty.into(),
-            buffer: name.into(),
+            buffer: "uniforms".into(),
             glsl_name: Some(name.into()),
             glsl_type: match ty {
                 "float4x4" => "mat4",
@@ -143,8 +151,8 @@ pub fn reflection() -> Reflection {
         glsl_name: "shadow_map".into(),
         texture_unit: 0,
         group: 0,
-        texture_binding: 7,
-        sampler_binding: 8,
+        texture_binding: 1,
+        sampler_binding: 2,
         dimension: "2d".into(),
         sample_type: "depth".into(),
         comparison: true,
@@ -162,7 +170,7 @@ pub fn reflection() -> Reflection {
             inputs: vec![io("a_pos", 0, "float3", true)],
             outputs: vec![],
             builtins: strings(&["gl_Position"]),
-            uniform_buffers: strings(&["u_light_vp", "u_model"]),
+            uniform_buffers: strings(&["uniforms"]),
             uniforms: strings(&["u_light_vp", "u_model"]),
             samplers: vec![],
         },
@@ -184,7 +192,7 @@ pub fn reflection() -> Reflection {
             inputs: vec![io("a_pos", 0, "float3", true), io("a_normal", 1, "float3", true)],
             outputs: varyings(),
             builtins: strings(&["gl_Position"]),
-            uniform_buffers: strings(&["u_light_vp", "u_model", "u_view", "u_proj"]),
+            uniform_buffers: strings(&["uniforms"]),
             uniforms: strings(&["u_light_vp", "u_model", "u_view", "u_proj"]),
             samplers: vec![],
         },
@@ -195,7 +203,7 @@ pub fn reflection() -> Reflection {
             inputs: varyings(),
             outputs: vec![Io { interpolation: None, ..io("f_FragColor", 0, "float4", false) }],
             builtins: vec![],
-            uniform_buffers: strings(&["u_light_dir", "u_cam_pos", "u_is_floor"]),
+            uniform_buffers: strings(&["uniforms"]),
             uniforms: strings(&["u_light_dir", "u_cam_pos", "u_is_floor"]),
             samplers: strings(&["shadow_map"]),
         },
@@ -223,10 +231,10 @@ pub fn reflection() -> Reflection {
 pub fn rebound(new_binding: impl Fn(u32) -> u32) -> ShaderSet {
     let mut text = WGSL.to_string();
     // Rewrite through placeholders so a permutation cannot collide.
-    for old in 0..9 {
+    for old in 0..3 {
         text = text.replace(&format!("@binding({old})"), &format!("@binding(#{old}#)"));
     }
-    for old in 0..9 {
+    for old in 0..3 {
         text = text.replace(&format!("@binding(#{old}#)"), &format!("@binding({})", new_binding(old)));
     }
     let mut r = reflection();

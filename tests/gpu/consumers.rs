@@ -212,12 +212,18 @@ fn es_sampler_precision_matters_in_webgl2() {
 #[test]
 fn gl_contexts_bind_what_the_reflection_names() {
     let Some(r) = gpu::gl(Consumer::Gl330) else { return };
-    // A block renamed in the manifest but not in the shader is an error
+    // A sampler renamed in the manifest but not in the shader is an error
     // that names it, not a black picture.
     let mut set = programs().glsl330;
-    set.reflection.as_mut().unwrap().uniform_blocks[0].glsl_block = "nowhere_block".into();
+    set.reflection.as_mut().unwrap().samplers[0].glsl_name = "nowhere_map".into();
+    let err = r.prepare_scene(&set).err().expect("a missing sampler must not bind").to_string();
+    assert!(err.contains("nowhere_map"), "{err}");
+    // So is a uniform block (the loose uniforms in blocks form).
+    let blocks = umbrac::compile_source("shadow.das", SCENE, &umbrac::Options { gl_uniforms: umbrac::GlUniforms::Blocks, ..Default::default() });
+    let mut set = ShaderSet::from_compiled("blocks", blocks.result.as_ref().expect("compiles"), umbrac::Target::Glsl330).unwrap();
+    set.reflection.as_mut().unwrap().uniform_buffers[0].glsl_block = Some("nowhere_ubo".into());
     let err = r.prepare_scene(&set).err().expect("a missing block must not bind").to_string();
-    assert!(err.contains("nowhere_block"), "{err}");
+    assert!(err.contains("nowhere_ubo"), "{err}");
     // So is an attribute location the driver disagrees with.
     let mut set = programs().glsl330;
     for e in &mut set.reflection.as_mut().unwrap().entry_points {
@@ -251,11 +257,37 @@ fn daslang_glsl(consumer: Consumer) -> Option<ShaderSet> {
     Some(ShaderSet::glsl_by_name("daslang's 08_shadow GLSL", consumer.target().unwrap(), entries))
 }
 
+/// umbrac's own GLSL of daslang's shadow tutorial (`../shared/reference/
+/// 08_shadow.das`, compiled as it is) as a set with no manifest: what a host
+/// written for daslang's generator loads.
+fn umbrac_glsl_of_the_tutorial(consumer: Consumer) -> Option<ShaderSet> {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/reference/08_shadow.das");
+    if !path.exists() {
+        eprintln!("skipping: {} is not here", path.display());
+        return None;
+    }
+    let c = umbrac::compile_file(&path, &umbrac::Options::default());
+    let compiled = c.result.as_ref().unwrap_or_else(|| panic!("the tutorial compiles:\n{}", c.render_diagnostics()));
+    let target = consumer.target().unwrap();
+    let entries: Vec<(String, String, String)> = compiled
+        .reflection
+        .entry_points
+        .iter()
+        .map(|e| {
+            let file = e.files[target.name()].clone();
+            let text = compiled.artifact(&file).expect("emitted").text().into_owned();
+            (e.name.clone(), file, text)
+        })
+        .collect();
+    Some(ShaderSet::glsl_by_name("umbrac's 08_shadow GLSL", target, entries))
+}
+
 /// A host that binds everything by the names in the source, as the
 /// tutorials' hosts bind daslang's GLSL (`glGetUniformLocation`,
 /// `glUniform*`, `glGetAttribLocation`), with no manifest at all, draws the
-/// shadow scene on GL 3.3 and GLES 3.0 within the reference rule, and
-/// agrees with umbrac's output bound from its manifest.
+/// shadow scene on GL 3.3 and GLES 3.0 within the reference rule from
+/// daslang's generator's GLSL and from umbrac's, unchanged; both agree with
+/// umbrac's output bound from its manifest.
 #[test]
 fn a_host_binding_by_source_names_draws_the_scene() {
     let p = FrameParams::new(2.0, W, H);
@@ -278,6 +310,17 @@ fn a_host_binding_by_source_names_draws_the_scene() {
         let ours = r.render_scene(programs().for_consumer(consumer).unwrap(), &p).unwrap();
         let stats = image_ops::diff(&image, &ours, DELTA);
         eprintln!("{} by name vs umbrac's output from its manifest: {stats}", consumer.name());
+        assert!(stats.fraction_over <= GPU_MAX_FRACTION, "{}: {stats}", consumer.name());
+
+        // umbrac's GLSL of the tutorial, by name only: the same interface.
+        let Some(set) = umbrac_glsl_of_the_tutorial(consumer) else { return };
+        let program = r.prepare_scene(&set).unwrap_or_else(|e| panic!("{} by name, umbrac's GLSL: {e}", consumer.name()));
+        let by_name = r.draw_scene(&program, &p).unwrap();
+        let stats = image_ops::diff_masked(&by_name, &reference.image, DELTA, Some(skip));
+        eprintln!("{} by name, umbrac's GLSL vs reference: {stats}", consumer.name());
+        assert!(stats.fraction_over <= REF_MAX_FRACTION, "{}: {stats}", consumer.name());
+        let stats = image_ops::diff(&by_name, &ours, DELTA);
+        eprintln!("{} by name, umbrac's GLSL vs umbrac's from its manifest: {stats}", consumer.name());
         assert!(stats.fraction_over <= GPU_MAX_FRACTION, "{}: {stats}", consumer.name());
     }
 }

@@ -26,3 +26,5 @@ mod programs;
 mod render;
 #[cfg(all(feature = "render", feature = "gl"))]
 mod techniques;
+#[cfg(feature = "render")]
+mod uniforms;

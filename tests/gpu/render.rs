@@ -161,7 +161,7 @@ fn reordered_and_struct_uniforms_render_the_same() {
     }
     let reordered = reordered.join("\n");
     let set = compiled("reordered.das", &reordered, Target::Wgsl, Conventions::Portable);
-    assert_eq!(set.reflection.as_ref().unwrap().uniform_blocks[0].name, "u_is_floor");
+    assert_eq!(set.reflection.as_ref().unwrap().uniform_buffers[0].members[0].name, "u_is_floor");
     assert_eq!(set.reflection.as_ref().unwrap().samplers[0].texture_binding, 0, "the shadow map now comes first");
     let image = r.render_scene(&set, &p).unwrap();
     assert_eq!(image_ops::diff(&usual, &image, 0).over, 0, "reordered uniforms changed the picture");
@@ -191,7 +191,7 @@ fn reordered_and_struct_uniforms_render_the_same() {
     .replace("lighting.u_cam_pos : float3", "u_cam_pos : float3")
     .replace("lighting.u_light_dir : float3", "u_light_dir : float3");
     let set = compiled("struct.das", &text, Target::Wgsl, Conventions::Portable);
-    let block = set.reflection.as_ref().unwrap().uniform_blocks.iter().find(|b| b.name == "lighting").expect("a `lighting` block");
+    let block = set.reflection.as_ref().unwrap().uniform_buffers.iter().find(|b| b.name == "lighting").expect("a `lighting` block");
     assert_eq!(block.members.len(), 3);
     let image = r.render_scene(&set, &p).unwrap();
     let stats = image_ops::diff(&usual, &image, 0);
@@ -279,12 +279,12 @@ fn uniform_order_comes_from_the_reflection() {
     let p = FrameParams::new(2.0, W, H);
     let usual = r.render_scene(&hand::shader_set(), &p).unwrap();
     // Every binding number reversed, in the WGSL and in its reflection.
-    let reversed = r.render_scene(&hand::rebound(|b| 8 - b), &p).unwrap();
+    let reversed = r.render_scene(&hand::rebound(|b| 2 - b), &p).unwrap();
     let stats = image_ops::diff(&usual, &reversed, 0);
     assert_eq!(stats.over, 0, "{stats}");
     // The same WGSL with the usual reflection does not fit: wgpu rejects
     // the pipeline and the renderer says so instead of panicking.
-    let mut mismatched = hand::rebound(|b| 8 - b);
+    let mut mismatched = hand::rebound(|b| 2 - b);
     mismatched.reflection = Some(hand::reflection());
     let err = r.render_scene(&mismatched, &p).unwrap_err();
     assert!(matches!(err, ExecError::Link { .. }), "{err}");
@@ -340,9 +340,12 @@ fn programs_that_do_not_fit_are_clear_errors() {
     let Some(r) = gpu::vulkan() else { return };
     let mut set = hand::shader_set();
     let manifest = set.reflection.as_mut().unwrap();
-    manifest.uniform_blocks.retain(|b| b.name != "u_model");
+    for b in &mut manifest.uniform_buffers {
+        b.members.retain(|m| m.name != "u_model");
+    }
+    manifest.uniforms.retain(|u| u.name != "u_model");
     for e in &mut manifest.entry_points {
-        e.uniform_blocks.retain(|b| b != "u_model");
+        e.uniforms.retain(|u| u != "u_model");
         e.inputs.retain(|i| i.name != "a_pos");
     }
     let err = r.prepare_scene(&set).err().expect("a program without u_model must be refused");
@@ -512,7 +515,8 @@ fn hand_reflection_matches_the_compilers() {
     let c = umbrac::compile_source("shaders/shadow.das", SCENE, &Options::default());
     let compiled = &c.result.as_ref().expect("the scene compiles").reflection;
     let hand = hand::reflection();
-    assert_eq!(hand.uniform_blocks, compiled.uniform_blocks);
+    assert_eq!(hand.uniform_buffers, compiled.uniform_buffers);
+    assert_eq!(hand.uniforms, compiled.uniforms);
     assert_eq!(hand.samplers, compiled.samplers);
     assert_eq!(hand.conventions, compiled.conventions);
     let key = |r: &umbrac::Reflection| -> Vec<_> {
@@ -522,7 +526,7 @@ fn hand_reflection_matches_the_compilers() {
                 let io = |v: &[umbrac::emit::reflect_types::Io]| -> Vec<_> {
                     v.iter().map(|i| (i.name.clone(), i.location, i.ty.clone(), i.vertex_format.clone())).collect()
                 };
-                (e.name.clone(), e.stage.clone(), io(&e.inputs), io(&e.outputs), e.uniform_blocks.clone(), e.samplers.clone())
+                (e.name.clone(), e.stage.clone(), io(&e.inputs), io(&e.outputs), e.uniform_buffers.clone(), e.uniforms.clone(), e.samplers.clone())
             })
             .collect()
     };

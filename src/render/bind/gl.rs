@@ -51,6 +51,9 @@ pub struct GlUniform {
     pub value: String,
     /// The DSL type it has.
     pub ty: String,
+    /// What it is set to when the plan sets nothing: the manifest's
+    /// default (`var @uniform x : T = value`).
+    pub default: Option<Value>,
 }
 
 /// Everything a linked program binds, the same for every frame.
@@ -95,7 +98,8 @@ pub fn program(r: &Reflection, fit: &PassFit) -> GlProgram {
         .iter()
         .filter_map(|&u| {
             let u = &r.uniforms[u];
-            Some(GlUniform { glsl_name: u.glsl_name.clone()?, value: u.name.clone(), ty: u.ty.clone() })
+            let default = u.default.as_ref().and_then(|w| Value::from_words(&u.ty, w));
+            Some(GlUniform { glsl_name: u.glsl_name.clone()?, value: u.name.clone(), ty: u.ty.clone(), default })
         })
         .collect();
     let outputs = fit.outputs.iter().filter(|(_, _, declared)| !declared).map(|(name, location, _)| (name.clone(), *location)).collect();
@@ -131,6 +135,7 @@ pub fn draw(program: &GlProgram, pass: &Pass, draw: &Draw, unset: Unset) -> Resu
         match pass.value(draw, &u.value) {
             Some(v) if v.dsl_type() == u.ty => uniforms.push((u.glsl_name.clone(), v.clone())),
             Some(v) => problems.push(format!("uniform `{}` is {} but the scene sets a {}", u.value, u.ty, v.dsl_type())),
+            None if u.default.is_some() => uniforms.push((u.glsl_name.clone(), u.default.clone().expect("checked"))),
             None if unset == Unset::Zero => {}
             None => problems.push(format!("uniform `{}` is not a value the scene sets (it sets {})", u.value, known.join(", "))),
         }

@@ -421,10 +421,11 @@ mod tests {
         assert_eq!(files.len(), 4);
         let main = &v["passes"][1];
         assert_eq!(main["draws"].as_array().unwrap().len(), 2);
-        // u_is_floor of the floor draw: its block's one word is 1.0.
-        let floor = &main["draws"][1]["blocks"];
-        let is_floor = floor.as_array().unwrap().iter().find(|b| b["point"] == json!(6)).unwrap();
-        assert_eq!(is_floor["words"][0], json!(1.0f32.to_bits()));
+        // u_is_floor of the floor draw: a plain uniform set by name to 1.0.
+        let floor = &main["draws"][1]["uniforms"];
+        let is_floor = floor.as_array().unwrap().iter().find(|u| u["name"] == json!("u_is_floor")).unwrap();
+        assert_eq!((is_floor["call"].as_str(), &is_floor["words"][0]), (Some("uniform1fv"), &json!(1.0f32.to_bits())));
+        assert!(main["draws"][1]["blocks"].as_array().unwrap().is_empty(), "plain uniforms need no blocks");
         assert_eq!(main["textures"][0]["unit"], json!(0));
         assert_eq!(v["meshes"]["cube"]["vertices"].as_array().unwrap().len(), 24 * 6);
     }

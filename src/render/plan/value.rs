@@ -139,6 +139,29 @@ impl Value {
         }
     }
 
+    /// A value of DSL type `ty` (`float`, `bool2`, `float3x2`, `int[4]`)
+    /// from its words in order, as the manifest's `uniforms[].default`
+    /// gives them; `None` for a type no value has (a struct) or words that
+    /// do not fit it.
+    pub fn from_words(ty: &str, words: &[u32]) -> Option<Value> {
+        let (element, array) = match ty.strip_suffix(']').and_then(|t| t.rsplit_once('[')) {
+            Some((e, n)) => (e, Some(n.parse::<u32>().ok()?)),
+            None => (ty, None),
+        };
+        let (scalar, rest) = [("float", Scalar::Float), ("uint", Scalar::Uint), ("int", Scalar::Int), ("bool", Scalar::Bool)]
+            .into_iter()
+            .find_map(|(p, s)| element.strip_prefix(p).map(|r| (s, r)))?;
+        let dim = |d: &str| d.parse::<u8>().ok().filter(|n| (2..=4).contains(n));
+        let shape = match rest.split_once('x') {
+            None if rest.is_empty() => Shape::Scalar,
+            None => Shape::Vector(dim(rest)?),
+            Some((c, r)) if scalar == Scalar::Float => Shape::Matrix { columns: dim(c)?, rows: dim(r)? },
+            Some(_) => return None,
+        };
+        let n = array.unwrap_or(1) as usize;
+        (words.len() == n * shape.words()).then(|| Value { scalar, shape, array, words: words.to_vec() })
+    }
+
     /// The words as floats (for GL's float uniform calls).
     pub fn as_f32(&self) -> Vec<f32> {
         self.words.iter().map(|w| f32::from_bits(*w)).collect()
@@ -194,5 +217,17 @@ mod tests {
         assert_eq!(Value::bool(true).dsl_type(), "bool");
         let m = Value::array(vec![Value::int(1), Value::int(2)]);
         assert_eq!((m.elements(), m.element(1)), (2, &[2u32][..]));
+    }
+
+    #[test]
+    fn values_from_manifest_words() {
+        for v in [Value::float(0.5), Value::bool(true), Value::mat4(Mat4::IDENTITY), Value::array(vec![Value::int(1), Value::int(2)])] {
+            assert_eq!(Value::from_words(&v.dsl_type(), &v.words), Some(v.clone()));
+        }
+        let m = Value::from_words("float3x2", &[0; 6]).unwrap();
+        assert_eq!(m.shape, Shape::Matrix { columns: 3, rows: 2 });
+        assert_eq!(Value::from_words("float[9]", &[0; 9]).unwrap().elements(), 9);
+        assert_eq!(Value::from_words("float2", &[0; 3]), None);
+        assert_eq!(Value::from_words("Light[2]", &[0; 8]), None);
     }
 }

@@ -38,34 +38,37 @@ struct loose_fs_out {
 var<uniform> uniforms: Uniforms;
 
 @vertex 
-fn loose_vs(@location(0) a_pos: vec2<f32>) -> loose_vs_out {
+fn loose_vs(@builtin(vertex_index) VertexID: u32) -> loose_vs_out {
     var v_p: vec2<f32>;
     var v_m: vec2<f32>;
     var v_k: f32;
     var gl_Position: vec4<f32>;
 
-    let _e5 = uniforms.u_shear[0];
-    let _e8 = uniforms.u_shear[1];
-    let _e11 = uniforms.u_shear[2];
-    let _e19 = uniforms.u_offset;
-    v_p = ((mat3x2<f32>(_e5.xy, _e8.xy, _e11.xy) * vec3<f32>(a_pos, 1f)) + _e19);
-    let _e25 = uniforms.u_rot[0];
-    let _e28 = uniforms.u_rot[1];
-    v_m = (mat2x2<f32>(_e25.xy, _e28.xy) * a_pos);
-    let _e36 = uniforms.u_weights[0];
-    let _e41 = uniforms.u_weights[8];
-    let _e45 = uniforms.u_count;
-    let _e51 = uniforms.u_flip;
-    let _e61 = uniforms.u_steps[3];
-    v_k = (((_e36.x + (_e41.x * f32(_e45))) + select(0f, 0.25f, (_e51 != 0u))) + (f32(_e61.x) * 0.01f));
-    let _e70 = uniforms.u_model;
-    let _e73 = uniforms.u_scale;
-    gl_Position = (_e70 * vec4<f32>((a_pos * _e73), 0f, 1f));
-    let _e80 = gl_Position;
-    let _e91 = v_p;
-    let _e93 = v_m;
-    let _e95 = v_k;
-    return loose_vs_out(vec4<f32>(_e80.x, -(_e80.y), ((_e80.z + _e80.w) * 0.5f), _e80.w), _e91, _e93, _e95);
+    let _e1 = i32(VertexID);
+    let c = vec2<f32>(f32(((_e1 << u32(1i)) & 2i)), f32((_e1 & 2i)));
+    let a_pos = ((c * 2f) - vec2(1f));
+    let _e21 = uniforms.u_shear[0];
+    let _e24 = uniforms.u_shear[1];
+    let _e27 = uniforms.u_shear[2];
+    let _e35 = uniforms.u_offset;
+    v_p = ((mat3x2<f32>(_e21.xy, _e24.xy, _e27.xy) * vec3<f32>(a_pos, 1f)) + _e35);
+    let _e41 = uniforms.u_rot[0];
+    let _e44 = uniforms.u_rot[1];
+    v_m = (mat2x2<f32>(_e41.xy, _e44.xy) * a_pos);
+    let _e52 = uniforms.u_weights[0];
+    let _e57 = uniforms.u_weights[8];
+    let _e61 = uniforms.u_count;
+    let _e67 = uniforms.u_flip;
+    let _e77 = uniforms.u_steps[3];
+    v_k = (((_e52.x + (_e57.x * f32(_e61))) + select(0f, 0.25f, (_e67 != 0u))) + (f32(_e77.x) * 0.01f));
+    let _e86 = uniforms.u_model;
+    let _e89 = uniforms.u_scale;
+    gl_Position = (_e86 * vec4<f32>((a_pos * _e89), 0f, 1f));
+    let _e96 = gl_Position;
+    let _e107 = v_p;
+    let _e109 = v_m;
+    let _e111 = v_k;
+    return loose_vs_out(vec4<f32>(_e96.x, -(_e96.y), ((_e96.z + _e96.w) * 0.5f), _e96.w), _e107, _e109, _e111);
 }
 
 @fragment 
@@ -97,7 +100,7 @@ fn loose_fs(@location(0) v_p_1: vec2<f32>, @location(1) v_m_1: vec2<f32>, @locat
     let t = (_e31 + _e36);
     let _e40 = uniforms.u_basis;
     let _e43 = uniforms.u_tint;
-    let c = (_e40 * _e43);
+    let c_1 = (_e40 * _e43);
     let _e48 = uniforms.u_gains[1];
     let _e51 = uniforms.u_bias;
     let g = (_e48 * _e51);
@@ -122,7 +125,7 @@ fn loose_fs(@location(0) v_p_1: vec2<f32>, @location(1) v_m_1: vec2<f32>, @locat
     let _e109 = uniforms.u_levels.y;
     let lv = (f32((_e105 + _e109)) * 0.01f);
     let _e116 = uniforms.u_color;
-    let base = (((_e116.xyz * 0.5f) + (c * 0.1f)) + g);
+    let base = (((_e116.xyz * 0.5f) + (c_1 * 0.1f)) + g);
     let _e133 = on;
     let _e144 = s;
     let _e151 = uniforms.u_steps[1];

@@ -120,7 +120,7 @@ pub unsafe fn interface(gl: &glow::Context, program: glow::Program, plan: &Frame
                         default: None,
                     });
                 }
-                _ => out.uniforms.push(GlUniform { glsl_name: plain_location(&u.name).to_string(), value: name, ty }),
+                _ => out.uniforms.push(GlUniform { glsl_name: plain_location(&u.name).to_string(), value: name, ty, default: None }),
             }
         }
         let meshes: Vec<_> = pass
