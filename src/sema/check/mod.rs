@@ -11,6 +11,7 @@
 
 mod decls;
 mod exprs;
+mod folding;
 mod stmts;
 
 use std::collections::hash_map::Entry;
@@ -30,6 +31,7 @@ pub fn check(program: &ast::Program, diags: &mut Diagnostics) -> Option<Program>
     let mut c = Checker::new(program, diags);
     c.declare();
     c.check_entry_points();
+    folding::check_program(&c.out, c.diags);
     if c.diags.has_errors() {
         None
     } else {

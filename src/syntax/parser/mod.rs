@@ -335,6 +335,7 @@ impl<'m> Parser<'_, 'm> {
                 }
                 _ => {}
             }
+            let start = self.pos;
             match line(self) {
                 Ok(()) => {
                     let t = self.raw_peek();
@@ -349,6 +350,13 @@ impl<'m> Parser<'_, 'm> {
                     self.nl_skip = 0;
                     self.recover(extra);
                 }
+            }
+            // Recovery stops in front of a token that starts a statement;
+            // where a line that failed on its first token (a `var` where a
+            // struct field belongs) would be tried again forever, skip it.
+            if self.pos == start {
+                self.pos += 1;
+                self.recover(0);
             }
         }
     }
