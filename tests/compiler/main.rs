@@ -28,6 +28,8 @@ mod emit;
 mod features;
 #[cfg(feature = "golden")]
 mod golden;
+#[cfg(feature = "cli")]
+mod hostile_inputs;
 mod limits;
 mod proptest_programs;
 #[cfg(feature = "cli")]
