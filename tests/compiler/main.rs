@@ -23,6 +23,7 @@ mod check;
 #[cfg(feature = "cli")]
 mod cli;
 mod constants;
+mod consumers_accept;
 #[cfg(feature = "deserialize")]
 mod emit;
 mod features;

@@ -1,0 +1,43 @@
+//! Programs umbrac accepts whose outputs a consumer once refused: each is
+//! compiled for every target, and every output goes through the consumers'
+//! own checks: naga's WGSL front end reading the WGSL text back (what wgpu
+//! runs), glslangValidator on each GLSL file and linked pair, spirv-val.
+
+use crate::support;
+
+use umbrac::{compile_source, Options};
+
+/// Compiles `src`, then checks every output with every consumer.
+fn accepted_everywhere(name: &str, src: &str) -> umbrac::Compiled {
+    let c = compile_source(&format!("{name}.das"), src, &Options::default());
+    let compiled = c.result.unwrap_or_else(|| panic!("{name} does not compile:\n{}", umbrac_diags(&c.diagnostics, &c.sources)));
+    for a in compiled.artifacts.iter().filter(|a| a.target == Some(umbrac::Target::Wgsl)) {
+        let text = a.text();
+        let m = naga::front::wgsl::parse_str(&text).unwrap_or_else(|e| panic!("{name}: naga rejects the WGSL:\n{}", e.emit_to_string(&text)));
+        naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga::valid::Capabilities::default())
+            .validate(&m)
+            .unwrap_or_else(|e| panic!("{name}: the WGSL does not validate:\n{}", e.emit_to_string(&text)));
+    }
+    let dir = tempfile::tempdir().unwrap();
+    support::write_all(dir.path(), &compiled.artifacts);
+    support::validate_dir(dir.path(), &compiled.reflection);
+    compiled
+}
+
+fn umbrac_diags(d: &[umbrac::Diagnostic], map: &umbrac::SourceMap) -> String {
+    d.iter().map(|d| d.render(map)).collect()
+}
+
+/// Code after a `return`, `break`, `continue` or `discard()` is checked but
+/// never run. After an entry point's `return` naga's GLSL writer declared
+/// `_tmp_return` twice in one scope (glslang: redefinition).
+#[test]
+fn code_after_a_return_is_not_emitted() {
+    let src = "var @uniform u_x : float4\nvar @out f_color : float4\n\
+        def helper(v : float4) : float4 {\n    return v\n    return v * 2.0\n}\n\
+        [vertex_program]\ndef vs {\n    gl_Position = u_x\n    return\n    gl_Position = u_x * 2.0\n}\n\
+        [fragment_program]\ndef fs {\n    f_color = helper(u_x)\n    for (i in range(4)) {\n        if (u_x.x > 0.5) {\n            break\n            f_color = u_x\n        }\n        continue\n        f_color = u_x * 3.0\n    }\n    if (u_x.y > 0.5) {\n        discard()\n        f_color = u_x\n    }\n    return\n    f_color = float4(0.5)\n    return\n}\n";
+    let c = accepted_everywhere("dead_code", src);
+    let fs = c.artifact("fs.330.frag").unwrap().text().into_owned();
+    assert!(!fs.contains("vec4(0.5)"), "dead code was emitted:\n{fs}");
+}
