@@ -25,7 +25,7 @@ use std::path::{Path, PathBuf};
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::source::{FileId, SourceMap, Span};
 
-pub use parser::MAX_DEPTH;
+pub use parser::{MAX_DEPTH, MAX_IDENT_LEN};
 pub use preprocess::{MAX_FILE_SIZE, MAX_INCLUDE_DEPTH};
 
 #[derive(Clone, Debug, Default)]

@@ -41,3 +41,24 @@ fn code_after_a_return_is_not_emitted() {
     let fs = c.artifact("fs.330.frag").unwrap().text().into_owned();
     assert!(!fs.contains("vec4(0.5)"), "dead code was emitted:\n{fs}");
 }
+
+/// Names at the length limit, and a helper specialised for many samplers
+/// with such names (its copy's name would join them all), give outputs
+/// every consumer takes: GLSL allows names of 1024 characters.
+#[test]
+fn the_longest_names_fit_every_target() {
+    let n = umbrac::syntax::MAX_IDENT_LEN;
+    let long = |c: char| std::iter::repeat_n(c, n).collect::<String>();
+    let (u, f) = (long('u'), long('f'));
+    let samplers: Vec<String> = (0..6).map(|i| format!("{}{i}", "s".repeat(n - 1))).collect();
+    let mut src = format!("var @uniform {u} : float4\nvar @out f_color : float4\nvar @inout {} : float2\n", long('v'));
+    for s in &samplers {
+        src.push_str(&format!("var @uniform {s} : sampler2D\n"));
+    }
+    let params: Vec<String> = (0..6).map(|i| format!("t{i} : sampler2D")).collect();
+    let reads: Vec<String> = (0..6).map(|i| format!("texture(t{i}, uv)")).collect();
+    src.push_str(&format!("def {f}({}; uv : float2) : float4 {{\n    return {}\n}}\n", params.join("; "), reads.join(" + ")));
+    src.push_str(&format!("[vertex_program]\ndef vs {{\n    gl_Position = {u}\n    {} = {u}.xy\n}}\n", long('v')));
+    src.push_str(&format!("[fragment_program]\ndef fs {{\n    f_color = {f}({}, {}) * {u}\n}}\n", samplers.join(", "), long('v')));
+    accepted_everywhere("long_names", &src);
+}
