@@ -501,6 +501,10 @@ impl<'a, 'd> Checker<'a, 'd> {
                 if elem_ty.is_error() {
                     return Ty::Error;
                 }
+                if matches!(elem_ty, Ty::Array(..)) {
+                    self.diags.push(array_of_arrays(t.span));
+                    return Ty::Error;
+                }
                 Ty::Array(Box::new(elem_ty), n)
             }
         }
@@ -557,6 +561,11 @@ impl<'a, 'd> Checker<'a, 'd> {
                 return None;
             }
         };
+        if matches!(&ty, Ty::Array(elem, _) if matches!(**elem, Ty::Array(..))) {
+            self.diags.push(array_of_arrays(decl.value.span));
+            self.failed_consts.insert(name);
+            return None;
+        }
         if let Some(t) = &decl.ty {
             let declared = self.resolve_type(t);
             if !declared.is_error() && declared != ty {
@@ -575,6 +584,16 @@ impl<'a, 'd> Checker<'a, 'd> {
         Some(id)
     }
 
+}
+
+/// An array whose elements are arrays: naga writes them only for GLSL 430
+/// and GLSL ES 3.10 and later (`ARRAY_OF_ARRAYS`), not for the 330 and
+/// ES 3.00 targets.
+pub(super) fn array_of_arrays(span: Span) -> Diagnostic {
+    Diagnostic::error("arrays of arrays are not supported", span)
+        .with_label("an array of arrays")
+        .with_note("GLSL 330 and GLSL ES 3.00 have no arrays of arrays")
+        .with_note("help: use one array of N * M elements indexed by `i * M + j`, or an array of structs holding an array")
 }
 
 /// Lets the constant evaluator look up other constants through the checker.

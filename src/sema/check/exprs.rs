@@ -211,6 +211,10 @@ impl<'a, 'd> Checker<'a, 'd> {
                     self.diags.push(Diagnostic::error(format!("an array needs 1 to {MAX_ARRAY_LEN} elements"), span));
                     return err_expr(span);
                 }
+                if matches!(elem_ty, Ty::Array(..)) {
+                    self.diags.push(super::decls::array_of_arrays(span));
+                    return err_expr(span);
+                }
                 let ty = Ty::Array(Box::new(elem_ty), xs.len() as u32);
                 mk(ExprKind::Construct(xs), ty)
             }
