@@ -11,9 +11,10 @@ use crate::sema::{self, GlobalKind};
 use crate::source::Span;
 
 impl ModuleBuilder<'_> {
-    /// Declares the sema globals, every one or (`only`) those one entry
-    /// point uses; resources get bindings in declaration order. `only` is
-    /// for the one-entry GL modules, whose resources have no bindings.
+    /// Declares the sema globals, every one or (`only`) those used: by one
+    /// entry point for the GL modules (whose resources have no bindings),
+    /// by any for the GPU module. Resources get bindings in declaration
+    /// order.
     /// Only the GPU module describes its resources (`resources`): a GL
     /// module's interface is not kept.
     /// `private`: per global, whether an input or output needs a private

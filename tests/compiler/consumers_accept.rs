@@ -62,3 +62,32 @@ fn the_longest_names_fit_every_target() {
     src.push_str(&format!("[fragment_program]\ndef fs {{\n    f_color = {f}({}, {}) * {u}\n}}\n", samplers.join(", "), long('v')));
     accepted_everywhere("long_names", &src);
 }
+
+/// The WGSL/SPIR-V module holds only the globals its entry points reach,
+/// like each GLSL file: 70 000 uniforms of which one is read made a SPIR-V
+/// module that spirv-val refuses (at most 65 535 module-scope variables).
+#[test]
+fn unreached_globals_are_left_out_of_every_module() {
+    let mut src: String = (0..70_000).map(|i| format!("var @uniform u{i} : float4\n")).collect();
+    src.push_str("var @uniform s0 : sampler2D\nvar @uniform s1 : sampler2D\nvar @out f_color : float4\n[fragment_program]\ndef fs {\n    f_color = u69999 * texture(s1, float2(0.5))\n}\n");
+    let c = accepted_everywhere("many_uniforms", &src);
+    let wgsl = c.artifact("many_uniforms.wgsl").unwrap().text().into_owned();
+    assert_eq!(wgsl.matches("var<uniform>").count(), 1, "{wgsl}");
+    assert!(!wgsl.contains("s0"), "{wgsl}");
+    let names: Vec<&str> = c.reflection.uniform_blocks.iter().map(|b| b.name.as_str()).collect();
+    assert_eq!(names, ["u69999"]);
+}
+
+/// A program that needs more bindings than one WebGPU bind group has is a
+/// located error, not a module a consumer refuses.
+#[test]
+fn more_bindings_than_a_bind_group_holds_is_a_located_error() {
+    let n = umbrac::sema::limits::MAX_BINDINGS as usize;
+    let mut src: String = (0..=n).map(|i| format!("var @uniform u{i} : float4\n")).collect();
+    let sum: String = (0..=n).map(|i| format!("    f_color += u{i}\n")).collect();
+    src.push_str(&format!("var @out f_color : float4\n[fragment_program]\ndef fs {{\n{sum}}}\n"));
+    let c = compile_source("bindings.das", &src, &Options::default());
+    assert!(c.result.is_none());
+    let text = umbrac_diags(&c.diagnostics, &c.sources);
+    assert!(text.contains(&format!("more than {n} resource bindings")) && text.contains(&format!("bindings.das:{}:", n + 1)), "{text}");
+}

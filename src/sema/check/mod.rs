@@ -32,6 +32,7 @@ pub fn check(program: &ast::Program, diags: &mut Diagnostics) -> Option<Program>
     c.declare();
     c.check_entry_points();
     folding::check_program(&c.out, c.diags);
+    c.check_binding_count();
     if c.diags.has_errors() {
         None
     } else {
@@ -187,6 +188,31 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
             Entry::Vacant(v) => {
                 v.insert(id.span);
+            }
+        }
+    }
+}
+
+impl Checker<'_, '_> {
+    /// The resources the entry points reach must fit one bind group
+    /// ([`MAX_BINDINGS`]); the error is at the first global past the limit.
+    fn check_binding_count(&mut self) {
+        let used: std::collections::BTreeSet<GlobalId> = self.out.entry_points.iter().flat_map(|ep| ep.func.uses.keys().copied()).collect();
+        let mut bindings = 0u32;
+        for gid in used {
+            let g = &self.out.globals[gid];
+            bindings += match g.kind {
+                GlobalKind::Uniform => 1,
+                GlobalKind::Sampler { count, .. } => 2 * count.unwrap_or(1),
+                GlobalKind::Io { .. } | GlobalKind::Builtin(_) => 0,
+            };
+            if bindings > MAX_BINDINGS {
+                let d = Diagnostic::error(format!("the entry points use more than {MAX_BINDINGS} resource bindings"), g.span)
+                    .with_label("the limit is reached here")
+                    .with_note("each uniform takes one binding and each sampler two, all in bind group 0, and WebGPU allows 1000 in a group")
+                    .with_note("help: gather uniforms into struct uniforms (one binding each)");
+                self.diags.push(d);
+                return;
             }
         }
     }
