@@ -141,3 +141,58 @@ fn closed_stdout() -> Stdio {
     // SAFETY: the write end is ours and open.
     Stdio::from(unsafe { std::fs::File::from_raw_fd(fds[1]) })
 }
+
+/// A program with `n` fragment entry points (so many output files) that
+/// all carry `salt`, so every output of one version differs from the other's.
+fn many_entry_points(n: usize, salt: f32) -> String {
+    let mut s = String::from("var @out f_color : float4\n");
+    for i in 0..n {
+        s.push_str(&format!("[fragment_program]\ndef fs{i} {{\n    f_color = float4({salt:?} + {i}.0)\n}}\n"));
+    }
+    s
+}
+
+/// Two compiles of different versions of one program into one directory at
+/// the same time: the directory ends with one version's outputs, all of
+/// them, never a mix (the renames happen under a lock on the directory).
+#[test]
+fn concurrent_compiles_into_one_directory_leave_one_version() {
+    let d = tempfile::tempdir().unwrap();
+    let versions = [many_entry_points(12, 0.25), many_entry_points(12, 0.75)];
+    // Each version's outputs, compiled alone.
+    let mut expected = Vec::new();
+    for (i, v) in versions.iter().enumerate() {
+        let dir = d.path().join(format!("alone{i}"));
+        std::fs::create_dir(&dir).unwrap();
+        std::fs::write(dir.join("p.das"), v).unwrap();
+        let o = bounded(&["compile", "p.das", "-o", "out"], &dir);
+        assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+        let files: std::collections::BTreeMap<_, _> =
+            std::fs::read_dir(dir.join("out")).unwrap().map(|e| e.unwrap()).map(|e| (e.file_name(), std::fs::read(e.path()).unwrap())).collect();
+        expected.push(files);
+    }
+    assert_eq!(expected[0].len(), 12 * 2 + 3);
+    for (i, v) in versions.iter().enumerate() {
+        std::fs::write(d.path().join(format!("v{i}.das")), v).unwrap();
+    }
+    for round in 0..20 {
+        let out = d.path().join("shared");
+        // The same input name, so the outputs have the same names.
+        let dirs: Vec<_> = (0..2).map(|i| d.path().join(format!("r{round}-{i}"))).collect();
+        let children: Vec<_> = dirs
+            .iter()
+            .enumerate()
+            .map(|(i, dir)| {
+                std::fs::create_dir(dir).unwrap();
+                std::fs::copy(d.path().join(format!("v{i}.das")), dir.join("p.das")).unwrap();
+                Command::new(env!("CARGO_BIN_EXE_umbrac")).args(["compile", "p.das", "-o"]).arg(&out).current_dir(dir).stderr(Stdio::piped()).spawn().unwrap()
+            })
+            .collect();
+        for c in children {
+            let o = c.wait_with_output().unwrap();
+            assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+        }
+        let got: std::collections::BTreeMap<_, _> = std::fs::read_dir(&out).unwrap().map(|e| e.unwrap()).map(|e| (e.file_name(), std::fs::read(e.path()).unwrap())).collect();
+        assert!(got == expected[0] || got == expected[1], "round {round}: the directory holds a mix of both versions: {:?}", got.keys().collect::<Vec<_>>());
+    }
+}
