@@ -196,3 +196,39 @@ fn concurrent_compiles_into_one_directory_leave_one_version() {
         assert!(got == expected[0] || got == expected[1], "round {round}: the directory holds a mix of both versions: {:?}", got.keys().collect::<Vec<_>>());
     }
 }
+
+/// A line break in the input's name ended the `//` comment bindgen wrote
+/// the path into, and the rest of the name became Rust code.
+#[test]
+fn bindgen_output_parses_whatever_the_file_is_called() {
+    let d = tempfile::tempdir().unwrap();
+    let name = "evil\nfn broken() {}\n.das";
+    std::fs::write(d.path().join(name), PROGRAM).unwrap();
+    let o = bounded(&["bindgen", name, "--module", "evil", "--no-bytemuck", "-o", "b.rs"], d.path());
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let rust = std::fs::read_to_string(d.path().join("b.rs")).unwrap();
+    assert!(rust.contains(r"`evil\nfn broken() {}\n.das`"), "{rust}");
+    // The Rust compiler that runs this test is the judge.
+    let rustc = std::env::var_os("RUSTC").unwrap_or_else(|| "rustc".into());
+    let o = Command::new(rustc).args(["--edition", "2021", "--crate-type", "lib", "--emit=metadata", "-o"]).arg(d.path().join("b.rmeta")).arg(d.path().join("b.rs")).output().expect("rustc");
+    assert!(o.status.success(), "the bindings do not compile:\n{}\n{rust}", text(&o.stderr));
+}
+
+/// Outputs are named after the input, as text: a file name that is not
+/// UTF-8 gave outputs named with U+FFFD instead of its bytes. It is an
+/// error now, and nothing is written.
+#[test]
+fn a_file_name_that_is_not_utf8_is_an_error() {
+    use std::os::unix::ffi::OsStrExt;
+    let d = tempfile::tempdir().unwrap();
+    let name = std::ffi::OsStr::from_bytes(b"bad\xff.das");
+    if std::fs::write(d.path().join(name), PROGRAM).is_err() {
+        eprintln!("skipping: this file system refuses non-UTF-8 names");
+        return;
+    }
+    let o = Command::new(env!("CARGO_BIN_EXE_umbrac")).arg("compile").arg(name).args(["-o", "out"]).current_dir(d.path()).output().unwrap();
+    let err = text(&o.stderr);
+    assert_eq!(o.status.code(), Some(1), "{err}");
+    assert!(err.contains("is not UTF-8, and the outputs are named after it"), "{err}");
+    assert!(!d.path().join("out").exists());
+}
