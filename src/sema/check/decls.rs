@@ -51,13 +51,18 @@ impl<'a, 'd> Checker<'a, 'd> {
             match item {
                 ast::Item::Struct(s) => {
                     let id = self.structs[s.name.name.as_str()];
-                    let mut fields: Vec<(String, Ty, Span)> = Vec::new();
+                    let mut fields: Vec<(String, Ty, Span)> = Vec::with_capacity(s.fields.len());
+                    // Name -> index, for the duplicate check here and field
+                    // lookups later: one hash lookup each, whatever the size.
+                    let mut index: FxHashMap<&'a str, u32> = FxHashMap::with_capacity_and_hasher(s.fields.len(), Default::default());
                     for f in &s.fields {
                         let ty = self.resolve_type(&f.ty);
-                        if let Some((_, _, prev)) = fields.iter().find(|(n, _, _)| *n == *f.name.name) {
+                        if let Some(&prev) = index.get(f.name.name.as_str()) {
                             let d = Diagnostic::error(format!("field `{}` is declared twice", f.name.name), f.name.span)
-                                .with_secondary(*prev, "first declared here");
+                                .with_secondary(fields[prev as usize].2, "first declared here");
                             self.diags.push(d);
+                        } else {
+                            index.insert(&f.name.name, fields.len() as u32);
                         }
                         if !ty.is_value() && !ty.is_error() {
                             let d = Diagnostic::error(format!("a struct field cannot have type `{}`", self.show(&ty)), f.ty.span);
@@ -70,6 +75,8 @@ impl<'a, 'd> Checker<'a, 'd> {
                         self.diags.push(d);
                     }
                     self.out.structs[id].fields = fields;
+                    self.field_index.resize_with(self.out.structs.len(), FxHashMap::default);
+                    self.field_index[id] = index;
                 }
                 ast::Item::Const(k) => {
                     self.check_unique(&mut seen, &k.name);

@@ -276,7 +276,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             Ty::Error => err_expr(span),
             Ty::Struct(sid) => {
                 let fields = &self.out.structs[*sid].fields;
-                match fields.iter().position(|(n, _, _)| *n == *name.name) {
+                match self.field_index.get(*sid).and_then(|ix| ix.get(name.name.as_str())).map(|&i| i as usize) {
                     Some(i) => {
                         let ty = fields[i].1.clone();
                         Expr { kind: ExprKind::Field(Box::new(b), i as u32), ty, span }

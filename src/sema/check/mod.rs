@@ -123,6 +123,8 @@ struct Checker<'a, 'd> {
     fn_decls: Vec<&'a ast::FunctionDecl>,
     entry_decls: Vec<(&'a ast::FunctionDecl, naga::ShaderStage)>,
     builtin_vars: FxHashMap<BuiltinVar, GlobalId>,
+    /// Per struct, its field names' indices.
+    field_index: Vec<FxHashMap<&'a str, u32>>,
     /// Depth at which the next helper function checked on first use starts.
     call_depth: usize,
     spare_scopes: Vec<Scopes<'a>>,
@@ -167,6 +169,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             fn_decls: Vec::new(),
             entry_decls: Vec::new(),
             builtin_vars: FxHashMap::default(),
+            field_index: Vec::new(),
             call_depth: 0,
             spare_scopes: Vec::new(),
         }
