@@ -29,6 +29,7 @@ fuzz_target!(|data: &[u8]| {
             for a in r.artifacts.iter().filter(|a| a.target == Some(umbrac::Target::Wgsl)) {
                 check_wgsl(&a.text());
             }
+            keep_outputs(data, &r.artifacts);
         }
         None => assert!(c.diagnostics.iter().any(|d| d.is_error()), "a failed compile says why"),
     }
@@ -44,5 +45,20 @@ fn check_wgsl(wgsl: &str) {
     let flags = naga::valid::ValidationFlags::all();
     if let Err(e) = naga::valid::Validator::new(flags, naga::valid::Capabilities::default()).validate(&module) {
         panic!("the emitted WGSL does not validate after naga reads it back:\n{}\n{wgsl}", e.emit_to_string(wgsl));
+    }
+}
+
+/// With `UMBRAC_FUZZ_OUT=DIR`, the outputs of each input that compiles are
+/// written to `DIR/<hash of the input>/`, for `fuzz/run_campaign.sh` to run
+/// glslangValidator and spirv-val over (`compile -runs=0 CORPUS`).
+fn keep_outputs(data: &[u8], artifacts: &[umbrac::Artifact]) {
+    static OUT: std::sync::OnceLock<Option<std::path::PathBuf>> = std::sync::OnceLock::new();
+    let Some(out) = OUT.get_or_init(|| std::env::var_os("UMBRAC_FUZZ_OUT").map(Into::into)) else { return };
+    // FNV-1a: a stable name per input, no dependency.
+    let hash = data.iter().fold(0xcbf2_9ce4_8422_2325u64, |h, &b| (h ^ b as u64).wrapping_mul(0x0100_0000_01b3));
+    let dir = out.join(format!("{hash:016x}"));
+    std::fs::create_dir_all(&dir).expect("create the output directory");
+    for a in artifacts {
+        std::fs::write(dir.join(&a.file_name), &a.contents).expect("write an output");
     }
 }
