@@ -337,6 +337,54 @@ struct Gen<'a> {
 }
 
 impl<'a> Gen<'a> {
+    /// A Rust constant expression of type `rust_ty` whose bytes are
+    /// `words` (little-endian), built from the generated structs' `new`,
+    /// as written inside `uniforms::NAME`.
+    fn const_value(&self, rust_ty: &str, words: &[u32]) -> String {
+        let scalar = |ty: &str, w: u32| match ty {
+            "f32" => {
+                let f = f32::from_bits(w);
+                let text = format!("{f:?}");
+                if f.is_finite() && text.parse::<f32>().is_ok_and(|p| p.to_bits() == w) {
+                    text
+                } else {
+                    format!("f32::from_bits({w:#010x})")
+                }
+            }
+            "i32" => (w as i32).to_string(),
+            _ => format!("{w}u32"),
+        };
+        if matches!(rust_ty, "f32" | "i32" | "u32") {
+            return scalar(rust_ty, words.first().copied().unwrap_or(0));
+        }
+        if let Some(inner) = rust_ty.strip_prefix('[').and_then(|t| t.strip_suffix(']')) {
+            // `[T; N]`: N elements of T, evenly spaced.
+            let (elem, n) = inner.rsplit_once("; ").map(|(e, n)| (e, n.parse::<usize>().unwrap_or(1))).unwrap_or((inner, 1));
+            if elem.starts_with("u8") {
+                return format!("[0; {n}]");
+            }
+            let step = (words.len() / n.max(1)).max(1);
+            let parts: Vec<String> = (0..n).map(|i| self.const_value(elem, words.get(i * step..(i + 1) * step).unwrap_or(&[]))).collect();
+            return format!("[{}]", parts.join(", "));
+        }
+        match self.structs.iter().find(|d| d.name == rust_ty) {
+            Some(def) => {
+                let args: Vec<String> = def
+                    .fields
+                    .iter()
+                    .filter(|f| !f.padding)
+                    .map(|f| {
+                        let at = f.offset as usize / 4;
+                        let end = (at + f.size as usize / 4).min(words.len());
+                        self.const_value(&f.rust_ty, words.get(at..end).unwrap_or(&[]))
+                    })
+                    .collect();
+                format!("super::super::{}::new({})", def.name, args.join(", "))
+            }
+            None => format!("/* unknown type {rust_ty} */ unreachable!()"),
+        }
+    }
+
     fn new(r: &'a Reflection, opts: &BindgenOptions) -> Self {
         Gen { r, bytemuck: opts.bytemuck, structs: vec![], by_key: HashMap::new(), block_struct: BTreeMap::new() }
     }
@@ -595,6 +643,11 @@ fn write_uniforms(w: &mut Writer, r: &Reflection, g: &Gen) {
         w.line(&format!("pub const SIZE: u64 = {};", b.size));
         w.line("/// The block's name in GLSL: glGetUniformBlockIndex + glUniformBlockBinding.");
         w.line(&format!("pub const GLSL_BLOCK: &str = {};", str_lit(&b.glsl_block)));
+        if let Some(words) = block_default(b) {
+            w.line("/// The block's default contents (`var @uniform NAME : T = value`): upload it before");
+            w.line("/// setting anything else.");
+            w.line(&format!("pub const DEFAULT: Block = {};", g.const_value(&g.block_struct[&b.name], &words)));
+        }
         w.line("#[cfg(feature = \"wgpu\")]");
         w.open("pub const LAYOUT_ENTRY: wgpu::BindGroupLayoutEntry = wgpu::BindGroupLayoutEntry {");
         w.line(&format!("binding: {},", b.binding));
@@ -609,6 +662,17 @@ fn write_uniforms(w: &mut Writer, r: &Reflection, g: &Gen) {
     }
     w.close("}");
     w.blank();
+}
+
+/// The default words of a whole block, when every member has one.
+fn block_default(b: &crate::emit::reflect_types::UniformBlock) -> Option<Vec<u32>> {
+    let mut words = vec![0u32; b.size as usize / 4];
+    for m in &b.members {
+        let d = m.default.as_ref()?;
+        let at = m.offset as usize / 4;
+        words.get_mut(at..at + d.len())?.copy_from_slice(d);
+    }
+    Some(words)
 }
 
 fn write_samplers(w: &mut Writer, r: &Reflection) {
@@ -838,7 +902,7 @@ mod tests {
     }
 
     fn member(name: &str, ty: &str, offset: u32, size: u32, array_stride: Option<u32>) -> Member {
-        Member { name: name.into(), ty: ty.into(), offset, size, array_stride, matrix_stride: None }
+        Member { name: name.into(), ty: ty.into(), offset, size, array_stride, matrix_stride: None, default: None }
     }
 
     fn block(name: &str, ty: &str, size: u32, members: Vec<Member>) -> crate::emit::reflect_types::UniformBlock {
@@ -890,6 +954,7 @@ mod tests {
             source: String::new(),
             conventions: String::new(),
             entry_points: vec![],
+            programs: vec![],
             uniform_blocks: vec![],
             structs: vec![StructLayout { name: "Light".into(), size: 16, members: vec![] }],
             samplers: vec![],

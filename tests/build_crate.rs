@@ -95,7 +95,8 @@ struct Big {
     m43 : float4x3
 }
 var @uniform big : Big
-var @uniform u_type : float3x3
+var @uniform u_type : float3x3 = float3x3(float3(1.0, 0.0, 0.0), float3(0.0, 2.0, 0.0), float3(0.0, 0.0, 3.0))
+var @uniform u_inner : Inner = Inner(float3(1.0, 2.0, 3.0), 4.0)
 var @uniform @stage = 2 tex : sampler2D
 var @uniform itex : isampler2D
 var @in @location = 0 a_pos : float3
@@ -104,7 +105,7 @@ var @out f_color : float4
 
 [vertex_program]
 def vs {
-    gl_Position = float4(a_pos + big.v3 * big.s + float3(big.i2.x) + float3(float(a_id)), 1.0) + float4(big.m3 * u_type * big.arr[1].xyz, 0.0) + float4(big.inner.a + big.inners[1].a, float(big.u)) + float4(big.m43 * float4(1.0), 0.0)
+    gl_Position = float4(a_pos * u_inner.a * u_inner.b + big.v3 * big.s + float3(big.i2.x) + float3(float(a_id)), 1.0) + float4(big.m3 * u_type * big.arr[1].xyz, 0.0) + float4(big.inner.a + big.inners[1].a, float(big.u)) + float4(big.m43 * float4(1.0), 0.0)
 }
 
 [fragment_program]
@@ -125,6 +126,10 @@ fn main() {
     println!("intensity {} binding {} block {}", l.intensity, main::uniforms::light::BINDING, main::uniforms::light::GLSL_BLOCK);
     println!("{} {} {}", main::WGSL.len(), main::SPIRV[0], main::vs::GLSL330.len());
     println!("{} {}", layout::Big::SIZE, layout::samplers::tex::TEXTURE_UNIT);
+    // Uniform defaults (`var @uniform x : T = value`) as typed constants.
+    let inner = layout::uniforms::u_inner::DEFAULT;
+    assert_eq!((inner.a, inner.b), ([1.0, 2.0, 3.0], 4.0));
+    assert_eq!(layout::uniforms::u_type::DEFAULT.u_type[1], [0.0, 2.0, 0.0, 0.0]);
     println!("{} {}", shadow::ULightDir::SIZE, structs::WGSL.len() + textures::WGSL.len() + preprocessor::WGSL.len());
 }
 "#;

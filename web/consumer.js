@@ -34,7 +34,8 @@ function compile(gl, type, file, source) {
 
 // A uniform block's bytes for one draw: a loose value (one member named
 // like the block, or of the block's type) is the scene value of the
-// block's name; a struct block's members are scene values by member name.
+// block's name; a struct block's members are scene values by member name;
+// a member the scene does not set keeps the manifest's default.
 function blockBytes(block, size, values) {
   const bytes = new ArrayBuffer(Math.max(size, block.size));
   const view = new DataView(bytes);
@@ -43,7 +44,12 @@ function blockBytes(block, size, values) {
   for (const m of block.members) {
     const name = loose ? block.name : m.name;
     const v = values[name];
-    if (v === undefined) throw new Error(`uniform \`${name}\` is not a value the scene sets`);
+    if (v === undefined && m.default) {
+      // A value the scene does not set keeps its default (its words).
+      m.default.forEach((w, i) => view.setUint32(m.offset + 4 * i, w, true));
+      continue;
+    }
+    if (v === undefined) throw new Error(`uniform \`${name}\` is not a value the scene sets and has no default`);
     const put = (at, x) => view.setFloat32(at, x, true);
     if (m.type === 'float4x4') {
       const stride = m.matrix_stride ?? 16;

@@ -119,6 +119,12 @@ fn check_consistency(lowered: &Lowered) -> Result<(), Diagnostic> {
             return Err(Diagnostic::bug(format!("entry point `{}` has unsupported stage {:?}", ep.name, ep.stage), None));
         }
     }
+    for &(v, f) in &lowered.interface.links {
+        let stage = |i: usize| eps.get(i).map(|e| e.stage);
+        if stage(v) != Some(naga::ShaderStage::Vertex) || stage(f) != Some(naga::ShaderStage::Fragment) {
+            return Err(Diagnostic::bug(format!("program ({v}, {f}) does not link a vertex and a fragment entry point"), None));
+        }
+    }
     for r in &lowered.interface.resources {
         let ok = |h: naga::Handle<naga::GlobalVariable>| gpu.global_variables.try_get(h).is_ok();
         if !ok(r.global) || r.sampler_global.is_some_and(|s| !ok(s)) {

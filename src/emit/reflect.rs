@@ -21,10 +21,10 @@ use naga::proc::Layouter;
 use naga::{ArraySize, Handle, Module, ScalarKind, ShaderStage, Type, TypeInner, VectorSize};
 
 use super::glsl::{self, EntryNames};
-use super::reflect_types::{EntryPoint, Io, Member, Reflection, Sampler, StructLayout, UniformBlock, REFLECTION_FORMAT};
+use super::reflect_types::{EntryPoint, Io, Member, ProgramLink, Reflection, Sampler, StructLayout, UniformBlock, REFLECTION_FORMAT};
 use crate::diag::Diagnostic;
 use crate::lower::{EntryInterface, IoVar, Lowered, ResourceKind};
-use crate::sema::SamplerKind;
+use crate::sema::{ConstValue, SamplerKind};
 use crate::target::Target;
 
 pub fn file_name(stem: &str) -> String {
@@ -79,7 +79,7 @@ pub fn uniform_layouts(lowered: &Lowered) -> Result<UniformLayouts, Diagnostic> 
             ));
         }
         structs.visit(module, &layouter, *ty)?;
-        let members = match &t.inner {
+        let mut members: Vec<Member> = match &t.inner {
             TypeInner::Struct { members, .. } => members
                 .iter()
                 .enumerate()
@@ -87,6 +87,17 @@ pub fn uniform_layouts(lowered: &Lowered) -> Result<UniformLayouts, Diagnostic> 
                 .collect(),
             _ => vec![member(module, &layouter, r.name.clone(), dsl_type.clone(), *ty, 0)],
         };
+        if let Some(v) = &r.default {
+            let bad = |why: String| Diagnostic::bug(format!("the default of uniform `{}` does not fit its type: {why}", r.name), Some(r.span));
+            let values: Vec<(Handle<Type>, &ConstValue)> = match (&t.inner, v) {
+                (TypeInner::Struct { members, .. }, ConstValue::Composite(fields)) => members.iter().map(|m| m.ty).zip(fields).collect(),
+                (TypeInner::Struct { .. }, _) => return Err(bad("a struct default that is no composite".into())),
+                _ => vec![(*ty, v)],
+            };
+            for (m, (mty, value)) in members.iter_mut().zip(values) {
+                m.default = Some(default_words(module, &layouter, mty, value).map_err(bad)?);
+            }
+        }
         out.push(Some(BlockLayout { size: round_up(16, layouter[*ty].size), members }));
     }
     Ok(UniformLayouts { blocks: out, structs: structs.list })
@@ -149,7 +160,69 @@ fn member(module: &Module, layouter: &Layouter, name: String, ty_name: String, t
             TypeInner::Matrix { rows, scalar, .. } => Some(vec_align(rows, scalar.width as u32)),
             _ => None,
         },
+        default: None,
     }
+}
+
+/// `v`, a value of type `ty`, as the 32-bit words of its layout (`out`
+/// holds `ty`'s size; `at` is a word index into it).
+fn value_words(module: &Module, layouter: &Layouter, ty: Handle<Type>, v: &ConstValue, out: &mut [u32], at: usize) -> Result<(), String> {
+    let word = |v: &ConstValue| match *v {
+        ConstValue::Float(f) => Ok((f as f32).to_bits()),
+        ConstValue::Int(i) => Ok(i as i32 as u32),
+        ConstValue::Uint(u) => Ok(u as u32),
+        ConstValue::Bool(b) => Ok(b as u32),
+        ConstValue::Composite(_) => Err("a composite where a scalar belongs".to_string()),
+    };
+    let mut put = |k: usize, w: u32| match out.get_mut(k) {
+        Some(slot) => {
+            *slot = w;
+            Ok(())
+        }
+        None => Err(format!("word {k} is outside the value's {} words", out.len())),
+    };
+    let parts = |v: &ConstValue| match v {
+        ConstValue::Composite(p) => Ok(p.clone()),
+        _ => Err("a scalar where a composite belongs".to_string()),
+    };
+    match &module.types[ty].inner {
+        TypeInner::Scalar(_) => put(at, word(v)?),
+        TypeInner::Vector { .. } => {
+            for (i, c) in parts(v)?.iter().enumerate() {
+                put(at + i, word(c)?)?;
+            }
+            Ok(())
+        }
+        TypeInner::Matrix { rows, scalar, .. } => {
+            let stride = vec_align(*rows, scalar.width as u32) as usize / 4;
+            for (c, col) in parts(v)?.iter().enumerate() {
+                for (r, x) in parts(col)?.iter().enumerate() {
+                    put(at + c * stride + r, word(x)?)?;
+                }
+            }
+            Ok(())
+        }
+        TypeInner::Array { base, stride, .. } => {
+            for (i, e) in parts(v)?.iter().enumerate() {
+                value_words(module, layouter, *base, e, out, at + i * *stride as usize / 4)?;
+            }
+            Ok(())
+        }
+        TypeInner::Struct { members, .. } => {
+            for (m, f) in members.iter().zip(parts(v)?.iter()) {
+                value_words(module, layouter, m.ty, f, out, at + m.offset as usize / 4)?;
+            }
+            Ok(())
+        }
+        other => Err(format!("{other:?} has no value")),
+    }
+}
+
+/// The default words of a member of type `ty` holding `v`.
+fn default_words(module: &Module, layouter: &Layouter, ty: Handle<Type>, v: &ConstValue) -> Result<Vec<u32>, String> {
+    let mut out = vec![0u32; layouter[ty].size as usize / 4];
+    value_words(module, layouter, ty, v, &mut out, 0)?;
+    Ok(out)
 }
 
 fn vec_align(size: VectorSize, width: u32) -> u32 {
@@ -337,11 +410,17 @@ pub fn build(
         entry_points.push(entry_point(module, ep, names, &module_files, targets, iface)?);
     }
 
+    let programs = iface
+        .links
+        .iter()
+        .map(|&(v, f)| ProgramLink { vertex: iface.entry_points[v].name.clone(), fragment: iface.entry_points[f].name.clone() })
+        .collect();
     Ok(Reflection {
         format: REFLECTION_FORMAT,
         source: source_name.to_string(),
         conventions: iface.conventions.as_str().to_string(),
         entry_points,
+        programs,
         uniform_blocks,
         structs: layouts.structs.clone(),
         samplers,

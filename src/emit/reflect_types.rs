@@ -29,6 +29,11 @@ pub struct Reflection {
     /// the final image and uses clockwise front faces) or `"native"`.
     pub conventions: String,
     pub entry_points: Vec<EntryPoint>,
+    /// The vertex and fragment entry points that form a program (a GL host
+    /// links each pair into one program object; locations and texture
+    /// units are numbered per program).
+    #[cfg_attr(feature = "deserialize", serde(default))]
+    pub programs: Vec<ProgramLink>,
     pub uniform_blocks: Vec<UniformBlock>,
     /// Every struct type a uniform block is or contains, at any depth (a
     /// member's type, an array's element type), each once, a struct after
@@ -37,6 +42,14 @@ pub struct Reflection {
     #[cfg_attr(feature = "deserialize", serde(default))]
     pub structs: Vec<StructLayout>,
     pub samplers: Vec<Sampler>,
+}
+
+/// One program: a vertex and a fragment entry point, by name.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "deserialize", derive(serde::Deserialize))]
+pub struct ProgramLink {
+    pub vertex: String,
+    pub fragment: String,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -124,6 +137,12 @@ pub struct Member {
     /// Stride between columns for matrices.
     #[cfg_attr(feature = "deserialize", serde(default))]
     pub matrix_stride: Option<u32>,
+    /// The member's default contents, from `var @uniform x : T = value`:
+    /// its `size` bytes as little-endian 32-bit words (floats by their
+    /// IEEE-754 bits, padding zero), to copy to `offset` before the host
+    /// sets anything. Only members of uniform blocks have one.
+    #[cfg_attr(feature = "deserialize", serde(default))]
+    pub default: Option<Vec<u32>>,
 }
 
 /// The layout of a struct type in uniform blocks: the same on every target
@@ -175,9 +194,15 @@ serialize_struct!(Reflection {
     "source": source,
     "conventions": conventions,
     "entry_points": entry_points,
+    "programs": programs,
     "uniform_blocks": uniform_blocks,
     "structs": structs,
     "samplers": samplers,
+});
+
+serialize_struct!(ProgramLink {
+    "vertex": vertex,
+    "fragment": fragment,
 });
 
 serialize_struct!(EntryPoint {
@@ -218,6 +243,7 @@ serialize_struct!(Member {
     "size": size,
     "array_stride": array_stride?,
     "matrix_stride": matrix_stride?,
+    "default": default?,
 });
 
 serialize_struct!(StructLayout {

@@ -146,7 +146,7 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
     let mut point_coord_default: Vec<(sema::GlobalId, Span)> = Vec::new();
     for (&gid, &use_span) in &ep.func.uses {
         let g = &p.globals[gid];
-        if matches!(g.kind, GlobalKind::Uniform | GlobalKind::Sampler { .. }) {
+        if matches!(g.kind, GlobalKind::Uniform { .. } | GlobalKind::Sampler { .. }) {
             iface.resources.extend(m.resource_of[gid].clone());
             continue;
         }
@@ -160,7 +160,8 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
         let ty = m.ty(&g.ty);
         if is_stage_input(&g.kind, stage) {
             let (binding, arg_ty, to_int) = match g.kind {
-                GlobalKind::Io { location: l, .. } => {
+                GlobalKind::Io { .. } => {
+                    let l = ep.location(gid);
                     let interp = if stage == Fragment { interpolation(&g.ty) } else { (None, None) };
                     if describe {
                         let dsl_type = m.show_ty(&g.ty);
@@ -193,7 +194,8 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
                 own_outputs.push(gid);
             }
             match g.kind {
-                GlobalKind::Io { location: l, .. } => {
+                GlobalKind::Io { .. } => {
+                    let l = ep.location(gid);
                     if let Some(&(_, prev)) = seen_out.iter().find(|o| o.0 == l) {
                         // sema reports this as a user error first.
                         return Err(Diagnostic::bug(format!("entry point `{}` writes two outputs at location {l}", ep.name), Some(use_span))

@@ -285,7 +285,10 @@ impl FnBuilder<'_, '_> {
                         _ => v,
                     };
                 }
-                let comps: Vec<Handle<E>> = hs.iter().zip(args).map(|(h, a)| self.convert(*h, &a.ty, *to, s)).collect();
+                let mut comps: Vec<Handle<E>> = hs.iter().zip(args).map(|(h, a)| self.convert(*h, &a.ty, *to, s)).collect();
+                if comps.iter().all(|&h| !self.is_emitted(h)) {
+                    comps = self.flatten_constant_vectors(comps, s);
+                }
                 let t = self.m.ty(ty);
                 self.append(E::Compose { ty: t, components: comps }, s)
             }
@@ -316,5 +319,36 @@ impl FnBuilder<'_, '_> {
                 self.append(E::Compose { ty: t, components: hs }, s)
             }
         }
+    }
+
+    /// The components of a vector built only from constants, with each
+    /// vector constant replaced by its scalar values. naga's SPIR-V writer
+    /// turns such a `Compose` into one `OpConstantComposite`, which must
+    /// list scalars; a vector constituent (`float4(C, 1.0)` with
+    /// `let C = float3(...)`) is invalid SPIR-V.
+    fn flatten_constant_vectors(&mut self, comps: Vec<Handle<E>>, s: Span) -> Vec<Handle<E>> {
+        let mut out = Vec::with_capacity(4);
+        for h in comps {
+            let value = match self.func.expressions[h] {
+                E::Constant(k) => self.m.constant_value(k),
+                _ => None,
+            };
+            match value {
+                Some(sema::ConstValue::Composite(parts)) => {
+                    for part in parts {
+                        let lit = match part {
+                            sema::ConstValue::Float(v) => naga::Literal::F32(v as f32),
+                            sema::ConstValue::Int(v) => naga::Literal::I32(v as i32),
+                            sema::ConstValue::Uint(v) => naga::Literal::U32(v as u32),
+                            sema::ConstValue::Bool(v) => naga::Literal::Bool(v),
+                            sema::ConstValue::Composite(_) => unreachable!("a vector's components are scalars"),
+                        };
+                        out.push(self.literal(lit, s));
+                    }
+                }
+                _ => out.push(h),
+            }
+        }
+        out
     }
 }

@@ -1,7 +1,7 @@
 //! The program's globals in a module: uniforms and samplers (with
 //! bindings in the GPU module, none in a GL module, which naga then names
-//! after the source), and private globals for the entry-point inputs and
-//! outputs that need one.
+//! after the source), private globals for the entry-point inputs and
+//! outputs that need one, and module variables.
 
 use naga::TypeInner;
 
@@ -13,34 +13,34 @@ use crate::source::Span;
 impl ModuleBuilder<'_> {
     /// Declares the sema globals, every one or (`only`) those used: by one
     /// entry point for the GL modules (whose resources have no bindings),
-    /// by any for the GPU module. Resources get bindings in declaration
-    /// order.
+    /// by any for the GPU module; resources at the bindings sema gave them.
     /// Only the GPU module describes its resources (`resources`): a GL
     /// module's interface is not kept.
     /// `private`: per global, whether an input or output needs a private
     /// global (see `reach::EntryIo`); the others are left `Absent`.
     pub(super) fn declare_globals(&mut self, only: Option<&std::collections::BTreeMap<sema::GlobalId, Span>>, private: &[bool]) {
-        let mut next_binding = 0u32;
         let with_binding = self.flavor != Flavor::Gl;
         let describe = self.flavor != Flavor::Gl;
         for (gid, g) in self.p.globals.iter().enumerate() {
             let span: naga::Span = g.span.into();
             let first_resource = self.resources.len();
-            if only.is_some_and(|uses| !uses.contains_key(&gid)) {
+            // A resource no entry point uses has no binding (sema binds
+            // only the used ones): no module declares it.
+            let unused_resource = matches!(g.kind, GlobalKind::Uniform { .. } | GlobalKind::Sampler { .. }) && g.bind.is_none();
+            if unused_resource || only.is_some_and(|uses| !uses.contains_key(&gid)) {
                 self.globals.push(GlobalSlot::Absent);
                 self.resource_of.push(first_resource..first_resource);
                 continue;
             }
             let slot = match &g.kind {
-                GlobalKind::Uniform => {
+                GlobalKind::Uniform { default } => {
                     let ty = self.ty(&g.ty);
-                    let binding = next_binding;
-                    next_binding += 1;
+                    let sema::Bind { group, binding } = g.bind.expect("a used resource is bound");
                     let h = self.module.global_variables.append(
                         naga::GlobalVariable {
                             name: Some(g.name.clone()),
                             space: naga::AddressSpace::Uniform,
-                            binding: with_binding.then_some(naga::ResourceBinding { group: 0, binding }),
+                            binding: with_binding.then_some(naga::ResourceBinding { group, binding }),
                             ty,
                             init: None,
                             memory_decorations: naga::MemoryDecorations::empty(),
@@ -55,10 +55,11 @@ impl ModuleBuilder<'_> {
                             kind: ResourceKind::Uniform { ty, dsl_type },
                             global: h,
                             sampler_global: None,
-                            group: 0,
+                            group,
                             binding,
                             sampler_binding: None,
                             texture_unit: None,
+                            default: default.clone(),
                         });
                     }
                     GlobalSlot::Var(h)
@@ -67,6 +68,7 @@ impl ModuleBuilder<'_> {
                     let image_ty = self.add_type(None, TypeInner::Image { dim: kind.dim(), arrayed: kind.is_array(), class: kind.image_class() });
                     let sampler_ty = self.add_type(None, TypeInner::Sampler { comparison: kind.is_shadow() });
                     let first = self.sampler_elems.len();
+                    let sema::Bind { group, binding } = g.bind.expect("a used resource is bound");
                     for i in 0..count.unwrap_or(1) {
                         // An array element `texs[i]` is the global `texs_i`.
                         let gname = match count {
@@ -74,13 +76,12 @@ impl ModuleBuilder<'_> {
                             None => g.name.clone(),
                         };
                         let sampler_name = [&gname, "_sampler"].concat();
-                        let (tb, sb) = (next_binding, next_binding + 1);
-                        next_binding += 2;
+                        let (tb, sb) = (binding + 2 * i, binding + 2 * i + 1);
                         let image = self.module.global_variables.append(
                             naga::GlobalVariable {
                                 name: Some(gname),
                                 space: naga::AddressSpace::Handle,
-                                binding: with_binding.then_some(naga::ResourceBinding { group: 0, binding: tb }),
+                                binding: with_binding.then_some(naga::ResourceBinding { group, binding: tb }),
                                 ty: image_ty,
                                 init: None,
                                 memory_decorations: naga::MemoryDecorations::empty(),
@@ -91,7 +92,7 @@ impl ModuleBuilder<'_> {
                             naga::GlobalVariable {
                                 name: Some(sampler_name),
                                 space: naga::AddressSpace::Handle,
-                                binding: with_binding.then_some(naga::ResourceBinding { group: 0, binding: sb }),
+                                binding: with_binding.then_some(naga::ResourceBinding { group, binding: sb }),
                                 ty: sampler_ty,
                                 init: None,
                                 memory_decorations: naga::MemoryDecorations::empty(),
@@ -112,10 +113,11 @@ impl ModuleBuilder<'_> {
                             kind: ResourceKind::Sampler(*kind),
                             global: image,
                             sampler_global: Some(sampler),
-                            group: 0,
+                            group,
                             binding: tb,
                             sampler_binding: Some(sb),
                             texture_unit: Some(*texture_unit + i),
+                            default: None,
                         });
                     }
                     GlobalSlot::Sampler { first, count: count.unwrap_or(1) }
@@ -130,6 +132,27 @@ impl ModuleBuilder<'_> {
                             binding: None,
                             ty,
                             init: None,
+                            memory_decorations: naga::MemoryDecorations::empty(),
+                        },
+                        span,
+                    );
+                    GlobalSlot::Var(h)
+                }
+                GlobalKind::Private { init } => {
+                    let ty = self.ty(&g.ty);
+                    // Every invocation starts from the value, or from zero
+                    // (GLSL leaves an uninitialised global undefined).
+                    let init = match init {
+                        Some(v) => self.const_expr(v, &g.ty),
+                        None => self.module.global_expressions.append(naga::Expression::ZeroValue(ty), naga::Span::UNDEFINED),
+                    };
+                    let h = self.module.global_variables.append(
+                        naga::GlobalVariable {
+                            name: Some(g.name.clone()),
+                            space: naga::AddressSpace::Private,
+                            binding: None,
+                            ty,
+                            init: Some(init),
                             memory_decorations: naga::MemoryDecorations::empty(),
                         },
                         span,

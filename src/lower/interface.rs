@@ -47,6 +47,8 @@ pub struct Resource {
     pub sampler_binding: Option<u32>,
     /// GL texture unit of a sampler resource.
     pub texture_unit: Option<u32>,
+    /// The host's default value of a uniform (`var @uniform x : T = value`).
+    pub default: Option<crate::sema::ConstValue>,
 }
 
 #[derive(Clone, Debug)]
@@ -87,6 +89,9 @@ pub struct Interface {
     pub conventions: Conventions,
     pub resources: Vec<Resource>,
     pub entry_points: Vec<EntryInterface>,
+    /// `(vertex, fragment)` indices into `entry_points` of the entry
+    /// points that form one program (`sema::Link`).
+    pub links: Vec<(usize, usize)>,
 }
 
 /// The GL module of one entry point (its only entry point), validated.

@@ -128,6 +128,10 @@ fn build(p: &sema::Program, flavor: Flavor, only: Option<usize>, reach: &Reach) 
             entries.push(entry::lower_entry(&mut m, ep, index, &io.own[index])?);
         }
     }
-    let interface = Interface { conventions: Conventions::default(), resources: std::mem::take(&mut m.resources), entry_points: entries };
+    let links = match only {
+        None => p.links.iter().map(|l| (l.vertex, l.fragment)).collect(),
+        Some(_) => Vec::new(),
+    };
+    let interface = Interface { conventions: Conventions::default(), resources: std::mem::take(&mut m.resources), entry_points: entries, links };
     Ok((m.module, interface))
 }

@@ -144,6 +144,12 @@ impl<'p> ModuleBuilder<'p> {
         }
     }
 
+    /// The value of naga constant `k` (one of the program's constants).
+    pub(super) fn constant_value(&self, k: Handle<naga::Constant>) -> Option<ConstValue> {
+        let c = self.consts.iter().position(|h| *h == Some(k))?;
+        Some(self.p.consts[c].value.clone())
+    }
+
     /// The naga constant of sema constant `c`, declared on first use.
     pub(super) fn constant(&mut self, c: sema::ConstId) -> Handle<naga::Constant> {
         if let Some(h) = self.consts[c] {

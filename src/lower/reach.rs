@@ -290,7 +290,7 @@ def fs {
     #[test]
     fn stage_direction_of_inout_globals() {
         use naga::ShaderStage::{Fragment, Vertex};
-        let inout = GlobalKind::Io { kind: IoKind::InOut, location: 0 };
+        let inout = GlobalKind::Io { kind: IoKind::InOut, location: None };
         assert!(is_stage_output(&inout, Vertex) && !is_stage_input(&inout, Vertex));
         assert!(is_stage_input(&inout, Fragment) && !is_stage_output(&inout, Fragment));
     }

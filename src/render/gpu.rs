@@ -341,8 +341,9 @@ impl Renderer {
 
     /// Fits the program to the scene and builds its pipelines.
     pub fn prepare(&self, set: &ShaderSet) -> Result<Program, RenderError> {
-        let plan = interface::plan(&set.label, &set.reflection)?;
         let via = set.via();
+        let plan = interface::plan(&set.label, &set.reflection)?;
+        let plan = if via == Via::Spirv { plan.for_passthrough()? } else { plan };
         if set.modules.iter().any(|m| m.via() != via) {
             return Err(RenderError::Program(format!("{}: mixes WGSL and SPIR-V modules", set.label)));
         }
@@ -605,6 +606,11 @@ impl Renderer {
         let depth = texture("depth", params.width, params.height, DEPTH_FORMAT, U::RENDER_ATTACHMENT);
         let depth_view = depth.create_view(&Default::default());
 
+        // The shadow pass draws into the shadow map, so where its layout
+        // holds the shadow texture (SPIR-V passthrough layouts hold every
+        // binding) a stand-in is bound.
+        let stand_in = texture("stand-in shadow map", 1, 1, shadow_format, U::TEXTURE_BINDING);
+        let stand_in_view = stand_in.create_view(&Default::default());
         let bind_groups = |objects: &PassObjects, pass: &PassPlan, pass_index: usize, d: usize| -> Vec<(u32, wgpu::BindGroup)> {
             objects
                 .layouts
@@ -620,6 +626,7 @@ impl Renderer {
                                     offset: offsets[pass_index][d][i],
                                     size: NonZeroU64::new(plan.blocks[i].size as u64),
                                 }),
+                                ResourceKind::ShadowTexture if pass_index == 0 => wgpu::BindingResource::TextureView(&stand_in_view),
                                 ResourceKind::ShadowTexture => wgpu::BindingResource::TextureView(&shadow_view),
                                 ResourceKind::ShadowSampler => wgpu::BindingResource::Sampler(compare_sampler),
                             },

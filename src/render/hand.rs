@@ -5,7 +5,7 @@
 
 use std::collections::BTreeMap;
 
-use crate::emit::reflect_types::{EntryPoint, Io, Member, Reflection, Sampler, UniformBlock, REFLECTION_FORMAT};
+use crate::emit::reflect_types::{EntryPoint, Io, Member, ProgramLink, Reflection, Sampler, UniformBlock, REFLECTION_FORMAT};
 
 use super::gpu::{ShaderCode, ShaderSet};
 
@@ -112,6 +112,7 @@ pub fn reflection() -> Reflection {
                 size,
                 array_stride: None,
                 matrix_stride: (ty == "float4x4").then_some(16),
+                default: None,
             }],
         })
         .collect();
@@ -179,6 +180,10 @@ pub fn reflection() -> Reflection {
         source: FILE_NAME.into(),
         conventions: "portable".into(),
         entry_points,
+        programs: vec![
+            ProgramLink { vertex: "main_vs".into(), fragment: "main_fs".into() },
+            ProgramLink { vertex: "shadow_vs".into(), fragment: "shadow_fs".into() },
+        ],
         uniform_blocks,
         structs: vec![],
         samplers,

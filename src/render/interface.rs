@@ -45,12 +45,23 @@ pub struct BlockPlan {
     pub binding: u32,
     pub size: u32,
     pub slots: Vec<ValueSlot>,
+    /// Members the scene does not set, filled with their default
+    /// (`var @uniform x : T = value`): (offset, words).
+    pub defaults: Vec<(u32, Vec<u32>)>,
 }
 
 impl BlockPlan {
     /// The block's bytes for one draw.
     pub fn bytes(&self, frame: &Frame, draw: &Draw) -> Vec<u8> {
         let mut out = vec![0u8; self.size as usize];
+        for (offset, words) in &self.defaults {
+            for (i, w) in words.iter().enumerate() {
+                let at = *offset as usize + 4 * i;
+                if let Some(dst) = out.get_mut(at..at + 4) {
+                    dst.copy_from_slice(&w.to_le_bytes());
+                }
+            }
+        }
         for s in &self.slots {
             let v = frame.uniform(&s.value, draw).expect("slot names were checked against the scene");
             let ok = v.write(&mut out[s.offset as usize..], s.matrix_stride as usize);
@@ -116,6 +127,46 @@ pub struct Plan {
     pub portable: bool,
 }
 
+impl Plan {
+    /// The plan for SPIR-V handed to Vulkan unchanged (passthrough).
+    /// wgpu's Vulkan backend numbers descriptors by their position in a
+    /// bind group layout and, for WGSL, rewrites the shader's bindings to
+    /// match; a passthrough module keeps its own. So every pass gets every
+    /// binding of each group, in order, and the bindings must be 0, 1, 2 ...
+    /// (umbrac numbers them so): then position and binding agree.
+    pub fn for_passthrough(&self) -> Result<Plan, InterfaceError> {
+        let mut all: BTreeMap<u32, Vec<LayoutEntry>> = BTreeMap::new();
+        for pass in [&self.shadow, &self.main] {
+            for (&group, entries) in &pass.groups {
+                let list = all.entry(group).or_default();
+                for e in entries {
+                    match list.iter_mut().find(|x| x.binding == e.binding) {
+                        Some(x) => {
+                            x.stages.vertex |= e.stages.vertex;
+                            x.stages.fragment |= e.stages.fragment;
+                        }
+                        None => list.push(e.clone()),
+                    }
+                }
+            }
+        }
+        let mut problems = Vec::new();
+        for (group, list) in all.iter_mut() {
+            list.sort_by_key(|e| e.binding);
+            if let Some((i, e)) = list.iter().enumerate().find(|(i, e)| e.binding != *i as u32) {
+                problems.push(format!("group {group} has binding {} in place {i}: SPIR-V passed to wgpu unchanged needs bindings 0, 1, 2 ... with no gaps", e.binding));
+            }
+        }
+        if !problems.is_empty() {
+            return Err(InterfaceError { program: self.program.clone(), problems });
+        }
+        let mut plan = self.clone();
+        plan.shadow.groups = all.clone();
+        plan.main.groups = all;
+        Ok(plan)
+    }
+}
+
 /// A resource the reflection declares, by name.
 #[derive(Clone, Copy)]
 enum Declared {
@@ -145,10 +196,15 @@ pub fn plan(program: &str, r: &Reflection) -> Result<Plan, InterfaceError> {
     for b in &r.uniform_blocks {
         let loose = b.members.len() == 1 && (b.members[0].name == b.name || b.members[0].ty == b.ty);
         let mut slots = Vec::new();
+        let mut defaults = Vec::new();
         for m in &b.members {
             let value_name = if loose { b.name.as_str() } else { m.name.as_str() };
             let Some(expected) = scene::uniform_type(value_name) else {
-                problems.push(format!("uniform `{value_name}` is not a value the scene sets (it sets {scene_list})"));
+                // A value the scene does not know keeps its default.
+                match &m.default {
+                    Some(words) if m.offset + 4 * words.len() as u32 <= b.size => defaults.push((m.offset, words.clone())),
+                    _ => problems.push(format!("uniform `{value_name}` is not a value the scene sets (it sets {scene_list}) and has no default")),
+                }
                 continue;
             };
             if m.ty != expected {
@@ -173,7 +229,7 @@ pub fn plan(program: &str, r: &Reflection) -> Result<Plan, InterfaceError> {
             }
             slots.push(ValueSlot { value: value_name.to_string(), offset: m.offset, matrix_stride: stride });
         }
-        blocks.push(BlockPlan { name: b.name.clone(), group: b.group, binding: b.binding, size: b.size, slots });
+        blocks.push(BlockPlan { name: b.name.clone(), group: b.group, binding: b.binding, size: b.size, slots, defaults });
     }
     for need in scene::REQUIRED_UNIFORMS {
         if !provided.contains_key(need) {
@@ -361,6 +417,7 @@ mod tests {
             size,
             array_stride: None,
             matrix_stride: None,
+            default: None,
         };
         r.uniform_blocks.push(UniformBlock {
             name: "Lighting".into(),

@@ -16,8 +16,3 @@ pub const CALL_DEPTH: usize = 4;
 pub const MAX_CONST_CHAIN: usize = 64;
 /// Deepest nesting of struct and array types (`S { t : T[2] }` is 2).
 pub const MAX_TYPE_DEPTH: usize = 32;
-/// Most resource bindings the WGSL/SPIR-V module may have: every uniform
-/// takes one and every sampler two (texture and sampler), all in bind
-/// group 0, and WebGPU allows bindings 0 to 999 in a group
-/// (`maxBindingsPerBindGroup`).
-pub const MAX_BINDINGS: u32 = 1000;

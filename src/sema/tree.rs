@@ -20,6 +20,19 @@ pub struct Program {
     /// Helper functions, callees before callers.
     pub functions: Vec<Function>,
     pub entry_points: Vec<EntryPoint>,
+    /// The vertex and fragment entry points that form one program (a host
+    /// links them into one GL program): see `check::programs`.
+    pub links: Vec<Link>,
+}
+
+/// A vertex entry point and a fragment entry point of one program: they
+/// share a varying, or neither shares one with any entry point of the
+/// other stage (a depth-only pass, a transform-feedback step).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Link {
+    /// Indices into `Program::entry_points`.
+    pub vertex: usize,
+    pub fragment: usize,
 }
 
 impl Program {
@@ -126,12 +139,22 @@ pub enum IoKind {
 
 #[derive(Clone, Debug)]
 pub enum GlobalKind {
-    Uniform,
+    /// A uniform value (or block, for a struct); `default`: the host's
+    /// default from `var @uniform x : T = value` (the manifest, the Rust
+    /// bindings and the runner use it).
+    Uniform { default: Option<ConstValue> },
     /// A sampler, or an array of `count` samplers (`ty` is `T[count]`) on
-    /// consecutive texture units from `texture_unit`.
+    /// consecutive texture units from `texture_unit`: its `@stage = N`, or
+    /// the lowest units free in every program that uses it.
     Sampler { kind: SamplerKind, texture_unit: u32, count: Option<u32> },
-    Io { kind: IoKind, location: u32 },
+    /// `location` is the `@location = N` written, if any; each entry point
+    /// has the location it uses (`EntryPoint::locations`), numbered per
+    /// program where none is written.
+    Io { kind: IoKind, location: Option<u32> },
     Builtin(BuiltinVar),
+    /// A module variable (`var angle = 0.0`, no qualifier) a shader reaches:
+    /// private to each invocation, starting from `init` (zero when `None`).
+    Private { init: Option<ConstValue> },
 }
 
 #[derive(Clone, Debug)]
@@ -140,6 +163,18 @@ pub struct Global {
     pub ty: Ty,
     pub kind: GlobalKind,
     pub span: Span,
+    /// Where a uniform or sampler is bound on WGSL/SPIR-V: its `@set = N`
+    /// (else group 0) and `@binding = N` (else the lowest free in the
+    /// group, in declaration order). A sampler takes two bindings (its
+    /// texture, then its sampler), an array of samplers two per element.
+    /// `None` for other globals and for resources no entry point uses.
+    pub bind: Option<Bind>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Bind {
+    pub group: u32,
+    pub binding: u32,
 }
 
 /// A compile-time value of a top-level `let`.
@@ -204,6 +239,16 @@ pub struct EntryPoint {
     pub stage: naga::ShaderStage,
     /// The body, with no parameters and no result.
     pub func: Function,
+    /// The location of each `@in`, `@out` and `@inout` global this entry
+    /// point reads or writes.
+    pub locations: std::collections::BTreeMap<GlobalId, u32>,
+}
+
+impl EntryPoint {
+    /// The location of interface global `g` in this entry point.
+    pub fn location(&self, g: GlobalId) -> u32 {
+        self.locations.get(&g).copied().unwrap_or(0)
+    }
 }
 
 #[derive(Debug)]

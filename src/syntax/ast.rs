@@ -146,12 +146,15 @@ pub struct AnnotationArg {
     pub value: Option<Expr>,
 }
 
-/// `var @uniform @location = 1 name : type [= init]` at top level.
+/// `var @uniform @location = 1 name : type [= init]` at top level, or a
+/// module variable without qualifiers (`var angle = 0.0`, also inside a
+/// `var { ... }` block), whose type may come from its initialiser.
 #[derive(Clone, Debug)]
 pub struct GlobalVar {
     pub qualifiers: Vec<Qualifier>,
     pub name: Ident,
-    pub ty: TypeExpr,
+    /// `None` only for a module variable with an initialiser.
+    pub ty: Option<TypeExpr>,
     pub init: Option<Expr>,
     pub span: Span,
 }
@@ -170,13 +173,18 @@ pub enum QualifierKind {
     InOut,
     /// `@location = N`, or bare `@location` (`None`: the compiler assigns it).
     Location(Option<i64>),
-    /// `@stage = N`: the texture unit of a sampler.
-    Stage(i64),
+    /// `@stage = N`: the texture unit of a sampler; bare `@stage` (`None`):
+    /// the compiler assigns it, per program.
+    Stage(Option<i64>),
+    /// `@set = N`: the bind group of a uniform or sampler on WGSL/SPIR-V.
+    Set(i64),
+    /// `@binding = N`: its binding in that group.
+    Binding(i64),
     /// Any other `@name [= value]`; semantic analysis reports it.
     Other(String),
 }
 
-/// `let NAME [: type] = value` at top level.
+/// `let NAME [: type] = value` at top level (one of a `let { ... }` block too).
 #[derive(Clone, Debug)]
 pub struct ConstDecl {
     pub name: Ident,

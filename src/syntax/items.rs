@@ -3,8 +3,9 @@
 //! The token stream of a whole daslang file is cut into top-level items by
 //! balanced `()[]{}` without parsing them. Then the shader part is picked:
 //! every global `var` with a shader qualifier (`@uniform`, `@in`, `@out`,
-//! `@inout`), every `def` annotated `[vertex_program]` or
-//! `[fragment_program]` (filtered by the requested entries), and the
+//! `@inout`, ...), every `def` annotated `[vertex_program]`,
+//! `[fragment_program]` or `[compute_program]` (filtered by the requested
+//! entries), and the
 //! `let` constants, functions and structs those reach by name. Nothing else
 //! is parsed, so host code can hold anything.
 
@@ -37,21 +38,31 @@ pub struct RawItem {
     /// Token indices of the names the item declares, every other token
     /// from `names.start` (a list is `a, b, c`); see [`RawItem::names`].
     pub names: Range<usize>,
-    /// A `var` with `@uniform`, `@in`, `@out` or `@inout`.
+    /// The names a `let { ... }` / `var { ... }` block declares (empty for
+    /// other items).
+    pub block_names: Vec<usize>,
+    /// A `var` with `@uniform`, `@in`, `@out` or `@inout` (or a qualifier
+    /// only shaders have, which sema compiles or refuses by name:
+    /// `@ssbo`, `@push_constant`, `@groupshared`).
     pub shader_global: bool,
-    /// A `def` annotated `[vertex_program]` or `[fragment_program]`.
+    /// A `def` annotated `[vertex_program]`, `[fragment_program]` or
+    /// `[compute_program]`.
     pub entry: bool,
 }
 
 impl RawItem {
     /// Token indices of the names the item declares.
-    pub fn names(&self) -> impl Iterator<Item = usize> {
-        self.names.clone().step_by(2)
+    pub fn names(&self) -> impl Iterator<Item = usize> + '_ {
+        self.names.clone().step_by(2).chain(self.block_names.iter().copied())
     }
 
     /// The first name's token index.
     pub fn first_name(&self) -> Option<usize> {
-        (!self.names.is_empty()).then_some(self.names.start)
+        if self.names.is_empty() {
+            self.block_names.first().copied()
+        } else {
+            Some(self.names.start)
+        }
     }
 
     /// All of the item's tokens, annotations included.
@@ -232,7 +243,7 @@ pub fn split(toks: &[Token], map: &SourceMap) -> Vec<RawItem> {
         }
         .max(i + 1);
         let mut item =
-            RawItem { kind, annots, body: i..end, names: 0..0, shader_global: false, entry: false };
+            RawItem { kind, annots, body: i..end, names: 0..0, block_names: Vec::new(), shader_global: false, entry: false };
         let mut k = i + 1;
         match kind {
             ItemKind::Def | ItemKind::Struct | ItemKind::Class => {
@@ -247,7 +258,7 @@ pub fn split(toks: &[Token], map: &SourceMap) -> Vec<RawItem> {
                         toks[a].kind == TokKind::Ident
                             && a > 0
                             && matches!(toks[a - 1].kind, TokKind::P(P::LBracket | P::Comma))
-                            && matches!(texts.get(toks[a].span), "vertex_program" | "fragment_program")
+                            && matches!(texts.get(toks[a].span), "vertex_program" | "fragment_program" | "compute_program")
                     });
                 }
             }
@@ -258,7 +269,7 @@ pub fn split(toks: &[Token], map: &SourceMap) -> Vec<RawItem> {
                     } else if k + 1 < end && toks[k].is(P::At) {
                         let q = &toks[k + 1];
                         if q.kind == TokKind::Kw(Kw::In)
-                            || (q.kind == TokKind::Ident && matches!(texts.get(q.span), "uniform" | "out" | "inout"))
+                            || (q.kind == TokKind::Ident && matches!(texts.get(q.span), "uniform" | "out" | "inout" | "ssbo" | "push_constant" | "groupshared"))
                         {
                             item.shader_global = kind == ItemKind::Var;
                         }
@@ -268,6 +279,24 @@ pub fn split(toks: &[Token], map: &SourceMap) -> Vec<RawItem> {
                         }
                     } else {
                         break;
+                    }
+                }
+                if k < end && toks[k].is(P::LBrace) {
+                    // A block: the names that start its lines (`NAME =` or
+                    // `NAME :` at the block's own depth).
+                    let mut depth = 0usize;
+                    for m in k..end {
+                        match toks[m].kind {
+                            TokKind::P(P::LParen | P::LBracket | P::LBrace) => depth += 1,
+                            TokKind::P(P::RParen | P::RBracket | P::RBrace) => depth = depth.saturating_sub(1),
+                            TokKind::Ident if depth == 1 && toks.get(m + 1).is_some_and(|t| t.is(P::Eq) || t.is(P::Colon)) => {
+                                let line_start = matches!(toks[m - 1].kind, TokKind::Newline | TokKind::P(P::LBrace | P::Semi));
+                                if line_start {
+                                    item.block_names.push(m);
+                                }
+                            }
+                            _ => {}
+                        }
                     }
                 }
                 let first = k;
@@ -476,7 +505,14 @@ pub fn select(
                     decls.add(texts.get(toks[k].span), i);
                 }
             }
+            // Constants, and module variables (a `var` without shader
+            // qualifiers), are parsed when a shader names them.
             ItemKind::Let => {
+                for k in item.names() {
+                    decls.add(texts.get(toks[k].span), i);
+                }
+            }
+            ItemKind::Var if !item.shader_global => {
                 for k in item.names() {
                     decls.add(texts.get(toks[k].span), i);
                 }

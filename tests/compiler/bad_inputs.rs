@@ -276,3 +276,15 @@ fn refused_uniform_layouts_are_located_user_errors_for_every_target_set() {
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
+
+/// A wrong type inside a uniform struct is reported once, at the type; the
+/// uniform's layout check says nothing about it (it used to add a second
+/// error naming an internal `{error}` placeholder).
+#[test]
+fn an_unknown_type_in_a_uniform_struct_is_reported_once() {
+    let text = std::fs::read_to_string(dir().join("sema_uniform_struct_unknown_field_type.das")).unwrap();
+    let c = umbrac::compile_source("u.das", &text, &umbrac::Options::default());
+    let errors: Vec<&str> = c.diagnostics.iter().filter(|d| d.is_error()).map(|d| d.message.as_str()).collect();
+    assert_eq!(errors, ["unknown type `flaot3`"], "{}", c.render_diagnostics());
+    assert!(!c.render_diagnostics().contains("{error}"));
+}

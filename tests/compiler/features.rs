@@ -95,6 +95,17 @@ fn snippets() -> BTreeMap<&'static str, String> {
     add("vertex-out", vert("var @out @location = 1 o_pos : float3\nvar @out @location = 2 o_id : int", "    o_pos = float3(1.0)\n    o_id = gl_VertexID"));
     add("location-clash", vert("var @inout @location = 1 v_a : float\nvar @out @location = 1 o_b : float", "    v_a = 1.0\n    o_b = 2.0"));
     add("texture-units", frag("var @uniform @stage = 3 a : sampler2D\nvar @uniform b : sampler2D", "    f_color = texture(a, float2(0.5)) + texture(b, float2(0.5))"));
+    // ---------------------------------------------------------------- programs and module state
+    add("programs-per-file", "var @in @location = 0 a_pos : float3\nvar @out tf_pos : float3\n[vertex_program]\ndef sim_vs {\n    tf_pos = a_pos\n}\nvar @in @location = 0 q_pos : float2\nvar @inout v_uv : float2\nvar @uniform @stage = 0 a : sampler2D\nvar @out f_color : float4\n[vertex_program]\ndef quad_vs {\n    v_uv = q_pos\n    gl_Position = float4(q_pos, 0.0, 1.0)\n}\n[fragment_program]\ndef quad_fs {\n    f_color = texture(a, v_uv)\n}\nvar @uniform @stage = 0 b : sampler2D\nvar @out f_other : float4\n[fragment_program]\ndef other_fs {\n    f_other = texture(b, v_uv)\n}\n".to_string());
+    add("bare-stage", frag("var @uniform @stage t : sampler2D", "    f_color = texture(t, float2(0.5))"));
+    add("module-variables", frag("var angle = 0.25\nvar {\n    count : int\n}\ndef step() {\n    count++\n    angle *= 2.0\n}", "    step()\n    f_color = float4(angle, float(count), 0.0, 1.0)"));
+    add("let-blocks", frag("let {\n    A = 1.0; B = A * 2.0\n    C : float3 = float3(B)\n}", "    f_color = float4(C, A)"));
+    add("uniform-defaults", frag("struct G {\n    lift : float3\n    gamma : float\n}\nvar @uniform u_k : float = 0.5\nvar @uniform u_g : G = G(float3(0.1), 2.2)", "    f_color = float4(u_g.lift * u_k, u_g.gamma)"));
+    add("bind-groups", frag("var @uniform @set = 1 @binding = 2 u_a : float4\nvar @uniform @set = 1 t : sampler2D\nvar @uniform u_b : float4", "    f_color = u_a + u_b + texture(t, float2(0.5))"));
+    add("push-constant", frag("var @push_constant pc_tint : float4", "    f_color = pc_tint"));
+    add("compute-program", "var @out f_color : float4\n[compute_program(local_size_x = 8)]\ndef cs {\n    let x = 1\n}\n[fragment_program]\ndef fs {\n    f_color = float4(1.0)\n}\n".to_string());
+    add("ssbo", frag("struct P {\n    v : float4\n}\nvar @ssbo buf : P", "    f_color = buf.v"));
+    add("groupshared", frag("var @groupshared tile : float4[4]", "    f_color = tile[0]"));
     m
 }
 
@@ -122,6 +133,13 @@ const NEEDLES: &[(&str, Target, &str, &str, bool)] = &[
     ("gl_PointCoord", Target::Wgsl, ".wgsl", "vec2(0.5f)", true),
     ("nonuniform-sampling", Target::Wgsl, ".wgsl", "diagnostic(off, derivative_uniformity);", true),
     ("matrix-dynamic-index", Target::Wgsl, ".wgsl", "var local", true),
+    ("programs-per-file", Target::Glsl330, "quad_fs.330.frag", "layout(location = 0) out", true),
+    ("programs-per-file", Target::Glsl330, "other_fs.330.frag", "layout(location = 0) out", true),
+    ("module-variables", Target::Glsl330, ".330.frag", "float angle = 0.25;", true),
+    ("bind-groups", Target::Wgsl, ".wgsl", "@group(1) @binding(2) ", true),
+    ("bind-groups", Target::Wgsl, ".wgsl", "@group(1) @binding(0) ", true),
+    ("bind-groups", Target::Wgsl, ".wgsl", "@group(0) @binding(0) ", true),
+    ("module-variables", Target::Wgsl, ".wgsl", "var<private> count: i32 = i32();", true),
 ];
 
 #[derive(Debug, PartialEq)]

@@ -32,6 +32,8 @@ mod golden;
 #[cfg(feature = "cli")]
 mod hostile_inputs;
 mod limits;
+#[cfg(feature = "deserialize")]
+mod programs;
 mod proptest_programs;
 #[cfg(feature = "cli")]
 mod robustness;

@@ -170,7 +170,7 @@ fn project_shadow_program_parses() {
         Item::Global(g) if g.name.name == "shadow_map" => Some(g),
         _ => None,
     });
-    assert!(sm.unwrap().qualifiers.iter().any(|q| q.kind == QualifierKind::Stage(0)));
+    assert!(sm.unwrap().qualifiers.iter().any(|q| q.kind == QualifierKind::Stage(Some(0))));
 }
 
 #[test]
@@ -326,7 +326,7 @@ fn global_declarations() {
     assert_eq!(p.names(), ["tex", "a", "b", "v", "u", "vs"]);
     let Item::Global(v) = &p.program.items[3] else { panic!() };
     assert_eq!(v.qualifiers[1].kind, QualifierKind::Location(None));
-    assert!(matches!(v.ty.kind, ast::TypeExprKind::Array(..)));
+    assert!(matches!(v.ty.as_ref().unwrap().kind, ast::TypeExprKind::Array(..)));
     let Item::Global(u) = &p.program.items[4] else { panic!() };
     assert_eq!(u.qualifiers[1].kind, QualifierKind::Other("foo".into()));
     let p = parse_str("var @uniform x = 1.0\n[vertex_program]\ndef vs {\n}\n");

@@ -96,7 +96,50 @@ fn wgpu_draw(r: &umbrac::render::Renderer, compiled: &umbrac::Compiled, stem: &s
         dev.create_shader_module(wgpu::ShaderModuleDescriptor { label: Some("wgsl"), source: wgpu::ShaderSource::Wgsl(wgsl.into()) })
     };
     let scope = dev.push_error_scope(wgpu::ErrorFilter::Validation);
-    let layout = dev.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor { label: Some("program"), bind_group_layouts: &[], immediate_size: 0 });
+    // Every uniform block, in its group at its binding, holding its
+    // default (zero where it has none).
+    let r_ = &compiled.reflection;
+    let buffers: Vec<wgpu::Buffer> = r_
+        .uniform_blocks
+        .iter()
+        .map(|b| {
+            let bytes: Vec<u8> = default_words(b).iter().flat_map(|w| w.to_le_bytes()).collect();
+            wgpu::util::DeviceExt::create_buffer_init(dev, &wgpu::util::BufferInitDescriptor { label: Some(&b.name), contents: &bytes, usage: wgpu::BufferUsages::UNIFORM })
+        })
+        .collect();
+    let groups: std::collections::BTreeSet<u32> = r_.uniform_blocks.iter().map(|b| b.group).collect();
+    let group_count = groups.iter().max().map_or(0, |g| g + 1);
+    let layouts: Vec<wgpu::BindGroupLayout> = (0..group_count)
+        .map(|g| {
+            let mut entries: Vec<wgpu::BindGroupLayoutEntry> = r_
+                .uniform_blocks
+                .iter()
+                .filter(|b| b.group == g)
+                .map(|b| wgpu::BindGroupLayoutEntry {
+                    binding: b.binding,
+                    visibility: wgpu::ShaderStages::VERTEX_FRAGMENT,
+                    ty: wgpu::BindingType::Buffer { ty: wgpu::BufferBindingType::Uniform, has_dynamic_offset: false, min_binding_size: None },
+                    count: None,
+                })
+                .collect();
+            entries.sort_by_key(|e| e.binding);
+            dev.create_bind_group_layout(&wgpu::BindGroupLayoutDescriptor { label: None, entries: &entries })
+        })
+        .collect();
+    let bind_groups: Vec<wgpu::BindGroup> = (0..group_count)
+        .map(|g| {
+            let entries: Vec<wgpu::BindGroupEntry> = r_
+                .uniform_blocks
+                .iter()
+                .zip(&buffers)
+                .filter(|(b, _)| b.group == g)
+                .map(|(b, buf)| wgpu::BindGroupEntry { binding: b.binding, resource: buf.as_entire_binding() })
+                .collect();
+            dev.create_bind_group(&wgpu::BindGroupDescriptor { label: None, layout: &layouts[g as usize], entries: &entries })
+        })
+        .collect();
+    let layout_refs: Vec<Option<&wgpu::BindGroupLayout>> = layouts.iter().map(Some).collect();
+    let layout = dev.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor { label: Some("program"), bind_group_layouts: &layout_refs, immediate_size: 0 });
     let pipeline = dev.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
         label: Some("program"),
         layout: Some(&layout),
@@ -139,6 +182,9 @@ fn wgpu_draw(r: &umbrac::render::Renderer, compiled: &umbrac::Compiled, stem: &s
             ..Default::default()
         });
         pass.set_pipeline(&pipeline);
+        for (g, bg) in bind_groups.iter().enumerate() {
+            pass.set_bind_group(g as u32, bg, &[]);
+        }
         pass.draw(0..3, 0..1);
     }
     enc.copy_texture_to_buffer(
@@ -155,6 +201,19 @@ fn wgpu_draw(r: &umbrac::render::Renderer, compiled: &umbrac::Compiled, stem: &s
     }
     let data = slice.get_mapped_range().expect("mapped").to_vec();
     words(&data, width)
+}
+
+/// A uniform block's default contents (`var @uniform x : T = value`),
+/// zero where it has none.
+fn default_words(b: &umbrac::emit::reflect_types::UniformBlock) -> Vec<u32> {
+    let mut words = vec![0u32; b.size as usize / 4];
+    for m in &b.members {
+        if let Some(d) = &m.default {
+            let at = m.offset as usize / 4;
+            words[at..at + d.len()].copy_from_slice(d);
+        }
+    }
+    words
 }
 
 fn words(data: &[u8], width: u32) -> Vec<[u32; 4]> {
@@ -193,6 +252,18 @@ mod gl {
             }
             gl.link_program(program);
             assert!(gl.get_program_link_status(program), "{}: link failed: {}", r.api().name(), gl.get_program_info_log(program));
+            // Every uniform block by its GLSL name, holding its default.
+            let mut ubos = Vec::new();
+            for (point, b) in compiled.reflection.uniform_blocks.iter().enumerate() {
+                let Some(index) = gl.get_uniform_block_index(program, &b.glsl_block) else { continue };
+                gl.uniform_block_binding(program, index, point as u32);
+                let ubo = gl.create_buffer().expect("a buffer");
+                gl.bind_buffer(glow::UNIFORM_BUFFER, Some(ubo));
+                let bytes: Vec<u8> = super::default_words(b).iter().flat_map(|w| w.to_le_bytes()).collect();
+                gl.buffer_data_u8_slice(glow::UNIFORM_BUFFER, &bytes, glow::STATIC_DRAW);
+                gl.bind_buffer_base(glow::UNIFORM_BUFFER, point as u32, Some(ubo));
+                ubos.push(ubo);
+            }
             let texture = gl.create_texture().expect("a texture");
             gl.bind_texture(glow::TEXTURE_2D, Some(texture));
             gl.tex_storage_2d(glow::TEXTURE_2D, 1, glow::RGBA32UI, width as i32, 1);
@@ -216,6 +287,9 @@ mod gl {
             gl.delete_texture(texture);
             for s in shaders {
                 gl.delete_shader(s);
+            }
+            for ubo in ubos {
+                gl.delete_buffer(ubo);
             }
             gl.delete_program(program);
             assert_eq!(err, glow::NO_ERROR, "{}: GL error {err:#x}", r.api().name());
@@ -256,3 +330,31 @@ fn lowered_constructs_hold_on_every_consumer() {
         ],
     );
 }
+
+#[test]
+fn module_variables_start_over_in_every_invocation() {
+    // Each pixel's invocation starts from the initial values: a helper
+    // that counts its calls sees the count of this invocation only, however
+    // many pixels ran before it.
+    assert_all_hold(
+        "module_variables",
+        "var calls = 0\nvar total : float\nvar {\n    step = 0.5\n}\nlet {\n    LIMIT = 3\n}\ndef tick() : int {\n    calls++\n    total += step\n    return calls\n}\ndef ticks(n : int) : int {\n    for (i in range(n)) {\n        tick()\n    }\n    return calls\n}",
+        &[
+            "calls == 0 && total == 0.0 && step == 0.5",
+            "ticks(LIMIT + z) == 3 && total == 1.5",
+            "tick() == 1 && tick() == 2",
+        ],
+    );
+}
+
+#[test]
+fn uniform_defaults_reach_every_consumer_in_their_groups() {
+    // The defaults a host uploads (`var @uniform x : T = value`), bound in
+    // the group and at the binding the author chose (GL binds by name).
+    assert_all_hold(
+        "defaults",
+        "struct Ramp {\n    lo : float3\n    hi : float\n}\nvar @uniform @set = 1 @binding = 1 u_k : float4 = float4(1.0, 2.0, 3.0, 4.0)\nvar @uniform u_n : int = 7\nvar @uniform @set = 1 u_ramp : Ramp = Ramp(float3(0.25), 8.0)\nvar @uniform u_m : float3x3 = float3x3(float3(1.0, 2.0, 3.0), float3(4.0, 5.0, 6.0), float3(7.0, 8.0, 9.0))",
+        &["u_k.y + fz == 2.0 && u_k.w == 4.0", "u_n + z == 7", "u_ramp.lo.z == 0.25 && u_ramp.hi == 8.0", "u_m[1].z == 6.0 && u_m[2].x == 7.0"],
+    );
+}
+

@@ -115,6 +115,13 @@ fn builtin_name(b: naga::BuiltIn, output: bool) -> String {
     }
 }
 
+/// Every vertex entry point with every fragment one: a WGSL test module
+/// states no programs.
+fn umbrac_links(eps: &[EntryInterface]) -> Vec<(usize, usize)> {
+    let of = |stage| eps.iter().filter(move |e| e.stage == stage).map(|e| e.index);
+    of(naga::ShaderStage::Vertex).flat_map(|v| of(naga::ShaderStage::Fragment).map(move |f| (v, f))).collect()
+}
+
 fn interface_of(m: &naga::Module, info: &naga::valid::ModuleInfo) -> Interface {
     let mut resources = Vec::new();
     let mut unit = 0;
@@ -139,6 +146,7 @@ fn interface_of(m: &naga::Module, info: &naga::valid::ModuleInfo) -> Interface {
             binding,
             sampler_binding: None,
             texture_unit: None,
+            default: None,
         };
         if let ResourceKind::Sampler(_) = r.kind {
             let (sh, sg) = m
@@ -199,7 +207,8 @@ fn interface_of(m: &naga::Module, info: &naga::valid::ModuleInfo) -> Interface {
         }
         entry_points.push(e);
     }
-    Interface { conventions: Conventions::Portable, resources, entry_points }
+    let links = umbrac_links(&entry_points);
+    Interface { conventions: Conventions::Portable, resources, entry_points, links }
 }
 
 /// The repository root.
@@ -258,18 +267,9 @@ pub fn write_all(dir: &Path, artifacts: &[Artifact]) -> Vec<PathBuf> {
         .collect()
 }
 
-/// Vertex/fragment pairs whose interfaces match: every fragment input has a
-/// vertex output at the same location with the same type.
+/// The programs of a manifest: (vertex, fragment) entry point names.
 pub fn link_pairs(r: &Reflection) -> Vec<(String, String)> {
-    let mut pairs = Vec::new();
-    for v in r.entry_points.iter().filter(|e| e.stage == "vertex") {
-        for f in r.entry_points.iter().filter(|e| e.stage == "fragment") {
-            if f.inputs.iter().all(|i| v.outputs.iter().any(|o| o.location == i.location && o.ty == i.ty)) {
-                pairs.push((v.name.clone(), f.name.clone()));
-            }
-        }
-    }
-    pairs
+    r.programs.iter().map(|p| (p.vertex.clone(), p.fragment.clone())).collect()
 }
 
 /// Runs every validator on outputs written to `dir`: glslangValidator on
@@ -343,3 +343,16 @@ pub fn shadow_scene_with_texel_offsets() -> String {
     body.push_str("    return lit / 9.0\n}\n");
     format!("{}{body}{}", &scene[..start], &scene[end..])
 }
+
+/// `shaders/shadow.das` with two uniforms the scene does not set, whose
+/// defaults (`= 2.0`, `= float3(0.5)`) scale the colour back to what it
+/// was: the picture is the same only if every host uploads the defaults.
+pub fn shadow_scene_with_uniform_defaults() -> String {
+    let scene = include_str!("../../shaders/shadow.das");
+    let out = "    f_FragColor = float4(color, 1.0)\n}";
+    assert!(scene.contains(out), "shaders/shadow.das changed: update shadow_scene_with_uniform_defaults");
+    let scene = scene.replace(out, "    f_FragColor = float4(color * u_gain * u_balance, 1.0)\n}");
+    let first_uniform = scene.find("var @uniform").expect("a uniform");
+    format!("{}var @uniform u_gain : float = 2.0\nvar @uniform u_balance : float3 = float3(0.5)\n{}", &scene[..first_uniform], &scene[first_uniform..])
+}
+

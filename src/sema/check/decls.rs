@@ -192,11 +192,11 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
     }
 
+    /// Declares the shader globals. Locations and texture units written
+    /// in the source are range-checked here; the others are numbered, and
+    /// all are checked for clashes, per program once the entry points are
+    /// known (`programs.rs`).
     pub(super) fn declare_globals(&mut self, seen: &mut FxHashMap<&'a str, Span>) {
-        // Explicit locations / texture units first, per interface class, so
-        // automatic ones fill the gaps.
-        let mut taken: FxHashMap<&'static str, FxHashMap<u32, Span>> = FxHashMap::default();
-        let mut pending_auto: Vec<(GlobalId, &'static str, u32)> = Vec::new();
         let items = &self.ast.items;
         for item in items {
             let ast::Item::Global(g) = item else { continue };
@@ -205,10 +205,20 @@ impl<'a, 'd> Checker<'a, 'd> {
                 let d = Diagnostic::error(format!("`{}` is reserved for builtin variables", g.name.name), g.name.span);
                 self.diags.push(d);
             }
-            let ty = self.resolve_type(&g.ty);
+            if g.qualifiers.is_empty() {
+                self.declare_module_var(g);
+                continue;
+            }
+            // The parser gives every global with qualifiers a type.
+            let Some(gty) = &g.ty else { continue };
+            let ty = self.resolve_type(gty);
             let mut class: Option<(&'static str, Span)> = None;
             let mut location: Option<(i64, Span)> = None;
-            let mut stage: Option<(i64, Span)> = None;
+            let mut stage: Option<(Option<i64>, Span)> = None;
+            // An annotation already reported: no second error for the global.
+            let mut refused = false;
+            // `@set = N`, `@binding = N`.
+            let mut bind: (Option<(i64, Span)>, Option<(i64, Span)>) = (None, None);
             for q in &g.qualifiers {
                 let c = match &q.kind {
                     ast::QualifierKind::Uniform => Some("uniform"),
@@ -225,10 +235,28 @@ impl<'a, 'd> Checker<'a, 'd> {
                         stage = Some((*s, q.span));
                         None
                     }
+                    ast::QualifierKind::Set(n) => {
+                        bind.0 = Some((*n, q.span));
+                        None
+                    }
+                    ast::QualifierKind::Binding(n) => {
+                        bind.1 = Some((*n, q.span));
+                        None
+                    }
+                    // daslang binds `@push_constant` like `@uniform` on GL:
+                    // a uniform on every target (docs/language.md).
+                    ast::QualifierKind::Other(name) if name == "push_constant" => Some("uniform"),
                     ast::QualifierKind::Other(name) => {
-                        let d = Diagnostic::error(format!("unknown annotation `@{name}`"), q.span)
-                            .with_note("shader globals take @uniform, @in, @out, @inout, @location = N and @stage = N");
+                        let d = match name.as_str() {
+                            "ssbo" => Diagnostic::error("`@ssbo` storage buffers are not supported yet", q.span)
+                                .with_note("umbrac's targets (GLSL 330, GLSL ES 3.00, WGSL and SPIR-V vertex and fragment programs) get no storage buffers from it yet; use `@uniform` for data the shader only reads"),
+                            "groupshared" => Diagnostic::error("`@groupshared` (workgroup memory) is not supported yet", q.span)
+                                .with_note("workgroup memory belongs to compute programs, which umbrac does not compile yet"),
+                            _ => Diagnostic::error(format!("unknown annotation `@{name}`"), q.span)
+                                .with_note("shader globals take @uniform, @in, @out, @inout, @push_constant, @location = N and @stage = N"),
+                        };
                         self.diags.push(d);
+                        refused = true;
                         None
                     }
                 };
@@ -241,14 +269,27 @@ impl<'a, 'd> Checker<'a, 'd> {
                     }
                 }
             }
-            if let Some(init) = &g.init {
-                let d = Diagnostic::error("shader globals cannot have an initialiser", init.span)
-                    .with_note("uniforms are set by the host; use a top-level `let` for a constant");
+            // A uniform's initial value is the host's default; other
+            // shader globals have none.
+            if let (Some(init), Some(("uniform", _))) = (&g.init, class) {
+                if ty.is_sampler_like() {
+                    let d = Diagnostic::error("samplers cannot have an initial value", init.span).with_note("the host binds a texture to each sampler");
+                    self.diags.push(d);
+                }
+            } else if let Some(init) = &g.init {
+                let d = Diagnostic::error("only `@uniform` values can have an initial value", init.span)
+                    .with_note("a uniform's initial value is the default the host sets; inputs and outputs have none");
                 self.diags.push(d);
             }
             let Some((class, class_span)) = class else {
-                let d = Diagnostic::error(format!("`{}` has no shader qualifier", g.name.name), g.name.span);
-                self.diags.push(d);
+                if refused {
+                    // Declared, with no type, so that its uses report nothing more.
+                    self.globals.insert(&g.name.name, self.out.globals.len());
+                    self.out.globals.push(Global { name: g.name.name.as_str().to_string(), ty: Ty::Error, kind: GlobalKind::Uniform { default: None }, span: g.name.span, bind: None });
+                } else {
+                    let d = Diagnostic::error(format!("`{}` has no shader qualifier", g.name.name), g.name.span);
+                    self.diags.push(d);
+                }
                 continue;
             };
             let kind = match (class, &ty) {
@@ -266,7 +307,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                         self.diags.push(Diagnostic::error("`@location` does not apply to samplers; use `@stage = N` for the texture unit", span));
                     }
                     let unit = match stage {
-                        Some((s, span)) if !(0..32).contains(&s) || s + n as i64 > 32 => {
+                        Some((Some(s), span)) if !(0..32).contains(&s) || s + n as i64 > 32 => {
                             let msg = if n > 1 {
                                 format!("texture units {s}..{} are out of range (0..=31)", s + n as i64 - 1)
                             } else {
@@ -275,37 +316,26 @@ impl<'a, 'd> Checker<'a, 'd> {
                             self.diags.push(Diagnostic::error(msg, span));
                             0
                         }
-                        Some((s, span)) => {
-                            let map = taken.entry("stage").or_default();
-                            for u in s as u32..s as u32 + n {
-                                if let Some(prev) = map.get(&u) {
-                                    let d = Diagnostic::error(format!("texture unit {u} is used twice"), span).with_secondary(*prev, "first used here");
-                                    self.diags.push(d);
-                                    break;
-                                }
-                            }
-                            for u in s as u32..s as u32 + n {
-                                map.insert(u, span);
-                            }
+                        Some((Some(s), span)) => {
+                            self.unit_spans.insert(self.out.globals.len(), span);
                             s as u32
                         }
-                        None => {
-                            pending_auto.push((self.out.globals.len(), "stage", n));
-                            0
-                        }
+                        // Bare `@stage`, or none: numbered per program.
+                        _ => 0,
                     };
                     GlobalKind::Sampler { kind, texture_unit: unit, count }
                 }
                 ("uniform", _) => {
-                    if let Some((_, span)) = location.or(stage) {
+                    if let Some(span) = location.map(|l| l.1).or(stage.map(|s| s.1)) {
                         self.diags.push(Diagnostic::error("uniform values take no `@location` or `@stage`", span));
                     }
                     if !ty.is_error() {
                         if let Some(msg) = self.uniform_type_problem(&ty) {
-                            self.diags.push(Diagnostic::error(msg, g.ty.span));
+                            self.diags.push(Diagnostic::error(msg, gty.span));
                         }
                     }
-                    GlobalKind::Uniform
+                    let default = g.init.as_ref().and_then(|e| self.uniform_default(&g.name.name, &ty, e));
+                    GlobalKind::Uniform { default }
                 }
                 (c, _) => {
                     let io = match c {
@@ -318,62 +348,130 @@ impl<'a, 'd> Checker<'a, 'd> {
                     }
                     let ok = matches!(ty, Ty::Scalar(s) | Ty::Vector(s, _) if s != Scalar::Bool) || ty.is_error();
                     if !ok {
-                        let d = Diagnostic::error(format!("`@{c}` variables must be numeric scalars or vectors, not `{}`", self.show(&ty)), g.ty.span);
+                        let d = Diagnostic::error(format!("`@{c}` variables must be numeric scalars or vectors, not `{}`", self.show(&ty)), gty.span);
                         self.diags.push(d);
                     }
-                    let key = match io {
-                        IoKind::In => "in",
-                        IoKind::Out => "out",
-                        IoKind::InOut => "inout",
-                    };
                     let loc = match location {
                         Some((l, span)) if !(0..MAX_LOCATIONS as i64).contains(&l) => {
                             self.diags.push(Diagnostic::error(format!("location {l} is out of range (0..{MAX_LOCATIONS})"), span));
-                            0
+                            None
                         }
                         Some((l, span)) => {
-                            let map = taken.entry(key).or_default();
-                            if let Some(prev) = map.get(&(l as u32)) {
-                                let d = Diagnostic::error(format!("duplicate location {l} for `@{c}` variables"), span)
-                                    .with_label(format!("`{}` uses location {l}", g.name.name))
-                                    .with_secondary(*prev, "already used here");
-                                self.diags.push(d);
-                            }
-                            map.insert(l as u32, span);
-                            l as u32
+                            self.location_spans.insert(self.out.globals.len(), span);
+                            Some(l as u32)
                         }
-                        None => {
-                            pending_auto.push((self.out.globals.len(), key, 1));
-                            0
-                        }
+                        None => None,
                     };
                     let _ = class_span;
                     GlobalKind::Io { kind: io, location: loc }
                 }
             };
+            self.written_bind(&kind, bind);
             self.globals.insert(&g.name.name, self.out.globals.len());
-            self.out.globals.push(Global { name: g.name.name.as_str().to_string(), ty, kind, span: g.name.span });
+            self.out.globals.push(Global { name: g.name.name.as_str().to_string(), ty, kind, span: g.name.span, bind: None });
         }
-        // Automatic locations and units: the lowest free number, in declaration order.
-        for (gid, key, count) in pending_auto {
-            let map = taken.entry(key).or_default();
-            let limit = if key == "stage" { 32 } else { MAX_LOCATIONS };
-            let Some(n) = (0..limit.saturating_sub(count - 1)).find(|n| (*n..n + count).all(|u| !map.contains_key(&u))) else {
-                let span = self.out.globals[gid].span;
-                let what = if key == "stage" { "texture unit" } else { "location" };
-                let msg = if count > 1 { format!("no {count} consecutive free {what}s left (at most {limit})") } else { format!("no free {what} left (at most {limit})") };
-                self.diags.push(Diagnostic::error(msg, span));
-                continue;
-            };
-            for u in n..n + count {
-                map.insert(u, self.out.globals[gid].span);
+    }
+
+    /// Records (range-checked) the `@set`/`@binding` written on the global
+    /// about to be declared; only uniforms and samplers take them.
+    fn written_bind(&mut self, kind: &GlobalKind, (set, binding): (Option<(i64, Span)>, Option<(i64, Span)>)) {
+        let resource = matches!(kind, GlobalKind::Uniform { .. } | GlobalKind::Sampler { .. });
+        let mut checked = |q: Option<(i64, Span)>, what: &str, limit: i64| -> Option<(u32, Span)> {
+            let (n, span) = q?;
+            if !resource {
+                self.diags.push(Diagnostic::error(format!("`@{what}` applies only to uniforms and samplers"), span));
+                return None;
             }
-            match &mut self.out.globals[gid].kind {
-                GlobalKind::Sampler { texture_unit, .. } => *texture_unit = n,
-                GlobalKind::Io { location, .. } => *location = n,
-                _ => {}
+            if !(0..limit).contains(&n) {
+                self.diags.push(Diagnostic::error(format!("`@{what} = {n}` is out of range (0..{limit})"), span));
+                return None;
+            }
+            Some((n as u32, span))
+        };
+        // wgpu's defaults: 4 bind groups, 1000 bindings per group.
+        let set = checked(set, "set", 4);
+        let binding = checked(binding, "binding", 1000);
+        if set.is_some() || binding.is_some() {
+            self.bind_written.insert(self.out.globals.len(), (set, binding));
+        }
+    }
+
+    /// Evaluates `value` at compile time, the constants it names first.
+    /// `None` when one of those is wrong (reported already).
+    /// `own`: the constant being defined, which `value` may not name.
+    fn fold(&mut self, value: &'a ast::Expr, own: Option<&str>, use_span: Span) -> Option<Result<(ConstValue, Ty), Diagnostic>> {
+        let mut names = Vec::new();
+        crate::sema::consts::collect_names(value, &mut names);
+        let mut deps_ok = true;
+        for n in names {
+            if Some(n) != own && self.const_decls.contains_key(n) {
+                deps_ok &= self.const_id(n, use_span).is_some();
             }
         }
+        // A value built from a wrong constant is wrong too, but that was
+        // reported already.
+        deps_ok.then(|| eval_const(value, &ConstEnvAdapter { c: self }))
+    }
+
+    /// A module variable reached by a shader (`var angle = 0.0`): private
+    /// to each shader invocation, starting from its initial value (a
+    /// compile-time constant; zero without one).
+    fn declare_module_var(&mut self, g: &'a ast::GlobalVar) {
+        let name: &'a str = &g.name.name;
+        let declared = g.ty.as_ref().map(|t| (self.resolve_type(t), t.span));
+        let init = match &g.init {
+            None => None,
+            Some(e) => match self.fold(e, None, e.span) {
+                Some(Ok(v)) => Some(v),
+                Some(Err(d)) => {
+                    self.diags.push(d.with_note(format!("the initial value of module variable `{name}` must be a compile-time constant: every shader invocation starts with it")));
+                    return self.declare_failed(g);
+                }
+                None => return self.declare_failed(g),
+            },
+        };
+        let ty = match (&declared, &init) {
+            (Some((t, _)), Some((_, vt))) if !t.is_error() && t != vt => {
+                let d = Diagnostic::error(format!("module variable `{name}` is declared `{}` but its value is `{}`", self.show(t), self.show(vt)), g.init.as_ref().map_or(g.name.span, |e| e.span));
+                self.diags.push(d);
+                return self.declare_failed(g);
+            }
+            (Some((t, _)), _) => t.clone(),
+            (None, Some((_, vt))) => vt.clone(),
+            (None, None) => return self.declare_failed(g),
+        };
+        if ty.is_sampler_like() || ty == Ty::Void {
+            let span = declared.as_ref().map_or(g.name.span, |d| d.1);
+            let d = Diagnostic::error(format!("module variable `{name}` cannot hold a `{}`", self.show(&ty)), span)
+                .with_note("samplers are `@uniform` globals set by the host");
+            self.diags.push(d);
+            return self.declare_failed(g);
+        }
+        self.globals.insert(name, self.out.globals.len());
+        self.out.globals.push(Global { name: name.to_string(), ty, kind: GlobalKind::Private { init: init.map(|v| v.0) }, span: g.name.span, bind: None });
+    }
+
+    /// The default value of uniform `name` of type `ty`: a compile-time
+    /// constant of that type (reported otherwise).
+    fn uniform_default(&mut self, name: &str, ty: &Ty, init: &'a ast::Expr) -> Option<ConstValue> {
+        match self.fold(init, None, init.span)? {
+            Ok((v, vt)) if vt == *ty || ty.is_error() => Some(v),
+            Ok((_, vt)) => {
+                let d = Diagnostic::error(format!("uniform `{name}` is `{}` but its default value is `{}`", self.show(ty), self.show(&vt)), init.span);
+                self.diags.push(d);
+                None
+            }
+            Err(d) => {
+                self.diags.push(d.with_note(format!("the default value of uniform `{name}` must be a compile-time constant: the host sets it")));
+                None
+            }
+        }
+    }
+
+    /// Declares `g` with no type after an error: its uses report nothing more.
+    fn declare_failed(&mut self, g: &'a ast::GlobalVar) {
+        self.globals.insert(&g.name.name, self.out.globals.len());
+        self.out.globals.push(Global { name: g.name.name.as_str().to_string(), ty: Ty::Error, kind: GlobalKind::Private { init: None }, span: g.name.span, bind: None });
     }
 
     /// Why a type cannot be a uniform block, if it cannot.
@@ -455,6 +553,8 @@ impl<'a, 'd> Checker<'a, 'd> {
                 }
                 Ok(UniformLayout { size: round(align, end), align, std_size: round(std_align, std_end), std_align })
             }
+            // A type already reported as wrong: nothing more to say.
+            Ty::Error => Ok(UniformLayout { size: 4, align: 4, std_size: 4, std_align: 4 }),
             _ => Err(format!("`{}` cannot be in a uniform block", self.show(ty))),
         }
     }
@@ -542,19 +642,8 @@ impl<'a, 'd> Checker<'a, 'd> {
             self.failed_consts.insert(name);
             return None;
         }
-        // Constants this one names are evaluated first.
-        let mut names = Vec::new();
-        crate::sema::consts::collect_names(&decl.value, &mut names);
         self.const_in_progress.push(name);
-        let mut deps_ok = true;
-        for n in names {
-            if n != name && self.const_decls.contains_key(n) {
-                deps_ok &= self.const_id(n, use_span).is_some();
-            }
-        }
-        // A constant built from a wrong one is wrong too, but that was
-        // reported already.
-        let value = if deps_ok { Some(eval_const(&decl.value, &ConstEnvAdapter { c: self })) } else { None };
+        let value = self.fold(&decl.value, Some(name), use_span);
         self.const_in_progress.pop();
         let (value, ty) = match value {
             Some(Ok(v)) => v,

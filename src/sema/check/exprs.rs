@@ -249,7 +249,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
         if let Some(b) = BuiltinVar::from_name(&id.name) {
             let g = *self.builtin_vars.entry(b).or_insert_with(|| {
-                self.out.globals.push(Global { name: b.name().to_string(), ty: b.ty(), kind: GlobalKind::Builtin(b), span });
+                self.out.globals.push(Global { name: b.name().to_string(), ty: b.ty(), kind: GlobalKind::Builtin(b), span, bind: None });
                 self.out.globals.len() - 1
             });
             cx.uses.entry(g).or_insert(span);

@@ -7,11 +7,14 @@
 //!
 //! The [`Checker`] is defined here; its methods are split by what they check:
 //! [`decls`] (structs, globals, types, constants), [`stmts`] (functions,
-//! statements, places) and [`exprs`] (expressions, calls, operators).
+//! statements, places), [`exprs`] (expressions, calls, operators) and
+//! [`programs`] (which entry points form a program; locations and texture
+//! units numbered and checked per program).
 
 mod decls;
 mod exprs;
 mod folding;
+mod programs;
 mod stmts;
 
 use std::collections::hash_map::Entry;
@@ -32,7 +35,7 @@ pub fn check(program: &ast::Program, diags: &mut Diagnostics) -> Option<Program>
     c.declare();
     c.check_entry_points();
     folding::check_program(&c.out, c.diags);
-    c.check_binding_count();
+    c.link_programs();
     if c.diags.has_errors() {
         None
     } else {
@@ -125,6 +128,12 @@ struct Checker<'a, 'd> {
     builtin_vars: FxHashMap<BuiltinVar, GlobalId>,
     /// Per struct, its field names' indices.
     field_index: Vec<FxHashMap<&'a str, u32>>,
+    /// The `@location = N` qualifier of each global that has one, and the
+    /// `@stage = N` of each sampler that has one (for clash diagnostics).
+    location_spans: FxHashMap<GlobalId, Span>,
+    unit_spans: FxHashMap<GlobalId, Span>,
+    /// The `@set = N` and `@binding = N` written on a resource.
+    bind_written: FxHashMap<GlobalId, (Option<(u32, Span)>, Option<(u32, Span)>)>,
     /// Depth at which the next helper function checked on first use starts.
     call_depth: usize,
     spare_scopes: Vec<Scopes<'a>>,
@@ -134,6 +143,7 @@ fn is_entry(f: &ast::FunctionDecl) -> Option<naga::ShaderStage> {
     f.annotations.iter().find_map(|a| match a.name.name.as_str() {
         "vertex_program" => Some(naga::ShaderStage::Vertex),
         "fragment_program" => Some(naga::ShaderStage::Fragment),
+        "compute_program" => Some(naga::ShaderStage::Compute),
         _ => None,
     })
 }
@@ -170,6 +180,9 @@ impl<'a, 'd> Checker<'a, 'd> {
             entry_decls: Vec::new(),
             builtin_vars: FxHashMap::default(),
             field_index: Vec::new(),
+            location_spans: FxHashMap::default(),
+            unit_spans: FxHashMap::default(),
+            bind_written: FxHashMap::default(),
             call_depth: 0,
             spare_scopes: Vec::new(),
         }
@@ -191,31 +204,6 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
             Entry::Vacant(v) => {
                 v.insert(id.span);
-            }
-        }
-    }
-}
-
-impl Checker<'_, '_> {
-    /// The resources the entry points reach must fit one bind group
-    /// ([`MAX_BINDINGS`]); the error is at the first global past the limit.
-    fn check_binding_count(&mut self) {
-        let used: std::collections::BTreeSet<GlobalId> = self.out.entry_points.iter().flat_map(|ep| ep.func.uses.keys().copied()).collect();
-        let mut bindings = 0u32;
-        for gid in used {
-            let g = &self.out.globals[gid];
-            bindings += match g.kind {
-                GlobalKind::Uniform => 1,
-                GlobalKind::Sampler { count, .. } => 2 * count.unwrap_or(1),
-                GlobalKind::Io { .. } | GlobalKind::Builtin(_) => 0,
-            };
-            if bindings > MAX_BINDINGS {
-                let d = Diagnostic::error(format!("the entry points use more than {MAX_BINDINGS} resource bindings"), g.span)
-                    .with_label("the limit is reached here")
-                    .with_note("each uniform takes one binding and each sampler two, all in bind group 0, and WebGPU allows 1000 in a group")
-                    .with_note("help: gather uniforms into struct uniforms (one binding each)");
-                self.diags.push(d);
-                return;
             }
         }
     }

@@ -23,9 +23,17 @@ impl<'a, 'd> Checker<'a, 'd> {
                 self.diags.push(d);
                 continue;
             }
+            if stage == naga::ShaderStage::Compute {
+                let at = decl.annotations.iter().find(|a| a.name.name == "compute_program").map_or(decl.name.span, |a| a.span);
+                let d = Diagnostic::error(format!("compute program `{name}`: compute programs are not supported yet"), at)
+                    .with_label("a compute program")
+                    .with_note("umbrac compiles vertex and fragment programs; compile the others in this file with `--entry NAME`");
+                self.diags.push(d);
+                continue;
+            }
             let Some(func) = self.check_function(decl, Some(stage)) else { continue };
             self.check_stage_rules(&name, stage, &func);
-            self.out.entry_points.push(EntryPoint { name, stage, func });
+            self.out.entry_points.push(EntryPoint { name, stage, func, locations: BTreeMap::new() });
         }
     }
 
@@ -44,32 +52,6 @@ impl<'a, 'd> Checker<'a, 'd> {
         if let (naga::ShaderStage::Vertex, Some((span, what))) = (stage, func.fragment_only) {
             let d = Diagnostic::error(format!("{what} is only available in fragment entry points, and `{name}` is a vertex entry point"), span);
             self.diags.push(d);
-        }
-        // Inputs and outputs of one entry point need distinct locations:
-        // `@in`/`@inout` inputs of a fragment entry point, `@inout`/`@out`
-        // outputs of a vertex entry point (transform feedback outputs).
-        let vertex = stage == naga::ShaderStage::Vertex;
-        let mut seen: FxHashMap<(bool, u32), GlobalId> = FxHashMap::with_capacity_and_hasher(func.uses.len(), Default::default());
-        for (&gid, &span) in &func.uses {
-            let GlobalKind::Io { kind, location } = self.out.globals[gid].kind else { continue };
-            let output = match kind {
-                IoKind::In => false,
-                IoKind::Out => true,
-                IoKind::InOut => vertex,
-            };
-            if let Some(&prev) = seen.get(&(output, location)) {
-                let (a, b) = (&self.out.globals[prev], &self.out.globals[gid]);
-                let d = Diagnostic::error(
-                    format!("{} entry point `{name}` uses `{}` and `{}`, which are both {} at location {location}", stage_name(stage), a.name, b.name, if output { "outputs" } else { "inputs" }),
-                    span,
-                )
-                .with_secondary(a.span, format!("`{}` declared here", a.name))
-                .with_secondary(b.span, format!("`{}` declared here", b.name))
-                .with_note("`@in` and `@inout` share the input locations of a fragment entry point, `@inout` and `@out` the output locations of a vertex entry point; give one of them another `@location = N`");
-                self.diags.push(d);
-            } else {
-                seen.insert((output, location), gid);
-            }
         }
     }
 
@@ -471,7 +453,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             ExprKind::Global(id) => {
                 let g = &self.out.globals[*id];
                 let why = match g.kind {
-                    GlobalKind::Uniform | GlobalKind::Sampler { .. } => Some("it is a uniform, set by the host"),
+                    GlobalKind::Uniform { .. } | GlobalKind::Sampler { .. } => Some("it is a uniform, set by the host"),
                     GlobalKind::Io { kind: IoKind::In, .. } => Some("it is an `@in` input"),
                     GlobalKind::Builtin(b) if !b.is_output() => Some("it is a builtin input"),
                     _ => None,

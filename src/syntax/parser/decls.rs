@@ -173,7 +173,7 @@ impl<'m> Parser<'_, 'm> {
             self.bump();
             let v = self.peek();
             if v.kind != TokKind::Int {
-                if matches!(name, "location" | "stage") {
+                if matches!(name, "location" | "stage" | "set" | "binding") {
                     let msg = format!("expected an integer after `@{name} =`, found {}", self.describe(&v));
                     self.err(v, msg, "expected an integer");
                     return Err(());
@@ -201,10 +201,12 @@ impl<'m> Parser<'_, 'm> {
             "out" => QualifierKind::Out,
             "inout" => QualifierKind::InOut,
             "location" => QualifierKind::Location(value),
-            "stage" => match value {
-                Some(v) => QualifierKind::Stage(v),
+            "stage" => QualifierKind::Stage(value),
+            "set" | "binding" => match value {
+                Some(v) if name == "set" => QualifierKind::Set(v),
+                Some(v) => QualifierKind::Binding(v),
                 None => {
-                    let msg = "`@stage` needs a texture unit: `@stage = N`".to_string();
+                    let msg = format!("`@{name}` needs a number: `@{name} = N`");
                     self.err(Token::new(TokKind::Ident, span), msg, "no value");
                     return Err(());
                 }
@@ -214,22 +216,93 @@ impl<'m> Parser<'_, 'm> {
         Ok(Qualifier { kind, span })
     }
 
-    /// `var` at top level: one global per name, appended to `out`.
+    /// Skips daslang's visibility and sharing modifiers after `var`/`let`
+    /// (`private`, `public`, `shared`): they mean nothing to a shader.
+    fn skip_modifiers(&mut self) {
+        loop {
+            let t = self.peek();
+            let next = self.toks.get(self.pos + 1).copied().unwrap_or(self.eof);
+            let modifier = t.kind == TokKind::Ident && matches!(self.text(&t), "private" | "public" | "shared");
+            if modifier && (next.kind == TokKind::Ident || next.is(P::LBrace) || next.is(P::At)) {
+                self.bump();
+            } else {
+                return;
+            }
+        }
+    }
+
+    /// The body of a `var { ... }` or `let { ... }` block: one declaration
+    /// per line (or `;`), each parsed by `one`.
+    fn decl_block(&mut self, mut one: impl FnMut(&mut Self) -> PResult<()>) -> PResult<()> {
+        let open = self.bump(); // `{`
+        loop {
+            while self.raw_peek().kind == TokKind::Newline || self.raw_peek().is(P::Semi) {
+                self.pos += 1;
+            }
+            let t = self.peek();
+            if t.is(P::RBrace) {
+                self.bump();
+                return self.expect_line_end("the block");
+            }
+            if t.kind == TokKind::Eof {
+                let msg = "this block is not closed: expected '}'".to_string();
+                self.err(open, msg, "opened here");
+                return Err(());
+            }
+            one(self)?;
+            let end = self.raw_peek();
+            if !matches!(end.kind, TokKind::Newline | TokKind::P(P::Semi | P::RBrace)) {
+                let msg = format!("expected a new line or ';' after the declaration, found {}", self.describe(&end));
+                self.err(end, msg, "expected the end of the declaration");
+                return Err(());
+            }
+        }
+    }
+
+    /// `var` at top level: one global per name, appended to `out`; a
+    /// `var { ... }` block declares one module variable per line.
     pub(super) fn global(&mut self, out: &mut Vec<Item>) -> PResult<()> {
         let kw = self.bump(); // `var`
+        self.skip_modifiers();
+        if self.peek().is(P::LBrace) {
+            return self.decl_block(|p| {
+                let start = p.peek().span;
+                let name = p.ident("a variable name")?;
+                let ty = if p.eat(P::Colon).is_some() { Some(p.ty()?) } else { None };
+                let init = if p.eat(P::Eq).is_some() {
+                    p.skip_nl();
+                    Some(p.expr()?)
+                } else {
+                    None
+                };
+                if ty.is_none() && init.is_none() {
+                    let t = p.peek();
+                    let msg = format!("expected ':' and a type, or '=' and a value, for variable `{}`, found {}", name.name, p.describe(&t));
+                    p.err(t, msg, "expected ': type' or '= value'");
+                    return Err(());
+                }
+                let span = start.to(p.last);
+                out.push(Item::Global(GlobalVar { qualifiers: Vec::new(), name, ty, init, span }));
+                Ok(())
+            });
+        }
         let mut qualifiers = Vec::new();
         while self.peek().is(P::At) {
             qualifiers.push(self.qualifier()?);
         }
         let names = self.names("a variable name", true)?;
         let t = self.peek();
-        if !t.is(P::Colon) {
+        let ty = if t.is(P::Colon) {
+            self.bump();
+            Some(self.ty()?)
+        } else if qualifiers.is_empty() && t.is(P::Eq) {
+            // A module variable: its type comes from its value.
+            None
+        } else {
             let msg = format!("expected ':' and a type for shader global `{}`, found {}", names.first.name, self.describe(&t));
             self.err(t, msg, "expected ': type'");
             return Err(());
-        }
-        self.bump();
-        let ty = self.ty()?;
+        };
         let init = if self.eat(P::Eq).is_some() {
             self.skip_nl();
             Some(self.expr()?)
@@ -244,8 +317,27 @@ impl<'m> Parser<'_, 'm> {
         Ok(())
     }
 
-    pub(super) fn constant(&mut self) -> PResult<ConstDecl> {
+    /// `let NAME [: type] = value` at top level, or a `let { ... }` block
+    /// of them, appended to `out`.
+    pub(super) fn constants(&mut self, out: &mut Vec<Item>) -> PResult<()> {
         let kw = self.bump(); // `let`
+        self.skip_modifiers();
+        if self.peek().is(P::LBrace) {
+            return self.decl_block(|p| {
+                let start = p.peek().span;
+                let c = p.constant_rest(start)?;
+                out.push(Item::Const(c));
+                Ok(())
+            });
+        }
+        let c = self.constant_rest(kw.span)?;
+        self.expect_line_end("the constant")?;
+        out.push(Item::Const(c));
+        Ok(())
+    }
+
+    /// `NAME [: type] = value` of a constant starting at `start`.
+    fn constant_rest(&mut self, start: Span) -> PResult<ConstDecl> {
         let name = self.ident("a constant name")?;
         let ty = if self.eat(P::Colon).is_some() { Some(self.ty()?) } else { None };
         let t = self.peek();
@@ -257,8 +349,7 @@ impl<'m> Parser<'_, 'm> {
         self.bump();
         self.skip_nl();
         let value = self.expr()?;
-        self.expect_line_end("the constant")?;
-        Ok(ConstDecl { span: kw.span.to(self.last), name, ty, value })
+        Ok(ConstDecl { span: start.to(self.last), name, ty, value })
     }
 
     // ---- types ----

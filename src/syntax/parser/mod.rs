@@ -79,9 +79,7 @@ pub(crate) fn parse_item(toks: &[Token], item: &RawItem, texts: &Texts, diags: &
             let _ = p.global(out);
         }
         ItemKind::Let => {
-            if let Ok(c) = p.constant() {
-                out.push(Item::Const(c));
-            }
+            let _ = p.constants(out);
         }
         ItemKind::Other => {}
     }

@@ -1,0 +1,306 @@
+//! Programs: which entry points a host links into one program, and the
+//! locations and texture units numbered and checked per program, as
+//! daslang does (a file may hold a G-buffer pass, an SSAO pass and a
+//! lighting pass, each starting at location 0 and texture unit 0).
+//!
+//! - A vertex and a fragment entry point form a program (a [`Link`]) when
+//!   the fragment one reads an `@inout` varying the vertex one writes;
+//!   entry points that share no varying with any entry point of the other
+//!   stage (a depth-only pass, a transform-feedback step and its dummy
+//!   fragment program) are linked with each other.
+//! - Locations: an entry point's vertex inputs, and a fragment entry
+//!   point's outputs, are numbered per entry point. Varyings (a vertex
+//!   entry point's outputs, a fragment entry point's inputs) are numbered
+//!   per group of entry points joined by shared varyings, so that both
+//!   ends of every varying agree. `@location = N` is kept as written; the
+//!   others take the lowest location free in their entry point or group,
+//!   in declaration order. Two globals at one location there are an error.
+//! - Texture units: a sampler's `@stage = N` is kept as written; the
+//!   others take the lowest units free in every program and entry point
+//!   that uses them, in declaration order. Two samplers on one unit in one
+//!   program (or one entry point) are an error.
+
+use super::stmts::stage_name;
+use super::*;
+
+/// The location numbering an interface global of an entry point falls in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+enum Scope {
+    /// Vertex inputs or fragment outputs of one entry point.
+    Entry(usize),
+    /// Varyings of a group of entry points joined by shared varyings.
+    Group(usize),
+}
+
+fn qualifier(kind: IoKind) -> &'static str {
+    match kind {
+        IoKind::In => "@in",
+        IoKind::Out => "@out",
+        IoKind::InOut => "@inout",
+    }
+}
+
+impl<'a, 'd> Checker<'a, 'd> {
+    /// Links the checked entry points into programs and numbers and checks
+    /// their locations and texture units (see the module docs).
+    pub(super) fn link_programs(&mut self) {
+        let n = self.out.entry_points.len();
+        let is_vertex = |e: usize, eps: &[EntryPoint]| eps[e].stage == naga::ShaderStage::Vertex;
+        let varyings = |ep: &EntryPoint, globals: &[Global]| -> Vec<GlobalId> {
+            ep.func.uses.keys().copied().filter(|&g| matches!(globals[g].kind, GlobalKind::Io { kind: IoKind::InOut, .. })).collect()
+        };
+        let shared: Vec<Vec<GlobalId>> = self.out.entry_points.iter().map(|ep| varyings(ep, &self.out.globals)).collect();
+        // Groups for varyings: union-find over shared varyings.
+        let mut parent: Vec<usize> = (0..n).collect();
+        fn root(parent: &mut [usize], mut e: usize) -> usize {
+            while parent[e] != e {
+                parent[e] = parent[parent[e]];
+                e = parent[e];
+            }
+            e
+        }
+        let mut links = Vec::new();
+        let mut linked = vec![false; n];
+        let eps = &self.out.entry_points;
+        for v in (0..n).filter(|&e| is_vertex(e, eps)) {
+            for f in (0..n).filter(|&e| !is_vertex(e, eps)) {
+                if shared[v].iter().any(|g| shared[f].contains(g)) {
+                    links.push(Link { vertex: v, fragment: f });
+                    linked[v] = true;
+                    linked[f] = true;
+                    let (a, b) = (root(&mut parent, v), root(&mut parent, f));
+                    parent[a] = b;
+                }
+            }
+        }
+        for v in (0..n).filter(|&e| is_vertex(e, eps) && !linked[e]) {
+            for f in (0..n).filter(|&e| !is_vertex(e, eps) && !linked[e]) {
+                links.push(Link { vertex: v, fragment: f });
+            }
+        }
+        let group: Vec<usize> = (0..n).map(|e| root(&mut parent, e)).collect();
+        self.number_locations(&group);
+        self.number_texture_units(&links);
+        self.assign_bindings();
+        self.out.links = links;
+    }
+
+    /// The WGSL/SPIR-V group and binding of every uniform and sampler an
+    /// entry point uses (see `Global::bind`): the ones written first, then
+    /// the others at the lowest free bindings of their group, in
+    /// declaration order. The GPU module holds every entry point, so
+    /// bindings are unique across the file.
+    fn assign_bindings(&mut self) {
+        let used: std::collections::BTreeSet<GlobalId> = self.out.entry_points.iter().flat_map(|ep| ep.func.uses.keys().copied()).collect();
+        let slots = |g: &Global| match g.kind {
+            GlobalKind::Uniform { .. } => Some(1u32),
+            GlobalKind::Sampler { count, .. } => Some(2 * count.unwrap_or(1)),
+            _ => None,
+        };
+        // (group, binding) -> the resource holding it.
+        let mut taken: BTreeMap<(u32, u32), GlobalId> = BTreeMap::new();
+        let mut pending = Vec::new();
+        for &g in &used {
+            let Some(n) = slots(&self.out.globals[g]) else { continue };
+            let (set, binding) = self.bind_written.get(&g).copied().unwrap_or((None, None));
+            let group = set.map_or(0, |s| s.0);
+            let Some((first, span)) = binding else {
+                pending.push((g, group, n));
+                continue;
+            };
+            if let Some((at, prev)) = (first..first + n).find_map(|b| taken.get(&(group, b)).map(|&p| (b, p))) {
+                let (a, b) = (&self.out.globals[prev].name, &self.out.globals[g].name);
+                let mut d = Diagnostic::error(format!("`{a}` and `{b}` are both bound in group {group} at binding {at}"), span)
+                    .with_label(format!("`{b}` takes binding {first}{}", if n > 1 { format!("..{}", first + n - 1) } else { String::new() }));
+                if let Some(Some((_, p))) = self.bind_written.get(&prev).map(|w| w.1) {
+                    d = d.with_secondary(p, format!("`{a}` is bound here"));
+                }
+                let d = d.with_note("a sampler takes two bindings (its texture, then its sampler), an array of N samplers 2N");
+                self.diags.push(d);
+                continue;
+            }
+            for b in first..first + n {
+                taken.insert((group, b), g);
+            }
+            self.out.globals[g].bind = Some(Bind { group, binding: first });
+        }
+        // Per group, the smallest request that found no room: bindings are
+        // only taken, so a request as large fails too, and is not searched
+        // for (200 000 uniforms would search 1000 bindings each) nor
+        // reported again.
+        let mut no_room: BTreeMap<u32, u32> = BTreeMap::new();
+        for (g, group, n) in pending {
+            if no_room.get(&group).is_some_and(|&m| n >= m) {
+                continue;
+            }
+            let free = |b: u32| (b..b + n).all(|k| !taken.contains_key(&(group, k)));
+            let Some(first) = (0..1000u32.saturating_sub(n - 1)).find(|&b| free(b)) else {
+                self.diags.push(Diagnostic::error(format!("no {n} free bindings left in group {group} (at most 1000)"), self.out.globals[g].span));
+                no_room.insert(group, n);
+                continue;
+            };
+            for b in first..first + n {
+                taken.insert((group, b), g);
+            }
+            self.out.globals[g].bind = Some(Bind { group, binding: first });
+        }
+    }
+
+    /// Where a scope's globals live, for diagnostics.
+    fn scope_text(&self, scope: Scope, group: &[usize]) -> String {
+        let eps = &self.out.entry_points;
+        let describe = |e: usize| format!("{} entry point `{}`", stage_name(eps[e].stage), eps[e].name);
+        match scope {
+            Scope::Entry(e) => describe(e),
+            Scope::Group(g) => {
+                let members: Vec<usize> = (0..eps.len()).filter(|&e| group[e] == g).collect();
+                match members.as_slice() {
+                    [one] => describe(*one),
+                    _ => {
+                        let names: Vec<String> = members.iter().map(|&e| format!("`{}`", eps[e].name)).collect();
+                        format!("the program of {}", join_and(&names))
+                    }
+                }
+            }
+        }
+    }
+
+    fn number_locations(&mut self, group: &[usize]) {
+        // Each scope's globals, in declaration order.
+        let mut scopes: BTreeMap<Scope, Vec<GlobalId>> = BTreeMap::new();
+        let mut placed: Vec<(usize, GlobalId, Scope)> = Vec::new();
+        for (e, ep) in self.out.entry_points.iter().enumerate() {
+            let vertex = ep.stage == naga::ShaderStage::Vertex;
+            for &g in ep.func.uses.keys() {
+                let GlobalKind::Io { kind, .. } = self.out.globals[g].kind else { continue };
+                let varying = match kind {
+                    IoKind::In => !vertex,
+                    IoKind::Out => vertex,
+                    IoKind::InOut => true,
+                };
+                let scope = if varying { Scope::Group(group[e]) } else { Scope::Entry(e) };
+                scopes.entry(scope).or_default().push(g);
+                placed.push((e, g, scope));
+            }
+        }
+        let mut assigned: FxHashMap<(Scope, GlobalId), u32> = FxHashMap::default();
+        for (&scope, globals) in &mut scopes {
+            globals.sort_unstable();
+            globals.dedup();
+            let mut taken: BTreeMap<u32, GlobalId> = BTreeMap::new();
+            for &g in globals.iter() {
+                let GlobalKind::Io { kind, location: Some(l) } = self.out.globals[g].kind else { continue };
+                if let Some(&prev) = taken.get(&l) {
+                    let GlobalKind::Io { kind: prev_kind, .. } = self.out.globals[prev].kind else { continue };
+                    let (a, b) = (&self.out.globals[prev].name, &self.out.globals[g].name);
+                    let what = if prev_kind == kind {
+                        format!("duplicate location {l} for `{}` variables `{a}` and `{b}`", qualifier(kind))
+                    } else {
+                        format!("duplicate location {l} for `{}` variable `{a}` and `{}` variable `{b}`", qualifier(prev_kind), qualifier(kind))
+                    };
+                    let span = self.location_spans.get(&g).copied().unwrap_or(self.out.globals[g].span);
+                    let mut d = Diagnostic::error(format!("{what} in {}", self.scope_text(scope, group)), span).with_label(format!("`{b}` uses location {l}"));
+                    if let Some(&p) = self.location_spans.get(&prev) {
+                        d = d.with_secondary(p, format!("`{a}` uses it too"));
+                    }
+                    self.diags.push(d.with_note("locations are per program: give one of them another `@location = N`, or none to have one assigned"));
+                    continue;
+                }
+                taken.insert(l, g);
+                assigned.insert((scope, g), l);
+            }
+            for &g in globals.iter() {
+                let GlobalKind::Io { location: None, .. } = self.out.globals[g].kind else { continue };
+                let Some(l) = (0..MAX_LOCATIONS).find(|l| !taken.contains_key(l)) else {
+                    let msg = format!("no free location left (at most {MAX_LOCATIONS}) in {}", self.scope_text(scope, group));
+                    self.diags.push(Diagnostic::error(msg, self.out.globals[g].span));
+                    break;
+                };
+                taken.insert(l, g);
+                assigned.insert((scope, g), l);
+            }
+        }
+        for (e, g, scope) in placed {
+            if let Some(&l) = assigned.get(&(scope, g)) {
+                self.out.entry_points[e].locations.insert(g, l);
+            }
+        }
+    }
+
+    fn number_texture_units(&mut self, links: &[Link]) {
+        // The programs and the entry points, each with the samplers it uses.
+        let eps = &self.out.entry_points;
+        let samplers_of = |e: usize| eps[e].func.uses.keys().copied().filter(|&g| matches!(self.out.globals[g].kind, GlobalKind::Sampler { .. }));
+        let mut scopes: Vec<(String, Vec<GlobalId>)> = Vec::new();
+        for l in links {
+            let mut s: Vec<GlobalId> = samplers_of(l.vertex).chain(samplers_of(l.fragment)).collect();
+            s.sort_unstable();
+            s.dedup();
+            let what = format!("the program of vertex entry point `{}` and fragment entry point `{}`", eps[l.vertex].name, eps[l.fragment].name);
+            scopes.push((what, s));
+        }
+        for (e, ep) in eps.iter().enumerate() {
+            scopes.push((format!("{} entry point `{}`", stage_name(ep.stage), ep.name), samplers_of(e).collect()));
+        }
+        let range = |g: GlobalId, globals: &[Global]| match globals[g].kind {
+            GlobalKind::Sampler { texture_unit, count, .. } => texture_unit..texture_unit + count.unwrap_or(1),
+            _ => 0..0,
+        };
+        // Units written in the source: clashes.
+        let mut reported: FxHashSet<(GlobalId, GlobalId)> = FxHashSet::default();
+        let mut taken: Vec<Vec<bool>> = vec![vec![false; 32]; scopes.len()];
+        for (k, (what, samplers)) in scopes.iter().enumerate() {
+            let explicit: Vec<GlobalId> = samplers.iter().copied().filter(|g| self.unit_spans.contains_key(g)).collect();
+            for (i, &b) in explicit.iter().enumerate() {
+                let rb = range(b, &self.out.globals);
+                for u in rb.clone() {
+                    taken[k][u as usize] = true;
+                }
+                for &a in &explicit[..i] {
+                    let ra = range(a, &self.out.globals);
+                    let Some(u) = rb.clone().find(|u| ra.contains(u)) else { continue };
+                    if !reported.insert((a, b)) {
+                        continue;
+                    }
+                    let (an, bn) = (&self.out.globals[a].name, &self.out.globals[b].name);
+                    let d = Diagnostic::error(format!("texture unit {u} is used twice in {what}"), self.unit_spans[&b])
+                        .with_label(format!("`{bn}` is on unit {u}"))
+                        .with_secondary(self.unit_spans[&a], format!("`{an}` is on it too"))
+                        .with_note("texture units are per program: give one of them another `@stage = N`, or none to have one assigned");
+                    self.diags.push(d);
+                }
+            }
+        }
+        // The others: the lowest units free wherever the sampler is used.
+        let used: FxHashSet<GlobalId> = scopes.iter().flat_map(|s| s.1.iter().copied()).collect();
+        for g in 0..self.out.globals.len() {
+            let GlobalKind::Sampler { count, .. } = self.out.globals[g].kind else { continue };
+            if self.unit_spans.contains_key(&g) || !used.contains(&g) {
+                continue;
+            }
+            let count = count.unwrap_or(1) as usize;
+            let homes: Vec<usize> = (0..scopes.len()).filter(|&k| scopes[k].1.contains(&g)).collect();
+            let free = |u: usize| homes.iter().all(|&k| taken[k][u..u + count].iter().all(|t| !t));
+            let Some(unit) = (0..=32 - count.min(32)).find(|&u| free(u)) else {
+                let msg = if count > 1 { format!("no {count} consecutive free texture units left (at most 32)") } else { "no free texture unit left (at most 32)".to_string() };
+                self.diags.push(Diagnostic::error(msg, self.out.globals[g].span));
+                continue;
+            };
+            for &k in &homes {
+                taken[k][unit..unit + count].fill(true);
+            }
+            if let GlobalKind::Sampler { texture_unit, .. } = &mut self.out.globals[g].kind {
+                *texture_unit = unit as u32;
+            }
+        }
+    }
+}
+
+/// `a`, `a and b`, `a, b and c`.
+fn join_and(items: &[String]) -> String {
+    match items {
+        [] => String::new(),
+        [one] => one.clone(),
+        [init @ .., last] => format!("{} and {last}", init.join(", ")),
+    }
+}
