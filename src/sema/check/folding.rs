@@ -30,7 +30,7 @@ const NOTE: &str = "its operands are constants, so it is evaluated when compilin
 /// Reports every constant subexpression of every checked function without
 /// a defined value.
 pub(super) fn check_program(p: &Program, diags: &mut Diagnostics) {
-    let mut f = Folder { consts: &p.consts, diags };
+    let mut f = Folder { consts: &p.consts, struct_names: p.struct_names(), diags };
     for func in p.functions.iter().chain(p.entry_points.iter().map(|e| &e.func)) {
         f.block(&func.body);
     }
@@ -38,6 +38,7 @@ pub(super) fn check_program(p: &Program, diags: &mut Diagnostics) {
 
 struct Folder<'p, 'd> {
     consts: &'p [Const],
+    struct_names: Vec<String>,
     diags: &'d mut Diagnostics,
 }
 
@@ -206,11 +207,25 @@ impl<'p> Folder<'p, '_> {
                 let v = self.expr(x);
                 let k = self.expr(i);
                 let k = match k.as_deref()? {
-                    ConstValue::Int(k) => usize::try_from(*k).ok()?,
-                    ConstValue::Uint(k) => usize::try_from(*k).ok()?,
+                    ConstValue::Int(k) => *k,
+                    ConstValue::Uint(k) => *k as i64,
                     _ => return None,
                 };
-                element(v?, k)
+                // A constant index is checked against the static length
+                // whatever the base (naga and WGSL refuse it out of bounds);
+                // the checker did that for literal indices already.
+                let len = match &x.ty {
+                    Ty::Vector(_, n) => *n as i64,
+                    Ty::Matrix(c, _) => *c as i64,
+                    Ty::Array(_, n) => *n as i64,
+                    _ => return None,
+                };
+                if !(0..len).contains(&k) {
+                    let shown = super::super::types::TyDisplay { ty: &x.ty, struct_names: &self.struct_names }.to_string();
+                    self.error(format!("index {k} is out of bounds for `{shown}` (length {len})"), i.span);
+                    return None;
+                }
+                element(v?, k as usize)
             }
         }
     }
