@@ -30,8 +30,11 @@ const NOTE: &str = "its operands are constants, so it is evaluated when compilin
 /// Reports every constant subexpression of every checked function without
 /// a defined value.
 pub(super) fn check_program(p: &Program, diags: &mut Diagnostics) {
-    let mut f = Folder { consts: &p.consts, struct_names: p.struct_names(), diags };
+    let mut f = Folder { consts: &p.consts, struct_names: p.struct_names(), lets: Vec::new(), locals: &[], diags };
     for func in p.functions.iter().chain(p.entry_points.iter().map(|e| &e.func)) {
+        f.locals = &func.locals;
+        f.lets.clear();
+        f.lets.resize(func.locals.len(), None);
         f.block(&func.body);
     }
 }
@@ -39,6 +42,13 @@ pub(super) fn check_program(p: &Program, diags: &mut Diagnostics) {
 struct Folder<'p, 'd> {
     consts: &'p [Const],
     struct_names: Vec<String>,
+    /// The value of each `let` of the function initialised by a constant
+    /// scalar: naga's writers put a literal bound by `let` in place of
+    /// each use (`let x = 2147483647` then `x + 1` is written
+    /// `2147483647i + 1i`, which WGSL evaluates), so its uses are
+    /// constant too. (A vector or array value is written once, as a `let`.)
+    lets: Vec<Option<ConstValue>>,
+    locals: &'p [Local],
     diags: &'d mut Diagnostics,
 }
 
@@ -53,9 +63,12 @@ impl<'p> Folder<'p, '_> {
 
     fn stmt(&mut self, s: &'p Stmt) {
         match s {
-            Stmt::Local { init, .. } => {
+            Stmt::Local { local, init, .. } => {
                 if let Some(e) = init {
-                    self.expr(e);
+                    let v = self.expr(e);
+                    if !self.locals[*local].mutable {
+                        self.lets[*local] = v.filter(|v| !matches!(**v, ConstValue::Composite(_))).map(Cow::into_owned);
+                    }
                 }
             }
             Stmt::Assign { target, op, value, span } => {
@@ -107,7 +120,8 @@ impl<'p> Folder<'p, '_> {
             ExprKind::Uint(v) => Some(Cow::Owned(ConstValue::Uint(*v))),
             ExprKind::Bool(v) => Some(Cow::Owned(ConstValue::Bool(*v))),
             ExprKind::Const(c) => Some(Cow::Borrowed(&self.consts[*c].value)),
-            ExprKind::Local(_) | ExprKind::Global(_) => None,
+            ExprKind::Local(l) => self.lets.get(*l).and_then(|v| v.clone()).map(Cow::Owned),
+            ExprKind::Global(_) => None,
             ExprKind::Unary(op, x) => {
                 let v = self.expr(x)?;
                 match consts::unary(*op, &v) {
