@@ -19,4 +19,4 @@ bins=""
 for t in "$@"; do bins="$bins --bin $t"; done
 [ $# -gt 0 ] || bins="--bin compile --bin parse --bin preprocess"
 cargo build --release --locked --target "$host" $bins
-echo "$(pwd)/target/$host/release"
+echo "${CARGO_TARGET_DIR:-$(pwd)/target}/$host/release"
