@@ -73,7 +73,8 @@ fn file_at_the_limit() -> String {
 }
 
 fn main() {
-    let shapes: [(&str, fn() -> String); 5] = [
+    type Shape = (&'static str, fn() -> String);
+    let shapes: [Shape; 5] = [
         ("one 10 MB line", huge_line),
         ("200 000 uniforms used", uniforms_used),
         ("a 200 000-field struct", struct_fields),

@@ -249,12 +249,11 @@ impl<'p> Folder<'p, '_> {
     fn runtime_rules(&self, op: BinaryOp, ta: &Ty, tb: &Ty, b: Option<&ConstValue>) -> Result<(), String> {
         let Some(b) = b else { return Ok(()) };
         let integer = |t: &Ty| t.scalar().is_some_and(|s| s.is_integer());
+        let zero = || scalars(b).any(|c| matches!(c, ConstValue::Int(0) | ConstValue::Uint(0)));
         match op {
-            BinaryOp::Div | BinaryOp::Mod if integer(ta) && integer(tb) => {
-                if scalars(b).any(|c| matches!(c, ConstValue::Int(0) | ConstValue::Uint(0))) {
-                    let what = if op == BinaryOp::Div { "integer division" } else { "integer remainder `%`" };
-                    return Err(format!("{what} by zero"));
-                }
+            BinaryOp::Div | BinaryOp::Mod if integer(ta) && integer(tb) && zero() => {
+                let what = if op == BinaryOp::Div { "integer division" } else { "integer remainder `%`" };
+                return Err(format!("{what} by zero"));
             }
             BinaryOp::Shl | BinaryOp::Shr if integer(ta) => {
                 if let Some(k) = scalars(b).find_map(|c| match *c {
