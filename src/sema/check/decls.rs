@@ -476,7 +476,18 @@ impl<'a, 'd> Checker<'a, 'd> {
 
     /// Why a type cannot be a uniform block, if it cannot.
     pub(super) fn uniform_type_problem(&self, ty: &Ty) -> Option<String> {
-        self.uniform_layout(ty, "").err()
+        match self.uniform_layout(ty, "") {
+            Err(e) => Some(e),
+            Ok(l) if l.size.max(l.std_size) > MAX_UNIFORM_BLOCK_SIZE => Some(format!(
+                "a uniform of `{}` takes {}; a uniform block holds at most {MAX_UNIFORM_BLOCK_SIZE} bytes (WebGPU's default binding size limit; GLSL 330 and ES 3.00 guarantee only 16384)",
+                self.show(ty),
+                match l.size.max(l.std_size) {
+                    u32::MAX => "more than 4 GiB".to_string(),
+                    n => format!("{n} bytes"),
+                }
+            )),
+            Ok(_) => None,
+        }
     }
 
     /// The layout of `ty` in a uniform block, checked to be the same under
@@ -484,7 +495,10 @@ impl<'a, 'd> Checker<'a, 'd> {
     /// structs without `@align`/`@size`, so the natural WGSL layout is the
     /// one every target must share).
     pub(super) fn uniform_layout(&self, ty: &Ty, path: &str) -> Result<UniformLayout, String> {
-        let round = |a: u32, x: u32| x.div_ceil(a) * a;
+        // Saturating: sizes of huge types stop at u32::MAX, which the size
+        // limit then refuses (a 65536-element array of 1 MiB structs
+        // overflowed a u32).
+        let round = |a: u32, x: u32| x.div_ceil(a).saturating_mul(a);
         match ty {
             Ty::Scalar(Scalar::Bool) | Ty::Vector(Scalar::Bool, _) => {
                 Err("`bool` cannot live in a uniform block (it has no portable layout); use `int` or `uint`".into())
@@ -516,7 +530,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                         self.show(elem)
                     ));
                 }
-                Ok(UniformLayout { size: stride * n, align: e.align, std_size: std_stride * n, std_align: 16 })
+                Ok(UniformLayout { size: stride.saturating_mul(*n), align: e.align, std_size: std_stride.saturating_mul(*n), std_align: 16 })
             }
             Ty::Struct(id) => {
                 let def = &self.out.structs[*id];
@@ -544,10 +558,10 @@ impl<'a, 'd> Checker<'a, 'd> {
                         }
                     }
                     if matches!(fty, Ty::Struct(_)) {
-                        prev_struct = Some((fname.clone(), off + round(16, m.size)));
+                        prev_struct = Some((fname.clone(), off.saturating_add(round(16, m.size))));
                     }
-                    end = off + m.size;
-                    std_end = std_off + m.std_size;
+                    end = off.saturating_add(m.size);
+                    std_end = std_off.saturating_add(m.std_size);
                     align = align.max(m.align);
                     std_align = std_align.max(round(16, m.std_align));
                 }
