@@ -92,3 +92,26 @@ fn more_bindings_than_a_bind_group_holds_is_a_located_error() {
     assert!(text.contains("no 1 free bindings left in group 0 (at most 1000)") && text.contains(&format!("bindings.das:{}:", n + 1)), "{text}");
     assert_eq!(c.diagnostics.len(), 1, "one mistake, one error:\n{text}");
 }
+
+/// The deepest programs the nesting limits accept (tests/compiler/limits.rs)
+/// give outputs every consumer reads: naga's WGSL parser, glslang and
+/// spirv-val have nesting limits of their own.
+#[test]
+fn the_deepest_accepted_programs_fit_every_consumer() {
+    let fs = |body: &str| format!("var @uniform u : float\nvar @out f_color : float4\n[fragment_program]\ndef fs {{\n    var a = u\n    var v = float4(u)\n{body}\n    f_color = float4(a) + v\n}}\n");
+    let n = 120;
+    let bodies = [
+        format!("    a = {}a{}", "(".repeat(n), ")".repeat(n)),
+        format!("    a = a{}", " + a".repeat(n)),
+        format!("    a = {}a", "- ".repeat(n)),
+        format!("    a = {}a", "a > 0.0 ? a : ".repeat(n / 2)),
+        format!("    a = {}a{}", "sin(".repeat(n), ")".repeat(n)),
+        format!("    v = v{}", ".wzyx".repeat(n)),
+        format!("    if (a > 0.0) {{\n        a = 1.0\n    }}{}", " elif (a > 1.0) {\n        a = 2.0\n    }".repeat(n)),
+        format!("{}    a = {}a{}\n{}", "if (a > 0.0) {\n".repeat(60), "(".repeat(50), ")".repeat(50), "}\n".repeat(60)),
+        format!("{}    a += float(i)\n{}", "for (i in range(3)) {\n".repeat(60), "}\n".repeat(60)),
+    ];
+    for (i, body) in bodies.iter().enumerate() {
+        accepted_everywhere(&format!("deep{i}"), &fs(body));
+    }
+}
