@@ -48,7 +48,10 @@ for t in compile parse preprocess; do
     "$bin/$t" "${opts[@]}" "corpus/$t" >"$log" 2>&1
     status=$?
     after=$(ls "artifacts/$t" | wc -l)
-    execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' | awk '{s+=$1} END {print s+0}')
+    # One process prints its final stats; fork mode prints a running total
+    # (`#N:`) after each job.
+    execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$log" | grep -o '[0-9]*$' | tail -n 1)
+    [ -n "$execs" ] || execs=$(grep -o '^#[0-9]*:' "$log" | tail -n 1 | tr -d '#:')
     cov=$(grep -o 'cov: [0-9]* ft: [0-9]*' "$log" | tail -n 1)
     echo "fuzz: $t: $secs s, $execs executions, $cov, corpus $seeds -> $(ls "corpus/$t" | wc -l), exit $status, $((after - before)) new findings"
     if [ $status -ne 0 ] || [ "$after" -gt "$before" ]; then
