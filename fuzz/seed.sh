@@ -1,5 +1,7 @@
 #!/bin/sh
-# Seeds fuzz/corpus/<target>/ from the project's shaders and the test inputs.
+# Seeds fuzz/corpus/<target>/ from the project's programs, the test inputs
+# (the bad-input corpus included) and daslang's tutorials in
+# ../shared/reference (when present).
 set -eu
 cd "$(dirname "$0")/.."
 for t in preprocess parse compile; do
@@ -7,8 +9,8 @@ for t in preprocess parse compile; do
     find shaders tests -name '*.das' | while read -r f; do
         cp "$f" "fuzz/corpus/$t/seed-$(echo "$f" | tr '/' '_')"
     done
-    if [ -f ../shared/reference/08_shadow.das ]; then
-        cp ../shared/reference/08_shadow.das "fuzz/corpus/$t/seed-08_shadow.das"
-    fi
+    for f in ../shared/reference/*.das ../shared/reference/daslang-tutorials/*.das; do
+        [ -f "$f" ] && cp "$f" "fuzz/corpus/$t/seed-ref-$(basename "$f")"
+    done
 done
 ls fuzz/corpus/compile | wc -l

@@ -115,6 +115,10 @@ impl Diagnostic {
     pub fn emit(&self, map: &SourceMap, out: &mut dyn WriteColor) {
         let config = term::Config::default();
         // Rendering can only fail on an I/O error of `out` itself.
+        if let Some(excerpt) = Excerpt::of(self, map) {
+            let _ = term::emit_to_write_style(out, &config, &excerpt, &excerpt.diagnostic(self.to_codespan(map), &self.label));
+            return;
+        }
         let _ = term::emit_to_write_style(out, &config, map, &self.to_codespan(map));
     }
 
@@ -156,6 +160,123 @@ impl Diagnostic {
             include_chain: self.span.map(|s| map.include_chain(s).into_iter().filter_map(loc).collect()).unwrap_or_default(),
             rendered: self.render(map),
         }
+    }
+}
+
+/// Source lines longer than this many bytes are shown as an excerpt around
+/// the caret: a diagnostic on a 10 MB line printed the whole line (and
+/// codespan took seconds to lay it out).
+pub const MAX_SHOWN_LINE: usize = 240;
+
+/// How much of a long line is shown on each side of the caret, in bytes.
+const EXCERPT_CONTEXT: usize = 60;
+
+/// A diagnostic whose primary location lies on a line longer than
+/// [`MAX_SHOWN_LINE`], rendered against a window of that line: `...`, the
+/// text around the span, `...`, with the real file name, line and column
+/// in the header (codespan asks [`Files`] for them). Other locations of the
+/// diagnostic become notes with their positions.
+struct Excerpt {
+    name: String,
+    text: String,
+    /// The excerpt's part under the caret.
+    label: std::ops::Range<usize>,
+    /// One-based line, and the column of the excerpt's first byte after
+    /// the leading `...`.
+    line: usize,
+    first_column: usize,
+    prefix: usize,
+    /// Secondary labels, as notes.
+    notes: Vec<String>,
+}
+
+impl Excerpt {
+    fn of(d: &Diagnostic, map: &SourceMap) -> Option<Excerpt> {
+        use codespan_reporting::files::Files as _;
+        let (file, range) = map.locate(d.span?)?;
+        let line_index = map.line_index(file, range.start).ok()?;
+        let line = map.line_range(file, line_index).ok()?;
+        let long = |span: Span| {
+            map.locate(span).and_then(|(f, r)| map.line_index(f, r.start).ok().and_then(|i| map.line_range(f, i).ok())).is_some_and(|l| l.len() > MAX_SHOWN_LINE)
+        };
+        if line.len() <= MAX_SHOWN_LINE && !d.secondary.iter().any(|(s, _)| long(*s)) {
+            return None;
+        }
+        let text = &map.file(file).text;
+        let line_end = line.start + text[line.clone()].trim_end_matches(['\n', '\r']).len();
+        let floor = |mut i: usize| {
+            while !text.is_char_boundary(i) {
+                i -= 1;
+            }
+            i
+        };
+        let start = floor(range.start.saturating_sub(EXCERPT_CONTEXT).max(line.start));
+        let caret_end = floor(range.end.min(range.start + EXCERPT_CONTEXT).min(line_end).max(range.start));
+        let end = floor((caret_end + EXCERPT_CONTEXT).min(line_end));
+        let (before, after) = (if start > line.start { "..." } else { "" }, if end < line_end { "..." } else { "" });
+        let excerpt = format!("{before}{}{after}", &text[start..end]);
+        let prefix = before.len();
+        let first_column = text[line.start..start].chars().count() + 1;
+        let notes = d
+            .secondary
+            .iter()
+            .filter_map(|(span, label)| map.line_col(*span).map(|(f, l, c)| format!("{label} (at {}:{l}:{c})", map.file(f).name)))
+            .collect();
+        Some(Excerpt {
+            name: map.file(file).name.clone(),
+            label: prefix + (range.start - start)..prefix + (caret_end - start),
+            text: excerpt,
+            line: line_index + 1,
+            first_column,
+            prefix,
+            notes,
+        })
+    }
+
+    /// `full` (the diagnostic as usual) with its labels replaced by one on
+    /// the excerpt.
+    fn diagnostic(&self, full: CsDiagnostic<usize>, label: &str) -> CsDiagnostic<()> {
+        let mut notes = self.notes.clone();
+        notes.push(format!("the line is too long to show whole; this is an excerpt (lines longer than {MAX_SHOWN_LINE} bytes are cut)"));
+        notes.extend(full.notes);
+        CsDiagnostic {
+            severity: full.severity,
+            code: full.code,
+            message: full.message,
+            labels: vec![Label::primary((), self.label.clone()).with_message(label.to_string())],
+            notes,
+        }
+    }
+}
+
+impl<'a> codespan_reporting::files::Files<'a> for Excerpt {
+    type FileId = ();
+    type Name = &'a str;
+    type Source = &'a str;
+
+    fn name(&'a self, _: ()) -> Result<&'a str, codespan_reporting::files::Error> {
+        Ok(&self.name)
+    }
+
+    fn source(&'a self, _: ()) -> Result<&'a str, codespan_reporting::files::Error> {
+        Ok(&self.text)
+    }
+
+    fn line_index(&'a self, _: (), _: usize) -> Result<usize, codespan_reporting::files::Error> {
+        Ok(0)
+    }
+
+    fn line_range(&'a self, _: (), _: usize) -> Result<std::ops::Range<usize>, codespan_reporting::files::Error> {
+        Ok(0..self.text.len())
+    }
+
+    fn line_number(&'a self, _: (), _: usize) -> Result<usize, codespan_reporting::files::Error> {
+        Ok(self.line)
+    }
+
+    fn column_number(&'a self, _: (), _: usize, byte_index: usize) -> Result<usize, codespan_reporting::files::Error> {
+        let at = byte_index.clamp(self.prefix, self.text.len());
+        Ok(self.first_column + self.text.get(self.prefix..at).map_or(0, |t| t.chars().count()))
     }
 }
 
@@ -296,4 +417,34 @@ pub fn suggest<'a>(name: &str, candidates: impl IntoIterator<Item = &'a str>) ->
         }
     }
     best.map(|(c, _)| c)
+}
+
+#[cfg(test)]
+mod excerpt_tests {
+    use super::*;
+
+    /// A diagnostic on a very long line shows a bounded excerpt with the
+    /// caret under the right character and the real line and column.
+    #[test]
+    fn long_lines_are_shown_as_an_excerpt() {
+        let mut map = SourceMap::new();
+        let line: String = "a + ".repeat(250_000) + "é + bad + b";
+        let text = format!("first\n{line}\nlast\n");
+        let id = map.add("long.das", None, text.clone(), None);
+        let base = map.file(id).base;
+        let at = text.find("bad").unwrap() as u32;
+        let d = Diagnostic::error("unknown name `bad`", Span::new(base + at, base + at + 3)).with_label("here").with_secondary(Span::new(base, base + 5), "the first line");
+        let shown = d.render(&map);
+        assert!(shown.len() < 2000, "{} bytes rendered:\n{}", shown.len(), &shown[..2000.min(shown.len())]);
+        // Column in characters: 1_000_000 ASCII bytes, then `é + `.
+        assert!(shown.contains("long.das:2:1000005"), "{shown}");
+        assert!(shown.contains("the first line (at long.das:1:1)"), "{shown}");
+        let lines: Vec<&str> = shown.lines().collect();
+        let src = lines.iter().find(|l| l.contains("bad + b")).unwrap();
+        let caret = lines.iter().find(|l| l.contains('^')).unwrap();
+        assert_eq!(src.chars().position(|c| c == 'b'), caret.chars().position(|c| c == '^'), "{shown}");
+        // A short line is shown whole, as before.
+        let d = Diagnostic::error("x", Span::new(base, base + 5));
+        assert!(!d.render(&map).contains("excerpt"));
+    }
 }

@@ -141,6 +141,13 @@ impl Compilation {
 pub fn compile_file(path: &Path, opts: &Options) -> Compilation {
     let mut sources = SourceMap::new();
     let name = path.display().to_string();
+    // The outputs are named after the input (`shadow.das` -> `shadow.wgsl`),
+    // and an output name is text: a lossy one would not be the input's.
+    if path.file_stem().is_some_and(|s| s.to_str().is_none()) {
+        let d = Diagnostic::error_nowhere(format!("the file name of `{name}` is not UTF-8, and the outputs are named after it"))
+            .with_note("help: rename the file");
+        return Compilation { sources, diagnostics: vec![d], suppressed_errors: 0, result: None };
+    }
     match syntax::read_source(path) {
         Ok(text) => {
             let root = sources.add(name.clone(), Some(path.to_path_buf()), text, None);

@@ -371,6 +371,44 @@ fn exit_code(c: &Compilation) -> u8 {
     }
 }
 
+#[cfg(not(unix))]
+fn stdout_was_closed_at_start() -> bool {
+    false
+}
+
+/// Writes an output to standard output, which may be a full disk, a pipe
+/// whose reader is gone or a closed descriptor: then the output is lost,
+/// and the run must fail.
+fn write_stdout(bytes: &[u8]) -> Result<(), Diagnostic> {
+    let lost = |e: std::io::Error| Diagnostic::error_nowhere(format!("cannot write the output to standard output: {e}"));
+    let out = std::io::stdout();
+    // Rust's stdout quietly drops what is written to a closed descriptor
+    // (EBADF); duplicating it asks the OS whether it is open.
+    #[cfg(unix)]
+    std::os::fd::AsFd::as_fd(&out).try_clone_to_owned().map_err(lost)?;
+    if stdout_was_closed_at_start() {
+        return Err(lost(std::io::Error::from_raw_os_error(9)));
+    }
+    let mut out = out.lock();
+    out.write_all(bytes).and_then(|_| out.flush()).map_err(lost)
+}
+
+/// Whether the process started with descriptor 1 closed (`>&-`). Rust's
+/// runtime then opens `/dev/null` read-write in its place before `main`,
+/// so writes succeed and vanish; a shell's `> /dev/null` opens it
+/// write-only. Read from Linux's `/proc/self/fdinfo`; elsewhere, false.
+#[cfg(unix)]
+fn stdout_was_closed_at_start() -> bool {
+    use std::os::unix::fs::{FileTypeExt, MetadataExt};
+    let (Ok(null), Ok(fd1)) = (std::fs::metadata("/dev/null"), std::fs::metadata("/proc/self/fd/1")) else { return false };
+    if null.rdev() != fd1.rdev() || !fd1.file_type().is_char_device() {
+        return false;
+    }
+    let Ok(info) = std::fs::read_to_string("/proc/self/fdinfo/1") else { return false };
+    // `flags:` is octal; the access mode is its low two bits (2: O_RDWR).
+    info.lines().find_map(|l| l.strip_prefix("flags:")).and_then(|f| u32::from_str_radix(f.trim(), 8).ok()).is_some_and(|f| f & 3 == 2)
+}
+
 fn usage_error(msg: &str) -> u8 {
     eprintln!("error: {msg}");
     eprintln!("\nFor more information, try '--help'.");
@@ -508,8 +546,10 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
                     watched,
                 );
             }
-            let mut out = std::io::stdout().lock();
-            let _ = out.write_all(&outputs[0].contents).and_then(|_| out.flush());
+            if let Err(e) = write_stdout(&outputs[0].contents) {
+                reporter.plain(&e);
+                code = code.max(EXIT_ERROR);
+            }
             continue;
         }
         let out_dir = batch.out_dir(j, &dir);
@@ -653,8 +693,10 @@ fn reflect(args: &ReflectArgs) -> u8 {
     let code = exit_code(c);
     if let Some(result) = c.result.as_ref().filter(|_| code == 0) {
         if let Some(manifest) = result.artifacts.iter().find(|a| a.target.is_none()) {
-            let mut out = std::io::stdout().lock();
-            let _ = out.write_all(&manifest.contents).and_then(|_| out.flush());
+            if let Err(e) = write_stdout(&manifest.contents) {
+                reporter.plain(&e);
+                return EXIT_ERROR;
+            }
         }
     }
     code
@@ -694,11 +736,11 @@ fn compile_check(args: &CompileArgs, targets: Vec<Target>, inputs: Vec<umbrac::j
     }
     // With a failed input its outputs are unknown, so none is called stale.
     let diffs: Vec<_> = diffs.into_iter().filter(|d| code == 0 || !matches!(d, umbrac::golden::Difference::Stale { .. })).collect();
-    let mut out = std::io::stdout().lock();
-    for d in &diffs {
-        let _ = write!(out, "{d}");
+    let text: String = diffs.iter().map(|d| d.to_string()).collect();
+    if let Err(e) = write_stdout(text.as_bytes()) {
+        reporter.plain(&e);
+        code = code.max(EXIT_ERROR);
     }
-    let _ = out.flush();
     if !diffs.is_empty() {
         eprintln!("error: {} file(s) in `{}` differ from the compiler's output", diffs.len(), dir.display());
         code = code.max(EXIT_ERROR);
@@ -724,11 +766,13 @@ fn bindgen(args: &BindgenArgs) -> u8 {
         }
     };
     match args.out.as_deref().filter(|p| *p != Path::new("-")) {
-        None => {
-            let mut out = std::io::stdout().lock();
-            let _ = out.write_all(text.as_bytes()).and_then(|_| out.flush());
-            0
-        }
+        None => match write_stdout(text.as_bytes()) {
+            Ok(()) => 0,
+            Err(e) => {
+                reporter.plain(&e);
+                EXIT_ERROR
+            }
+        },
         Some(path) => {
             let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
             let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();

@@ -7,13 +7,15 @@
 //!    file (a directory, say) is an error before anything is written;
 //! 3. each file is written to a temporary file in the destination directory
 //!    and fsynced;
-//! 4. the temporaries are renamed over the destinations. Should a rename
+//! 4. with the directory locked against other writers (`flock`), the
+//!    temporaries are renamed over the destinations. Should a rename
 //!    fail part-way, the files already replaced are restored from their
 //!    previous contents (or removed, if they are new), so a failed write
 //!    leaves the directory as it was.
 //!
 //! Each rename is atomic, so a reader (or a crash) never sees a half-written
-//! file. Temporaries are removed on every error path. They are named
+//! file, and two compiles into one directory leave the whole set of one of
+//! them, never a mix. Temporaries are removed on every error path. They are named
 //! `.umbrac-PID-XXXXXX.tmp`: hidden, and never the name of an output. A
 //! process killed mid-write (SIGKILL, power loss) can leave one behind; the
 //! next write into the same directory removes those whose process is gone.
@@ -69,6 +71,21 @@ pub fn write_artifacts(dir: &Path, artifacts: &[Artifact]) -> Result<(), OutputE
 
     remove_stale_temps(dir);
 
+    // Write and fsync every temporary before touching any destination.
+    // A `TempFile` deletes itself when dropped, so every early return below
+    // cleans up.
+    let mut temps = Vec::with_capacity(artifacts.len());
+    for a in artifacts {
+        let dest = dir.join(&a.file_name);
+        let temp = write_temp(dir, &a.contents).map_err(|e| err(&dest, e.to_string()))?;
+        temps.push(temp);
+    }
+
+    // From here to the last rename, no other writer (another process
+    // compiling into the same directory) can rename in between: one
+    // compile's outputs replace another's as a set.
+    let _lock = DirLock::acquire(dir).map_err(|e| err(dir, format!("cannot lock the output directory: {e}")))?;
+
     // Previous contents of each destination, for rollback.
     let mut previous: Vec<Option<Vec<u8>>> = Vec::with_capacity(artifacts.len());
     for a in artifacts {
@@ -79,16 +96,6 @@ pub fn write_artifacts(dir: &Path, artifacts: &[Artifact]) -> Result<(), OutputE
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => previous.push(None),
             Err(e) => return Err(err(&dest, e.to_string())),
         }
-    }
-
-    // Write and fsync every temporary before touching any destination.
-    // A `TempFile` deletes itself when dropped, so every early return below
-    // cleans up.
-    let mut temps = Vec::with_capacity(artifacts.len());
-    for a in artifacts {
-        let dest = dir.join(&a.file_name);
-        let temp = write_temp(dir, &a.contents).map_err(|e| err(&dest, e.to_string()))?;
-        temps.push(temp);
     }
 
     let mut done: Vec<usize> = Vec::new();
@@ -109,6 +116,27 @@ pub fn write_artifacts(dir: &Path, artifacts: &[Artifact]) -> Result<(), OutputE
     }
     sync_dir(dir);
     Ok(())
+}
+
+/// An exclusive advisory lock (`flock`) on an output directory, held by
+/// [`write_artifacts`] around its renames and released when dropped, or
+/// by the OS when the process dies (a killed compile never leaves the
+/// directory locked). It locks the directory itself, so no lock file is
+/// left among the outputs. Where a directory cannot be opened as a file
+/// (not on Unix), there is no lock.
+struct DirLock {
+    _dir: Option<std::fs::File>,
+}
+
+impl DirLock {
+    fn acquire(dir: &Path) -> std::io::Result<DirLock> {
+        if !cfg!(unix) {
+            return Ok(DirLock { _dir: None });
+        }
+        let d = std::fs::File::open(dir)?;
+        d.lock()?;
+        Ok(DirLock { _dir: Some(d) })
+    }
 }
 
 const TEMP_PREFIX: &str = ".umbrac-";

@@ -175,7 +175,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
 
     pub(super) fn block(&mut self, stmts: &[Stmt]) -> Block {
         let mut b = block_for(stmts.len());
-        for s in stmts {
+        for s in super::stmts::live(stmts) {
             self.stmt(s, &mut b);
         }
         self.flush(&mut b);
@@ -184,7 +184,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
 
     /// Lowers statements onto the end of `block`.
     pub(super) fn stmts_into(&mut self, stmts: &[Stmt], block: &mut Block) {
-        for s in stmts {
+        for s in super::stmts::live(stmts) {
             self.stmt(s, block);
         }
         self.flush(block);

@@ -13,9 +13,9 @@ use crate::sema::{self, GlobalKind};
 use crate::source::Span;
 
 impl ModuleBuilder<'_> {
-    /// Declares the sema globals, every one or (`only`) those one entry
-    /// point uses; resources at the bindings sema gave them. `only` is
-    /// for the one-entry GL modules, whose resources have no bindings.
+    /// Declares the sema globals, every one or (`only`) those used: by one
+    /// entry point for the GL modules (whose resources have no bindings),
+    /// by any for the GPU module; resources at the bindings sema gave them.
     /// Only the GPU module describes its resources (`resources`): a GL
     /// module's interface is not kept.
     /// `private`: per global, whether an input or output needs a private

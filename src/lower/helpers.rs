@@ -80,6 +80,12 @@ pub(super) fn specialised_helper(m: &mut ModuleBuilder<'_>, fid: usize, vertex_l
     if vertex_lod {
         name.push_str("_vertex");
     }
+    // Names are at most MAX_IDENT_LEN characters, but a helper with many
+    // sampler parameters would join many: past 512 (GLSL allows 1024, and
+    // naga may add a suffix), the function's name and the copy's number.
+    if name.len() > 2 * crate::syntax::MAX_IDENT_LEN {
+        name = format!("{}_{}", f.name, m.specialised.len());
+    }
     let handle = lower_helper(m, f, &name, vertex_lod, &samplers);
     m.specialised.push(Specialised { function: fid, vertex_lod, samplers, handle });
     handle

@@ -125,7 +125,12 @@ fn build(
         Some(ep) => m.declare_globals(Some(&ep.func.uses), &io.private),
         None => {
             m.declare_consts();
-            m.declare_globals(None, &io.private);
+            // Only what some entry point reaches: a program may declare far
+            // more than the modules can hold (SPIR-V validators refuse more
+            // than 65 535 module-scope variables).
+            let used: std::collections::BTreeMap<sema::GlobalId, crate::source::Span> =
+                p.entry_points.iter().flat_map(|ep| ep.func.uses.iter().map(|(&g, &s)| (g, s))).collect();
+            m.declare_globals(Some(&used), &io.private);
         }
     }
     helpers::lower_helpers(&mut m, only, reach);

@@ -4,9 +4,11 @@
 //! both checks calls and prints the expected signatures in errors:
 //! - `G`: float or floatN (every `G` in one signature is the same type)
 //! - `X`: like `G`, or half or halfN; `x` is the scalar of that `X` (the
-//!   functions WGSL and SPIR-V also have for `f16`)
+//!   functions WGSL and SPIR-V also have for `f16`); `XV`: an `X` that is a
+//!   vector (naga's `dot`, `normalize`, `reflect`, `refract`, `faceforward`
+//!   take vectors, though GLSL's take a float too)
 //! - `N`: a numeric scalar or vector, any scalar type (all `N` alike); `S`
-//!   is the scalar of that `N`
+//!   is the scalar of that `N`; `NS`: a signed one (float or int: `sign`)
 //! - `I`: int or intN / uint or uintN (all `I` alike)
 //! - `B`: boolN; `V`: a numeric vector whose `B` result has the same width
 //! - `f`, `i`, `b`: float, int, bool; `f2`, `f3`, `f4`: float vectors
@@ -167,7 +169,7 @@ const TABLE: &[Entry] = &[
     Entry { name: "round", builtin: Builtin::Math(Mf::Round), sigs: UNARY_X },
     Entry { name: "roundEven", builtin: Builtin::Math(Mf::Round), sigs: UNARY_X },
     Entry { name: "abs", builtin: Builtin::Math(Mf::Abs), sigs: sigs!["N" <- ["N"]] },
-    Entry { name: "sign", builtin: Builtin::Math(Mf::Sign), sigs: sigs!["N" <- ["N"]] },
+    Entry { name: "sign", builtin: Builtin::Math(Mf::Sign), sigs: sigs!["N" <- ["NS"]] },
     Entry { name: "min", builtin: Builtin::Math(Mf::Min), sigs: sigs!["N" <- ["N", "N"]; "N" <- ["N", "S"]] },
     Entry { name: "max", builtin: Builtin::Math(Mf::Max), sigs: sigs!["N" <- ["N", "N"]; "N" <- ["N", "S"]] },
     Entry { name: "clamp", builtin: Builtin::Math(Mf::Clamp), sigs: sigs!["N" <- ["N", "N", "N"]; "N" <- ["N", "S", "S"]] },
@@ -182,12 +184,12 @@ const TABLE: &[Entry] = &[
     Entry { name: "fma", builtin: Builtin::Math(Mf::Fma), sigs: sigs!["X" <- ["X", "X", "X"]] },
     Entry { name: "length", builtin: Builtin::Math(Mf::Length), sigs: sigs!["x" <- ["X"]] },
     Entry { name: "distance", builtin: Builtin::Math(Mf::Distance), sigs: sigs!["x" <- ["X", "X"]] },
-    Entry { name: "dot", builtin: Builtin::Math(Mf::Dot), sigs: sigs!["x" <- ["X", "X"]] },
+    Entry { name: "dot", builtin: Builtin::Math(Mf::Dot), sigs: sigs!["x" <- ["XV", "XV"]] },
     Entry { name: "cross", builtin: Builtin::Math(Mf::Cross), sigs: sigs!["f3" <- ["f3", "f3"]] },
-    Entry { name: "normalize", builtin: Builtin::Math(Mf::Normalize), sigs: UNARY_X },
-    Entry { name: "reflect", builtin: Builtin::Math(Mf::Reflect), sigs: BINARY_X },
-    Entry { name: "refract", builtin: Builtin::Math(Mf::Refract), sigs: sigs!["X" <- ["X", "X", "x"]] },
-    Entry { name: "faceforward", builtin: Builtin::Math(Mf::FaceForward), sigs: sigs!["X" <- ["X", "X", "X"]] },
+    Entry { name: "normalize", builtin: Builtin::Math(Mf::Normalize), sigs: sigs!["X" <- ["XV"]] },
+    Entry { name: "reflect", builtin: Builtin::Math(Mf::Reflect), sigs: sigs!["X" <- ["XV", "XV"]] },
+    Entry { name: "refract", builtin: Builtin::Math(Mf::Refract), sigs: sigs!["X" <- ["XV", "XV", "x"]] },
+    Entry { name: "faceforward", builtin: Builtin::Math(Mf::FaceForward), sigs: sigs!["X" <- ["XV", "XV", "XV"]] },
     Entry { name: "transpose", builtin: Builtin::Math(Mf::Transpose), sigs: sigs!["M" <- ["M"]] },
     Entry { name: "determinant", builtin: Builtin::Math(Mf::Determinant), sigs: sigs!["f" <- ["M"]] },
     Entry { name: "inverse", builtin: Builtin::Inverse, sigs: sigs!["M" <- ["M"]] },
@@ -368,6 +370,12 @@ pub fn all_names() -> impl Iterator<Item = &'static str> {
     TABLE.iter().map(|e| e.name).chain(TEXTURE_FUNCTIONS.iter().map(|(n, _)| *n))
 }
 
+/// The name a builtin is called by in messages (the first of the names that
+/// lower to it: `inversesqrt`, not `rsqrt`).
+pub fn name_of(b: Builtin) -> &'static str {
+    TABLE.iter().find(|e| e.builtin == b).map(|e| e.name).or_else(|| TEXTURE_FUNCTIONS.iter().find(|(_, t)| *t == b).map(|(n, _)| *n)).unwrap_or("builtin")
+}
+
 pub fn is_builtin(name: &str) -> bool {
     entry(name).is_some() || TEXTURE_FUNCTIONS.iter().any(|(n, _)| *n == name)
 }
@@ -432,8 +440,16 @@ fn match_one(pat: &str, ty: &Ty, bind: &mut Bind) -> bool {
             Ty::Scalar(s) if s.is_float() => unify(&mut bind.xs, s),
             _ => false,
         },
+        "XV" => match *ty {
+            Ty::Vector(s, n) if s.is_float() => unify(&mut bind.xs, s) && unify(&mut bind.xw, n),
+            _ => false,
+        },
         "N" => match (ty.scalar(), ty.width()) {
             (Some(s), Some(w)) if s.is_numeric() => unify(&mut bind.n, (s, w)),
+            _ => false,
+        },
+        "NS" => match (ty.scalar(), ty.width()) {
+            (Some(s @ (Scalar::Float | Scalar::Half | Scalar::Int)), Some(w)) => unify(&mut bind.n, (s, w)),
             _ => false,
         },
         "GI" => match *ty {
@@ -521,6 +537,8 @@ fn pattern_text(p: &str) -> &'static str {
         "G" => "floatN",
         "X" => "floatN",
         "x" => "float",
+        "XV" => "float2/3/4",
+        "NS" => "T (float or int)",
         "GI" => "intN",
         "GU" => "uintN",
         "N" => "T",

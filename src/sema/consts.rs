@@ -88,16 +88,7 @@ fn eval(e: &Expr, env: &dyn ConstEnv, depth: usize) -> Result<(ConstValue, Ty), 
                 return Ok((ConstValue::Int(i32::MIN as i64), INT));
             }
             let (v, ty) = eval(x, env, d)?;
-            let r = map_components(&v, &mut |c| match (op, c) {
-                (UnaryOp::Neg, ConstValue::Float(f)) => Some(ConstValue::Float(-f)),
-                (UnaryOp::Neg, ConstValue::Int(i)) => (*i as i32).checked_neg().map(|n| ConstValue::Int(n as i64)),
-                (UnaryOp::Plus, c) => Some(c.clone()),
-                (UnaryOp::Not, ConstValue::Bool(b)) => Some(ConstValue::Bool(!b)),
-                (UnaryOp::BitNot, ConstValue::Int(i)) => Some(ConstValue::Int(!(*i as i32) as i64)),
-                (UnaryOp::BitNot, ConstValue::Uint(u)) => Some(ConstValue::Uint(!(*u as u32) as u64)),
-                _ => None,
-            });
-            r.map(|v| (v, ty)).ok_or_else(|| not_const(e, "this operation"))
+            unary(*op, &v).map(|v| (v, ty)).ok_or_else(|| not_const(e, "this operation"))
         }
         ExprKind::Binary(op, ab) => {
             let (va, ta) = eval(&ab.0, env, d)?;
@@ -154,6 +145,28 @@ fn eval(e: &Expr, env: &dyn ConstEnv, depth: usize) -> Result<(ConstValue, Ty), 
     }
 }
 
+/// `op v` on a constant; `None` where it does not apply or overflows
+/// (`-(-2147483648)`).
+pub fn unary(op: UnaryOp, v: &ConstValue) -> Option<ConstValue> {
+    map_components(v, &mut |c| match (op, c) {
+        (UnaryOp::Neg, ConstValue::Float(f)) => Some(ConstValue::Float(-f)),
+        (UnaryOp::Neg, ConstValue::Int(i)) => (*i as i32).checked_neg().map(|n| ConstValue::Int(n as i64)),
+        (UnaryOp::Plus, c) => Some(c.clone()),
+        (UnaryOp::Not, ConstValue::Bool(b)) => Some(ConstValue::Bool(!b)),
+        (UnaryOp::BitNot, ConstValue::Int(i)) => Some(ConstValue::Int(!(*i as i32) as i64)),
+        (UnaryOp::BitNot, ConstValue::Uint(u)) => Some(ConstValue::Uint(!(*u as u32) as u64)),
+        _ => None,
+    })
+}
+
+/// Whether an error of [`binary`] means the operation is undefined (an
+/// overflow, a division by zero, a non-finite result), rather than one the
+/// constant folder does not do (matrix arithmetic, vector comparisons) or
+/// operands it was not meant for.
+pub fn is_undefined(msg: &str) -> bool {
+    !msg.contains("not supported") && !msg.contains("mismatch")
+}
+
 /// Applies `f` to every scalar of a value.
 fn map_components(v: &ConstValue, f: &mut dyn FnMut(&ConstValue) -> Option<ConstValue>) -> Option<ConstValue> {
     match v {
@@ -188,6 +201,12 @@ fn flat_scalars(v: &ConstValue) -> Cow<'_, [ConstValue]> {
 /// out-of-range conversions undefined); to float rounds to nearest f32;
 /// to bool is `!= 0`.
 pub fn convert(c: &ConstValue, to: Scalar) -> Option<ConstValue> {
+    // To its own type: the value as it is (an `int` above 2^24 does not
+    // survive a trip through f32).
+    match (c, to) {
+        (ConstValue::Int(_), Scalar::Int) | (ConstValue::Uint(_), Scalar::Uint) | (ConstValue::Bool(_), Scalar::Bool) => return Some(c.clone()),
+        _ => {}
+    }
     let f = match *c {
         ConstValue::Float(f) => f,
         ConstValue::Int(i) => i as f64,
@@ -212,7 +231,7 @@ pub fn convert(c: &ConstValue, to: Scalar) -> Option<ConstValue> {
     })
 }
 
-fn construct(ty: &Ty, vals: Vec<(ConstValue, Ty)>) -> Option<ConstValue> {
+pub(crate) fn construct(ty: &Ty, vals: Vec<(ConstValue, Ty)>) -> Option<ConstValue> {
     let flat: Vec<ConstValue> = vals.iter().flat_map(|v| scalars(&v.0)).collect();
     match *ty {
         Ty::Scalar(s) => (flat.len() == 1 && vals.len() == 1).then(|| convert(&flat[0], s)).flatten(),
@@ -300,6 +319,21 @@ pub fn binary(op: BinaryOp, a: &ConstValue, ta: &Ty, b: &ConstValue, tb: &Ty) ->
             let k = amounts[if amounts.len() == 1 { 0 } else { i }];
             if !(0..32).contains(&k) {
                 return Err(format!("shift amount {k} is out of range (0..32) in constant: overflow"));
+            }
+            // WGSL refuses a constant `<<` that loses bits (for `int`, the
+            // sign bit included: `1 << 31`), like an overflowing `*`.
+            let lost = match (v, op) {
+                (ConstValue::Int(x), Shl) => ((*x as i32) << k) >> k != *x as i32,
+                (ConstValue::Uint(x), Shl) => ((*x as u32) << k) >> k != *x as u32,
+                _ => false,
+            };
+            if lost {
+                let shown = match v {
+                    ConstValue::Uint(x) => format!("{x}u"),
+                    ConstValue::Int(x) => x.to_string(),
+                    _ => String::new(),
+                };
+                return Err(format!("`{shown} << {k}` overflows `{}` in constant: bits are shifted out", show(&Ty::Scalar(ta.scalar().unwrap_or(Scalar::Int)))));
             }
             out.push(match (v, op) {
                 (ConstValue::Int(x), Shl) => ConstValue::Int(((*x as i32) << k) as i64),
@@ -403,4 +437,278 @@ pub fn binary(op: BinaryOp, a: &ConstValue, ta: &Ty, b: &ConstValue, tb: &Ty) ->
     // `cmp` with vectors was rejected above.
     let out = (0..w).map(|i| fold(get(&sa, i), get(&sb, i))).collect::<Result<Vec<_>, _>>()?;
     Ok((ConstValue::Composite(out), result_ty))
+}
+
+// ---------------------------------------------------------------- builtin calls on constants
+//
+// The rules for what a builtin call on constant arguments means, in one
+// place: the checker's pass over function bodies (`check/folding.rs`)
+// uses them for every constant subexpression, and top-level constants can
+// use them for their initialisers. A call whose result is undefined in
+// GLSL or an error in WGSL (which evaluates constant expressions when it
+// reads a shader, with naga's front end as one consumer) is an error here,
+// so that every target means the same: docs/language.md, "Constant
+// expressions".
+
+/// Why a constant builtin call has no value: the message of a compile error.
+pub type Undefined = String;
+
+/// The value of builtin `b` called with constant arguments (`args`: the
+/// values and their types; `ret`: the call's type). `Ok(None)`: umbrac
+/// does not evaluate this builtin (textures, derivatives, matrix functions),
+/// so the call is left to the targets; `Err`: the call is undefined for
+/// these arguments.
+pub fn eval_builtin(b: super::builtins::Builtin, args: &[(&ConstValue, &Ty)], ret: &Ty) -> Result<Option<ConstValue>, Undefined> {
+    use super::builtins::Builtin as B;
+    use naga::MathFunction as M;
+    let name = super::builtins::name_of(b);
+    // A component of argument `k` (a scalar argument is broadcast).
+    let comp = |k: usize, i: usize| -> ConstValue {
+        match args[k].0 {
+            ConstValue::Composite(cs) => cs.get(i).cloned().unwrap_or(ConstValue::Bool(false)),
+            c => c.clone(),
+        }
+    };
+    let width = |t: &Ty| t.width().unwrap_or(1) as usize;
+    if args.iter().any(|(_, t)| matches!(t, Ty::Matrix(..) | Ty::Array(..) | Ty::Struct(_) | Ty::Sampler(_))) {
+        return Ok(None);
+    }
+    let f = |c: &ConstValue| match *c {
+        ConstValue::Float(x) => x as f32,
+        _ => f32::NAN,
+    };
+    let out = |v: Vec<ConstValue>| if v.len() == 1 { v.into_iter().next().expect("one") } else { ConstValue::Composite(v) };
+    let finite = |x: f32, what: &str| -> Result<ConstValue, Undefined> {
+        if x.is_finite() {
+            Ok(ConstValue::Float(x as f64))
+        } else {
+            Err(format!("`{name}` {what} is {} in `float`", if x.is_nan() { "NaN" } else { "infinite" }))
+        }
+    };
+    let w = width(ret).max(args.iter().map(|(_, t)| width(t)).max().unwrap_or(1));
+    match b {
+        B::Math(m @ (M::Length | M::Distance | M::Dot | M::Normalize | M::Cross | M::Reflect | M::Refract | M::FaceForward)) => {
+            let v = |k: usize| (0..width(args[k].1)).map(|i| f(&comp(k, i))).collect::<Vec<f32>>();
+            let dot = |a: &[f32], b: &[f32]| a.iter().zip(b).map(|(x, y)| x * y).sum::<f32>();
+            let vec_out = |xs: Vec<f32>, what: &str| xs.into_iter().map(|x| finite(x, what)).collect::<Result<Vec<_>, _>>().map(out);
+            let r = match m {
+                M::Length => finite(dot(&v(0), &v(0)).sqrt(), "of this value")?,
+                M::Distance => {
+                    let d: Vec<f32> = v(0).iter().zip(v(1)).map(|(a, b)| a - b).collect();
+                    finite(dot(&d, &d).sqrt(), "of these values")?
+                }
+                M::Dot => finite(dot(&v(0), &v(1)), "of these vectors")?,
+                M::Normalize => {
+                    let a = v(0);
+                    let len = dot(&a, &a).sqrt();
+                    if len == 0.0 {
+                        return Err("`normalize` of a zero vector is undefined (it divides by its length, 0)".into());
+                    }
+                    vec_out(a.iter().map(|x| x / len).collect(), "of this vector")?
+                }
+                M::Cross => {
+                    let (a, b) = (v(0), v(1));
+                    vec_out(vec![a[1] * b[2] - b[1] * a[2], a[2] * b[0] - b[2] * a[0], a[0] * b[1] - b[0] * a[1]], "of these vectors")?
+                }
+                M::Reflect => {
+                    let (i, n) = (v(0), v(1));
+                    let k = 2.0 * dot(&n, &i);
+                    vec_out(i.iter().zip(&n).map(|(i, n)| i - k * n).collect(), "of these vectors")?
+                }
+                M::Refract => {
+                    let (i, n, eta) = (v(0), v(1), f(args[2].0));
+                    let d = dot(&n, &i);
+                    let k = 1.0 - eta * eta * (1.0 - d * d);
+                    if k < 0.0 {
+                        vec_out(vec![0.0; i.len()], "of these vectors")?
+                    } else {
+                        vec_out(i.iter().zip(&n).map(|(i, n)| eta * i - (eta * d + k.sqrt()) * n).collect(), "of these vectors")?
+                    }
+                }
+                M::FaceForward => {
+                    let (n, i, nref) = (v(0), v(1), v(2));
+                    let s = if dot(&nref, &i) < 0.0 { 1.0 } else { -1.0 };
+                    vec_out(n.iter().map(|x| s * x).collect(), "of these vectors")?
+                }
+                _ => unreachable!("matched above"),
+            };
+            Ok(Some(r))
+        }
+        B::Math(M::Transpose | M::Determinant | M::Inverse) | B::Inverse | B::Derivative(..) => Ok(None),
+        B::Math(m) => {
+            let mut cs = Vec::with_capacity(w);
+            for i in 0..w {
+                let a: Vec<ConstValue> = (0..args.len()).map(|k| comp(k, i)).collect();
+                cs.push(math_component(m, name, &a)?);
+            }
+            Ok(Some(out(cs)))
+        }
+        B::Saturate => (0..w).map(|i| finite(f(&comp(0, i)).clamp(0.0, 1.0), "of this value")).collect::<Result<Vec<_>, _>>().map(|v| Some(out(v))),
+        B::Rcp => (0..w)
+            .map(|i| {
+                let x = f(&comp(0, i));
+                if x == 0.0 {
+                    Err("`rcp(0.0)` divides by zero".into())
+                } else {
+                    finite(1.0 / x, "of this value")
+                }
+            })
+            .collect::<Result<Vec<_>, _>>()
+            .map(|v| Some(out(v))),
+        B::Mod => (0..w)
+            .map(|i| {
+                let (x, y) = (f(&comp(0, i)), f(&comp(1, i)));
+                if y == 0.0 {
+                    Err("`mod(x, 0.0)` divides by zero".into())
+                } else {
+                    finite(x - y * (x / y).floor(), "of these values")
+                }
+            })
+            .collect::<Result<Vec<_>, _>>()
+            .map(|v| Some(out(v))),
+        B::Any | B::All => {
+            let bs: Vec<bool> = (0..width(args[0].1)).map(|i| comp(0, i) == ConstValue::Bool(true)).collect();
+            Ok(Some(ConstValue::Bool(if b == B::Any { bs.iter().any(|&x| x) } else { bs.iter().all(|&x| x) })))
+        }
+        B::Not => Ok(Some(out((0..w).map(|i| ConstValue::Bool(comp(0, i) != ConstValue::Bool(true))).collect()))),
+        B::Compare(op) => {
+            let mut cs = Vec::with_capacity(w);
+            for i in 0..w {
+                let (x, y) = (comp(0, i), comp(1, i));
+                let s = args[0].1.scalar().map(Ty::Scalar).unwrap_or(BOOL);
+                match binary(op, &x, &s, &y, &s) {
+                    Ok((v, _)) => cs.push(v),
+                    Err(_) => return Ok(None),
+                }
+            }
+            Ok(Some(out(cs)))
+        }
+        B::Bitcast(to) => {
+            let mut cs = Vec::with_capacity(w);
+            for i in 0..w {
+                let bits = match comp(0, i) {
+                    ConstValue::Float(x) => (x as f32).to_bits(),
+                    ConstValue::Int(x) => x as i32 as u32,
+                    ConstValue::Uint(x) => x as u32,
+                    _ => return Ok(None),
+                };
+                cs.push(match to {
+                    Scalar::Int => ConstValue::Int(bits as i32 as i64),
+                    Scalar::Uint => ConstValue::Uint(bits as u64),
+                    Scalar::Float => {
+                        let x = f32::from_bits(bits);
+                        if !x.is_finite() {
+                            return Err(format!("`{name}` of 0x{bits:08X} is {} in `float`, which WGSL rejects as a constant", if x.is_nan() { "NaN" } else { "infinite" }));
+                        }
+                        ConstValue::Float(x as f64)
+                    }
+                    // 32 bits are no `half`; left to the target.
+                    Scalar::Half | Scalar::Bool => return Ok(None),
+                });
+            }
+            Ok(Some(out(cs)))
+        }
+        _ => Ok(None),
+    }
+}
+
+/// One component of a component-wise math builtin on constants.
+fn math_component(m: naga::MathFunction, name: &str, a: &[ConstValue]) -> Result<ConstValue, Undefined> {
+    use naga::MathFunction as M;
+    let show = |c: &ConstValue| match *c {
+        ConstValue::Float(x) => format!("{:?}", x as f32),
+        ConstValue::Int(x) => x.to_string(),
+        ConstValue::Uint(x) => format!("{x}u"),
+        ConstValue::Bool(x) => x.to_string(),
+        ConstValue::Composite(_) => "...".into(),
+    };
+    let call = || format!("`{name}({})`", a.iter().map(show).collect::<Vec<_>>().join(", "));
+    let undefined = |why: &str| Err(format!("{} is undefined: {why}", call()));
+    // Integer forms: abs, sign, min, max, clamp.
+    if let Some(ints) = a.iter().map(|c| match *c {
+        ConstValue::Int(x) => Some(x as i32 as i64),
+        ConstValue::Uint(x) => Some(x as u32 as i64),
+        _ => None,
+    }).collect::<Option<Vec<i64>>>() {
+        let unsigned = matches!(a[0], ConstValue::Uint(_));
+        let r = match m {
+            M::Abs if ints[0] == i32::MIN as i64 && !unsigned => return Err(format!("{} overflows `int`", call())),
+            M::Abs => ints[0].abs(),
+            M::Sign => ints[0].signum(),
+            M::Min => ints[0].min(ints[1]),
+            M::Max => ints[0].max(ints[1]),
+            M::Clamp if ints[1] > ints[2] => return undefined("the lower bound is greater than the upper bound"),
+            M::Clamp => ints[0].clamp(ints[1], ints[2]),
+            _ => return Err(format!("{} has no integer form", call())),
+        };
+        return Ok(if unsigned { ConstValue::Uint(r as u64) } else { ConstValue::Int(r) });
+    }
+    let x: Vec<f32> = a.iter().map(|c| match *c {
+        ConstValue::Float(v) => v as f32,
+        _ => f32::NAN,
+    }).collect();
+    let r = match m {
+        M::Sin => x[0].sin(),
+        M::Cos => x[0].cos(),
+        M::Tan => x[0].tan(),
+        M::Asin | M::Acos if x[0].abs() > 1.0 => return undefined("its argument must lie in [-1, 1]"),
+        M::Asin => x[0].asin(),
+        M::Acos => x[0].acos(),
+        M::Atan => x[0].atan(),
+        M::Atan2 if x[0] == 0.0 && x[1] == 0.0 => return undefined("GLSL leaves `atan(0, 0)` undefined"),
+        M::Atan2 => x[0].atan2(x[1]),
+        M::Sinh => x[0].sinh(),
+        M::Cosh => x[0].cosh(),
+        M::Tanh => x[0].tanh(),
+        M::Radians => x[0].to_radians(),
+        M::Degrees => x[0].to_degrees(),
+        M::Exp => x[0].exp(),
+        M::Exp2 => x[0].exp2(),
+        M::Log | M::Log2 if x[0] <= 0.0 => return undefined("its argument must be greater than 0"),
+        M::Log => x[0].ln(),
+        M::Log2 => x[0].log2(),
+        M::Sqrt if x[0] < 0.0 => return undefined("its argument must not be negative"),
+        M::Sqrt => x[0].sqrt(),
+        M::InverseSqrt if x[0] <= 0.0 => return undefined("its argument must be greater than 0"),
+        M::InverseSqrt => 1.0 / x[0].sqrt(),
+        M::Floor => x[0].floor(),
+        M::Ceil => x[0].ceil(),
+        M::Fract => x[0] - x[0].floor(),
+        M::Trunc => x[0].trunc(),
+        M::Round => x[0].round_ties_even(),
+        M::Abs => x[0].abs(),
+        M::Sign => {
+            if x[0] == 0.0 {
+                0.0
+            } else {
+                x[0].signum()
+            }
+        }
+        M::Min => x[0].min(x[1]),
+        M::Max => x[0].max(x[1]),
+        M::Clamp if x[1] > x[2] => return undefined("the lower bound is greater than the upper bound"),
+        M::Clamp => x[0].clamp(x[1], x[2]),
+        M::Mix => x[0] * (1.0 - x[2]) + x[1] * x[2],
+        M::Step => {
+            if x[1] < x[0] {
+                0.0
+            } else {
+                1.0
+            }
+        }
+        M::SmoothStep if x[0] >= x[1] => return undefined("GLSL leaves `smoothstep` undefined unless edge0 < edge1"),
+        M::SmoothStep => {
+            let t = ((x[2] - x[0]) / (x[1] - x[0])).clamp(0.0, 1.0);
+            t * t * (3.0 - 2.0 * t)
+        }
+        M::Pow if x[0] < 0.0 => return undefined("the base must not be negative"),
+        M::Pow if x[0] == 0.0 && x[1] <= 0.0 => return undefined("a zero base needs a positive exponent"),
+        M::Pow => x[0].powf(x[1]),
+        M::Fma => x[0].mul_add(x[1], x[2]),
+        _ => return Err(format!("{} cannot be evaluated when compiling", call())),
+    };
+    if !r.is_finite() {
+        return Err(format!("{} is {} in `float`", call(), if r.is_nan() { "NaN" } else { "infinite" }));
+    }
+    Ok(ConstValue::Float(r as f64))
 }

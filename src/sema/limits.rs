@@ -21,3 +21,7 @@ pub const CALL_DEPTH: usize = 4;
 pub const MAX_CONST_CHAIN: usize = 64;
 /// Deepest nesting of struct and array types (`S { t : T[2] }` is 2).
 pub const MAX_TYPE_DEPTH: usize = 32;
+/// Largest uniform block, in bytes: WebGPU's default (and commonly its
+/// only) `maxUniformBufferBindingSize`, and what most GL drivers give
+/// (`GL_MAX_UNIFORM_BLOCK_SIZE`; the GL 3.3 and GLES 3.0 minimum is 16384).
+pub const MAX_UNIFORM_BLOCK_SIZE: u32 = 65_536;

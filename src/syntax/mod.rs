@@ -27,7 +27,7 @@ use std::path::{Path, PathBuf};
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::source::{FileId, SourceMap, Span};
 
-pub use parser::MAX_DEPTH;
+pub use parser::{MAX_DEPTH, MAX_IDENT_LEN};
 pub use preprocess::{MAX_FILE_SIZE, MAX_INCLUDE_DEPTH};
 
 #[derive(Clone, Debug, Default)]
@@ -44,15 +44,14 @@ pub struct ParseOptions {
 
 /// Reads a source file as UTF-8 text (at most [`MAX_FILE_SIZE`] bytes).
 pub fn read_source(path: &Path) -> Result<String, Diagnostic> {
-    let cannot = |e: std::io::Error| Diagnostic::error_nowhere(format!("cannot read `{}`: {e}", path.display()));
-    let meta = std::fs::metadata(path).map_err(cannot)?;
-    if meta.len() > MAX_FILE_SIZE as u64 {
-        return Err(too_large(path, meta.len()));
-    }
-    let bytes = std::fs::read(path).map_err(cannot)?;
-    if bytes.len() > MAX_FILE_SIZE {
-        return Err(too_large(path, bytes.len() as u64));
-    }
+    let bytes = match read_bounded(path, MAX_FILE_SIZE) {
+        Ok(b) => b,
+        Err(ReadError::TooLarge(len)) => return Err(too_large(path, len)),
+        Err(ReadError::NotAFile(what)) => {
+            return Err(Diagnostic::error_nowhere(format!("cannot read `{}`: it is {what}, not a regular file", path.display())));
+        }
+        Err(ReadError::Io(e)) => return Err(Diagnostic::error_nowhere(format!("cannot read `{}`: {e}", path.display()))),
+    };
     String::from_utf8(bytes).map_err(|e| {
         let at = invalid_utf8_at(e.as_bytes(), e.utf8_error().valid_up_to());
         Diagnostic::error_nowhere(format!("`{}` is not UTF-8 text: {at}", path.display()))
@@ -72,6 +71,66 @@ pub(crate) fn invalid_utf8_at(bytes: &[u8], valid_up_to: usize) -> String {
     let column = std::str::from_utf8(&before[line_start..]).map_or(0, |s| s.chars().count()) + 1;
     let byte = bytes.get(valid_up_to).copied().unwrap_or(0);
     format!("invalid byte 0x{byte:02X} at line {line}, column {column} (byte offset {valid_up_to})")
+}
+
+/// Why [`read_bounded`] read nothing.
+#[derive(Debug)]
+pub(crate) enum ReadError {
+    /// More than the limit: the size, or the limit + 1 where reading stopped.
+    TooLarge(u64),
+    /// A FIFO, a device, a socket or a directory: opening a FIFO blocks
+    /// until someone writes, and `/dev/zero` never ends.
+    NotAFile(&'static str),
+    Io(std::io::Error),
+}
+
+/// Reads a regular file of at most `limit` bytes. What the path is is
+/// checked before it is opened (a FIFO would block the open), and at most
+/// `limit + 1` bytes are read whatever the file claims, so a file that
+/// grows while it is read cannot exhaust memory either.
+pub(crate) fn read_bounded(path: &Path, limit: usize) -> Result<Vec<u8>, ReadError> {
+    use std::io::Read;
+    let meta = std::fs::metadata(path).map_err(ReadError::Io)?;
+    if !meta.is_file() {
+        return Err(ReadError::NotAFile(file_kind(&meta)));
+    }
+    if meta.len() > limit as u64 {
+        return Err(ReadError::TooLarge(meta.len()));
+    }
+    let file = std::fs::File::open(path).map_err(ReadError::Io)?;
+    // The path may have been replaced between the two looks.
+    let opened = file.metadata().map_err(ReadError::Io)?;
+    if !opened.is_file() {
+        return Err(ReadError::NotAFile(file_kind(&opened)));
+    }
+    let mut bytes = Vec::with_capacity(opened.len().min(limit as u64) as usize);
+    file.take(limit as u64 + 1).read_to_end(&mut bytes).map_err(ReadError::Io)?;
+    if bytes.len() > limit {
+        return Err(ReadError::TooLarge(bytes.len() as u64));
+    }
+    Ok(bytes)
+}
+
+/// What a path that is not a regular file is, for messages.
+fn file_kind(meta: &std::fs::Metadata) -> &'static str {
+    if meta.is_dir() {
+        return "a directory";
+    }
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        let t = meta.file_type();
+        if t.is_fifo() {
+            return "a FIFO";
+        }
+        if t.is_char_device() || t.is_block_device() {
+            return "a device";
+        }
+        if t.is_socket() {
+            return "a socket";
+        }
+    }
+    "not a regular file"
 }
 
 fn too_large(path: &Path, len: u64) -> Diagnostic {

@@ -534,19 +534,24 @@ impl Pp<'_> {
             self.diags.push(d);
             return;
         }
-        let bytes = match std::fs::read(&path) {
+        let bytes = match super::read_bounded(&path, MAX_FILE_SIZE) {
             Ok(b) => b,
-            Err(e) => {
+            Err(super::ReadError::TooLarge(len)) => {
+                let msg = format!("include file `{}` is too large ({len} bytes; limit {MAX_FILE_SIZE})", path.display());
+                self.diags.push(Diagnostic::error(msg, target.span).with_label("too large"));
+                return;
+            }
+            Err(super::ReadError::NotAFile(what)) => {
+                let msg = format!("cannot read include file `{}`: it is {what}, not a regular file", path.display());
+                self.diags.push(Diagnostic::error(msg, target.span).with_label("unreadable"));
+                return;
+            }
+            Err(super::ReadError::Io(e)) => {
                 let msg = format!("cannot read include file `{}`: {e}", path.display());
                 self.diags.push(Diagnostic::error(msg, target.span).with_label("unreadable"));
                 return;
             }
         };
-        if bytes.len() > MAX_FILE_SIZE {
-            let msg = format!("include file `{}` is too large ({} bytes; limit {MAX_FILE_SIZE})", path.display(), bytes.len());
-            self.diags.push(Diagnostic::error(msg, target.span).with_label("too large"));
-            return;
-        }
         self.total_size += bytes.len();
         if self.total_size > MAX_TOTAL_SIZE {
             let msg = format!("too much source text read through includes (limit {MAX_TOTAL_SIZE} bytes)");

@@ -221,3 +221,59 @@ fn folded_values_are_rounded_to_f32_at_every_step() {
     assert!(got.contains(&16777216.0f32.to_bits()), "{wgsl}");
     assert!(!got.contains(&16777218.0f32.to_bits()), "{wgsl}");
 }
+
+/// A constructor of a constant integer keeps its value: `int2(2147483647)`
+/// was converted through f32 and became 2147483520.
+#[test]
+fn integer_constructors_keep_every_bit() {
+    let src = "var @uniform u_x : float4\nvar @out f_color : float4\nlet K = int2(2147483647)\nlet U = uint3(4294967295u)\n[vertex_program]\ndef vs {\n    gl_Position = u_x\n}\n[fragment_program]\ndef fs {\n    f_color = u_x * float(K.y) * float(U.z)\n}\n";
+    let c = compile_source("ints.das", src, &Options::default());
+    assert!(!c.has_errors(), "{}", c.render_diagnostics());
+    let wgsl = c.result.as_ref().unwrap().artifact("ints.wgsl").unwrap().text().into_owned();
+    assert!(wgsl.contains("2147483647i, 2147483647i") && wgsl.contains("4294967295u"), "{wgsl}");
+}
+
+/// Constant subexpressions inside function bodies with a defined value
+/// compile, and naga's WGSL front end accepts what umbrac writes for them:
+/// the rules reject what is undefined, not everything near an edge.
+#[test]
+fn defined_constant_subexpressions_compile_and_naga_reads_them_back() {
+    let cases = [
+        "float(1 << 30)",
+        "float(1u << 31u)",
+        "float(-1 << 31)",
+        "float(-2147483647 / -1)",
+        "float(2147483647 % -1)",
+        "float(7 >> 31)",
+        "clamp(u_x.x, 0.0, 0.0)",
+        "clamp(1.0, 0.0, 1.0)",
+        "pow(0.0, 2.0)",
+        "pow(2.0, -1.0)",
+        "sqrt(0.0)",
+        "log(1.0)",
+        "acos(-1.0) + asin(1.0)",
+        "exp(88.0)",
+        "smoothstep(0.0, 1.0, 0.5)",
+        "atan2(0.0, 1.0)",
+        "length(float3(1.0e18))",
+        "dot(normalize(float3(1.0, 2.0, 3.0)), float3(1.0))",
+        "mod(-1.0, 3.0)",
+        "float(abs(-2147483647))",
+        "intBitsToFloat(1065353216)",
+        "float(sign(-3))",
+        "rcp(4.0)",
+        "float(u_x.x > 0.0 ? 1 : 2)",
+        "float(int(3.0e9))",
+        "float((int2(2147483647) - int2(1)).x)",
+    ];
+    for e in cases {
+        let src = format!("var @uniform u_x : float4\nvar @out f_color : float4\n[fragment_program]\ndef fs {{\n    f_color = u_x * float4({e})\n}}\n");
+        let c = compile_source("defined.das", &src, &Options::default());
+        assert!(!c.has_errors(), "`{e}`:\n{}", c.render_diagnostics());
+        let wgsl = c.result.as_ref().unwrap().artifact("defined.wgsl").unwrap().text().into_owned();
+        let m = naga::front::wgsl::parse_str(&wgsl).unwrap_or_else(|err| panic!("`{e}`: naga rejects\n{}\n{wgsl}", err.emit_to_string(&wgsl)));
+        naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga::valid::Capabilities::default())
+            .validate(&m)
+            .unwrap_or_else(|err| panic!("`{e}`: {}", err.emit_to_string(&wgsl)));
+    }
+}

@@ -25,6 +25,7 @@ mod check;
 #[cfg(feature = "cli")]
 mod cli;
 mod constants;
+mod consumers_accept;
 mod device_limits;
 #[cfg(feature = "deserialize")]
 mod emit;
@@ -33,6 +34,8 @@ mod language_l;
 #[cfg(feature = "golden")]
 mod golden;
 mod language_f;
+#[cfg(feature = "cli")]
+mod hostile_inputs;
 mod limits;
 #[cfg(feature = "deserialize")]
 mod programs;

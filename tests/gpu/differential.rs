@@ -58,7 +58,8 @@ const CASES: &[(&str, R)] = &[
     // Shifts: arithmetic on int, logical on uint; int or uint amounts.
     ("{-1} >> {1}", R::Int),
     ("{-8} >> {2u}", R::Int),
-    ("{1} << {31}", R::Int),
+    ("{-1} << {31}", R::Int),
+    ("{1} << {30}", R::Int),
     ("{4294967295u} >> {4u}", R::Uint),
     ("{3u} << {30}", R::Uint),
     // Bitwise operators on negative ints.
@@ -101,6 +102,10 @@ const REFUSED: &[(&str, &str)] = &[
     ("-2147483648 / -1", "overflow"),
     ("0u - 1u", "overflow"),
     ("1 << 32", "overflow"),
+    // A `<<` that shifts out bits (the sign bit of an int included): WGSL
+    // refuses it as a constant expression.
+    ("1 << 31", "overflows"),
+    ("3u << 31u", "overflows"),
 ];
 
 fn operand(raw: &str, runtime: bool) -> String {

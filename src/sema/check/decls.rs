@@ -54,17 +54,22 @@ impl<'a, 'd> Checker<'a, 'd> {
             match item {
                 ast::Item::Struct(s) => {
                     let id = self.structs[s.name.name.as_str()];
-                    let mut fields: Vec<(String, Ty, Span)> = Vec::new();
+                    let mut fields: Vec<(String, Ty, Span)> = Vec::with_capacity(s.fields.len());
+                    // Name -> index, for the duplicate check here and field
+                    // lookups later: one hash lookup each, whatever the size.
+                    let mut index: FxHashMap<&'a str, u32> = FxHashMap::with_capacity_and_hasher(s.fields.len(), Default::default());
                     // Initial values are rare: a table only where there are some.
                     let inits = s.fields.iter().any(|f| f.init.is_some());
                     for f in &s.fields {
                         // A field without a type takes its initial value's,
                         // once constants are known (below).
                         let ty = f.ty.as_ref().map_or(Ty::Error, |t| self.resolve_type(t));
-                        if let Some((_, _, prev)) = fields.iter().find(|(n, _, _)| *n == *f.name.name) {
+                        if let Some(&prev) = index.get(f.name.name.as_str()) {
                             let d = Diagnostic::error(format!("field `{}` is declared twice", f.name.name), f.name.span)
-                                .with_secondary(*prev, "first declared here");
+                                .with_secondary(fields[prev as usize].2, "first declared here");
                             self.diags.push(d);
+                        } else {
+                            index.insert(&f.name.name, fields.len() as u32);
                         }
                         if !ty.is_value() && !ty.is_error() {
                             let d = Diagnostic::error(format!("a struct field cannot have type `{}`", self.show(&ty)), f.ty.as_ref().map_or(f.span, |t| t.span));
@@ -80,6 +85,8 @@ impl<'a, 'd> Checker<'a, 'd> {
                         self.diags.push(d);
                     }
                     self.out.structs[id].fields = fields;
+                    self.field_index.resize_with(self.out.structs.len(), FxHashMap::default);
+                    self.field_index[id] = index;
                 }
                 ast::Item::Const(k) => {
                     self.check_unique(&mut seen, &k.name);
@@ -544,13 +551,24 @@ impl<'a, 'd> Checker<'a, 'd> {
     /// padded (see `lower::packed`), so only the structs in it must share
     /// a layout.
     pub(super) fn uniform_type_problem(&self, ty: &Ty) -> Option<String> {
-        match ty {
-            Ty::Struct(_) => self.uniform_layout(ty, "").err(),
+        let layout = match ty {
             // Arrays of what the buffer pads (scalars, vectors, matrices);
             // an array of structs keeps the struct's layout.
-            Ty::Array(elem, _) if matches!(**elem, Ty::Scalar(_) | Ty::Vector(..) | Ty::Matrix(..)) => self.uniform_type_problem(elem),
-            Ty::Scalar(Scalar::Bool) | Ty::Vector(Scalar::Bool, _) | Ty::Matrix(..) => None,
-            _ => self.uniform_layout(ty, "").err(),
+            Ty::Array(elem, _) if matches!(**elem, Ty::Scalar(_) | Ty::Vector(..) | Ty::Matrix(..)) => return self.uniform_type_problem(elem),
+            Ty::Scalar(Scalar::Bool) | Ty::Vector(Scalar::Bool, _) | Ty::Matrix(..) => return None,
+            _ => self.uniform_layout(ty, ""),
+        };
+        match layout {
+            Err(e) => Some(e),
+            Ok(l) if l.size.max(l.std_size) > MAX_UNIFORM_BLOCK_SIZE => Some(format!(
+                "a uniform of `{}` takes {}; a uniform block holds at most {MAX_UNIFORM_BLOCK_SIZE} bytes (WebGPU's default binding size limit; GLSL 330 and ES 3.00 guarantee only 16384)",
+                self.show(ty),
+                match l.size.max(l.std_size) {
+                    u32::MAX => "more than 4 GiB".to_string(),
+                    n => format!("{n} bytes"),
+                }
+            )),
+            Ok(_) => None,
         }
     }
 
@@ -559,7 +577,10 @@ impl<'a, 'd> Checker<'a, 'd> {
     /// structs without `@align`/`@size`, so the natural WGSL layout is the
     /// one every target must share).
     pub(super) fn uniform_layout(&self, ty: &Ty, path: &str) -> Result<UniformLayout, String> {
-        let round = |a: u32, x: u32| x.div_ceil(a) * a;
+        // Saturating: sizes of huge types stop at u32::MAX, which the size
+        // limit then refuses (a 65536-element array of 1 MiB structs
+        // overflowed a u32).
+        let round = |a: u32, x: u32| x.div_ceil(a).saturating_mul(a);
         match ty {
             Ty::Scalar(Scalar::Bool) | Ty::Vector(Scalar::Bool, _) => {
                 Err("`bool` cannot live in a uniform block (it has no portable layout); use `int` or `uint`".into())
@@ -592,7 +613,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                         self.show(elem)
                     ));
                 }
-                Ok(UniformLayout { size: stride * n, align: e.align, std_size: std_stride * n, std_align: 16 })
+                Ok(UniformLayout { size: stride.saturating_mul(*n), align: e.align, std_size: std_stride.saturating_mul(*n), std_align: 16 })
             }
             Ty::Struct(id) => {
                 let def = &self.out.structs[*id];
@@ -620,10 +641,10 @@ impl<'a, 'd> Checker<'a, 'd> {
                         }
                     }
                     if matches!(fty, Ty::Struct(_)) {
-                        prev_struct = Some((fname.clone(), off + round(16, m.size)));
+                        prev_struct = Some((fname.clone(), off.saturating_add(round(16, m.size))));
                     }
-                    end = off + m.size;
-                    std_end = std_off + m.std_size;
+                    end = off.saturating_add(m.size);
+                    std_end = std_off.saturating_add(m.std_size);
                     align = align.max(m.align);
                     std_align = std_align.max(round(16, m.std_align));
                 }
@@ -693,6 +714,10 @@ impl<'a, 'd> Checker<'a, 'd> {
                 if elem_ty.is_error() {
                     return Ty::Error;
                 }
+                if matches!(elem_ty, Ty::Array(..)) {
+                    self.diags.push(array_of_arrays(t.span));
+                    return Ty::Error;
+                }
                 Ty::Array(Box::new(elem_ty), n)
             }
         }
@@ -738,6 +763,11 @@ impl<'a, 'd> Checker<'a, 'd> {
                 return None;
             }
         };
+        if matches!(&ty, Ty::Array(elem, _) if matches!(**elem, Ty::Array(..))) {
+            self.diags.push(array_of_arrays(decl.value.span));
+            self.failed_consts.insert(name);
+            return None;
+        }
         if let Some(t) = &decl.ty {
             let declared = self.resolve_type(t);
             if !declared.is_error() && declared != ty {
@@ -756,6 +786,16 @@ impl<'a, 'd> Checker<'a, 'd> {
         Some(id)
     }
 
+}
+
+/// An array whose elements are arrays: naga writes them only for GLSL 430
+/// and GLSL ES 3.10 and later (`ARRAY_OF_ARRAYS`), not for the 330 and
+/// ES 3.00 targets.
+pub(super) fn array_of_arrays(span: Span) -> Diagnostic {
+    Diagnostic::error("arrays of arrays are not supported", span)
+        .with_label("an array of arrays")
+        .with_note("GLSL 330 and GLSL ES 3.00 have no arrays of arrays")
+        .with_note("help: use one array of N * M elements indexed by `i * M + j`, or an array of structs holding an array")
 }
 
 /// Lets the constant evaluator look up other constants through the checker.

@@ -227,6 +227,10 @@ impl<'a, 'd> Checker<'a, 'd> {
                     self.diags.push(Diagnostic::error(format!("an array needs 1 to {MAX_ARRAY_LEN} elements"), span));
                     return err_expr(span);
                 }
+                if matches!(elem_ty, Ty::Array(..)) {
+                    self.diags.push(super::decls::array_of_arrays(span));
+                    return err_expr(span);
+                }
                 let ty = Ty::Array(Box::new(elem_ty), xs.len() as u32);
                 mk(ExprKind::Construct(xs), ty)
             }
@@ -323,7 +327,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             Ty::Error => err_expr(span),
             Ty::Struct(sid) => {
                 let fields = &self.out.structs[*sid].fields;
-                match fields.iter().position(|(n, _, _)| *n == *name.name) {
+                match self.field_index.get(*sid).and_then(|ix| ix.get(name.name.as_str())).map(|&i| i as usize) {
                     Some(i) => {
                         let ty = fields[i].1.clone();
                         Expr { kind: ExprKind::Field(Box::new(b), i as u32), ty, span }

@@ -17,6 +17,7 @@ mod calls;
 mod decls;
 mod enums;
 mod exprs;
+mod folding;
 mod loops;
 mod math;
 mod programs;
@@ -48,6 +49,7 @@ pub fn check_for_targets(program: &ast::Program, targets: &[crate::target::Targe
     c.targets = if targets.is_empty() { crate::target::Target::ALL.to_vec() } else { targets.to_vec() };
     c.declare();
     c.check_entry_points();
+    folding::check_program(&c.out, c.diags);
     c.link_programs();
     if c.diags.has_errors() {
         None
@@ -209,6 +211,8 @@ struct Checker<'a, 'd> {
     failed_inits: FxHashSet<(StructId, usize)>,
     entry_decls: Vec<(&'a ast::FunctionDecl, naga::ShaderStage)>,
     builtin_vars: FxHashMap<BuiltinVar, GlobalId>,
+    /// Per struct, its field names' indices.
+    field_index: Vec<FxHashMap<&'a str, u32>>,
     /// The `@location = N` qualifier of each global that has one, and the
     /// `@stage = N` of each sampler that has one (for clash diagnostics).
     location_spans: FxHashMap<GlobalId, Span>,
@@ -270,6 +274,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             failed_inits: FxHashSet::default(),
             entry_decls: Vec::new(),
             builtin_vars: FxHashMap::default(),
+            field_index: Vec::new(),
             location_spans: FxHashMap::default(),
             unit_spans: FxHashMap::default(),
             bind_written: FxHashMap::default(),

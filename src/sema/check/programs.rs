@@ -163,14 +163,23 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
             placed[i] = Some(first);
         }
+        // Per group, the smallest request that found no room: bindings are
+        // only taken, so a request as large fails too, and is not searched
+        // for (200 000 samplers would search 1000 bindings each) nor
+        // reported again.
+        let mut no_room: BTreeMap<u32, u32> = BTreeMap::new();
         for (i, h) in holders.iter().enumerate() {
             if h.written.is_some() {
                 continue;
             }
             let (group, n) = (h.group, h.slots);
+            if no_room.get(&group).is_some_and(|&m| n >= m) {
+                continue;
+            }
             let free = |b: u32| (b..b + n).all(|k| !taken.contains_key(&(group, k)));
             let Some(first) = (0..1000u32.saturating_sub(n - 1)).find(|&b| free(b)) else {
                 self.diags.push(Diagnostic::error(format!("no {n} free bindings left in group {group} (at most 1000)"), self.out.globals[h.globals[0]].span));
+                no_room.insert(group, n);
                 continue;
             };
             for b in first..first + n {

@@ -12,6 +12,12 @@ impl<'a, 'd> Checker<'a, 'd> {
         self.out.entry_points.reserve(entries.len());
         for (decl, stage) in entries {
             let name = entry_name(decl);
+            if let Some(why) = entry_name_problem(&name) {
+                let at = decl.annotations.iter().flat_map(|a| &a.args).find(|a| a.name.name == "name").and_then(|a| a.value.as_ref()).map_or(decl.name.span, |v| v.span);
+                let shown: String = if name.len() > 64 { format!("{}...", name.chars().take(32).collect::<String>()) } else { name.clone() };
+                self.diags.push(Diagnostic::error(format!("entry point name {shown:?} {why}"), at).with_note("it names the entry point in every output and the output files"));
+                continue;
+            }
             if let Some(prev) = names.insert(name.clone(), decl.name.span) {
                 let d = Diagnostic::error(format!("two entry points are named `{name}`"), decl.name.span).with_secondary(prev, "first one here");
                 self.diags.push(d);
@@ -647,4 +653,25 @@ fn count_locals(stmts: &[ast::Stmt]) -> usize {
             _ => 0,
         })
         .sum()
+}
+
+/// Why a name given with `[vertex_program(name = "...")]` cannot name an
+/// entry point: the outputs, the manifest and the file names all use it
+/// as it is, so it must be a plain identifier within the name limit.
+fn entry_name_problem(name: &str) -> Option<String> {
+    let limit = crate::syntax::MAX_IDENT_LEN;
+    let mut chars = name.chars();
+    if !chars.next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_') || !chars.all(|c| c.is_ascii_alphanumeric() || c == '_') {
+        return Some("is not a name: use letters, digits and `_`, starting with a letter or `_`".into());
+    }
+    if name.len() > limit {
+        return Some(format!("is {} characters long; names are limited to {limit}", name.len()));
+    }
+    // naga's WGSL writer renames what WGSL reserves (`fn` becomes `fn_`),
+    // and the manifest would name an entry point the WGSL does not have.
+    let wgsl = naga::keywords::wgsl::RESERVED.iter().chain(naga::keywords::wgsl::BUILTIN_IDENTIFIERS);
+    if wgsl.clone().any(|k| *k == name) || name.starts_with("__") {
+        return Some("is reserved in WGSL; choose another".into());
+    }
+    None
 }

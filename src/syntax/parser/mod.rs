@@ -20,6 +20,10 @@ use super::token::{Kw, Texts, TokKind, Token, P};
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::source::Span;
 
+/// The longest name a shader may declare, in characters (names are ASCII).
+/// GLSL allows 1024; what the outputs build from a name must fit too.
+pub const MAX_IDENT_LEN: usize = 256;
+
 /// Deepest nesting of expressions and blocks together.
 pub const MAX_DEPTH: u32 = 128;
 
@@ -303,6 +307,15 @@ impl<'m> Parser<'_, 'm> {
         let t = self.peek();
         if t.kind == TokKind::Ident {
             self.bump();
+            if (t.span.end - t.span.start) as usize > MAX_IDENT_LEN {
+                // Every name a shader declares comes through here.
+                let msg = format!("this name is {} characters long; names in shader code are limited to {MAX_IDENT_LEN}", t.span.end - t.span.start);
+                self.diags.push(
+                    Diagnostic::error(msg, Span::new(t.span.start, t.span.start + 1))
+                        .with_label("a name starts here")
+                        .with_note("GLSL allows names of up to 1024 characters, and the outputs add suffixes to some names (`_block`, `_sampler`)"),
+                );
+            }
             return Ok(Ident { name: self.texts.name(t.span), span: t.span });
         }
         self.error_expected(t, what);
@@ -338,6 +351,7 @@ impl<'m> Parser<'_, 'm> {
                 }
                 _ => {}
             }
+            let start = self.pos;
             match line(self) {
                 Ok(()) => {
                     let t = self.raw_peek();
@@ -352,6 +366,13 @@ impl<'m> Parser<'_, 'm> {
                     self.nl_skip = 0;
                     self.recover(extra);
                 }
+            }
+            // Recovery stops in front of a token that starts a statement;
+            // where a line that failed on its first token (a `var` where a
+            // struct field belongs) would be tried again forever, skip it.
+            if self.pos == start {
+                self.pos += 1;
+                self.recover(0);
             }
         }
     }
