@@ -141,14 +141,7 @@ impl Compilation {
 pub fn compile_file(path: &Path, opts: &Options) -> Compilation {
     let mut sources = SourceMap::new();
     let name = path.display().to_string();
-    // The outputs are named after the input (`shadow.das` -> `shadow.wgsl`),
-    // and an output name is text: a lossy one would not be the input's.
-    if path.file_stem().is_some_and(|s| s.to_str().is_none()) {
-        let d = Diagnostic::error_nowhere(format!("the file name of `{name}` is not UTF-8, and the outputs are named after it"))
-            .with_note("help: rename the file");
-        return Compilation { sources, diagnostics: vec![d], suppressed_errors: 0, result: None };
-    }
-    match syntax::read_source(path) {
+    match read_input(path) {
         Ok(text) => {
             let root = sources.add(name.clone(), Some(path.to_path_buf()), text, None);
             on_compiler_stack(&name, move || run(sources, root, opts))
@@ -296,7 +289,7 @@ pub fn preprocess_file(path: &Path, opts: &Options) -> Preprocessed {
     let mut sources = SourceMap::new();
     let mut diags = Diagnostics::new();
     let name = path.display().to_string();
-    match syntax::read_source(path) {
+    match read_input(path) {
         Ok(text) => {
             let root = sources.add(name, Some(path.to_path_buf()), text, None);
             preprocess_root(sources, root, opts)
@@ -306,6 +299,18 @@ pub fn preprocess_file(path: &Path, opts: &Options) -> Preprocessed {
             Preprocessed { sources, name, root: 0, unit: Default::default(), diags }
         }
     }
+}
+
+/// Reads an input file. The outputs are named after it (`shadow.das` ->
+/// `shadow.wgsl`), and an output name is text: a lossy one would not be
+/// the input's, so a file name that is not UTF-8 is an error.
+fn read_input(path: &Path) -> Result<String, Diagnostic> {
+    if path.file_stem().is_some_and(|s| s.to_str().is_none()) {
+        let name = path.display();
+        return Err(Diagnostic::error_nowhere(format!("the file name of `{name}` is not UTF-8, and the outputs are named after it"))
+            .with_note("help: rename the file"));
+    }
+    syntax::read_source(path)
 }
 
 fn parse_options(opts: &Options) -> syntax::ParseOptions {

@@ -5,9 +5,10 @@
 //! The parent directory of each file is watched, not the file: editors
 //! save by writing a new file and renaming it over the old one, which a
 //! watch on the old file would not see. Events come in bursts (truncate,
-//! write, rename); a step runs once the files have been quiet for
-//! [`QUIET`]. A step prints its own diagnostics; its outputs are written
-//! only when it succeeds, so a failed edit leaves the last good ones.
+//! write, rename); a step runs once the files it read have been quiet
+//! for [`QUIET`] (at most [`MAX_WAIT`] after the first change). A step
+//! prints its own diagnostics; its outputs are written only when it
+//! succeeds, so a failed edit leaves the last good ones.
 
 use std::collections::HashSet;
 use std::path::{Path, PathBuf};
@@ -18,6 +19,9 @@ use notify::{RecursiveMode, Watcher};
 
 /// How long the files must be quiet before a step runs again.
 pub const QUIET: Duration = Duration::from_millis(25);
+
+/// The longest a step waits for quiet once a change came.
+pub const MAX_WAIT: Duration = Duration::from_millis(500);
 
 /// What a step read: files, and directories whose `.das` files (at any
 /// depth) count too (a new program in a directory argument).
@@ -72,7 +76,25 @@ pub fn watch(mut step: impl FnMut() -> (u8, Watched)) -> Result<(), String> {
                 Err(_) => return Err("the file watcher stopped".into()),
             }
         }
-        while let Ok(_more) = rx.recv_timeout(QUIET) {}
+        // Only changes to what was read extend the quiet wait: reads of
+        // other files in the same directory (a log another program polls)
+        // come every few milliseconds and would hold the step off for ever.
+        // A file that never stops changing still gets a step every
+        // `MAX_WAIT`.
+        let first = Instant::now();
+        let mut last = first;
+        while first.elapsed() < MAX_WAIT {
+            let left = QUIET.saturating_sub(last.elapsed());
+            if left.is_zero() {
+                break;
+            }
+            match rx.recv_timeout(left) {
+                Ok(Ok(e)) if relevant(&e) => last = Instant::now(),
+                Ok(_) => {}
+                Err(mpsc::RecvTimeoutError::Timeout) => break,
+                Err(mpsc::RecvTimeoutError::Disconnected) => return Err("the file watcher stopped".into()),
+            }
+        }
     }
 }
 

@@ -74,22 +74,25 @@ fn unreached_globals_are_left_out_of_every_module() {
     let wgsl = c.artifact("many_uniforms.wgsl").unwrap().text().into_owned();
     assert_eq!(wgsl.matches("var<uniform>").count(), 1, "{wgsl}");
     assert!(!wgsl.contains("s0"), "{wgsl}");
-    let names: Vec<&str> = c.reflection.uniform_blocks.iter().map(|b| b.name.as_str()).collect();
+    let names: Vec<&str> = c.reflection.uniforms.iter().map(|u| u.name.as_str()).collect();
     assert_eq!(names, ["u69999"]);
+    assert_eq!(c.reflection.uniform_buffers.len(), 1);
 }
 
 /// A program that needs more bindings than one WebGPU bind group has is a
-/// located error, not a module a consumer refuses.
+/// located error, not a module a consumer refuses. (Loose uniforms share
+/// their group's buffer: 1001 struct uniforms take a binding each.)
 #[test]
 fn more_bindings_than_a_bind_group_holds_is_a_located_error() {
     let n = 1000;
-    let mut src: String = (0..=n).map(|i| format!("var @uniform u{i} : float4\n")).collect();
-    let sum: String = (0..=n).map(|i| format!("    f_color += u{i}\n")).collect();
+    let mut src: String = "struct S {\n    v : float4\n}\n".to_string();
+    src.extend((0..=n).map(|i| format!("var @uniform u{i} : S\n")));
+    let sum: String = (0..=n).map(|i| format!("    f_color += u{i}.v\n")).collect();
     src.push_str(&format!("var @out f_color : float4\n[fragment_program]\ndef fs {{\n{sum}}}\n"));
     let c = compile_source("bindings.das", &src, &Options::default());
     assert!(c.result.is_none());
     let text = umbrac_diags(&c.diagnostics, &c.sources);
-    assert!(text.contains("no 1 free bindings left in group 0 (at most 1000)") && text.contains(&format!("bindings.das:{}:", n + 1)), "{text}");
+    assert!(text.contains("no 1 free bindings left in group 0 (at most 1000)") && text.contains(&format!("bindings.das:{}:", n + 4)), "{text}");
     assert_eq!(c.diagnostics.len(), 1, "one mistake, one error:\n{text}");
 }
 

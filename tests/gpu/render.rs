@@ -456,7 +456,9 @@ mod command {
     }
 
     /// `render --watch`: an edit to the program redraws; a broken edit
-    /// prints its error and keeps the last good picture.
+    /// prints its error and keeps the last good picture. The log sits in
+    /// the watched directory and is read every 20 ms: those reads once held
+    /// every step off for ever (they kept the quiet wait from ending).
     #[test]
     fn watch_redraws_on_change_and_keeps_the_last_good_picture() {
         if gpu::vulkan().is_none() {
