@@ -5,8 +5,7 @@
 //!    `mkdir -p`; build scripts and `-o build/shaders` expect that);
 //! 2. every destination is checked: an existing path that is not a regular
 //!    file (a directory, say) is an error before anything is written;
-//! 3. each file is written to a temporary file in the destination directory
-//!    and fsynced;
+//! 3. each file is written to a temporary file in the destination directory;
 //! 4. with the directory locked against other writers (`flock`), the
 //!    temporaries are renamed over the destinations. Should a rename
 //!    fail part-way, the files already replaced are restored from their
@@ -19,6 +18,15 @@
 //! `.umbrac-PID-XXXXXX.tmp`: hidden, and never the name of an output. A
 //! process killed mid-write (SIGKILL, power loss) can leave one behind; the
 //! next write into the same directory removes those whose process is gone.
+//!
+//! Outputs are not fsynced, as no compiler or build tool (gcc, clang,
+//! rustc, cargo, ninja) fsyncs its outputs: a sync costs about half a
+//! millisecond per file here, which was three quarters of a cold compile
+//! of 256 variants (docs/performance.md). Against a killed process the
+//! renames are enough; against power loss a file replaced by rename is as
+//! durable as the file system makes it (ext4 and btrfs write a replaced
+//! file's data before the rename commits), and a build redoes what it
+//! cannot trust after a crash.
 
 use std::fmt;
 use std::io::Write;
@@ -71,7 +79,7 @@ pub fn write_artifacts(dir: &Path, artifacts: &[Artifact]) -> Result<(), OutputE
 
     remove_stale_temps(dir);
 
-    // Write and fsync every temporary before touching any destination.
+    // Write every temporary before touching any destination.
     // A `TempFile` deletes itself when dropped, so every early return below
     // cleans up.
     let mut temps = Vec::with_capacity(artifacts.len());
@@ -114,7 +122,6 @@ pub fn write_artifacts(dir: &Path, artifacts: &[Artifact]) -> Result<(), OutputE
         }
         done.push(i);
     }
-    sync_dir(dir);
     Ok(())
 }
 
@@ -223,7 +230,6 @@ fn write_temp(dir: &Path, contents: &[u8]) -> std::io::Result<TempFile> {
         use std::os::unix::fs::PermissionsExt;
         file.set_permissions(std::fs::Permissions::from_mode(0o644))?;
     }
-    file.sync_all()?;
     Ok(temp)
 }
 
@@ -287,15 +293,6 @@ fn rollback(dir: &Path, artifacts: &[Artifact], previous: &[Option<Vec<u8>>], do
                 let _ = std::fs::remove_file(&dest);
             }
         }
-    }
-    sync_dir(dir);
-}
-
-/// Makes the renames durable (best effort; not every platform can open a
-/// directory).
-fn sync_dir(dir: &Path) {
-    if let Ok(d) = std::fs::File::open(dir) {
-        let _ = d.sync_all();
     }
 }
 
