@@ -175,7 +175,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
 
     pub(super) fn block(&mut self, stmts: &[Stmt]) -> Block {
         let mut b = block_for(stmts.len());
-        for s in super::stmts::live(stmts) {
+        for s in live(stmts) {
             self.stmt(s, &mut b);
         }
         self.flush(&mut b);
@@ -184,7 +184,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
 
     /// Lowers statements onto the end of `block`.
     pub(super) fn stmts_into(&mut self, stmts: &[Stmt], block: &mut Block) {
-        for s in super::stmts::live(stmts) {
+        for s in live(stmts) {
             self.stmt(s, block);
         }
         self.flush(block);
@@ -232,5 +232,16 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
             _ => 4,
         };
         self.append(E::As { expr: h, kind: naga_scalar(to).kind, convert: Some(width) }, s)
+    }
+}
+
+/// The statements of a block up to its first `return`, `break`, `continue`
+/// or `discard()`: what follows is never run, and is not lowered. (Code
+/// after an entry point's `return` made naga's GLSL writer declare its
+/// `_tmp_return` twice in one scope, which glslang refuses.)
+pub(super) fn live(stmts: &[Stmt]) -> &[Stmt] {
+    match stmts.iter().position(|s| matches!(s, Stmt::Return(..) | Stmt::Break(_) | Stmt::Continue(_) | Stmt::Discard(_))) {
+        Some(i) => &stmts[..=i],
+        None => stmts,
     }
 }

@@ -62,7 +62,7 @@ impl FnBuilder<'_, '_> {
                 let not_c = self.append(E::Unary { op: naga::UnaryOperator::LogicalNot, expr: c }, cond.span);
                 self.flush(&mut lb);
                 lb.push(Statement::If { condition: not_c, accept: break_block(*sp), reject: Block::new() }, span(cond.span));
-                for st in live(body) {
+                for st in super::function::live(body) {
                     self.stmt(st, &mut lb);
                 }
                 self.flush(&mut lb);
@@ -85,7 +85,7 @@ impl FnBuilder<'_, '_> {
                 let done = self.append(E::Unary { op: naga::UnaryOperator::LogicalNot, expr: more }, end.span);
                 self.flush(&mut lb);
                 lb.push(Statement::If { condition: done, accept: break_block(*sp), reject: Block::new() }, span(end.span));
-                for st in live(body) {
+                for st in super::function::live(body) {
                     self.stmt(st, &mut lb);
                 }
                 self.flush(&mut lb);
@@ -160,16 +160,5 @@ impl FnBuilder<'_, '_> {
             v = self.binary(op, cur, &target.ty, v, &value.ty, sp);
         }
         self.push(block, Statement::Store { pointer: ptr, value: v }, sp);
-    }
-}
-
-/// The statements of a block up to its first `return`, `break`, `continue`
-/// or `discard()`: what follows is never run, and is not lowered. (Code
-/// after an entry point's `return` made naga's GLSL writer declare its
-/// `_tmp_return` twice in one scope, which glslang refuses.)
-pub(super) fn live(stmts: &[Stmt]) -> &[Stmt] {
-    match stmts.iter().position(|s| matches!(s, Stmt::Return(..) | Stmt::Break(_) | Stmt::Continue(_) | Stmt::Discard(_))) {
-        Some(i) => &stmts[..=i],
-        None => stmts,
     }
 }

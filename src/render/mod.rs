@@ -5,7 +5,7 @@
 //! Data flows one way: a scene describes its frame once as a
 //! [`plan::FramePlan`]; [`bind`] fits a program's manifest to it (every
 //! binding, offset and location comes from there); an executor in
-//! [`exec`] runs it on a consumer ([`consumers::Consumer`]):
+//! [`exec`] runs it on a consumer ([`consumer::Consumer`]):
 //!
 //! - [`tutorial`], [`scene`], [`setup`]: the tutorial scene's numbers and
 //!   host math (meshes, GL-convention matrices);
@@ -32,6 +32,7 @@
 
 pub mod bind;
 pub mod command;
+pub mod consumer;
 pub mod consumers;
 pub mod exec;
 pub mod hand;
@@ -44,7 +45,7 @@ pub mod setup;
 pub mod techniques;
 pub mod tutorial;
 
-pub use consumers::Consumer;
+pub use consumer::Consumer;
 pub use exec::{ExecError, Executor, Readback, SceneExecutor};
 pub use program::{ShaderCode, ShaderSet};
 pub use scene::{FrameParams, View};

@@ -266,8 +266,8 @@ const TABLE: &[Entry] = &[
 /// Constants of daslang's `math` and `builtin` modules that shaders can
 /// use, with their `f32`/`i32`/`u32` values (a local or top-level name of
 /// the program hides one).
-pub const CONSTANTS: &[(&str, super::tree::ConstValue)] = {
-    use super::tree::ConstValue as C;
+pub const CONSTANTS: &[(&str, super::types::ConstValue)] = {
+    use super::types::ConstValue as C;
     &[
         ("PI", C::Float(std::f32::consts::PI as f64)),
         ("FLT_EPSILON", C::Float(f32::EPSILON as f64)),
@@ -280,8 +280,8 @@ pub const CONSTANTS: &[(&str, super::tree::ConstValue)] = {
 };
 
 /// The value and type of a builtin constant.
-pub fn constant(name: &str) -> Option<(super::tree::ConstValue, Ty)> {
-    use super::tree::ConstValue as C;
+pub fn constant(name: &str) -> Option<(super::types::ConstValue, Ty)> {
+    use super::types::ConstValue as C;
     CONSTANTS.iter().find(|(n, _)| *n == name).map(|(_, v)| {
         let ty = match v {
             C::Int(_) => super::types::INT,

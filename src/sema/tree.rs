@@ -3,6 +3,7 @@
 
 use super::builtins::Builtin;
 use super::types::Ty;
+pub use super::types::{ConstValue, StructDef};
 use super::types::SamplerKind;
 use crate::source::Span;
 use crate::syntax::ast::{BinaryOp, UnaryOp};
@@ -44,13 +45,6 @@ impl Program {
     pub fn enum_names(&self) -> Vec<String> {
         self.enums.iter().map(|e| e.name.clone()).collect()
     }
-}
-
-#[derive(Debug)]
-pub struct StructDef {
-    pub name: String,
-    pub fields: Vec<(String, Ty, Span)>,
-    pub span: Span,
 }
 
 /// An enumeration: its values are `int` (or `uint`) constants of its own type.
@@ -200,17 +194,6 @@ impl Global {
 pub struct Bind {
     pub group: u32,
     pub binding: u32,
-}
-
-/// A compile-time value of a top-level `let`.
-#[derive(Clone, Debug, PartialEq)]
-pub enum ConstValue {
-    Float(f64),
-    Int(i64),
-    Uint(u64),
-    Bool(bool),
-    /// Vector, matrix (columns), array or struct components.
-    Composite(Vec<ConstValue>),
 }
 
 #[derive(Clone, Debug)]

@@ -2,6 +2,8 @@
 
 use std::fmt;
 
+use crate::source::Span;
+
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Scalar {
@@ -214,7 +216,7 @@ impl Ty {
     /// A sampler or an array of samplers.
     /// Whether `half` is part of the type (a struct's fields are looked up
     /// in `structs`).
-    pub fn has_half(&self, structs: &[super::tree::StructDef]) -> bool {
+    pub fn has_half(&self, structs: &[StructDef]) -> bool {
         match self {
             Ty::Scalar(Scalar::Half) | Ty::Vector(Scalar::Half, _) => true,
             Ty::Array(elem, _) => elem.has_half(structs),
@@ -320,4 +322,23 @@ mod tests {
         }
         assert_eq!(Ty::Struct(0).builtin_name(), None);
     }
+}
+
+/// A struct declaration: its fields in order.
+#[derive(Debug)]
+pub struct StructDef {
+    pub name: String,
+    pub fields: Vec<(String, Ty, Span)>,
+    pub span: Span,
+}
+
+/// A compile-time value of a top-level `let`.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ConstValue {
+    Float(f64),
+    Int(i64),
+    Uint(u64),
+    Bool(bool),
+    /// Vector, matrix (columns), array or struct components.
+    Composite(Vec<ConstValue>),
 }

@@ -6,9 +6,9 @@
 //! constants and structs they reach. Host code is skipped by the parser and
 //! never appears here. Every node carries a [`Span`].
 
-use std::fmt;
-use std::rc::Rc;
+use std::path::PathBuf;
 
+pub use super::token::Name;
 use crate::source::Span;
 
 #[derive(Clone, Debug, PartialEq)]
@@ -44,86 +44,13 @@ impl IntoIterator for Names {
     }
 }
 
-/// An identifier's text: a range of a shared copy of its source file's
-/// text, so the parser allocates nothing per name (one copy per file per
-/// parse) and cloning one is a reference count. Reads as a `&str` (`Deref`,
-/// [`Name::as_str`]).
-#[derive(Clone)]
-pub struct Name {
-    text: Rc<str>,
-    start: u32,
-    end: u32,
-}
-
-impl Name {
-    /// A name with its own copy of `s`.
-    pub fn new(s: &str) -> Name {
-        Name { text: s.into(), start: 0, end: s.len() as u32 }
-    }
-
-    /// `text[start..end]`, which must lie on character boundaries.
-    pub(crate) fn in_text(text: Rc<str>, start: u32, end: u32) -> Name {
-        debug_assert!(text.get(start as usize..end as usize).is_some());
-        Name { text, start, end }
-    }
-
-    pub fn as_str(&self) -> &str {
-        &self.text[self.start as usize..self.end as usize]
-    }
-}
-
-impl std::ops::Deref for Name {
-    type Target = str;
-    fn deref(&self) -> &str {
-        self.as_str()
-    }
-}
-
-impl From<&str> for Name {
-    fn from(s: &str) -> Name {
-        Name::new(s)
-    }
-}
-
-impl PartialEq for Name {
-    fn eq(&self, other: &Name) -> bool {
-        self.as_str() == other.as_str()
-    }
-}
-
-impl Eq for Name {}
-
-impl PartialEq<str> for Name {
-    fn eq(&self, other: &str) -> bool {
-        self.as_str() == other
-    }
-}
-
-impl PartialEq<&str> for Name {
-    fn eq(&self, other: &&str) -> bool {
-        self.as_str() == *other
-    }
-}
-
-impl fmt::Debug for Name {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        fmt::Debug::fmt(self.as_str(), f)
-    }
-}
-
-impl fmt::Display for Name {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(self.as_str())
-    }
-}
-
 #[derive(Clone, Debug, Default)]
 pub struct Program {
     /// Items in source order.
     pub items: Vec<Item>,
     /// Required modules that were not found, for the checker's errors
     /// about names nothing defines.
-    pub modules_not_found: Vec<super::modules::MissingModule>,
+    pub modules_not_found: Vec<MissingModule>,
 }
 
 #[derive(Clone, Debug)]
@@ -395,4 +322,18 @@ pub enum ExprKind {
     /// A `half` literal (`1.5h`): its value, rounded once from the decimal
     /// to the nearest binary16 value (held exactly in the `f64`).
     Half(f64),
+}
+
+/// A required module that was not found, for the checker's errors about
+/// unknown names.
+#[derive(Clone, Debug)]
+pub struct MissingModule {
+    /// As written: `shaderlib/lighting`.
+    pub name: String,
+    /// The module name in the `require` line.
+    pub span: Span,
+    /// The files looked for.
+    pub searched: Vec<PathBuf>,
+    /// What to do about it.
+    pub help: &'static str,
 }

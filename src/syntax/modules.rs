@@ -27,6 +27,7 @@
 use std::ops::Range;
 use std::path::{Path, PathBuf};
 
+pub use super::ast::MissingModule;
 use super::items::{self, ItemKind, RawItem};
 use super::token::{TokKind, Token, P};
 use super::ParseOptions;
@@ -45,20 +46,6 @@ const BUILTIN_MODULES: &[&str] = &["builtin", "math", "strings", "fio", "rtti", 
 /// GL calls, live reload, ...), which no shader reaches: not worth a hint
 /// when a name is unknown.
 const HOST_PACKS: &[&str] = &["glfw", "opengl", "live", "imgui", "stbimage", "stbtruetype", "sound", "dashv", "pugixml", "dasbox", "sdl", "raylib"];
-
-/// A required module that was not found, for the checker's errors about
-/// unknown names.
-#[derive(Clone, Debug)]
-pub struct MissingModule {
-    /// As written: `shaderlib/lighting`.
-    pub name: String,
-    /// The module name in the `require` line.
-    pub span: Span,
-    /// The files looked for.
-    pub searched: Vec<PathBuf>,
-    /// What to do about it.
-    pub help: &'static str,
-}
 
 /// One `require` line.
 struct Require {

@@ -13,7 +13,7 @@ use std::path::{Path, PathBuf};
 use std::rc::Rc;
 
 use super::lexer::lex;
-use super::parser::unescape;
+use super::lexer::unescape;
 use super::token::{TokKind, Token, P};
 use super::ParseOptions;
 use crate::diag::{Diagnostic, Diagnostics};

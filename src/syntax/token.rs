@@ -6,9 +6,9 @@
 //! virtual file).
 
 use std::cell::{Cell, RefCell};
+use std::fmt;
 use std::rc::Rc;
 
-use super::ast::Name;
 
 use crate::source::{SourceMap, Span};
 
@@ -394,5 +394,78 @@ impl<'m> Texts<'m> {
             self.last.set((f.base, f.base + f.text.len() as u32, &f.text));
         }
         self.map.slice(span)
+    }
+}
+
+/// An identifier's text: a range of a shared copy of its source file's
+/// text, so the parser allocates nothing per name (one copy per file per
+/// parse) and cloning one is a reference count. Reads as a `&str` (`Deref`,
+/// [`Name::as_str`]).
+#[derive(Clone)]
+pub struct Name {
+    text: Rc<str>,
+    start: u32,
+    end: u32,
+}
+
+impl Name {
+    /// A name with its own copy of `s`.
+    pub fn new(s: &str) -> Name {
+        Name { text: s.into(), start: 0, end: s.len() as u32 }
+    }
+
+    /// `text[start..end]`, which must lie on character boundaries.
+    pub(crate) fn in_text(text: Rc<str>, start: u32, end: u32) -> Name {
+        debug_assert!(text.get(start as usize..end as usize).is_some());
+        Name { text, start, end }
+    }
+
+    pub fn as_str(&self) -> &str {
+        &self.text[self.start as usize..self.end as usize]
+    }
+}
+
+impl std::ops::Deref for Name {
+    type Target = str;
+    fn deref(&self) -> &str {
+        self.as_str()
+    }
+}
+
+impl From<&str> for Name {
+    fn from(s: &str) -> Name {
+        Name::new(s)
+    }
+}
+
+impl PartialEq for Name {
+    fn eq(&self, other: &Name) -> bool {
+        self.as_str() == other.as_str()
+    }
+}
+
+impl Eq for Name {}
+
+impl PartialEq<str> for Name {
+    fn eq(&self, other: &str) -> bool {
+        self.as_str() == other
+    }
+}
+
+impl PartialEq<&str> for Name {
+    fn eq(&self, other: &&str) -> bool {
+        self.as_str() == *other
+    }
+}
+
+impl fmt::Debug for Name {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Debug::fmt(self.as_str(), f)
+    }
+}
+
+impl fmt::Display for Name {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.as_str())
     }
 }

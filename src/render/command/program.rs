@@ -3,7 +3,7 @@
 
 use std::path::Path;
 
-use crate::render::consumers::Consumer;
+use crate::render::consumer::Consumer;
 use crate::render::hand;
 use crate::render::program::{ShaderCode, ShaderSet};
 use crate::Target;

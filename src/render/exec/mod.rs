@@ -14,7 +14,7 @@ pub mod wgpu;
 use image::RgbaImage;
 
 use super::bind::InterfaceError;
-use super::consumers::Consumer;
+use super::consumer::Consumer;
 use super::plan::FramePlan;
 use super::program::ShaderSet;
 

@@ -21,7 +21,7 @@ use image::RgbaImage;
 use serde_json::{json, Value};
 
 use crate::render::bind::{self, gl::UniformCall};
-use crate::render::consumers::Consumer;
+use crate::render::consumer::Consumer;
 use crate::render::plan::{Cull, FramePlan, Geometry, Mesh};
 use crate::render::program::{ShaderCode, ShaderSet};
 use crate::Target;

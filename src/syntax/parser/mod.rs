@@ -16,6 +16,7 @@ mod stmts;
 
 use super::ast::*;
 use super::items::{ItemKind, RawItem};
+use super::lexer::unescape;
 use super::token::{Kw, Texts, TokKind, Token, P};
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::source::Span;
@@ -459,23 +460,3 @@ impl<'m> Parser<'_, 'm> {
     }
 }
 
-/// A string literal's body with escapes resolved.
-pub(crate) fn unescape(s: &str) -> String {
-    let mut out = String::with_capacity(s.len());
-    let mut it = s.chars();
-    while let Some(c) = it.next() {
-        if c == '\\' {
-            match it.next() {
-                Some('n') => out.push('\n'),
-                Some('t') => out.push('\t'),
-                Some('r') => out.push('\r'),
-                Some('0') => out.push('\0'),
-                Some(o) => out.push(o),
-                None => {}
-            }
-        } else {
-            out.push(c);
-        }
-    }
-    out
-}

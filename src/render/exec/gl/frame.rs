@@ -11,7 +11,7 @@ use glow::HasContext;
 use image::RgbaImage;
 
 use crate::render::bind::{self, gl::UniformCall};
-use crate::render::consumers::Consumer;
+use crate::render::consumer::Consumer;
 use crate::render::plan::{Cull, Format, FramePlan, Geometry, Sampling, TargetId, Value};
 
 use super::objects::Obj;

@@ -26,7 +26,7 @@ use glow::HasContext;
 use khronos_egl as egl;
 
 use crate::render::bind::{self, gl::GlProgram};
-use crate::render::consumers::Consumer;
+use crate::render::consumer::Consumer;
 use crate::render::plan::{FramePlan, Mesh, Pass};
 use crate::render::program::ShaderSet;
 use crate::Target;

@@ -13,7 +13,7 @@ use wgpu::util::DeviceExt;
 
 use crate::emit::reflect_types::Reflection;
 use crate::render::bind::{self, wgpu::Groups, wgpu::Resource, PassFit};
-use crate::render::consumers::Consumer;
+use crate::render::consumer::Consumer;
 use crate::render::plan::{Cull, Format, FramePlan, Geometry, Mesh, Pass, Sampling, VertexFormat};
 use crate::render::program::{ShaderCode, ShaderSet};
 use crate::Target;
