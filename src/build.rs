@@ -514,9 +514,5 @@ fn remove_stale(dir: &Path, artifacts: &[Artifact]) {
 
 /// Writes files atomically, leaving unchanged ones alone (their mtimes too).
 fn write(dir: &Path, artifacts: &[Artifact]) -> Result<(), Error> {
-    let changed: Vec<Artifact> = artifacts.iter().filter(|a| std::fs::read(dir.join(&a.file_name)).ok().as_deref() != Some(&a.contents[..])).cloned().collect();
-    if changed.is_empty() {
-        return Ok(());
-    }
-    crate::output::write_artifacts(dir, &changed).map_err(|e| Error { summary: format!("umbrac: {e}"), details: String::new() })
+    crate::output::write_outputs(dir, artifacts, crate::output::Unchanged::Leave).map_err(|e| Error { summary: format!("umbrac: {e}"), details: String::new() })
 }

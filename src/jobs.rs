@@ -253,35 +253,9 @@ pub fn variants_artifact(batch: &Batch) -> Artifact {
 }
 
 /// Writes a job's outputs into `dir`: the files whose bytes changed
-/// atomically ([`crate::output::write_artifacts`]), and for the others only
-/// a new modification time, as if rewritten (make and ninja compare
-/// times), which saves a warm run from rewriting and syncing every file.
+/// atomically, and for the others only a new modification time, as if
+/// rewritten (make and ninja compare times), which saves a warm run from
+/// rewriting every file ([`crate::output::write_outputs`]).
 pub fn write_outputs(dir: &Path, artifacts: &[Artifact]) -> Result<(), crate::output::OutputError> {
-    let mut changed = Vec::new();
-    let mut same = Vec::new();
-    for a in artifacts {
-        let path = dir.join(&a.file_name);
-        let unchanged = std::fs::metadata(&path).is_ok_and(|m| m.is_file() && m.len() == a.contents.len() as u64)
-            && std::fs::read(&path).is_ok_and(|old| old == a.contents);
-        if unchanged {
-            same.push(path);
-        } else {
-            changed.push(a.clone());
-        }
-    }
-    if !changed.is_empty() {
-        crate::output::write_artifacts(dir, &changed)?;
-    }
-    let now = std::time::SystemTime::now();
-    for path in same {
-        // A file that cannot be touched is rewritten instead.
-        let touched = std::fs::File::options().write(true).open(&path).and_then(|f| f.set_modified(now));
-        if touched.is_err() {
-            let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
-            if let Some(a) = artifacts.iter().find(|a| a.file_name == name) {
-                crate::output::write_artifacts(dir, std::slice::from_ref(a))?;
-            }
-        }
-    }
-    Ok(())
+    crate::output::write_outputs(dir, artifacts, crate::output::Unchanged::Touch)
 }

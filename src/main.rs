@@ -567,8 +567,8 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
         owner.extend(artifacts.iter().map(|a| (out_dir.join(&a.file_name), path.as_path())));
         to_write.push((j, out_dir));
     }
-    // Each directory atomically, several at once: the writes wait on the
-    // disk (every file is synced), not on a core.
+    // Each directory atomically, several at once (file system calls block
+    // now and then, and a warm run reads every previous output back).
     let results = umbrac::batch::parallel_map(
         to_write.len(),
         WRITERS,

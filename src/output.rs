@@ -5,12 +5,14 @@
 //!    `mkdir -p`; build scripts and `-o build/shaders` expect that);
 //! 2. every destination is checked: an existing path that is not a regular
 //!    file (a directory, say) is an error before anything is written;
-//! 3. each file is written to a temporary file in the destination directory;
-//! 4. with the directory locked against other writers (`flock`), the
-//!    temporaries are renamed over the destinations. Should a rename
-//!    fail part-way, the files already replaced are restored from their
+//! 3. with the directory locked against other writers (`flock`), each
+//!    destination's present contents are read; each file to be replaced is
+//!    written to a temporary file in the destination directory, then the
+//!    temporaries are renamed over the destinations. Should a rename fail
+//!    part-way, the files already replaced are restored from their
 //!    previous contents (or removed, if they are new), so a failed write
-//!    leaves the directory as it was.
+//!    leaves the directory as it was. A file that already holds its bytes
+//!    can be left as it is ([`Unchanged`]).
 //!
 //! Each rename is atomic, so a reader (or a crash) never sees a half-written
 //! file, and two compiles into one directory leave the whole set of one of
@@ -54,8 +56,32 @@ fn err(path: &Path, message: impl Into<String>) -> OutputError {
     OutputError { path: path.to_path_buf(), message: message.into() }
 }
 
+/// What [`write_outputs`] does with an output whose file already holds
+/// exactly its bytes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Unchanged {
+    /// Replace it all the same.
+    Rewrite,
+    /// Leave its bytes and give it a new modification time, as if
+    /// rewritten: make and ninja compare times, and would otherwise run the
+    /// compile again on every build.
+    Touch,
+    /// Leave it alone, modification time too: cargo rebuilds a crate whose
+    /// `include_str!`ed files have a new time.
+    Leave,
+}
+
 /// Writes every artifact into `dir`, all or nothing (see the module docs).
 pub fn write_artifacts(dir: &Path, artifacts: &[Artifact]) -> Result<(), OutputError> {
+    write_outputs(dir, artifacts, Unchanged::Rewrite)
+}
+
+/// Writes every artifact into `dir`, all or nothing (see the module docs),
+/// doing with those already on disk as they are what `unchanged` says.
+/// Which files are unchanged is decided under the directory's lock: two
+/// compiles of different versions decide against each other's finished
+/// output, never against a set another one is halfway through replacing.
+pub fn write_outputs(dir: &Path, artifacts: &[Artifact], unchanged: Unchanged) -> Result<(), OutputError> {
     // Names come from entry point names; refuse anything that is not a
     // plain file name so nothing is ever written outside `dir`.
     for a in artifacts {
@@ -79,22 +105,13 @@ pub fn write_artifacts(dir: &Path, artifacts: &[Artifact]) -> Result<(), OutputE
 
     remove_stale_temps(dir);
 
-    // Write every temporary before touching any destination.
-    // A `TempFile` deletes itself when dropped, so every early return below
-    // cleans up.
-    let mut temps = Vec::with_capacity(artifacts.len());
-    for a in artifacts {
-        let dest = dir.join(&a.file_name);
-        let temp = write_temp(dir, &a.contents).map_err(|e| err(&dest, e.to_string()))?;
-        temps.push(temp);
-    }
-
     // From here to the last rename, no other writer (another process
     // compiling into the same directory) can rename in between: one
     // compile's outputs replace another's as a set.
     let _lock = DirLock::acquire(dir).map_err(|e| err(dir, format!("cannot lock the output directory: {e}")))?;
 
-    // Previous contents of each destination, for rollback.
+    // Previous contents of each destination, for rollback and to see
+    // which are unchanged.
     let mut previous: Vec<Option<Vec<u8>>> = Vec::with_capacity(artifacts.len());
     for a in artifacts {
         let dest = dir.join(&a.file_name);
@@ -105,9 +122,33 @@ pub fn write_artifacts(dir: &Path, artifacts: &[Artifact]) -> Result<(), OutputE
             Err(e) => return Err(err(&dest, e.to_string())),
         }
     }
+    let now = std::time::SystemTime::now();
+    let todo: Vec<usize> = (0..artifacts.len())
+        .filter(|&i| {
+            let same = previous[i].as_deref() == Some(&artifacts[i].contents[..]);
+            match (same, unchanged) {
+                (false, _) | (true, Unchanged::Rewrite) => true,
+                (true, Unchanged::Leave) => false,
+                // A file that cannot be touched is rewritten instead.
+                (true, Unchanged::Touch) => {
+                    let dest = dir.join(&artifacts[i].file_name);
+                    std::fs::File::options().write(true).open(&dest).and_then(|f| f.set_modified(now)).is_err()
+                }
+            }
+        })
+        .collect();
+
+    // Write every temporary before touching any destination. A `TempFile`
+    // deletes itself when dropped, so every early return below cleans up.
+    let mut temps = Vec::with_capacity(todo.len());
+    for &i in &todo {
+        let dest = dir.join(&artifacts[i].file_name);
+        let temp = write_temp(dir, &artifacts[i].contents).map_err(|e| err(&dest, e.to_string()))?;
+        temps.push(temp);
+    }
 
     let mut done: Vec<usize> = Vec::new();
-    for (i, temp) in temps.into_iter().enumerate() {
+    for (&i, temp) in todo.iter().zip(temps) {
         let dest = dir.join(&artifacts[i].file_name);
         #[cfg(test)]
         let result = match fault::rename_fails(i) {
@@ -333,6 +374,24 @@ mod tests {
         write_artifacts(d.path(), &[art("a.wgsl", "three")]).unwrap();
         assert_eq!(std::fs::read_to_string(d.path().join("a.wgsl")).unwrap(), "three");
         assert_eq!(listing(d.path()), ["a.wgsl", "b.json"]);
+    }
+
+    #[test]
+    fn unchanged_files_are_touched_or_left_as_asked() {
+        let d = tempfile::tempdir().unwrap();
+        let old = std::time::SystemTime::UNIX_EPOCH + std::time::Duration::from_secs(1_000_000);
+        let mtime = |n: &str| std::fs::metadata(d.path().join(n)).unwrap().modified().unwrap();
+        let age = |n: &str| std::fs::File::options().write(true).open(d.path().join(n)).unwrap().set_modified(old).unwrap();
+        write_artifacts(d.path(), &[art("a.wgsl", "same"), art("b.wgsl", "old")]).unwrap();
+        age("a.wgsl");
+        age("b.wgsl");
+        write_outputs(d.path(), &[art("a.wgsl", "same"), art("b.wgsl", "new")], Unchanged::Leave).unwrap();
+        assert_eq!(mtime("a.wgsl"), old, "left alone");
+        assert_eq!(std::fs::read_to_string(d.path().join("b.wgsl")).unwrap(), "new");
+        write_outputs(d.path(), &[art("a.wgsl", "same")], Unchanged::Touch).unwrap();
+        assert!(mtime("a.wgsl") > old, "touched");
+        assert_eq!(std::fs::read_to_string(d.path().join("a.wgsl")).unwrap(), "same");
+        assert_eq!(listing(d.path()), ["a.wgsl", "b.wgsl"]);
     }
 
     #[test]
