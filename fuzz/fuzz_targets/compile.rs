@@ -36,14 +36,21 @@ fuzz_target!(|data: &[u8]| {
 });
 
 /// naga's WGSL front end, as wgpu runs it: parse, then validate with every
-/// check on.
+/// check on and the capabilities wgpu grants: f16 packing in f32 on every
+/// WebGPU device (`pack2x16float`), f16 itself where the device has the
+/// `shader-f16` feature a WGSL file with `enable f16;` asks for.
 fn check_wgsl(wgsl: &str) {
+    use naga::valid::Capabilities;
+    let mut caps = Capabilities::default() | Capabilities::SHADER_FLOAT16_IN_FLOAT32;
+    if wgsl.contains("enable f16;") {
+        caps |= Capabilities::SHADER_FLOAT16;
+    }
     let module = match naga::front::wgsl::parse_str(wgsl) {
         Ok(m) => m,
         Err(e) => panic!("naga's WGSL front end rejects the emitted WGSL:\n{}\n{wgsl}", e.emit_to_string(wgsl)),
     };
     let flags = naga::valid::ValidationFlags::all();
-    if let Err(e) = naga::valid::Validator::new(flags, naga::valid::Capabilities::default()).validate(&module) {
+    if let Err(e) = naga::valid::Validator::new(flags, caps).validate(&module) {
         panic!("the emitted WGSL does not validate after naga reads it back:\n{}\n{wgsl}", e.emit_to_string(wgsl));
     }
 }

@@ -14,7 +14,12 @@ fn accepted_everywhere(name: &str, src: &str) -> umbrac::Compiled {
     for a in compiled.artifacts.iter().filter(|a| a.target == Some(umbrac::Target::Wgsl)) {
         let text = a.text();
         let m = naga::front::wgsl::parse_str(&text).unwrap_or_else(|e| panic!("{name}: naga rejects the WGSL:\n{}", e.emit_to_string(&text)));
-        naga::valid::Validator::new(naga::valid::ValidationFlags::all(), naga::valid::Capabilities::default())
+        // What wgpu grants: f16 packing everywhere, f16 with `shader-f16`.
+        let mut caps = naga::valid::Capabilities::default() | naga::valid::Capabilities::SHADER_FLOAT16_IN_FLOAT32;
+        if text.contains("enable f16;") {
+            caps |= naga::valid::Capabilities::SHADER_FLOAT16;
+        }
+        naga::valid::Validator::new(naga::valid::ValidationFlags::all(), caps)
             .validate(&m)
             .unwrap_or_else(|e| panic!("{name}: the WGSL does not validate:\n{}", e.emit_to_string(&text)));
     }
@@ -117,4 +122,12 @@ fn the_deepest_accepted_programs_fit_every_consumer() {
     for (i, body) in bodies.iter().enumerate() {
         accepted_everywhere(&format!("deep{i}"), &fs(body));
     }
+}
+
+/// The packing builtins of shaders/features/packing.das: naga's WGSL front
+/// end (the fuzz campaign's check of every output) refused umbrac's WGSL.
+#[test]
+fn packing_builtins_read_back() {
+    let src = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/shaders/features/packing.das")).unwrap();
+    accepted_everywhere("packing", &src);
 }
