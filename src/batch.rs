@@ -199,6 +199,10 @@ pub enum Origin {
 pub struct Outcome {
     /// The outputs (with the `derive`d ones), if it compiled without errors.
     pub artifacts: Option<Vec<Artifact>>,
+    /// The SHA-256 of each artifact's contents, in order (empty without
+    /// artifacts): from the cache entry on a hit, made beside the compile
+    /// otherwise.
+    pub hashes: Vec<Key>,
     /// The compilation, for a unit compiled here, or the failed
     /// preprocessing (or panic) of any unit: its diagnostics and sources.
     /// `None` for a cache hit and for a unit that shares another's outputs.
@@ -242,7 +246,7 @@ pub type Derive<'a> = dyn Fn(usize, &crate::Compiled) -> Result<Vec<Artifact>, S
 pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>, derive: Option<&Derive<'_>>) -> (Vec<Outcome>, Stats) {
     enum Pre {
         Failed(Box<Compilation>),
-        Hit(Vec<Artifact>),
+        Hit(crate::cache::Entry),
         Miss(Box<Preprocessed>),
     }
     let first = parallel_map(
@@ -256,8 +260,8 @@ pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>,
                 return (Pre::Failed(Box::new(pre.compile(&u.opts))), files_read, None);
             }
             let key = Key::of(&pre, &u.opts, &u.extra);
-            match cache.and_then(|c| c.get(&key)) {
-                Some(artifacts) => (Pre::Hit(artifacts), files_read, Some(key)),
+            match cache.and_then(|c| c.get_entry(&key)) {
+                Some(entry) => (Pre::Hit(entry), files_read, Some(key)),
                 None => (Pre::Miss(Box::new(pre)), files_read, Some(key)),
             }
         },
@@ -272,21 +276,21 @@ pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>,
     for (i, (pre, files_read, key)) in first.into_iter().enumerate() {
         if let Some(&j) = key.as_ref().and_then(|k| first_of.get(k)) {
             stats.shared += 1;
-            outcomes.push(Some(Outcome { artifacts: None, compilation: None, files_read, origin: Origin::SameAs(j), key }));
+            outcomes.push(Some(Outcome { artifacts: None, hashes: Vec::new(), compilation: None, files_read, origin: Origin::SameAs(j), key }));
             continue;
         }
         if let Some(k) = key {
             first_of.insert(k, i);
         }
         outcomes.push(Some(match pre {
-            Pre::Failed(c) => Outcome { artifacts: None, compilation: Some(*c), files_read, origin: Origin::Compiled, key },
-            Pre::Hit(artifacts) => {
+            Pre::Failed(c) => Outcome { artifacts: None, hashes: Vec::new(), compilation: Some(*c), files_read, origin: Origin::Compiled, key },
+            Pre::Hit(entry) => {
                 stats.cached += 1;
-                Outcome { artifacts: Some(artifacts), compilation: None, files_read, origin: Origin::Cached, key }
+                Outcome { artifacts: Some(entry.artifacts), hashes: entry.hashes, compilation: None, files_read, origin: Origin::Cached, key }
             }
             Pre::Miss(pre) => {
                 to_compile.push((i, pre));
-                Outcome { artifacts: None, compilation: None, files_read, origin: Origin::Compiled, key }
+                Outcome { artifacts: None, hashes: Vec::new(), compilation: None, files_read, origin: Origin::Compiled, key }
             }
         }));
     }
@@ -313,15 +317,18 @@ pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>,
             }
             // Only a compilation that said nothing is stored: a hit must
             // not hide a diagnostic.
+            let hashes = artifacts.as_deref().map(crate::cache::hashes_of).unwrap_or_default();
             let stored = match (&artifacts, cache, &outcome_key(&outcomes[i])) {
-                (Some(arts), Some(cache), Some(key)) if c.diagnostics.is_empty() => Some(cache.put(key, arts).map_err(|e| format!("cannot write to the cache in `{}`: {e}", cache.dir().display()))),
+                (Some(arts), Some(cache), Some(key)) if c.diagnostics.is_empty() => {
+                    Some(cache.put_entry(key, arts, &hashes).map_err(|e| format!("cannot write to the cache in `{}`: {e}", cache.dir().display())))
+                }
                 _ => None,
             };
-            (c, artifacts, stored)
+            (c, artifacts, hashes, stored)
         },
-        |n, msg| (panicked_in(units[indices[n]].path, &msg), None, None),
+        |n, msg| (panicked_in(units[indices[n]].path, &msg), None, Vec::new(), None),
     );
-    for (i, (c, artifacts, stored)) in indices.into_iter().zip(compiled) {
+    for (i, (c, artifacts, hashes, stored)) in indices.into_iter().zip(compiled) {
         stats.compiled += 1;
         match stored {
             Some(Ok(())) => stats.stored += 1,
@@ -332,6 +339,7 @@ pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>,
         }
         if let Some(o) = outcomes[i].as_mut() {
             o.artifacts = artifacts;
+            o.hashes = hashes;
             o.compilation = Some(c);
         }
     }
@@ -339,6 +347,7 @@ pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>,
     for i in 0..outcomes.len() {
         if let Origin::SameAs(j) = outcomes[i].origin {
             outcomes[i].artifacts = outcomes[j].artifacts.clone();
+            outcomes[i].hashes = outcomes[j].hashes.clone();
         }
     }
     (outcomes, stats)

@@ -10,12 +10,15 @@
 //! Comments and whitespace are not tokens, so editing only them is a hit;
 //! two define sets that preprocess to the same text share one entry.
 //!
-//! An entry is one file, `DIR/v1/AB/ABCDEF...`: a header (magic, the key,
-//! the body's length and SHA-256) and the artifacts. It is written to a
+//! An entry is one file, `DIR/v2/AB/ABCDEF...`: a header (magic, the key,
+//! the body's length, a SHA-256 over everything in the body but the
+//! artifacts' contents) and the artifacts, each with the SHA-256 of its
+//! contents. Those hashes verify the contents and are what `variants.json`
+//! records of each output, so a warm run hashes each output once. It is written to a
 //! temporary in `DIR/tmp/` and renamed into place, so a reader sees a whole
 //! entry or none; two processes that store the same key write the same
 //! bytes, and the last rename wins. Reading checks the magic, the key, the
-//! length and the hash: an entry that fails (truncated, corrupted, from an
+//! length and the hashes: an entry that fails (truncated, corrupted, from an
 //! incompatible version) is removed and reported as a miss, never served.
 //! A hit refreshes the entry's modification time; [`Cache::trim`] keeps the
 //! total size under the bound by removing the entries used longest ago.
@@ -41,8 +44,8 @@ pub const DEFAULT_MAX_BYTES: u64 = 256 << 20;
 
 /// Entry layout version; a change makes every old entry a miss (and
 /// removes it on the first read).
-const MAGIC: &[u8; 8] = b"UMBRAC\x01\x00";
-const LAYOUT_DIR: &str = "v1";
+const MAGIC: &[u8; 8] = b"UMBRAC\x02\x00";
+const LAYOUT_DIR: &str = "v2";
 const HEADER_LEN: usize = 8 + 32 + 8 + 32;
 
 /// umbrac's own identity in every key: a new release or a rebuilt compiler
@@ -90,8 +93,26 @@ impl Key {
     }
 
     pub fn hex(&self) -> String {
-        self.0.iter().map(|b| format!("{b:02x}")).collect()
+        const DIGITS: &[u8; 16] = b"0123456789abcdef";
+        let mut s = String::with_capacity(64);
+        for b in self.0 {
+            s.push(DIGITS[(b >> 4) as usize] as char);
+            s.push(DIGITS[(b & 15) as usize] as char);
+        }
+        s
     }
+}
+
+/// The SHA-256 of each artifact's contents, in order.
+pub fn hashes_of(artifacts: &[Artifact]) -> Vec<Key> {
+    artifacts.iter().map(|a| Key::of_bytes(&a.contents)).collect()
+}
+
+/// What an entry holds: artifacts and the SHA-256 of each one's contents.
+#[derive(Clone, Debug)]
+pub struct Entry {
+    pub artifacts: Vec<Artifact>,
+    pub hashes: Vec<Key>,
 }
 
 impl fmt::Debug for Key {
@@ -180,15 +201,20 @@ impl Cache {
     /// The artifacts stored under `key`, if there is a whole, intact entry.
     /// A damaged one is removed.
     pub fn get(&self, key: &Key) -> Option<Vec<Artifact>> {
+        self.get_entry(key).map(|e| e.artifacts)
+    }
+
+    /// [`Cache::get`], with the hash of each artifact's contents.
+    pub fn get_entry(&self, key: &Key) -> Option<Entry> {
         let path = self.path_of(key);
         let bytes = std::fs::read(&path).ok()?;
         match decode(key, &bytes) {
-            Some(artifacts) => {
+            Some(entry) => {
                 // Used now: the last to be evicted. Best effort.
                 if let Ok(f) = std::fs::File::options().write(true).open(&path) {
                     let _ = f.set_modified(SystemTime::now());
                 }
-                Some(artifacts)
+                Some(entry)
             }
             None => {
                 let _ = std::fs::remove_file(&path);
@@ -199,13 +225,20 @@ impl Cache {
 
     /// Stores `artifacts` under `key`, atomically.
     pub fn put(&self, key: &Key, artifacts: &[Artifact]) -> std::io::Result<()> {
+        self.put_entry(key, artifacts, &hashes_of(artifacts))
+    }
+
+    /// [`Cache::put`] with the hashes of the artifacts' contents already
+    /// made ([`hashes_of`]).
+    pub fn put_entry(&self, key: &Key, artifacts: &[Artifact], hashes: &[Key]) -> std::io::Result<()> {
+        assert_eq!(artifacts.len(), hashes.len(), "one hash per artifact");
         let path = self.path_of(key);
         let tmp_dir = self.dir.join("tmp");
         std::fs::create_dir_all(&tmp_dir)?;
         std::fs::create_dir_all(path.parent().expect("an entry path has a parent"))?;
         self.tag_dir();
         let tmp = unique_temp(&tmp_dir);
-        let written = std::fs::File::options().write(true).create_new(true).open(&tmp).and_then(|mut f| f.write_all(&encode(key, artifacts)));
+        let written = std::fs::File::options().write(true).create_new(true).open(&tmp).and_then(|mut f| f.write_all(&encode(key, artifacts, hashes)));
         // No fsync: an entry torn by a crash fails its hash and is recompiled.
         match written.and_then(|_| std::fs::rename(&tmp, &path)) {
             Ok(()) => Ok(()),
@@ -300,65 +333,79 @@ fn tag_target(tag: u8) -> Option<Option<Target>> {
     })
 }
 
-fn encode(key: &Key, artifacts: &[Artifact]) -> Vec<u8> {
+fn encode(key: &Key, artifacts: &[Artifact], hashes: &[Key]) -> Vec<u8> {
+    // `meta` is the body without the contents: what the header's hash covers.
     let mut body = Vec::new();
-    body.extend_from_slice(&(artifacts.len() as u32).to_le_bytes());
-    for a in artifacts {
-        body.push(target_tag(a.target));
-        put_bytes(&mut body, a.file_name.as_bytes());
+    let mut meta = Sha256::new();
+    let mut put = |body: &mut Vec<u8>, bytes: &[u8]| {
+        meta.update(bytes);
+        body.extend_from_slice(bytes);
+    };
+    put(&mut body, &(artifacts.len() as u32).to_le_bytes());
+    for (a, hash) in artifacts.iter().zip(hashes) {
+        put(&mut body, &[target_tag(a.target)]);
+        put(&mut body, &(a.file_name.len() as u64).to_le_bytes());
+        put(&mut body, a.file_name.as_bytes());
         match &a.entry {
             Some(e) => {
-                body.push(1);
-                put_bytes(&mut body, e.as_bytes());
+                put(&mut body, &[1]);
+                put(&mut body, &(e.len() as u64).to_le_bytes());
+                put(&mut body, e.as_bytes());
             }
-            None => body.push(0),
+            None => put(&mut body, &[0]),
         }
-        put_bytes(&mut body, &a.contents);
+        put(&mut body, &hash.0);
+        put(&mut body, &(a.contents.len() as u64).to_le_bytes());
+        body.extend_from_slice(&a.contents);
     }
     let mut out = Vec::with_capacity(HEADER_LEN + body.len());
     out.extend_from_slice(MAGIC);
     out.extend_from_slice(&key.0);
     out.extend_from_slice(&(body.len() as u64).to_le_bytes());
-    out.extend_from_slice(&Sha256::digest(&body));
+    out.extend_from_slice(&meta.finalize());
     out.extend_from_slice(&body);
     out
 }
 
-fn put_bytes(out: &mut Vec<u8>, b: &[u8]) {
-    out.extend_from_slice(&(b.len() as u64).to_le_bytes());
-    out.extend_from_slice(b);
-}
-
-/// The artifacts of an entry, or `None` unless every check passes.
-fn decode(key: &Key, bytes: &[u8]) -> Option<Vec<Artifact>> {
+/// The entry, or `None` unless every check passes.
+fn decode(key: &Key, bytes: &[u8]) -> Option<Entry> {
     let header = bytes.get(..HEADER_LEN)?;
     let body = &bytes[HEADER_LEN..];
     if &header[..8] != MAGIC || header[8..40] != key.0 {
         return None;
     }
     let len = u64::from_le_bytes(header[40..48].try_into().ok()?);
-    if len != body.len() as u64 || Sha256::digest(body)[..] != header[48..80] {
+    if len != body.len() as u64 {
         return None;
     }
-    let mut r = Reader { bytes: body };
-    let count = u32::from_le_bytes(r.take(4)?.try_into().ok()?);
+    let mut r = Reader { bytes: body, meta: Sha256::new() };
+    let count = u32::from_le_bytes(r.meta(4)?.try_into().ok()?);
     let mut artifacts = Vec::with_capacity(count.min(1024) as usize);
+    let mut hashes = Vec::with_capacity(count.min(1024) as usize);
     for _ in 0..count {
-        let target = tag_target(r.take(1)?[0])?;
-        let file_name = String::from_utf8(r.bytes_field()?.to_vec()).ok()?;
-        let entry = match r.take(1)?[0] {
+        let target = tag_target(r.meta(1)?[0])?;
+        let file_name = String::from_utf8(r.meta_field()?.to_vec()).ok()?;
+        let entry = match r.meta(1)?[0] {
             0 => None,
-            1 => Some(String::from_utf8(r.bytes_field()?.to_vec()).ok()?),
+            1 => Some(String::from_utf8(r.meta_field()?.to_vec()).ok()?),
             _ => return None,
         };
-        let contents = r.bytes_field()?.to_vec();
-        artifacts.push(Artifact { file_name, target, entry, contents });
+        let hash = Key(r.meta(32)?.try_into().ok()?);
+        let n = u64::from_le_bytes(r.meta(8)?.try_into().ok()?);
+        let contents = r.take(usize::try_from(n).ok()?)?;
+        if Key::of_bytes(contents) != hash {
+            return None;
+        }
+        artifacts.push(Artifact { file_name, target, entry, contents: contents.to_vec() });
+        hashes.push(hash);
     }
-    r.bytes.is_empty().then_some(artifacts)
+    (r.bytes.is_empty() && r.meta.finalize()[..] == header[48..80]).then_some(Entry { artifacts, hashes })
 }
 
 struct Reader<'a> {
     bytes: &'a [u8],
+    /// The hash of what was read through [`Reader::meta`].
+    meta: Sha256,
 }
 
 impl<'a> Reader<'a> {
@@ -371,9 +418,17 @@ impl<'a> Reader<'a> {
         Some(a)
     }
 
-    fn bytes_field(&mut self) -> Option<&'a [u8]> {
-        let len = u64::from_le_bytes(self.take(8)?.try_into().ok()?);
-        self.take(usize::try_from(len).ok()?)
+    /// `n` bytes the header's hash covers.
+    fn meta(&mut self, n: usize) -> Option<&'a [u8]> {
+        let b = self.take(n)?;
+        self.meta.update(b);
+        Some(b)
+    }
+
+    /// A length-prefixed field the header's hash covers.
+    fn meta_field(&mut self) -> Option<&'a [u8]> {
+        let len = u64::from_le_bytes(self.meta(8)?.try_into().ok()?);
+        self.meta(usize::try_from(len).ok()?)
     }
 }
 

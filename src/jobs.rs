@@ -16,7 +16,7 @@ use std::collections::BTreeMap;
 use std::path::{Path, PathBuf};
 
 use crate::batch::{self, Outcome, Stats, Unit};
-use crate::cache::{Cache, Key};
+use crate::cache::Cache;
 use crate::variants::{describe, Variant};
 use crate::{Artifact, Compilation, Diagnostic, Options};
 
@@ -206,10 +206,11 @@ impl Batch {
                     }
                 }
                 let sub = &self.inputs[job.input].subdir;
-                for a in o.artifacts.iter().flatten() {
+                debug_assert_eq!(o.artifacts.as_ref().map_or(0, Vec::len), o.hashes.len());
+                for (a, hash) in o.artifacts.iter().flatten().zip(&o.hashes) {
                     let mut rel: Vec<String> = sub.components().map(|c| c.as_os_str().to_string_lossy().into_owned()).collect();
                     rel.push(a.file_name.clone());
-                    outputs.insert(rel.join("/"), format!("sha256:{}", Key::of_bytes(&a.contents).hex()));
+                    outputs.insert(rel.join("/"), format!("sha256:{}", hash.hex()));
                 }
             }
             let defines: serde_json::Map<String, serde_json::Value> =

@@ -191,7 +191,7 @@ fn damaged_cache_entries_are_detected_removed_and_recompiled() {
     let args = ["compile", "tint.das", "--variants", "spec.toml", "-o", "out", "--cache", "cache", "-v"];
     assert!(p.run(&args).status.success());
     let good = files_under(&p.path("out"));
-    let entries: Vec<PathBuf> = files_under(&p.path("cache/v1")).into_iter().map(|(f, _)| p.path("cache/v1").join(f)).collect();
+    let entries: Vec<PathBuf> = files_under(&p.path("cache/v2")).into_iter().map(|(f, _)| p.path("cache/v2").join(f)).collect();
     assert_eq!(entries.len(), 2);
     // One truncated, one with a flipped byte in the middle of an output.
     let bytes = std::fs::read(&entries[0]).unwrap();
