@@ -48,7 +48,9 @@ const RESERVED: &[&str] = &[
 
 /// Whether GLSL 330 or GLSL ES 3.00 cannot take `name` as an identifier.
 pub fn is_reserved(name: &str) -> bool {
-    name.starts_with("gl_") || RESERVED.contains(&name)
+    // Asked for every name of every GL module: a set, not a scan of the list.
+    static SET: std::sync::OnceLock<rustc_hash::FxHashSet<&'static str>> = std::sync::OnceLock::new();
+    name.starts_with("gl_") || SET.get_or_init(|| RESERVED.iter().copied().collect()).contains(name)
 }
 
 /// The GLSL name of a source name: itself, or itself followed by `_`,
