@@ -1045,6 +1045,8 @@ mod tests {
             uniforms: vec![],
             structs: vec![StructLayout { name: "Light".into(), size: 16, members: vec![] }],
             samplers: vec![],
+            storage_buffers: None,
+            storage_images: None,
         };
         assert_eq!(host_type(&r, "float").unwrap(), HostType::Scalar("f32"));
         assert_eq!(host_type(&r, "uint3").unwrap(), HostType::Vector("u32", 3));

@@ -125,6 +125,8 @@ impl Programs {
             Target::Spirv => &self.spirv,
             Target::Glsl330 => &self.glsl330,
             Target::Gles300 => &self.gles300,
+            // No consumer runs these yet.
+            Target::Glsl430 | Target::Gles310 => return None,
         })
     }
 }

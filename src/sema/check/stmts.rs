@@ -23,17 +23,15 @@ impl<'a, 'd> Checker<'a, 'd> {
                 self.diags.push(d);
                 continue;
             }
-            if stage == naga::ShaderStage::Compute {
-                let at = decl.annotations.iter().find(|a| a.name.name == "compute_program").map_or(decl.name.span, |a| a.span);
-                let d = Diagnostic::error(format!("compute program `{name}`: compute programs are not supported yet"), at)
-                    .with_label("a compute program")
-                    .with_note("umbrac compiles vertex and fragment programs; compile the others in this file with `--entry NAME`");
-                self.diags.push(d);
-                continue;
-            }
+            let workgroup_size = match stage {
+                naga::ShaderStage::Compute => self.workgroup_size(decl),
+                _ => [0; 3],
+            };
+            self.entry_workgroup_size = workgroup_size;
             let Some(func) = self.check_function(decl, Some(stage), None) else { continue };
             self.check_stage_rules(&name, stage, &func);
-            self.out.entry_points.push(EntryPoint { name, stage, func, locations: BTreeMap::new() });
+            self.check_compute_rules(decl, &name, stage, &func);
+            self.out.entry_points.push(EntryPoint { name, stage, func, locations: BTreeMap::new(), workgroup_size });
         }
     }
 
@@ -570,6 +568,8 @@ impl<'a, 'd> Checker<'a, 'd> {
                 let g = &self.out.globals[*id];
                 let why = match g.kind {
                     GlobalKind::Uniform { .. } | GlobalKind::Sampler { .. } => Some("it is a uniform, set by the host"),
+                    GlobalKind::Storage { access: crate::sema::types::Access::Read } => Some("it is a `@readonly` storage buffer"),
+                    GlobalKind::Image { .. } => Some("a storage image is written with `imageStore(image, coord, value)`"),
                     GlobalKind::Io { kind: IoKind::In, .. } => Some("it is an `@in` input"),
                     GlobalKind::Builtin(b) if !b.is_output() => Some("it is a builtin input"),
                     _ => None,
