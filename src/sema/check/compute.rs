@@ -296,3 +296,83 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
     }
 }
+
+/// Storage and workgroup variables that cannot be copied as a whole: a
+/// buffer whose struct ends in a run-time-sized array (or that array), and
+/// anything holding atomics (WGSL has no atomic values, only places). Their
+/// members and elements are read and written one by one. Checked once the
+/// program's atomics are known (`Program::atomics`).
+pub(super) fn check_whole_values(p: &Program, diags: &mut Diagnostics) {
+    let bodies = p.functions.iter().map(|f| &f.body).chain(p.entry_points.iter().map(|e| &e.func.body));
+    let mut reported = std::collections::BTreeSet::new();
+    for body in bodies {
+        super::uniformity::visit_exprs(body, &mut |e| whole_uses(p, e, true, diags, &mut reported));
+    }
+}
+
+/// Why the place `g` (member `member`) cannot be used as a whole value.
+fn whole_problem(p: &Program, g: GlobalId, member: Option<u32>) -> Option<&'static str> {
+    let global = &p.globals[g];
+    match (&global.kind, member, &global.ty) {
+        (GlobalKind::Storage { .. }, None, Ty::Struct(sid)) => {
+            if p.structs[*sid].fields.last().is_some_and(|f| matches!(f.1, Ty::RuntimeArray(_))) {
+                Some("it holds a run-time-sized array")
+            } else if p.atomics.iter().any(|(a, m)| *a == g && m.is_some()) {
+                Some("atomics operate on its members")
+            } else {
+                None
+            }
+        }
+        (GlobalKind::Storage { .. }, Some(m), Ty::Struct(sid)) => match p.structs[*sid].fields.get(m as usize).map(|f| &f.1) {
+            Some(Ty::RuntimeArray(_)) => Some("it is a run-time-sized array"),
+            Some(Ty::Array(..)) if p.atomics.contains(&(g, Some(m))) => Some("atomics operate on its elements"),
+            _ => None,
+        },
+        (GlobalKind::Workgroup, None, Ty::Array(..)) if p.atomics.contains(&(g, None)) => Some("atomics operate on its elements"),
+        _ => None,
+    }
+}
+
+fn whole_uses(p: &Program, e: &Expr, whole: bool, diags: &mut Diagnostics, reported: &mut std::collections::BTreeSet<(u32, u32)>) {
+    let mut report = |name: &str, why: &str| {
+        if reported.insert((e.span.start, e.span.end)) {
+            let d = Diagnostic::error(format!("`{name}` cannot be read or written as a whole: {why}"), e.span)
+                .with_note("help: read and write its elements (or members) one at a time");
+            diags.push(d);
+        }
+    };
+    match &e.kind {
+        ExprKind::Global(g) => {
+            if let Some(why) = whole.then(|| whole_problem(p, *g, None)).flatten() {
+                report(&p.globals[*g].name, why);
+            }
+        }
+        ExprKind::Field(b, m) => {
+            if let (true, ExprKind::Global(g)) = (whole, &b.kind) {
+                if let Some(why) = whole_problem(p, *g, Some(*m)) {
+                    let Ty::Struct(sid) = p.globals[*g].ty else { return };
+                    report(&format!("{}.{}", p.globals[*g].name, p.structs[sid].fields[*m as usize].0), why);
+                    return;
+                }
+            }
+            whole_uses(p, b, false, diags, reported);
+        }
+        ExprKind::Index(b, i) => {
+            whole_uses(p, b, false, diags, reported);
+            whole_uses(p, i, true, diags, reported);
+        }
+        ExprKind::Builtin(Builtin::Atomic(_) | Builtin::ArrayLength, args) => {
+            if let Some((first, rest)) = args.split_first() {
+                whole_uses(p, first, false, diags, reported);
+                for a in rest {
+                    whole_uses(p, a, true, diags, reported);
+                }
+            }
+        }
+        _ => {
+            for c in super::uniformity::children(e) {
+                whole_uses(p, c, true, diags, reported);
+            }
+        }
+    }
+}

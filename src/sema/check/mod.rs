@@ -54,6 +54,7 @@ pub fn check_for_targets(program: &ast::Program, targets: &[crate::target::Targe
     c.check_entry_points();
     folding::check_program(&c.out, c.diags);
     uniformity::check_program(&c.out, c.diags);
+    compute::check_whole_values(&c.out, c.diags);
     c.link_programs();
     if c.diags.has_errors() {
         None

@@ -104,6 +104,14 @@ impl<'a, 'd> Checker<'a, 'd> {
         let decl = self.fn_decls[idx];
         let errors = self.diags.error_count();
         let params: Vec<Ty> = decl.params.iter().map(|p| self.resolve_type(&p.ty)).collect();
+        for (p, ty) in decl.params.iter().zip(&params) {
+            if matches!(ty, Ty::Image(_) | Ty::RuntimeArray(_)) {
+                let what = if matches!(ty, Ty::Image(_)) { "a storage image" } else { "a run-time-sized array" };
+                let d = Diagnostic::error(format!("parameter `{}` cannot be {what} (`{}`)", p.name.name, self.show(ty)), p.ty.span)
+                    .with_note("help: use the global by its name in the function");
+                self.diags.push(d);
+            }
+        }
         let required = decl.params.iter().rposition(|p| p.default.is_none()).map_or(0, |k| k + 1);
         let sig = (self.diags.error_count() == errors).then(|| std::rc::Rc::new(Signature { params, required }));
         self.fn_sigs[idx] = Some(sig.clone());

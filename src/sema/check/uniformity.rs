@@ -83,7 +83,7 @@ fn first_barrier(p: &Program, stmts: &[Stmt], reach: &[bool]) -> Option<Span> {
 }
 
 /// The direct subexpressions of `e`.
-fn children(e: &Expr) -> Vec<&Expr> {
+pub(super) fn children(e: &Expr) -> Vec<&Expr> {
     match &e.kind {
         ExprKind::Unary(_, x) | ExprKind::Swizzle(x, _) | ExprKind::Field(x, _) => vec![x],
         ExprKind::Binary(_, lr) => vec![&lr.0, &lr.1],
@@ -96,7 +96,7 @@ fn children(e: &Expr) -> Vec<&Expr> {
 
 /// Calls `f` on every top-level expression of the statements, nested
 /// statements included.
-fn visit_exprs<'e>(stmts: &'e [Stmt], f: &mut impl FnMut(&'e Expr)) {
+pub(super) fn visit_exprs<'e>(stmts: &'e [Stmt], f: &mut impl FnMut(&'e Expr)) {
     for s in stmts {
         match s {
             Stmt::Local { init, .. } => init.iter().for_each(&mut *f),
