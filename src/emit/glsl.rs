@@ -401,12 +401,15 @@ pub fn storage_block_name(name: &str) -> String {
     [name, "_ssbo"].concat()
 }
 
+/// [`with_gl_bindings`]' module, binding map and renamed images.
+type GlBound = (naga::Module, naga::back::glsl::BindingMap, Vec<(String, String)>);
+
 /// A copy of the entry point's GL module whose storage buffers and
 /// textures have bindings, the map from those to GL binding points
 /// (storage buffers), image units (storage images) and texture units
 /// (samplers), and the names naga then gives the storage images, with
 /// their source names.
-fn with_gl_bindings(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface) -> Result<(naga::Module, naga::back::glsl::BindingMap, Vec<(String, String)>), Diagnostic> {
+fn with_gl_bindings(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface) -> Result<GlBound, Diagnostic> {
     let mut module = em.module.clone();
     let mut map = naga::back::glsl::BindingMap::default();
     let mut renamed = Vec::new();

@@ -35,6 +35,10 @@ pub enum Consumer {
     /// The CPU ray-cast reference (exact shadows; the tutorial and
     /// technique scenes only).
     Reference,
+    /// OpenGL 4.3 core, the `.430.*` files: compute plans only.
+    Gl430,
+    /// OpenGL ES 3.1, the `.310es.*` files: compute plans only.
+    Gles310,
 }
 
 impl Consumer {
@@ -50,11 +54,17 @@ impl Consumer {
             Consumer::Gles300 => "gles300",
             Consumer::WebGl2 => "webgl2",
             Consumer::Reference => "reference",
+            Consumer::Gl430 => "gl430",
+            Consumer::Gles310 => "gles310",
         }
     }
 
+    /// The consumers that run compute plans (`WgpuExecutor::run_compute`,
+    /// `GlExecutor::run_compute`); the GL 4.3 / ES 3.1 ones run nothing else.
+    pub const COMPUTE: [Consumer; 4] = [Consumer::VulkanWgsl, Consumer::VulkanSpirv, Consumer::Gl430, Consumer::Gles310];
+
     pub fn from_name(name: &str) -> Option<Consumer> {
-        Consumer::ALL.into_iter().find(|c| c.name() == name)
+        Consumer::ALL.into_iter().chain(Consumer::COMPUTE).find(|c| c.name() == name)
     }
 
     /// What runs what.
@@ -67,6 +77,8 @@ impl Consumer {
             Consumer::Gles300 => "GLSL ES 3.00 on an OpenGL ES 3.0 context",
             Consumer::WebGl2 => "GLSL ES 3.00 on WebGL2 in chromium",
             Consumer::Reference => "CPU ray-cast reference",
+            Consumer::Gl430 => "GLSL 430 on an OpenGL 4.3 core context (compute)",
+            Consumer::Gles310 => "GLSL ES 3.10 on an OpenGL ES 3.1 context (compute)",
         }
     }
 
@@ -82,6 +94,8 @@ impl Consumer {
             Consumer::VulkanSpirv => Target::Spirv,
             Consumer::Gl330 => Target::Glsl330,
             Consumer::Gles300 | Consumer::WebGl2 => Target::Gles300,
+            Consumer::Gl430 => Target::Glsl430,
+            Consumer::Gles310 => Target::Gles310,
             Consumer::Reference => return None,
         })
     }
@@ -195,7 +209,40 @@ pub fn run(consumer: Consumer, set: &ShaderSet, plan: &FramePlan) -> Result<(Rea
         Consumer::Gl330 | Consumer::Gles300 => run_gl(consumer, set, plan),
         Consumer::WebGl2 => once(&WebGl::find()?, set, plan),
         Consumer::Reference => Err(ExecError::Unsupported("the CPU reference draws its scenes itself, not plans".into())),
+        Consumer::Gl430 | Consumer::Gles310 => Err(ExecError::Unsupported(format!("{} runs compute plans only (`run_compute`)", consumer.name()))),
     }
+}
+
+/// Runs a compute plan with `set` on `consumer` (one of
+/// [`Consumer::COMPUTE`]): what came back and the device it ran on.
+pub fn run_compute(consumer: Consumer, set: &ShaderSet, plan: &super::plan::compute::ComputePlan) -> Result<(super::exec::ComputeReadback, String), ExecError> {
+    match consumer {
+        Consumer::VulkanWgsl | Consumer::VulkanSpirv => {
+            let e = vulkan()?;
+            Ok((e.run_compute(set, plan)?, e.adapter_name()))
+        }
+        Consumer::Gl430 | Consumer::Gles310 => run_gl_compute(consumer, set, plan),
+        other => Err(ExecError::Unsupported(format!(
+            "{} runs no compute programs (WebGL2 and OpenGL 3.3 / ES 3.0 have none; the compute consumers: vulkan-wgsl, vulkan-spirv, gl430, gles310)",
+            other.name()
+        ))),
+    }
+}
+
+#[cfg(feature = "gl")]
+fn run_gl_compute(consumer: Consumer, set: &ShaderSet, plan: &super::plan::compute::ComputePlan) -> Result<(super::exec::ComputeReadback, String), ExecError> {
+    let _ = wgpu_gl();
+    let e = super::exec::gl::GlExecutor::new(consumer)?;
+    Ok((e.run_compute(set, plan)?, e.adapter_name()))
+}
+
+#[cfg(not(feature = "gl"))]
+fn run_gl_compute(consumer: Consumer, _: &ShaderSet, _: &super::plan::compute::ComputePlan) -> Result<(super::exec::ComputeReadback, String), ExecError> {
+    Err(ExecError::Unavailable {
+        consumer,
+        why: "umbrac was built without the `gl` feature".into(),
+        install: "cargo build --features gl (no system packages needed to build)".into(),
+    })
 }
 
 #[cfg(feature = "gl")]

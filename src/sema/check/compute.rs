@@ -51,7 +51,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                 other => {
                     let mut d = Diagnostic::error(format!("unknown `compute_program` argument `{other}`"), arg.name.span)
                         .with_note("`[compute_program(local_size_x = X, local_size_y = Y, local_size_z = Z)]` (each 1 when left out)");
-                    if let Some(s) = suggest(other, ["local_size_x", "local_size_y", "local_size_z", "version", "name"].into_iter()) {
+                    if let Some(s) = suggest(other, ["local_size_x", "local_size_y", "local_size_z", "version", "name"]) {
                         d = d.with_note(format!("help: did you mean `{s}`?"));
                     }
                     self.diags.push(d);

@@ -170,16 +170,10 @@ impl Walk<'_, '_> {
     fn taint_block(&self, stmts: &[Stmt], under: bool, t: &mut Vec<bool>) {
         for s in stmts {
             match s {
-                Stmt::Local { local, init: Some(e), .. } => {
-                    if under || self.non_uniform(e, t).is_some() {
-                        t[*local] = true;
-                    }
-                }
-                Stmt::Assign { target, value, .. } => {
-                    if under || self.non_uniform(value, t).is_some() {
-                        if let Some(l) = root_local(target) {
-                            t[l] = true;
-                        }
+                Stmt::Local { local, init: Some(e), .. } if under || self.non_uniform(e, t).is_some() => t[*local] = true,
+                Stmt::Assign { target, value, .. } if under || self.non_uniform(value, t).is_some() => {
+                    if let Some(l) = root_local(target) {
+                        t[l] = true;
                     }
                 }
                 Stmt::If { cond, then, otherwise, .. } => {

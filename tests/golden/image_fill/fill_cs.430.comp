@@ -2,8 +2,6 @@
 #extension GL_ARB_compute_shader : require
 layout(local_size_x = 8, local_size_y = 8, local_size_z = 1) in;
 
-uniform vec2 u_scale;
-
 layout(binding = 0,rgba8) writeonly uniform image2D out_image;
 
 
@@ -14,10 +12,9 @@ void main() {
     if (((p.x >= size.x) || (p.y >= size.y))) {
         return;
     }
-    vec2 _e18 = u_scale;
-    vec2 uv = ((vec2(p) + vec2(0.5)) * _e18);
-    int _e26 = ((p.x / 4) + (p.y / 4));
-    float checker = float((_e26 - (2 * (_e26 / 2))));
+    vec2 uv = ((vec2(p) + vec2(0.5)) / vec2(size));
+    int _e25 = ((p.x / 4) + (p.y / 4));
+    float checker = float((_e25 - (2 * (_e25 / 2))));
     imageStore(out_image, p, vec4(uv.x, uv.y, checker, 1.0));
     return;
 }

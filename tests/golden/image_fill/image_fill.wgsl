@@ -1,11 +1,5 @@
 diagnostic(off, derivative_uniformity);
 
-struct Uniforms {
-    u_scale: vec2<f32>,
-}
-
-@group(0) @binding(0) 
-var<uniform> uniforms: Uniforms;
 @group(0) @binding(1) 
 var out_image: texture_storage_2d<rgba8unorm,write>;
 
@@ -17,8 +11,7 @@ fn fill_cs(@builtin(global_invocation_id) GlobalInvocationID: vec3<u32>) {
     if ((p.x >= size.x) || (p.y >= size.y)) {
         return;
     }
-    let _e19 = uniforms.u_scale;
-    let uv = ((vec2<f32>(p) + vec2(0.5f)) * _e19);
+    let uv = ((vec2<f32>(p) + vec2(0.5f)) / vec2<f32>(size));
     let checker = f32((((p.x / 4i) + (p.y / 4i)) % 2i));
     textureStore(out_image, p, vec4<f32>(uv.x, uv.y, checker, 1f));
     return;
