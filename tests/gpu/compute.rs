@@ -202,3 +202,66 @@ fn a_plan_that_does_not_fit_names_what_is_wrong() {
     assert!(e.contains("webgl2 runs no compute programs"), "{e}");
 }
 
+
+/// The light-space bounds of what a camera sees, reduced from its depth
+/// buffer (`shaders/compute/depth_bounds.das`, the building block of
+/// sample-distribution shadow maps), against the CPU: the count exactly,
+/// the bounds within 1e-4 of the box's size (the GPU's matrix products
+/// round differently from the CPU's).
+#[test]
+fn depth_bounds_match_the_cpu() {
+    use glam::camera::rh::{proj::opengl, view::look_at_mat4};
+    use glam::{Vec3, Vec4};
+    let (w, h) = (61u32, 47u32);
+    let proj = opengl::perspective(50f32.to_radians(), w as f32 / h as f32, 0.5, 30.0);
+    let view = look_at_mat4(Vec3::new(3.0, 4.0, 6.0), Vec3::ZERO, Vec3::Y);
+    let inv_view_proj = (proj * view).inverse();
+    let light_view = look_at_mat4(Vec3::new(-4.0, 8.0, 2.0), Vec3::ZERO, Vec3::Y);
+    // A depth buffer with a background (1.0) corner and a slope elsewhere.
+    let depth: Vec<f32> = (0..w * h)
+        .map(|i| {
+            let (x, y) = (i % w, i / w);
+            if x + y < 12 { 1.0 } else { 0.90 + 0.09 * (x as f32 / w as f32) * (y as f32 / h as f32) }
+        })
+        .collect();
+    let unkey = |k: i32| -> f32 { f32::from_bits((if k >= 0 { k } else { k ^ 0x7FFF_FFFF }) as u32) };
+    // The CPU's reduction, as the program computes it.
+    let (mut lo, mut hi, mut count) = ([f32::MAX; 3], [f32::MIN; 3], 0u32);
+    for (i, d) in depth.iter().enumerate() {
+        if *d >= 1.0 {
+            continue;
+        }
+        let (x, y) = (i as u32 % w, i as u32 / w);
+        let uv = [(x as f32 + 0.5) / w as f32, (y as f32 + 0.5) / h as f32];
+        let world = inv_view_proj * Vec4::new(uv[0] * 2.0 - 1.0, uv[1] * 2.0 - 1.0, d * 2.0 - 1.0, 1.0);
+        let light = light_view * (world.truncate() / world.w).extend(1.0);
+        for c in 0..3 {
+            lo[c] = lo[c].min(light[c]);
+            hi[c] = hi[c].max(light[c]);
+        }
+        count += 1;
+    }
+    let mut view_bytes: Vec<u8> = [inv_view_proj.to_cols_array(), light_view.to_cols_array()].concat().iter().flat_map(|f| f.to_le_bytes()).collect();
+    view_bytes.extend([w as i32, h as i32].iter().flat_map(|v| v.to_le_bytes()));
+    view_bytes.resize(144, 0);
+    let start: Vec<u8> = [i32::MAX, i32::MAX, i32::MAX, i32::MIN, i32::MIN, i32::MIN, 0].iter().flat_map(|v| v.to_le_bytes()).collect();
+    let plan = ComputePlan {
+        name: "depth bounds".into(),
+        entry: "depth_bounds_cs".into(),
+        workgroups: [w.div_ceil(8), h.div_ceil(8), 1],
+        buffers: vec![BufferInput { name: "view".into(), bytes: view_bytes }, BufferInput { name: "bounds".into(), bytes: start }],
+        images: vec![ImageInput { name: "depth".into(), width: w, height: h, layers: 1, texels: Some(depth.iter().flat_map(|d| d.to_le_bytes()).collect()) }],
+        readback: vec!["bounds".into()],
+    };
+    let ran = run_everywhere("depth_bounds", &plan);
+    for (consumer, r) in &ran {
+        let b = words(&r.resources["bounds"]);
+        assert_eq!(b[6], count, "{}: pixels counted", consumer.name());
+        for c in 0..3 {
+            let (glo, ghi) = (unkey(b[c] as i32), unkey(b[3 + c] as i32));
+            let tol = 1e-4 * (hi[c] - lo[c]).abs().max(1.0);
+            assert!((glo - lo[c]).abs() <= tol && (ghi - hi[c]).abs() <= tol, "{}: axis {c}: [{glo}, {ghi}], the CPU computes [{}, {}]", consumer.name(), lo[c], hi[c]);
+        }
+        eprintln!("depth bounds on {}: lo {:?} hi {:?} over {count} pixels", consumer.name(), (0..3).map(|c| unkey(b[c] as i32)).collect::<Vec<_>>(), (0..3).map(|c| unkey(b[3 + c] as i32)).collect::<Vec<_>>());
+    }
+}
