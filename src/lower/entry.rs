@@ -127,7 +127,7 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
     use naga::ShaderStage::{Fragment, Vertex};
     let p = m.p;
     let stage = ep.stage;
-    let mut iface = EntryInterface { name: ep.name.clone(), stage, index, inputs: Vec::new(), outputs: Vec::new(), builtins: Vec::new(), resources: Vec::new(), loose: Vec::new(), workgroup_size: ep.workgroup_size, workgroup: Vec::new(), span: ep.func.span };
+    let mut iface = EntryInterface { name: ep.name.clone(), stage, index, inputs: Vec::new(), outputs: Vec::new(), builtins: Vec::new(), resources: Vec::new(), loose: Vec::new(), workgroup_size: ep.workgroup_size, workgroup: Vec::new(), span: ep.annotation };
     // Only the GPU module's interface is kept (`lower_gl_entry` drops its
     // own): a GL module leaves the lists empty.
     let describe = m.flavor != Flavor::Gl;

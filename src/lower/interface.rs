@@ -161,7 +161,7 @@ pub struct EntryInterface {
     pub workgroup_size: [u32; 3],
     /// The `@groupshared` variables it uses: names and declarations.
     pub workgroup: Vec<(String, Span)>,
-    /// The entry point's declaration.
+    /// The entry point's stage annotation (`[compute_program(...)]`).
     pub span: Span,
 }
 

@@ -332,6 +332,9 @@ pub struct EntryPoint {
     /// A compute entry point's `local_size_x/y/z` (1 where not written);
     /// `[0; 3]` for the other stages.
     pub workgroup_size: [u32; 3],
+    /// Its stage annotation (`[compute_program(...)]`), where limits on the
+    /// workgroup point.
+    pub annotation: Span,
 }
 
 impl EntryPoint {

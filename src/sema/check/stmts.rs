@@ -31,7 +31,8 @@ impl<'a, 'd> Checker<'a, 'd> {
             let Some(func) = self.check_function(decl, Some(stage), None) else { continue };
             self.check_stage_rules(&name, stage, &func);
             self.check_compute_rules(decl, &name, stage, &func);
-            self.out.entry_points.push(EntryPoint { name, stage, func, locations: BTreeMap::new(), workgroup_size });
+            let annotation = decl.annotations.iter().find(|a| matches!(a.name.name.as_str(), "vertex_program" | "fragment_program" | "compute_program")).map_or(decl.name.span, |a| a.span);
+            self.out.entry_points.push(EntryPoint { name, stage, func, locations: BTreeMap::new(), workgroup_size, annotation });
         }
     }
 

@@ -259,9 +259,11 @@ impl Walk<'_, '_> {
                 }
                 Stmt::While { cond, body, span } => {
                     self.expr(cond, disrupted, cx);
+                    // A non-uniform exit first: it is why the loop's own
+                    // variables vary too.
                     let inner = disrupted
-                        .or_else(|| self.non_uniform(cond, &cx.tainted).map(|why| (*span, why)))
-                        .or_else(|| self.loop_exit_disruptor(body, &cx.tainted));
+                        .or_else(|| self.loop_exit_disruptor(body, &cx.tainted))
+                        .or_else(|| self.non_uniform(cond, &cx.tainted).map(|why| (*span, why)));
                     self.block(body, inner, cx);
                     if disrupted.is_none() && inner.is_some() && returns(body) {
                         disrupted = inner;
@@ -271,7 +273,7 @@ impl Walk<'_, '_> {
                     self.expr(start, disrupted, cx);
                     self.expr(end, disrupted, cx);
                     let bound = self.non_uniform(start, &cx.tainted).or_else(|| self.non_uniform(end, &cx.tainted));
-                    let inner = disrupted.or_else(|| bound.map(|why| (*span, why))).or_else(|| self.loop_exit_disruptor(body, &cx.tainted));
+                    let inner = disrupted.or_else(|| self.loop_exit_disruptor(body, &cx.tainted)).or_else(|| bound.map(|why| (*span, why)));
                     self.block(body, inner, cx);
                     if disrupted.is_none() && inner.is_some() && returns(body) {
                         disrupted = inner;
