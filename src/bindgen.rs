@@ -113,6 +113,7 @@ pub fn generate(compiled: &Compiled, opts: &BindgenOptions) -> Result<String, St
     }
     write_uniforms(&mut w, r, &g);
     write_samplers(&mut w, r);
+    write_storage(&mut w, r);
     write_layout_entries(&mut w, r);
     for ep in &r.entry_points {
         write_entry(&mut w, compiled, ep, opts)?;
@@ -596,7 +597,7 @@ impl<'a> Gen<'a> {
     fn check_collisions(&self, r: &Reflection) -> Result<(), String> {
         // Structs, modules and the fixed names share the type namespace.
         let mut seen: BTreeMap<String, String> = BTreeMap::new();
-        let fixed = ["uniform_buffers", "uniforms", "samplers"];
+        let fixed = ["uniform_buffers", "uniforms", "samplers", "storage_buffers", "storage_images"];
         for f in fixed {
             seen.insert(f.to_string(), format!("the `{f}` module"));
         }
@@ -639,10 +640,15 @@ impl<'a> Gen<'a> {
 fn visibility(r: &Reflection, used: impl Fn(&crate::emit::reflect_types::EntryPoint) -> bool) -> &'static str {
     let v = r.entry_points.iter().any(|e| e.stage == "vertex" && used(e));
     let f = r.entry_points.iter().any(|e| e.stage == "fragment" && used(e));
-    match (v, f) {
-        (true, false) => "wgpu::ShaderStages::VERTEX",
-        (false, true) => "wgpu::ShaderStages::FRAGMENT",
-        _ => "wgpu::ShaderStages::VERTEX_FRAGMENT",
+    let c = r.entry_points.iter().any(|e| e.stage == "compute" && used(e));
+    match (v, f, c) {
+        (true, false, false) => "wgpu::ShaderStages::VERTEX",
+        (false, true, false) => "wgpu::ShaderStages::FRAGMENT",
+        (false, false, true) => "wgpu::ShaderStages::COMPUTE",
+        (_, _, false) => "wgpu::ShaderStages::VERTEX_FRAGMENT",
+        (false, true, true) => "wgpu::ShaderStages::FRAGMENT.union(wgpu::ShaderStages::COMPUTE)",
+        (true, false, true) => "wgpu::ShaderStages::VERTEX.union(wgpu::ShaderStages::COMPUTE)",
+        (true, true, true) => "wgpu::ShaderStages::VERTEX_FRAGMENT.union(wgpu::ShaderStages::COMPUTE)",
     }
 }
 
@@ -656,6 +662,12 @@ fn layout_entries(r: &Reflection) -> BTreeMap<u32, Vec<(u32, String)>> {
         let e = groups.entry(s.group).or_default();
         e.push((s.texture_binding, format!("samplers::{}::TEXTURE_LAYOUT_ENTRY", module_ident(&s.name))));
         e.push((s.sampler_binding, format!("samplers::{}::SAMPLER_LAYOUT_ENTRY", module_ident(&s.name))));
+    }
+    for b in r.storage_buffers.iter().flatten() {
+        groups.entry(b.group).or_default().push((b.binding, format!("storage_buffers::{}::LAYOUT_ENTRY", module_ident(&b.name))));
+    }
+    for i in r.storage_images.iter().flatten() {
+        groups.entry(i.group).or_default().push((i.binding, format!("storage_images::{}::LAYOUT_ENTRY", module_ident(&i.name))));
     }
     for v in groups.values_mut() {
         v.sort();
@@ -809,6 +821,103 @@ fn write_samplers(w: &mut Writer, r: &Reflection) {
     w.blank();
 }
 
+/// `storage_buffers::NAME` (bindings, GL binding point, std430 member
+/// offsets, the fixed part's size and the run-time array's stride) and
+/// `storage_images::NAME` (bindings, image unit, format, access), where
+/// the file has any.
+fn write_storage(w: &mut Writer, r: &Reflection) {
+    let uses = |list: &Option<Vec<String>>, name: &str| list.iter().flatten().any(|n| n == name);
+    if let Some(buffers) = &r.storage_buffers {
+        w.line("/// Every `@ssbo` storage buffer: std430 layout, WGSL/SPIR-V bindings, GL binding points.");
+        w.open("pub mod storage_buffers {");
+        for b in buffers {
+            w.line(&format!("/// `var @ssbo {} : {}` ({})", b.name, b.ty, b.access));
+            w.open(&format!("pub mod {} {{", module_ident(&b.name)));
+            w.line(&format!("pub const NAME: &str = {};", str_lit(&b.name)));
+            w.line(&format!("pub const READ_ONLY: bool = {};", b.access == "read"));
+            w.line(&format!("pub const GROUP: u32 = {};", b.group));
+            w.line(&format!("pub const BINDING: u32 = {};", b.binding));
+            w.line("/// GLSL: `layout(std430, binding = GLSL_BINDING) buffer GLSL_BLOCK` (glBindBufferBase).");
+            w.line(&format!("pub const GLSL_BLOCK: &str = {};", str_lit(&b.glsl_block)));
+            w.line(&format!("pub const GLSL_BINDING: u32 = {};", b.glsl_binding));
+            w.line("/// Bytes before the run-time-sized array (the whole struct without one).");
+            w.line(&format!("pub const SIZE: u64 = {};", b.size));
+            w.line("/// The run-time-sized array's element stride: a buffer of n elements takes SIZE + n * stride bytes.");
+            w.line(&format!("pub const RUNTIME_STRIDE: Option<u64> = {};", b.runtime_stride.map_or("None".to_string(), |s| format!("Some({s})"))));
+            for m in &b.members {
+                w.line(&format!("/// `{}` ({}): std430 offset.", m.name, m.ty));
+                w.line(&format!("pub const OFFSET_{}: u64 = {};", screaming(&m.name), m.offset));
+            }
+            let vis = visibility(r, |e| uses(&e.storage_buffers, &b.name));
+            w.line("#[cfg(feature = \"wgpu\")]");
+            w.open("pub const LAYOUT_ENTRY: wgpu::BindGroupLayoutEntry = wgpu::BindGroupLayoutEntry {");
+            w.line(&format!("binding: {},", b.binding));
+            w.line(&format!("visibility: {vis},"));
+            w.line(&format!("ty: wgpu::BindingType::Buffer {{ ty: wgpu::BufferBindingType::Storage {{ read_only: {} }}, has_dynamic_offset: false, min_binding_size: None }},", b.access == "read"));
+            w.line("count: None,");
+            w.close("};");
+            w.close("}");
+        }
+        w.close("}");
+        w.blank();
+    }
+    if let Some(images) = &r.storage_images {
+        w.line("/// Every storage image: format, access, WGSL/SPIR-V bindings, GL image units.");
+        w.open("pub mod storage_images {");
+        for i in images {
+            w.line(&format!("/// `var @format = {} {} : {}` ({})", i.format, i.name, i.ty, i.access));
+            w.open(&format!("pub mod {} {{", module_ident(&i.name)));
+            w.line(&format!("pub const NAME: &str = {};", str_lit(&i.name)));
+            w.line("/// The GLSL format qualifier, and the access (`read`, `write`, `read_write`).");
+            w.line(&format!("pub const FORMAT: &str = {};", str_lit(&i.format)));
+            w.line(&format!("pub const ACCESS: &str = {};", str_lit(&i.access)));
+            w.line(&format!("pub const GROUP: u32 = {};", i.group));
+            w.line(&format!("pub const BINDING: u32 = {};", i.binding));
+            w.line("/// GLSL: `layout(binding = IMAGE_UNIT, FORMAT) uniform image* GLSL_NAME` (glBindImageTexture).");
+            w.line(&format!("pub const GLSL_NAME: &str = {};", str_lit(&i.glsl_name)));
+            w.line(&format!("pub const IMAGE_UNIT: u32 = {};", i.image_unit));
+            let format = match i.wgpu_format.as_str() {
+                "rgba8unorm" => "Rgba8Unorm",
+                "rgba8snorm" => "Rgba8Snorm",
+                "rgba8uint" => "Rgba8Uint",
+                "rgba8sint" => "Rgba8Sint",
+                "rgba16float" => "Rgba16Float",
+                "rgba16uint" => "Rgba16Uint",
+                "rgba16sint" => "Rgba16Sint",
+                "rgba32float" => "Rgba32Float",
+                "rgba32uint" => "Rgba32Uint",
+                "rgba32sint" => "Rgba32Sint",
+                "r32float" => "R32Float",
+                "r32uint" => "R32Uint",
+                _ => "R32Sint",
+            };
+            let access = match i.access.as_str() {
+                "read" => "ReadOnly",
+                "write" => "WriteOnly",
+                _ => "ReadWrite",
+            };
+            let dim = match i.dimension.as_str() {
+                "2d-array" => "D2Array",
+                "3d" => "D3",
+                _ => "D2",
+            };
+            w.line("#[cfg(feature = \"wgpu\")]");
+            w.line(&format!("pub const WGPU_FORMAT: wgpu::TextureFormat = wgpu::TextureFormat::{format};"));
+            let vis = visibility(r, |e| uses(&e.storage_images, &i.name));
+            w.line("#[cfg(feature = \"wgpu\")]");
+            w.open("pub const LAYOUT_ENTRY: wgpu::BindGroupLayoutEntry = wgpu::BindGroupLayoutEntry {");
+            w.line(&format!("binding: {},", i.binding));
+            w.line(&format!("visibility: {vis},"));
+            w.line(&format!("ty: wgpu::BindingType::StorageTexture {{ access: wgpu::StorageTextureAccess::{access}, format: wgpu::TextureFormat::{format}, view_dimension: wgpu::TextureViewDimension::{dim} }},"));
+            w.line("count: None,");
+            w.close("};");
+            w.close("}");
+        }
+        w.close("}");
+        w.blank();
+    }
+}
+
 fn write_layout_entries(w: &mut Writer, r: &Reflection) {
     let groups = layout_entries(r);
     if !groups.contains_key(&0) {
@@ -845,6 +954,9 @@ fn entry_bindings(compiled: &Compiled, ep: &crate::emit::reflect_types::EntryPoi
     for s in r.samplers.iter().filter(|s| s.group == 0 && ep.samplers.contains(&s.name)) {
         v.extend([s.texture_binding, s.sampler_binding]);
     }
+    let uses = |list: &Option<Vec<String>>, name: &String| list.iter().flatten().any(|n| n == name);
+    v.extend(r.storage_buffers.iter().flatten().filter(|b| b.group == 0 && uses(&ep.storage_buffers, &b.name)).map(|b| b.binding));
+    v.extend(r.storage_images.iter().flatten().filter(|i| i.group == 0 && uses(&ep.storage_images, &i.name)).map(|i| i.binding));
     v.sort();
     v
 }
@@ -870,7 +982,7 @@ fn write_entry(w: &mut Writer, compiled: &Compiled, ep: &crate::emit::reflect_ty
     w.line(&format!("pub const NAME: &str = {};", str_lit(&ep.name)));
     w.line(&format!("pub const STAGE: &str = {};", str_lit(&ep.stage)));
     if opts.sources {
-        for (target, konst) in [(Target::Glsl330, "GLSL330"), (Target::Gles300, "GLES300")] {
+        for (target, konst) in [(Target::Glsl330, "GLSL330"), (Target::Gles300, "GLES300"), (Target::Glsl430, "GLSL430"), (Target::Gles310, "GLES310")] {
             if let Some(file) = ep.files.get(target.name()) {
                 if let Some(a) = compiled.artifact(file) {
                     w.line(&format!("/// `{}`", in_comment(file)));
@@ -884,6 +996,15 @@ fn write_entry(w: &mut Writer, compiled: &Compiled, ep: &crate::emit::reflect_ty
     w.line(&format!("pub const UNIFORM_BUFFERS: &[&str] = &[{}];", names(&ep.uniform_buffers)));
     w.line(&format!("pub const UNIFORMS: &[&str] = &[{}];", names(&ep.uniforms)));
     w.line(&format!("pub const SAMPLERS: &[&str] = &[{}];", names(&ep.samplers)));
+    if let Some([x, y, z]) = ep.workgroup_size {
+        w.line("/// `local_size_x/y/z`: invocations per workgroup (dispatch `ceil(n / size)` workgroups).");
+        w.line(&format!("pub const WORKGROUP_SIZE: [u32; 3] = [{x}, {y}, {z}];"));
+    }
+    if ep.storage_buffers.is_some() || ep.storage_images.is_some() {
+        w.line("/// Storage buffers and images this entry point uses.");
+        w.line(&format!("pub const STORAGE_BUFFERS: &[&str] = &[{}];", names(ep.storage_buffers.as_deref().unwrap_or_default())));
+        w.line(&format!("pub const STORAGE_IMAGES: &[&str] = &[{}];", names(ep.storage_images.as_deref().unwrap_or_default())));
+    }
     let bindings = entry_bindings(compiled, ep).iter().map(|b| b.to_string()).collect::<Vec<_>>().join(", ");
     w.line("/// Group 0 bindings this entry point uses.");
     w.line(&format!("pub const BINDINGS: &[u32] = &[{bindings}];"));
@@ -1045,6 +1166,8 @@ mod tests {
             uniforms: vec![],
             structs: vec![StructLayout { name: "Light".into(), size: 16, members: vec![] }],
             samplers: vec![],
+            storage_buffers: None,
+            storage_images: None,
         };
         assert_eq!(host_type(&r, "float").unwrap(), HostType::Scalar("f32"));
         assert_eq!(host_type(&r, "uint3").unwrap(), HostType::Vector("u32", 3));

@@ -319,6 +319,8 @@ fn target_tag(t: Option<Target>) -> u8 {
         Some(Target::Gles300) => 2,
         Some(Target::Wgsl) => 3,
         Some(Target::Spirv) => 4,
+        Some(Target::Glsl430) => 5,
+        Some(Target::Gles310) => 6,
     }
 }
 
@@ -329,6 +331,8 @@ fn tag_target(tag: u8) -> Option<Option<Target>> {
         2 => Some(Target::Gles300),
         3 => Some(Target::Wgsl),
         4 => Some(Target::Spirv),
+        5 => Some(Target::Glsl430),
+        6 => Some(Target::Gles310),
         _ => return None,
     })
 }

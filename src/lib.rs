@@ -50,7 +50,10 @@ pub use target::{Artifact, Target};
 /// What to compile and how.
 #[derive(Clone, Debug, Default)]
 pub struct Options {
-    /// Targets to emit; empty means all. The reflection manifest is always made.
+    /// Targets to emit; empty means every target that can run the program
+    /// (`Target::defaults`: GLSL 330 and ES 3.00, or GLSL 430 and ES 3.10
+    /// for a program with compute, storage buffers or images; WGSL and
+    /// SPIR-V). The reflection manifest is always made.
     pub targets: Vec<Target>,
     /// `-D NAME[=VALUE]`.
     pub defines: Vec<(String, Option<String>)>,
@@ -79,6 +82,8 @@ pub struct Options {
 }
 
 impl Options {
+    /// The targets requested, sorted; every target when none are (what a
+    /// cache key records: the default set follows from the source).
     pub fn targets(&self) -> Vec<Target> {
         if self.targets.is_empty() {
             Target::ALL.to_vec()
@@ -346,7 +351,12 @@ fn finish(pre: Preprocessed, opts: &Options) -> Compilation {
         return Compilation { sources, diagnostics: diags.into_vec(), suppressed_errors, result: None };
     }
     let program = syntax::parse_unit(&sources, root, unit, &parse_options(opts), &mut diags);
-    let checked = if diags.has_errors() { None } else { sema::check_for_targets(&program, &opts.targets(), &mut diags) };
+    let requested = if opts.targets.is_empty() { Vec::new() } else { opts.targets() };
+    let checked = if diags.has_errors() { None } else { sema::check_for_targets(&program, &requested, &mut diags) };
+    let targets = match &checked {
+        Some(p) if requested.is_empty() => Target::defaults(p.needs_compute()).to_vec(),
+        _ => requested,
+    };
     // Each tree is dropped as soon as the next stage has been built from
     // it, so the next stage's allocations reuse its memory, still in cache.
     drop(program);
@@ -361,7 +371,7 @@ fn finish(pre: Preprocessed, opts: &Options) -> Compilation {
             }
         };
         let mut over = Vec::new();
-        emit::limits::check(&lowered, &opts.targets(), &opts.limits, &mut over);
+        emit::limits::check(&lowered, &targets, &opts.limits, &mut over);
         if !over.is_empty() {
             for d in over {
                 diags.push(d);
@@ -370,7 +380,7 @@ fn finish(pre: Preprocessed, opts: &Options) -> Compilation {
         }
         let root_name = &sources.file(root).name;
         let source_name = opts.source_name.as_deref().unwrap_or(root_name);
-        match emit::emit(&lowered, &stem_of(root_name), source_name, &opts.targets()) {
+        match emit::emit(&lowered, &stem_of(root_name), source_name, &targets) {
             Ok((artifacts, reflection)) => Some(Compiled { artifacts, reflection, lowered }),
             Err(d) => {
                 diags.push(d);

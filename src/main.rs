@@ -238,6 +238,10 @@ enum TargetArg {
     Glsl330,
     #[value(name = "gles300")]
     Gles300,
+    #[value(name = "glsl430")]
+    Glsl430,
+    #[value(name = "gles310")]
+    Gles310,
     #[value(name = "wgsl")]
     Wgsl,
     #[value(name = "spirv")]
@@ -427,18 +431,18 @@ fn targets_of(args: &[TargetArg]) -> Vec<Target> {
         match a {
             TargetArg::Glsl330 => t.push(Target::Glsl330),
             TargetArg::Gles300 => t.push(Target::Gles300),
+            TargetArg::Glsl430 => t.push(Target::Glsl430),
+            TargetArg::Gles310 => t.push(Target::Gles310),
             TargetArg::Wgsl => t.push(Target::Wgsl),
             TargetArg::Spirv => t.push(Target::Spirv),
-            TargetArg::All => t.extend(Target::ALL),
+            // Every target that can run the program: decided once it
+            // is checked (`Target::defaults`).
+            TargetArg::All => return Vec::new(),
         }
     }
     t.sort();
     t.dedup();
-    if t.is_empty() {
-        Target::ALL.to_vec()
-    } else {
-        t
-    }
+    t
 }
 
 fn compile(args: &CompileArgs) -> u8 {
@@ -482,8 +486,8 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
         if inputs.len() != 1 {
             return (usage_error("`-o -` prints one output to stdout; give exactly one FILE"), watched);
         }
-        if targets.contains(&Target::Spirv) {
-            return (usage_error("`-o -` prints one text output; SPIR-V is binary (choose one --target of glsl330, gles300, wgsl)"), watched);
+        if targets.is_empty() || targets.contains(&Target::Spirv) {
+            return (usage_error("`-o -` prints one text output; SPIR-V is binary (choose one --target of glsl330, gles300, glsl430, gles310, wgsl)"), watched);
         }
     }
     let mut reporter = Reporter::new(args.common.message_format);
@@ -665,7 +669,7 @@ fn write_file(path: &Path, contents: Vec<u8>) -> Result<(), String> {
 }
 
 fn check(args: &CheckArgs) -> u8 {
-    let opts = args.common.options(Target::ALL.to_vec());
+    let opts = args.common.options(Vec::new());
     let inputs = match umbrac::jobs::inputs_of(&args.files) {
         Ok(i) => i,
         Err(e) => return usage_error(&e),
@@ -684,7 +688,7 @@ fn check(args: &CheckArgs) -> u8 {
 }
 
 fn reflect(args: &ReflectArgs) -> u8 {
-    let mut opts = args.common.options(Target::ALL.to_vec());
+    let mut opts = args.common.options(Vec::new());
     opts.source_name = file_name_of(&args.file);
     let comps = compile_all(std::slice::from_ref(&args.file), &opts);
     let c = &comps[0];
@@ -749,7 +753,7 @@ fn compile_check(args: &CompileArgs, targets: Vec<Target>, inputs: Vec<umbrac::j
 }
 
 fn bindgen(args: &BindgenArgs) -> u8 {
-    let mut opts = args.common.options(Target::ALL.to_vec());
+    let mut opts = args.common.options(Vec::new());
     opts.source_name = file_name_of(&args.file);
     let comps = compile_all(std::slice::from_ref(&args.file), &opts);
     let c = &comps[0];

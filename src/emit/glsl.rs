@@ -1,4 +1,5 @@
-//! GLSL 330 core and GLSL ES 3.00, one file per entry point.
+//! GLSL 330 core, GLSL ES 3.00, GLSL 430 core and GLSL ES 3.10, one file
+//! per entry point.
 //!
 //! naga's GLSL writer runs on the GL modules (`Lowered::gl`), whose resource globals carry no
 //! binding, so its namer gives samplers and uniform instances their source
@@ -17,6 +18,15 @@
 //! - ES 3.00: after naga's `precision highp float; precision highp int;`,
 //!   a `precision highp T;` line for every sampler type the shader uses that
 //!   ES 3.00 gives no default precision (`sampler2DShadow`, ...).
+//!
+//! - GLSL 430 / ES 3.10 (compute, storage buffers, images): the GL
+//!   module is written with bindings on its storage buffers and textures
+//!   (GLES 3.1 has no `glShaderStorageBlockBinding` and cannot set an
+//!   image's unit from the host), so each declares `layout(binding = N)`:
+//!   a storage buffer its GL binding point, a storage image its image
+//!   unit, a sampler its texture unit. Storage blocks are `<name>_ssbo`.
+//!   Workgroup memory is zeroed at the start of each workgroup, as WGSL
+//!   and SPIR-V (naga's polyfill) do.
 //!
 //! Each file is written from the entry point's own GL module
 //! (`Lowered::gl[i]`), which holds only what that entry point reaches, so it
@@ -44,6 +54,8 @@ use crate::lower::{EntryInterface, Lowered};
 pub enum Profile {
     Desktop330,
     Es300,
+    Desktop430,
+    Es310,
 }
 
 impl Profile {
@@ -55,13 +67,26 @@ impl Profile {
             // native ES does not need; so one ES file serves both WebGL2 and
             // native GLES 3.x.
             Profile::Es300 => Version::Embedded { version: 300, is_webgl: true },
+            Profile::Desktop430 => Version::Desktop(430),
+            Profile::Es310 => Version::Embedded { version: 310, is_webgl: false },
         }
+    }
+
+    /// Resources carry `layout(binding = N)` (GLSL 430, ES 3.10).
+    fn binds_in_shader(self) -> bool {
+        matches!(self, Profile::Desktop430 | Profile::Es310)
+    }
+
+    fn is_es(self) -> bool {
+        matches!(self, Profile::Es300 | Profile::Es310)
     }
 
     fn label(self) -> &'static str {
         match self {
             Profile::Desktop330 => "GLSL 330",
             Profile::Es300 => "GLSL ES 3.00",
+            Profile::Desktop430 => "GLSL 430",
+            Profile::Es310 => "GLSL ES 3.10",
         }
     }
 
@@ -69,14 +94,17 @@ impl Profile {
         match self {
             Profile::Desktop330 => "330",
             Profile::Es300 => "300es",
+            Profile::Desktop430 => "430",
+            Profile::Es310 => "310es",
         }
     }
 }
 
-/// `main_vs.330.vert`, `main_fs.300es.frag`.
+/// `main_vs.330.vert`, `main_fs.300es.frag`, `fill.430.comp`.
 pub fn file_name(entry: &str, stage: naga::ShaderStage, profile: Profile) -> String {
     let ext = match stage {
         naga::ShaderStage::Fragment => "frag",
+        naga::ShaderStage::Compute => "comp",
         _ => "vert",
     };
     format!("{entry}.{}.{ext}", profile.infix())
@@ -98,6 +126,8 @@ pub struct EntryNames {
     pub inputs: BTreeMap<u32, String>,
     /// Location -> name of each `out` (varyings or colour outputs).
     pub outputs: BTreeMap<u32, String>,
+    /// Source name -> GLSL name of each storage image (GLSL 430 / ES 3.10).
+    pub images: BTreeMap<String, String>,
 }
 
 /// ES 3.00 types that have no default precision (GLSL ES 3.00 §4.5.4) and
@@ -179,13 +209,21 @@ const PRECISION_INT_LINE: &str = "precision highp int;\n";
 /// with one search per kind of name (every block name contains `_block`,
 /// every attribute or varying name `_location`), not one per name.
 pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface, profile: Profile) -> Result<(String, EntryNames), Diagnostic> {
-    let (module, module_info) = (em.module, em.info);
+    let bound;
+    let (module, binding_map, renamed) = if profile.binds_in_shader() {
+        let (m, map, renamed) = with_gl_bindings(lowered, em, ep)?;
+        bound = m;
+        (&bound, map, renamed)
+    } else {
+        (em.module, Default::default(), Vec::new())
+    };
+    let module_info = em.info;
     let (mut out, info) = guard(format_args!("the {} writer for entry point `{}`", profile.label(), ep.name), || {
         let options = Options {
             version: profile.version(),
             writer_flags: WriterFlags::empty(),
-            binding_map: Default::default(),
-            zero_initialize_workgroup_memory: false,
+            binding_map,
+            zero_initialize_workgroup_memory: true,
         };
         let pipeline = PipelineOptions { shader_stage: ep.stage, entry_point: ep.name.clone(), multiview: None };
         let mut out = String::new();
@@ -213,11 +251,12 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
             let instance = at
                 .clone()
                 .next()
-                .and_then(|first| block_instance(&out[first.end..]))
+                .and_then(|first| trailing_instance(&out[first.end..]).or_else(|| block_instance(&out[first.end..])))
                 .ok_or_else(|| bug(format!("cannot find uniform block `{naga_block}`")))?;
             let original = em.original(*handle, ep)?;
             let source = lowered.gpu.global_variables.iter().nth(original).and_then(|(_, g)| g.name.clone()).unwrap_or_else(|| instance.to_string());
-            let new = block_name(&source);
+            let storage = matches!(em.module.global_variables[*handle].space, naga::AddressSpace::Storage { .. });
+            let new = if storage { storage_block_name(&source) } else { block_name(&source) };
             if idents.iter().any(|(_, id)| *id == new) || text::contains_ident(&out, &new) {
                 return Err(bug(format!("renaming uniform block `{naga_block}` to `{new}` would collide with an identifier of the same name")));
             }
@@ -233,6 +272,7 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
     for (naga_name, source) in &instances {
         restore_source_name(&mut out, naga_name, source);
     }
+
 
     // Plain uniforms: `T name = zero;` becomes `uniform T name;`.
     for (handle, source) in em.uniforms {
@@ -253,6 +293,10 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
     }
 
     for (name, mapping) in &info.texture_mapping {
+        // Storage images are named below.
+        if renamed.iter().any(|(n, _)| n == name) {
+            continue;
+        }
         if !text::contains_ident(&out, name) {
             return Err(bug(format!("sampler `{name}` reported by naga is not in the text")));
         }
@@ -266,6 +310,15 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
             None => name.clone(),
         };
         names.samplers.insert(original, final_name);
+    }
+
+    // Storage images, which naga names by binding here.
+    for (naga_name, source) in &renamed {
+        if !text::contains_ident(&out, naga_name) {
+            return Err(bug(format!("storage image `{source}` is not declared as `{naga_name}`")));
+        }
+        let name = restore_source_name(&mut out, naga_name, source);
+        names.images.insert(source.clone(), name);
     }
 
     // Attributes, varyings and colour outputs: naga names them by location
@@ -320,7 +373,7 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
         drop_location_qualifier(&mut out, name).ok_or_else(|| bug(format!("no `layout(location = N)` declaration of `{name}` to drop")))?;
     }
 
-    if profile == Profile::Es300 {
+    if profile.is_es() {
         add_es_precision(&mut out).ok_or_else(|| bug("no `precision highp int;` line to extend".into()))?;
     }
     Ok((out, names))
@@ -341,6 +394,49 @@ fn names_a_variable(src: &str, name: &str) -> bool {
             (None, _) => true,
         }
     })
+}
+
+/// The GLSL block name of storage buffer `name`: `<name>_ssbo`.
+pub fn storage_block_name(name: &str) -> String {
+    [name, "_ssbo"].concat()
+}
+
+/// [`with_gl_bindings`]' module, binding map and renamed images.
+type GlBound = (naga::Module, naga::back::glsl::BindingMap, Vec<(String, String)>);
+
+/// A copy of the entry point's GL module whose storage buffers and
+/// textures have bindings, the map from those to GL binding points
+/// (storage buffers), image units (storage images) and texture units
+/// (samplers), and the names naga then gives the storage images, with
+/// their source names.
+fn with_gl_bindings(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface) -> Result<GlBound, Diagnostic> {
+    let mut module = em.module.clone();
+    let mut map = naga::back::glsl::BindingMap::default();
+    let mut renamed = Vec::new();
+    let stage = match ep.stage {
+        naga::ShaderStage::Compute => "cs",
+        naga::ShaderStage::Fragment => "fs",
+        _ => "vs",
+    };
+    for (h, g) in module.global_variables.iter_mut() {
+        let storage = matches!(g.space, naga::AddressSpace::Storage { .. });
+        let image = g.space == naga::AddressSpace::Handle && matches!(em.module.types[g.ty].inner, naga::TypeInner::Image { .. });
+        if !storage && !image {
+            continue;
+        }
+        let original = em.original(h, ep)?;
+        let Some(r) = lowered.interface.resources.iter().find(|r| r.global.index() == original) else {
+            return Err(Diagnostic::bug(format!("entry point `{}` uses a resource the interface does not describe", ep.name), None));
+        };
+        let unit = r.texture_unit.unwrap_or(0);
+        let binding = naga::ResourceBinding { group: 0, binding: h.index() as u32 };
+        g.binding = Some(binding);
+        map.insert(binding, u8::try_from(unit).map_err(|_| Diagnostic::bug(format!("unit {unit} of `{}` does not fit GLSL's binding", r.name), None))?);
+        if matches!(r.kind, crate::lower::ResourceKind::Image { .. }) {
+            renamed.push((format!("_group_0_binding_{}_{stage}", h.index()), r.name.clone()));
+        }
+    }
+    Ok((module, map, renamed))
 }
 
 /// The GLSL block name of uniform buffer `name` (the struct uniform's, or
@@ -422,6 +518,16 @@ fn block_instance(rest: &str) -> Option<&str> {
     let decl = decl.split('[').next()?;
     let name = decl.split_whitespace().last()?;
     Some(name)
+}
+
+/// The instance name of a block written `BLOCK { members } name;` (naga
+/// writes a storage buffer whose struct ends in a run-time-sized array
+/// with its members in the block), from the text that follows `BLOCK`.
+fn trailing_instance(rest: &str) -> Option<&str> {
+    let close = rest.find("\n}")?;
+    let after = rest[close + 2..].strip_prefix(' ')?;
+    let name = &after[..after.find(';')?];
+    (!name.is_empty() && name.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_')).then_some(name)
 }
 
 /// Adds `precision highp T;` for every no-default-precision type the text

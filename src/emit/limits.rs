@@ -27,6 +27,26 @@
 //! | `samplers` per stage             | -      | -                 | 16   |
 //! | `bind-groups`                    | -      | -                 | 4    |
 //!
+//! Compute, storage buffers and images (GL 4.3 core and GLES 3.1
+//! specifications' minimums; `-`: no such limit on that family):
+//!
+//! | resource (`--limit` name)        | GL 4.3 | GLES 3.1 | wgpu |
+//! |----------------------------------|--------|----------|------|
+//! | `workgroup-size-x`               | 1024   | 128      | 256  |
+//! | `workgroup-size-y`               | 1024   | 128      | 256  |
+//! | `workgroup-size-z`               | 64     | 64       | 64   |
+//! | `workgroup-invocations`          | 1024   | 128      | 256  |
+//! | `workgroup-storage` (bytes)      | 32768  | 16384    | 16384|
+//! | `storage-buffers` compute        | 8      | 4        | 8    |
+//! | `storage-buffers` fragment       | 8      | 0        | 8    |
+//! | `storage-buffers` vertex         | 0      | 0        | 8    |
+//! | `storage-images` compute         | 8      | 4        | 4    |
+//! | `storage-images` fragment        | 8      | 0        | 4    |
+//! | `storage-images` vertex          | 0      | 0        | 4    |
+//!
+//! GL 4.3 and GLES 3.1 also run the vertex and fragment programs within
+//! the GL 3.3 / GLES 3.0 rows above (their minimums are no lower).
+//!
 //! GL 3.3 states uniforms and varyings in components (1024 per stage, 60
 //! varying components); they are counted here as GLES 3.0 does, in
 //! 4-component vectors (each scalar, vector, matrix column and array
@@ -54,10 +74,24 @@ pub enum Limit {
     SampledTextures,
     Samplers,
     BindGroups,
+    WorkgroupSizeX,
+    WorkgroupSizeY,
+    WorkgroupSizeZ,
+    WorkgroupInvocations,
+    WorkgroupStorage,
+    StorageBuffers,
+    StorageImages,
 }
 
 impl Limit {
-    pub const ALL: [Limit; 14] = [
+    pub const ALL: [Limit; 21] = [
+        Limit::WorkgroupSizeX,
+        Limit::WorkgroupSizeY,
+        Limit::WorkgroupSizeZ,
+        Limit::WorkgroupInvocations,
+        Limit::WorkgroupStorage,
+        Limit::StorageBuffers,
+        Limit::StorageImages,
         Limit::VertexAttributes,
         Limit::Varyings,
         Limit::UniformVectors,
@@ -91,6 +125,13 @@ impl Limit {
             Limit::SampledTextures => "sampled-textures",
             Limit::Samplers => "samplers",
             Limit::BindGroups => "bind-groups",
+            Limit::WorkgroupSizeX => "workgroup-size-x",
+            Limit::WorkgroupSizeY => "workgroup-size-y",
+            Limit::WorkgroupSizeZ => "workgroup-size-z",
+            Limit::WorkgroupInvocations => "workgroup-invocations",
+            Limit::WorkgroupStorage => "workgroup-storage",
+            Limit::StorageBuffers => "storage-buffers",
+            Limit::StorageImages => "storage-images",
         }
     }
 
@@ -115,6 +156,13 @@ impl Limit {
             Limit::SampledTextures => "sampled textures",
             Limit::Samplers => "samplers",
             Limit::BindGroups => "bind groups",
+            Limit::WorkgroupSizeX => "invocations along x in a workgroup",
+            Limit::WorkgroupSizeY => "invocations along y in a workgroup",
+            Limit::WorkgroupSizeZ => "invocations along z in a workgroup",
+            Limit::WorkgroupInvocations => "invocations in a workgroup",
+            Limit::WorkgroupStorage => "bytes of workgroup memory",
+            Limit::StorageBuffers => "storage buffers",
+            Limit::StorageImages => "storage images",
         }
     }
 }
@@ -124,6 +172,8 @@ impl Limit {
 enum Family {
     Gl330,
     Es300,
+    Gl430,
+    Es310,
     Wgpu,
 }
 
@@ -133,6 +183,8 @@ impl Family {
         match self {
             Family::Gl330 => "GL 3.3 core guarantees",
             Family::Es300 => "GLES 3.0 and WebGL2 guarantee",
+            Family::Gl430 => "GL 4.3 core guarantees",
+            Family::Es310 => "GLES 3.1 guarantees",
             Family::Wgpu => "wgpu's default limits (WebGPU's) allow",
         }
     }
@@ -141,6 +193,8 @@ impl Family {
         match self {
             Family::Gl330 => "GLSL 330",
             Family::Es300 => "GLSL ES 3.00",
+            Family::Gl430 => "GLSL 430",
+            Family::Es310 => "GLSL ES 3.10",
             Family::Wgpu => "WGSL/SPIR-V",
         }
     }
@@ -151,7 +205,44 @@ impl Family {
         use Family::*;
         use Limit::*;
         let fragment = stage == naga::ShaderStage::Fragment;
+        let compute = stage == naga::ShaderStage::Compute;
+        // GL 4.3 / GLES 3.1 run vertex and fragment programs within the
+        // GL 3.3 / GLES 3.0 minimums.
+        let classic = match self {
+            Gl430 => Gl330,
+            Es310 => Es300,
+            f => f,
+        };
         Some(match (self, limit) {
+            (Gl430, WorkgroupSizeX) => (1024, "GL_MAX_COMPUTE_WORK_GROUP_SIZE[0]"),
+            (Gl430, WorkgroupSizeY) => (1024, "GL_MAX_COMPUTE_WORK_GROUP_SIZE[1]"),
+            (Gl430 | Es310, WorkgroupSizeZ) => (64, "GL_MAX_COMPUTE_WORK_GROUP_SIZE[2]"),
+            (Gl430, WorkgroupInvocations) => (1024, "GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS"),
+            (Gl430, WorkgroupStorage) => (32768, "GL_MAX_COMPUTE_SHARED_MEMORY_SIZE"),
+            (Es310, WorkgroupSizeX) => (128, "GL_MAX_COMPUTE_WORK_GROUP_SIZE[0]"),
+            (Es310, WorkgroupSizeY) => (128, "GL_MAX_COMPUTE_WORK_GROUP_SIZE[1]"),
+            (Es310, WorkgroupInvocations) => (128, "GL_MAX_COMPUTE_WORK_GROUP_INVOCATIONS"),
+            (Es310, WorkgroupStorage) => (16384, "GL_MAX_COMPUTE_SHARED_MEMORY_SIZE"),
+            (Wgpu, WorkgroupSizeX) => (256, "max_compute_workgroup_size_x"),
+            (Wgpu, WorkgroupSizeY) => (256, "max_compute_workgroup_size_y"),
+            (Wgpu, WorkgroupSizeZ) => (64, "max_compute_workgroup_size_z"),
+            (Wgpu, WorkgroupInvocations) => (256, "max_compute_invocations_per_workgroup"),
+            (Wgpu, WorkgroupStorage) => (16384, "max_compute_workgroup_storage_size"),
+            (Gl430, StorageBuffers) if compute => (8, "GL_MAX_COMPUTE_SHADER_STORAGE_BLOCKS"),
+            (Gl430, StorageBuffers) if fragment => (8, "GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS"),
+            (Gl430, StorageBuffers) => (0, "GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS"),
+            (Es310, StorageBuffers) if compute => (4, "GL_MAX_COMPUTE_SHADER_STORAGE_BLOCKS"),
+            (Es310, StorageBuffers) if fragment => (0, "GL_MAX_FRAGMENT_SHADER_STORAGE_BLOCKS"),
+            (Es310, StorageBuffers) => (0, "GL_MAX_VERTEX_SHADER_STORAGE_BLOCKS"),
+            (Wgpu, StorageBuffers) => (8, "max_storage_buffers_per_shader_stage"),
+            (Gl430, StorageImages) if compute => (8, "GL_MAX_COMPUTE_IMAGE_UNIFORMS"),
+            (Gl430, StorageImages) if fragment => (8, "GL_MAX_FRAGMENT_IMAGE_UNIFORMS"),
+            (Gl430, StorageImages) => (0, "GL_MAX_VERTEX_IMAGE_UNIFORMS"),
+            (Es310, StorageImages) if compute => (4, "GL_MAX_COMPUTE_IMAGE_UNIFORMS"),
+            (Es310, StorageImages) if fragment => (0, "GL_MAX_FRAGMENT_IMAGE_UNIFORMS"),
+            (Es310, StorageImages) => (0, "GL_MAX_VERTEX_IMAGE_UNIFORMS"),
+            (Wgpu, StorageImages) => (4, "max_storage_textures_per_shader_stage"),
+            (Gl430 | Es310, _) => return classic.minimum(limit, stage),
             (Gl330 | Es300, VertexAttributes) => (16, "GL_MAX_VERTEX_ATTRIBS"),
             (Wgpu, VertexAttributes) => (16, "max_vertex_attributes"),
             (Gl330, Varyings) => (15, "GL_MAX_VARYING_COMPONENTS / 4"),
@@ -210,6 +301,8 @@ pub fn check(lowered: &Lowered, targets: &[Target], raised: &[(Limit, u64)], dia
         let f = match t {
             Target::Glsl330 => Family::Gl330,
             Target::Gles300 => Family::Es300,
+            Target::Glsl430 => Family::Gl430,
+            Target::Gles310 => Family::Es310,
             Target::Wgsl | Target::Spirv => Family::Wgpu,
         };
         if !families.contains(&f) {
@@ -301,6 +394,7 @@ fn entry_uses(lowered: &Lowered, ep: &EntryInterface, family: Family) -> Vec<(Li
     let blocks_in_gl = iface.gl_uniforms == GlUniforms::Blocks;
     let (mut blocks, mut block_size, mut buffers, mut buffer_size) = (Use::new(), Use::new(), Use::new(), Use::new());
     let (mut textures, mut samplers, mut groups) = (Use::new(), Use::new(), Use::new());
+    let (mut storage_buffers, mut storage_images) = (Use::new(), Use::new());
     let mut max_group: Option<u32> = None;
     for &ri in &ep.resources {
         let Some(r) = iface.resources.get(ri) else { continue };
@@ -330,7 +424,32 @@ fn entry_uses(lowered: &Lowered, ep: &EntryInterface, family: Family) -> Vec<(Li
                 textures.add(1, r.span, &r.name);
                 samplers.add(1, r.span, &r.name);
             }
+            ResourceKind::Storage { .. } => storage_buffers.add(1, r.span, &r.name),
+            ResourceKind::Image { .. } => storage_images.add(1, r.span, &r.name),
         }
+    }
+    out.push((Limit::StorageBuffers, storage_buffers));
+    out.push((Limit::StorageImages, storage_images));
+    if ep.stage == naga::ShaderStage::Compute {
+        let [x, y, z] = ep.workgroup_size;
+        for (limit, n) in [(Limit::WorkgroupSizeX, x), (Limit::WorkgroupSizeY, y), (Limit::WorkgroupSizeZ, z)] {
+            let mut u = Use::new();
+            u.add(n as u64, ep.span, &ep.name);
+            out.push((limit, u));
+        }
+        let mut u = Use::new();
+        u.add(x as u64 * y as u64 * z as u64, ep.span, &ep.name);
+        out.push((Limit::WorkgroupInvocations, u));
+        let mut layouter = naga::proc::Layouter::default();
+        let mut shared = Use::new();
+        if layouter.update(module.to_ctx()).is_ok() {
+            for (name, span) in &ep.workgroup {
+                if let Some((_, g)) = module.global_variables.iter().find(|(_, g)| g.space == naga::AddressSpace::WorkGroup && g.name.as_deref() == Some(name)) {
+                    shared.add(layouter[g.ty].size as u64, *span, name);
+                }
+            }
+        }
+        out.push((Limit::WorkgroupStorage, shared));
     }
     if gl {
         let mut vectors_used = Use::new();

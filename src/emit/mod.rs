@@ -35,9 +35,13 @@ use crate::target::{Artifact, Target};
 ///
 /// `stem` names the per-module outputs (`STEM.wgsl`, `STEM.spv`,
 /// `STEM.reflect.json`); `source_name` is recorded in the manifest. An empty
-/// `targets` means all targets.
+/// `targets` means every target that can run the program (`Target::defaults`).
 pub fn emit(lowered: &Lowered, stem: &str, source_name: &str, targets: &[Target]) -> Result<(Vec<Artifact>, Reflection), Diagnostic> {
-    let mut targets: Vec<Target> = if targets.is_empty() { Target::ALL.to_vec() } else { targets.to_vec() };
+    // A program with compute, storage buffers or images takes its GLSL
+    // names from GLSL 430, which has them.
+    let needs_430 = lowered.interface.entry_points.iter().any(|e| e.stage == naga::ShaderStage::Compute)
+        || lowered.interface.resources.iter().any(|r| matches!(r.kind, crate::lower::ResourceKind::Storage { .. } | crate::lower::ResourceKind::Image { .. }));
+    let mut targets: Vec<Target> = if targets.is_empty() { Target::defaults(needs_430).to_vec() } else { targets.to_vec() };
     targets.sort();
     targets.dedup();
 
@@ -57,7 +61,22 @@ pub fn emit(lowered: &Lowered, stem: &str, source_name: &str, targets: &[Target]
     let mut glsl_names: Vec<glsl::EntryNames> = Vec::with_capacity(lowered.interface.entry_points.len());
     for ep in &lowered.interface.entry_points {
         let entry_module = glsl::EntryModule::new(lowered, ep)?;
-        let (text, names) = glsl::write_entry_from(lowered, &entry_module, ep, glsl::Profile::Desktop330)?;
+        let naming = if needs_430 { glsl::Profile::Desktop430 } else { glsl::Profile::Desktop330 };
+        let (text, names) = glsl::write_entry_from(lowered, &entry_module, ep, naming)?;
+        for (target, profile) in [(Target::Glsl430, glsl::Profile::Desktop430), (Target::Gles310, glsl::Profile::Es310)] {
+            if !targets.contains(&target) {
+                continue;
+            }
+            let (text, other) = if profile == naming { (text.clone(), names.clone()) } else { glsl::write_entry_from(lowered, &entry_module, ep, profile)? };
+            if other.blocks != names.blocks || other.samplers != names.samplers || other.inputs != names.inputs || other.outputs != names.outputs || other.images != names.images {
+                return Err(Diagnostic::bug(format!("the GLSL outputs of entry point `{}` disagree on identifier names", ep.name), None));
+            }
+            artifacts.push(Artifact { file_name: glsl::file_name(&ep.name, ep.stage, profile), target: Some(target), entry: Some(ep.name.clone()), contents: text.into_bytes() });
+        }
+        if needs_430 {
+            glsl_names.push(names);
+            continue;
+        }
         if targets.contains(&Target::Glsl330) {
             artifacts.push(Artifact {
                 file_name: glsl::file_name(&ep.name, ep.stage, glsl::Profile::Desktop330),
@@ -117,7 +136,7 @@ fn check_consistency(lowered: &Lowered) -> Result<(), Diagnostic> {
         if ep.index != i || !gpu.entry_points.get(i).is_some_and(same) || gl.len() != 1 || !same(&gl[0]) {
             return Err(Diagnostic::bug(format!("entry point `{}` (index {}) does not match the lowered modules", ep.name, ep.index), None));
         }
-        if !matches!(ep.stage, naga::ShaderStage::Vertex | naga::ShaderStage::Fragment) {
+        if !matches!(ep.stage, naga::ShaderStage::Vertex | naga::ShaderStage::Fragment | naga::ShaderStage::Compute) {
             return Err(Diagnostic::bug(format!("entry point `{}` has unsupported stage {:?}", ep.name, ep.stage), None));
         }
     }

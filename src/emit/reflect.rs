@@ -21,7 +21,7 @@ use naga::proc::Layouter;
 use naga::{ArraySize, Handle, Module, ScalarKind, ShaderStage, Type, TypeInner, VectorSize};
 
 use super::glsl::{self, EntryNames};
-use super::reflect_types::{EntryPoint, Io, Member, ProgramLink, Reflection, Sampler, StructLayout, Uniform, UniformBuffer, REFLECTION_FORMAT};
+use super::reflect_types::{EntryPoint, Io, Member, ProgramLink, Reflection, Sampler, StorageBuffer, StorageImage, StructLayout, Uniform, UniformBuffer, REFLECTION_FORMAT};
 use crate::diag::Diagnostic;
 use crate::lower::{EntryInterface, GlUniforms, IoVar, Lowered, ResourceKind};
 use crate::sema::{ConstValue, SamplerKind, Ty};
@@ -423,8 +423,11 @@ pub fn build(
         }
     }
 
+    let image_glsl: BTreeMap<&String, &String> = glsl_names.iter().flat_map(|n| n.images.iter()).collect();
     let mut uniform_buffers = Vec::new();
     let mut samplers = Vec::new();
+    let mut storage_buffers = Vec::new();
+    let mut storage_images = Vec::new();
     let mut next_unit = 0;
     for (ri, r) in iface.resources.iter().enumerate() {
         match &r.kind {
@@ -464,6 +467,40 @@ pub fn build(
                     dimension: dimension(*kind).into(),
                     sample_type: sample_type(*kind).into(),
                     comparison: kind.is_shadow(),
+                });
+            }
+            ResourceKind::Storage { ty, dsl_type, access } => {
+                let (members, size, runtime_stride) = storage_members(module, *ty);
+                storage_buffers.push(StorageBuffer {
+                    name: r.name.clone(),
+                    ty: dsl_type.clone(),
+                    access: access.name().to_string(),
+                    size,
+                    runtime_stride,
+                    group: r.group,
+                    binding: r.binding,
+                    glsl_block: super::glsl::storage_block_name(&r.name),
+                    glsl_binding: r.texture_unit.unwrap_or(0),
+                    members,
+                });
+            }
+            ResourceKind::Image { kind, format, access } => {
+                storage_images.push(StorageImage {
+                    name: r.name.clone(),
+                    ty: kind.name(),
+                    format: format.name().to_string(),
+                    wgpu_format: format.wgsl_name().to_string(),
+                    access: access.name().to_string(),
+                    dimension: match kind.dim {
+                        crate::sema::types::ImageDim::D2 => "2d",
+                        crate::sema::types::ImageDim::D3 => "3d",
+                        crate::sema::types::ImageDim::D2Array => "2d-array",
+                    }
+                    .to_string(),
+                    group: r.group,
+                    binding: r.binding,
+                    glsl_name: image_glsl.get(&r.name).map_or_else(|| r.name.clone(), |n| (*n).clone()),
+                    image_unit: r.texture_unit.unwrap_or(0),
                 });
             }
         }
@@ -508,6 +545,8 @@ pub fn build(
         uniforms,
         structs: layouts.structs.clone(),
         samplers,
+        storage_buffers: (!storage_buffers.is_empty()).then_some(storage_buffers),
+        storage_images: (!storage_images.is_empty()).then_some(storage_images),
     })
 }
 
@@ -530,6 +569,8 @@ fn entry_point(
         let f = match t {
             Target::Glsl330 => glsl::file_name(&ep.name, ep.stage, glsl::Profile::Desktop330),
             Target::Gles300 => glsl::file_name(&ep.name, ep.stage, glsl::Profile::Es300),
+            Target::Glsl430 => glsl::file_name(&ep.name, ep.stage, glsl::Profile::Desktop430),
+            Target::Gles310 => glsl::file_name(&ep.name, ep.stage, glsl::Profile::Es310),
             Target::Wgsl => module_files.wgsl.clone(),
             Target::Spirv => module_files.spirv.clone(),
         };
@@ -575,6 +616,7 @@ fn entry_point(
 
     let mut uniform_buffers = Vec::new();
     let mut samplers = Vec::new();
+    let (mut storage_buffers, mut storage_images) = (Vec::new(), Vec::new());
     for &ri in &ep.resources {
         let Some(r) = iface.resources.get(ri) else {
             return Err(Diagnostic::bug(format!("entry point `{}` uses resource #{ri}, which does not exist", ep.name), None));
@@ -582,6 +624,8 @@ fn entry_point(
         match r.kind {
             ResourceKind::Uniform { .. } => uniform_buffers.push(r.name.clone()),
             ResourceKind::Sampler(_) => samplers.push(r.name.clone()),
+            ResourceKind::Storage { .. } => storage_buffers.push(r.name.clone()),
+            ResourceKind::Image { .. } => storage_images.push(r.name.clone()),
         }
     }
     let uniforms = ep.loose.iter().filter_map(|&u| iface.loose.get(u)).map(|u| u.name.clone()).collect();
@@ -595,7 +639,66 @@ fn entry_point(
         uniform_buffers,
         uniforms,
         samplers,
+        workgroup_size: (ep.stage == ShaderStage::Compute).then_some(ep.workgroup_size),
+        storage_buffers: (!storage_buffers.is_empty()).then_some(storage_buffers),
+        storage_images: (!storage_images.is_empty()).then_some(storage_images),
     })
+}
+
+/// The members of a storage buffer's struct at their std430 offsets (naga's
+/// natural layout, WGSL's storage rules, is std430's), the size before a
+/// run-time-sized array, and that array's stride.
+fn storage_members(module: &Module, ty: naga::Handle<naga::Type>) -> (Vec<Member>, u32, Option<u32>) {
+    let naga::TypeInner::Struct { members, span } = &module.types[ty].inner else { return (Vec::new(), 0, None) };
+    let mut out = Vec::with_capacity(members.len());
+    let mut runtime = None;
+    let mut layouter = naga::proc::Layouter::default();
+    let _ = layouter.update(module.to_ctx());
+    for m in members {
+        let (size, array_stride, matrix_stride) = match &module.types[m.ty].inner {
+            naga::TypeInner::Array { size: naga::ArraySize::Dynamic, stride, .. } => {
+                runtime = Some((*stride, m.offset));
+                (0, Some(*stride), None)
+            }
+            naga::TypeInner::Array { stride, .. } => (layouter[m.ty].size, Some(*stride), None),
+            naga::TypeInner::Matrix { rows, .. } => (layouter[m.ty].size, None, Some(if *rows == naga::VectorSize::Bi { 8 } else { 16 })),
+            _ => (layouter[m.ty].size, None, None),
+        };
+        out.push(Member {
+            name: m.name.clone().unwrap_or_default(),
+            ty: dsl_type_name(module, m.ty),
+            offset: m.offset,
+            size,
+            array_stride,
+            matrix_stride,
+            storage: None,
+            default: None,
+        });
+    }
+    match runtime {
+        Some((stride, offset)) => (out, offset, Some(stride)),
+        None => (out, *span, None),
+    }
+}
+
+/// The DSL spelling of a naga type of a storage buffer (atomics as their
+/// integer, run-time arrays as `T[]`).
+fn dsl_type_name(module: &Module, ty: naga::Handle<naga::Type>) -> String {
+    let scalar = |s: naga::Scalar| match s.kind {
+        ScalarKind::Sint => "int",
+        ScalarKind::Uint => "uint",
+        ScalarKind::Bool => "bool",
+        _ if s.width == 2 => "half",
+        _ => "float",
+    };
+    match &module.types[ty].inner {
+        naga::TypeInner::Scalar(s) | naga::TypeInner::Atomic(s) => scalar(*s).to_string(),
+        naga::TypeInner::Vector { size, scalar: s } => format!("{}{}", scalar(*s), *size as u8),
+        naga::TypeInner::Matrix { columns, rows, .. } => format!("float{}x{}", *columns as u8, *rows as u8),
+        naga::TypeInner::Array { base, size: naga::ArraySize::Constant(n), .. } => format!("{}[{n}]", dsl_type_name(module, *base)),
+        naga::TypeInner::Array { base, .. } => format!("{}[]", dsl_type_name(module, *base)),
+        _ => module.types[ty].name.clone().unwrap_or_default(),
+    }
 }
 
 fn dimension(kind: SamplerKind) -> &'static str {

@@ -56,6 +56,12 @@ pub struct Reflection {
     #[cfg_attr(feature = "deserialize", serde(default))]
     pub structs: Vec<StructLayout>,
     pub samplers: Vec<Sampler>,
+    /// `@ssbo` storage buffers (left out when there are none).
+    #[cfg_attr(feature = "deserialize", serde(default))]
+    pub storage_buffers: Option<Vec<StorageBuffer>>,
+    /// Storage images (left out when there are none).
+    #[cfg_attr(feature = "deserialize", serde(default))]
+    pub storage_images: Option<Vec<StorageImage>>,
 }
 
 /// One program: a vertex and a fragment entry point, by name.
@@ -89,6 +95,62 @@ pub struct EntryPoint {
     pub uniforms: Vec<String>,
     /// Names of the samplers (`Sampler::name`) this stage uses.
     pub samplers: Vec<String>,
+    /// A compute entry point's `local_size_x/y/z`.
+    #[cfg_attr(feature = "deserialize", serde(default))]
+    pub workgroup_size: Option<[u32; 3]>,
+    /// Names of the storage buffers (`StorageBuffer::name`) it uses, where any.
+    #[cfg_attr(feature = "deserialize", serde(default))]
+    pub storage_buffers: Option<Vec<String>>,
+    /// Names of the storage images (`StorageImage::name`) it uses, where any.
+    #[cfg_attr(feature = "deserialize", serde(default))]
+    pub storage_images: Option<Vec<String>>,
+}
+
+/// An `@ssbo` storage buffer: std430 (WGSL's storage layout, the same).
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "deserialize", derive(serde::Deserialize))]
+pub struct StorageBuffer {
+    pub name: String,
+    /// The DSL struct's name.
+    #[cfg_attr(feature = "deserialize", serde(rename = "type"))]
+    pub ty: String,
+    /// `"read"` (`@readonly`) or `"read_write"`.
+    pub access: String,
+    /// Bytes before the run-time-sized array (the whole struct without one).
+    pub size: u32,
+    /// The run-time-sized last member's element stride, where it has one:
+    /// the buffer holds `size + n * runtime_stride` bytes for `n` elements.
+    pub runtime_stride: Option<u32>,
+    pub group: u32,
+    pub binding: u32,
+    /// GLSL: `layout(std430, binding = glsl_binding) buffer glsl_block`.
+    pub glsl_block: String,
+    pub glsl_binding: u32,
+    /// Members at their std430 offsets (a run-time array with `size` 0).
+    pub members: Vec<Member>,
+}
+
+/// A storage image.
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "deserialize", derive(serde::Deserialize))]
+pub struct StorageImage {
+    pub name: String,
+    /// `image2D`, `uimage3D`, `image2DArray`, ...
+    #[cfg_attr(feature = "deserialize", serde(rename = "type"))]
+    pub ty: String,
+    /// The GLSL format qualifier (`rgba8`, `r32ui`).
+    pub format: String,
+    /// The WebGPU texture format (`rgba8unorm`, `r32uint`).
+    pub wgpu_format: String,
+    /// `"read"`, `"write"` or `"read_write"`.
+    pub access: String,
+    /// `"2d"`, `"3d"`, `"2d-array"`.
+    pub dimension: String,
+    pub group: u32,
+    pub binding: u32,
+    pub glsl_name: String,
+    /// GL image unit (`layout(binding = N)` in GLSL; `glBindImageTexture`).
+    pub image_unit: u32,
 }
 
 #[derive(Clone, Debug, PartialEq)]
@@ -264,6 +326,8 @@ serialize_struct!(Reflection {
     "uniforms": uniforms,
     "structs": structs,
     "samplers": samplers,
+    "storage_buffers": storage_buffers?,
+    "storage_images": storage_images?,
 });
 
 serialize_struct!(ProgramLink {
@@ -281,6 +345,35 @@ serialize_struct!(EntryPoint {
     "uniform_buffers": uniform_buffers,
     "uniforms": uniforms,
     "samplers": samplers,
+    "workgroup_size": workgroup_size?,
+    "storage_buffers": storage_buffers?,
+    "storage_images": storage_images?,
+});
+
+serialize_struct!(StorageBuffer {
+    "name": name,
+    "type": ty,
+    "access": access,
+    "size": size,
+    "runtime_stride": runtime_stride?,
+    "group": group,
+    "binding": binding,
+    "glsl_block": glsl_block,
+    "glsl_binding": glsl_binding,
+    "members": members,
+});
+
+serialize_struct!(StorageImage {
+    "name": name,
+    "type": ty,
+    "format": format,
+    "wgpu_format": wgpu_format,
+    "access": access,
+    "dimension": dimension,
+    "group": group,
+    "binding": binding,
+    "glsl_name": glsl_name,
+    "image_unit": image_unit,
 });
 
 serialize_struct!(Io {

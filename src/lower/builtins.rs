@@ -18,6 +18,9 @@ impl FnBuilder<'_, '_> {
         if b.is_texture() {
             return self.texture(b, args, ret, s, block);
         }
+        if let Some(h) = self.compute_builtin(b, args, ret, s, block) {
+            return h;
+        }
         let mut hs: Vec<Handle<E>> = args.iter().map(|a| self.expr(a, block)).collect();
         match b {
             Builtin::Math(fun) => {

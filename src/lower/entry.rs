@@ -127,7 +127,7 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
     use naga::ShaderStage::{Fragment, Vertex};
     let p = m.p;
     let stage = ep.stage;
-    let mut iface = EntryInterface { name: ep.name.clone(), stage, index, inputs: Vec::new(), outputs: Vec::new(), builtins: Vec::new(), resources: Vec::new(), loose: Vec::new() };
+    let mut iface = EntryInterface { name: ep.name.clone(), stage, index, inputs: Vec::new(), outputs: Vec::new(), builtins: Vec::new(), resources: Vec::new(), loose: Vec::new(), workgroup_size: ep.workgroup_size, workgroup: Vec::new(), span: ep.annotation };
     // Only the GPU module's interface is kept (`lower_gl_entry` drops its
     // own): a GL module leaves the lists empty.
     let describe = m.flavor != Flavor::Gl;
@@ -146,7 +146,7 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
     let mut point_coord_default: Vec<(sema::GlobalId, Span)> = Vec::new();
     for (&gid, &use_span) in &ep.func.uses {
         let g = &p.globals[gid];
-        if matches!(g.kind, GlobalKind::Uniform { .. } | GlobalKind::Sampler { .. }) {
+        if g.is_resource() {
             // The loose uniforms of a group share their buffer.
             for r in m.resource_of[gid].clone() {
                 if !iface.resources.contains(&r) {
@@ -154,6 +154,12 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
                 }
             }
             iface.loose.extend(m.loose_of[gid]);
+            continue;
+        }
+        if matches!(g.kind, GlobalKind::Workgroup) {
+            if describe {
+                iface.workgroup.push((g.name.clone(), g.span));
+            }
             continue;
         }
         if !own[gid] && !matches!(m.globals[gid], GlobalSlot::Var(_)) {
@@ -189,6 +195,11 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
                         BuiltinVar::PointCoord => (naga::Binding::BuiltIn(naga::BuiltIn::PointCoord), ty, false),
                         BuiltinVar::VertexId => (naga::Binding::BuiltIn(naga::BuiltIn::VertexIndex), u32_ty, true),
                         BuiltinVar::InstanceId => (naga::Binding::BuiltIn(naga::BuiltIn::InstanceIndex), u32_ty, true),
+                        BuiltinVar::GlobalInvocationId => (naga::Binding::BuiltIn(naga::BuiltIn::GlobalInvocationId), ty, false),
+                        BuiltinVar::LocalInvocationId => (naga::Binding::BuiltIn(naga::BuiltIn::LocalInvocationId), ty, false),
+                        BuiltinVar::LocalInvocationIndex => (naga::Binding::BuiltIn(naga::BuiltIn::LocalInvocationIndex), ty, false),
+                        BuiltinVar::WorkGroupId => (naga::Binding::BuiltIn(naga::BuiltIn::WorkGroupId), ty, false),
+                        BuiltinVar::NumWorkGroups => (naga::Binding::BuiltIn(naga::BuiltIn::NumWorkGroups), ty, false),
                         _ => continue,
                     }
                 }
@@ -284,7 +295,7 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
         name: ep.name.clone(),
         stage,
         early_depth_test: None,
-        workgroup_size: [0; 3],
+        workgroup_size: ep.workgroup_size,
         workgroup_size_overrides: None,
         function,
         mesh_info: None,

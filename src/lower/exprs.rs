@@ -61,7 +61,7 @@ impl FnBuilder<'_, '_> {
             Some(_) => None,
             None => match self.m.globals[g] {
                 GlobalSlot::Var(h) => Some(self.append_plain(E::GlobalVariable(h), s)),
-                GlobalSlot::Sampler { .. } | GlobalSlot::Packed { .. } | GlobalSlot::Absent => None,
+                GlobalSlot::Sampler { .. } | GlobalSlot::Image(_) | GlobalSlot::Packed { .. } | GlobalSlot::Absent => None,
             },
         }
     }

@@ -28,7 +28,7 @@ impl ModuleBuilder<'_> {
             let first_resource = self.resources.len();
             // A resource no entry point uses has no binding (sema binds
             // only the used ones): no module declares it.
-            let unused_resource = matches!(g.kind, GlobalKind::Uniform { .. } | GlobalKind::Sampler { .. }) && g.bind.is_none();
+            let unused_resource = g.is_resource() && g.bind.is_none();
             if unused_resource || only.is_some_and(|uses| !uses.contains_key(&gid)) {
                 self.globals.push(GlobalSlot::Absent);
                 self.resource_of.push(first_resource..first_resource);
@@ -148,6 +148,95 @@ impl ModuleBuilder<'_> {
                         });
                     }
                     GlobalSlot::Sampler { first, count: count.unwrap_or(1) }
+                }
+                GlobalKind::Storage { access } => {
+                    let sema::Bind { group, binding } = g.bind.expect("a used resource is bound");
+                    let atomic: Vec<u32> = self.p.atomics.iter().filter(|(a, _)| *a == gid).filter_map(|(_, m)| *m).collect();
+                    let ty = match g.ty {
+                        sema::Ty::Struct(sid) => self.types.storage_struct_type(&mut self.module, self.p, sid, &atomic),
+                        _ => self.ty(&g.ty),
+                    };
+                    let h = self.module.global_variables.append(
+                        naga::GlobalVariable {
+                            name: Some(g.name.clone()),
+                            space: naga::AddressSpace::Storage { access: access.naga() },
+                            binding: with_binding.then_some(naga::ResourceBinding { group, binding }),
+                            ty,
+                            init: None,
+                            memory_decorations: naga::MemoryDecorations::empty(),
+                        },
+                        span,
+                    );
+                    if describe {
+                        let dsl_type = self.show_ty(&g.ty);
+                        let unit = self.p.globals[..gid].iter().filter(|o| o.bind.is_some() && matches!(o.kind, GlobalKind::Storage { .. })).count() as u32;
+                        self.resources.push(Resource {
+                            name: g.name.clone(),
+                            span: g.span,
+                            kind: ResourceKind::Storage { ty, dsl_type, access: *access },
+                            global: h,
+                            sampler_global: None,
+                            group,
+                            binding,
+                            sampler_binding: None,
+                            texture_unit: Some(unit),
+                            default: None,
+                        });
+                    }
+                    GlobalSlot::Var(h)
+                }
+                GlobalKind::Image { format, access } => {
+                    let sema::Bind { group, binding } = g.bind.expect("a used resource is bound");
+                    let sema::Ty::Image(kind) = g.ty else { unreachable!("sema gives an image global an image type") };
+                    let (dim, arrayed) = match kind.dim {
+                        sema::types::ImageDim::D2 => (naga::ImageDimension::D2, false),
+                        sema::types::ImageDim::D3 => (naga::ImageDimension::D3, false),
+                        sema::types::ImageDim::D2Array => (naga::ImageDimension::D2, true),
+                    };
+                    let ty = self.add_type(None, TypeInner::Image { dim, arrayed, class: naga::ImageClass::Storage { format: format.naga(), access: access.naga() } });
+                    let h = self.module.global_variables.append(
+                        naga::GlobalVariable {
+                            name: Some(g.name.clone()),
+                            space: naga::AddressSpace::Handle,
+                            binding: with_binding.then_some(naga::ResourceBinding { group, binding }),
+                            ty,
+                            init: None,
+                            memory_decorations: naga::MemoryDecorations::empty(),
+                        },
+                        span,
+                    );
+                    if describe {
+                        let unit = self.p.globals[..gid].iter().filter(|o| o.bind.is_some() && matches!(o.kind, GlobalKind::Image { .. })).count() as u32;
+                        self.resources.push(Resource {
+                            name: g.name.clone(),
+                            span: g.span,
+                            kind: ResourceKind::Image { kind, format: *format, access: *access },
+                            global: h,
+                            sampler_global: None,
+                            group,
+                            binding,
+                            sampler_binding: None,
+                            texture_unit: Some(unit),
+                            default: None,
+                        });
+                    }
+                    GlobalSlot::Image(h)
+                }
+                GlobalKind::Workgroup => {
+                    let atomic = self.p.atomics.contains(&(gid, None));
+                    let ty = if atomic { self.types.atomic_type(&mut self.module, self.p, &g.ty) } else { self.ty(&g.ty) };
+                    let h = self.module.global_variables.append(
+                        naga::GlobalVariable {
+                            name: Some(g.name.clone()),
+                            space: naga::AddressSpace::WorkGroup,
+                            binding: None,
+                            ty,
+                            init: None,
+                            memory_decorations: naga::MemoryDecorations::empty(),
+                        },
+                        span,
+                    );
+                    GlobalSlot::Var(h)
                 }
                 GlobalKind::Io { .. } | GlobalKind::Builtin(_) if !private[gid] => GlobalSlot::Absent,
                 GlobalKind::Io { .. } | GlobalKind::Builtin(_) => {

@@ -79,7 +79,9 @@ pub struct Resource {
     pub binding: u32,
     /// Binding of the sampler of a sampler resource.
     pub sampler_binding: Option<u32>,
-    /// GL texture unit of a sampler resource.
+    /// GL texture unit of a sampler resource; the GL binding point of a
+    /// storage buffer, the image unit of a storage image (numbered apart,
+    /// in declaration order: `layout(binding = N)` in GLSL 430 / ES 3.10).
     pub texture_unit: Option<u32>,
     /// The host's default value of a struct uniform (`var @uniform x : T
     /// = value`); a loose uniform's is its [`LooseUniform::default`].
@@ -118,6 +120,11 @@ pub enum ResourceKind {
     /// members are `Interface::loose` entries). `dsl_type` is its name.
     Uniform { ty: naga::Handle<naga::Type>, dsl_type: String, loose: bool },
     Sampler(SamplerKind),
+    /// `@ssbo`: `ty` is the buffer's struct (std430, atomic members where
+    /// atomics operate on them), `dsl_type` its name.
+    Storage { ty: naga::Handle<naga::Type>, dsl_type: String, access: crate::sema::types::Access },
+    /// A storage image.
+    Image { kind: crate::sema::types::ImageKind, format: crate::sema::types::ImageFormat, access: crate::sema::types::Access },
 }
 
 /// One vertex attribute, varying or fragment output of an entry point.
@@ -150,6 +157,12 @@ pub struct EntryInterface {
     pub resources: Vec<usize>,
     /// Indices into `Interface::loose` of the loose uniforms it reads.
     pub loose: Vec<usize>,
+    /// A compute entry point's `local_size_*`; `[0; 3]` otherwise.
+    pub workgroup_size: [u32; 3],
+    /// The `@groupshared` variables it uses: names and declarations.
+    pub workgroup: Vec<(String, Span)>,
+    /// The entry point's stage annotation (`[compute_program(...)]`).
+    pub span: Span,
 }
 
 #[derive(Clone, Debug, Default)]

@@ -34,6 +34,7 @@
 //!   `inverse`, `pack`: function bodies.
 
 mod builtins;
+mod compute;
 mod entry;
 mod exprs;
 #[cfg(debug_assertions)]

@@ -17,6 +17,8 @@ pub(super) enum GlobalSlot {
     /// `ModuleBuilder::sampler_elems`, each a separate image and sampler
     /// global (naga's GLSL writer cannot write binding arrays).
     Sampler { first: usize, count: u32 },
+    /// A storage image (Handle space): used only through the image builtins.
+    Image(Handle<naga::GlobalVariable>),
     /// A loose uniform: member `member` of uniform buffer `buffer`
     /// (`lower::uniforms`).
     Packed { buffer: Handle<naga::GlobalVariable>, member: u32 },

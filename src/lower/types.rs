@@ -134,7 +134,13 @@ impl TypeTable {
             // Samplers, void and error never reach here: sema only lets
             // value types into variables and expressions that have types.
             Ty::Enum(id) => add_type(module, None, TypeInner::Scalar(naga_scalar(p.enums[*id as usize].base))),
-            Ty::Sampler(_) | Ty::Void | Ty::Error => add_type(module, None, TypeInner::Scalar(naga::Scalar::F32)),
+            Ty::RuntimeArray(elem) => {
+                let base = self.ty(module, p, elem);
+                let stride = self.layout(module, base).to_stride();
+                add_type(module, None, TypeInner::Array { base, size: naga::ArraySize::Dynamic, stride })
+            }
+            // Images are typed by their global (`globals.rs`), which knows the format.
+            Ty::Sampler(_) | Ty::Image(_) | Ty::Void | Ty::Error => add_type(module, None, TypeInner::Scalar(naga::Scalar::F32)),
         };
         match small {
             Some(i) => self.small[i] = Some(h),
@@ -166,6 +172,44 @@ impl TypeTable {
         }
         let span = naga::proc::Alignment::SIXTEEN.round_up(offset.max(16));
         add_type(module, Some(name), TypeInner::Struct { members, span })
+    }
+
+    /// `ty` with its integer scalars made atomic: an integer, or an array
+    /// of them (an atomic place of `sema::Program::atomics`).
+    pub(super) fn atomic_type(&mut self, module: &mut Module, p: &sema::Program, ty: &Ty) -> Handle<Type> {
+        match ty {
+            Ty::Scalar(s @ (Scalar::Int | Scalar::Uint)) => add_type(module, None, TypeInner::Atomic(naga_scalar(*s))),
+            Ty::Array(elem, n) => {
+                let base = self.atomic_type(module, p, elem);
+                let size = naga::ArraySize::Constant(std::num::NonZeroU32::new(*n).unwrap_or(std::num::NonZeroU32::MIN));
+                add_type(module, None, TypeInner::Array { base, size, stride: 4 })
+            }
+            Ty::RuntimeArray(elem) => {
+                let base = self.atomic_type(module, p, elem);
+                add_type(module, None, TypeInner::Array { base, size: naga::ArraySize::Dynamic, stride: 4 })
+            }
+            other => self.ty(module, p, other),
+        }
+    }
+
+    /// The struct of a storage buffer: the DSL struct, or (where atomics
+    /// operate on members, `atomic`) a copy named `NAME_atomic` with
+    /// those members atomic. The natural (WGSL storage) layout is std430's.
+    pub(super) fn storage_struct_type(&mut self, module: &mut Module, p: &sema::Program, sid: usize, atomic: &[u32]) -> Handle<Type> {
+        if atomic.is_empty() {
+            return self.ty(module, p, &Ty::Struct(sid));
+        }
+        let def = &p.structs[sid];
+        let members = def
+            .fields
+            .iter()
+            .enumerate()
+            .map(|(i, (n, t, _))| {
+                let ty = if atomic.contains(&(i as u32)) { self.atomic_type(module, p, t) } else { self.ty(module, p, t) };
+                (n.clone(), ty, None)
+            })
+            .collect();
+        self.struct_type(module, [&def.name, "_atomic"].concat(), members)
     }
 
     /// A struct type with the natural (WGSL) layout.

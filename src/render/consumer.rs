@@ -23,6 +23,10 @@ pub enum Consumer {
     /// The CPU ray-cast reference (exact shadows; the tutorial and
     /// technique scenes only).
     Reference,
+    /// OpenGL 4.3 core, the `.430.*` files: compute plans only.
+    Gl430,
+    /// OpenGL ES 3.1, the `.310es.*` files: compute plans only.
+    Gles310,
 }
 
 impl Consumer {
@@ -38,11 +42,17 @@ impl Consumer {
             Consumer::Gles300 => "gles300",
             Consumer::WebGl2 => "webgl2",
             Consumer::Reference => "reference",
+            Consumer::Gl430 => "gl430",
+            Consumer::Gles310 => "gles310",
         }
     }
 
+    /// The consumers that run compute plans (`WgpuExecutor::run_compute`,
+    /// `GlExecutor::run_compute`); the GL 4.3 / ES 3.1 ones run nothing else.
+    pub const COMPUTE: [Consumer; 4] = [Consumer::VulkanWgsl, Consumer::VulkanSpirv, Consumer::Gl430, Consumer::Gles310];
+
     pub fn from_name(name: &str) -> Option<Consumer> {
-        Consumer::ALL.into_iter().find(|c| c.name() == name)
+        Consumer::ALL.into_iter().chain(Consumer::COMPUTE).find(|c| c.name() == name)
     }
 
     /// What runs what.
@@ -55,6 +65,8 @@ impl Consumer {
             Consumer::Gles300 => "GLSL ES 3.00 on an OpenGL ES 3.0 context",
             Consumer::WebGl2 => "GLSL ES 3.00 on WebGL2 in chromium",
             Consumer::Reference => "CPU ray-cast reference",
+            Consumer::Gl430 => "GLSL 430 on an OpenGL 4.3 core context (compute)",
+            Consumer::Gles310 => "GLSL ES 3.10 on an OpenGL ES 3.1 context (compute)",
         }
     }
 
@@ -70,6 +82,8 @@ impl Consumer {
             Consumer::VulkanSpirv => Target::Spirv,
             Consumer::Gl330 => Target::Glsl330,
             Consumer::Gles300 | Consumer::WebGl2 => Target::Gles300,
+            Consumer::Gl430 => Target::Glsl430,
+            Consumer::Gles310 => Target::Gles310,
             Consumer::Reference => return None,
         })
     }

@@ -55,6 +55,8 @@ impl Programs {
             Target::Spirv => &self.spirv,
             Target::Glsl330 => &self.glsl330,
             Target::Gles300 => &self.gles300,
+            // No consumer runs these yet.
+            Target::Glsl430 | Target::Gles310 => return None,
         })
     }
 }
@@ -123,7 +125,40 @@ pub fn run(consumer: Consumer, set: &ShaderSet, plan: &FramePlan) -> Result<(Rea
         Consumer::Gl330 | Consumer::Gles300 => run_gl(consumer, set, plan),
         Consumer::WebGl2 => once(&WebGl::find()?, set, plan),
         Consumer::Reference => Err(ExecError::Unsupported("the CPU reference draws its scenes itself, not plans".into())),
+        Consumer::Gl430 | Consumer::Gles310 => Err(ExecError::Unsupported(format!("{} runs compute plans only (`run_compute`)", consumer.name()))),
     }
+}
+
+/// Runs a compute plan with `set` on `consumer` (one of
+/// [`Consumer::COMPUTE`]): what came back and the device it ran on.
+pub fn run_compute(consumer: Consumer, set: &ShaderSet, plan: &super::plan::compute::ComputePlan) -> Result<(super::exec::ComputeReadback, String), ExecError> {
+    match consumer {
+        Consumer::VulkanWgsl | Consumer::VulkanSpirv => {
+            let e = vulkan()?;
+            Ok((e.run_compute(set, plan)?, e.adapter_name()))
+        }
+        Consumer::Gl430 | Consumer::Gles310 => run_gl_compute(consumer, set, plan),
+        other => Err(ExecError::Unsupported(format!(
+            "{} runs no compute programs (WebGL2 and OpenGL 3.3 / ES 3.0 have none; the compute consumers: vulkan-wgsl, vulkan-spirv, gl430, gles310)",
+            other.name()
+        ))),
+    }
+}
+
+#[cfg(feature = "gl")]
+fn run_gl_compute(consumer: Consumer, set: &ShaderSet, plan: &super::plan::compute::ComputePlan) -> Result<(super::exec::ComputeReadback, String), ExecError> {
+    let _ = wgpu_gl();
+    let e = super::exec::gl::GlExecutor::new(consumer)?;
+    Ok((e.run_compute(set, plan)?, e.adapter_name()))
+}
+
+#[cfg(not(feature = "gl"))]
+fn run_gl_compute(consumer: Consumer, _: &ShaderSet, _: &super::plan::compute::ComputePlan) -> Result<(super::exec::ComputeReadback, String), ExecError> {
+    Err(ExecError::Unavailable {
+        consumer,
+        why: "umbrac was built without the `gl` feature".into(),
+        install: "cargo build --features gl (no system packages needed to build)".into(),
+    })
 }
 
 #[cfg(feature = "gl")]

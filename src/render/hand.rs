@@ -173,6 +173,9 @@ pub fn reflection() -> Reflection {
             uniform_buffers: strings(&["uniforms"]),
             uniforms: strings(&["u_light_vp", "u_model"]),
             samplers: vec![],
+            workgroup_size: None,
+            storage_buffers: None,
+            storage_images: None,
         },
         EntryPoint {
             name: "shadow_fs".into(),
@@ -184,6 +187,9 @@ pub fn reflection() -> Reflection {
             uniform_buffers: vec![],
             uniforms: vec![],
             samplers: vec![],
+            workgroup_size: None,
+            storage_buffers: None,
+            storage_images: None,
         },
         EntryPoint {
             name: "main_vs".into(),
@@ -195,6 +201,9 @@ pub fn reflection() -> Reflection {
             uniform_buffers: strings(&["uniforms"]),
             uniforms: strings(&["u_light_vp", "u_model", "u_view", "u_proj"]),
             samplers: vec![],
+            workgroup_size: None,
+            storage_buffers: None,
+            storage_images: None,
         },
         EntryPoint {
             name: "main_fs".into(),
@@ -206,6 +215,9 @@ pub fn reflection() -> Reflection {
             uniform_buffers: strings(&["uniforms"]),
             uniforms: strings(&["u_light_dir", "u_cam_pos", "u_is_floor"]),
             samplers: strings(&["shadow_map"]),
+            workgroup_size: None,
+            storage_buffers: None,
+            storage_images: None,
         },
     ];
     Reflection {
@@ -222,6 +234,8 @@ pub fn reflection() -> Reflection {
         uniforms,
         structs: vec![],
         samplers,
+        storage_buffers: None,
+        storage_images: None,
     }
 }
 

@@ -92,7 +92,7 @@ impl ShaderSet {
             modules.push(match target {
                 Target::Wgsl => ShaderCode::Wgsl(a.text().into_owned()),
                 Target::Spirv => ShaderCode::spirv_from_bytes(&a.contents).map_err(|e| format!("{label}: {file}: {e}"))?,
-                Target::Glsl330 | Target::Gles300 => ShaderCode::Glsl { file: file.clone(), text: a.text().into_owned() },
+                Target::Glsl330 | Target::Gles300 | Target::Glsl430 | Target::Gles310 => ShaderCode::Glsl { file: file.clone(), text: a.text().into_owned() },
             });
         }
         if modules.is_empty() {

@@ -94,6 +94,37 @@ pub enum Builtin {
     /// `packUnorm4x8`, `unpackHalf2x16`, ...: one of naga's pack/unpack
     /// functions (the GL modules compute the ones GLSL 330 or ES 300 lack).
     Pack(Mf),
+    /// `barrier()` (a control barrier: every invocation of the workgroup
+    /// waits, and workgroup memory is ordered), `memoryBarrier()`,
+    /// `memoryBarrierShared()`, `memoryBarrierBuffer()`,
+    /// `memoryBarrierImage()`, `groupMemoryBarrier()` (memory order only).
+    Barrier { control: bool, flags: naga::Barrier },
+    /// `atomicAdd(place, value)` and friends on an integer of a `@ssbo`
+    /// or `@groupshared` variable: the value before.
+    Atomic(AtomicOp),
+    /// `imageLoad(image, coord)`, `imageStore(image, coord, value)`,
+    /// `imageSize(image)`.
+    ImageLoad,
+    ImageStore,
+    ImageSize,
+    /// `length(buf.data)` of a run-time-sized array: its element count
+    /// (`uint`; GLSL's `.length()` is an `int`, converted).
+    ArrayLength,
+}
+
+/// The atomic read-modify-write functions (GLSL's names).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum AtomicOp {
+    Add,
+    Min,
+    Max,
+    And,
+    Or,
+    Xor,
+    Exchange,
+    /// `atomicCompSwap(place, compare, value)`: stores `value` where the
+    /// place holds `compare`; the value before either way.
+    CompSwap,
 }
 
 /// The range every target guarantees for a texel offset (GLSL's minimum

@@ -25,6 +25,11 @@ pub struct Program {
     /// The vertex and fragment entry points that form one program (a host
     /// links them into one GL program): see `check::programs`.
     pub links: Vec<Link>,
+    /// The integer places an atomic builtin operates on: a `@groupshared`
+    /// integer or integer array (`None`), or a member of a `@ssbo`
+    /// (`Some(member)`). Lowering gives them atomic types, which plain
+    /// reads and writes of them load and store.
+    pub atomics: std::collections::BTreeSet<(GlobalId, Option<u32>)>,
 }
 
 /// A vertex entry point and a fragment entry point of one program: they
@@ -38,6 +43,13 @@ pub struct Link {
 }
 
 impl Program {
+    /// Whether the program has a compute entry point, a storage buffer or
+    /// a storage image: what GLSL 330 and ES 3.00 lack.
+    pub fn needs_compute(&self) -> bool {
+        self.entry_points.iter().any(|e| e.stage == naga::ShaderStage::Compute)
+            || self.globals.iter().any(|g| g.bind.is_some() && matches!(g.kind, GlobalKind::Storage { .. } | GlobalKind::Image { .. }))
+    }
+
     pub fn struct_names(&self) -> Vec<String> {
         self.structs.iter().map(|s| s.name.clone()).collect()
     }
@@ -68,6 +80,15 @@ pub enum BuiltinVar {
     PointCoord,
     VertexId,
     InstanceId,
+    // Compute inputs (`uint3`, `gl_LocalInvocationIndex` a `uint`).
+    GlobalInvocationId,
+    LocalInvocationId,
+    LocalInvocationIndex,
+    WorkGroupId,
+    NumWorkGroups,
+    /// `gl_WorkGroupSize`: the entry point's `local_size_*`, a constant
+    /// there (no target reads it from the device).
+    WorkGroupSize,
 }
 
 impl BuiltinVar {
@@ -81,6 +102,12 @@ impl BuiltinVar {
             BuiltinVar::PointCoord => "gl_PointCoord",
             BuiltinVar::VertexId => "gl_VertexID",
             BuiltinVar::InstanceId => "gl_InstanceID",
+            BuiltinVar::GlobalInvocationId => "gl_GlobalInvocationID",
+            BuiltinVar::LocalInvocationId => "gl_LocalInvocationID",
+            BuiltinVar::LocalInvocationIndex => "gl_LocalInvocationIndex",
+            BuiltinVar::WorkGroupId => "gl_WorkGroupID",
+            BuiltinVar::NumWorkGroups => "gl_NumWorkGroups",
+            BuiltinVar::WorkGroupSize => "gl_WorkGroupSize",
         }
     }
 
@@ -94,11 +121,23 @@ impl BuiltinVar {
             "gl_PointCoord" => BuiltinVar::PointCoord,
             "gl_VertexID" | "gl_VertexIndex" => BuiltinVar::VertexId,
             "gl_InstanceID" | "gl_InstanceIndex" => BuiltinVar::InstanceId,
+            "gl_GlobalInvocationID" => BuiltinVar::GlobalInvocationId,
+            "gl_LocalInvocationID" => BuiltinVar::LocalInvocationId,
+            "gl_LocalInvocationIndex" => BuiltinVar::LocalInvocationIndex,
+            "gl_WorkGroupID" => BuiltinVar::WorkGroupId,
+            "gl_NumWorkGroups" => BuiltinVar::NumWorkGroups,
+            "gl_WorkGroupSize" => BuiltinVar::WorkGroupSize,
             _ => return None,
         })
     }
 
-    pub const NAMES: [&'static str; 10] = [
+    pub const NAMES: [&'static str; 16] = [
+        "gl_GlobalInvocationID",
+        "gl_LocalInvocationID",
+        "gl_LocalInvocationIndex",
+        "gl_WorkGroupID",
+        "gl_NumWorkGroups",
+        "gl_WorkGroupSize",
         "gl_Position",
         "gl_PointSize",
         "gl_FragDepth",
@@ -119,6 +158,8 @@ impl BuiltinVar {
             BuiltinVar::FrontFacing => BOOL,
             BuiltinVar::PointCoord => Ty::Vector(Scalar::Float, 2),
             BuiltinVar::VertexId | BuiltinVar::InstanceId => INT,
+            BuiltinVar::LocalInvocationIndex => UINT,
+            _ => Ty::Vector(Scalar::Uint, 3),
         }
     }
 
@@ -131,7 +172,8 @@ impl BuiltinVar {
     pub fn stage(self) -> naga::ShaderStage {
         match self {
             BuiltinVar::Position | BuiltinVar::PointSize | BuiltinVar::VertexId | BuiltinVar::InstanceId => naga::ShaderStage::Vertex,
-            _ => naga::ShaderStage::Fragment,
+            BuiltinVar::FragDepth | BuiltinVar::FragCoord | BuiltinVar::FrontFacing | BuiltinVar::PointCoord => naga::ShaderStage::Fragment,
+            _ => naga::ShaderStage::Compute,
         }
     }
 }
@@ -161,6 +203,14 @@ pub enum GlobalKind {
     /// program where none is written.
     Io { kind: IoKind, location: Option<u32> },
     Builtin(BuiltinVar),
+    /// `@ssbo`: a storage buffer (`ty` is a struct, std430; its last
+    /// member may be a run-time-sized array), read-write or `@readonly`.
+    Storage { access: super::types::Access },
+    /// A storage image (`ty` is `Ty::Image`) with its `@format` and access.
+    Image { format: super::types::ImageFormat, access: super::types::Access },
+    /// `@groupshared`: workgroup memory, shared by the invocations of one
+    /// workgroup of a compute entry point (zero at the start of each).
+    Workgroup,
     /// A module variable (`var angle = 0.0`, no qualifier) a shader reaches:
     /// private to each invocation, starting from `init` (zero when `None`).
     Private { init: Option<ConstValue> },
@@ -185,6 +235,12 @@ pub struct Global {
 impl Global {
     /// A uniform that is not a struct: a member of its group's uniform
     /// buffer on WGSL/SPIR-V, a plain `uniform T name;` in GLSL.
+    /// A uniform, sampler, storage buffer or storage image: what a host
+    /// binds.
+    pub fn is_resource(&self) -> bool {
+        matches!(self.kind, GlobalKind::Uniform { .. } | GlobalKind::Sampler { .. } | GlobalKind::Storage { .. } | GlobalKind::Image { .. })
+    }
+
     pub fn is_loose_uniform(&self) -> bool {
         matches!(self.kind, GlobalKind::Uniform { .. }) && !matches!(self.ty, Ty::Struct(_))
     }
@@ -256,6 +312,12 @@ pub struct EntryPoint {
     /// The location of each `@in`, `@out` and `@inout` global this entry
     /// point reads or writes.
     pub locations: std::collections::BTreeMap<GlobalId, u32>,
+    /// A compute entry point's `local_size_x/y/z` (1 where not written);
+    /// `[0; 3]` for the other stages.
+    pub workgroup_size: [u32; 3],
+    /// Its stage annotation (`[compute_program(...)]`), where limits on the
+    /// workgroup point.
+    pub annotation: Span,
 }
 
 impl EntryPoint {

@@ -114,6 +114,202 @@ impl SamplerKind {
     }
 }
 
+/// The shape of a storage image.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ImageDim {
+    D2,
+    D3,
+    D2Array,
+}
+
+/// A storage image type: `image2D`, `iimage2D`, `uimage2D`, and the same
+/// for `3D` and `2DArray`. The texel scalar is `Float`, `Int` or `Uint`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub struct ImageKind {
+    pub dim: ImageDim,
+    pub scalar: Scalar,
+}
+
+impl ImageKind {
+    pub fn name(self) -> String {
+        let prefix = match self.scalar {
+            Scalar::Int => "i",
+            Scalar::Uint => "u",
+            _ => "",
+        };
+        let dim = match self.dim {
+            ImageDim::D2 => "2D",
+            ImageDim::D3 => "3D",
+            ImageDim::D2Array => "2DArray",
+        };
+        format!("{prefix}image{dim}")
+    }
+
+    pub fn from_name(name: &str) -> Option<ImageKind> {
+        let (scalar, rest) = match name.as_bytes().first()? {
+            b'i' if name.starts_with("iimage") => (Scalar::Int, &name[6..]),
+            b'u' if name.starts_with("uimage") => (Scalar::Uint, &name[6..]),
+            _ => (Scalar::Float, name.strip_prefix("image")?),
+        };
+        let dim = match rest {
+            "2D" => ImageDim::D2,
+            "3D" => ImageDim::D3,
+            "2DArray" => ImageDim::D2Array,
+            _ => return None,
+        };
+        Some(ImageKind { dim, scalar })
+    }
+
+    /// Components of a texel coordinate (`int2`, `int3`).
+    pub fn coord_width(self) -> u8 {
+        match self.dim {
+            ImageDim::D2 => 2,
+            _ => 3,
+        }
+    }
+}
+
+/// The texel formats of storage images every target with images has
+/// (GLSL ES 3.10's list, all of which WGSL has): the DSL spelling is
+/// GLSL's layout qualifier.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ImageFormat {
+    Rgba8,
+    Rgba8Snorm,
+    Rgba8ui,
+    Rgba8i,
+    Rgba16f,
+    Rgba16ui,
+    Rgba16i,
+    Rgba32f,
+    Rgba32ui,
+    Rgba32i,
+    R32f,
+    R32ui,
+    R32i,
+}
+
+impl ImageFormat {
+    pub const ALL: [ImageFormat; 13] = [
+        ImageFormat::Rgba8,
+        ImageFormat::Rgba8Snorm,
+        ImageFormat::Rgba8ui,
+        ImageFormat::Rgba8i,
+        ImageFormat::Rgba16f,
+        ImageFormat::Rgba16ui,
+        ImageFormat::Rgba16i,
+        ImageFormat::Rgba32f,
+        ImageFormat::Rgba32ui,
+        ImageFormat::Rgba32i,
+        ImageFormat::R32f,
+        ImageFormat::R32ui,
+        ImageFormat::R32i,
+    ];
+
+    pub fn name(self) -> &'static str {
+        match self {
+            ImageFormat::Rgba8 => "rgba8",
+            ImageFormat::Rgba8Snorm => "rgba8_snorm",
+            ImageFormat::Rgba8ui => "rgba8ui",
+            ImageFormat::Rgba8i => "rgba8i",
+            ImageFormat::Rgba16f => "rgba16f",
+            ImageFormat::Rgba16ui => "rgba16ui",
+            ImageFormat::Rgba16i => "rgba16i",
+            ImageFormat::Rgba32f => "rgba32f",
+            ImageFormat::Rgba32ui => "rgba32ui",
+            ImageFormat::Rgba32i => "rgba32i",
+            ImageFormat::R32f => "r32f",
+            ImageFormat::R32ui => "r32ui",
+            ImageFormat::R32i => "r32i",
+        }
+    }
+
+    pub fn from_name(name: &str) -> Option<ImageFormat> {
+        ImageFormat::ALL.into_iter().find(|f| f.name() == name)
+    }
+
+    /// The scalar of the image types this format goes with.
+    pub fn scalar(self) -> Scalar {
+        match self {
+            ImageFormat::Rgba8ui | ImageFormat::Rgba16ui | ImageFormat::Rgba32ui | ImageFormat::R32ui => Scalar::Uint,
+            ImageFormat::Rgba8i | ImageFormat::Rgba16i | ImageFormat::Rgba32i | ImageFormat::R32i => Scalar::Int,
+            _ => Scalar::Float,
+        }
+    }
+
+    /// Read-write access (no `@readonly`/`@writeonly`) is allowed only for
+    /// the single-channel 32-bit formats (GLSL ES 3.10, WGSL).
+    pub fn allows_read_write(self) -> bool {
+        matches!(self, ImageFormat::R32f | ImageFormat::R32ui | ImageFormat::R32i)
+    }
+
+    pub fn naga(self) -> naga::StorageFormat {
+        use naga::StorageFormat as F;
+        match self {
+            ImageFormat::Rgba8 => F::Rgba8Unorm,
+            ImageFormat::Rgba8Snorm => F::Rgba8Snorm,
+            ImageFormat::Rgba8ui => F::Rgba8Uint,
+            ImageFormat::Rgba8i => F::Rgba8Sint,
+            ImageFormat::Rgba16f => F::Rgba16Float,
+            ImageFormat::Rgba16ui => F::Rgba16Uint,
+            ImageFormat::Rgba16i => F::Rgba16Sint,
+            ImageFormat::Rgba32f => F::Rgba32Float,
+            ImageFormat::Rgba32ui => F::Rgba32Uint,
+            ImageFormat::Rgba32i => F::Rgba32Sint,
+            ImageFormat::R32f => F::R32Float,
+            ImageFormat::R32ui => F::R32Uint,
+            ImageFormat::R32i => F::R32Sint,
+        }
+    }
+
+    /// The WGSL / WebGPU name of the format (the manifest's `wgpu_format`).
+    pub fn wgsl_name(self) -> &'static str {
+        match self {
+            ImageFormat::Rgba8 => "rgba8unorm",
+            ImageFormat::Rgba8Snorm => "rgba8snorm",
+            ImageFormat::Rgba8ui => "rgba8uint",
+            ImageFormat::Rgba8i => "rgba8sint",
+            ImageFormat::Rgba16f => "rgba16float",
+            ImageFormat::Rgba16ui => "rgba16uint",
+            ImageFormat::Rgba16i => "rgba16sint",
+            ImageFormat::Rgba32f => "rgba32float",
+            ImageFormat::Rgba32ui => "rgba32uint",
+            ImageFormat::Rgba32i => "rgba32sint",
+            ImageFormat::R32f => "r32float",
+            ImageFormat::R32ui => "r32uint",
+            ImageFormat::R32i => "r32sint",
+        }
+    }
+}
+
+/// How a shader may use a storage image or buffer.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Access {
+    ReadWrite,
+    /// `@readonly`.
+    Read,
+    /// `@writeonly` (images only).
+    Write,
+}
+
+impl Access {
+    pub fn name(self) -> &'static str {
+        match self {
+            Access::ReadWrite => "read_write",
+            Access::Read => "read",
+            Access::Write => "write",
+        }
+    }
+
+    pub fn naga(self) -> naga::StorageAccess {
+        match self {
+            Access::ReadWrite => naga::StorageAccess::LOAD | naga::StorageAccess::STORE,
+            Access::Read => naga::StorageAccess::LOAD,
+            Access::Write => naga::StorageAccess::STORE,
+        }
+    }
+}
+
 /// Index of a struct in `sema::Program::structs`.
 pub type StructId = usize;
 
@@ -133,6 +329,12 @@ pub enum Ty {
     /// compared and used as indices, converted with `int(e)`.
     Enum(EnumId),
     Sampler(SamplerKind),
+    /// A storage image (`image2D`, `uimage3D`, ...): its format and access
+    /// are the global's (`GlobalKind::Image`).
+    Image(ImageKind),
+    /// `T[]`: the run-time-sized last member of a `@ssbo` struct; its
+    /// length is the bound buffer's (`length(buf.data)`).
+    RuntimeArray(Box<Ty>),
     /// The type of a call to a function without a result.
     Void,
     /// Stands in after an error so one mistake does not cascade.
@@ -207,7 +409,7 @@ impl Ty {
     /// Whether values of this type can be stored in variables, passed and returned.
     pub fn is_value(&self) -> bool {
         match self {
-            Ty::Sampler(_) | Ty::Void => false,
+            Ty::Sampler(_) | Ty::Image(_) | Ty::RuntimeArray(_) | Ty::Void => false,
             Ty::Array(elem, _) => elem.is_value(),
             _ => true,
         }
@@ -237,6 +439,9 @@ impl Ty {
     pub fn from_builtin_name(name: &str) -> Option<Ty> {
         if let Some(k) = SamplerKind::from_name(name) {
             return Some(Ty::Sampler(k));
+        }
+        if let Some(k) = ImageKind::from_name(name) {
+            return Some(Ty::Image(k));
         }
         if name == "float16" {
             return Some(Ty::Scalar(Scalar::Half));
@@ -297,6 +502,8 @@ impl fmt::Display for TyDisplay<'_> {
             Ty::Struct(id) => f.write_str(self.struct_names.get(*id).map(|s| s.as_str()).unwrap_or("<struct>")),
             Ty::Enum(id) => f.write_str(self.enum_names.get(*id as usize).map(|s| s.as_str()).unwrap_or("<enum>")),
             Ty::Sampler(k) => f.write_str(k.name()),
+            Ty::Image(k) => f.write_str(&k.name()),
+            Ty::RuntimeArray(elem) => write!(f, "{}[]", TyDisplay { ty: elem, ..*self }),
             Ty::Void => f.write_str("void"),
             Ty::Error => f.write_str("{error}"),
         }

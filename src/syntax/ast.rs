@@ -111,6 +111,8 @@ pub enum QualifierKind {
     Set(i64),
     /// `@binding = N`: its binding in that group.
     Binding(i64),
+    /// `@format = NAME`: a storage image's texel format (`rgba8`, `r32f`).
+    Format(Ident),
     /// Any other `@name [= value]`; semantic analysis reports it.
     Other(String),
 }
@@ -191,6 +193,8 @@ pub enum TypeExprKind {
     Named(Ident),
     /// `T[N]`.
     Array(Box<TypeExpr>, Box<Expr>),
+    /// `T[]`: sized by the buffer bound (an `@ssbo`'s last member).
+    RuntimeArray(Box<TypeExpr>),
 }
 
 #[derive(Clone, Debug)]

@@ -146,3 +146,49 @@ fn gl_uniform_form_and_limits_on_the_command_line() {
     assert!(text(&o.stderr).contains("no limit is named `uniform-blobs`") && text(&o.stderr).contains("uniform-buffers"), "{}", text(&o.stderr));
     assert!(!d.path().join("y").exists());
 }
+
+/// The bindings of compute programs: the workgroup size, each storage
+/// buffer's std430 offsets, fixed size and run-time stride, each storage
+/// image's format and access, wgpu layout entries; and they compile.
+#[test]
+fn bindgen_describes_compute_programs() {
+    let d = tempfile::tempdir().unwrap();
+    for (name, needles) in [
+        (
+            "histogram",
+            &[
+                "pub const WORKGROUP_SIZE: [u32; 3] = [64, 1, 1];",
+                "pub const STORAGE_BUFFERS: &[&str] = &[\"samples\", \"histogram\"];",
+                "pub const RUNTIME_STRIDE: Option<u64> = Some(4);",
+                "pub const OFFSET_BINS: u64 = 8;",
+                "pub const SIZE: u64 = 264;",
+                "pub const GLSL_BLOCK: &str = \"histogram_ssbo\";",
+                "wgpu::BufferBindingType::Storage { read_only: true }",
+                "pub const GLSL430: &str",
+            ][..],
+        ),
+        (
+            "image_fill",
+            &[
+                "pub const FORMAT: &str = \"rgba8\";",
+                "pub const ACCESS: &str = \"write\";",
+                "pub const IMAGE_UNIT: u32 = 0;",
+                "pub const BINDING: u32 = 1;",
+                "access: wgpu::StorageTextureAccess::WriteOnly, format: wgpu::TextureFormat::Rgba8Unorm",
+                "visibility: wgpu::ShaderStages::COMPUTE,",
+            ][..],
+        ),
+    ] {
+        let shader = repo().join(format!("shaders/compute/{name}.das"));
+        let out = d.path().join(format!("{name}.rs"));
+        let o = umbrac(&["bindgen", shader.to_str().unwrap(), "--no-bytemuck", "-o", out.to_str().unwrap()], d.path());
+        assert!(o.status.success(), "{}", text(&o.stderr));
+        let rs = std::fs::read_to_string(&out).unwrap();
+        for needle in needles {
+            assert!(rs.contains(needle), "`{needle}` missing from the bindings of {name}:\n{rs}");
+        }
+        let rustc = std::env::var_os("RUSTC").unwrap_or_else(|| "rustc".into());
+        let o = std::process::Command::new(rustc).args(["--edition", "2021", "--crate-type", "lib", "--emit=metadata", "-o"]).arg(d.path().join(format!("{name}.rmeta"))).arg(&out).output().expect("rustc");
+        assert!(o.status.success(), "the bindings of {name} do not compile:\n{}", text(&o.stderr));
+    }
+}

@@ -111,9 +111,7 @@ fn snippets() -> BTreeMap<&'static str, String> {
     add("uniform-defaults", frag("struct G {\n    lift : float3\n    gamma : float\n}\nvar @uniform u_k : float = 0.5\nvar @uniform u_g : G = G(float3(0.1), 2.2)", "    f_color = float4(u_g.lift * u_k, u_g.gamma)"));
     add("bind-groups", frag("var @uniform @set = 1 @binding = 2 u_a : float4\nvar @uniform @set = 1 t : sampler2D\nvar @uniform u_b : float4", "    f_color = u_a + u_b + texture(t, float2(0.5))"));
     add("push-constant", frag("var @push_constant pc_tint : float4", "    f_color = pc_tint"));
-    add("compute-program", "var @out f_color : float4\n[compute_program(local_size_x = 8)]\ndef cs {\n    let x = 1\n}\n[fragment_program]\ndef fs {\n    f_color = float4(1.0)\n}\n".to_string());
-    add("ssbo", frag("struct P {\n    v : float4\n}\nvar @ssbo buf : P", "    f_color = buf.v"));
-    add("groupshared", frag("var @groupshared tile : float4[4]", "    f_color = tile[0]"));
+    compute(&mut add);
     functions_and_data(&mut add);
     for (id, src) in snippets_language_l() {
         add(id, src);
@@ -124,6 +122,18 @@ fn snippets() -> BTreeMap<&'static str, String> {
 /// Functions and data as daslang writes them (issue 17): results from
 /// `return`, defaults, parameter kinds, overloads, pipes, `with`, enums,
 /// construction by field name, `for` over arrays.
+/// Compute rows: the table with `glsl430` and `gles310` columns.
+fn compute(add: &mut impl FnMut(&'static str, String)) {
+    let buf = "struct Buf {\n    count : uint\n    data : float[]\n}\n";
+    add("compute-program", format!("{buf}var @ssbo out_buf : Buf\n[compute_program(local_size_x = 8, local_size_y = 2, version = 430)]\ndef cs {{\n    let i = gl_GlobalInvocationID.x + gl_NumWorkGroups.x * gl_WorkGroupSize.x * gl_GlobalInvocationID.y\n    out_buf.data[i] = float(gl_LocalInvocationID.x + gl_WorkGroupID.y + gl_LocalInvocationIndex)\n}}\n"));
+    add("ssbo", format!("{buf}var @ssbo @readonly src : Buf\nvar @ssbo dst : Buf\n[compute_program(local_size_x = 64)]\ndef cs {{\n    let i = gl_GlobalInvocationID.x\n    if (i < src.count && i < length(dst.data)) {{\n        dst.data[i] = src.data[i] * 2.0\n    }}\n}}\n"));
+    add("ssbo-fragment", frag("struct P {\n    v : float4\n}\nvar @ssbo @readonly buf : P", "    f_color = buf.v"));
+    add("groupshared", format!("{buf}var @ssbo b : Buf\nvar @groupshared tile : float[64]\n[compute_program(local_size_x = 64)]\ndef cs {{\n    let l = gl_LocalInvocationIndex\n    tile[l] = b.data[gl_GlobalInvocationID.x]\n    barrier()\n    memoryBarrierShared()\n    groupMemoryBarrier()\n    b.data[gl_GlobalInvocationID.x] = tile[63u - l]\n}}\n"));
+    add("atomics", "struct H {\n    total : uint\n    low : int\n    bins : uint[]\n}\nvar @ssbo h : H\nvar @groupshared n : uint\n[compute_program(local_size_x = 64)]\ndef cs {\n    let i = gl_GlobalInvocationID.x\n    atomicAdd(h.bins[i % 16u], 1u)\n    atomicMin(h.low, int(i))\n    let old = atomicCompSwap(h.total, 0u, 1u)\n    atomicExchange(n, old)\n    atomicOr(n, atomicXor(h.total, atomicAnd(n, 3u)))\n    atomicMax(h.total, n)\n}\n".to_string());
+    add("storage-images", "var @writeonly @format = rgba8 dst : image2D\nvar @readonly @format = rgba16f src : image3D\nvar @format = r32ui counts : uimage2D\nvar @readonly @format = r32f layers : image2DArray\n[compute_program(local_size_x = 8, local_size_y = 8)]\ndef cs {\n    let p = int2(gl_GlobalInvocationID.xy)\n    let c = imageLoad(counts, p)\n    imageStore(counts, p, c + uint4(1u))\n    let l = imageLoad(layers, int3(p, 1))\n    imageStore(dst, p % imageSize(dst), imageLoad(src, int3(p, 0)) + l)\n}\n".to_string());
+    add("barrier-uniformity", format!("{buf}var @ssbo b : Buf\n[compute_program(local_size_x = 64)]\ndef cs {{\n    if (b.data[gl_GlobalInvocationID.x] > 0.0) {{\n        barrier()\n    }}\n}}\n"));
+}
+
 fn functions_and_data(add: &mut impl FnMut(&'static str, String)) {
     add("inferred-result", frag("def half_of(x : float) {\n    return x * 0.5\n}\ndef twice(x : float) => x * 2.0\ndef third(x : float) -> float {\n    return x / 3.0\n}\ndef nothing(x : float) : void {\n    return\n}", "    nothing(1.0)\n    f_color = float4(half_of(1.0), twice(0.25), third(1.5), 1.0)"));
     add("default-parameters", frag("def tone(x : float; gain : float = 2.0; bias : float3 = float3(0.1)) => x * gain + bias", "    f_color = float4(tone(0.5) + tone(0.5, 1.0) + tone(0.5, 1.0, float3(0.0)), 1.0)"));
@@ -240,7 +250,8 @@ struct Row {
     cells: Vec<Status>,
 }
 
-const COLUMNS: [Target; 4] = [Target::Glsl330, Target::Gles300, Target::Wgsl, Target::Spirv];
+/// The columns of the matrix; the compute table has the last two too.
+const COLUMNS: [Target; 6] = [Target::Glsl330, Target::Gles300, Target::Wgsl, Target::Spirv, Target::Glsl430, Target::Gles310];
 
 fn rows() -> Vec<Row> {
     let doc = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join("docs/features.md")).expect("docs/features.md exists");
@@ -259,7 +270,9 @@ fn rows() -> Vec<Row> {
             "no" => Status::No,
             other => panic!("row `{id}`: unknown status `{other}` (yes, lowered, no)"),
         };
-        rows.push(Row { id: id.clone(), cells: cells[2..6].iter().map(|c| status(c.as_str())).collect() });
+        // The compute table: two more status columns (glsl430, gles310).
+        let statuses = if cells.len() >= 9 && ["yes", "lowered", "no"].contains(&cells[6].as_str()) { 6 } else { 4 };
+        rows.push(Row { id: id.clone(), cells: cells[2..2 + statuses].iter().map(|c| status(c.as_str())).collect() });
     }
     rows
 }

@@ -11,6 +11,8 @@
 #[path = "../support/mod.rs"]
 mod support;
 
+#[cfg(all(feature = "render", feature = "gl"))]
+mod compute;
 #[cfg(feature = "gl")]
 mod consumers;
 #[cfg(feature = "render")]

@@ -173,6 +173,9 @@ fn interface_of(m: &naga::Module, info: &naga::valid::ModuleInfo) -> Interface {
             builtins: vec![],
             resources: vec![],
             loose: vec![],
+            workgroup_size: ep.workgroup_size,
+            workgroup: vec![],
+            span: Default::default(),
         };
         let visit = |name: Option<&String>, ty, binding: Option<&naga::Binding>, output: bool, e: &mut EntryInterface| match binding {
             Some(naga::Binding::Location { location, interpolation, .. }) => {
@@ -285,14 +288,14 @@ pub fn validate_dir(dir: &Path, r: &Reflection) -> usize {
     let mut failures = Vec::new();
     let files: Vec<PathBuf> = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().path()).collect();
     if require_tool("glslangValidator") {
-        for f in files.iter().filter(|p| matches!(p.extension().and_then(|e| e.to_str()), Some("vert" | "frag"))) {
+        for f in files.iter().filter(|p| matches!(p.extension().and_then(|e| e.to_str()), Some("vert" | "frag" | "comp"))) {
             runs += 1;
             if let Err(e) = glslang(f) {
                 failures.push(e);
             }
         }
         for (v, f) in link_pairs(r) {
-            for infix in ["330", "300es"] {
+            for infix in ["330", "300es", "430", "310es"] {
                 let (vp, fp) = (dir.join(format!("{v}.{infix}.vert")), dir.join(format!("{f}.{infix}.frag")));
                 if vp.exists() && fp.exists() {
                     runs += 1;

@@ -13,6 +13,7 @@
 //! puts values at a layout, for both.
 
 pub mod bytes;
+pub mod compute;
 pub mod gl;
 pub mod wgpu;
 

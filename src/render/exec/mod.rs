@@ -61,6 +61,22 @@ impl From<InterfaceError> for ExecError {
     }
 }
 
+/// What comes back of a compute dispatch: the bytes of each buffer and
+/// image the plan reads back, by name (images: texel rows in coordinate
+/// order, y = 0 first, layers after each other).
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct ComputeReadback {
+    pub resources: std::collections::BTreeMap<String, Vec<u8>>,
+}
+
+impl ComputeReadback {
+    /// The bytes of `name` as little-endian 32-bit words.
+    pub fn words(&self, name: &str) -> Option<Vec<u32>> {
+        let b = self.resources.get(name)?;
+        Some(b.chunks_exact(4).map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect())
+    }
+}
+
 /// What comes back of a frame: the read-back target's texels, top row of
 /// the GL picture first.
 #[derive(Clone, Debug, PartialEq)]

@@ -11,6 +11,7 @@
 //! fullscreen triangle into an integer target, for self-checking programs).
 
 pub mod checks;
+pub mod compute;
 pub mod tutorial;
 mod value;
 

@@ -71,8 +71,11 @@ impl<'a, 'd> Checker<'a, 'd> {
                         } else {
                             index.insert(&f.name.name, fields.len() as u32);
                         }
-                        if !ty.is_value() && !ty.is_error() {
-                            let d = Diagnostic::error(format!("a struct field cannot have type `{}`", self.show(&ty)), f.ty.as_ref().map_or(f.span, |t| t.span));
+                        // `T[]` only as the last field (of a struct an `@ssbo` holds).
+                        let last_unsized = fields.len() + 1 == s.fields.len() && matches!(&ty, Ty::RuntimeArray(e) if e.is_value() && !self.is_unsized(e));
+                        if !ty.is_value() && !ty.is_error() && !last_unsized {
+                            let what = if matches!(ty, Ty::RuntimeArray(_)) { "a run-time-sized array must be the last field of a struct, of plain values" } else { "a struct field cannot have type" };
+                            let d = Diagnostic::error(format!("{what} `{}`", self.show(&ty)), f.ty.as_ref().map_or(f.span, |t| t.span));
                             self.diags.push(d);
                         }
                         fields.push((f.name.name.as_str().to_string(), ty, f.name.span));
@@ -286,6 +289,9 @@ impl<'a, 'd> Checker<'a, 'd> {
             let mut refused = false;
             // `@set = N`, `@binding = N`.
             let mut bind: (Option<(i64, Span)>, Option<(i64, Span)>) = (None, None);
+            // `@readonly` / `@writeonly`, `@format = F` (storage buffers and images).
+            let mut access: Option<(Access, Span)> = None;
+            let mut format: Option<(ImageFormat, Span)> = None;
             for q in &g.qualifiers {
                 let c = match &q.kind {
                     ast::QualifierKind::Uniform => Some("uniform"),
@@ -313,15 +319,37 @@ impl<'a, 'd> Checker<'a, 'd> {
                     // daslang binds `@push_constant` like `@uniform` on GL:
                     // a uniform on every target (docs/language.md).
                     ast::QualifierKind::Other(name) if name == "push_constant" => Some("uniform"),
+                    ast::QualifierKind::Other(name) if name == "ssbo" => Some("ssbo"),
+                    ast::QualifierKind::Other(name) if name == "groupshared" => Some("groupshared"),
+                    ast::QualifierKind::Other(name) if name == "readonly" || name == "writeonly" => {
+                        let a = if name == "readonly" { Access::Read } else { Access::Write };
+                        if let Some((prev, prev_span)) = access.filter(|p| p.0 != a) {
+                            let d = Diagnostic::error(format!("`@{name}` conflicts with `@{}`", if prev == Access::Read { "readonly" } else { "writeonly" }), q.span)
+                                .with_secondary(prev_span, "already declared here")
+                                .with_note("leave both out for read-write access");
+                            self.diags.push(d);
+                        }
+                        access = Some((a, q.span));
+                        None
+                    }
+                    ast::QualifierKind::Format(id) => {
+                        match ImageFormat::from_name(&id.name) {
+                            Some(f) => format = Some((f, q.span)),
+                            None => {
+                                let names: Vec<&str> = ImageFormat::ALL.iter().map(|f| f.name()).collect();
+                                let mut d = Diagnostic::error(format!("unknown image format `{}`", id.name), id.span).with_label("not a storage image format");
+                                if let Some(s) = suggest(&id.name, names.iter().copied()) {
+                                    d = d.with_note(format!("help: did you mean `{s}`?"));
+                                }
+                                self.diags.push(d.with_note(format!("the formats every target with storage images has: {}", names.join(", "))));
+                                refused = true;
+                            }
+                        }
+                        None
+                    }
                     ast::QualifierKind::Other(name) => {
-                        let d = match name.as_str() {
-                            "ssbo" => Diagnostic::error("`@ssbo` storage buffers are not supported yet", q.span)
-                                .with_note("umbrac's targets (GLSL 330, GLSL ES 3.00, WGSL and SPIR-V vertex and fragment programs) get no storage buffers from it yet; use `@uniform` for data the shader only reads"),
-                            "groupshared" => Diagnostic::error("`@groupshared` (workgroup memory) is not supported yet", q.span)
-                                .with_note("workgroup memory belongs to compute programs, which umbrac does not compile yet"),
-                            _ => Diagnostic::error(format!("unknown annotation `@{name}`"), q.span)
-                                .with_note("shader globals take @uniform, @in, @out, @inout, @push_constant, @location = N and @stage = N"),
-                        };
+                        let d = Diagnostic::error(format!("unknown annotation `@{name}`"), q.span)
+                            .with_note("shader globals take @uniform, @in, @out, @inout, @push_constant, @ssbo, @groupshared, @readonly, @writeonly, @format = F, @location = N, @stage = N, @set = N and @binding = N");
                         self.diags.push(d);
                         refused = true;
                         None
@@ -347,6 +375,16 @@ impl<'a, 'd> Checker<'a, 'd> {
                 let d = Diagnostic::error("only `@uniform` values can have an initial value", init.span)
                     .with_note("a uniform's initial value is the default the host sets; inputs and outputs have none");
                 self.diags.push(d);
+            }
+            // A storage image needs no `@uniform` (it is one in GLSL).
+            let class = class.or_else(|| matches!(ty, Ty::Image(_)).then_some(("uniform", g.name.span)));
+            if !(matches!(class, Some(("ssbo", _))) || matches!(ty, Ty::Image(_))) {
+                if let Some((_, span)) = access {
+                    self.diags.push(Diagnostic::error("`@readonly` and `@writeonly` apply only to `@ssbo` buffers and storage images", span));
+                }
+            }
+            if let Some((_, span)) = format.filter(|_| !matches!(ty, Ty::Image(_))) {
+                self.diags.push(Diagnostic::error("`@format` applies only to storage images (`image2D`, `uimage3D`, ...)", span));
             }
             let Some((class, class_span)) = class else {
                 if refused {
@@ -391,6 +429,17 @@ impl<'a, 'd> Checker<'a, 'd> {
                         _ => 0,
                     };
                     GlobalKind::Sampler { kind, texture_unit: unit, count }
+                }
+                ("uniform", Ty::Image(k)) => self.image_kind(*k, format, access, location.map(|l| l.1).or(stage.map(|s| s.1)), gty.span),
+                ("ssbo", _) => self.storage_kind(&ty, access, location.map(|l| l.1).or(stage.map(|s| s.1)), gty.span),
+                ("groupshared", _) => {
+                    if let Some(span) = location.map(|l| l.1).or(stage.map(|s| s.1)) {
+                        self.diags.push(Diagnostic::error("`@groupshared` variables take no `@location` or `@stage`", span));
+                    }
+                    if !ty.is_error() && (!ty.is_value() || self.is_unsized(&ty)) {
+                        self.diags.push(Diagnostic::error(format!("`@groupshared` variables must be plain values, not `{}`", self.show(&ty)), gty.span));
+                    }
+                    GlobalKind::Workgroup
                 }
                 ("uniform", _) => {
                     if let Some(span) = location.map(|l| l.1).or(stage.map(|s| s.1)) {
@@ -441,14 +490,91 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
     }
 
+    /// Whether `ty` is or holds a run-time-sized array (only an `@ssbo`
+    /// holds one: it is no value to copy).
+    pub(super) fn is_unsized(&self, ty: &Ty) -> bool {
+        match ty {
+            Ty::RuntimeArray(_) => true,
+            Ty::Struct(id) => self.out.structs.get(*id).is_some_and(|s| s.fields.last().is_some_and(|f| matches!(f.1, Ty::RuntimeArray(_)))),
+            _ => false,
+        }
+    }
+
+    /// A storage image: `@format` given and matching the type's texels;
+    /// read-write only for the single-channel 32-bit formats.
+    fn image_kind(&mut self, k: ImageKind, format: Option<(ImageFormat, Span)>, access: Option<(Access, Span)>, misplaced: Option<Span>, ty_span: Span) -> GlobalKind {
+        if let Some(span) = misplaced {
+            self.diags.push(Diagnostic::error("storage images take no `@location` or `@stage`; use `@binding = N`", span));
+        }
+        let access_given = access.map(|a| a.0);
+        let Some((format, format_span)) = format else {
+            let d = Diagnostic::error(format!("storage image `{}` needs a texel format: `@format = F`", k.name()), ty_span)
+                .with_note(format!("help: for example `@format = {}`", match k.scalar { Scalar::Uint => "r32ui", Scalar::Int => "r32i", _ => "rgba8" }));
+            self.diags.push(d);
+            return GlobalKind::Image { format: ImageFormat::R32f, access: access_given.unwrap_or(Access::ReadWrite) };
+        };
+        if format.scalar() != k.scalar {
+            let want = match format.scalar() { Scalar::Uint => "uimage", Scalar::Int => "iimage", _ => "image" };
+            let d = Diagnostic::error(format!("format `{}` holds {} texels, which `{}` does not read", format.name(), format.scalar().name(), k.name()), format_span)
+                .with_secondary(ty_span, "the image type")
+                .with_note(format!("help: declare it as `{want}...` or pick a format of {} texels", match k.scalar { Scalar::Uint => "uint", Scalar::Int => "int", _ => "float" }));
+            self.diags.push(d);
+        }
+        let access = access_given.unwrap_or(Access::ReadWrite);
+        if access == Access::ReadWrite && !format.allows_read_write() {
+            let d = Diagnostic::error(format!("a read-write storage image must be `r32f`, `r32ui` or `r32i`, not `{}`", format.name()), format_span)
+                .with_note("help: add `@readonly` or `@writeonly` (GLSL ES 3.10 and WebGPU allow read-write access only to single-channel 32-bit formats)");
+            self.diags.push(d);
+        }
+        GlobalKind::Image { format, access }
+    }
+
+    /// A storage buffer: a struct of host-shareable members (std430), read
+    /// by every stage, written only where `@readonly` is not given.
+    fn storage_kind(&mut self, ty: &Ty, access: Option<(Access, Span)>, misplaced: Option<Span>, ty_span: Span) -> GlobalKind {
+        if let Some(span) = misplaced {
+            self.diags.push(Diagnostic::error("`@ssbo` buffers take no `@location` or `@stage`; use `@binding = N`", span));
+        }
+        if let Some((Access::Write, span)) = access {
+            self.diags.push(Diagnostic::error("`@writeonly` applies only to storage images; a storage buffer is read-write, or `@readonly`", span));
+        }
+        match ty {
+            Ty::Struct(_) => {
+                if let Some(msg) = self.storage_type_problem(ty) {
+                    self.diags.push(Diagnostic::error(msg, ty_span));
+                }
+            }
+            Ty::Error => {}
+            _ => {
+                let d = Diagnostic::error(format!("an `@ssbo` buffer holds a struct, not `{}`", self.show(ty)), ty_span)
+                    .with_note("help: declare `struct Buf { data : uint[] }` and `var @ssbo buf : Buf`");
+                self.diags.push(d);
+            }
+        }
+        GlobalKind::Storage { access: if matches!(access, Some((Access::Read, _))) { Access::Read } else { Access::ReadWrite } }
+    }
+
+    /// Why `ty` cannot be stored in a storage buffer (std430, shared with
+    /// the host): booleans, `half`, enumerations, samplers and images.
+    fn storage_type_problem(&self, ty: &Ty) -> Option<String> {
+        match ty {
+            Ty::Scalar(Scalar::Bool) | Ty::Vector(Scalar::Bool, _) => Some("`bool` cannot live in a storage buffer (it has no portable layout); use `int` or `uint`".into()),
+            Ty::Scalar(Scalar::Half) | Ty::Vector(Scalar::Half, _) => Some(HALF_INTERFACE.replace("{what}", "a storage buffer")),
+            Ty::Enum(_) => Some(format!("an enumeration (`{}`) cannot be in a storage buffer: its storage is not portable; use `int`", self.show(ty))),
+            Ty::Array(e, _) | Ty::RuntimeArray(e) => self.storage_type_problem(e),
+            Ty::Struct(id) => self.out.structs.get(*id)?.fields.iter().find_map(|f| self.storage_type_problem(&f.1).map(|m| format!("field `{}`: {m}", f.0))),
+            _ => None,
+        }
+    }
+
     /// Records (range-checked) the `@set`/`@binding` written on the global
     /// about to be declared; only uniforms and samplers take them.
     fn written_bind(&mut self, kind: &GlobalKind, (set, binding): (Option<(i64, Span)>, Option<(i64, Span)>)) {
-        let resource = matches!(kind, GlobalKind::Uniform { .. } | GlobalKind::Sampler { .. });
+        let resource = matches!(kind, GlobalKind::Uniform { .. } | GlobalKind::Sampler { .. } | GlobalKind::Storage { .. } | GlobalKind::Image { .. });
         let mut checked = |q: Option<(i64, Span)>, what: &str, limit: i64| -> Option<(u32, Span)> {
             let (n, span) = q?;
             if !resource {
-                self.diags.push(Diagnostic::error(format!("`@{what}` applies only to uniforms and samplers"), span));
+                self.diags.push(Diagnostic::error(format!("`@{what}` applies only to uniforms, samplers, storage buffers and images"), span));
                 return None;
             }
             if !(0..limit).contains(&n) {
@@ -469,7 +595,7 @@ impl<'a, 'd> Checker<'a, 'd> {
     /// Evaluates `value` at compile time, the constants it names first.
     /// `None` when one of those is wrong (reported already).
     /// `own`: the constant being defined, which `value` may not name.
-    fn fold(&mut self, value: &'a ast::Expr, own: Option<&str>, use_span: Span) -> Option<Result<(ConstValue, Ty), Diagnostic>> {
+    pub(super) fn fold(&mut self, value: &'a ast::Expr, own: Option<&str>, use_span: Span) -> Option<Result<(ConstValue, Ty), Diagnostic>> {
         let mut names = Vec::new();
         crate::sema::consts::collect_names(value, &mut names);
         let mut deps_ok = true;
@@ -685,6 +811,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                 self.diags.push(d);
                 Ty::Error
             }
+            ast::TypeExprKind::RuntimeArray(elem) => Ty::RuntimeArray(Box::new(self.resolve_type(elem))),
             ast::TypeExprKind::Array(elem, len) => {
                 let elem_ty = self.resolve_type(elem);
                 let mut names = Vec::new();

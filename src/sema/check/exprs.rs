@@ -175,6 +175,8 @@ impl<'a, 'd> Checker<'a, 'd> {
                     Ty::Vector(s, n) => (Ty::Scalar(*s), *n as u32),
                     Ty::Matrix(c, r) => (Ty::Vector(Scalar::Float, *r), *c as u32),
                     Ty::Array(elem, n) => ((**elem).clone(), *n),
+                    // Bounds come from the buffer bound; every target clamps.
+                    Ty::RuntimeArray(elem) => ((**elem).clone(), u32::MAX),
                     other => {
                         let d = Diagnostic::error(format!("`{}` cannot be indexed", self.show(other)), b.span);
                         self.diags.push(d);
@@ -281,6 +283,9 @@ impl<'a, 'd> Checker<'a, 'd> {
             };
         }
         if let Some(b) = BuiltinVar::from_name(&id.name) {
+            if b == BuiltinVar::WorkGroupSize {
+                return self.workgroup_size_value(cx, span);
+            }
             let g = *self.builtin_vars.entry(b).or_insert_with(|| {
                 self.out.globals.push(Global { name: b.name().to_string(), ty: b.ty(), kind: GlobalKind::Builtin(b), span, bind: None });
                 self.out.globals.len() - 1
@@ -379,7 +384,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         // Constructors and casts.
         // `half` is no daslang type: a program's own function of that name wins.
         let ctor_ty = Ty::from_builtin_name(name)
-            .filter(|t| !matches!(t, Ty::Sampler(_)) && (!t.has_half(&[]) || !self.funcs.contains_key(name)))
+            .filter(|t| !matches!(t, Ty::Sampler(_) | Ty::Image(_)) && (!t.has_half(&[]) || !self.funcs.contains_key(name)))
             .or_else(|| self.structs.get(name).map(|&s| Ty::Struct(s)));
         let mut xs: Vec<Expr> = args.iter().map(|a| self.check_expr(cx, a)).collect();
         if xs.iter().any(|x| x.ty.is_error()) {
@@ -424,6 +429,14 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
         if let Some((_, b)) = builtins::TEXTURE_FUNCTIONS.iter().find(|(n, _)| *n == name) {
             return self.check_texture_call(cx, *b, name, xs, span);
+        }
+        if name == "length" && !self.funcs.contains_key(name) {
+            if let Some(e) = self.array_length_call(&xs, span) {
+                return e;
+            }
+        }
+        if let Some(b) = super::compute::compute_builtin(name) {
+            return self.check_compute_call(cx, b, name, xs, span);
         }
         match builtins::resolve(name, xs.iter().map(|x| &x.ty)) {
             Ok(Some((b, ret))) => {

@@ -14,6 +14,7 @@
 //! targets have).
 
 mod calls;
+mod compute;
 mod decls;
 mod enums;
 mod exprs;
@@ -23,6 +24,7 @@ mod math;
 mod programs;
 mod stmts;
 mod targets;
+mod uniformity;
 
 use std::collections::hash_map::Entry;
 use std::collections::BTreeMap;
@@ -31,7 +33,7 @@ use super::builtins::{self, Builtin};
 use super::consts::{eval_const, ConstEnv};
 use super::tree::*;
 use super::limits::*;
-use super::types::{EnumId, SamplerKind, Scalar, StructId, Ty, TyDisplay, BOOL, FLOAT, HALF, INT, UINT};
+use super::types::{Access, EnumId, ImageFormat, ImageKind, SamplerKind, Scalar, StructId, Ty, TyDisplay, BOOL, FLOAT, HALF, INT, UINT};
 use crate::diag::{suggest, Diagnostic, Diagnostics};
 use rustc_hash::{FxHashMap, FxHashSet};
 use crate::source::Span;
@@ -39,7 +41,7 @@ use crate::syntax::ast::{self, BinaryOp, UnaryOp};
 
 /// Checks a program for every target.
 pub fn check(program: &ast::Program, diags: &mut Diagnostics) -> Option<Program> {
-    check_for_targets(program, &crate::target::Target::ALL, diags)
+    check_for_targets(program, &[], diags)
 }
 
 /// Checks a program for the targets requested (empty: all): a construct
@@ -47,9 +49,12 @@ pub fn check(program: &ast::Program, diags: &mut Diagnostics) -> Option<Program>
 pub fn check_for_targets(program: &ast::Program, targets: &[crate::target::Target], diags: &mut Diagnostics) -> Option<Program> {
     let mut c = Checker::new(program, diags);
     c.targets = if targets.is_empty() { crate::target::Target::ALL.to_vec() } else { targets.to_vec() };
+    c.targets_defaulted = targets.is_empty();
     c.declare();
     c.check_entry_points();
     folding::check_program(&c.out, c.diags);
+    uniformity::check_program(&c.out, c.diags);
+    compute::check_whole_values(&c.out, c.diags);
     c.link_programs();
     if c.diags.has_errors() {
         None
@@ -224,8 +229,16 @@ struct Checker<'a, 'd> {
     spare_scopes: Vec<Scopes<'a>>,
     /// The targets requested, for the constructs only some have.
     targets: Vec<crate::target::Target>,
+    /// No target was named: every one that can run the program is made
+    /// (`Target::defaults`), so compute constructs refuse no target.
+    targets_defaulted: bool,
     /// `half` was refused already (reported once, at its first use).
     half_refused: bool,
+    /// Compute constructs were refused already (once, at the first).
+    compute_refused: bool,
+    /// The `local_size_*` of the compute entry point being checked
+    /// (`gl_WorkGroupSize` there); `[0; 3]` elsewhere.
+    entry_workgroup_size: [u32; 3],
 }
 
 fn is_entry(f: &ast::FunctionDecl) -> Option<naga::ShaderStage> {
@@ -281,6 +294,9 @@ impl<'a, 'd> Checker<'a, 'd> {
             call_depth: 0,
             spare_scopes: Vec::new(),
             targets: crate::target::Target::ALL.to_vec(),
+            targets_defaulted: true,
+            compute_refused: false,
+            entry_workgroup_size: [0; 3],
             half_refused: false,
         }
     }

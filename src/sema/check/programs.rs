@@ -108,7 +108,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         for &g in &used {
             let global = &self.out.globals[g];
             let slots = match global.kind {
-                GlobalKind::Uniform { .. } => 1u32,
+                GlobalKind::Uniform { .. } | GlobalKind::Storage { .. } | GlobalKind::Image { .. } => 1u32,
                 GlobalKind::Sampler { count, .. } => 2 * count.unwrap_or(1),
                 _ => continue,
             };

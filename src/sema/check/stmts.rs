@@ -23,17 +23,16 @@ impl<'a, 'd> Checker<'a, 'd> {
                 self.diags.push(d);
                 continue;
             }
-            if stage == naga::ShaderStage::Compute {
-                let at = decl.annotations.iter().find(|a| a.name.name == "compute_program").map_or(decl.name.span, |a| a.span);
-                let d = Diagnostic::error(format!("compute program `{name}`: compute programs are not supported yet"), at)
-                    .with_label("a compute program")
-                    .with_note("umbrac compiles vertex and fragment programs; compile the others in this file with `--entry NAME`");
-                self.diags.push(d);
-                continue;
-            }
+            let workgroup_size = match stage {
+                naga::ShaderStage::Compute => self.workgroup_size(decl),
+                _ => [0; 3],
+            };
+            self.entry_workgroup_size = workgroup_size;
             let Some(func) = self.check_function(decl, Some(stage), None) else { continue };
             self.check_stage_rules(&name, stage, &func);
-            self.out.entry_points.push(EntryPoint { name, stage, func, locations: BTreeMap::new() });
+            self.check_compute_rules(decl, &name, stage, &func);
+            let annotation = decl.annotations.iter().find(|a| matches!(a.name.name.as_str(), "vertex_program" | "fragment_program" | "compute_program")).map_or(decl.name.span, |a| a.span);
+            self.out.entry_points.push(EntryPoint { name, stage, func, locations: BTreeMap::new(), workgroup_size, annotation });
         }
     }
 
@@ -106,6 +105,14 @@ impl<'a, 'd> Checker<'a, 'd> {
         let decl = self.fn_decls[idx];
         let errors = self.diags.error_count();
         let params: Vec<Ty> = decl.params.iter().map(|p| self.resolve_type(&p.ty)).collect();
+        for (p, ty) in decl.params.iter().zip(&params) {
+            if matches!(ty, Ty::Image(_) | Ty::RuntimeArray(_)) {
+                let what = if matches!(ty, Ty::Image(_)) { "a storage image" } else { "a run-time-sized array" };
+                let d = Diagnostic::error(format!("parameter `{}` cannot be {what} (`{}`)", p.name.name, self.show(ty)), p.ty.span)
+                    .with_note("help: use the global by its name in the function");
+                self.diags.push(d);
+            }
+        }
         let required = decl.params.iter().rposition(|p| p.default.is_none()).map_or(0, |k| k + 1);
         let sig = (self.diags.error_count() == errors).then(|| std::rc::Rc::new(Signature { params, required }));
         self.fn_sigs[idx] = Some(sig.clone());
@@ -570,6 +577,8 @@ impl<'a, 'd> Checker<'a, 'd> {
                 let g = &self.out.globals[*id];
                 let why = match g.kind {
                     GlobalKind::Uniform { .. } | GlobalKind::Sampler { .. } => Some("it is a uniform, set by the host"),
+                    GlobalKind::Storage { access: crate::sema::types::Access::Read } => Some("it is a `@readonly` storage buffer"),
+                    GlobalKind::Image { .. } => Some("a storage image is written with `imageStore(image, coord, value)`"),
                     GlobalKind::Io { kind: IoKind::In, .. } => Some("it is an `@in` input"),
                     GlobalKind::Builtin(b) if !b.is_output() => Some("it is a builtin input"),
                     _ => None,

@@ -13,7 +13,12 @@ impl<'a, 'd> Checker<'a, 'd> {
         if self.half_refused {
             return;
         }
-        let lacking: Vec<&str> = self.targets.iter().filter(|t| matches!(t, Target::Glsl330 | Target::Gles300)).map(|t| t.name()).collect();
+        // With no target named, the GLSL targets of a program are 330 and
+        // ES 3.00 (or 430 and ES 3.10, which have no `half` either).
+        let lacking: Vec<&str> = match self.targets_defaulted {
+            true => vec![Target::Glsl330.name(), Target::Gles300.name()],
+            false => self.targets.iter().filter(|t| t.is_glsl()).map(|t| t.name()).collect(),
+        };
         if lacking.is_empty() {
             return;
         }
@@ -21,8 +26,28 @@ impl<'a, 'd> Checker<'a, 'd> {
         let (which, s) = if lacking.len() == 1 { (lacking[0].to_string(), "") } else { (lacking.join(" and "), "s") };
         let d = Diagnostic::error(format!("`half` is not supported by the {which} target{s}"), span)
             .with_label("a 16-bit float")
-            .with_note("GLSL 330 and GLSL ES 3.00 have no 16-bit float type (`mediump` is a precision hint, not a type); WGSL has `f16` (`enable f16`) and SPIR-V the Float16 capability")
+            .with_note("GLSL (330, ES 3.00, 430, ES 3.10) has no 16-bit float type (`mediump` is a precision hint, not a type); WGSL has `f16` (`enable f16`) and SPIR-V the Float16 capability")
             .with_note("help: compile this file for `--target wgsl --target spirv` only, or use `float`");
+        self.diags.push(d);
+    }
+
+    /// A compute entry point, storage buffer, storage image or workgroup
+    /// variable (`what`) at `span`: GLSL 330 and GLSL ES 3.00 have none.
+    /// With no target named, the program gets GLSL 430 and ES 3.10
+    /// instead (`Target::defaults`).
+    pub(super) fn compute_used(&mut self, span: Span, what: &str) {
+        if self.compute_refused || self.targets_defaulted {
+            return;
+        }
+        let lacking: Vec<&str> = self.targets.iter().filter(|t| t.is_classic_glsl()).map(|t| t.name()).collect();
+        if lacking.is_empty() {
+            return;
+        }
+        self.compute_refused = true;
+        let (which, s) = if lacking.len() == 1 { (lacking[0].to_string(), "") } else { (lacking.join(" and "), "s") };
+        let d = Diagnostic::error(format!("{what} is not supported by the {which} target{s}"), span)
+            .with_note("OpenGL 3.3 and OpenGL ES 3.0 have no compute shaders, storage buffers or images")
+            .with_note("help: compile for `--target glsl430` / `--target gles310` (GL 4.3, GLES 3.1), `wgsl` or `spirv`, or leave `--target` out to get every target that runs it");
         self.diags.push(d);
     }
 }

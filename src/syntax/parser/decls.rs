@@ -265,6 +265,11 @@ impl<'m> Parser<'_, 'm> {
         let value = if self.peek().is(P::Eq) {
             self.bump();
             let v = self.peek();
+            if name == "format" && v.kind == TokKind::Ident {
+                self.bump();
+                let id = Ident { name: self.texts.name(v.span), span: v.span };
+                return Ok(Qualifier { kind: QualifierKind::Format(id), span: at.span.to(v.span) });
+            }
             if v.kind != TokKind::Int {
                 if matches!(name, "location" | "stage" | "set" | "binding") {
                     let msg = format!("expected an integer after `@{name} =`, found {}", self.describe(&v));
@@ -468,6 +473,13 @@ impl<'m> Parser<'_, 'm> {
             let open = self.peek();
             if !open.is(P::LBracket) {
                 return Ok(ty);
+            }
+            // `T[]`: a run-time-sized array (the last member of an `@ssbo`).
+            if self.toks.get(self.pos + 1).is_some_and(|t| t.is(P::RBracket)) {
+                self.bump();
+                let close = self.bump();
+                ty = TypeExpr { span: ty.span.to(close.span), kind: TypeExprKind::RuntimeArray(Box::new(ty)) };
+                continue;
             }
             self.enter(open)?;
             let (size, close) = self.bracketed(open, P::RBracket)?;

@@ -15,6 +15,7 @@
 //! held by an [`objects::Obj`] and deleted on every path.
 
 mod by_name;
+mod compute;
 mod frame;
 pub mod objects;
 
@@ -147,6 +148,21 @@ impl GlExecutor {
                 ],
             ),
             Consumer::Gles300 => (egl::OPENGL_ES_API, egl::OPENGL_ES3_BIT, vec![egl::CONTEXT_MAJOR_VERSION, 3, egl::CONTEXT_MINOR_VERSION, 0, egl::NONE]),
+            // Compute, storage buffers and images (`compute.rs`).
+            Consumer::Gl430 => (
+                egl::OPENGL_API,
+                egl::OPENGL_BIT,
+                vec![
+                    egl::CONTEXT_MAJOR_VERSION,
+                    4,
+                    egl::CONTEXT_MINOR_VERSION,
+                    3,
+                    egl::CONTEXT_OPENGL_PROFILE_MASK,
+                    egl::CONTEXT_OPENGL_CORE_PROFILE_BIT,
+                    egl::NONE,
+                ],
+            ),
+            Consumer::Gles310 => (egl::OPENGL_ES_API, egl::OPENGL_ES3_BIT, vec![egl::CONTEXT_MAJOR_VERSION, 3, egl::CONTEXT_MINOR_VERSION, 1, egl::NONE]),
             other => return Err(ExecError::Unsupported(format!("{} is not a GL context consumer", other.name()))),
         };
         let unavailable = |why: String| ExecError::Unavailable { consumer, why, install: INSTALL_HINT.into() };
@@ -186,10 +202,11 @@ impl GlExecutor {
     }
 
     fn target(&self) -> Target {
-        if self.consumer == Consumer::Gl330 {
-            Target::Glsl330
-        } else {
-            Target::Gles300
+        match self.consumer {
+            Consumer::Gl330 => Target::Glsl330,
+            Consumer::Gl430 => Target::Glsl430,
+            Consumer::Gles310 => Target::Gles310,
+            _ => Target::Gles300,
         }
     }
 

@@ -3,6 +3,7 @@
 //! and reads the target back. Bind groups and buffers come from
 //! [`bind::wgpu`]; pipelines are made once per pass shape and kept.
 
+mod compute;
 mod frame;
 
 use std::collections::{BTreeMap, HashMap};
@@ -42,6 +43,9 @@ struct MeshBuffers {
     index_count: u32,
 }
 
+/// A compute pipeline and its bind group layouts, group by group.
+type ComputePipeline = (wgpu::ComputePipeline, Vec<wgpu::BindGroupLayout>);
+
 /// A wgpu device and queue, with the meshes and samplers plans use.
 /// Create once, run many.
 pub struct WgpuExecutor {
@@ -54,6 +58,11 @@ pub struct WgpuExecutor {
     meshes: Mutex<Vec<(usize, Arc<MeshBuffers>)>>,
     samplers: Mutex<HashMap<Sampling, Arc<wgpu::Sampler>>>,
     uncaptured: Arc<Mutex<Vec<String>>>,
+    /// Compute programs' modules, by a hash of their code and entry point,
+    /// kept for the device's life (`compute.rs`).
+    compute_modules: Mutex<HashMap<(u64, String), Arc<wgpu::ShaderModule>>>,
+    /// Their pipelines and group layouts, by module, entry and layout.
+    compute_pipelines: Mutex<HashMap<String, Arc<ComputePipeline>>>,
 }
 
 /// The shape of a pass's pipeline: everything a pipeline depends on.
@@ -136,7 +145,7 @@ impl WgpuExecutor {
         device.on_uncaptured_error(Arc::new(move |e: wgpu::Error| {
             sink.lock().unwrap_or_else(|p| p.into_inner()).push(e.to_string());
         }));
-        Ok(WgpuExecutor { consumer, info, device, queue, meshes: Mutex::default(), samplers: Mutex::default(), uncaptured })
+        Ok(WgpuExecutor { consumer, info, device, queue, meshes: Mutex::default(), samplers: Mutex::default(), uncaptured, compute_modules: Mutex::default(), compute_pipelines: Mutex::default() })
     }
 
     /// The adapter's name and driver, e.g. `llvmpipe (LLVM 15.0.6, 256 bits) (lavapipe)`.

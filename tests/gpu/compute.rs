@@ -1,0 +1,267 @@
+//! DSL compute programs run on every consumer that has compute and
+//! compared with the same computation on the CPU: an image fill, a prefix
+//! sum in workgroup memory behind barriers, and an atomic histogram
+//! (`shaders/compute/`). WGSL and SPIR-V (unchanged) on wgpu/Vulkan, GLSL
+//! 430 on an OpenGL 4.3 core context, GLSL ES 3.10 on an OpenGL ES 3.1
+//! context (both EGL surfaceless: llvmpipe without a GPU). Integers must
+//! match exactly; the image's unorm bytes within 1 (the GPU's float to
+//! unorm rounding may differ from the CPU's by one step).
+
+use std::path::Path;
+
+use umbrac::render::consumers;
+use umbrac::render::plan::compute::{BufferInput, ComputePlan, ImageInput};
+use umbrac::render::program::ShaderSet;
+use umbrac::render::{Consumer, ExecError};
+use umbrac::Target;
+
+use crate::support;
+
+fn compiled(name: &str) -> umbrac::Compiled {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("shaders/compute").join(format!("{name}.das"));
+    let c = umbrac::compile_file(&path, &umbrac::Options::default());
+    assert!(!c.has_errors(), "{name} does not compile:\n{}", c.render_diagnostics());
+    c.result.expect("compiled")
+}
+
+/// Runs `plan` on every compute consumer that is installed: each one's
+/// name and read-backs.
+fn run_everywhere(name: &str, plan: &ComputePlan) -> Vec<(Consumer, umbrac::render::exec::ComputeReadback)> {
+    let c = compiled(name);
+    let mut out = Vec::new();
+    for consumer in Consumer::COMPUTE {
+        let target = consumer.target().expect("a compute consumer has a target");
+        let set = ShaderSet::from_compiled(name, &c, target).unwrap_or_else(|e| panic!("{e}"));
+        // Open the devices the way the other GPU tests do (skip if missing).
+        let ok = match consumer {
+            Consumer::VulkanWgsl | Consumer::VulkanSpirv => support::gpu::vulkan().is_some(),
+            _ => support::gpu::gl(consumer).is_some(),
+        };
+        if !ok {
+            continue;
+        }
+        if consumer == Consumer::VulkanSpirv && !support::gpu::vulkan().is_some_and(|v| v.supports_passthrough()) {
+            support::skip(format!("{name}: the Vulkan device takes no SPIR-V unchanged"));
+            continue;
+        }
+        match consumers::run_compute(consumer, &set, plan) {
+            Ok((r, _device)) => out.push((consumer, r)),
+            Err(e @ ExecError::Unavailable { .. }) => support::skip(format!("{name} on {}: {e}", consumer.name())),
+            // lavapipe and storage images of SPIR-V passed through: refused
+            // by the executor, which says why (`exec/wgpu/compute.rs`).
+            Err(ExecError::Unsupported(e)) if consumer == Consumer::VulkanSpirv && e.contains("lavapipe") => eprintln!("{name} on {}: not run: {e}", consumer.name()),
+            Err(e) => panic!("{name} on {} ({}): {e}", consumer.name(), target.name()),
+        }
+    }
+    // Nothing ran only when nothing is installed (skipped above).
+    out
+}
+
+fn words(bytes: &[u8]) -> Vec<u32> {
+    bytes.chunks_exact(4).map(|c| u32::from_le_bytes([c[0], c[1], c[2], c[3]])).collect()
+}
+
+fn bytes(words: &[u32]) -> Vec<u8> {
+    words.iter().flat_map(|w| w.to_le_bytes()).collect()
+}
+
+/// A reproducible sequence of `n` values below `below` (an LCG).
+fn values(n: usize, seed: u32, below: u32) -> Vec<u32> {
+    let mut s = seed;
+    (0..n)
+        .map(|_| {
+            s = s.wrapping_mul(1_664_525).wrapping_add(1_013_904_223);
+            (s >> 8) % below
+        })
+        .collect()
+}
+
+#[test]
+fn image_fill_matches_the_cpu() {
+    // Not a multiple of the 8x8 workgroup: the edge invocations write nothing.
+    let (w, h) = (37u32, 23u32);
+    let plan = ComputePlan {
+        name: "image fill".into(),
+        entry: "fill_cs".into(),
+        workgroups: [w.div_ceil(8), h.div_ceil(8), 1],
+        buffers: vec![],
+        images: vec![ImageInput { name: "out_image".into(), width: w, height: h, layers: 1, texels: None }],
+        readback: vec!["out_image".into()],
+    };
+    let ran = run_everywhere("image_fill", &plan);
+    let unorm = |v: f32| (v.clamp(0.0, 1.0) * 255.0).round() as i32;
+    for (consumer, r) in &ran {
+        let got = &r.resources["out_image"];
+        assert_eq!(got.len(), (w * h * 4) as usize, "{}", consumer.name());
+        let mut worst = 0;
+        let unwritten = got.chunks(4).filter(|t| t[3] == 0).count();
+        assert_eq!(unwritten, 0, "{}: {unwritten} of {} texels were not written", consumer.name(), w * h);
+        for y in 0..h {
+            for x in 0..w {
+                let uv = [(x as f32 + 0.5) / w as f32, (y as f32 + 0.5) / h as f32];
+                let checker = ((x / 4 + y / 4) % 2) as f32;
+                let want = [unorm(uv[0]), unorm(uv[1]), unorm(checker), 255];
+                let at = ((y * w + x) * 4) as usize;
+                for c in 0..4 {
+                    let d = (got[at + c] as i32 - want[c]).abs();
+                    worst = worst.max(d);
+                    assert!(d <= 1, "{}: texel ({x}, {y}) channel {c} is {}, the CPU computes {}", consumer.name(), got[at + c], want[c]);
+                }
+            }
+        }
+        eprintln!("image fill on {}: largest difference {worst}/255", consumer.name());
+    }
+}
+
+#[test]
+fn prefix_sum_matches_the_cpu() {
+    const BLOCK: usize = 128;
+    let n = 1000usize;
+    let input = values(n, 7, 1000);
+    let blocks = n.div_ceil(BLOCK);
+    let with_count = |data: &[u32]| -> Vec<u8> { bytes(&[&[n as u32][..], data].concat()) };
+    let plan = ComputePlan {
+        name: "prefix sum".into(),
+        entry: "prefix_sum_cs".into(),
+        workgroups: [blocks as u32, 1, 1],
+        buffers: vec![
+            BufferInput { name: "input".into(), bytes: with_count(&input) },
+            BufferInput { name: "output".into(), bytes: with_count(&vec![0; n]) },
+            BufferInput { name: "totals".into(), bytes: bytes(&vec![0; blocks]) },
+        ],
+        images: vec![],
+        readback: vec!["output".into(), "totals".into()],
+    };
+    // Inclusive scans of each block, and each block's sum.
+    let mut want = vec![0u32; n];
+    let mut want_totals = vec![0u32; blocks];
+    for (b, total) in want_totals.iter_mut().enumerate() {
+        let mut sum = 0u32;
+        for (w, v) in want.iter_mut().zip(&input).skip(b * BLOCK).take(BLOCK) {
+            sum += v;
+            *w = sum;
+        }
+        *total = sum;
+    }
+    let ran = run_everywhere("prefix_sum", &plan);
+    for (consumer, r) in &ran {
+        let out = words(&r.resources["output"]);
+        assert_eq!(out[0], n as u32, "{}: the count is untouched", consumer.name());
+        assert_eq!(&out[1..], &want[..], "{}: the prefix sums differ from the CPU's", consumer.name());
+        assert_eq!(words(&r.resources["totals"]), want_totals, "{}: the block totals differ from the CPU's", consumer.name());
+    }
+}
+
+#[test]
+fn histogram_matches_the_cpu() {
+    const BINS: usize = 64;
+    let n = 5000usize;
+    let samples = values(n, 42, 1 << 20);
+    let plan = ComputePlan {
+        name: "histogram".into(),
+        entry: "histogram_cs".into(),
+        workgroups: [n.div_ceil(64) as u32, 1, 1],
+        buffers: vec![
+            BufferInput { name: "samples".into(), bytes: bytes(&[&[n as u32][..], &samples].concat()) },
+            BufferInput { name: "histogram".into(), bytes: bytes(&vec![0; 2 + BINS]) },
+        ],
+        images: vec![],
+        readback: vec!["histogram".into()],
+    };
+    let mut bins = vec![0u32; BINS];
+    for v in &samples {
+        bins[*v as usize % BINS] += 1;
+    }
+    let largest = *samples.iter().max().unwrap();
+    let ran = run_everywhere("histogram", &plan);
+    for (consumer, r) in &ran {
+        let h = words(&r.resources["histogram"]);
+        assert_eq!(h[0], n as u32, "{}: total", consumer.name());
+        assert_eq!(h[1], largest, "{}: largest sample", consumer.name());
+        assert_eq!(&h[2..], &bins[..], "{}: the bins differ from the CPU's", consumer.name());
+    }
+}
+
+#[test]
+fn a_plan_that_does_not_fit_names_what_is_wrong() {
+    let c = compiled("histogram");
+    let set = ShaderSet::from_compiled("histogram", &c, Target::Wgsl).unwrap();
+    let plan = ComputePlan {
+        name: "histogram".into(),
+        entry: "histogram_cs".into(),
+        workgroups: [1, 1, 1],
+        buffers: vec![BufferInput { name: "samples".into(), bytes: vec![0; 6] }],
+        images: vec![],
+        readback: vec![],
+    };
+    let e = umbrac::render::bind::compute::fit(&set.label, set.manifest().unwrap(), &plan).unwrap_err().to_string();
+    assert!(e.contains("storage buffer `samples` is given 6 bytes; its layout takes 4 bytes and a whole number (at least one) of 4-byte elements"), "{e}");
+    assert!(e.contains("storage buffer `histogram` is given no contents by the plan"), "{e}");
+    // No compute on WebGL2 or GL 3.3: said so, by name.
+    let e = consumers::run_compute(Consumer::WebGl2, &set, &plan).unwrap_err().to_string();
+    assert!(e.contains("webgl2 runs no compute programs"), "{e}");
+}
+
+
+/// The light-space bounds of what a camera sees, reduced from its depth
+/// buffer (`shaders/compute/depth_bounds.das`, the building block of
+/// sample-distribution shadow maps), against the CPU: the count exactly,
+/// the bounds within 1e-4 of the box's size (the GPU's matrix products
+/// round differently from the CPU's).
+#[test]
+fn depth_bounds_match_the_cpu() {
+    use glam::camera::rh::{proj::opengl, view::look_at_mat4};
+    use glam::{Vec3, Vec4};
+    let (w, h) = (61u32, 47u32);
+    let proj = opengl::perspective(50f32.to_radians(), w as f32 / h as f32, 0.5, 30.0);
+    let view = look_at_mat4(Vec3::new(3.0, 4.0, 6.0), Vec3::ZERO, Vec3::Y);
+    let inv_view_proj = (proj * view).inverse();
+    let light_view = look_at_mat4(Vec3::new(-4.0, 8.0, 2.0), Vec3::ZERO, Vec3::Y);
+    // A depth buffer with a background (1.0) corner and a slope elsewhere.
+    let depth: Vec<f32> = (0..w * h)
+        .map(|i| {
+            let (x, y) = (i % w, i / w);
+            if x + y < 12 { 1.0 } else { 0.90 + 0.09 * (x as f32 / w as f32) * (y as f32 / h as f32) }
+        })
+        .collect();
+    let unkey = |k: i32| -> f32 { f32::from_bits((if k >= 0 { k } else { k ^ 0x7FFF_FFFF }) as u32) };
+    // The CPU's reduction, as the program computes it.
+    let (mut lo, mut hi, mut count) = ([f32::MAX; 3], [f32::MIN; 3], 0u32);
+    for (i, d) in depth.iter().enumerate() {
+        if *d >= 1.0 {
+            continue;
+        }
+        let (x, y) = (i as u32 % w, i as u32 / w);
+        let uv = [(x as f32 + 0.5) / w as f32, (y as f32 + 0.5) / h as f32];
+        let world = inv_view_proj * Vec4::new(uv[0] * 2.0 - 1.0, uv[1] * 2.0 - 1.0, d * 2.0 - 1.0, 1.0);
+        let light = light_view * (world.truncate() / world.w).extend(1.0);
+        for c in 0..3 {
+            lo[c] = lo[c].min(light[c]);
+            hi[c] = hi[c].max(light[c]);
+        }
+        count += 1;
+    }
+    let mut view_bytes: Vec<u8> = [inv_view_proj.to_cols_array(), light_view.to_cols_array()].concat().iter().flat_map(|f| f.to_le_bytes()).collect();
+    view_bytes.extend([w as i32, h as i32].iter().flat_map(|v| v.to_le_bytes()));
+    view_bytes.resize(144, 0);
+    let start: Vec<u8> = [i32::MAX, i32::MAX, i32::MAX, i32::MIN, i32::MIN, i32::MIN, 0].iter().flat_map(|v| v.to_le_bytes()).collect();
+    let plan = ComputePlan {
+        name: "depth bounds".into(),
+        entry: "depth_bounds_cs".into(),
+        workgroups: [w.div_ceil(8), h.div_ceil(8), 1],
+        buffers: vec![BufferInput { name: "view".into(), bytes: view_bytes }, BufferInput { name: "bounds".into(), bytes: start }],
+        images: vec![ImageInput { name: "depth".into(), width: w, height: h, layers: 1, texels: Some(depth.iter().flat_map(|d| d.to_le_bytes()).collect()) }],
+        readback: vec!["bounds".into()],
+    };
+    let ran = run_everywhere("depth_bounds", &plan);
+    for (consumer, r) in &ran {
+        let b = words(&r.resources["bounds"]);
+        assert_eq!(b[6], count, "{}: pixels counted", consumer.name());
+        for c in 0..3 {
+            let (glo, ghi) = (unkey(b[c] as i32), unkey(b[3 + c] as i32));
+            let tol = 1e-4 * (hi[c] - lo[c]).abs().max(1.0);
+            assert!((glo - lo[c]).abs() <= tol && (ghi - hi[c]).abs() <= tol, "{}: axis {c}: [{glo}, {ghi}], the CPU computes [{}, {}]", consumer.name(), lo[c], hi[c]);
+        }
+        eprintln!("depth bounds on {}: lo {:?} hi {:?} over {count} pixels", consumer.name(), (0..3).map(|c| unkey(b[c] as i32)).collect::<Vec<_>>(), (0..3).map(|c| unkey(b[3 + c] as i32)).collect::<Vec<_>>());
+    }
+}
