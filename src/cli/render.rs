@@ -82,8 +82,10 @@ pub struct RenderArgs {
     /// Shadow filter (a .das program is compiled with the matching -D PCF_TAPS_RADIUS).
     #[arg(long, value_parser = choice(&Filter::ALL, Filter::name))]
     pub filter: Option<Filter>,
-    /// How the light's box is fitted: the tutorial's fixed +-4, or tight
-    /// around the casters and the visible receivers.
+    /// How the light's box is fitted: the tutorial's fixed +-4, tight
+    /// around the casters and the visible receivers (clipped on the CPU),
+    /// or visible: fitted each frame to the receivers a compute pass finds
+    /// in the camera's depth buffer (Vulkan only).
     #[arg(long, value_parser = choice(&Fit::ALL, Fit::name))]
     pub fit: Option<Fit>,
     /// Shadow map depth format.
