@@ -83,7 +83,7 @@ pub enum Fit {
     /// DSL compute program `shaders/compute/depth_bounds.das` reducing it
     /// to light-space bounds ([`crate::render::visible`]), then the rule of
     /// [`Fit::Tight`] with those bounds as the receivers. Needs a consumer
-    /// that runs compute; a frame without measured bounds (the CPU
+    /// that runs compute and frames (Vulkan, GL 4.3); a frame without measured bounds (the CPU
     /// reference, nothing visible) gets the fixed box.
     Visible,
 }

@@ -10,11 +10,12 @@
 //! the host, which makes the projection: the plans stay what they are
 //! (a frame plan, a compute plan), at the price of two read-backs a frame
 //! (docs/performance.md measures it). Runs where compute and frames run on
-//! one device: wgpu on Vulkan, from the WGSL or the SPIR-V.
+//! one device ([`ComputeExecutor`]): wgpu on Vulkan, from the WGSL or the
+//! SPIR-V, and an OpenGL 4.3 core context, from the GLSL 430.
 
 use glam::{Mat4, Vec3};
 
-use super::exec::wgpu::{WgpuExecutor, WgpuProgram};
+use super::exec::wgpu::WgpuExecutor;
 use super::exec::{ComputeReadback, ExecError, Executor, Readback};
 use super::plan::compute::{BufferInput, ComputePlan, ImageInput};
 use super::plan::tutorial;
@@ -31,19 +32,38 @@ const ENTRY: &str = "depth_bounds_cs";
 /// The program's `local_size_x` and `local_size_y`.
 const GROUP: u32 = 8;
 
+/// An executor that runs frames and compute plans on one device.
+pub trait ComputeExecutor: Executor {
+    fn dispatch(&self, set: &ShaderSet, plan: &ComputePlan) -> Result<ComputeReadback, ExecError>;
+}
+
+impl ComputeExecutor for WgpuExecutor {
+    fn dispatch(&self, set: &ShaderSet, plan: &ComputePlan) -> Result<ComputeReadback, ExecError> {
+        self.run_compute(set, plan)
+    }
+}
+
+#[cfg(feature = "gl")]
+impl ComputeExecutor for super::exec::gl::GlExecutor {
+    fn dispatch(&self, set: &ShaderSet, plan: &ComputePlan) -> Result<ComputeReadback, ExecError> {
+        self.run_compute(set, plan)
+    }
+}
+
 /// Whether `consumer` can run `--fit visible`, and if not, why not.
 pub fn check_consumer(consumer: Consumer) -> Result<(), String> {
     match consumer {
-        Consumer::VulkanWgsl | Consumer::VulkanSpirv => Ok(()),
+        Consumer::VulkanWgsl | Consumer::VulkanSpirv | Consumer::Gl430 => Ok(()),
+        Consumer::Gles310 => Err("--fit visible reads the camera's depth buffer back, which OpenGL ES cannot (glReadPixels of DEPTH_COMPONENT): gles310 does not run it; use --backend gl430 or vulkan".into()),
         other => Err(format!(
             "--fit visible measures the visible receivers with a compute pass, and {} runs no compute programs with its frames \
-             (WebGL2, OpenGL 3.3 / ES 3.0 and wgpu's GL backend have no compute); use --backend vulkan (--via wgsl or spirv)",
+             (WebGL2, OpenGL 3.3 / ES 3.0 and wgpu's GL backend have no compute); use --backend vulkan (--via wgsl or spirv) or gl430",
             other.name()
         )),
     }
 }
 
-/// The reduction compiled for `target` (WGSL or SPIR-V).
+/// The reduction compiled for `target` (WGSL, SPIR-V or GLSL 430).
 pub fn program(target: Target) -> Result<ShaderSet, String> {
     let opts = crate::Options { targets: vec![target], ..Default::default() };
     let c = crate::compile_source(PROGRAM_NAME, PROGRAM, &opts);
@@ -96,17 +116,17 @@ pub fn bounds_of(r: &ComputeReadback) -> Result<Option<(Vec3, Vec3)>, ExecError>
 /// Measures what `params`' frame needs: the pre-pass with the scene
 /// program `scene`, the reduction with `reduction` ([`program`]); `params`
 /// with its [`FrameParams::visible_bounds`] set.
-pub fn measure(e: &WgpuExecutor, scene: &WgpuProgram, reduction: &ShaderSet, params: &FrameParams) -> Result<FrameParams, ExecError> {
+pub fn measure<E: ComputeExecutor>(e: &E, scene: &E::Prepared, reduction: &ShaderSet, params: &FrameParams) -> Result<FrameParams, ExecError> {
     let depths = match e.run(scene, &tutorial::camera_depth_plan(params))? {
         Readback::Depth { depths, .. } => depths,
         _ => return Err(ExecError::Program("the camera depth pre-pass returned no depths".into())),
     };
-    let bounds = bounds_of(&e.run_compute(reduction, &compute_plan(params, &depths))?)?;
+    let bounds = bounds_of(&e.dispatch(reduction, &compute_plan(params, &depths))?)?;
     Ok(FrameParams { visible_bounds: bounds, ..*params })
 }
 
 /// One `--fit visible` frame: [`measure`], then the frame.
-pub fn render(e: &WgpuExecutor, scene: &WgpuProgram, reduction: &ShaderSet, params: &FrameParams) -> Result<Readback, ExecError> {
+pub fn render<E: ComputeExecutor>(e: &E, scene: &E::Prepared, reduction: &ShaderSet, params: &FrameParams) -> Result<Readback, ExecError> {
     let measured = measure(e, scene, reduction, params)?;
     e.run(scene, &tutorial::plan(&measured))
 }

@@ -1,7 +1,7 @@
 //! `umbrac render --fit visible`: the light box fitted each frame to the
 //! receivers a DSL compute pass finds in the camera's depth buffer
 //! (`umbrac::render::visible`), on wgpu/Vulkan from the WGSL and from the
-//! SPIR-V. The measured bounds must lie inside what the CPU knows the
+//! SPIR-V, and on an OpenGL 4.3 core context from the GLSL 430. The measured bounds must lie inside what the CPU knows the
 //! camera can see, the box must be tighter than the tutorial's +-4, and
 //! the shadow no worse against the CPU ray-cast reference than the fixed
 //! box's.
@@ -99,6 +99,34 @@ fn visible_fit_from_spirv_matches_wgsl() {
     assert!((wlo - slo).abs().max_element() <= tol && (whi - shi).abs().max_element() <= tol, "WGSL {wlo}..{whi}, SPIR-V {slo}..{shi}");
 }
 
+/// On an OpenGL 4.3 core context, from the GLSL 430: the bounds the WGSL
+/// measures on Vulkan, and the shadow no worse than the fixed box's (a
+/// sampler without clamp-to-border, as GL 4.3 frames had before, shadows
+/// everything outside the box and fails this).
+#[cfg(feature = "gl")]
+#[test]
+fn visible_fit_on_gl430_matches_vulkan() {
+    use umbrac::render::Executor;
+    let (Some(vk), Some(gl)) = (support::gpu::vulkan(), support::gpu::gl(Consumer::Gl430)) else { return };
+    let p = params(2.0, Fit::Visible);
+    let (wlo, whi) = visible::measure(vk, &scene(vk, Target::Wgsl), &visible::program(Target::Wgsl).unwrap(), &p).unwrap().visible_bounds.unwrap();
+    let opts = umbrac::Options { targets: vec![Target::Glsl430], ..Default::default() };
+    let c = umbrac::compile_source("shaders/shadow.das", SCENE, &opts);
+    let set = ShaderSet::from_compiled("shadow", c.result.as_ref().unwrap(), Target::Glsl430).unwrap();
+    let prepared = gl.prepare_scene(&set).unwrap();
+    let reduction = visible::program(Target::Glsl430).unwrap();
+    let (glo, ghi) = visible::measure(&gl, &prepared, &reduction, &p).unwrap().visible_bounds.unwrap();
+    let tol = (whi - wlo).max_element() * 1e-3;
+    assert!((wlo - glo).abs().max_element() <= tol && (whi - ghi).abs().max_element() <= tol, "Vulkan {wlo}..{whi}, GL 4.3 {glo}..{ghi}");
+    let fixed = params(2.0, Fit::Fixed);
+    let lit = gl.run(&prepared, &umbrac::render::plan::tutorial::plan(&fixed.with_view(View::Lit))).unwrap().into_image();
+    let fixed_img = gl.run(&prepared, &umbrac::render::plan::tutorial::plan(&fixed)).unwrap().into_image();
+    let vis_img = visible::render(&gl, &prepared, &reduction, &p).unwrap().into_image();
+    let (fe, ve) = (misclassified(&fixed_img, &lit, &fixed), misclassified(&vis_img, &lit, &p));
+    eprintln!("gl430 t = 2: misclassified pixels of {W}x{H}: fixed {fe}, visible {ve}");
+    assert!(ve <= fe, "the visible box misclassifies {ve} pixels on GL 4.3, the fixed one {fe}");
+}
+
 /// Consumers without compute refuse `--fit visible` by name.
 #[test]
 fn visible_fit_names_consumers_without_compute() {
@@ -114,4 +142,7 @@ fn visible_fit_names_consumers_without_compute() {
         assert!(!opts.out.exists(), "nothing written");
     }
     assert!(visible::check_consumer(Consumer::VulkanWgsl).is_ok() && visible::check_consumer(Consumer::VulkanSpirv).is_ok());
+    assert!(visible::check_consumer(Consumer::Gl430).is_ok());
+    let e = visible::check_consumer(Consumer::Gles310).unwrap_err();
+    assert!(e.contains("gles310 does not run it"), "{e}");
 }

@@ -21,7 +21,6 @@ use super::exec::{ExecError, Executor};
 use super::plan::tutorial;
 use super::reference;
 use super::scene::{FrameParams, View, DEFAULT_SHADOW_SIZE};
-use super::exec::wgpu::WgpuExecutor;
 use super::setup::{Fit, Setup};
 use super::visible;
 use frames::{frame_times, write_frames};
@@ -133,6 +132,16 @@ pub fn run(opts: &RenderOptions, progress: &mut dyn Progress) -> Result<(), Stri
     let defines = params.setup.defines(params.shadow_size);
     let set = load_program_with(opts.file.as_deref(), opts.reflection.as_deref(), opts.consumer, defines)?;
     match opts.consumer {
+        #[cfg(feature = "gl")]
+        Consumer::Gl430 => {
+            let _ = super::consumers::wgpu_gl();
+            let gl = super::exec::gl::GlExecutor::new(opts.consumer).map_err(|e| e.to_string())?;
+            if params.setup.shadow.fit == Fit::Visible {
+                draw_visible(&gl, &set, opts, params, progress)
+            } else {
+                draw(&gl, &set, opts, params, progress)
+            }
+        }
         Consumer::VulkanWgsl | Consumer::VulkanSpirv if params.setup.shadow.fit == Fit::Visible => {
             draw_visible(super::consumers::vulkan().map_err(|e| e.to_string())?, &set, opts, params, progress)
         }
@@ -158,7 +167,7 @@ fn draw<E: Executor>(e: &E, set: &super::ShaderSet, opts: &RenderOptions, params
 
 /// [`draw`] for `--fit visible`: each frame measured first
 /// ([`visible::render`]).
-fn draw_visible(e: &WgpuExecutor, set: &super::ShaderSet, opts: &RenderOptions, params: FrameParams, progress: &mut dyn Progress) -> Result<(), String> {
+fn draw_visible<E: visible::ComputeExecutor>(e: &E, set: &super::ShaderSet, opts: &RenderOptions, params: FrameParams, progress: &mut dyn Progress) -> Result<(), String> {
     let prepared = e.prepare(set, &tutorial::plan(&params)).map_err(|e| e.to_string())?;
     let reduction = visible::program(set.target)?;
     eprintln!(
