@@ -143,6 +143,9 @@ fn visible_fit_names_consumers_without_compute() {
     }
     assert!(visible::check_consumer(Consumer::VulkanWgsl).is_ok() && visible::check_consumer(Consumer::VulkanSpirv).is_ok());
     assert!(visible::check_consumer(Consumer::Gl430).is_ok());
+    let opts = umbrac::render::command::RenderOptions { scene: Some("spot".into()), setup: params(0.0, Fit::Visible).setup, ..Default::default() };
+    let e = umbrac::render::command::run(&opts, &mut umbrac::render::command::Quiet).unwrap_err();
+    assert!(e.contains("--fit visible fits the tutorial scene's sun box"), "{e}");
     let e = visible::check_consumer(Consumer::Gles310).unwrap_err();
     assert!(e.contains("gles310 does not run it"), "{e}");
 }

@@ -102,6 +102,9 @@ impl Progress for Quiet {}
 /// Runs `umbrac render` once; the error is one message for stderr.
 pub fn run(opts: &RenderOptions, progress: &mut dyn Progress) -> Result<(), String> {
     if opts.scene.is_some() {
+        if opts.setup.shadow.fit == Fit::Visible {
+            return Err("--fit visible fits the tutorial scene's sun box; the technique scenes (--scene) make their own light boxes".into());
+        }
         return techniques::run(opts);
     }
     let (width, height) = opts.size;
