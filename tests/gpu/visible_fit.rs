@@ -122,6 +122,9 @@ fn visible_fit_on_gl430_matches_vulkan() {
     let lit = gl.run(&prepared, &umbrac::render::plan::tutorial::plan(&fixed.with_view(View::Lit))).unwrap().into_image();
     let fixed_img = gl.run(&prepared, &umbrac::render::plan::tutorial::plan(&fixed)).unwrap().into_image();
     let vis_img = visible::render(&gl, &prepared, &reduction, &p).unwrap().into_image();
+    // `consumers::run` draws the scene's plans on GL 4.3 the same way.
+    let (again, _) = umbrac::render::consumers::run(Consumer::Gl430, &set, &umbrac::render::plan::tutorial::plan(&fixed)).unwrap();
+    assert!(again.into_image() == fixed_img, "consumers::run on gl430 draws another picture");
     let (fe, ve) = (misclassified(&fixed_img, &lit, &fixed), misclassified(&vis_img, &lit, &p));
     eprintln!("gl430 t = 2: misclassified pixels of {W}x{H}: fixed {fe}, visible {ve}");
     assert!(ve <= fe, "the visible box misclassifies {ve} pixels on GL 4.3, the fixed one {fe}");
