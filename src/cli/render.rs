@@ -14,7 +14,7 @@ fn choice<T: Copy + Send + Sync + 'static>(all: &'static [T], name: fn(T) -> &'s
 }
 
 /// `--backend`: where the frame is drawn.
-const BACKENDS: [&str; 5] = ["vulkan", "gl", "gl330", "gles300", "webgl2"];
+const BACKENDS: [&str; 6] = ["vulkan", "gl", "gl330", "gles300", "gl430", "webgl2"];
 /// `--via`: what wgpu is given.
 const VIAS: [&str; 2] = ["wgsl", "spirv"];
 
@@ -51,8 +51,9 @@ pub struct RenderArgs {
     pub via: String,
     /// Where it is drawn: wgpu on Vulkan or on its GL backend; the GLSL 330
     /// output on an OpenGL 3.3 core context or the ES 3.00 output on an
-    /// OpenGL ES 3.0 context (EGL surfaceless, no wgpu); the ES 3.00 output
-    /// in WebGL2 (headless chromium).
+    /// OpenGL ES 3.0 context (EGL surfaceless, no wgpu); the GLSL 430 output
+    /// on an OpenGL 4.3 core context (the one GL backend with compute, for
+    /// --fit visible); the ES 3.00 output in WebGL2 (headless chromium).
     #[arg(long, default_value = "vulkan", value_parser = PossibleValuesParser::new(BACKENDS))]
     pub backend: String,
     /// Side of the square shadow map.
@@ -82,8 +83,10 @@ pub struct RenderArgs {
     /// Shadow filter (a .das program is compiled with the matching -D PCF_TAPS_RADIUS).
     #[arg(long, value_parser = choice(&Filter::ALL, Filter::name))]
     pub filter: Option<Filter>,
-    /// How the light's box is fitted: the tutorial's fixed +-4, or tight
-    /// around the casters and the visible receivers.
+    /// How the light's box is fitted: the tutorial's fixed +-4, tight
+    /// around the casters and the visible receivers (clipped on the CPU),
+    /// or visible: fitted each frame to the receivers a compute pass finds
+    /// in the camera's depth buffer (Vulkan, or --backend gl430).
     #[arg(long, value_parser = choice(&Fit::ALL, Fit::name))]
     pub fit: Option<Fit>,
     /// Shadow map depth format.
@@ -133,6 +136,7 @@ fn consumer(backend: &str, via: &str) -> Result<Consumer, String> {
         (other, "spirv") => return Err(format!("--via picks what wgpu gets; --backend {other} runs the compiler's GLSL")),
         ("gl330", _) => Consumer::Gl330,
         ("gles300", _) => Consumer::Gles300,
+        ("gl430", _) => Consumer::Gl430,
         ("webgl2", _) => Consumer::WebGl2,
         (other, _) => return Err(format!("unknown --backend {other}")),
     })
@@ -271,6 +275,8 @@ mod tests {
         assert!(parse(&["--view", "sideways"]).is_err());
         assert_eq!(parse(&["--backend", "gl"]).unwrap().consumer, Consumer::WgpuGl);
         assert_eq!(parse(&["--backend", "gles300"]).unwrap().consumer, Consumer::Gles300);
+        assert_eq!(parse(&["--backend", "gl430", "--fit", "visible"]).unwrap().consumer, Consumer::Gl430);
+        assert_eq!(parse(&["--fit", "visible"]).unwrap().setup.shadow.fit, Fit::Visible);
         let err = parse(&["--backend", "gl", "--via", "spirv"]).unwrap_err();
         assert!(err.contains("only the Vulkan backend"), "{err}");
         assert!(parse(&["--backend", "gl330", "--via", "spirv"]).is_err());

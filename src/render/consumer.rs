@@ -23,7 +23,9 @@ pub enum Consumer {
     /// The CPU ray-cast reference (exact shadows; the tutorial and
     /// technique scenes only).
     Reference,
-    /// OpenGL 4.3 core, the `.430.*` files: compute plans only.
+    /// OpenGL 4.3 core, the `.430.*` files: compute plans, and the shadow
+    /// scene's frames through `umbrac render --backend gl430` (for
+    /// `--fit visible`; not one of [`Consumer::ALL`]'s side-by-side set).
     Gl430,
     /// OpenGL ES 3.1, the `.310es.*` files: compute plans only.
     Gles310,

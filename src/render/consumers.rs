@@ -122,10 +122,10 @@ pub fn run(consumer: Consumer, set: &ShaderSet, plan: &FramePlan) -> Result<(Rea
     match consumer {
         Consumer::VulkanWgsl | Consumer::VulkanSpirv => once(vulkan()?, set, plan),
         Consumer::WgpuGl => once(wgpu_gl()?, set, plan),
-        Consumer::Gl330 | Consumer::Gles300 => run_gl(consumer, set, plan),
+        Consumer::Gl330 | Consumer::Gles300 | Consumer::Gl430 => run_gl(consumer, set, plan),
         Consumer::WebGl2 => once(&WebGl::find()?, set, plan),
         Consumer::Reference => Err(ExecError::Unsupported("the CPU reference draws its scenes itself, not plans".into())),
-        Consumer::Gl430 | Consumer::Gles310 => Err(ExecError::Unsupported(format!("{} runs compute plans only (`run_compute`)", consumer.name()))),
+        Consumer::Gles310 => Err(ExecError::Unsupported(format!("{} runs compute plans only (`run_compute`)", consumer.name()))),
     }
 }
 

@@ -18,6 +18,8 @@
 //! - [`reference`]: the CPU ray-cast reference with exact sun visibility;
 //! - [`image_ops`]: comparisons, shadow masks, labels, PNG and GIF output;
 //! - [`hand`]: the hand-written WGSL port and its reflection;
+//! - [`visible`]: `--fit visible`, the light box fitted to what a compute
+//!   pass measures in the camera's depth buffer;
 //! - [`command`]: `umbrac render` (its options; the binary parses them).
 //!
 //! ```no_run
@@ -44,6 +46,7 @@ pub mod scene;
 pub mod setup;
 pub mod techniques;
 pub mod tutorial;
+pub mod visible;
 
 pub use consumer::Consumer;
 pub use exec::{ExecError, Executor, Readback, SceneExecutor};

@@ -161,7 +161,7 @@ pub fn render_frame(params: &FrameParams) -> RefFrame {
         super::setup::Light::Spot { pos, .. } => Some(params.setup.world.point(pos).as_dvec3()),
         _ => None,
     };
-    let tight = params.setup.shadow.fit == super::setup::Fit::Tight;
+    let tight = params.setup.shadow.fit.lit_outside();
     let clear = Rgba([to_unorm8(scene::CLEAR[0] as f32), to_unorm8(scene::CLEAR[1] as f32), to_unorm8(scene::CLEAR[2] as f32), 255]);
     let mut image = RgbaImage::from_pixel(w, h, clear);
     let mut outside = vec![false; (w * h) as usize];

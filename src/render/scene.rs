@@ -52,11 +52,15 @@ pub struct FrameParams {
     pub view: View,
     /// Shadow technique and scene variants; the default is the tutorial.
     pub setup: super::setup::Setup,
+    /// The light-space bounds (low, high corner) of the receivers the
+    /// camera sees, measured on the GPU for [`super::setup::Fit::Visible`]
+    /// ([`super::visible`]); `None` until measured.
+    pub visible_bounds: Option<(Vec3, Vec3)>,
 }
 
 impl FrameParams {
     pub fn new(time: f32, width: u32, height: u32) -> FrameParams {
-        FrameParams { time, width, height, shadow_size: DEFAULT_SHADOW_SIZE, view: View::Final, setup: Default::default() }
+        FrameParams { time, width, height, shadow_size: DEFAULT_SHADOW_SIZE, view: View::Final, setup: Default::default(), visible_bounds: None }
     }
 
     pub fn with_view(mut self, view: View) -> FrameParams {
@@ -223,8 +227,13 @@ impl Frame {
         let cam_pos = w.point(camera_pos(t));
         let view = look_at_mat4(cam_pos, w.point(camera_target()), Vec3::Y);
         let proj = opengl::perspective(CAMERA_FOVY_DEG.to_radians(), params.aspect(), CAMERA_NEAR * w.scale, CAMERA_FAR * w.scale);
-        let (light_view, light_proj) =
+        let (light_view, mut light_proj) =
             super::setup::light_matrices(setup, t, cube_model, floor_model, proj * view, params.shadow_size);
+        if let (super::setup::Fit::Visible, Some((lo, hi)), super::setup::Light::Sun | super::setup::Light::SunDir(_)) =
+            (setup.shadow.fit, params.visible_bounds, setup.light)
+        {
+            light_proj = super::setup::visible_box(light_view, cube_model, lo, hi, params.shadow_size).unwrap_or(light_proj);
+        }
         Frame {
             light_dir: setup.light_dir(t),
             light_view,

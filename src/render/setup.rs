@@ -78,16 +78,31 @@ pub enum Fit {
     /// texels is kept for the filter's footprint, and lookups outside the
     /// box count as lit.
     Tight,
+    /// Fitted each frame to the receivers the camera sees, measured on the
+    /// GPU (sample-distribution shadow maps): a camera depth pre-pass, the
+    /// DSL compute program `shaders/compute/depth_bounds.das` reducing it
+    /// to light-space bounds ([`crate::render::visible`]), then the rule of
+    /// [`Fit::Tight`] with those bounds as the receivers. Needs a consumer
+    /// that runs compute and frames (Vulkan, GL 4.3); a frame without measured bounds (the CPU
+    /// reference, nothing visible) gets the fixed box.
+    Visible,
 }
 
 impl Fit {
-    pub const ALL: [Fit; 2] = [Fit::Fixed, Fit::Tight];
+    pub const ALL: [Fit; 3] = [Fit::Fixed, Fit::Tight, Fit::Visible];
 
     pub fn name(self) -> &'static str {
         match self {
             Fit::Fixed => "fixed",
             Fit::Tight => "tight",
+            Fit::Visible => "visible",
         }
+    }
+
+    /// Whether the box may leave out receivers that nothing shadows, so
+    /// that lookups outside it must count as lit.
+    pub fn lit_outside(self) -> bool {
+        self != Fit::Fixed
     }
 }
 
@@ -294,6 +309,8 @@ pub fn light_matrices(setup: &Setup, t: f32, cube_model: Mat4, floor_model: Mat4
     match setup.shadow.fit {
         Fit::Fixed => (view, fixed()),
         Fit::Tight => (view, tight_box(view, cube_model, floor_model, cam_vp, shadow_size).unwrap_or_else(fixed)),
+        // The measured bounds replace this in `scene::Frame::of`.
+        Fit::Visible => (view, fixed()),
     }
 }
 
@@ -351,6 +368,20 @@ fn tight_box(view: Mat4, cube_model: Mat4, floor_model: Mat4, cam_vp: Mat4, shad
     receivers.extend_from_slice(&casters);
     let (c_lo, c_hi) = bounds(casters.iter().map(|&p| to_light(p)))?;
     let (r_lo, r_hi) = bounds(receivers.iter().map(|&p| to_light(p)))?;
+    Some(fit_box(c_lo, c_hi, r_lo, r_hi, shadow_size))
+}
+
+/// The box of [`Fit::Visible`]: [`Fit::Tight`]'s rule with the receivers'
+/// light-space bounds `r_lo`..`r_hi` measured from the camera's depth
+/// buffer instead of clipped from the scene's geometry.
+pub fn visible_box(view: Mat4, cube_model: Mat4, r_lo: Vec3, r_hi: Vec3, shadow_size: u32) -> Option<Mat4> {
+    let (c_lo, c_hi) = bounds(cube_corners(cube_model).iter().map(|&p| (view * p.extend(1.0)).xyz()))?;
+    Some(fit_box(c_lo, c_hi, r_lo, r_hi, shadow_size))
+}
+
+/// The orthographic box over casters `c_lo..c_hi` and receivers
+/// `r_lo..r_hi`, both in the light's view space.
+fn fit_box(c_lo: Vec3, c_hi: Vec3, r_lo: Vec3, r_hi: Vec3, shadow_size: u32) -> Mat4 {
     // Across the light: where a caster's shadow can land on something seen.
     let lo = c_lo.max(r_lo);
     let hi = c_hi.min(r_hi);
@@ -365,7 +396,7 @@ fn tight_box(view: Mat4, cube_model: Mat4, floor_model: Mat4, cam_vp: Mat4, shad
     let near = -c_hi.z.max(r_hi.z);
     let far = -c_lo.z.min(r_lo.z);
     let pad = (far - near).max(1e-6) * 0.01;
-    Some(opengl::orthographic(mid.x - half, mid.x + half, mid.y - half, mid.y + half, near - pad, far + pad))
+    opengl::orthographic(mid.x - half, mid.x + half, mid.y - half, mid.y + half, near - pad, far + pad)
 }
 
 /// Whether a point in the light's clip space (`clip = light_vp * p`) is

@@ -30,3 +30,5 @@ mod render;
 mod techniques;
 #[cfg(feature = "render")]
 mod uniforms;
+#[cfg(feature = "render")]
+mod visible_fit;

@@ -21,7 +21,8 @@ use super::exec::{ExecError, Executor};
 use super::plan::tutorial;
 use super::reference;
 use super::scene::{FrameParams, View, DEFAULT_SHADOW_SIZE};
-use super::setup::Setup;
+use super::setup::{Fit, Setup};
+use super::visible;
 use frames::{frame_times, write_frames};
 
 /// Everything `umbrac render` can be asked (docs/runner.md).
@@ -101,6 +102,9 @@ impl Progress for Quiet {}
 /// Runs `umbrac render` once; the error is one message for stderr.
 pub fn run(opts: &RenderOptions, progress: &mut dyn Progress) -> Result<(), String> {
     if opts.scene.is_some() {
+        if opts.setup.shadow.fit == Fit::Visible {
+            return Err("--fit visible fits the tutorial scene's sun box; the technique scenes (--scene) make their own light boxes".into());
+        }
         return techniques::run(opts);
     }
     let (width, height) = opts.size;
@@ -120,11 +124,30 @@ pub fn run(opts: &RenderOptions, progress: &mut dyn Progress) -> Result<(), Stri
         return write_frames(opts, &frame_times(opts), |p| Ok(reference::render(p)), params, progress);
     }
     if opts.compare_backends {
+        if params.setup.shadow.fit == Fit::Visible {
+            return Err("--fit visible runs a compute pass, which most consumers have not: it does not go with --compare-backends".into());
+        }
         return consumers::compare_backends(opts, params);
+    }
+    if params.setup.shadow.fit == Fit::Visible {
+        visible::check_consumer(opts.consumer)?;
     }
     let defines = params.setup.defines(params.shadow_size);
     let set = load_program_with(opts.file.as_deref(), opts.reflection.as_deref(), opts.consumer, defines)?;
     match opts.consumer {
+        #[cfg(feature = "gl")]
+        Consumer::Gl430 => {
+            let _ = super::consumers::wgpu_gl();
+            let gl = super::exec::gl::GlExecutor::new(opts.consumer).map_err(|e| e.to_string())?;
+            if params.setup.shadow.fit == Fit::Visible {
+                draw_visible(&gl, &set, opts, params, progress)
+            } else {
+                draw(&gl, &set, opts, params, progress)
+            }
+        }
+        Consumer::VulkanWgsl | Consumer::VulkanSpirv if params.setup.shadow.fit == Fit::Visible => {
+            draw_visible(super::consumers::vulkan().map_err(|e| e.to_string())?, &set, opts, params, progress)
+        }
         Consumer::VulkanWgsl | Consumer::VulkanSpirv => draw(super::consumers::vulkan().map_err(|e| e.to_string())?, &set, opts, params, progress),
         Consumer::WgpuGl => draw(super::consumers::wgpu_gl().map_err(|e| e.to_string())?, &set, opts, params, progress),
         #[cfg(feature = "gl")]
@@ -143,6 +166,23 @@ fn draw<E: Executor>(e: &E, set: &super::ShaderSet, opts: &RenderOptions, params
     eprintln!("rendering {} ({}) on {}: {}", set.label, set.target.name(), opts.consumer.name(), e.device_name());
     let times = frame_times(opts);
     write_frames(opts, &times, |p| e.run(&prepared, &tutorial::plan(p)).map(|r| r.into_image()).map_err(|e: ExecError| e.to_string()), params, progress)
+}
+
+/// [`draw`] for `--fit visible`: each frame measured first
+/// ([`visible::render`]).
+fn draw_visible<E: visible::ComputeExecutor>(e: &E, set: &super::ShaderSet, opts: &RenderOptions, params: FrameParams, progress: &mut dyn Progress) -> Result<(), String> {
+    let prepared = e.prepare(set, &tutorial::plan(&params)).map_err(|e| e.to_string())?;
+    let reduction = visible::program(set.target)?;
+    eprintln!(
+        "rendering {} ({}) on {}: {}, the light box fitted by {} each frame",
+        set.label,
+        set.target.name(),
+        opts.consumer.name(),
+        e.device_name(),
+        visible::PROGRAM_NAME
+    );
+    let times = frame_times(opts);
+    write_frames(opts, &times, |p| visible::render(e, &prepared, &reduction, p).map(|r| r.into_image()).map_err(|e| e.to_string()), params, progress)
 }
 
 /// What `--watch` waits on: the program and every file its preprocessing

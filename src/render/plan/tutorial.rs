@@ -4,7 +4,7 @@
 //! [`crate::render::scene`] and [`crate::render::setup`].
 
 use crate::render::scene::{self, Frame, FrameParams, View};
-use crate::render::setup::{DepthFormat, Fit, Light};
+use crate::render::setup::{DepthFormat, Light};
 
 use super::{Attachment, Cull, Draw, Format, FramePlan, Geometry, Pass, Required, Sampling, TextureInput, Value, Values};
 
@@ -77,7 +77,7 @@ pub fn plan(params: &FrameParams) -> FramePlan {
         return plan;
     }
     // Lookups outside a tight box or a spot light's frustum are lit.
-    let border = setup.shadow.fit == Fit::Tight || matches!(setup.light, Light::Spot { .. });
+    let border = setup.shadow.fit.lit_outside() || matches!(setup.light, Light::Spot { .. });
     let c = scene::CLEAR;
     plan.passes.push(Pass {
         name: "main".into(),
@@ -96,6 +96,51 @@ pub fn plan(params: &FrameParams) -> FramePlan {
         draws,
     });
     plan.readback = color;
+    plan
+}
+
+/// The camera's depth pre-pass of [`crate::render::setup::Fit::Visible`]:
+/// every object drawn by the shadow program from the camera (its
+/// projection * view in place of the light's) into a depth target of the
+/// frame's size, which comes back ([`super::super::Readback::Depth`]).
+pub fn camera_depth_plan(params: &FrameParams) -> FramePlan {
+    let frame = Frame::of(params);
+    let mut plan = FramePlan {
+        scene: "the shadow scene's camera depth".into(),
+        targets: Vec::new(),
+        passes: Vec::new(),
+        readback: super::TargetId(0),
+        required: vec![Required { value: "u_light_vp".into(), why: "the pre-pass cannot place its geometry without it".into() }],
+        unset: Default::default(),
+    };
+    let depth = plan.add_target("camera depth", params.width, params.height, Format::Depth32Float);
+    let draws = frame
+        .draws()
+        .iter()
+        .map(|d| Draw {
+            geometry: Geometry::Mesh(scene::mesh(d.object)),
+            values: Values::new().with("u_model", Value::mat4(d.model)).with("u_is_floor", Value::float(d.is_floor)),
+        })
+        .collect();
+    plan.passes.push(Pass {
+        name: "camera depth".into(),
+        vertex: scene::SHADOW_VS.into(),
+        fragment: scene::SHADOW_FS.into(),
+        color: None,
+        depth: Some(Attachment { target: depth, clear: 1.0 }),
+        cull: Cull::None,
+        depth_bias: false,
+        textures: Vec::new(),
+        // The program's uniforms share one buffer: every value is set.
+        values: Values::new()
+            .with("u_light_vp", Value::mat4(frame.proj * frame.view))
+            .with("u_view", Value::mat4(frame.view))
+            .with("u_proj", Value::mat4(frame.proj))
+            .with("u_light_dir", Value::vec3(frame.light_dir))
+            .with("u_cam_pos", Value::vec3(frame.cam_pos)),
+        draws,
+    });
+    plan.readback = depth;
     plan
 }
 

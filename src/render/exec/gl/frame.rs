@@ -226,9 +226,9 @@ impl GlExecutor {
         })
     }
 
-    /// A sampler object for `s` (GLES 3.0 has no clamp to border: edge).
+    /// A sampler object for `s` (OpenGL ES 3.0 and 3.1 have no clamp to border: edge).
     fn sampler(&self, s: Sampling) -> Result<Obj<glow::Sampler>, ExecError> {
-        let border = s.border && self.consumer == Consumer::Gl330;
+        let border = s.border && matches!(self.consumer, Consumer::Gl330 | Consumer::Gl430);
         let gl = self.ctx.current()?;
         // SAFETY: sampler state on the current context.
         unsafe {
