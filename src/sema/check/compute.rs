@@ -108,6 +108,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         };
         match b {
             Builtin::Barrier { .. } => {
+                self.saw_barrier = true;
                 if !arity(0, self, &xs, &format!("{name}()")) {
                     return err_expr(span);
                 }
@@ -303,6 +304,10 @@ impl<'a, 'd> Checker<'a, 'd> {
 /// members and elements are read and written one by one. Checked once the
 /// program's atomics are known (`Program::atomics`).
 pub(super) fn check_whole_values(p: &Program, diags: &mut Diagnostics) {
+    // Only storage and workgroup variables have whole-value rules.
+    if !p.globals.iter().any(|g| matches!(g.kind, GlobalKind::Storage { .. } | GlobalKind::Workgroup)) {
+        return;
+    }
     let bodies = p.functions.iter().map(|f| &f.body).chain(p.entry_points.iter().map(|e| &e.func.body));
     let mut reported = std::collections::BTreeSet::new();
     for body in bodies {

@@ -53,7 +53,9 @@ pub fn check_for_targets(program: &ast::Program, targets: &[crate::target::Targe
     c.declare();
     c.check_entry_points();
     folding::check_program(&c.out, c.diags);
-    uniformity::check_program(&c.out, c.diags);
+    if c.saw_barrier {
+        uniformity::check_program(&c.out, c.diags);
+    }
     compute::check_whole_values(&c.out, c.diags);
     c.link_programs();
     if c.diags.has_errors() {
@@ -232,6 +234,9 @@ struct Checker<'a, 'd> {
     /// No target was named: every one that can run the program is made
     /// (`Target::defaults`), so compute constructs refuse no target.
     targets_defaulted: bool,
+    /// A barrier call was checked: only then is the uniformity pass run
+    /// (it walks every body, and most programs have no barrier).
+    saw_barrier: bool,
     /// `half` was refused already (reported once, at its first use).
     half_refused: bool,
     /// Compute constructs were refused already (once, at the first).
@@ -295,6 +300,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             spare_scopes: Vec::new(),
             targets: crate::target::Target::ALL.to_vec(),
             targets_defaulted: true,
+            saw_barrier: false,
             compute_refused: false,
             entry_workgroup_size: [0; 3],
             half_refused: false,
