@@ -46,34 +46,14 @@ impl ModuleBuilder<'_> {
                     // GLSL's plain form: a private global the GLSL text
                     // then declares `uniform T name;` (`emit::glsl`).
                     let ty = self.ty(&g.ty);
-                    let h = self.module.global_variables.append(
-                        naga::GlobalVariable {
-                            name: Some(g.name.clone()),
-                            space: naga::AddressSpace::Private,
-                            binding: None,
-                            ty,
-                            init: None,
-                            memory_decorations: naga::MemoryDecorations::empty(),
-                        },
-                        span,
-                    );
+                    let h = self.add_global(g.name.clone(), naga::AddressSpace::Private, None, ty, None, span);
                     self.plain_uniforms.push((h, g.name.clone()));
                     GlobalSlot::Var(h)
                 }
                 GlobalKind::Uniform { default } => {
                     let ty = self.ty(&g.ty);
                     let sema::Bind { group, binding } = g.bind.expect("a used resource is bound");
-                    let h = self.module.global_variables.append(
-                        naga::GlobalVariable {
-                            name: Some(g.name.clone()),
-                            space: naga::AddressSpace::Uniform,
-                            binding: with_binding.then_some(naga::ResourceBinding { group, binding }),
-                            ty,
-                            init: None,
-                            memory_decorations: naga::MemoryDecorations::empty(),
-                        },
-                        span,
-                    );
+                    let h = self.add_global(g.name.clone(), naga::AddressSpace::Uniform, with_binding.then_some(naga::ResourceBinding { group, binding }), ty, None, span);
                     if describe {
                         let dsl_type = self.show_ty(&g.ty);
                         self.resources.push(Resource {
@@ -104,28 +84,8 @@ impl ModuleBuilder<'_> {
                         };
                         let sampler_name = [&gname, "_sampler"].concat();
                         let (tb, sb) = (binding + 2 * i, binding + 2 * i + 1);
-                        let image = self.module.global_variables.append(
-                            naga::GlobalVariable {
-                                name: Some(gname),
-                                space: naga::AddressSpace::Handle,
-                                binding: with_binding.then_some(naga::ResourceBinding { group, binding: tb }),
-                                ty: image_ty,
-                                init: None,
-                                memory_decorations: naga::MemoryDecorations::empty(),
-                            },
-                            span,
-                        );
-                        let sampler = self.module.global_variables.append(
-                            naga::GlobalVariable {
-                                name: Some(sampler_name),
-                                space: naga::AddressSpace::Handle,
-                                binding: with_binding.then_some(naga::ResourceBinding { group, binding: sb }),
-                                ty: sampler_ty,
-                                init: None,
-                                memory_decorations: naga::MemoryDecorations::empty(),
-                            },
-                            span,
-                        );
+                        let image = self.add_global(gname, naga::AddressSpace::Handle, with_binding.then_some(naga::ResourceBinding { group, binding: tb }), image_ty, None, span);
+                        let sampler = self.add_global(sampler_name, naga::AddressSpace::Handle, with_binding.then_some(naga::ResourceBinding { group, binding: sb }), sampler_ty, None, span);
                         self.sampler_elems.push((image, sampler));
                         if !describe {
                             continue;
@@ -156,17 +116,7 @@ impl ModuleBuilder<'_> {
                         sema::Ty::Struct(sid) => self.types.storage_struct_type(&mut self.module, self.p, sid, &atomic),
                         _ => self.ty(&g.ty),
                     };
-                    let h = self.module.global_variables.append(
-                        naga::GlobalVariable {
-                            name: Some(g.name.clone()),
-                            space: naga::AddressSpace::Storage { access: access.naga() },
-                            binding: with_binding.then_some(naga::ResourceBinding { group, binding }),
-                            ty,
-                            init: None,
-                            memory_decorations: naga::MemoryDecorations::empty(),
-                        },
-                        span,
-                    );
+                    let h = self.add_global(g.name.clone(), naga::AddressSpace::Storage { access: access.naga() }, with_binding.then_some(naga::ResourceBinding { group, binding }), ty, None, span);
                     if describe {
                         let dsl_type = self.show_ty(&g.ty);
                         let unit = self.p.globals[..gid].iter().filter(|o| o.bind.is_some() && matches!(o.kind, GlobalKind::Storage { .. })).count() as u32;
@@ -194,17 +144,7 @@ impl ModuleBuilder<'_> {
                         sema::types::ImageDim::D2Array => (naga::ImageDimension::D2, true),
                     };
                     let ty = self.add_type(None, TypeInner::Image { dim, arrayed, class: naga::ImageClass::Storage { format: format.naga(), access: access.naga() } });
-                    let h = self.module.global_variables.append(
-                        naga::GlobalVariable {
-                            name: Some(g.name.clone()),
-                            space: naga::AddressSpace::Handle,
-                            binding: with_binding.then_some(naga::ResourceBinding { group, binding }),
-                            ty,
-                            init: None,
-                            memory_decorations: naga::MemoryDecorations::empty(),
-                        },
-                        span,
-                    );
+                    let h = self.add_global(g.name.clone(), naga::AddressSpace::Handle, with_binding.then_some(naga::ResourceBinding { group, binding }), ty, None, span);
                     if describe {
                         let unit = self.p.globals[..gid].iter().filter(|o| o.bind.is_some() && matches!(o.kind, GlobalKind::Image { .. })).count() as u32;
                         self.resources.push(Resource {
@@ -225,17 +165,7 @@ impl ModuleBuilder<'_> {
                 GlobalKind::Workgroup => {
                     let atomic = self.p.atomics.contains(&(gid, None));
                     let ty = if atomic { self.types.atomic_type(&mut self.module, self.p, &g.ty) } else { self.ty(&g.ty) };
-                    let h = self.module.global_variables.append(
-                        naga::GlobalVariable {
-                            name: Some(g.name.clone()),
-                            space: naga::AddressSpace::WorkGroup,
-                            binding: None,
-                            ty,
-                            init: None,
-                            memory_decorations: naga::MemoryDecorations::empty(),
-                        },
-                        span,
-                    );
+                    let h = self.add_global(g.name.clone(), naga::AddressSpace::WorkGroup, None, ty, None, span);
                     GlobalSlot::Var(h)
                 }
                 GlobalKind::Io { .. } | GlobalKind::Builtin(_) if !private[gid] => GlobalSlot::Absent,
@@ -247,17 +177,7 @@ impl ModuleBuilder<'_> {
                         (Flavor::Gl, GlobalKind::Io { .. }) => ["io_", &g.name].concat(),
                         _ => g.name.clone(),
                     };
-                    let h = self.module.global_variables.append(
-                        naga::GlobalVariable {
-                            name: Some(name),
-                            space: naga::AddressSpace::Private,
-                            binding: None,
-                            ty,
-                            init: None,
-                            memory_decorations: naga::MemoryDecorations::empty(),
-                        },
-                        span,
-                    );
+                    let h = self.add_global(name, naga::AddressSpace::Private, None, ty, None, span);
                     GlobalSlot::Var(h)
                 }
                 GlobalKind::Private { init } => {
@@ -268,17 +188,7 @@ impl ModuleBuilder<'_> {
                         Some(v) => self.const_expr(v, &g.ty),
                         None => self.module.global_expressions.append(naga::Expression::ZeroValue(ty), naga::Span::UNDEFINED),
                     };
-                    let h = self.module.global_variables.append(
-                        naga::GlobalVariable {
-                            name: Some(g.name.clone()),
-                            space: naga::AddressSpace::Private,
-                            binding: None,
-                            ty,
-                            init: Some(init),
-                            memory_decorations: naga::MemoryDecorations::empty(),
-                        },
-                        span,
-                    );
+                    let h = self.add_global(g.name.clone(), naga::AddressSpace::Private, None, ty, Some(init), span);
                     GlobalSlot::Var(h)
                 }
             };
@@ -287,4 +197,17 @@ impl ModuleBuilder<'_> {
         }
     }
 
+    /// Appends a module variable (no memory decorations).
+    pub(super) fn add_global(
+        &mut self,
+        name: String,
+        space: naga::AddressSpace,
+        binding: Option<naga::ResourceBinding>,
+        ty: naga::Handle<naga::Type>,
+        init: Option<naga::Handle<naga::Expression>>,
+        span: naga::Span,
+    ) -> naga::Handle<naga::GlobalVariable> {
+        let var = naga::GlobalVariable { name: Some(name), space, binding, ty, init, memory_decorations: naga::MemoryDecorations::empty() };
+        self.module.global_variables.append(var, span)
+    }
 }

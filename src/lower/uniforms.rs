@@ -161,17 +161,7 @@ impl ModuleBuilder<'_> {
         let ty = self.types.uniform_struct_type(&mut self.module, ty_name.clone(), fields);
         let span: naga::Span = p.globals[members[0]].span.into();
         let with_binding = self.flavor != Flavor::Gl;
-        let buffer = self.module.global_variables.append(
-            naga::GlobalVariable {
-                name: Some(var_name.clone()),
-                space: naga::AddressSpace::Uniform,
-                binding: with_binding.then_some(naga::ResourceBinding { group: bind.group, binding: bind.binding }),
-                ty,
-                init: None,
-                memory_decorations: naga::MemoryDecorations::empty(),
-            },
-            span,
-        );
+        let buffer = self.add_global(var_name.clone(), naga::AddressSpace::Uniform, with_binding.then_some(naga::ResourceBinding { group: bind.group, binding: bind.binding }), ty, None, span);
         if self.flavor != Flavor::Gl {
             let index = self.resources.len();
             self.resources.push(Resource {
