@@ -367,8 +367,12 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
             map.insert(var.location, glsl);
         }
     }
-    let pairs: Vec<(&str, &str)> = renames.iter().map(|(a, b)| (a.as_str(), b.as_str())).collect();
-    text::replace_idents(&mut out, &pairs);
+    // Renamed where `declared` found them: the text has not changed since.
+    let edits: Vec<(Range<usize>, &str)> = declared
+        .iter()
+        .filter_map(|&(at, id)| renames.iter().find(|(from, _)| from == id).map(|(from, to)| (at..at + from.len(), to.as_str())))
+        .collect();
+    text::apply_edits(&mut out, edits);
     for name in &unlocated {
         drop_location_qualifier(&mut out, name).ok_or_else(|| bug(format!("no `layout(location = N)` declaration of `{name}` to drop")))?;
     }

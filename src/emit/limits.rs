@@ -276,19 +276,19 @@ impl Family {
 /// What one entry point (or program) uses of a resource: the count, and
 /// the declaration of what it uses, in order (the item past the limit is
 /// where the error points).
-struct Use {
+struct Use<'a> {
     count: u64,
-    items: Vec<(u64, Span, String)>,
+    items: Vec<(u64, Span, &'a str)>,
 }
 
-impl Use {
-    fn new() -> Use {
+impl<'a> Use<'a> {
+    fn new() -> Use<'a> {
         Use { count: 0, items: Vec::new() }
     }
 
-    fn add(&mut self, n: u64, span: Span, name: &str) {
+    fn add(&mut self, n: u64, span: Span, name: &'a str) {
         self.count += n;
-        self.items.push((self.count, span, name.to_string()));
+        self.items.push((self.count, span, name));
     }
 }
 
@@ -311,7 +311,9 @@ pub fn check(lowered: &Lowered, targets: &[Target], raised: &[(Limit, u64)], dia
     }
     let iface = &lowered.interface;
     for family in families {
-        let mut report = |limit: Limit, stage: naga::ShaderStage, whose: &str, used: &Use| {
+        // `whose` names the entry point or program; it is only formatted
+        // for an error (this runs for every compile).
+        let mut report = |limit: Limit, stage: naga::ShaderStage, whose: &dyn Fn() -> String, used: &Use| {
             let Some((minimum, api)) = family.minimum(limit, stage) else { return };
             let allowed = raised.iter().rev().find(|(l, _)| *l == limit).map_or(minimum, |&(_, n)| n);
             if used.count <= allowed {
@@ -320,28 +322,27 @@ pub fn check(lowered: &Lowered, targets: &[Target], raised: &[(Limit, u64)], dia
             let Some((_, span, name)) = used.items.iter().find(|(total, ..)| *total > allowed) else { return };
             let stated = if allowed == minimum { format!("the {minimum} that {} ({api})", family.promise()) } else { format!("the stated limit of {allowed}") };
             diags.push(
-                Diagnostic::error(format!("{whose} uses {} {} in {}, over {stated}", used.count, limit.what(), family.target()), *span)
+                Diagnostic::error(format!("{} uses {} {} in {}, over {stated}", whose(), used.count, limit.what(), family.target()), *span)
                     .with_label(format!("`{name}` goes over the limit"))
                     .with_note(format!("to compile for devices with more, state their limit: `--limit {}=N`", limit.name())),
             );
         };
-        for ep in &iface.entry_points {
-            let whose = format!("{} entry point `{}`", stage_name(ep.stage), ep.name);
-            for (limit, used) in entry_uses(lowered, ep, family) {
-                report(limit, ep.stage, &whose, &used);
+        let per_entry: Vec<Vec<(Limit, Use)>> = iface.entry_points.iter().map(|ep| entry_uses(lowered, ep, family)).collect();
+        for (ep, uses) in iface.entry_points.iter().zip(&per_entry) {
+            let whose = || format!("{} entry point `{}`", stage_name(ep.stage), ep.name);
+            for (limit, used) in uses {
+                report(*limit, ep.stage, &whose, used);
             }
         }
         for &(v, f) in &iface.links {
             let (ve, fe) = (&iface.entry_points[v], &iface.entry_points[f]);
-            let whose = format!("the program of `{}` and `{}`", ve.name, fe.name);
-            for limit in [Limit::CombinedUniformBlocks, Limit::CombinedTextureUnits] {
+            let whose = || format!("the program of `{}` and `{}`", ve.name, fe.name);
+            for (limit, single) in [(Limit::CombinedUniformBlocks, Limit::UniformBlocks), (Limit::CombinedTextureUnits, Limit::TextureUnits)] {
                 let mut used = Use::new();
-                for ep in [ve, fe] {
-                    let per = entry_uses(lowered, ep, family);
-                    let single = if limit == Limit::CombinedUniformBlocks { Limit::UniformBlocks } else { Limit::TextureUnits };
-                    if let Some((_, u)) = per.into_iter().find(|(l, _)| *l == single) {
-                        for (_, span, name) in u.items {
-                            used.add(1, span, &name);
+                for i in [v, f] {
+                    if let Some((_, u)) = per_entry[i].iter().find(|(l, _)| *l == single) {
+                        for &(_, span, name) in &u.items {
+                            used.add(1, span, name);
                         }
                     }
                 }
@@ -371,12 +372,12 @@ fn vectors(module: &naga::Module, ty: naga::Handle<naga::Type>) -> u64 {
 }
 
 /// What entry point `ep` uses of each limited resource on `family`.
-fn entry_uses(lowered: &Lowered, ep: &EntryInterface, family: Family) -> Vec<(Limit, Use)> {
+fn entry_uses<'a>(lowered: &'a Lowered, ep: &'a EntryInterface, family: Family) -> Vec<(Limit, Use<'a>)> {
     let iface = &lowered.interface;
     let module = &lowered.gpu;
     let vertex = ep.stage == naga::ShaderStage::Vertex;
     let mut out = Vec::new();
-    let io = |vars: &[crate::lower::IoVar]| {
+    let io = |vars: &'a [crate::lower::IoVar]| {
         let mut u = Use::new();
         for v in vars {
             u.add(vectors(module, v.ty), v.span, &v.name);

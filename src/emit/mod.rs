@@ -109,7 +109,11 @@ pub fn emit(lowered: &Lowered, stem: &str, source_name: &str, targets: &[Target]
     }
     if targets.contains(&Target::Spirv) {
         let words = spirv::write(lowered)?;
-        let contents = words.iter().flat_map(|w| w.to_le_bytes()).collect();
+        // One copy of the words' bytes (a `flat_map` collect pushes them one at a time).
+        let mut contents = Vec::with_capacity(4 * words.len());
+        for w in &words {
+            contents.extend_from_slice(&w.to_le_bytes());
+        }
         artifacts.push(Artifact { file_name: format!("{stem}.spv"), target: Some(Target::Spirv), entry: None, contents });
     }
 
