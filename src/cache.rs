@@ -10,17 +10,23 @@
 //! Comments and whitespace are not tokens, so editing only them is a hit;
 //! two define sets that preprocess to the same text share one entry.
 //!
-//! An entry is one file, `DIR/v2/AB/ABCDEF...`: a header (magic, the key,
-//! the body's length, a SHA-256 over everything in the body but the
-//! artifacts' contents) and the artifacts, each with the SHA-256 of its
-//! contents. Those hashes verify the contents and are what `variants.json`
-//! records of each output, so a warm run hashes each output once. It is written to a
-//! temporary in `DIR/tmp/` and renamed into place, so a reader sees a whole
-//! entry or none; two processes that store the same key write the same
-//! bytes, and the last rename wins. Reading checks the magic, the key, the
-//! length and the hashes: an entry that fails (truncated, corrupted, from an
-//! incompatible version) is removed and reported as a miss, never served.
-//! A hit refreshes the entry's modification time; [`Cache::trim`] keeps the
+//! An entry is one file, `DIR/v3/AB/ABCDEF...`: a header (magic, the key,
+//! the body's length, a CRC-32 of the body) and the artifacts, each with
+//! the SHA-256 of its contents, which is what `variants.json` records of
+//! each output: a hit hashes no output. The CRC-32 (crc32fast, SIMD) is
+//! there to catch damage, not forgery: it detects every truncation (with
+//! the length), every burst of up to 32 flipped bits and all but 2^-32 of
+//! other corruption, at a small part of the cost of hashing each output
+//! again with SHA-256 on every hit. An entry is written to a temporary
+//! beside it (`.tmp-*` in its own `AB/` directory, so that stores on
+//! several threads do not all create files in one directory) and renamed
+//! into place, so a reader sees a whole entry or none; two processes that
+//! store the same key write the same bytes, and the last rename wins.
+//! Reading checks the magic, the key, the length and the CRC: an entry that
+//! fails (truncated, corrupted, from an incompatible version) is removed
+//! and reported as a miss, never served. A hit refreshes the entry's
+//! modification time when it is over a minute old (so a warm run right
+//! after another writes nothing to the cache); [`Cache::trim`] keeps the
 //! total size under the bound by removing the entries used longest ago.
 //!
 //! Only successful compilations with no diagnostic at all are stored, so a
@@ -44,13 +50,25 @@ pub const DEFAULT_MAX_BYTES: u64 = 256 << 20;
 
 /// Entry layout version; a change makes every old entry a miss (and
 /// removes it on the first read).
-const MAGIC: &[u8; 8] = b"UMBRAC\x02\x00";
-const LAYOUT_DIR: &str = "v2";
-const HEADER_LEN: usize = 8 + 32 + 8 + 32;
+const MAGIC: &[u8; 8] = b"UMBRAC\x03\x00";
+const LAYOUT_DIR: &str = "v3";
+const HEADER_LEN: usize = 8 + 32 + 8 + 4;
+
+/// How a temporary entry's name starts (entries are named by hex digits).
+const TEMP_PREFIX: &str = ".tmp-";
+
+/// A hit refreshes an entry's modification time (its place in the
+/// eviction order) only when it is older than this.
+const REFRESH_AFTER: Duration = Duration::from_secs(60);
 
 /// umbrac's own identity in every key: a new release or a rebuilt compiler
 /// never serves another's outputs.
 const COMPILER_ID: &str = concat!(env!("CARGO_PKG_VERSION"), "+", env!("UMBRAC_BUILD_ID"));
+
+/// umbrac's version and build id, as every key includes them.
+pub fn compiler_id() -> &'static str {
+    COMPILER_ID
+}
 
 /// A SHA-256 content hash.
 #[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
@@ -206,13 +224,22 @@ impl Cache {
 
     /// [`Cache::get`], with the hash of each artifact's contents.
     pub fn get_entry(&self, key: &Key) -> Option<Entry> {
+        use std::io::Read as _;
         let path = self.path_of(key);
-        let bytes = std::fs::read(&path).ok()?;
+        let mut file = std::fs::File::open(&path).ok()?;
+        let meta = file.metadata().ok()?;
+        let mut bytes = Vec::with_capacity(usize::try_from(meta.len()).unwrap_or(0));
+        file.read_to_end(&mut bytes).ok()?;
+        drop(file);
         match decode(key, &bytes) {
             Some(entry) => {
-                // Used now: the last to be evicted. Best effort.
-                if let Ok(f) = std::fs::File::options().write(true).open(&path) {
-                    let _ = f.set_modified(SystemTime::now());
+                // Used now: the last to be evicted. Best effort, and only
+                // when the order could change by more than a minute.
+                let now = SystemTime::now();
+                if meta.modified().map_or(true, |m| now.duration_since(m).is_ok_and(|age| age > REFRESH_AFTER)) {
+                    if let Ok(f) = std::fs::File::options().write(true).open(&path) {
+                        let _ = f.set_modified(now);
+                    }
                 }
                 Some(entry)
             }
@@ -233,13 +260,12 @@ impl Cache {
     pub fn put_entry(&self, key: &Key, artifacts: &[Artifact], hashes: &[Key]) -> std::io::Result<()> {
         assert_eq!(artifacts.len(), hashes.len(), "one hash per artifact");
         let path = self.path_of(key);
-        let tmp_dir = self.dir.join("tmp");
-        std::fs::create_dir_all(&tmp_dir)?;
-        std::fs::create_dir_all(path.parent().expect("an entry path has a parent"))?;
+        let dir = path.parent().expect("an entry path has a parent");
+        std::fs::create_dir_all(dir)?;
         self.tag_dir();
-        let tmp = unique_temp(&tmp_dir);
+        let tmp = unique_temp(dir);
         let written = std::fs::File::options().write(true).create_new(true).open(&tmp).and_then(|mut f| f.write_all(&encode(key, artifacts, hashes)));
-        // No fsync: an entry torn by a crash fails its hash and is recompiled.
+        // No fsync: an entry torn by a crash fails its CRC and is recompiled.
         match written.and_then(|_| std::fs::rename(&tmp, &path)) {
             Ok(()) => Ok(()),
             Err(e) => {
@@ -264,20 +290,30 @@ impl Cache {
     /// removed under a reader is a miss for it.
     pub fn trim(&self) -> Trimmed {
         let mut entries: Vec<(SystemTime, u64, PathBuf)> = Vec::new();
+        let hour_ago = SystemTime::now() - Duration::from_secs(3600);
         let layout = self.dir.join(LAYOUT_DIR);
         for sub in read_dir_paths(&layout) {
             for path in read_dir_paths(&sub) {
-                if let Ok(m) = std::fs::metadata(&path) {
-                    if m.is_file() {
-                        entries.push((m.modified().unwrap_or(SystemTime::UNIX_EPOCH), m.len(), path));
-                    }
+                let Ok(m) = std::fs::metadata(&path) else { continue };
+                if !m.is_file() {
+                    continue;
                 }
+                let modified = m.modified().unwrap_or(SystemTime::UNIX_EPOCH);
+                if path.file_name().is_some_and(|n| n.to_string_lossy().starts_with(TEMP_PREFIX)) {
+                    if modified < hour_ago {
+                        let _ = std::fs::remove_file(&path);
+                    }
+                    continue;
+                }
+                entries.push((modified, m.len(), path));
             }
         }
-        let hour_ago = SystemTime::now() - Duration::from_secs(3600);
-        for tmp in read_dir_paths(&self.dir.join("tmp")) {
-            if std::fs::metadata(&tmp).and_then(|m| m.modified()).is_ok_and(|t| t < hour_ago) {
-                let _ = std::fs::remove_file(&tmp);
+        // What earlier layouts left (`v2/`, its `tmp/`): never read again.
+        for old in read_dir_paths(&self.dir) {
+            let name = old.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
+            let earlier_layout = name == "tmp" || (name.len() > 1 && name.starts_with('v') && name[1..].bytes().all(|b| b.is_ascii_digit()) && name != LAYOUT_DIR);
+            if earlier_layout && old.is_dir() {
+                let _ = std::fs::remove_dir_all(&old);
             }
         }
         let mut total: u64 = entries.iter().map(|e| e.1).sum();
@@ -309,7 +345,7 @@ fn unique_temp(dir: &Path) -> PathBuf {
     static COUNTER: AtomicU32 = AtomicU32::new(0);
     let n = COUNTER.fetch_add(1, Ordering::Relaxed);
     let nanos = SystemTime::now().duration_since(SystemTime::UNIX_EPOCH).map(|d| d.subsec_nanos()).unwrap_or(0);
-    dir.join(format!("{}-{n}-{nanos:08x}", std::process::id()))
+    dir.join(format!("{TEMP_PREFIX}{}-{n}-{nanos:08x}", std::process::id()))
 }
 
 fn target_tag(t: Option<Target>) -> u8 {
@@ -338,36 +374,32 @@ fn tag_target(tag: u8) -> Option<Option<Target>> {
 }
 
 fn encode(key: &Key, artifacts: &[Artifact], hashes: &[Key]) -> Vec<u8> {
-    // `meta` is the body without the contents: what the header's hash covers.
-    let mut body = Vec::new();
-    let mut meta = Sha256::new();
-    let mut put = |body: &mut Vec<u8>, bytes: &[u8]| {
-        meta.update(bytes);
-        body.extend_from_slice(bytes);
-    };
-    put(&mut body, &(artifacts.len() as u32).to_le_bytes());
-    for (a, hash) in artifacts.iter().zip(hashes) {
-        put(&mut body, &[target_tag(a.target)]);
-        put(&mut body, &(a.file_name.len() as u64).to_le_bytes());
-        put(&mut body, a.file_name.as_bytes());
-        match &a.entry {
-            Some(e) => {
-                put(&mut body, &[1]);
-                put(&mut body, &(e.len() as u64).to_le_bytes());
-                put(&mut body, e.as_bytes());
-            }
-            None => put(&mut body, &[0]),
-        }
-        put(&mut body, &hash.0);
-        put(&mut body, &(a.contents.len() as u64).to_le_bytes());
-        body.extend_from_slice(&a.contents);
-    }
-    let mut out = Vec::with_capacity(HEADER_LEN + body.len());
+    let size: usize = artifacts.iter().map(|a| 64 + a.file_name.len() + a.entry.as_ref().map_or(0, String::len) + a.contents.len()).sum();
+    let mut out = Vec::with_capacity(HEADER_LEN + 4 + size);
     out.extend_from_slice(MAGIC);
     out.extend_from_slice(&key.0);
-    out.extend_from_slice(&(body.len() as u64).to_le_bytes());
-    out.extend_from_slice(&meta.finalize());
-    out.extend_from_slice(&body);
+    out.extend_from_slice(&[0; 12]); // the body's length and CRC, below
+    out.extend_from_slice(&(artifacts.len() as u32).to_le_bytes());
+    for (a, hash) in artifacts.iter().zip(hashes) {
+        out.push(target_tag(a.target));
+        out.extend_from_slice(&(a.file_name.len() as u64).to_le_bytes());
+        out.extend_from_slice(a.file_name.as_bytes());
+        match &a.entry {
+            Some(e) => {
+                out.push(1);
+                out.extend_from_slice(&(e.len() as u64).to_le_bytes());
+                out.extend_from_slice(e.as_bytes());
+            }
+            None => out.push(0),
+        }
+        out.extend_from_slice(&hash.0);
+        out.extend_from_slice(&(a.contents.len() as u64).to_le_bytes());
+        out.extend_from_slice(&a.contents);
+    }
+    let body_len = (out.len() - HEADER_LEN) as u64;
+    let crc = crc32fast::hash(&out[HEADER_LEN..]);
+    out[40..48].copy_from_slice(&body_len.to_le_bytes());
+    out[48..52].copy_from_slice(&crc.to_le_bytes());
     out
 }
 
@@ -379,37 +411,32 @@ fn decode(key: &Key, bytes: &[u8]) -> Option<Entry> {
         return None;
     }
     let len = u64::from_le_bytes(header[40..48].try_into().ok()?);
-    if len != body.len() as u64 {
+    let crc = u32::from_le_bytes(header[48..52].try_into().ok()?);
+    if len != body.len() as u64 || crc32fast::hash(body) != crc {
         return None;
     }
-    let mut r = Reader { bytes: body, meta: Sha256::new() };
-    let count = u32::from_le_bytes(r.meta(4)?.try_into().ok()?);
+    let mut r = Reader { bytes: body };
+    let count = u32::from_le_bytes(r.take(4)?.try_into().ok()?);
     let mut artifacts = Vec::with_capacity(count.min(1024) as usize);
     let mut hashes = Vec::with_capacity(count.min(1024) as usize);
     for _ in 0..count {
-        let target = tag_target(r.meta(1)?[0])?;
-        let file_name = String::from_utf8(r.meta_field()?.to_vec()).ok()?;
-        let entry = match r.meta(1)?[0] {
+        let target = tag_target(r.take(1)?[0])?;
+        let file_name = String::from_utf8(r.field()?.to_vec()).ok()?;
+        let entry = match r.take(1)?[0] {
             0 => None,
-            1 => Some(String::from_utf8(r.meta_field()?.to_vec()).ok()?),
+            1 => Some(String::from_utf8(r.field()?.to_vec()).ok()?),
             _ => return None,
         };
-        let hash = Key(r.meta(32)?.try_into().ok()?);
-        let n = u64::from_le_bytes(r.meta(8)?.try_into().ok()?);
-        let contents = r.take(usize::try_from(n).ok()?)?;
-        if Key::of_bytes(contents) != hash {
-            return None;
-        }
+        let hash = Key(r.take(32)?.try_into().ok()?);
+        let contents = r.field()?;
         artifacts.push(Artifact { file_name, target, entry, contents: contents.to_vec() });
         hashes.push(hash);
     }
-    (r.bytes.is_empty() && r.meta.finalize()[..] == header[48..80]).then_some(Entry { artifacts, hashes })
+    r.bytes.is_empty().then_some(Entry { artifacts, hashes })
 }
 
 struct Reader<'a> {
     bytes: &'a [u8],
-    /// The hash of what was read through [`Reader::meta`].
-    meta: Sha256,
 }
 
 impl<'a> Reader<'a> {
@@ -422,17 +449,10 @@ impl<'a> Reader<'a> {
         Some(a)
     }
 
-    /// `n` bytes the header's hash covers.
-    fn meta(&mut self, n: usize) -> Option<&'a [u8]> {
-        let b = self.take(n)?;
-        self.meta.update(b);
-        Some(b)
-    }
-
-    /// A length-prefixed field the header's hash covers.
-    fn meta_field(&mut self) -> Option<&'a [u8]> {
-        let len = u64::from_le_bytes(self.meta(8)?.try_into().ok()?);
-        self.meta(usize::try_from(len).ok()?)
+    /// A length-prefixed field.
+    fn field(&mut self) -> Option<&'a [u8]> {
+        let len = u64::from_le_bytes(self.take(8)?.try_into().ok()?);
+        self.take(usize::try_from(len).ok()?)
     }
 }
 
@@ -526,6 +546,6 @@ mod tests {
                 });
             }
         });
-        assert!(read_dir_paths(&d.path().join("tmp")).is_empty(), "no temporaries left");
+        assert!(read_dir_paths(c.path_of(&key(3)).parent().unwrap()).iter().all(|p| !p.file_name().unwrap().to_string_lossy().starts_with(".tmp-")), "no temporaries left");
     }
 }
