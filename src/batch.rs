@@ -203,12 +203,17 @@ pub struct Outcome {
     /// artifacts): from the cache entry on a hit, made beside the compile
     /// otherwise.
     pub hashes: Vec<Key>,
-    /// The compilation, for a unit compiled here, or the failed
-    /// preprocessing (or panic) of any unit: its diagnostics and sources.
-    /// `None` for a cache hit and for a unit that shares another's outputs.
+    /// The compilation of a unit compiled here that failed or said
+    /// something (warnings), or the failed preprocessing (or panic) of any
+    /// unit: its diagnostics and sources. `None` for a unit compiled
+    /// without any diagnostic (its outputs are in `artifacts`), a cache
+    /// hit and a unit that shares another's outputs.
     pub compilation: Option<Compilation>,
     /// Every file read, includes too (for depfiles and `rerun-if-changed`).
     pub files_read: Vec<PathBuf>,
+    /// Where `#include`s and `require`s found no file
+    /// ([`crate::syntax::Unit::probed`]).
+    pub probed: Vec<PathBuf>,
     pub origin: Origin,
     pub key: Option<Key>,
 }
@@ -255,17 +260,17 @@ pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>,
         |i| {
             let u = &units[i];
             let pre = crate::preprocess_file(u.path, &u.opts);
-            let files_read = pre.files_read();
+            let read = (pre.files_read(), pre.probed().to_vec());
             if pre.has_errors() {
-                return (Pre::Failed(Box::new(pre.compile(&u.opts))), files_read, None);
+                return (Pre::Failed(Box::new(pre.compile(&u.opts))), read, None);
             }
             let key = Key::of(&pre, &u.opts, &u.extra);
             match cache.and_then(|c| c.get_entry(&key)) {
-                Some(entry) => (Pre::Hit(entry), files_read, Some(key)),
-                None => (Pre::Miss(Box::new(pre)), files_read, Some(key)),
+                Some(entry) => (Pre::Hit(entry), read, Some(key)),
+                None => (Pre::Miss(Box::new(pre)), read, Some(key)),
             }
         },
-        |i, msg| (Pre::Failed(Box::new(panicked_in(units[i].path, &msg))), Vec::new(), None),
+        |i, msg| (Pre::Failed(Box::new(panicked_in(units[i].path, &msg))), Default::default(), None),
     );
 
     // Each key's first unit is compiled (or was a hit); later ones share it.
@@ -273,24 +278,24 @@ pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>,
     let mut outcomes: Vec<Option<Outcome>> = Vec::with_capacity(units.len());
     let mut to_compile: Vec<(usize, Box<Preprocessed>)> = Vec::new();
     let mut stats = Stats::default();
-    for (i, (pre, files_read, key)) in first.into_iter().enumerate() {
+    for (i, (pre, (files_read, probed), key)) in first.into_iter().enumerate() {
         if let Some(&j) = key.as_ref().and_then(|k| first_of.get(k)) {
             stats.shared += 1;
-            outcomes.push(Some(Outcome { artifacts: None, hashes: Vec::new(), compilation: None, files_read, origin: Origin::SameAs(j), key }));
+            outcomes.push(Some(Outcome { artifacts: None, hashes: Vec::new(), compilation: None, files_read, probed, origin: Origin::SameAs(j), key }));
             continue;
         }
         if let Some(k) = key {
             first_of.insert(k, i);
         }
         outcomes.push(Some(match pre {
-            Pre::Failed(c) => Outcome { artifacts: None, hashes: Vec::new(), compilation: Some(*c), files_read, origin: Origin::Compiled, key },
+            Pre::Failed(c) => Outcome { artifacts: None, hashes: Vec::new(), compilation: Some(*c), files_read, probed, origin: Origin::Compiled, key },
             Pre::Hit(entry) => {
                 stats.cached += 1;
-                Outcome { artifacts: Some(entry.artifacts), hashes: entry.hashes, compilation: None, files_read, origin: Origin::Cached, key }
+                Outcome { artifacts: Some(entry.artifacts), hashes: entry.hashes, compilation: None, files_read, probed, origin: Origin::Cached, key }
             }
             Pre::Miss(pre) => {
                 to_compile.push((i, pre));
-                Outcome { artifacts: None, hashes: Vec::new(), compilation: None, files_read, origin: Origin::Compiled, key }
+                Outcome { artifacts: None, hashes: Vec::new(), compilation: None, files_read, probed, origin: Origin::Compiled, key }
             }
         }));
     }
@@ -305,13 +310,20 @@ pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>,
             let u = &units[i];
             let pre = pres[n].lock().ok().and_then(|mut p| p.take()).expect("each unit is compiled once");
             let mut c = pre.compile(&u.opts);
-            let mut artifacts = c.result.as_ref().filter(|_| !c.has_errors()).map(|r| r.artifacts.clone());
-            if let (Some(arts), Some(derive), Some(result)) = (artifacts.as_mut(), derive, c.result.as_ref()) {
-                match derive(i, result) {
-                    Ok(more) => arts.extend(more),
-                    Err(msg) => {
-                        c.diagnostics.push(Diagnostic::error_nowhere(format!("{}: {msg}", u.path.display())));
-                        artifacts = None;
+            let mut artifacts = None;
+            if !c.has_errors() {
+                if let Some(result) = c.result.as_mut() {
+                    // The derived outputs see the compiled outputs, then
+                    // they move out (no copy).
+                    let derived = derive.map(|d| d(i, result));
+                    let mut arts = std::mem::take(&mut result.artifacts);
+                    match derived {
+                        None => artifacts = Some(arts),
+                        Some(Ok(more)) => {
+                            arts.extend(more);
+                            artifacts = Some(arts);
+                        }
+                        Some(Err(msg)) => c.diagnostics.push(Diagnostic::error_nowhere(format!("{}: {msg}", u.path.display()))),
                     }
                 }
             }
@@ -324,9 +336,13 @@ pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>,
                 }
                 _ => None,
             };
+            // A compile that said nothing has nothing more to report: its
+            // tree (the lowered modules) is freed here, on this worker,
+            // not all at once at the end of the batch.
+            let c = if artifacts.is_some() && c.diagnostics.is_empty() { None } else { Some(c) };
             (c, artifacts, hashes, stored)
         },
-        |n, msg| (panicked_in(units[indices[n]].path, &msg), None, Vec::new(), None),
+        |n, msg| (Some(panicked_in(units[indices[n]].path, &msg)), None, Vec::new(), None),
     );
     for (i, (c, artifacts, hashes, stored)) in indices.into_iter().zip(compiled) {
         stats.compiled += 1;
@@ -340,7 +356,7 @@ pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>,
         if let Some(o) = outcomes[i].as_mut() {
             o.artifacts = artifacts;
             o.hashes = hashes;
-            o.compilation = Some(c);
+            o.compilation = c;
         }
     }
     let mut outcomes: Vec<Outcome> = outcomes.into_iter().map(|o| o.expect("every unit has an outcome")).collect();

@@ -191,18 +191,30 @@ impl Batch {
     /// of every output, paths relative to the output directory. Sorted
     /// (variants in spec order), so it is byte-identical across runs.
     pub fn variants_json(&self) -> String {
-        let mut variants = Vec::new();
+        // Written directly in serde_json's pretty layout (two-space
+        // indents, keys sorted): building a `serde_json::Value` of 256
+        // variants and printing it took milliseconds of a warm run.
+        let mut by_variant: Vec<Vec<usize>> = vec![Vec::new(); self.variants.len()];
+        for (j, job) in self.jobs.iter().enumerate() {
+            if let Some(v) = job.variant {
+                by_variant[v].push(j);
+            }
+        }
+        let mut out: Vec<u8> = Vec::with_capacity(1024 + 800 * self.jobs.len());
+        let string = |out: &mut Vec<u8>, s: &str| {
+            // Escaping as JSON requires; writing to a Vec cannot fail.
+            let _ = serde_json::to_writer(&mut *out, s);
+        };
+        out.extend_from_slice(b"{\n  \"format\": 1,\n  \"variants\": [");
         for (vi, v) in self.variants.iter().enumerate() {
             let mut outputs = BTreeMap::new();
             let mut same_as = None;
-            for (j, job) in self.jobs.iter().enumerate() {
-                if job.variant != Some(vi) {
-                    continue;
-                }
+            for &j in &by_variant[vi] {
+                let job = &self.jobs[j];
                 let o = &self.outcomes[j];
                 if let batch::Origin::SameAs(k) = o.origin {
                     if let Some(kv) = self.jobs[k].variant.filter(|&kv| kv != vi) {
-                        same_as.get_or_insert(self.variants[kv].name.clone());
+                        same_as.get_or_insert(self.variants[kv].name.as_str());
                     }
                 }
                 let sub = &self.inputs[job.input].subdir;
@@ -210,23 +222,51 @@ impl Batch {
                 for (a, hash) in o.artifacts.iter().flatten().zip(&o.hashes) {
                     let mut rel: Vec<String> = sub.components().map(|c| c.as_os_str().to_string_lossy().into_owned()).collect();
                     rel.push(a.file_name.clone());
-                    outputs.insert(rel.join("/"), format!("sha256:{}", hash.hex()));
+                    outputs.insert(rel.join("/"), hash);
                 }
             }
-            let defines: serde_json::Map<String, serde_json::Value> =
-                v.defines.iter().map(|(n, val)| (n.clone(), val.clone().map_or(serde_json::Value::Null, serde_json::Value::String))).collect();
-            variants.push(serde_json::json!({
-                "name": v.name,
-                "defines": defines,
-                "dir": v.name,
-                "same_source_as": same_as,
-                "outputs": outputs,
-            }));
+            out.extend_from_slice(if vi == 0 { b"\n    {\n      \"defines\": " } else { b",\n    {\n      \"defines\": " });
+            let defines: BTreeMap<&str, Option<&str>> = v.defines.iter().map(|(n, val)| (n.as_str(), val.as_deref())).collect();
+            if defines.is_empty() {
+                out.extend_from_slice(b"{}");
+            } else {
+                for (i, (n, val)) in defines.iter().enumerate() {
+                    out.extend_from_slice(if i == 0 { b"{\n        " } else { b",\n        " });
+                    string(&mut out, n);
+                    out.extend_from_slice(b": ");
+                    match val {
+                        Some(val) => string(&mut out, val),
+                        None => out.extend_from_slice(b"null"),
+                    }
+                }
+                out.extend_from_slice(b"\n      }");
+            }
+            out.extend_from_slice(b",\n      \"dir\": ");
+            string(&mut out, &v.name);
+            out.extend_from_slice(b",\n      \"name\": ");
+            string(&mut out, &v.name);
+            out.extend_from_slice(b",\n      \"outputs\": ");
+            if outputs.is_empty() {
+                out.extend_from_slice(b"{}");
+            } else {
+                for (i, (path, hash)) in outputs.iter().enumerate() {
+                    out.extend_from_slice(if i == 0 { b"{\n        " } else { b",\n        " });
+                    string(&mut out, path);
+                    out.extend_from_slice(b": \"sha256:");
+                    out.extend_from_slice(hash.hex().as_bytes());
+                    out.push(b'"');
+                }
+                out.extend_from_slice(b"\n      }");
+            }
+            out.extend_from_slice(b",\n      \"same_source_as\": ");
+            match same_as {
+                Some(name) => string(&mut out, name),
+                None => out.extend_from_slice(b"null"),
+            }
+            out.extend_from_slice(b"\n    }");
         }
-        let doc = serde_json::json!({ "format": 1, "variants": variants });
-        let mut s = serde_json::to_string_pretty(&doc).unwrap_or_default();
-        s.push('\n');
-        s
+        out.extend_from_slice(if self.variants.is_empty() { b"]\n}\n" } else { b"\n  ]\n}\n" });
+        String::from_utf8(out).expect("JSON text is UTF-8")
     }
 
     /// Every file any job read, sorted, without repeats, without `./`
@@ -254,9 +294,21 @@ pub fn variants_artifact(batch: &Batch) -> Artifact {
 }
 
 /// Writes a job's outputs into `dir`: the files whose bytes changed
-/// atomically, and for the others only a new modification time, as if
-/// rewritten (make and ninja compare times), which saves a warm run from
-/// rewriting every file ([`crate::output::write_outputs`]).
-pub fn write_outputs(dir: &Path, artifacts: &[Artifact]) -> Result<(), crate::output::OutputError> {
-    crate::output::write_outputs(dir, artifacts, crate::output::Unchanged::Touch)
+/// atomically, and for the others, where they are not newer than
+/// `newest_input` (or always without it), only a new modification time, as
+/// if rewritten (make and ninja compare times). A warm run so rewrites
+/// nothing, and with `known` reads back only files no stamp vouches for
+/// ([`crate::output::write_outputs_known`]).
+pub fn write_outputs(dir: &Path, artifacts: &[Artifact], newest_input: Option<std::time::SystemTime>, known: Option<&crate::output::Known<'_>>) -> Result<(), crate::output::OutputError> {
+    let unchanged = match newest_input {
+        Some(t) => crate::output::Unchanged::TouchUnlessNewerThan(t),
+        None => crate::output::Unchanged::Touch,
+    };
+    crate::output::write_outputs_known(dir, artifacts, unchanged, known)
+}
+
+/// The newest modification time of `files` (`None` if one cannot be read:
+/// then every unchanged output is touched).
+pub fn newest_mtime(files: &[PathBuf]) -> Option<std::time::SystemTime> {
+    files.iter().try_fold(std::time::UNIX_EPOCH, |newest, f| std::fs::metadata(f).and_then(|m| m.modified()).ok().map(|t| t.max(newest)))
 }
