@@ -350,6 +350,12 @@ impl Build {
             }
         }
 
+        // Which outputs already on disk need not be read back (see
+        // `output::stamps`): kept beside the cache.
+        let stamps = match &cache {
+            Some(c) => crate::output::stamps::Stamps::load(c.dir(), &out_root),
+            None => Default::default(),
+        };
         let mut failed = Vec::new();
         let mut details = String::new();
         let mut built = Vec::new();
@@ -373,17 +379,30 @@ impl Build {
                 failed.push(v.file.display().to_string());
                 continue;
             };
-            let (outputs, bindings): (Vec<Artifact>, Vec<Artifact>) = artifacts.iter().cloned().partition(|a| a.file_name != BINDINGS);
+            let hashed = o.hashes.len() == artifacts.len();
+            let (mut outputs, mut output_hashes, mut bindings) = (Vec::new(), Vec::new(), Vec::new());
+            for (i, a) in artifacts.iter().enumerate() {
+                let hash = o.hashes.get(i).copied();
+                if a.file_name == BINDINGS {
+                    bindings.push((a.clone(), hash));
+                } else {
+                    outputs.push(a.clone());
+                    output_hashes.extend(hash);
+                }
+            }
             let (dir, module_dir) = match &p.group {
                 None => (out_root.join(&v.name), out_root.clone()),
                 Some(g) => (out_root.join(g).join(&v.name), out_root.join(g)),
             };
-            write(&dir, &outputs)?;
+            let known = hashed.then_some(crate::output::Known { hashes: &output_hashes, stamps: &stamps });
+            write(&dir, &outputs, known.as_ref())?;
             remove_stale(&dir, &outputs);
             let module = match bindings.into_iter().next() {
-                Some(b) => {
+                Some((b, hash)) => {
                     let file_name = format!("{}.rs", v.name);
-                    write(&module_dir, &[Artifact { file_name: file_name.clone(), ..b }])?;
+                    let hash: Vec<crate::cache::Key> = hash.into_iter().collect();
+                    let known = hashed.then_some(crate::output::Known { hashes: &hash, stamps: &stamps });
+                    write(&module_dir, &[Artifact { file_name: file_name.clone(), ..b }], known.as_ref())?;
                     match &p.group {
                         None => modules.push(file_name),
                         Some(g) => {
@@ -401,6 +420,7 @@ impl Build {
             };
             built.push(Built { variant: v.clone(), dir, module, files_read });
         }
+        stamps.save();
         for f in &rerun {
             self.cargo(&format!("rerun-if-changed={}", f.display()));
         }
@@ -428,7 +448,7 @@ impl Build {
                 text.push_str(&format!("        ({name:?}, {defines:?}),\n"));
             }
             text.push_str("    ];\n}\n");
-            write(&out_root, &[Artifact { file_name: format!("{g}.rs"), target: None, entry: None, contents: text.into_bytes() }])?;
+            write(&out_root, &[Artifact { file_name: format!("{g}.rs"), target: None, entry: None, contents: text.into_bytes() }], None)?;
         }
         let index = if self.no_bindings {
             None
@@ -437,7 +457,7 @@ impl Build {
             for m in &modules {
                 text.push_str(&include_of(m));
             }
-            write(&out_root, &[Artifact { file_name: "shaders.rs".into(), target: None, entry: None, contents: text.into_bytes() }])?;
+            write(&out_root, &[Artifact { file_name: "shaders.rs".into(), target: None, entry: None, contents: text.into_bytes() }], None)?;
             Some(out_root.join("shaders.rs"))
         };
         Ok(Output { built, index })
@@ -513,6 +533,6 @@ fn remove_stale(dir: &Path, artifacts: &[Artifact]) {
 }
 
 /// Writes files atomically, leaving unchanged ones alone (their mtimes too).
-fn write(dir: &Path, artifacts: &[Artifact]) -> Result<(), Error> {
-    crate::output::write_outputs(dir, artifacts, crate::output::Unchanged::Leave).map_err(|e| Error { summary: format!("umbrac: {e}"), details: String::new() })
+fn write(dir: &Path, artifacts: &[Artifact], known: Option<&crate::output::Known<'_>>) -> Result<(), Error> {
+    crate::output::write_outputs_known(dir, artifacts, crate::output::Unchanged::Leave, known).map_err(|e| Error { summary: format!("umbrac: {e}"), details: String::new() })
 }

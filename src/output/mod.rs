@@ -37,6 +37,19 @@ use std::sync::atomic::{AtomicU32, Ordering};
 
 use crate::target::Artifact;
 
+pub mod stamps;
+
+/// What a destination held before a write.
+enum Previous {
+    /// Nothing: the file is new.
+    Absent,
+    /// These bytes.
+    Held(Vec<u8>),
+    /// Exactly the artifact's bytes, by a trusted stamp (not read; never
+    /// replaced, so never restored).
+    Same,
+}
+
 /// Why outputs could not be written. Nothing was changed on disk.
 #[derive(Debug)]
 pub struct OutputError {
@@ -66,9 +79,23 @@ pub enum Unchanged {
     /// rewritten: make and ninja compare times, and would otherwise run the
     /// compile again on every build.
     Touch,
+    /// [`Unchanged::Touch`] where the file is not newer than the given
+    /// time (the newest of the files the compile read), and left alone
+    /// where it is: make and ninja already see it as up to date, and a
+    /// warm run then changes nothing on disk.
+    TouchUnlessNewerThan(std::time::SystemTime),
     /// Leave it alone, modification time too: cargo rebuilds a crate whose
     /// `include_str!`ed files have a new time.
     Leave,
+}
+
+/// What a caller already knows of the artifacts it writes: the SHA-256 of
+/// each one's contents (in order), and the [`stamps::Stamps`] of the
+/// files already there, so that a file known to hold those bytes is not
+/// read back.
+pub struct Known<'a> {
+    pub hashes: &'a [crate::cache::Key],
+    pub stamps: &'a stamps::Stamps,
 }
 
 /// Writes every artifact into `dir`, all or nothing (see the module docs).
@@ -82,6 +109,16 @@ pub fn write_artifacts(dir: &Path, artifacts: &[Artifact]) -> Result<(), OutputE
 /// compiles of different versions decide against each other's finished
 /// output, never against a set another one is halfway through replacing.
 pub fn write_outputs(dir: &Path, artifacts: &[Artifact], unchanged: Unchanged) -> Result<(), OutputError> {
+    write_outputs_known(dir, artifacts, unchanged, None)
+}
+
+/// [`write_outputs`], with what the caller knows of the artifacts (see
+/// [`Known`]): an existing file a trusted stamp says holds an artifact's
+/// bytes is not read, and a file read and found to hold them is stamped.
+pub fn write_outputs_known(dir: &Path, artifacts: &[Artifact], unchanged: Unchanged, known: Option<&Known<'_>>) -> Result<(), OutputError> {
+    if let Some(k) = known {
+        assert_eq!(k.hashes.len(), artifacts.len(), "one hash per artifact");
+    }
     // Names come from entry point names; refuse anything that is not a
     // plain file name so nothing is ever written outside `dir`.
     for a in artifacts {
@@ -103,40 +140,74 @@ pub fn write_outputs(dir: &Path, artifacts: &[Artifact], unchanged: Unchanged) -
         Err(_) => std::fs::create_dir_all(dir).map_err(|e| err(dir, format!("cannot create the output directory: {e}")))?,
     }
 
-    remove_stale_temps(dir);
-
     // From here to the last rename, no other writer (another process
     // compiling into the same directory) can rename in between: one
     // compile's outputs replace another's as a set.
     let _lock = DirLock::acquire(dir).map_err(|e| err(dir, format!("cannot lock the output directory: {e}")))?;
 
-    // Previous contents of each destination, for rollback and to see
-    // which are unchanged.
-    let mut previous: Vec<Option<Vec<u8>>> = Vec::with_capacity(artifacts.len());
-    for a in artifacts {
+    // What each destination holds now, for rollback and to see which are
+    // unchanged.
+    let mut previous: Vec<Previous> = Vec::with_capacity(artifacts.len());
+    let mut modified: Vec<Option<std::time::SystemTime>> = Vec::with_capacity(artifacts.len());
+    for (i, a) in artifacts.iter().enumerate() {
         let dest = dir.join(&a.file_name);
+        let taken = stamps::now_ns();
         match std::fs::symlink_metadata(&dest) {
-            Ok(m) if m.is_file() => previous.push(Some(std::fs::read(&dest).map_err(|e| err(&dest, e.to_string()))?)),
+            Ok(m) if m.is_file() => {
+                modified.push(m.modified().ok());
+                let state = stamps::FileState::of(&m);
+                let hash = known.map(|k| k.hashes[i]);
+                if let (Some(k), Some(state), Some(hash)) = (known, state, hash) {
+                    if k.stamps.hash_of(&dest, &state) == Some(hash) {
+                        previous.push(Previous::Same);
+                        continue;
+                    }
+                }
+                let bytes = std::fs::read(&dest).map_err(|e| err(&dest, e.to_string()))?;
+                if let (Some(k), Some(state), Some(hash)) = (known, state, hash) {
+                    if bytes == a.contents {
+                        k.stamps.record(&dest, state, hash, taken);
+                    }
+                }
+                previous.push(Previous::Held(bytes));
+            }
             Ok(_) => return Err(err(&dest, "exists and is not a regular file")),
-            Err(e) if e.kind() == std::io::ErrorKind::NotFound => previous.push(None),
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+                modified.push(None);
+                previous.push(Previous::Absent);
+            }
             Err(e) => return Err(err(&dest, e.to_string())),
         }
     }
     let now = std::time::SystemTime::now();
     let todo: Vec<usize> = (0..artifacts.len())
         .filter(|&i| {
-            let same = previous[i].as_deref() == Some(&artifacts[i].contents[..]);
-            match (same, unchanged) {
-                (false, _) | (true, Unchanged::Rewrite) => true,
-                (true, Unchanged::Leave) => false,
-                // A file that cannot be touched is rewritten instead.
-                (true, Unchanged::Touch) => {
-                    let dest = dir.join(&artifacts[i].file_name);
-                    std::fs::File::options().write(true).open(&dest).and_then(|f| f.set_modified(now)).is_err()
-                }
+            let same = match &previous[i] {
+                Previous::Same => true,
+                Previous::Held(bytes) => bytes[..] == artifacts[i].contents[..],
+                Previous::Absent => false,
+            };
+            let touch = match (same, unchanged) {
+                (false, _) | (true, Unchanged::Rewrite) => return true,
+                (true, Unchanged::Leave) => return false,
+                (true, Unchanged::Touch) => true,
+                (true, Unchanged::TouchUnlessNewerThan(newest)) => modified[i].is_none_or(|m| m <= newest),
+            };
+            if !touch {
+                return false;
             }
+            // A file that cannot be touched is rewritten instead. Its
+            // status-change time moves, so an old stamp no longer holds.
+            let dest = dir.join(&artifacts[i].file_name);
+            if let Some(k) = known {
+                k.stamps.forget(&dest);
+            }
+            std::fs::File::options().write(true).open(&dest).and_then(|f| f.set_modified(now)).is_err()
         })
         .collect();
+    if !todo.is_empty() {
+        remove_stale_temps(dir);
+    }
 
     // Write every temporary before touching any destination. A `TempFile`
     // deletes itself when dropped, so every early return below cleans up.
@@ -160,6 +231,9 @@ pub fn write_outputs(dir: &Path, artifacts: &[Artifact], unchanged: Unchanged) -
         if let Err(e) = result {
             rollback(dir, artifacts, &previous, &done);
             return Err(err(&dest, e.to_string()));
+        }
+        if let Some(k) = known {
+            k.stamps.forget(&dest);
         }
         done.push(i);
     }
@@ -321,18 +395,20 @@ fn process_alive(pid: u32, temp: &std::fs::DirEntry) -> bool {
 }
 
 /// Puts back what the destinations in `done` held before.
-fn rollback(dir: &Path, artifacts: &[Artifact], previous: &[Option<Vec<u8>>], done: &[usize]) {
+fn rollback(dir: &Path, artifacts: &[Artifact], previous: &[Previous], done: &[usize]) {
     for &i in done {
         let dest = dir.join(&artifacts[i].file_name);
-        match &previous[i] {
-            Some(old) => {
-                if let Ok(t) = write_temp(dir, old) {
-                    let _ = t.persist(&dest);
-                }
-            }
-            None => {
+        let old = match &previous[i] {
+            Previous::Held(old) => old,
+            // It held the artifact's own bytes.
+            Previous::Same => &artifacts[i].contents,
+            Previous::Absent => {
                 let _ = std::fs::remove_file(&dest);
+                continue;
             }
+        };
+        if let Ok(t) = write_temp(dir, old) {
+            let _ = t.persist(&dest);
         }
     }
 }
