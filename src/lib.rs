@@ -27,6 +27,7 @@ pub mod emit;
 pub mod golden;
 pub mod lower;
 pub mod output;
+pub mod rerun;
 pub mod sema;
 pub mod source;
 pub mod syntax;
@@ -277,6 +278,12 @@ impl Preprocessed {
     /// Paths of every file read, as [`Compilation::files_read`] gives them.
     pub fn files_read(&self) -> Vec<PathBuf> {
         self.sources.files().filter_map(|(_, f)| f.path.clone()).collect()
+    }
+
+    /// Paths `#include`s and `require`s found no file at (see
+    /// [`syntax::Unit::probed`]).
+    pub fn probed(&self) -> &[PathBuf] {
+        &self.unit.probed
     }
 
     /// Goes on from preprocessing to every output (`opts` must be the

@@ -504,6 +504,31 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
     };
     let opts = args.common.options(targets);
     let cache = args.batch.cache();
+    let dir = args.out.clone().unwrap_or_else(|| PathBuf::from("."));
+    // A rerun that would change nothing ends here (src/rerun.rs).
+    let run_key = (!to_stdout).then(|| run_key(args, &inputs, &variants, &opts, &dir));
+    if let (Some(c), Some(key)) = (&cache, &run_key) {
+        if let Some(rec) = umbrac::rerun::Record::load(c, key) {
+            let stamps = umbrac::output::stamps::Stamps::load(c.dir(), &dir);
+            if rec.still_holds(&stamps, args.batch.workers()) {
+                watched.files.extend(rec.files.iter().map(|(p, _)| p.clone()));
+                if args.batch.verbose {
+                    let [jobs, compiled, cached, shared] = rec.counts;
+                    eprintln!(
+                        "umbrac: {jobs} jobs: nothing to do, every file read and every output is as the last run left them (that run: {compiled} compiled, {cached} from the cache, {shared} same as another; cache {})",
+                        c.dir().display()
+                    );
+                }
+                if let Some((path, text)) = &rec.depfile {
+                    if let Err(e) = write_file(path, text.clone()) {
+                        reporter.plain(&Diagnostic::error_nowhere(e));
+                        return (EXIT_ERROR, watched);
+                    }
+                }
+                return (0, watched);
+            }
+        }
+    }
     let settings = umbrac::jobs::Settings { options: &opts, workers: args.batch.workers(), cache: cache.as_ref() };
     let batch = umbrac::jobs::Batch::compile(inputs, variants, &settings, None);
     watched.files.extend(batch.files_read());
@@ -530,7 +555,6 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
         return (code, watched);
     }
 
-    let dir = args.out.clone().unwrap_or_else(|| PathBuf::from("."));
     // Which job writes where; an output two jobs would write is an error.
     let mut owner: std::collections::HashMap<PathBuf, &Path> = Default::default();
     let mut to_write: Vec<(usize, PathBuf)> = Vec::new();
@@ -571,22 +595,39 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
         owner.extend(artifacts.iter().map(|a| (out_dir.join(&a.file_name), path.as_path())));
         to_write.push((j, out_dir));
     }
+    // An unchanged output newer than every file read is left alone; the
+    // cache's stamps say which outputs need not be read back to see that.
+    let mut inputs_read = batch.files_read();
+    inputs_read.extend(args.variants.iter().cloned());
+    let newest_input = umbrac::jobs::newest_mtime(&inputs_read);
+    let stamps = match &cache {
+        Some(c) if !to_write.is_empty() => umbrac::output::stamps::Stamps::load(c.dir(), &dir),
+        _ => Default::default(),
+    };
     // Each directory atomically, several at once (file system calls block
-    // now and then, and a warm run reads every previous output back).
+    // now and then).
     let results = umbrac::batch::parallel_map(
         to_write.len(),
         WRITERS,
         |k| {
             let (j, out_dir) = &to_write[k];
-            umbrac::jobs::write_outputs(out_dir, batch.outcomes[*j].artifacts.as_deref().unwrap_or_default()).map_err(|e| e.to_string())
+            let o = &batch.outcomes[*j];
+            let artifacts = o.artifacts.as_deref().unwrap_or_default();
+            let known = (o.hashes.len() == artifacts.len()).then_some(umbrac::output::Known { hashes: &o.hashes, stamps: &stamps });
+            umbrac::jobs::write_outputs(out_dir, artifacts, newest_input, known.as_ref()).map_err(|e| e.to_string())
         },
         |_, msg| Err(format!("writing panicked: {msg}")),
     );
     let mut written: Vec<(PathBuf, &Path)> = Vec::new();
+    let mut written_hashes: Vec<(PathBuf, umbrac::cache::Key)> = Vec::new();
     for ((j, out_dir), result) in to_write.iter().zip(results) {
         let path = &batch.inputs[batch.jobs[*j].input].path;
         match result {
-            Ok(()) => written.extend(batch.outcomes[*j].artifacts.iter().flatten().map(|a| (out_dir.join(&a.file_name), path.as_path()))),
+            Ok(()) => {
+                let o = &batch.outcomes[*j];
+                written.extend(o.artifacts.iter().flatten().map(|a| (out_dir.join(&a.file_name), path.as_path())));
+                written_hashes.extend(o.artifacts.iter().flatten().zip(&o.hashes).map(|(a, h)| (out_dir.join(&a.file_name), *h)));
+            }
             Err(e) => {
                 reporter.plain(&Diagnostic::error_nowhere(format!("{e}; no output of `{}` was changed", path.display())));
                 code = code.max(EXIT_ERROR);
@@ -598,24 +639,48 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
     }
     if !batch.variants.is_empty() && code == 0 {
         let manifest = umbrac::jobs::variants_artifact(&batch);
-        match umbrac::jobs::write_outputs(&dir, std::slice::from_ref(&manifest)) {
-            Ok(()) => written.push((dir.join(&manifest.file_name), Path::new(""))),
+        let hash = [umbrac::cache::Key::of_bytes(&manifest.contents)];
+        let known = umbrac::output::Known { hashes: &hash, stamps: &stamps };
+        match umbrac::jobs::write_outputs(&dir, std::slice::from_ref(&manifest), newest_input, Some(&known)) {
+            Ok(()) => {
+                written.push((dir.join(&manifest.file_name), Path::new("")));
+                written_hashes.push((dir.join(&manifest.file_name), hash[0]));
+            }
             Err(e) => {
                 reporter.plain(&Diagnostic::error_nowhere(e.to_string()));
                 code = code.max(EXIT_ERROR);
             }
         }
     }
+    stamps.save();
     // Like `gcc -MD`: a depfile only for a build that succeeded.
+    let mut depfile_text = None;
     if let (Some(depfile), 0) = (&args.depfile, code) {
         let targets: Vec<PathBuf> = written.iter().map(|(p, _)| p.clone()).collect();
         let mut prerequisites = batch.files_read();
         prerequisites.extend(args.variants.iter().cloned());
-        let text = umbrac::depfile::render(&targets, &prerequisites);
-        if let Err(e) = write_file(depfile, text.into_bytes()) {
+        let text = umbrac::depfile::render(&targets, &prerequisites).into_bytes();
+        if let Err(e) = write_file(depfile, text.clone()) {
             reporter.plain(&Diagnostic::error_nowhere(e));
             code = code.max(EXIT_ERROR);
         }
+        depfile_text = Some((depfile.clone(), text));
+    }
+    // What the next run needs to see that it would change nothing.
+    if let (0, Some(c), Some(key)) = (code, &cache, &run_key) {
+        let mut files = Vec::new();
+        for f in inputs_read.iter() {
+            match std::fs::read(f) {
+                Ok(bytes) => files.push((f.clone(), umbrac::cache::Key::of_bytes(&bytes))),
+                Err(_) => return (code, watched),
+            }
+        }
+        let mut probed: Vec<PathBuf> = batch.outcomes.iter().flat_map(|o| o.probed.iter().cloned()).collect();
+        probed.sort();
+        probed.dedup();
+        let s = &batch.stats;
+        let counts = [batch.jobs.len() as u64, s.compiled as u64, s.cached as u64, s.shared as u64];
+        umbrac::rerun::Record { files, probed, outputs: written_hashes, depfile: depfile_text, counts }.save(c, key);
     }
     (code, watched)
 }
@@ -658,6 +723,23 @@ fn report_stats(args: &BatchArgs, batch: &umbrac::jobs::Batch, cache: Option<&um
             c.trim();
         }
     }
+}
+
+/// The key of a compile command's whole configuration (src/rerun.rs):
+/// where it runs, what it reads, how and where it writes.
+fn run_key(args: &CompileArgs, inputs: &[umbrac::jobs::Input], variants: &[umbrac::variants::Variant], opts: &umbrac::Options, dir: &Path) -> umbrac::cache::Key {
+    let cwd = std::env::current_dir().unwrap_or_default();
+    let parts = [
+        format!("{cwd:?}"),
+        format!("{inputs:?}"),
+        format!("{variants:?}"),
+        format!("{:?}", args.variants),
+        format!("{opts:?}"),
+        format!("{dir:?}"),
+        format!("{:?}", args.depfile),
+    ];
+    let bytes: Vec<&[u8]> = parts.iter().map(|p| p.as_bytes()).collect();
+    umbrac::rerun::key(&bytes)
 }
 
 /// Writes one file atomically.

@@ -167,15 +167,19 @@ pub struct Unit {
     pub tokens: Vec<token::Token>,
     pub items: Vec<items::RawItem>,
     pub modules_not_found: Vec<modules::MissingModule>,
+    /// Paths `#include`s and `require`s looked at and found no file at:
+    /// one appearing there would change the unit (a rerun's check,
+    /// [`crate::rerun`]).
+    pub probed: Vec<std::path::PathBuf>,
 }
 
 /// Preprocesses the root file, splits it into items and reads the modules
 /// it requires (as far as shaders reach into them).
 pub fn preprocess_unit(map: &mut SourceMap, root: FileId, opts: &ParseOptions, diags: &mut Diagnostics) -> Unit {
-    let mut tokens = preprocess::preprocess(map, root, opts, diags);
+    let (mut tokens, mut probed) = preprocess::preprocess_probing(map, root, opts, diags);
     let mut items = items::split(&tokens, map);
-    let modules_not_found = modules::load(map, root, &mut tokens, &mut items, opts, diags);
-    Unit { tokens, items, modules_not_found }
+    let modules_not_found = modules::load(map, root, &mut tokens, &mut items, opts, diags, &mut probed);
+    Unit { tokens, items, modules_not_found, probed }
 }
 
 /// The rest of [`parse`] after [`preprocess_unit`]: keeps what shaders
@@ -184,7 +188,7 @@ pub fn preprocess_unit(map: &mut SourceMap, root: FileId, opts: &ParseOptions, d
 pub fn parse_unit(map: &SourceMap, root: FileId, unit: Unit, opts: &ParseOptions, diags: &mut Diagnostics) -> ast::Program {
     let base = map.file(root).base;
     let root_span = Span::new(base, base);
-    let Unit { tokens: toks, items: raw, modules_not_found } = unit;
+    let Unit { tokens: toks, items: raw, modules_not_found, .. } = unit;
     let selected = items::select(&raw, &toks, map, &opts.entries, root_span, diags);
     let texts = token::Texts::new(map);
     let mut program = ast::Program { items: Vec::with_capacity(selected.len()), modules_not_found };

@@ -142,7 +142,10 @@ struct Module {
 /// Reads the modules the program's `require`s name as far as shaders reach
 /// into them: appends their tokens to `toks` and their items to `raw`
 /// (marked `from_module`), and returns the modules not found.
-pub(super) fn load(map: &mut SourceMap, root: FileId, toks: &mut Vec<Token>, raw: &mut Vec<RawItem>, opts: &ParseOptions, diags: &mut Diagnostics) -> Vec<MissingModule> {
+///
+/// `probed` gets every path a `require` looked at and found no module file
+/// at, before the one it took (or at all).
+pub(super) fn load(map: &mut SourceMap, root: FileId, toks: &mut Vec<Token>, raw: &mut Vec<RawItem>, opts: &ParseOptions, diags: &mut Diagnostics, probed: &mut Vec<PathBuf>) -> Vec<MissingModule> {
     let mut missing: Vec<MissingModule> = Vec::new();
     let mut modules: Vec<Module> = Vec::new();
     let mut seen: Vec<PathBuf> = Vec::new();
@@ -159,7 +162,9 @@ pub(super) fn load(map: &mut SourceMap, root: FileId, toks: &mut Vec<Token>, raw
             }
             let requiring_dir = map.file_of(req.span.start).and_then(|f| map.file(f).path.as_deref().map(parent_dir)).unwrap_or_else(|| root_dir.clone());
             let (cands, help) = candidates(&req.name, &requiring_dir, opts);
-            let Some(path) = cands.iter().find(|p| p.is_file()).cloned() else {
+            let taken = cands.iter().position(|p| p.is_file());
+            probed.extend(cands[..taken.unwrap_or(cands.len())].iter().cloned());
+            let Some(path) = taken.map(|i| cands[i].clone()) else {
                 if let Some(dir) = cands.iter().find(|p| p.is_dir()) {
                     diags.push(Diagnostic::error(format!("`{}` is a directory, not a module file", dir.display()), req.span).with_label("required here"));
                     continue;

@@ -78,6 +78,9 @@ struct Pp<'a> {
     overflowed: bool,
     /// `#define`s seen so far (the next macro's id).
     macros_defined: usize,
+    /// Paths an `#include` looked for and did not find as a file before
+    /// the one it took: a file appearing there would change the unit.
+    probed: Vec<PathBuf>,
     /// Bit `len % 64` is set for the length of every name ever defined: a
     /// cheap first test before looking an identifier up in `defines`.
     macro_lens: u64,
@@ -86,6 +89,12 @@ struct Pp<'a> {
 /// Preprocesses the root file (already in the map) and returns the token
 /// stream of the whole translation unit, ending in a `Newline`.
 pub fn preprocess(map: &mut SourceMap, root: FileId, opts: &ParseOptions, diags: &mut Diagnostics) -> Vec<Token> {
+    preprocess_probing(map, root, opts, diags).0
+}
+
+/// [`preprocess`], and the paths its `#include`s found no file at before
+/// the one each took (or at all).
+pub fn preprocess_probing(map: &mut SourceMap, root: FileId, opts: &ParseOptions, diags: &mut Diagnostics) -> (Vec<Token>, Vec<PathBuf>) {
     let total_size = map.file(root).text.len();
     let mut pp = Pp {
         map,
@@ -101,6 +110,7 @@ pub fn preprocess(map: &mut SourceMap, root: FileId, opts: &ParseOptions, diags:
         overflowed: false,
         macros_defined: 0,
         macro_lens: 0,
+        probed: Vec::new(),
     };
     if !opts.defines.is_empty() {
         let mut text = String::new();
@@ -117,7 +127,7 @@ pub fn preprocess(map: &mut SourceMap, root: FileId, opts: &ParseOptions, diags:
         pp.out.clear();
     }
     pp.file(root, 0);
-    pp.out
+    (pp.out, pp.probed)
 }
 
 /// The directory of a path, `.` for a bare file name.
@@ -487,6 +497,7 @@ impl Pp<'_> {
             }
             searched.push(cand);
         }
+        self.probed.extend(searched.iter().cloned());
         let Some(path) = found else {
             let mut d = Diagnostic::error(format!("cannot find include file `{name}`"), target.span).with_label("not found");
             for p in &searched {

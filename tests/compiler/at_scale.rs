@@ -82,7 +82,7 @@ fn counts(o: &std::process::Output) -> (usize, usize, usize) {
 #[test]
 fn variants_go_to_their_directories_with_a_manifest_and_equal_sources_compile_once() {
     let p = Project::new();
-    p.write("spec.toml", "[variant.bright]\ndefines = { SCALE = \"4.0\" }\n\n[variant.unused]\ndefines = { SCALE = \"1.0\", NOT_READ = \"\" }\n\n[axes]\nSCALE = [\"1.0\", \"2.0\"]\nDOUBLE = [false, true]\n");
+    p.write("spec.toml", "[variant.bright]\ndefines = { SCALE = \"4.0\", NOTE = \"say \\\"hi\\\" \\\\ tab\\t\" }\n\n[variant.unused]\ndefines = { SCALE = \"1.0\", NOT_READ = \"\" }\n\n[axes]\nSCALE = [\"1.0\", \"2.0\"]\nDOUBLE = [false, true]\n");
     let o = p.run(&["compile", "tint.das", "--variants", "spec.toml", "-o", "out", "--cache", "cache", "-v", "--target", "wgsl"]);
     assert!(o.status.success(), "{}", stderr(&o));
     let mut dirs: Vec<String> = std::fs::read_dir(p.path("out")).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
@@ -93,7 +93,10 @@ fn variants_go_to_their_directories_with_a_manifest_and_equal_sources_compile_on
     let wgsl = std::fs::read_to_string(p.path("out/scale_2_0__double/tint.wgsl")).unwrap();
     assert!(wgsl.contains("2f") || wgsl.contains("2.0"), "{wgsl}");
 
-    let manifest: serde_json::Value = serde_json::from_slice(&std::fs::read(p.path("out/variants.json")).unwrap()).unwrap();
+    let text = std::fs::read_to_string(p.path("out/variants.json")).unwrap();
+    let manifest: serde_json::Value = serde_json::from_str(&text).unwrap();
+    // Written by hand in serde_json's pretty layout: exactly that text.
+    assert_eq!(text, serde_json::to_string_pretty(&manifest).unwrap() + "\n");
     let variants = manifest["variants"].as_array().unwrap();
     assert_eq!(variants.len(), 6);
     let v = variants.iter().find(|v| v["name"] == "scale_2_0__double").unwrap();
@@ -191,7 +194,7 @@ fn damaged_cache_entries_are_detected_removed_and_recompiled() {
     let args = ["compile", "tint.das", "--variants", "spec.toml", "-o", "out", "--cache", "cache", "-v"];
     assert!(p.run(&args).status.success());
     let good = files_under(&p.path("out"));
-    let entries: Vec<PathBuf> = files_under(&p.path("cache/v2")).into_iter().map(|(f, _)| p.path("cache/v2").join(f)).collect();
+    let entries: Vec<PathBuf> = files_under(&p.path("cache/v3")).into_iter().map(|(f, _)| p.path("cache/v3").join(f)).collect();
     assert_eq!(entries.len(), 2);
     // One truncated, one with a flipped byte in the middle of an output.
     let bytes = std::fs::read(&entries[0]).unwrap();
@@ -232,7 +235,8 @@ fn processes_sharing_a_cache_agree() {
     }
     let o = p.run(&["compile", "tint.das", "--variants", "spec.toml", "-o", "out0", "--cache", "cache", "-v"]);
     assert_eq!(counts(&o), (0, 8, 0));
-    assert!(files_under(&p.path("cache/tmp")).is_empty(), "no temporaries left");
+    let temps: Vec<String> = files_under(&p.path("cache")).into_iter().map(|(f, _)| f).filter(|f| f.contains(".tmp-")).collect();
+    assert!(temps.is_empty(), "no temporaries left: {temps:?}");
 }
 
 #[test]
@@ -413,3 +417,66 @@ fn copy_tree(from: &std::path::Path, to: &std::path::Path, skip: &dyn Fn(&std::p
     }
 }
 
+
+/// The `-v` line says the run had nothing to do (src/rerun.rs).
+fn did_nothing(o: &std::process::Output) -> bool {
+    assert!(o.status.success(), "{}", stderr(o));
+    stderr(o).contains("nothing to do")
+}
+
+fn mtimes(dir: &Path) -> Vec<(String, std::time::SystemTime)> {
+    files_under(dir).into_iter().map(|(f, _)| (f.clone(), std::fs::metadata(dir.join(&f)).unwrap().modified().unwrap())).collect()
+}
+
+#[test]
+fn a_rerun_that_would_change_nothing_compiles_nothing_and_anything_changed_makes_it_run() {
+    let p = Project::new();
+    p.write("inc/scale.das", "let SCALE = 2.0\n");
+    p.write("main.das", &format!("#include \"scale.das\"\n{}", PROGRAM.replace("float4(SCALE)", "float4(SCALE_OF)")));
+    p.write("spec.toml", "[axes]\nSCALE_OF = [\"SCALE\", \"1.0\"]\n");
+    let args = ["compile", "main.das", "--variants", "spec.toml", "-I", "inc", "-o", "out", "--cache", "cache", "--depfile", "out.d", "-v", "--target", "wgsl"];
+    assert!(!did_nothing(&p.run(&args)), "cold");
+    // The second run reads every output back and stamps it; stamps are
+    // trusted once taken a margin after the file last changed.
+    assert!(!did_nothing(&p.run(&args)), "no stamps yet");
+    // Stamps taken less than a margin after the writes are not trusted, so
+    // one more run may read the outputs again; after that, none.
+    std::thread::sleep(umbrac::output::stamps::MARGIN * 3);
+    let _ = p.run(&args);
+    std::thread::sleep(umbrac::output::stamps::MARGIN * 3);
+    let before = files_under(&p.path("out"));
+    let times = mtimes(&p.path("out"));
+    std::fs::remove_file(p.path("out.d")).unwrap();
+    assert!(did_nothing(&p.run(&args)), "{}", stderr(&p.run(&args)));
+    assert_eq!(files_under(&p.path("out")), before);
+    assert_eq!(mtimes(&p.path("out")), times, "nothing touched");
+    assert!(std::fs::read_to_string(p.path("out.d")).unwrap().contains("inc/scale.das"), "the depfile is written again (ninja deletes it)");
+
+    // An output changed by hand, keeping its size: put back.
+    let wgsl = p.path("out/scale_of_scale/main.wgsl");
+    let text = std::fs::read_to_string(&wgsl).unwrap();
+    std::fs::write(&wgsl, text.replacen('f', "g", 1)).unwrap();
+    assert!(!did_nothing(&p.run(&args)));
+    assert_eq!(std::fs::read_to_string(&wgsl).unwrap(), text);
+
+    // A file appearing where the include looked first (beside main.das)
+    // changes what is read.
+    std::thread::sleep(umbrac::output::stamps::MARGIN * 3);
+    assert!(!did_nothing(&p.run(&args)), "re-stamped after the repair");
+    std::thread::sleep(umbrac::output::stamps::MARGIN * 3);
+    assert!(did_nothing(&p.run(&args)));
+    p.write("scale.das", "let SCALE = 5.0\n");
+    assert!(!did_nothing(&p.run(&args)));
+    let now = std::fs::read_to_string(&wgsl).unwrap();
+    assert!(now.contains('5') && now != text, "{now}");
+
+    // An edit of an input that changes no token: compiled from the cache,
+    // the outputs touched so make sees them newer than the input.
+    std::thread::sleep(umbrac::output::stamps::MARGIN * 3);
+    let spec = std::fs::read_to_string(p.path("spec.toml")).unwrap();
+    p.write("spec.toml", &format!("# a comment\n{spec}"));
+    let o = p.run(&args);
+    assert!(!did_nothing(&o));
+    let spec_time = std::fs::metadata(p.path("spec.toml")).unwrap().modified().unwrap();
+    assert!(mtimes(&p.path("out")).iter().all(|(_, t)| *t >= spec_time), "outputs newer than the spec");
+}

@@ -1,0 +1,267 @@
+//! A rerun that would change nothing, told without compiling.
+//!
+//! A build system reruns a command when any of its inputs is newer than
+//! its outputs, and a user reruns it by hand; most of those reruns find
+//! every output as it was. After a command succeeds, a [`Record`] keeps
+//! what it depended on and what it left:
+//!
+//! - the SHA-256 of every file it read (sources, includes, modules, the
+//!   variant spec);
+//! - every path an `#include` or `require` looked at and found no file at
+//!   ([`crate::syntax::Unit::probed`]): a file appearing there would change
+//!   what is read;
+//! - the SHA-256 of every output, and the depfile's text.
+//!
+//! It is stored in the cache directory (`runs/`), under a key made of the
+//! command's whole configuration (umbrac's build, the inputs, the variants,
+//! every option, the output directory and depfile). The next run with the
+//! same key checks the record: every file read must hash as before,
+//! nothing may have appeared where nothing was, and every output must be
+//! known by a trusted stamp ([`crate::output::stamps`]) to still hold its
+//! recorded bytes, and be newer than every file read (or make would rerun
+//! the command). If all of that holds the command has nothing to do but
+//! rewrite the depfile (ninja deletes it once read): nothing is
+//! preprocessed or read from the cache. If anything differs, the command
+//! runs as usual, so a record can only ever save work, never change a
+//! result.
+
+use std::path::{Path, PathBuf};
+use std::time::SystemTime;
+
+use crate::cache::{Cache, Key};
+use crate::output::stamps::{FileState, Stamps};
+
+const MAGIC: &[u8; 8] = b"UMBRUN01";
+
+/// What one successful command depended on and left (see the module docs).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Record {
+    /// Every file read, with the hash of its contents.
+    pub files: Vec<(PathBuf, Key)>,
+    /// Where nothing was found.
+    pub probed: Vec<PathBuf>,
+    /// Every output, with the hash of its contents.
+    pub outputs: Vec<(PathBuf, Key)>,
+    /// The depfile and its text, if one was asked for.
+    pub depfile: Option<(PathBuf, Vec<u8>)>,
+    /// `-v`'s counts of the run: jobs, compiled, from the cache, shared.
+    pub counts: [u64; 4],
+}
+
+/// The key of a command's configuration: its parts, each length-prefixed,
+/// after umbrac's own build id.
+pub fn key(parts: &[&[u8]]) -> Key {
+    let mut all = Vec::new();
+    for p in std::iter::once(crate::cache::compiler_id().as_bytes()).chain(parts.iter().copied()) {
+        all.extend_from_slice(&(p.len() as u64).to_le_bytes());
+        all.extend_from_slice(p);
+    }
+    Key::of_bytes(&all)
+}
+
+impl Record {
+    fn path(cache: &Cache, key: &Key) -> PathBuf {
+        cache.dir().join("runs").join(key.hex())
+    }
+
+    /// The record stored under `key`, if there is an intact one.
+    pub fn load(cache: &Cache, key: &Key) -> Option<Record> {
+        decode(&std::fs::read(Self::path(cache, key)).ok()?)
+    }
+
+    /// Stores the record under `key`, atomically (best effort: a record
+    /// only saves work).
+    pub fn save(&self, cache: &Cache, key: &Key) {
+        let path = Self::path(cache, key);
+        let Some(dir) = path.parent() else { return };
+        if std::fs::create_dir_all(dir).is_err() {
+            return;
+        }
+        let tmp = dir.join(format!(".tmp-{}-{}", std::process::id(), crate::output::stamps::now_ns()));
+        if std::fs::write(&tmp, encode(self)).and_then(|_| std::fs::rename(&tmp, &path)).is_err() {
+            let _ = std::fs::remove_file(&tmp);
+        }
+    }
+
+    /// Whether a rerun would change nothing (see the module docs), the
+    /// outputs checked on up to `workers` threads.
+    pub fn still_holds(&self, stamps: &Stamps, workers: usize) -> bool {
+        let mut newest = SystemTime::UNIX_EPOCH;
+        for (path, hash) in &self.files {
+            let Ok(bytes) = std::fs::read(path) else { return false };
+            if Key::of_bytes(&bytes) != *hash {
+                return false;
+            }
+            match std::fs::metadata(path).and_then(|m| m.modified()) {
+                Ok(t) => newest = newest.max(t),
+                Err(_) => return false,
+            }
+        }
+        if self.probed.iter().any(|p| std::fs::metadata(p).is_ok()) {
+            return false;
+        }
+        let chunk = self.outputs.len().div_ceil(workers.max(1)).max(64);
+        let chunks: Vec<&[(PathBuf, Key)]> = self.outputs.chunks(chunk).collect();
+        let held = crate::batch::parallel_map(chunks.len(), workers, |c| chunks[c].iter().all(|(p, h)| output_holds(p, h, stamps, newest)), |_, _| false);
+        held.into_iter().all(|h| h)
+    }
+}
+
+/// Whether the output at `path` holds bytes with hash `hash` by a trusted
+/// stamp, and is newer than `newest`.
+fn output_holds(path: &Path, hash: &Key, stamps: &Stamps, newest: SystemTime) -> bool {
+    let Ok(m) = std::fs::symlink_metadata(path) else { return false };
+    let newer = m.modified().is_ok_and(|t| t > newest);
+    newer && m.is_file() && FileState::of(&m).is_some_and(|s| stamps.hash_of(path, &s) == Some(*hash))
+}
+
+fn put_bytes(out: &mut Vec<u8>, b: &[u8]) {
+    out.extend_from_slice(&(b.len() as u64).to_le_bytes());
+    out.extend_from_slice(b);
+}
+
+fn encode(r: &Record) -> Vec<u8> {
+    let mut out = Vec::with_capacity(64 + 128 * (r.files.len() + r.probed.len() + r.outputs.len()));
+    out.extend_from_slice(MAGIC);
+    out.extend_from_slice(&[0; 4]); // CRC-32 of the rest, below
+    for c in r.counts {
+        out.extend_from_slice(&c.to_le_bytes());
+    }
+    for list in [&r.files, &r.outputs] {
+        out.extend_from_slice(&(list.len() as u64).to_le_bytes());
+        for (p, h) in list.iter() {
+            put_bytes(&mut out, p.as_os_str().as_encoded_bytes());
+            out.extend_from_slice(&h.0);
+        }
+    }
+    out.extend_from_slice(&(r.probed.len() as u64).to_le_bytes());
+    for p in &r.probed {
+        put_bytes(&mut out, p.as_os_str().as_encoded_bytes());
+    }
+    match &r.depfile {
+        Some((p, text)) => {
+            out.push(1);
+            put_bytes(&mut out, p.as_os_str().as_encoded_bytes());
+            put_bytes(&mut out, text);
+        }
+        None => out.push(0),
+    }
+    let crc = crc32fast::hash(&out[12..]);
+    out[8..12].copy_from_slice(&crc.to_le_bytes());
+    out
+}
+
+struct Reader<'a>(&'a [u8]);
+
+impl<'a> Reader<'a> {
+    fn take(&mut self, n: usize) -> Option<&'a [u8]> {
+        if self.0.len() < n {
+            return None;
+        }
+        let (a, rest) = self.0.split_at(n);
+        self.0 = rest;
+        Some(a)
+    }
+    fn u64(&mut self) -> Option<u64> {
+        Some(u64::from_le_bytes(self.take(8)?.try_into().ok()?))
+    }
+    fn bytes(&mut self) -> Option<&'a [u8]> {
+        let n = usize::try_from(self.u64()?).ok()?;
+        self.take(n)
+    }
+    fn path(&mut self) -> Option<PathBuf> {
+        path_of_bytes(self.bytes()?)
+    }
+    fn key(&mut self) -> Option<Key> {
+        Some(Key(self.take(32)?.try_into().ok()?))
+    }
+}
+
+fn decode(b: &[u8]) -> Option<Record> {
+    if b.get(..8)? != MAGIC || crc32fast::hash(b.get(12..)?) != u32::from_le_bytes(b[8..12].try_into().ok()?) {
+        return None;
+    }
+    let mut r = Reader(&b[12..]);
+    let mut rec = Record::default();
+    for c in rec.counts.iter_mut() {
+        *c = r.u64()?;
+    }
+    for list in [&mut rec.files, &mut rec.outputs] {
+        let n = r.u64()?;
+        for _ in 0..n {
+            let p = r.path()?;
+            list.push((p, r.key()?));
+        }
+    }
+    for _ in 0..r.u64()? {
+        rec.probed.push(r.path()?);
+    }
+    rec.depfile = match r.take(1)?[0] {
+        0 => None,
+        _ => Some((r.path()?, r.bytes()?.to_vec())),
+    };
+    r.0.is_empty().then_some(rec)
+}
+
+#[cfg(unix)]
+fn path_of_bytes(b: &[u8]) -> Option<PathBuf> {
+    use std::os::unix::ffi::OsStrExt;
+    Some(PathBuf::from(std::ffi::OsStr::from_bytes(b)))
+}
+
+/// Where paths are not bytes, records are never read back (the outputs
+/// have no stamps there either).
+#[cfg(not(unix))]
+fn path_of_bytes(_: &[u8]) -> Option<PathBuf> {
+    None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn records_round_trip_and_damage_is_no_record() {
+        let d = tempfile::tempdir().unwrap();
+        let cache = Cache::new(d.path(), crate::cache::DEFAULT_MAX_BYTES);
+        let rec = Record {
+            files: vec![(PathBuf::from("a.das"), Key::of_bytes(b"a"))],
+            probed: vec![PathBuf::from("inc/x.das")],
+            outputs: vec![(PathBuf::from("out/a.wgsl"), Key::of_bytes(b"w")), (PathBuf::from("out/a.spv"), Key::of_bytes(b"s"))],
+            depfile: Some((PathBuf::from("a.d"), b"out/a.wgsl: a.das\n".to_vec())),
+            counts: [1, 1, 0, 0],
+        };
+        let k = key(&[b"one"]);
+        assert_ne!(k, key(&[b"on", b"e"]), "parts are delimited");
+        rec.save(&cache, &k);
+        assert_eq!(Record::load(&cache, &k), Some(rec.clone()));
+        let path = Record::path(&cache, &k);
+        let mut bytes = std::fs::read(&path).unwrap();
+        bytes[20] ^= 4;
+        std::fs::write(&path, &bytes).unwrap();
+        assert_eq!(Record::load(&cache, &k), None);
+        std::fs::write(&path, &encode(&rec)[..30]).unwrap();
+        assert_eq!(Record::load(&cache, &k), None);
+    }
+
+    #[test]
+    fn a_changed_input_or_an_appeared_file_means_the_command_runs() {
+        let d = tempfile::tempdir().unwrap();
+        let src = d.path().join("a.das");
+        std::fs::write(&src, "x").unwrap();
+        let probed = d.path().join("inc.das");
+        let rec = Record { files: vec![(src.clone(), Key::of_bytes(b"x"))], probed: vec![probed.clone()], ..Default::default() };
+        let stamps = Stamps::default();
+        assert!(rec.still_holds(&stamps, 2), "no outputs to check: holds");
+        std::fs::write(&src, "y").unwrap();
+        assert!(!rec.still_holds(&stamps, 2), "an input changed");
+        std::fs::write(&src, "x").unwrap();
+        std::fs::write(&probed, "").unwrap();
+        assert!(!rec.still_holds(&stamps, 2), "a file appeared where an include looked");
+        std::fs::remove_file(&probed).unwrap();
+        let out = d.path().join("a.wgsl");
+        let with_output = Record { outputs: vec![(out.clone(), Key::of_bytes(b"w"))], ..rec };
+        std::fs::write(&out, "w").unwrap();
+        assert!(!with_output.still_holds(&stamps, 2), "an output no stamp vouches for");
+    }
+}
