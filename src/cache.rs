@@ -308,6 +308,17 @@ impl Cache {
                 entries.push((modified, m.len(), path));
             }
         }
+        // Stamps and run records (`output::stamps`, `rerun`) unused for a
+        // month: the output directories and commands they describe are
+        // likely gone.
+        let month_ago = SystemTime::now() - Duration::from_secs(30 * 24 * 3600);
+        for sub in ["stamps", "runs"] {
+            for path in read_dir_paths(&self.dir.join(sub)) {
+                if std::fs::metadata(&path).and_then(|m| m.modified()).is_ok_and(|t| t < month_ago) {
+                    let _ = std::fs::remove_file(&path);
+                }
+            }
+        }
         // What earlier layouts left (`v2/`, its `tmp/`): never read again.
         for old in read_dir_paths(&self.dir) {
             let name = old.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();

@@ -283,7 +283,9 @@ impl TempFile {
     /// is skipped, never opened.
     fn new_in(dir: &Path) -> std::io::Result<TempFile> {
         static COUNTER: AtomicU32 = AtomicU32::new(0);
-        let pid = std::process::id();
+        // One `getpid` per process, not per file.
+        static PID: std::sync::OnceLock<u32> = std::sync::OnceLock::new();
+        let pid = *PID.get_or_init(std::process::id);
         Self::create_first_free(dir, || {
             let n = COUNTER.fetch_add(1, Ordering::Relaxed);
             format!("{TEMP_PREFIX}{pid}-{n:06x}{TEMP_SUFFIX}")
@@ -297,7 +299,11 @@ impl TempFile {
             let path = dir.join(next_name());
             // `create_new` fails rather than open an existing file (or
             // follow a symlink planted under the name).
-            match std::fs::OpenOptions::new().write(true).create_new(true).open(&path) {
+            let mut options = std::fs::OpenOptions::new();
+            options.write(true).create_new(true);
+            #[cfg(unix)]
+            std::os::unix::fs::OpenOptionsExt::mode(&mut options, OUTPUT_MODE);
+            match options.open(&path) {
                 Ok(file) => return Ok(TempFile { path, file: Some(file), renamed: false }),
                 Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
                 Err(e) => return Err(e),
@@ -335,15 +341,31 @@ impl Drop for TempFile {
     }
 }
 
+/// Outputs are ordinary readable files (`rw-r--r--`), whatever the umask.
+const OUTPUT_MODE: u32 = 0o644;
+
+/// Whether the process's umask clears none of [`OUTPUT_MODE`]'s bits, so
+/// that files created with that mode have it and need no `fchmod` (one
+/// system call per output). Read once from `/proc/self/status` (setting
+/// the umask to read it would race other threads' file creation); where
+/// it cannot be read, every file is given its mode explicitly.
+fn umask_keeps_output_mode() -> bool {
+    static KEEPS: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
+    *KEEPS.get_or_init(|| {
+        let status = std::fs::read_to_string("/proc/self/status").unwrap_or_default();
+        let umask = status.lines().find_map(|l| l.strip_prefix("Umask:")).and_then(|u| u32::from_str_radix(u.trim(), 8).ok());
+        umask.is_some_and(|m| m & OUTPUT_MODE == 0)
+    })
+}
+
 fn write_temp(dir: &Path, contents: &[u8]) -> std::io::Result<TempFile> {
     let temp = TempFile::new_in(dir)?;
     let mut file = temp.file();
     file.write_all(contents)?;
-    // Outputs are ordinary readable files, whatever the umask.
     #[cfg(unix)]
-    {
+    if !umask_keeps_output_mode() {
         use std::os::unix::fs::PermissionsExt;
-        file.set_permissions(std::fs::Permissions::from_mode(0o644))?;
+        file.set_permissions(std::fs::Permissions::from_mode(OUTPUT_MODE))?;
     }
     Ok(temp)
 }

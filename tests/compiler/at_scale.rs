@@ -480,3 +480,17 @@ fn a_rerun_that_would_change_nothing_compiles_nothing_and_anything_changed_makes
     let spec_time = std::fs::metadata(p.path("spec.toml")).unwrap().modified().unwrap();
     assert!(mtimes(&p.path("out")).iter().all(|(_, t)| *t >= spec_time), "outputs newer than the spec");
 }
+
+#[cfg(unix)]
+#[test]
+fn outputs_are_readable_by_all_whatever_the_umask() {
+    use std::os::unix::fs::PermissionsExt;
+    let p = Project::new();
+    for (umask, dir) in [("077", "private"), ("022", "usual")] {
+        let cmd = format!("umask {umask} && exec \"{}\" compile tint.das -D SCALE=1.0 -o {dir} --no-cache --target wgsl", env!("CARGO_BIN_EXE_umbrac"));
+        let o = Command::new("sh").arg("-c").arg(&cmd).current_dir(p.dir.path()).output().unwrap();
+        assert!(o.status.success(), "{}", stderr(&o));
+        let mode = std::fs::metadata(p.path(dir).join("tint.wgsl")).unwrap().permissions().mode();
+        assert_eq!(mode & 0o777, 0o644, "umask {umask}");
+    }
+}
