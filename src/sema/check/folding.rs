@@ -190,6 +190,11 @@ impl<'p> Folder<'p, '_> {
                         return None;
                     }
                 }
+                // Most calls have a run-time argument: done, with nothing
+                // more allocated.
+                if vals.iter().any(Option::is_none) {
+                    return None;
+                }
                 let vals: Vec<Cow<'p, ConstValue>> = vals.into_iter().collect::<Option<_>>()?;
                 let typed: Vec<(&ConstValue, &Ty)> = vals.iter().map(|v| &**v).zip(args.iter().map(|a| &a.ty)).collect();
                 match consts::eval_builtin(*b, &typed, &e.ty) {
@@ -202,6 +207,9 @@ impl<'p> Folder<'p, '_> {
             }
             ExprKind::Construct(xs) => {
                 let vals: Vec<Val<'p>> = xs.iter().map(|x| self.expr(x)).collect();
+                if vals.iter().any(Option::is_none) {
+                    return None;
+                }
                 let vals = vals.into_iter().zip(xs).map(|(v, x)| v.map(|v| (v.into_owned(), x.ty.clone()))).collect::<Option<Vec<_>>>()?;
                 match &e.ty {
                     Ty::Struct(_) | Ty::Array(..) => Some(Cow::Owned(ConstValue::Composite(vals.into_iter().map(|v| v.0).collect()))),

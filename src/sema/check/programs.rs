@@ -280,17 +280,22 @@ impl<'a, 'd> Checker<'a, 'd> {
         // The programs and the entry points, each with the samplers it uses.
         let eps = &self.out.entry_points;
         let samplers_of = |e: usize| eps[e].func.uses.keys().copied().filter(|&g| matches!(self.out.globals[g].kind, GlobalKind::Sampler { .. }));
-        let mut scopes: Vec<(String, Vec<GlobalId>)> = Vec::new();
+        // Each scope is a program (`Some(link)`) or an entry point; it is
+        // described only in an error.
+        let mut scopes: Vec<(Result<&Link, usize>, Vec<GlobalId>)> = Vec::new();
         for l in links {
             let mut s: Vec<GlobalId> = samplers_of(l.vertex).chain(samplers_of(l.fragment)).collect();
             s.sort_unstable();
             s.dedup();
-            let what = format!("the program of vertex entry point `{}` and fragment entry point `{}`", eps[l.vertex].name, eps[l.fragment].name);
-            scopes.push((what, s));
+            scopes.push((Ok(l), s));
         }
-        for (e, ep) in eps.iter().enumerate() {
-            scopes.push((format!("{} entry point `{}`", stage_name(ep.stage), ep.name), samplers_of(e).collect()));
+        for e in 0..eps.len() {
+            scopes.push((Err(e), samplers_of(e).collect()));
         }
+        let describe = |scope: &Result<&Link, usize>| match scope {
+            Ok(l) => format!("the program of vertex entry point `{}` and fragment entry point `{}`", eps[l.vertex].name, eps[l.fragment].name),
+            Err(e) => format!("{} entry point `{}`", stage_name(eps[*e].stage), eps[*e].name),
+        };
         let range = |g: GlobalId, globals: &[Global]| match globals[g].kind {
             GlobalKind::Sampler { texture_unit, count, .. } => texture_unit..texture_unit + count.unwrap_or(1),
             _ => 0..0,
@@ -312,7 +317,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                         continue;
                     }
                     let (an, bn) = (&self.out.globals[a].name, &self.out.globals[b].name);
-                    let d = Diagnostic::error(format!("texture unit {u} is used twice in {what}"), self.unit_spans[&b])
+                    let d = Diagnostic::error(format!("texture unit {u} is used twice in {}", describe(what)), self.unit_spans[&b])
                         .with_label(format!("`{bn}` is on unit {u}"))
                         .with_secondary(self.unit_spans[&a], format!("`{an}` is on it too"))
                         .with_note("texture units are per program: give one of them another `@stage = N`, or none to have one assigned");
