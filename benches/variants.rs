@@ -2,13 +2,16 @@
 //! shaders/programs/shadow_variants.das (8 independent #ifdef axes,
 //! shadow_variants.toml), in one run: `cargo bench --bench variants`.
 //!
-//! - cold `umbrac compile --variants` with `--jobs 1, 2, 3, 4` (an empty
-//!   cache and output directory each time): parallel efficiency, and the
-//!   plot of variants per second against jobs (docs/images/variants-jobs.svg);
+//! - cold `umbrac compile --variants` with `--jobs 1, 2, 3, 4` (a cache and
+//!   output directory never used before, each time): parallel efficiency,
+//!   and the plot of variants per second against jobs
+//!   (docs/images/variants-jobs.svg); and `--jobs 2` right after deleting
+//!   the previous round's files;
 //! - what a user does without `--variants`: one `umbrac compile -D ...`
 //!   process per variant in a shell loop;
-//! - warm: the same command with the cache full, into the directory of the
-//!   previous run (what a build system reruns) and into an empty one;
+//! - warm: the same command again, into the directory of the previous run
+//!   (what a build system reruns: its first rerun, and the median of the
+//!   next), and into empty ones;
 //! - in process, WGSL + SPIR-V of every variant on one thread: umbrac's
 //!   library against naga_oil (bevy's composer, shader defs) on the WGSL
 //!   counterpart (benches/naga_oil/, built here in release);
