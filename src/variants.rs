@@ -136,9 +136,21 @@ impl Spec {
         if out.is_empty() {
             return Err(SpecError("the spec names no variant: add [variant.NAME] tables or an [axes] table".into()));
         }
+        // Each name is a directory's: file systems take at most 255 bytes.
+        if let Some(v) = out.iter().find(|v| v.name.len() > MAX_VARIANT_NAME_LEN) {
+            let shown: String = v.name.chars().take(48).collect();
+            return Err(SpecError(format!(
+                "variant `{shown}...` ({}) has a name of {} characters, and names its output directory, which can have at most {MAX_VARIANT_NAME_LEN}: shorten the axes' names or values",
+                describe(&v.defines),
+                v.name.len()
+            )));
+        }
         Ok(out)
     }
 }
+
+/// The longest variant name: it names a directory.
+pub const MAX_VARIANT_NAME_LEN: usize = 255;
 
 /// The name of the variant an axis combination makes (module docs).
 pub fn axis_name(chosen: &[(&str, &AxisValue)]) -> String {
@@ -338,6 +350,16 @@ mod tests {
         for n in &names {
             assert!(is_variant_name(n), "{n}");
         }
+    }
+
+    #[test]
+    fn a_name_too_long_for_a_directory_is_an_error() {
+        let long = "V".repeat(200);
+        let spec = Spec { named: vec![], axes: vec![Axis { name: long.clone(), values: vec![d("1")] }, Axis { name: "B".into(), values: vec![d("")] }] };
+        assert!(spec.expand().is_ok(), "203 characters fit");
+        let spec = Spec { named: vec![], axes: vec![Axis { name: long.clone(), values: vec![d("1")] }, Axis { name: "C".repeat(60), values: vec![d("")] }] };
+        let e = spec.expand().unwrap_err();
+        assert!(e.0.contains("has a name of 264 characters") && e.0.contains("at most 255"), "{e}");
     }
 
     #[test]

@@ -134,11 +134,15 @@ pub fn write_outputs_known(dir: &Path, artifacts: &[Artifact], unchanged: Unchan
         }
     }
 
-    match std::fs::metadata(dir) {
-        Ok(m) if m.is_dir() => {}
+    // A directory made here holds no temporaries of killed processes.
+    let made_here = match std::fs::metadata(dir) {
+        Ok(m) if m.is_dir() => false,
         Ok(_) => return Err(err(dir, "the output path exists and is not a directory")),
-        Err(_) => std::fs::create_dir_all(dir).map_err(|e| err(dir, format!("cannot create the output directory: {e}")))?,
-    }
+        Err(_) => {
+            std::fs::create_dir_all(dir).map_err(|e| err(dir, format!("cannot create the output directory: {e}")))?;
+            true
+        }
+    };
 
     // From here to the last rename, no other writer (another process
     // compiling into the same directory) can rename in between: one
@@ -205,7 +209,7 @@ pub fn write_outputs_known(dir: &Path, artifacts: &[Artifact], unchanged: Unchan
             std::fs::File::options().write(true).open(&dest).and_then(|f| f.set_modified(now)).is_err()
         })
         .collect();
-    if !todo.is_empty() {
+    if !todo.is_empty() && !made_here {
         remove_stale_temps(dir);
     }
 

@@ -664,17 +664,23 @@ fn count_locals(stmts: &[ast::Stmt]) -> usize {
         .sum()
 }
 
+/// The longest entry point name: `NAME.300es.frag` (or `.310es.comp`)
+/// must fit the 255 bytes most file systems allow a file name.
+pub const MAX_ENTRY_NAME_LEN: usize = 255 - ".300es.frag".len();
+
 /// Why a name given with `[vertex_program(name = "...")]` cannot name an
 /// entry point: the outputs, the manifest and the file names all use it
 /// as it is, so it must be a plain identifier within the name limit.
 fn entry_name_problem(name: &str) -> Option<String> {
-    let limit = crate::syntax::MAX_IDENT_LEN;
+    // It names files, `NAME.300es.frag` the longest: file systems take
+    // names of at most 255 bytes.
+    let limit = MAX_ENTRY_NAME_LEN;
     let mut chars = name.chars();
     if !chars.next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_') || !chars.all(|c| c.is_ascii_alphanumeric() || c == '_') {
         return Some("is not a name: use letters, digits and `_`, starting with a letter or `_`".into());
     }
     if name.len() > limit {
-        return Some(format!("is {} characters long; names are limited to {limit}", name.len()));
+        return Some(format!("is {} characters long; entry point names are limited to {limit}, as they name the output files (`NAME.300es.frag`, at most 255 bytes)", name.len()));
     }
     // naga's WGSL writer renames what WGSL reserves (`fn` becomes `fn_`),
     // and the manifest would name an entry point the WGSL does not have.
