@@ -278,11 +278,13 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
     for (handle, source) in em.uniforms {
         let naga_name = em.module.global_variables[*handle].name.as_deref().unwrap_or(source);
         let candidates = [naga_name.to_string(), [naga_name, "_"].concat()];
-        let Some(naga_name) = candidates.iter().find(|n| global_declaration(&out, n).is_some()) else {
+        let Some((naga_name, found)) = candidates.iter().find_map(|n| global_declaration(&out, n).map(|l| (n, l))) else {
             return Err(bug(format!("cannot find the declaration of uniform `{source}`")));
         };
         let name = restore_source_name(&mut out, naga_name, source);
-        let line = global_declaration(&out, &name).ok_or_else(|| bug(format!("cannot find the declaration of uniform `{name}`")))?;
+        // Found again only if renaming moved the text.
+        let line = if name == *naga_name { Some(found) } else { global_declaration(&out, &name) };
+        let line = line.ok_or_else(|| bug(format!("cannot find the declaration of uniform `{name}`")))?;
         let decl = &out[line.clone()];
         let at = text::find_ident(decl, &name).next().ok_or_else(|| bug(format!("no `{name}` in its declaration")))?;
         let after = &decl[at + name.len()..];
