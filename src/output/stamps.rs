@@ -89,9 +89,18 @@ impl Stamp {
 /// by the threads writing into it.
 #[derive(Debug, Default)]
 pub struct Stamps {
-    path: Option<PathBuf>,
+    /// The cache directory and the output directory, where loaded from.
+    dirs: Option<(PathBuf, PathBuf)>,
     old: HashMap<PathBuf, Stamp>,
     new: Mutex<HashMap<PathBuf, Option<Stamp>>>,
+}
+
+/// Where the stamps of `out_dir` are kept: named by its canonical path,
+/// so that every way of naming it finds them (`None` while it does not
+/// exist).
+fn stamps_path(cache_dir: &Path, out_dir: &Path) -> Option<PathBuf> {
+    let canonical = std::fs::canonicalize(out_dir).ok()?;
+    Some(cache_dir.join("stamps").join(Key::of_bytes(canonical.as_os_str().as_encoded_bytes()).hex()))
 }
 
 /// Now, in nanoseconds since the epoch.
@@ -103,11 +112,8 @@ impl Stamps {
     /// The stamps kept in `cache_dir` for the outputs under `out_dir`
     /// (empty if there are none or they cannot be read).
     pub fn load(cache_dir: &Path, out_dir: &Path) -> Stamps {
-        let canonical = std::fs::canonicalize(out_dir).unwrap_or_else(|_| out_dir.to_path_buf());
-        let name = Key::of_bytes(canonical.as_os_str().as_encoded_bytes()).hex();
-        let path = cache_dir.join("stamps").join(name);
-        let old = std::fs::read(&path).ok().and_then(|b| decode(&b)).unwrap_or_default();
-        Stamps { path: Some(path), old, new: Mutex::new(HashMap::new()) }
+        let old = stamps_path(cache_dir, out_dir).and_then(|p| std::fs::read(p).ok()).and_then(|b| decode(&b)).unwrap_or_default();
+        Stamps { dirs: Some((cache_dir.to_path_buf(), out_dir.to_path_buf())), old, new: Mutex::new(HashMap::new()) }
     }
 
     /// The contents' hash of the file at `path`, if a trusted stamp of
@@ -135,11 +141,11 @@ impl Stamps {
     /// Writes the stamps back, if anything changed (best effort: stamps
     /// only save reading).
     pub fn save(self) {
-        let Some(path) = self.path else { return };
         let new = self.new.into_inner().unwrap_or_default();
-        if new.is_empty() {
+        if new.is_empty() || (self.old.is_empty() && new.values().all(Option::is_none)) {
             return;
         }
+        let Some(path) = self.dirs.and_then(|(cache, out)| stamps_path(&cache, &out)) else { return };
         let mut all = self.old;
         for (p, s) in new {
             match s {
