@@ -310,6 +310,7 @@ pub fn check(lowered: &Lowered, targets: &[Target], raised: &[(Limit, u64)], dia
         }
     }
     let iface = &lowered.interface;
+    let (mut gl_uses, mut wgpu_uses): (Option<Vec<Vec<(Limit, Use)>>>, Option<Vec<Vec<(Limit, Use)>>>) = (None, None);
     for family in families {
         // `whose` names the entry point or program; it is only formatted
         // for an error (this runs for every compile).
@@ -327,8 +328,12 @@ pub fn check(lowered: &Lowered, targets: &[Target], raised: &[(Limit, u64)], dia
                     .with_note(format!("to compile for devices with more, state their limit: `--limit {}=N`", limit.name())),
             );
         };
-        let per_entry: Vec<Vec<(Limit, Use)>> = iface.entry_points.iter().map(|ep| entry_uses(lowered, ep, family)).collect();
-        for (ep, uses) in iface.entry_points.iter().zip(&per_entry) {
+        // What an entry point uses depends only on whether the family is
+        // GL's: counted once for GLSL 330 and ES 3.00 together.
+        let gl = family != Family::Wgpu;
+        let counted = if gl { &mut gl_uses } else { &mut wgpu_uses };
+        let per_entry: &Vec<Vec<(Limit, Use)>> = counted.get_or_insert_with(|| iface.entry_points.iter().map(|ep| entry_uses(lowered, ep, family)).collect());
+        for (ep, uses) in iface.entry_points.iter().zip(per_entry) {
             let whose = || format!("{} entry point `{}`", stage_name(ep.stage), ep.name);
             for (limit, used) in uses {
                 report(*limit, ep.stage, &whose, used);
