@@ -78,22 +78,22 @@ pub struct RenderArgs {
     /// floor in the map, 3x3 PCF; tuned: box fitted to casters and visible
     /// receivers, casters only, the hardware's 2x2 filter); the options
     /// below override its parts.
-    #[arg(long, value_parser = choice(&Quality::ALL, Quality::name))]
+    #[arg(long, value_parser = choice(&Quality::ALL, Quality::name), conflicts_with = "scene")]
     pub quality: Option<Quality>,
     /// Shadow filter (a .das program is compiled with the matching -D PCF_TAPS_RADIUS).
-    #[arg(long, value_parser = choice(&Filter::ALL, Filter::name))]
+    #[arg(long, value_parser = choice(&Filter::ALL, Filter::name), conflicts_with = "scene")]
     pub filter: Option<Filter>,
     /// How the light's box is fitted: the tutorial's fixed +-4, tight
     /// around the casters and the visible receivers (clipped on the CPU),
     /// or visible: fitted each frame to the receivers a compute pass finds
     /// in the camera's depth buffer (Vulkan, or --backend gl430).
-    #[arg(long, value_parser = choice(&Fit::ALL, Fit::name))]
+    #[arg(long, value_parser = choice(&Fit::ALL, Fit::name), conflicts_with = "scene")]
     pub fit: Option<Fit>,
     /// Shadow map depth format.
-    #[arg(long, value_parser = choice(&DepthFormat::ALL, DepthFormat::name))]
+    #[arg(long, value_parser = choice(&DepthFormat::ALL, DepthFormat::name), conflicts_with = "scene")]
     pub depth_format: Option<DepthFormat>,
     /// Draw only the shadow casters (the cube) into the shadow map.
-    #[arg(long, num_args = 0..=1, default_missing_value = "true", value_name = "BOOL")]
+    #[arg(long, num_args = 0..=1, default_missing_value = "true", value_name = "BOOL", conflicts_with = "scene")]
     pub casters_only: Option<bool>,
     /// Render one frame on every available consumer (wgpu Vulkan via WGSL
     /// and SPIR-V, wgpu GL, GL 3.3, GLES 3.0, WebGL2, the CPU reference),
@@ -101,7 +101,9 @@ pub struct RenderArgs {
     #[arg(long, conflicts_with_all = ["reference", "compare", "frames"])]
     pub compare_backends: bool,
     /// A shadow technique scene instead of the tutorial's (docs/gallery.md):
-    /// spot, pcf, cascades, proj, cull, rgba8-depth.
+    /// spot, pcf, cascades, proj, cull, rgba8-depth. Each has its own shadow
+    /// setup, so it takes none of --quality, --filter, --fit,
+    /// --depth-format and --casters-only.
     #[arg(long, value_name = "NAME", conflicts_with_all = ["file", "compare_backends", "reflection"])]
     pub scene: Option<String>,
     /// Render, then again whenever the program or a file it includes
@@ -277,6 +279,11 @@ mod tests {
         assert_eq!(parse(&["--backend", "gles300"]).unwrap().consumer, Consumer::Gles300);
         assert_eq!(parse(&["--backend", "gl430", "--fit", "visible"]).unwrap().consumer, Consumer::Gl430);
         assert_eq!(parse(&["--fit", "visible"]).unwrap().setup.shadow.fit, Fit::Visible);
+        // A technique scene has its own shadow setup: its options are refused, not ignored.
+        for opt in [&["--fit", "tight"][..], &["--quality", "tuned"], &["--casters-only"], &["--depth-format", "depth16"]] {
+            let args: Vec<&str> = ["--scene", "spot"].iter().chain(opt).copied().collect();
+            assert!(parse(&args).is_err(), "{args:?}");
+        }
         let err = parse(&["--backend", "gl", "--via", "spirv"]).unwrap_err();
         assert!(err.contains("only the Vulkan backend"), "{err}");
         assert!(parse(&["--backend", "gl330", "--via", "spirv"]).is_err());
