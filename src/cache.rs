@@ -34,13 +34,12 @@
 //! fails a compilation: it is then compiled, and not stored.
 
 use std::fmt;
-use std::io::Write as _;
 use std::path::{Path, PathBuf};
-use std::sync::atomic::{AtomicU32, Ordering};
 use std::time::{Duration, SystemTime};
 
 use sha2::{Digest, Sha256};
 
+use crate::sealed::{Reader, TEMP_PREFIX};
 use crate::syntax::token::{TokKind, Token};
 use crate::{Artifact, Options, Preprocessed, Target};
 
@@ -54,8 +53,6 @@ const MAGIC: &[u8; 8] = b"UMBRAC\x03\x00";
 const LAYOUT_DIR: &str = "v3";
 const HEADER_LEN: usize = 8 + 32 + 8 + 4;
 
-/// How a temporary entry's name starts (entries are named by hex digits).
-const TEMP_PREFIX: &str = ".tmp-";
 
 /// A hit refreshes an entry's modification time (its place in the
 /// eviction order) only when it is older than this.
@@ -260,19 +257,10 @@ impl Cache {
     pub fn put_entry(&self, key: &Key, artifacts: &[Artifact], hashes: &[Key]) -> std::io::Result<()> {
         assert_eq!(artifacts.len(), hashes.len(), "one hash per artifact");
         let path = self.path_of(key);
-        let dir = path.parent().expect("an entry path has a parent");
-        std::fs::create_dir_all(dir)?;
+        std::fs::create_dir_all(path.parent().expect("an entry path has a parent"))?;
         self.tag_dir();
-        let tmp = unique_temp(dir);
-        let written = std::fs::File::options().write(true).create_new(true).open(&tmp).and_then(|mut f| f.write_all(&encode(key, artifacts, hashes)));
         // No fsync: an entry torn by a crash fails its CRC and is recompiled.
-        match written.and_then(|_| std::fs::rename(&tmp, &path)) {
-            Ok(()) => Ok(()),
-            Err(e) => {
-                let _ = std::fs::remove_file(&tmp);
-                Err(e)
-            }
-        }
+        crate::sealed::write_atomically(&path, &encode(key, artifacts, hashes))
     }
 
     /// Marks the directory as a cache for backup tools (`CACHEDIR.TAG`).
@@ -350,15 +338,6 @@ fn read_dir_paths(dir: &Path) -> Vec<PathBuf> {
     std::fs::read_dir(dir).map(|rd| rd.flatten().map(|e| e.path()).collect()).unwrap_or_default()
 }
 
-/// A temporary name no other thread or process uses: the process id, a
-/// per-process counter and the clock.
-fn unique_temp(dir: &Path) -> PathBuf {
-    static COUNTER: AtomicU32 = AtomicU32::new(0);
-    let n = COUNTER.fetch_add(1, Ordering::Relaxed);
-    let nanos = SystemTime::now().duration_since(SystemTime::UNIX_EPOCH).map(|d| d.subsec_nanos()).unwrap_or(0);
-    dir.join(format!("{TEMP_PREFIX}{}-{n}-{nanos:08x}", std::process::id()))
-}
-
 fn target_tag(t: Option<Target>) -> u8 {
     match t {
         None => 0,
@@ -426,7 +405,7 @@ fn decode(key: &Key, bytes: &[u8]) -> Option<Entry> {
     if len != body.len() as u64 || crc32fast::hash(body) != crc {
         return None;
     }
-    let mut r = Reader { bytes: body };
+    let mut r = Reader(body);
     let count = u32::from_le_bytes(r.take(4)?.try_into().ok()?);
     let mut artifacts = Vec::with_capacity(count.min(1024) as usize);
     let mut hashes = Vec::with_capacity(count.min(1024) as usize);
@@ -443,28 +422,7 @@ fn decode(key: &Key, bytes: &[u8]) -> Option<Entry> {
         artifacts.push(Artifact { file_name, target, entry, contents: contents.to_vec() });
         hashes.push(hash);
     }
-    r.bytes.is_empty().then_some(Entry { artifacts, hashes })
-}
-
-struct Reader<'a> {
-    bytes: &'a [u8],
-}
-
-impl<'a> Reader<'a> {
-    fn take(&mut self, n: usize) -> Option<&'a [u8]> {
-        if self.bytes.len() < n {
-            return None;
-        }
-        let (a, b) = self.bytes.split_at(n);
-        self.bytes = b;
-        Some(a)
-    }
-
-    /// A length-prefixed field.
-    fn field(&mut self) -> Option<&'a [u8]> {
-        let len = u64::from_le_bytes(self.take(8)?.try_into().ok()?);
-        self.take(usize::try_from(len).ok()?)
-    }
+    r.is_empty().then_some(Entry { artifacts, hashes })
 }
 
 #[cfg(test)]

@@ -28,6 +28,7 @@ pub mod golden;
 pub mod lower;
 pub mod output;
 pub mod rerun;
+mod sealed;
 pub mod sema;
 pub mod source;
 pub mod syntax;

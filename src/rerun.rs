@@ -30,6 +30,7 @@ use std::time::SystemTime;
 
 use crate::cache::{Cache, Key};
 use crate::output::stamps::{FileState, Stamps};
+use crate::sealed::{self, Reader};
 
 const MAGIC: &[u8; 8] = b"UMBRUN01";
 
@@ -66,21 +67,13 @@ impl Record {
 
     /// The record stored under `key`, if there is an intact one.
     pub fn load(cache: &Cache, key: &Key) -> Option<Record> {
-        decode(&std::fs::read(Self::path(cache, key)).ok()?)
+        decode(sealed::unseal(MAGIC, &std::fs::read(Self::path(cache, key)).ok()?)?)
     }
 
     /// Stores the record under `key`, atomically (best effort: a record
     /// only saves work).
     pub fn save(&self, cache: &Cache, key: &Key) {
-        let path = Self::path(cache, key);
-        let Some(dir) = path.parent() else { return };
-        if std::fs::create_dir_all(dir).is_err() {
-            return;
-        }
-        let tmp = dir.join(format!(".tmp-{}-{}", std::process::id(), crate::output::stamps::now_ns()));
-        if std::fs::write(&tmp, encode(self)).and_then(|_| std::fs::rename(&tmp, &path)).is_err() {
-            let _ = std::fs::remove_file(&tmp);
-        }
+        let _ = sealed::write_atomically(&Self::path(cache, key), &encode(self));
     }
 
     /// Whether a rerun would change nothing (see the module docs), the
@@ -115,80 +108,42 @@ fn output_holds(path: &Path, hash: &Key, stamps: &Stamps, newest: SystemTime) ->
     newer && m.is_file() && FileState::of(&m).is_some_and(|s| stamps.hash_of(path, &s) == Some(*hash))
 }
 
-fn put_bytes(out: &mut Vec<u8>, b: &[u8]) {
-    out.extend_from_slice(&(b.len() as u64).to_le_bytes());
-    out.extend_from_slice(b);
-}
-
 fn encode(r: &Record) -> Vec<u8> {
     let mut out = Vec::with_capacity(64 + 128 * (r.files.len() + r.probed.len() + r.outputs.len()));
-    out.extend_from_slice(MAGIC);
-    out.extend_from_slice(&[0; 4]); // CRC-32 of the rest, below
     for c in r.counts {
         out.extend_from_slice(&c.to_le_bytes());
     }
     for list in [&r.files, &r.outputs] {
         out.extend_from_slice(&(list.len() as u64).to_le_bytes());
         for (p, h) in list.iter() {
-            put_bytes(&mut out, p.as_os_str().as_encoded_bytes());
+            sealed::put_path(&mut out, p);
             out.extend_from_slice(&h.0);
         }
     }
     out.extend_from_slice(&(r.probed.len() as u64).to_le_bytes());
     for p in &r.probed {
-        put_bytes(&mut out, p.as_os_str().as_encoded_bytes());
+        sealed::put_path(&mut out, p);
     }
     match &r.depfile {
         Some((p, text)) => {
             out.push(1);
-            put_bytes(&mut out, p.as_os_str().as_encoded_bytes());
-            put_bytes(&mut out, text);
+            sealed::put_path(&mut out, p);
+            sealed::put_field(&mut out, text);
         }
         None => out.push(0),
     }
-    let crc = crc32fast::hash(&out[12..]);
-    out[8..12].copy_from_slice(&crc.to_le_bytes());
-    out
+    sealed::seal(MAGIC, &out)
 }
 
-struct Reader<'a>(&'a [u8]);
-
-impl<'a> Reader<'a> {
-    fn take(&mut self, n: usize) -> Option<&'a [u8]> {
-        if self.0.len() < n {
-            return None;
-        }
-        let (a, rest) = self.0.split_at(n);
-        self.0 = rest;
-        Some(a)
-    }
-    fn u64(&mut self) -> Option<u64> {
-        Some(u64::from_le_bytes(self.take(8)?.try_into().ok()?))
-    }
-    fn bytes(&mut self) -> Option<&'a [u8]> {
-        let n = usize::try_from(self.u64()?).ok()?;
-        self.take(n)
-    }
-    fn path(&mut self) -> Option<PathBuf> {
-        path_of_bytes(self.bytes()?)
-    }
-    fn key(&mut self) -> Option<Key> {
-        Some(Key(self.take(32)?.try_into().ok()?))
-    }
-}
-
-fn decode(b: &[u8]) -> Option<Record> {
-    if b.get(..8)? != MAGIC || crc32fast::hash(b.get(12..)?) != u32::from_le_bytes(b[8..12].try_into().ok()?) {
-        return None;
-    }
-    let mut r = Reader(&b[12..]);
+/// A record from the body of its file (see [`sealed::unseal`]).
+fn decode(body: &[u8]) -> Option<Record> {
+    let mut r = Reader(body);
     let mut rec = Record::default();
     for c in rec.counts.iter_mut() {
         *c = r.u64()?;
     }
     for list in [&mut rec.files, &mut rec.outputs] {
-        let n = r.u64()?;
-        for _ in 0..n {
+        for _ in 0..r.u64()? {
             let p = r.path()?;
             list.push((p, r.key()?));
         }
@@ -198,22 +153,9 @@ fn decode(b: &[u8]) -> Option<Record> {
     }
     rec.depfile = match r.take(1)?[0] {
         0 => None,
-        _ => Some((r.path()?, r.bytes()?.to_vec())),
+        _ => Some((r.path()?, r.field()?.to_vec())),
     };
-    r.0.is_empty().then_some(rec)
-}
-
-#[cfg(unix)]
-fn path_of_bytes(b: &[u8]) -> Option<PathBuf> {
-    use std::os::unix::ffi::OsStrExt;
-    Some(PathBuf::from(std::ffi::OsStr::from_bytes(b)))
-}
-
-/// Where paths are not bytes, records are never read back (the outputs
-/// have no stamps there either).
-#[cfg(not(unix))]
-fn path_of_bytes(_: &[u8]) -> Option<PathBuf> {
-    None
+    r.is_empty().then_some(rec)
 }
 
 #[cfg(test)]

@@ -30,6 +30,7 @@ use std::sync::Mutex;
 use std::time::{Duration, SystemTime};
 
 use crate::cache::Key;
+use crate::sealed::{self, Reader};
 
 /// How long after a file's last change a stamp of it must have been taken
 /// to be trusted: over one tick of the coarsest clock Linux file systems
@@ -39,7 +40,7 @@ pub const MARGIN: Duration = Duration::from_millis(20);
 /// file systems): their clocks tick by one or two seconds.
 const COARSE_MARGIN: Duration = Duration::from_secs(3);
 
-const MAGIC: &[u8; 8] = b"UMBSTMP1";
+const MAGIC: &[u8; 8] = b"UMBSTMP2";
 
 /// What the file system says of a file, as far as a stamp compares it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -112,7 +113,7 @@ impl Stamps {
     /// The stamps kept in `cache_dir` for the outputs under `out_dir`
     /// (empty if there are none or they cannot be read).
     pub fn load(cache_dir: &Path, out_dir: &Path) -> Stamps {
-        let old = stamps_path(cache_dir, out_dir).and_then(|p| std::fs::read(p).ok()).and_then(|b| decode(&b)).unwrap_or_default();
+        let old = stamps_path(cache_dir, out_dir).and_then(|p| std::fs::read(p).ok()).and_then(|b| decode(sealed::unseal(MAGIC, &b)?)).unwrap_or_default();
         Stamps { dirs: Some((cache_dir.to_path_buf(), out_dir.to_path_buf())), old, new: Mutex::new(HashMap::new()) }
     }
 
@@ -153,27 +154,16 @@ impl Stamps {
                 None => all.remove(&p),
             };
         }
-        let Some(dir) = path.parent() else { return };
-        if std::fs::create_dir_all(dir).is_err() {
-            return;
-        }
-        let tmp = dir.join(format!(".tmp-{}-{}", std::process::id(), now_ns()));
-        if std::fs::write(&tmp, encode(&all)).and_then(|_| std::fs::rename(&tmp, &path)).is_err() {
-            let _ = std::fs::remove_file(&tmp);
-        }
+        let _ = sealed::write_atomically(&path, &encode(&all));
     }
 }
 
 fn encode(all: &HashMap<PathBuf, Stamp>) -> Vec<u8> {
     let mut entries: Vec<_> = all.iter().collect();
     entries.sort_by(|a, b| a.0.cmp(b.0));
-    let mut out = Vec::with_capacity(16 + entries.len() * 160);
-    out.extend_from_slice(MAGIC);
-    out.extend_from_slice(&[0; 4]); // CRC-32 of the rest, below
+    let mut out = Vec::with_capacity(entries.len() * 160);
     for (p, s) in entries {
-        let bytes = p.as_os_str().as_encoded_bytes();
-        out.extend_from_slice(&(bytes.len() as u32).to_le_bytes());
-        out.extend_from_slice(bytes);
+        sealed::put_path(&mut out, p);
         out.extend_from_slice(&s.hash.0);
         for v in [s.state.len, s.state.ino, s.state.dev] {
             out.extend_from_slice(&v.to_le_bytes());
@@ -182,49 +172,21 @@ fn encode(all: &HashMap<PathBuf, Stamp>) -> Vec<u8> {
             out.extend_from_slice(&v.to_le_bytes());
         }
     }
-    let crc = crc32fast::hash(&out[12..]);
-    out[8..12].copy_from_slice(&crc.to_le_bytes());
-    out
+    sealed::seal(MAGIC, &out)
 }
 
-fn decode(b: &[u8]) -> Option<HashMap<PathBuf, Stamp>> {
-    if b.get(..8)? != MAGIC || crc32fast::hash(b.get(12..)?) != u32::from_le_bytes(b[8..12].try_into().ok()?) {
-        return None;
-    }
-    let mut r = &b[12..];
-    let mut take = |n: usize| -> Option<&[u8]> {
-        if r.len() < n {
-            return None;
-        }
-        let (a, rest) = r.split_at(n);
-        r = rest;
-        Some(a)
-    };
+/// The stamps in the body of a stamps file (see [`sealed::unseal`]).
+fn decode(body: &[u8]) -> Option<HashMap<PathBuf, Stamp>> {
+    let mut r = Reader(body);
     let mut all = HashMap::new();
-    loop {
-        let Some(len) = take(4) else { break };
-        let len = u32::from_le_bytes(len.try_into().ok()?) as usize;
-        let path = path_of_bytes(take(len)?)?;
-        let hash = Key(take(32)?.try_into().ok()?);
-        let u = |b: &[u8]| u64::from_le_bytes(b.try_into().unwrap_or_default());
-        let (len, ino, dev) = (u(take(8)?), u(take(8)?), u(take(8)?));
-        let i = |b: &[u8]| i128::from_le_bytes(b.try_into().unwrap_or_default());
-        let (mtime_ns, ctime_ns, taken_ns) = (i(take(16)?), i(take(16)?), i(take(16)?));
+    while !r.is_empty() {
+        let path = r.path()?;
+        let hash = r.key()?;
+        let (len, ino, dev) = (r.u64()?, r.u64()?, r.u64()?);
+        let (mtime_ns, ctime_ns, taken_ns) = (r.i128()?, r.i128()?, r.i128()?);
         all.insert(path, Stamp { state: FileState { len, ino, dev, mtime_ns, ctime_ns }, hash, taken_ns });
     }
     Some(all)
-}
-
-#[cfg(unix)]
-fn path_of_bytes(b: &[u8]) -> Option<PathBuf> {
-    use std::os::unix::ffi::OsStrExt;
-    Some(PathBuf::from(std::ffi::OsStr::from_bytes(b)))
-}
-
-/// No stamps are taken where there are no inodes ([`FileState::of`]).
-#[cfg(not(unix))]
-fn path_of_bytes(_: &[u8]) -> Option<PathBuf> {
-    None
 }
 
 #[cfg(test)]
