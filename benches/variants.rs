@@ -301,7 +301,7 @@ fn in_process_umbrac(variants: &[umbrac::variants::Variant], rounds: usize, targ
             })
             .collect();
         let t0 = Instant::now();
-        let (outcomes, _) = umbrac::batch::compile_cached(&units, workers, None, None);
+        let (outcomes, _) = umbrac::batch::compile_cached(&units, workers, None, Default::default());
         times.push(t0.elapsed().as_secs_f64() * 1e3);
         assert!(outcomes.iter().all(|o| !o.failed()));
     }

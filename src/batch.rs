@@ -242,13 +242,27 @@ pub struct Stats {
 /// (`umbrac::build`'s bindings module): `derive(unit index, compiled)`.
 pub type Derive<'a> = dyn Fn(usize, &crate::Compiled) -> Result<Vec<Artifact>, String> + Sync + 'a;
 
+/// Called on the worker thread as soon as a unit's outputs are ready (it
+/// compiled without a diagnostic, or was a cache hit), with the unit's
+/// index: the CLI writes them to a stage while other units compile
+/// (`output::staged`). Units that share another's outputs are not reported.
+pub type Ready<'a> = dyn Fn(usize, &[Artifact]) + Sync + 'a;
+
+/// What a caller adds to [`compile_cached`]'s work.
+#[derive(Clone, Copy, Default)]
+pub struct Hooks<'a> {
+    pub derive: Option<&'a Derive<'a>>,
+    pub ready: Option<&'a Ready<'a>>,
+}
+
 /// Compiles every unit on at most `workers` threads, with a cache: each
 /// unit is preprocessed (in parallel) and keyed ([`Key::of`]); units with
 /// the same key are compiled once; a key found in `cache` is not compiled
 /// at all; what was compiled without any diagnostic is stored. Results come
 /// back in the units' order. A panic anywhere is an internal-error
 /// diagnostic of that unit only.
-pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>, derive: Option<&Derive<'_>>) -> (Vec<Outcome>, Stats) {
+pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>, hooks: Hooks<'_>) -> (Vec<Outcome>, Stats) {
+    let Hooks { derive, ready } = hooks;
     enum Pre {
         Failed(Box<Compilation>),
         Hit(crate::cache::Entry),
@@ -266,7 +280,12 @@ pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>,
             }
             let key = Key::of(&pre, &u.opts, &u.extra);
             match cache.and_then(|c| c.get_entry(&key)) {
-                Some(entry) => (Pre::Hit(entry), read, Some(key)),
+                Some(entry) => {
+                    if let Some(r) = ready {
+                        r(i, &entry.artifacts);
+                    }
+                    (Pre::Hit(entry), read, Some(key))
+                }
                 None => (Pre::Miss(Box::new(pre)), read, Some(key)),
             }
         },
@@ -340,6 +359,9 @@ pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>,
             // tree (the lowered modules) is freed here, on this worker,
             // not all at once at the end of the batch.
             let c = if artifacts.is_some() && c.diagnostics.is_empty() { None } else { Some(c) };
+            if let (Some(r), Some(arts), None) = (ready, &artifacts, &c) {
+                r(i, arts);
+            }
             (c, artifacts, hashes, stored)
         },
         |n, msg| (Some(panicked_in(units[indices[n]].path, &msg)), None, Vec::new(), None),
@@ -454,7 +476,7 @@ mod tests {
             Ok(vec![])
         };
         for workers in [1, 3] {
-            let (out, stats) = compile_cached(&units, workers, Some(&cache), Some(&derive));
+            let (out, stats) = compile_cached(&units, workers, Some(&cache), Hooks { derive: Some(&derive), ready: None });
             assert_eq!(out[2].origin, Origin::SameAs(0));
             assert!(!out[0].failed() && !out[1].failed() && !out[2].failed());
             assert!(out[3].failed());
@@ -472,7 +494,7 @@ mod tests {
     #[test]
     fn an_unreadable_unit_is_a_located_error_not_a_panic() {
         let missing = Path::new("/nonexistent/missing.das");
-        let (out, _) = compile_cached(&[Unit { path: missing, opts: Options::default(), extra: String::new() }], 2, None, None);
+        let (out, _) = compile_cached(&[Unit { path: missing, opts: Options::default(), extra: String::new() }], 2, None, Hooks::default());
         let c = out[0].compilation.as_ref().unwrap();
         assert_eq!(c.diagnostics.len(), 1);
         assert_eq!(c.diagnostics[0].severity, crate::Severity::Error, "{:?}", c.diagnostics);

@@ -87,7 +87,11 @@ pub struct Settings<'a> {
 
 impl Batch {
     /// Compiles every input with every variant (or once each, with none).
-    pub fn compile(inputs: Vec<Input>, variants: Vec<Variant>, settings: &Settings<'_>, derive: Option<&batch::Derive<'_>>) -> Batch {
+    /// `ready(job, dir, outputs)` is called on the worker as soon as a
+    /// job's outputs are ready, `dir` being where they go relative to the
+    /// output directory ([`Batch::out_dir`]); jobs that share another's
+    /// outputs are not reported ([`batch::Ready`]).
+    pub fn compile(inputs: Vec<Input>, variants: Vec<Variant>, settings: &Settings<'_>, ready: Option<&Ready<'_>>) -> Batch {
         let mut jobs = Vec::new();
         for input in 0..inputs.len() {
             if variants.is_empty() {
@@ -108,7 +112,17 @@ impl Batch {
                 Unit { path: &input.path, opts, extra: String::new() }
             })
             .collect();
-        let (outcomes, stats) = batch::compile_cached(&units, settings.workers, settings.cache, derive);
+        let rel_dirs: Vec<PathBuf> = match ready {
+            Some(_) => jobs.iter().map(|j| rel_dir(j, &inputs, &variants)).collect(),
+            None => Vec::new(),
+        };
+        let report = |j: usize, arts: &[Artifact]| {
+            if let Some(r) = ready {
+                r(j, &rel_dirs[j], arts);
+            }
+        };
+        let hooks = batch::Hooks { derive: None, ready: ready.is_some().then_some(&report as &batch::Ready) };
+        let (outcomes, stats) = batch::compile_cached(&units, settings.workers, settings.cache, hooks);
         drop(units);
         Batch { inputs, variants, jobs, outcomes, stats }
     }
@@ -121,16 +135,12 @@ impl Batch {
     /// The directory of job `j`'s outputs under `root`:
     /// `root/VARIANT/SUBDIR`.
     pub fn out_dir(&self, j: usize, root: &Path) -> PathBuf {
-        let job = self.jobs[j];
-        let mut d = root.to_path_buf();
-        if let Some(v) = job.variant {
-            d.push(&self.variants[v].name);
+        let rel = rel_dir(&self.jobs[j], &self.inputs, &self.variants);
+        if rel.as_os_str().is_empty() {
+            root.to_path_buf()
+        } else {
+            root.join(rel)
         }
-        let sub = &self.inputs[job.input].subdir;
-        if !sub.as_os_str().is_empty() {
-            d.push(sub);
-        }
-        d
     }
 
     /// A failed job's diagnostics, once per distinct failure: jobs that
@@ -279,6 +289,22 @@ impl Batch {
         all.dedup();
         all
     }
+}
+
+/// Where [`Batch::compile`] reports a job's outputs as they are ready.
+pub type Ready<'a> = dyn Fn(usize, &Path, &[Artifact]) + Sync + 'a;
+
+/// A job's output directory relative to the run's: `VARIANT/SUBDIR`.
+fn rel_dir(job: &Job, inputs: &[Input], variants: &[Variant]) -> PathBuf {
+    let mut d = PathBuf::new();
+    if let Some(v) = job.variant {
+        d.push(&variants[v].name);
+    }
+    let sub = &inputs[job.input].subdir;
+    if !sub.as_os_str().is_empty() {
+        d.push(sub);
+    }
+    d
 }
 
 /// Jobs that failed alike ([`Batch::failures`]).

@@ -27,6 +27,7 @@
 use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
+use std::sync::atomic::{AtomicBool, Ordering};
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use codespan_reporting::term::termcolor::{ColorChoice, StandardStream};
@@ -530,7 +531,25 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
         }
     }
     let settings = umbrac::jobs::Settings { options: &opts, workers: args.batch.workers(), cache: cache.as_ref() };
-    let batch = umbrac::jobs::Batch::compile(inputs, variants, &settings, None);
+    // Variants into a directory that does not exist yet: each job's outputs
+    // go to a stage as soon as it compiles, and one rename publishes them
+    // all (src/output/staged.rs).
+    let mut stage = (!to_stdout && !variants.is_empty()).then(|| umbrac::output::staged::Staged::begin(&dir)).flatten();
+    let staged: Vec<AtomicBool> = (0..inputs.len() * variants.len().max(1)).map(|_| AtomicBool::new(false)).collect();
+    let spoiled = AtomicBool::new(false);
+    let to_stage = |j: usize, rel: &Path, artifacts: &[umbrac::Artifact]| {
+        let Some(s) = &stage else { return };
+        if spoiled.load(Ordering::Relaxed) {
+            return;
+        }
+        match s.write(rel, artifacts) {
+            Ok(()) => staged[j].store(true, Ordering::Relaxed),
+            // Written the usual way, which reports why.
+            Err(_) => spoiled.store(true, Ordering::Relaxed),
+        }
+    };
+    let ready: Option<&umbrac::jobs::Ready> = if stage.is_some() { Some(&to_stage) } else { None };
+    let batch = umbrac::jobs::Batch::compile(inputs, variants, &settings, ready);
     watched.files.extend(batch.files_read());
     report_stats(&args.batch, &batch, cache.as_ref(), &mut reporter);
 
@@ -595,29 +614,39 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
         owner.extend(artifacts.iter().map(|a| (out_dir.join(&a.file_name), path.as_path())));
         to_write.push((j, out_dir));
     }
-    // An unchanged output newer than every file read is left alone; the
-    // cache's stamps say which outputs need not be read back to see that.
     let mut inputs_read = batch.files_read();
     inputs_read.extend(args.variants.iter().cloned());
-    let newest_input = umbrac::jobs::newest_mtime(&inputs_read);
+    let manifest = (!batch.variants.is_empty()).then(|| umbrac::jobs::variants_artifact(&batch));
+    // A stage that holds every output is published whole.
+    let published = match (stage.take(), &manifest) {
+        (Some(s), Some(manifest)) if code == 0 && !spoiled.load(Ordering::Relaxed) => publish_stage(s, &staged, &batch, &to_write, &dir, manifest),
+        _ => false,
+    };
+    // An unchanged output newer than every file read is left alone; the
+    // cache's stamps say which outputs need not be read back to see that.
+    let newest_input = if published { None } else { umbrac::jobs::newest_mtime(&inputs_read) };
     let stamps = match &cache {
-        Some(c) if !to_write.is_empty() => umbrac::output::stamps::Stamps::load(c.dir(), &dir),
+        Some(c) if !to_write.is_empty() && !published => umbrac::output::stamps::Stamps::load(c.dir(), &dir),
         _ => Default::default(),
     };
     // Each directory atomically, several at once (file system calls block
     // now and then).
-    let results = umbrac::batch::parallel_map(
-        to_write.len(),
-        WRITERS,
-        |k| {
-            let (j, out_dir) = &to_write[k];
-            let o = &batch.outcomes[*j];
-            let artifacts = o.artifacts.as_deref().unwrap_or_default();
-            let known = (o.hashes.len() == artifacts.len()).then_some(umbrac::output::Known { hashes: &o.hashes, stamps: &stamps });
-            umbrac::jobs::write_outputs(out_dir, artifacts, newest_input, known.as_ref()).map_err(|e| e.to_string())
-        },
-        |_, msg| Err(format!("writing panicked: {msg}")),
-    );
+    let results = if published {
+        to_write.iter().map(|_| Ok(())).collect()
+    } else {
+        umbrac::batch::parallel_map(
+            to_write.len(),
+            WRITERS,
+            |k| {
+                let (j, out_dir) = &to_write[k];
+                let o = &batch.outcomes[*j];
+                let artifacts = o.artifacts.as_deref().unwrap_or_default();
+                let known = (o.hashes.len() == artifacts.len()).then_some(umbrac::output::Known { hashes: &o.hashes, stamps: &stamps });
+                umbrac::jobs::write_outputs(out_dir, artifacts, newest_input, known.as_ref()).map_err(|e| e.to_string())
+            },
+            |_, msg| Err(format!("writing panicked: {msg}")),
+        )
+    };
     let mut written: Vec<(PathBuf, &Path)> = Vec::new();
     let mut written_hashes: Vec<(PathBuf, umbrac::cache::Key)> = Vec::new();
     for ((j, out_dir), result) in to_write.iter().zip(results) {
@@ -637,11 +666,11 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
     if to_stdout {
         return (code, watched);
     }
-    if !batch.variants.is_empty() && code == 0 {
-        let manifest = umbrac::jobs::variants_artifact(&batch);
+    if let (Some(manifest), 0) = (&manifest, code) {
         let hash = [umbrac::cache::Key::of_bytes(&manifest.contents)];
         let known = umbrac::output::Known { hashes: &hash, stamps: &stamps };
-        match umbrac::jobs::write_outputs(&dir, std::slice::from_ref(&manifest), newest_input, Some(&known)) {
+        let result = if published { Ok(()) } else { umbrac::jobs::write_outputs(&dir, std::slice::from_ref(manifest), newest_input, Some(&known)) };
+        match result {
             Ok(()) => {
                 written.push((dir.join(&manifest.file_name), Path::new("")));
                 written_hashes.push((dir.join(&manifest.file_name), hash[0]));
@@ -683,6 +712,22 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
         umbrac::rerun::Record { files, probed, outputs: written_hashes, depfile: depfile_text, counts }.save(c, key);
     }
     (code, watched)
+}
+
+/// Completes a stage with what is not in it yet (jobs that share another's
+/// outputs, `variants.json`) and publishes it. False where that could not
+/// be done: the caller then writes the usual way, and the stage is gone.
+fn publish_stage(stage: umbrac::output::staged::Staged, staged: &[AtomicBool], batch: &umbrac::jobs::Batch, to_write: &[(usize, PathBuf)], dir: &Path, manifest: &umbrac::Artifact) -> bool {
+    for (j, out_dir) in to_write {
+        if staged[*j].load(Ordering::Relaxed) {
+            continue;
+        }
+        let (Ok(rel), Some(artifacts)) = (out_dir.strip_prefix(dir), &batch.outcomes[*j].artifacts) else { return false };
+        if stage.write(rel, artifacts).is_err() {
+            return false;
+        }
+    }
+    stage.write(Path::new(""), std::slice::from_ref(manifest)).is_ok() && stage.publish().is_ok()
 }
 
 /// What a FILE argument's outputs record of it: its file name

@@ -21,6 +21,9 @@
 //! process killed mid-write (SIGKILL, power loss) can leave one behind; the
 //! next write into the same directory removes those whose process is gone.
 //!
+//! A directory that does not exist yet can instead be built whole under a
+//! hidden name and renamed into place ([`staged`]).
+//!
 //! Outputs are not fsynced, as no compiler or build tool (gcc, clang,
 //! rustc, cargo, ninja) fsyncs its outputs: a sync costs about half a
 //! millisecond per file here, which was three quarters of a cold compile
@@ -37,6 +40,7 @@ use std::sync::atomic::{AtomicU32, Ordering};
 
 use crate::target::Artifact;
 
+pub mod staged;
 pub mod stamps;
 
 /// What a destination held before a write.
@@ -122,10 +126,7 @@ pub fn write_outputs_known(dir: &Path, artifacts: &[Artifact], unchanged: Unchan
     // Names come from entry point names; refuse anything that is not a
     // plain file name so nothing is ever written outside `dir`.
     for a in artifacts {
-        let n = &a.file_name;
-        if n.is_empty() || n == "." || n == ".." || n.contains(['/', '\\', '\0']) {
-            return Err(err(&dir.join(n), "not a plain file name"));
-        }
+        check_file_name(&a.file_name).map_err(|m| err(&dir.join(&a.file_name), m))?;
     }
     let mut seen = std::collections::HashSet::new();
     for a in artifacts {
@@ -301,13 +302,7 @@ impl TempFile {
         const ATTEMPTS: u32 = 1000;
         for _ in 0..ATTEMPTS {
             let path = dir.join(next_name());
-            // `create_new` fails rather than open an existing file (or
-            // follow a symlink planted under the name).
-            let mut options = std::fs::OpenOptions::new();
-            options.write(true).create_new(true);
-            #[cfg(unix)]
-            std::os::unix::fs::OpenOptionsExt::mode(&mut options, OUTPUT_MODE);
-            match options.open(&path) {
+            match create_output_file(&path) {
                 Ok(file) => return Ok(TempFile { path, file: Some(file), renamed: false }),
                 Err(e) if e.kind() == std::io::ErrorKind::AlreadyExists => continue,
                 Err(e) => return Err(e),
@@ -366,12 +361,40 @@ fn write_temp(dir: &Path, contents: &[u8]) -> std::io::Result<TempFile> {
     let temp = TempFile::new_in(dir)?;
     let mut file = temp.file();
     file.write_all(contents)?;
+    give_output_mode(file)?;
+    Ok(temp)
+}
+
+/// Names come from entry point names; anything that is not a plain file
+/// name is refused, so nothing is ever written outside its directory.
+fn check_file_name(n: &str) -> Result<(), &'static str> {
+    if n.is_empty() || n == "." || n == ".." || n.contains(['/', '\\', '\0']) {
+        return Err("not a plain file name");
+    }
+    Ok(())
+}
+
+/// Creates a new file for writing, with [`OUTPUT_MODE`] as far as the
+/// umask allows. `create_new` fails rather than open an existing file (or
+/// follow a symlink planted under the name).
+fn create_output_file(path: &Path) -> std::io::Result<std::fs::File> {
+    let mut options = std::fs::OpenOptions::new();
+    options.write(true).create_new(true);
+    #[cfg(unix)]
+    std::os::unix::fs::OpenOptionsExt::mode(&mut options, OUTPUT_MODE);
+    options.open(path)
+}
+
+/// Gives a file made by [`create_output_file`] the whole [`OUTPUT_MODE`]
+/// where the umask took some of it.
+fn give_output_mode(file: &std::fs::File) -> std::io::Result<()> {
     #[cfg(unix)]
     if !umask_keeps_output_mode() {
         use std::os::unix::fs::PermissionsExt;
         file.set_permissions(std::fs::Permissions::from_mode(OUTPUT_MODE))?;
     }
-    Ok(temp)
+    let _ = file;
+    Ok(())
 }
 
 /// Whether a file name looks like one of umbrac's outputs (so that stale

@@ -124,7 +124,47 @@ fn one_failing_variant_fails_the_run_names_the_variant_and_writes_nothing() {
         assert!(text.contains("in variants `scale_1_0__broken` (-D SCALE=1.0 -D BROKEN), `scale_1_0__broken__double` (-D SCALE=1.0 -D BROKEN -D DOUBLE)"), "{text}");
         assert!(!text.contains("in variants `scale_1_0`,"), "only the failing variants are named:\n{text}");
         assert!(!p.path("out").exists() && !p.path("out.d").exists(), "nothing is written");
+        assert_eq!(entries(p.dir.path()), ["spec.toml", "tint.das"], "nor left behind (a stage of the outputs, say)");
     }
+}
+
+/// The names in a directory, sorted, hidden ones included.
+fn entries(dir: &Path) -> Vec<String> {
+    let mut v: Vec<String> = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().to_string_lossy().into_owned()).collect();
+    v.sort();
+    v
+}
+
+#[test]
+fn a_new_output_directory_is_staged_whole_and_an_existing_one_written_in_place_alike() {
+    let p = Project::new();
+    p.write("spec.toml", "[axes]\nSCALE = [\"1.0\", \"2.0\"]\nDOUBLE = [false, true]\n");
+    // A new directory (staged, published by one rename), an existing empty
+    // one and one holding other outputs (written file by file in place):
+    // the same files.
+    std::fs::create_dir(p.path("empty")).unwrap();
+    p.write("full/scale_1_0/tint.wgsl", "old");
+    p.write("full/notes.txt", "mine");
+    for out in ["new", "empty", "full"] {
+        let o = p.run(&["compile", "tint.das", "--variants", "spec.toml", "-o", out, "--no-cache"]);
+        assert!(o.status.success(), "{}", stderr(&o));
+    }
+    let new = files_under(&p.path("new"));
+    assert_eq!(new.len(), 4 * 5 + 1);
+    assert!(new.iter().any(|(n, _)| n == "scale_1_0/tint.wgsl"));
+    assert_eq!(files_under(&p.path("empty")), new);
+    let mut full = files_under(&p.path("full"));
+    full.retain(|(n, _)| n != "notes.txt");
+    assert_eq!(full, new);
+    assert_eq!(entries(p.dir.path()), ["empty", "full", "new", "spec.toml", "tint.das"], "no stage is left");
+
+    // Two inputs with the same outputs in one variant directory: refused
+    // as when writing in place, and no stage is left.
+    p.write("b/tint.das", PROGRAM);
+    let o = p.run(&["compile", "tint.das", "b/tint.das", "--variants", "spec.toml", "-o", "clash", "--no-cache"]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(stderr(&o).contains("is an output of both"), "{}", stderr(&o));
+    assert_eq!(entries(p.dir.path()), ["b", "clash", "empty", "full", "new", "spec.toml", "tint.das"]);
 }
 
 #[test]
