@@ -242,10 +242,13 @@ pub struct Stats {
 /// (`umbrac::build`'s bindings module): `derive(unit index, compiled)`.
 pub type Derive<'a> = dyn Fn(usize, &crate::Compiled) -> Result<Vec<Artifact>, String> + Sync + 'a;
 
-/// Called on the worker thread as soon as a unit's outputs are ready (it
-/// compiled without a diagnostic, or was a cache hit), with the unit's
-/// index: the CLI writes them to a stage while other units compile
-/// (`output::staged`). Units that share another's outputs are not reported.
+/// Called as soon as a unit's outputs are ready (it compiled without a
+/// diagnostic, or was a cache hit), with the unit's index: the CLI writes
+/// them to a stage while other units compile (`output::staged`). A hit is
+/// reported by the worker that looked it up; a compiled unit by its worker
+/// with one worker, and by [`compile_cached`]'s file thread with more. A
+/// unit that shares another's compile (same key) is not reported, unless
+/// it was a hit. A panic in it fails that unit.
 pub type Ready<'a> = dyn Fn(usize, &[Artifact]) + Sync + 'a;
 
 /// What a caller adds to [`compile_cached`]'s work.
@@ -321,52 +324,114 @@ pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>,
 
     let (indices, pres): (Vec<usize>, Vec<Box<Preprocessed>>) = to_compile.into_iter().unzip();
     let pres: Vec<Mutex<Option<Box<Preprocessed>>>> = pres.into_iter().map(|p| Mutex::new(Some(p))).collect();
-    let compiled = parallel_map(
-        indices.len(),
-        workers,
-        |n| {
-            let i = indices[n];
-            let u = &units[i];
-            let pre = pres[n].lock().ok().and_then(|mut p| p.take()).expect("each unit is compiled once");
-            let mut c = pre.compile(&u.opts);
-            let mut artifacts = None;
-            if !c.has_errors() {
-                if let Some(result) = c.result.as_mut() {
-                    // The derived outputs see the compiled outputs, then
-                    // they move out (no copy).
-                    let derived = derive.map(|d| d(i, result));
-                    let mut arts = std::mem::take(&mut result.artifacts);
-                    match derived {
-                        None => artifacts = Some(arts),
-                        Some(Ok(more)) => {
-                            arts.extend(more);
-                            artifacts = Some(arts);
+    let keys: Vec<Option<Key>> = indices.iter().map(|&i| outcome_key(&outcomes[i])).collect();
+    // What the file system does with the outputs of a unit that compiled
+    // without a diagnostic: the `ready` hook and its cache entry. A compile
+    // that said something is not stored (a hit must not hide a diagnostic).
+    let file_work = |n: usize, arts: &[Artifact], hashes: &[Key]| -> Option<Result<(), String>> {
+        if let Some(r) = ready {
+            r(indices[n], arts);
+        }
+        match (cache, &keys[n]) {
+            (Some(cache), Some(key)) => Some(cache.put_entry(key, arts, hashes).map_err(|e| format!("cannot write to the cache in `{}`: {e}", cache.dir().display()))),
+            _ => None,
+        }
+    };
+    let wants_files = ready.is_some() || cache.is_some();
+    // With more than one worker that work is done on one thread of its
+    // own while the workers go on compiling: file creation does not scale
+    // across threads (it takes locks the kernel shares), and from two
+    // threads at once it took longer in all than from one
+    // (docs/performance.md, "Compiling at scale").
+    let handed: Vec<Mutex<Option<Handed>>> = (0..indices.len()).map(|_| Mutex::new(None)).collect();
+    let compiled = std::thread::scope(|s| {
+        let (tx, rx) = std::sync::mpsc::channel::<(usize, Vec<Artifact>, Vec<Key>)>();
+        let file_thread = (workers > 1 && wants_files)
+            .then(|| {
+                std::thread::Builder::new()
+                    .name("umbrac-files".into())
+                    .spawn_scoped(s, || {
+                        for (n, arts, hashes) in rx {
+                            let done = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| file_work(n, &arts, &hashes)));
+                            let result = match done {
+                                Ok(stored) => Handed::Done(arts, hashes, stored),
+                                Err(payload) => Handed::Panicked(crate::diag::panic_message(&*payload)),
+                            };
+                            if let Ok(mut slot) = handed[n].lock() {
+                                *slot = Some(result);
+                            }
                         }
-                        Some(Err(msg)) => c.diagnostics.push(Diagnostic::error_nowhere(format!("{}: {msg}", u.path.display()))),
+                    })
+                    .ok()
+            })
+            .flatten();
+        let tx = file_thread.is_some().then_some(tx);
+        let compiled = parallel_map(
+            indices.len(),
+            workers,
+            |n| {
+                let i = indices[n];
+                let u = &units[i];
+                let pre = pres[n].lock().ok().and_then(|mut p| p.take()).expect("each unit is compiled once");
+                let mut c = pre.compile(&u.opts);
+                let mut artifacts = None;
+                if !c.has_errors() {
+                    if let Some(result) = c.result.as_mut() {
+                        // The derived outputs see the compiled outputs, then
+                        // they move out (no copy).
+                        let derived = derive.map(|d| d(i, result));
+                        let mut arts = std::mem::take(&mut result.artifacts);
+                        match derived {
+                            None => artifacts = Some(arts),
+                            Some(Ok(more)) => {
+                                arts.extend(more);
+                                artifacts = Some(arts);
+                            }
+                            Some(Err(msg)) => c.diagnostics.push(Diagnostic::error_nowhere(format!("{}: {msg}", u.path.display()))),
+                        }
                     }
                 }
-            }
-            // Only a compilation that said nothing is stored: a hit must
-            // not hide a diagnostic.
-            let hashes = artifacts.as_deref().map(crate::cache::hashes_of).unwrap_or_default();
-            let stored = match (&artifacts, cache, &outcome_key(&outcomes[i])) {
-                (Some(arts), Some(cache), Some(key)) if c.diagnostics.is_empty() => {
-                    Some(cache.put_entry(key, arts, &hashes).map_err(|e| format!("cannot write to the cache in `{}`: {e}", cache.dir().display())))
+                let hashes = artifacts.as_deref().map(crate::cache::hashes_of).unwrap_or_default();
+                // A compile that said nothing has nothing more to report: its
+                // tree (the lowered modules) is freed here, on this worker,
+                // not all at once at the end of the batch.
+                let clean = artifacts.is_some() && c.diagnostics.is_empty();
+                let c = if clean { None } else { Some(c) };
+                let Some(arts) = artifacts else { return (c, None, hashes, None) };
+                if !clean || !wants_files {
+                    return (c, Some(arts), hashes, None);
                 }
-                _ => None,
-            };
-            // A compile that said nothing has nothing more to report: its
-            // tree (the lowered modules) is freed here, on this worker,
-            // not all at once at the end of the batch.
-            let c = if artifacts.is_some() && c.diagnostics.is_empty() { None } else { Some(c) };
-            if let (Some(r), Some(arts), None) = (ready, &artifacts, &c) {
-                r(i, arts);
+                let arts = match &tx {
+                    Some(tx) => match tx.send((n, arts, hashes.clone())) {
+                        Ok(()) => return (c, None, hashes, None),
+                        // The file thread is gone (short of a bug it cannot
+                        // be): the work is done here.
+                        Err(std::sync::mpsc::SendError((_, arts, _))) => arts,
+                    },
+                    None => arts,
+                };
+                let stored = file_work(n, &arts, &hashes);
+                (c, Some(arts), hashes, stored)
+            },
+            |n, msg| (Some(panicked_in(units[indices[n]].path, &msg)), None, Vec::new(), None),
+        );
+        drop(tx);
+        compiled
+    });
+    for (n, (i, (mut c, mut artifacts, mut hashes, mut stored))) in indices.into_iter().zip(compiled).enumerate() {
+        match handed[n].lock().ok().and_then(|mut h| h.take()) {
+            Some(Handed::Done(arts, h, s)) => {
+                artifacts = Some(arts);
+                hashes = h;
+                stored = s;
             }
-            (c, artifacts, hashes, stored)
-        },
-        |n, msg| (Some(panicked_in(units[indices[n]].path, &msg)), None, Vec::new(), None),
-    );
-    for (i, (c, artifacts, hashes, stored)) in indices.into_iter().zip(compiled) {
+            Some(Handed::Panicked(msg)) => {
+                c = Some(panicked_in(units[i].path, &msg));
+                artifacts = None;
+                hashes = Vec::new();
+            }
+            None => {}
+        }
         stats.compiled += 1;
         match stored {
             Some(Ok(())) => stats.stored += 1,
@@ -389,6 +454,13 @@ pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>,
         }
     }
     (outcomes, stats)
+}
+
+/// What the file thread of [`compile_cached`] did with a unit's outputs.
+enum Handed {
+    /// The outputs and their hashes, back, and the cache entry's fate.
+    Done(Vec<Artifact>, Vec<Key>, Option<Result<(), String>>),
+    Panicked(String),
 }
 
 fn outcome_key(o: &Option<Outcome>) -> Option<Key> {
@@ -489,6 +561,53 @@ mod tests {
                 assert_eq!((stats.compiled, stats.cached, stats.shared), (1, 2, 1), "a hit for 1.0 and 2.0, 3.0 compiled again");
             }
         }
+    }
+
+    #[test]
+    fn outputs_are_reported_ready_once_each_on_any_number_of_workers_and_a_panic_there_fails_only_its_unit() {
+        let t = tempfile::tempdir().unwrap();
+        let prog = t.path().join("p.das");
+        std::fs::write(&prog, "var @out f_color : float4\n[fragment_program]\ndef fs {\n    f_color = float4(V)\n}\n").unwrap();
+        let with = |v: &str| Options { defines: vec![("V".into(), Some(v.into()))], targets: vec![crate::Target::Wgsl], ..Options::default() };
+        let values = ["1.0", "2.0", "1.0", "3.0", "4.0", "5.0"];
+        let units: Vec<Unit> = values.iter().map(|v| Unit { path: &prog, opts: with(v), extra: String::new() }).collect();
+        let run = |workers: usize, cache: &Cache, panics: bool| {
+            let seen = Mutex::new(Vec::new());
+            let ready = |i: usize, arts: &[Artifact]| {
+                seen.lock().unwrap().push((i, arts.len()));
+                if panics && values[i] == "4.0" {
+                    panic!("ready blew up");
+                }
+            };
+            let (out, stats) = compile_cached(&units, workers, Some(cache), Hooks { derive: None, ready: Some(&ready) });
+            let mut seen: Vec<usize> = seen.into_inner().unwrap().into_iter().map(|(i, n)| {
+                assert_eq!(n, 2, "the WGSL and the manifest");
+                i
+            }).collect();
+            seen.sort();
+            (out, stats, seen)
+        };
+        // 1 worker: on the worker; more: on the file thread.
+        for workers in [1, 2, 4] {
+            let cache = Cache::new(t.path().join(format!("cache{workers}")), crate::cache::DEFAULT_MAX_BYTES);
+            let (out, stats, seen) = run(workers, &cache, true);
+            // Unit 2 shares unit 0's compile: not reported.
+            assert_eq!(seen, [0, 1, 3, 4, 5], "workers {workers}");
+            assert!(out[4].failed(), "workers {workers}");
+            assert!(out[4].compilation.as_ref().unwrap().diagnostics[0].message.contains("ready blew up"));
+            for i in [0, 1, 2, 3, 5] {
+                assert!(!out[i].failed(), "unit {i}, workers {workers}");
+                assert_eq!(out[i].artifacts.as_ref().unwrap().len(), out[i].hashes.len());
+            }
+            assert_eq!(stats.stored, 4, "every clean unit but the one whose hook panicked");
+        }
+        // Again with the 2-worker cache: the hits are reported as they are
+        // looked up (unit 2 too), and 4.0, never stored, is compiled.
+        let cache = Cache::new(t.path().join("cache2"), crate::cache::DEFAULT_MAX_BYTES);
+        let (out, stats, seen) = run(2, &cache, false);
+        assert_eq!(seen, [0, 1, 2, 3, 4, 5]);
+        assert_eq!((stats.cached, stats.compiled, stats.stored), (4, 1, 1));
+        assert!(out.iter().all(|o| !o.failed()));
     }
 
     #[test]

@@ -177,6 +177,32 @@ fn kind_code(k: TokKind) -> u16 {
 pub struct Cache {
     dir: PathBuf,
     max_bytes: u64,
+    /// Directories this process already made or found (the tag, each
+    /// `v3/AB/`): a batch storing 256 entries makes each once instead of
+    /// trying it 256 times.
+    made: std::sync::Arc<Made>,
+}
+
+#[derive(Debug, Default)]
+struct Made {
+    tagged: std::sync::atomic::AtomicBool,
+    /// One bit per first key byte: `v3/AB/` exists.
+    fanout: [std::sync::atomic::AtomicU64; 4],
+}
+
+impl Made {
+    fn has(&self, byte: u8) -> bool {
+        self.fanout[usize::from(byte / 64)].load(std::sync::atomic::Ordering::Relaxed) & (1 << (byte % 64)) != 0
+    }
+    fn set(&self, byte: u8, on: bool) {
+        let bit = 1u64 << (byte % 64);
+        let word = &self.fanout[usize::from(byte / 64)];
+        if on {
+            word.fetch_or(bit, std::sync::atomic::Ordering::Relaxed);
+        } else {
+            word.fetch_and(!bit, std::sync::atomic::Ordering::Relaxed);
+        }
+    }
 }
 
 /// What [`Cache::trim`] did.
@@ -191,7 +217,7 @@ impl Cache {
     /// A cache in `dir` (created on the first store) holding at most
     /// `max_bytes` after each [`Cache::trim`].
     pub fn new(dir: impl Into<PathBuf>, max_bytes: u64) -> Cache {
-        Cache { dir: dir.into(), max_bytes }
+        Cache { dir: dir.into(), max_bytes, made: Default::default() }
     }
 
     /// The CLI's default directory: `$UMBRAC_CACHE_DIR`, else
@@ -257,14 +283,34 @@ impl Cache {
     pub fn put_entry(&self, key: &Key, artifacts: &[Artifact], hashes: &[Key]) -> std::io::Result<()> {
         assert_eq!(artifacts.len(), hashes.len(), "one hash per artifact");
         let path = self.path_of(key);
-        std::fs::create_dir_all(path.parent().expect("an entry path has a parent"))?;
+        let parent = path.parent().expect("an entry path has a parent");
+        let first = key.0[0];
+        if !self.made.has(first) {
+            std::fs::create_dir_all(parent)?;
+            self.made.set(first, true);
+        }
         self.tag_dir();
         // No fsync: an entry torn by a crash fails its CRC and is recompiled.
-        crate::sealed::write_atomically(&path, &encode(key, artifacts, hashes))
+        let bytes = encode(key, artifacts, hashes);
+        match crate::sealed::write_atomically_in(parent, &path, &bytes) {
+            // The directory went away under this process (the cache was
+            // deleted): made again, once.
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
+                self.made.set(first, false);
+                std::fs::create_dir_all(parent)?;
+                self.made.set(first, true);
+                crate::sealed::write_atomically_in(parent, &path, &bytes)
+            }
+            r => r,
+        }
     }
 
-    /// Marks the directory as a cache for backup tools (`CACHEDIR.TAG`).
+    /// Marks the directory as a cache for backup tools (`CACHEDIR.TAG`),
+    /// once per process.
     fn tag_dir(&self) {
+        if self.made.tagged.swap(true, std::sync::atomic::Ordering::Relaxed) {
+            return;
+        }
         let tag = self.dir.join("CACHEDIR.TAG");
         if !tag.exists() {
             let _ = std::fs::write(tag, "Signature: 8a477f597d28d172789f06886806bc55\n# umbrac's compile cache; see docs/build.md.\n");
@@ -331,6 +377,35 @@ impl Cache {
             }
         }
         Trimmed { entries: entries.len() - removed, bytes: total, removed }
+    }
+}
+
+/// A [`Cache::trim`] running on a thread of its own
+/// ([`Cache::trim_in_background`]); dropping it waits for it to end.
+#[derive(Debug)]
+pub struct Trimming(Option<std::thread::JoinHandle<Trimmed>>);
+
+impl Cache {
+    /// Trims on another thread while the caller goes on (writing outputs,
+    /// its records): the walk over every entry is then off the run's
+    /// critical path. If no thread can be started, trims here.
+    pub fn trim_in_background(&self) -> Trimming {
+        let c = self.clone();
+        match std::thread::Builder::new().name("umbrac-trim".into()).spawn(move || c.trim()) {
+            Ok(h) => Trimming(Some(h)),
+            Err(_) => {
+                self.trim();
+                Trimming(None)
+            }
+        }
+    }
+}
+
+impl Drop for Trimming {
+    fn drop(&mut self) {
+        if let Some(h) = self.0.take() {
+            let _ = h.join();
+        }
     }
 }
 
@@ -450,6 +525,23 @@ mod tests {
         assert_eq!(back[1].contents, b"{}");
         assert!(d.path().join("CACHEDIR.TAG").is_file());
         assert!(c.get(&key(2)).is_none());
+    }
+
+    #[test]
+    fn a_cache_deleted_while_in_use_is_made_again() {
+        // Each `v3/AB/` is made once per process; the cache's directory
+        // going away must not make later stores fail.
+        let d = tempfile::tempdir().unwrap();
+        let dir = d.path().join("cache");
+        let c = Cache::new(&dir, DEFAULT_MAX_BYTES);
+        c.put(&key(1), &[art("a.wgsl", "1")]).unwrap();
+        std::fs::remove_dir_all(&dir).unwrap();
+        c.put(&key(1), &[art("a.wgsl", "2")]).unwrap();
+        let mut other = [7u8; 32];
+        other[0] = 1;
+        c.put(&Key(other), &[art("b.wgsl", "3")]).unwrap();
+        assert_eq!(c.get(&Key(other)).unwrap()[0].contents, b"3");
+        assert_eq!(c.get(&key(1)).unwrap()[0].contents, b"2");
     }
 
     #[test]

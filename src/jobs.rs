@@ -87,10 +87,10 @@ pub struct Settings<'a> {
 
 impl Batch {
     /// Compiles every input with every variant (or once each, with none).
-    /// `ready(job, dir, outputs)` is called on the worker as soon as a
-    /// job's outputs are ready, `dir` being where they go relative to the
-    /// output directory ([`Batch::out_dir`]); jobs that share another's
-    /// outputs are not reported ([`batch::Ready`]).
+    /// `ready(job, dir, outputs)` is called as soon as a job's outputs are
+    /// ready, `dir` being where they go relative to the output directory
+    /// ([`Batch::out_dir`]); which jobs are reported, and on which thread,
+    /// is [`batch::Ready`]'s rule.
     pub fn compile(inputs: Vec<Input>, variants: Vec<Variant>, settings: &Settings<'_>, ready: Option<&Ready<'_>>) -> Batch {
         let mut jobs = Vec::new();
         for input in 0..inputs.len() {
@@ -282,9 +282,11 @@ impl Batch {
     /// Every file any job read, sorted, without repeats, without `./`
     /// steps (an include next to a root given as a bare name is `./x`).
     pub fn files_read(&self) -> Vec<PathBuf> {
-        let tidy = |p: &PathBuf| -> PathBuf { p.components().filter(|c| !matches!(c, std::path::Component::CurDir)).collect() };
-        let mut all: Vec<PathBuf> = self.outcomes.iter().flat_map(|o| o.files_read.iter().map(tidy)).collect();
-        all.extend(self.inputs.iter().map(|i| tidy(&i.path)));
+        let tidy = |p: &Path| -> PathBuf { p.components().filter(|c| !matches!(c, std::path::Component::CurDir)).collect() };
+        // Variants read the same files: each distinct path is tidied once.
+        let mut seen: std::collections::HashSet<&Path> = self.outcomes.iter().flat_map(|o| o.files_read.iter().map(PathBuf::as_path)).collect();
+        seen.extend(self.inputs.iter().map(|i| i.path.as_path()));
+        let mut all: Vec<PathBuf> = seen.into_iter().map(tidy).collect();
         all.sort();
         all.dedup();
         all

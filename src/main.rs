@@ -550,8 +550,9 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
     };
     let ready: Option<&umbrac::jobs::Ready> = if stage.is_some() { Some(&to_stage) } else { None };
     let batch = umbrac::jobs::Batch::compile(inputs, variants, &settings, ready);
-    watched.files.extend(batch.files_read());
-    report_stats(&args.batch, &batch, cache.as_ref(), &mut reporter);
+    let files_read = batch.files_read();
+    watched.files.extend(files_read.iter().cloned());
+    let _trimming = report_stats(&args.batch, &batch, cache.as_ref(), &mut reporter);
 
     let mut code = 0;
     for f in batch.failures() {
@@ -575,6 +576,11 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
     }
 
     // Which job writes where; an output two jobs would write is an error.
+    // Jobs in directories of their own cannot clash (one job's outputs
+    // have distinct names): then no output is looked up.
+    let mut dirs = std::collections::HashSet::new();
+    let may_clash = !batch.outcomes.iter().enumerate().filter(|(_, o)| o.artifacts.is_some()).all(|(j, _)| dirs.insert(batch.out_dir(j, &dir)));
+    drop(dirs);
     let mut owner: std::collections::HashMap<PathBuf, &Path> = Default::default();
     let mut to_write: Vec<(usize, PathBuf)> = Vec::new();
     for (j, o) in batch.outcomes.iter().enumerate() {
@@ -600,6 +606,10 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
             continue;
         }
         let out_dir = batch.out_dir(j, &dir);
+        if !may_clash {
+            to_write.push((j, out_dir));
+            continue;
+        }
         if let Some((a, other)) = artifacts.iter().find_map(|a| owner.get(&out_dir.join(&a.file_name)).map(|o| (a, *o))) {
             reporter.plain(&Diagnostic::error_nowhere(format!(
                 "`{}` is an output of both `{}` and `{}`; nothing was written for `{}` (compile them into different directories)",
@@ -614,7 +624,7 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
         owner.extend(artifacts.iter().map(|a| (out_dir.join(&a.file_name), path.as_path())));
         to_write.push((j, out_dir));
     }
-    let mut inputs_read = batch.files_read();
+    let mut inputs_read = files_read;
     inputs_read.extend(args.variants.iter().cloned());
     let manifest = (!batch.variants.is_empty()).then(|| umbrac::jobs::variants_artifact(&batch));
     // A stage that holds every output is published whole.
@@ -686,9 +696,7 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
     let mut depfile_text = None;
     if let (Some(depfile), 0) = (&args.depfile, code) {
         let targets: Vec<PathBuf> = written.iter().map(|(p, _)| p.clone()).collect();
-        let mut prerequisites = batch.files_read();
-        prerequisites.extend(args.variants.iter().cloned());
-        let text = umbrac::depfile::render(&targets, &prerequisites).into_bytes();
+        let text = umbrac::depfile::render(&targets, &inputs_read).into_bytes();
         if let Err(e) = write_file(depfile, text.clone()) {
             reporter.plain(&Diagnostic::error_nowhere(e));
             code = code.max(EXIT_ERROR);
@@ -710,6 +718,13 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
         let s = &batch.stats;
         let counts = [batch.jobs.len() as u64, s.compiled as u64, s.cached as u64, s.shared as u64];
         umbrac::rerun::Record { files, probed, outputs: written_hashes, depfile: depfile_text, counts }.save(c, key);
+    }
+    drop(_trimming);
+    // The process ends next and its memory goes back to the system at
+    // once: freeing thousands of outputs one by one first took another
+    // millisecond of a cold run. `--watch` runs again, and frees.
+    if !args.watch {
+        std::mem::forget(batch);
     }
     (code, watched)
 }
@@ -751,8 +766,9 @@ fn load_spec(path: &Path) -> Result<Vec<umbrac::variants::Variant>, Box<(SourceM
     spec.expand().map_err(|e| Box::new((SourceMap::new(), Diagnostic::error_nowhere(format!("`{}`: {e}", path.display())))))
 }
 
-/// `-v`: what was compiled, shared and read from the cache.
-fn report_stats(args: &BatchArgs, batch: &umbrac::jobs::Batch, cache: Option<&umbrac::cache::Cache>, reporter: &mut Reporter) {
+/// Says what `-v` asks (what was compiled, shared and read from the cache) and any cache store error; a run that stored
+/// entries trims the cache, on another thread until the result is dropped.
+fn report_stats(args: &BatchArgs, batch: &umbrac::jobs::Batch, cache: Option<&umbrac::cache::Cache>, reporter: &mut Reporter) -> Option<umbrac::cache::Trimming> {
     let s = &batch.stats;
     if let Some(e) = &s.store_error {
         let mut d = Diagnostic::error_nowhere(e.clone());
@@ -763,11 +779,7 @@ fn report_stats(args: &BatchArgs, batch: &umbrac::jobs::Batch, cache: Option<&um
         let where_ = cache.map_or("no cache".to_string(), |c| format!("cache {}", c.dir().display()));
         eprintln!("umbrac: {} jobs: {} compiled, {} from the cache, {} same as another ({where_}, {} stored)", batch.jobs.len(), s.compiled, s.cached, s.shared, s.stored);
     }
-    if s.stored > 0 {
-        if let Some(c) = cache {
-            c.trim();
-        }
-    }
+    cache.filter(|_| s.stored > 0).map(umbrac::cache::Cache::trim_in_background)
 }
 
 /// The key of a compile command's whole configuration (src/rerun.rs):
@@ -805,7 +817,7 @@ fn check(args: &CheckArgs) -> u8 {
     let settings = umbrac::jobs::Settings { options: &opts, workers: args.batch.workers(), cache: cache.as_ref() };
     let batch = umbrac::jobs::Batch::compile(inputs, Vec::new(), &settings, None);
     let mut reporter = Reporter::new(args.common.message_format);
-    report_stats(&args.batch, &batch, cache.as_ref(), &mut reporter);
+    let _trimming = report_stats(&args.batch, &batch, cache.as_ref(), &mut reporter);
     let mut code = 0;
     for f in batch.failures() {
         reporter.compilation(f.compilation);
@@ -841,7 +853,7 @@ fn compile_check(args: &CompileArgs, targets: Vec<Target>, inputs: Vec<umbrac::j
     let settings = umbrac::jobs::Settings { options: &opts, workers: args.batch.workers(), cache: cache.as_ref() };
     let batch = umbrac::jobs::Batch::compile(inputs, Vec::new(), &settings, None);
     let mut reporter = Reporter::new(args.common.message_format);
-    report_stats(&args.batch, &batch, cache.as_ref(), &mut reporter);
+    let _trimming = report_stats(&args.batch, &batch, cache.as_ref(), &mut reporter);
     let mut code = 0;
     for f in batch.failures() {
         reporter.compilation(f.compilation);

@@ -107,7 +107,9 @@ pub(crate) fn unique_temp(dir: &Path) -> PathBuf {
     static COUNTER: AtomicU32 = AtomicU32::new(0);
     let n = COUNTER.fetch_add(1, Ordering::Relaxed);
     let nanos = SystemTime::now().duration_since(SystemTime::UNIX_EPOCH).map(|d| d.subsec_nanos()).unwrap_or(0);
-    dir.join(format!("{TEMP_PREFIX}{}-{n}-{nanos:08x}", std::process::id()))
+    // One `getpid` per process, not per file.
+    static PID: std::sync::OnceLock<u32> = std::sync::OnceLock::new();
+    dir.join(format!("{TEMP_PREFIX}{}-{n}-{nanos:08x}", PID.get_or_init(std::process::id)))
 }
 
 /// Writes `bytes` to `path` (its directory created if missing) through a
@@ -116,6 +118,11 @@ pub(crate) fn unique_temp(dir: &Path) -> PathBuf {
 pub(crate) fn write_atomically(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     let dir = path.parent().filter(|d| !d.as_os_str().is_empty()).unwrap_or(Path::new("."));
     std::fs::create_dir_all(dir)?;
+    write_atomically_in(dir, path, bytes)
+}
+
+/// [`write_atomically`] into `dir`, `path`'s directory, which exists.
+pub(crate) fn write_atomically_in(dir: &Path, path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     let tmp = unique_temp(dir);
     let written = std::fs::File::options().write(true).create_new(true).open(&tmp).and_then(|mut f| f.write_all(bytes));
     match written.and_then(|_| std::fs::rename(&tmp, path)) {
