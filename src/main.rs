@@ -531,14 +531,14 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
         }
     }
     let settings = umbrac::jobs::Settings { options: &opts, workers: args.batch.workers(), cache: cache.as_ref() };
-    // Variants into a directory that does not exist yet: each job's outputs
-    // go to a stage as soon as it compiles, and one rename publishes them
-    // all (src/output/staged.rs).
+    // Variants whose directories do not exist yet: each job's outputs go
+    // to a stage as soon as it compiles, and a rename per directory
+    // publishes them (src/output/staged.rs).
     let mut stage = (!to_stdout && !variants.is_empty()).then(|| umbrac::output::staged::Staged::begin(&dir)).flatten();
     let staged: Vec<AtomicBool> = (0..inputs.len() * variants.len().max(1)).map(|_| AtomicBool::new(false)).collect();
     let spoiled = AtomicBool::new(false);
     let to_stage = |j: usize, rel: &Path, artifacts: &[umbrac::Artifact]| {
-        let Some(s) = &stage else { return };
+        let Some(s) = stage.as_ref().filter(|s| s.takes(rel)) else { return };
         if spoiled.load(Ordering::Relaxed) {
             return;
         }
@@ -627,27 +627,32 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
     let mut inputs_read = files_read;
     inputs_read.extend(args.variants.iter().cloned());
     let manifest = (!batch.variants.is_empty()).then(|| umbrac::jobs::variants_artifact(&batch));
-    // A stage that holds every output is published whole.
-    let published = match (stage.take(), &manifest) {
-        (Some(s), Some(manifest)) if code == 0 && !spoiled.load(Ordering::Relaxed) => publish_stage(s, &staged, &batch, &to_write, &dir, manifest),
-        _ => false,
+    // The staged directories are published; which of `to_write` they hold.
+    let published: Vec<bool> = match stage.take() {
+        Some(s) if code == 0 && !spoiled.load(Ordering::Relaxed) => publish_stage(s, &staged, &batch, &to_write, &dir),
+        _ => Vec::new(),
     };
+    let is_published = |k: usize| published.get(k).copied().unwrap_or(false);
+    let in_place = (0..to_write.len()).filter(|&k| !is_published(k)).count();
     // An unchanged output newer than every file read is left alone; the
     // cache's stamps say which outputs need not be read back to see that.
-    let newest_input = if published { None } else { umbrac::jobs::newest_mtime(&inputs_read) };
+    let newest_input = umbrac::jobs::newest_mtime(&inputs_read);
     let stamps = match &cache {
-        Some(c) if !to_write.is_empty() && !published => umbrac::output::stamps::Stamps::load(c.dir(), &dir),
+        Some(c) if in_place > 0 || manifest.is_some() => umbrac::output::stamps::Stamps::load(c.dir(), &dir),
         _ => Default::default(),
     };
     // Each directory atomically, several at once (file system calls block
     // now and then).
-    let results = if published {
-        to_write.iter().map(|_| Ok(())).collect()
+    let results: Vec<Result<(), String>> = if in_place == 0 {
+        vec![Ok(()); to_write.len()]
     } else {
         umbrac::batch::parallel_map(
             to_write.len(),
             WRITERS,
             |k| {
+                if is_published(k) {
+                    return Ok(());
+                }
                 let (j, out_dir) = &to_write[k];
                 let o = &batch.outcomes[*j];
                 let artifacts = o.artifacts.as_deref().unwrap_or_default();
@@ -679,8 +684,7 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
     if let (Some(manifest), 0) = (&manifest, code) {
         let hash = [umbrac::cache::Key::of_bytes(&manifest.contents)];
         let known = umbrac::output::Known { hashes: &hash, stamps: &stamps };
-        let result = if published { Ok(()) } else { umbrac::jobs::write_outputs(&dir, std::slice::from_ref(manifest), newest_input, Some(&known)) };
-        match result {
+        match umbrac::jobs::write_outputs(&dir, std::slice::from_ref(manifest), newest_input, Some(&known)) {
             Ok(()) => {
                 written.push((dir.join(&manifest.file_name), Path::new("")));
                 written_hashes.push((dir.join(&manifest.file_name), hash[0]));
@@ -729,20 +733,28 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
     (code, watched)
 }
 
-/// Completes a stage with what is not in it yet (jobs that share another's
-/// outputs, `variants.json`) and publishes it. False where that could not
-/// be done: the caller then writes the usual way, and the stage is gone.
-fn publish_stage(stage: umbrac::output::staged::Staged, staged: &[AtomicBool], batch: &umbrac::jobs::Batch, to_write: &[(usize, PathBuf)], dir: &Path, manifest: &umbrac::Artifact) -> bool {
+/// Completes a stage with what it takes and does not hold yet (jobs that
+/// share another's outputs) and publishes it: for each of `to_write`,
+/// whether it was published. Empty where that could not be done: the
+/// caller then writes everything the usual way, and the stage is gone.
+fn publish_stage(stage: umbrac::output::staged::Staged, staged: &[AtomicBool], batch: &umbrac::jobs::Batch, to_write: &[(usize, PathBuf)], dir: &Path) -> Vec<bool> {
+    let mut taken = Vec::with_capacity(to_write.len());
     for (j, out_dir) in to_write {
-        if staged[*j].load(Ordering::Relaxed) {
+        let Ok(rel) = out_dir.strip_prefix(dir) else { return Vec::new() };
+        let takes = stage.takes(rel);
+        taken.push(takes);
+        if !takes || staged[*j].load(Ordering::Relaxed) {
             continue;
         }
-        let (Ok(rel), Some(artifacts)) = (out_dir.strip_prefix(dir), &batch.outcomes[*j].artifacts) else { return false };
+        let Some(artifacts) = &batch.outcomes[*j].artifacts else { return Vec::new() };
         if stage.write(rel, artifacts).is_err() {
-            return false;
+            return Vec::new();
         }
     }
-    stage.write(Path::new(""), std::slice::from_ref(manifest)).is_ok() && stage.publish().is_ok()
+    match stage.publish() {
+        Ok(()) => taken,
+        Err(_) => Vec::new(),
+    }
 }
 
 /// What a FILE argument's outputs record of it: its file name

@@ -21,8 +21,8 @@
 //! process killed mid-write (SIGKILL, power loss) can leave one behind; the
 //! next write into the same directory removes those whose process is gone.
 //!
-//! A directory that does not exist yet can instead be built whole under a
-//! hidden name and renamed into place ([`staged`]).
+//! Directories that do not exist yet can instead be built under a hidden
+//! stage and renamed into place ([`staged`]).
 //!
 //! Outputs are not fsynced, as no compiler or build tool (gcc, clang,
 //! rustc, cargo, ninja) fsyncs its outputs: a sync costs about half a

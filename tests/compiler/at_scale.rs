@@ -139,9 +139,10 @@ fn entries(dir: &Path) -> Vec<String> {
 fn a_new_output_directory_is_staged_whole_and_an_existing_one_written_in_place_alike() {
     let p = Project::new();
     p.write("spec.toml", "[axes]\nSCALE = [\"1.0\", \"2.0\"]\nDOUBLE = [false, true]\n");
-    // A new directory (staged, published by one rename), an existing empty
-    // one and one holding other outputs (written file by file in place):
-    // the same files.
+    // A new directory and an existing empty one (every variant staged and
+    // published by a rename each), and one holding a variant's outputs
+    // already (that one written in place file by file, the others staged):
+    // the same files, and no stage left in any.
     std::fs::create_dir(p.path("empty")).unwrap();
     p.write("full/scale_1_0/tint.wgsl", "old");
     p.write("full/notes.txt", "mine");
@@ -157,6 +158,21 @@ fn a_new_output_directory_is_staged_whole_and_an_existing_one_written_in_place_a
     full.retain(|(n, _)| n != "notes.txt");
     assert_eq!(full, new);
     assert_eq!(entries(p.dir.path()), ["empty", "full", "new", "spec.toml", "tint.das"], "no stage is left");
+    let variant_dirs = ["scale_1_0", "scale_1_0__double", "scale_2_0", "scale_2_0__double", "variants.json"];
+    assert_eq!(entries(&p.path("new")), variant_dirs);
+    assert_eq!(entries(&p.path("empty")), variant_dirs);
+    let mut with_notes = vec!["notes.txt"];
+    with_notes.extend(variant_dirs);
+    assert_eq!(entries(&p.path("full")), with_notes);
+
+    // A failing run into an existing empty directory leaves it empty.
+    std::fs::create_dir(p.path("empty2")).unwrap();
+    p.write("broken.toml", "[axes]\nSCALE = [\"1.0\"]\nBROKEN = [false, true]\n");
+    let o = p.run(&["compile", "tint.das", "--variants", "broken.toml", "-o", "empty2", "--no-cache"]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert_eq!(entries(&p.path("empty2")), Vec::<String>::new());
+    std::fs::remove_dir(p.path("empty2")).unwrap();
+    std::fs::remove_file(p.path("broken.toml")).unwrap();
 
     // Two inputs with the same outputs in one variant directory: refused
     // as when writing in place, and no stage is left.
