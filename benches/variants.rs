@@ -2,8 +2,9 @@
 //! shaders/programs/shadow_variants.das (8 independent #ifdef axes,
 //! shadow_variants.toml), in one run: `cargo bench --bench variants`.
 //!
-//! - cold `umbrac compile --variants` with `--jobs 1, 2, 3, 4` (a cache and
-//!   output directory never used before, each time): parallel efficiency,
+//! - cold `umbrac compile --variants` with `--jobs 1, 2, 3, 4`, interleaved
+//!   round by round (a cache and output directory never used before, each
+//!   time; the disk synced first): parallel efficiency,
 //!   and the plot of variants per second against jobs
 //!   (docs/images/variants-jobs.svg); and `--jobs 2` right after deleting
 //!   the previous round's files;
@@ -121,22 +122,25 @@ fn main() {
         d
     };
 
-    // Cold, by jobs.
-    let mut by_jobs = Vec::new();
+    // Cold, by jobs, the jobs interleaved round by round: the disk of this
+    // VM drifts (writeback of earlier runs, inodes freed minutes before),
+    // and each `--jobs` value then sees the same drift.
+    // SAFETY: sync takes no arguments and cannot fail.
+    unsafe { libc::sync() };
+    let mut samples: Vec<Vec<Sample>> = vec![Vec::new(); 4];
     let (mut last_out, mut last_cache) = (PathBuf::new(), PathBuf::new());
-    for jobs in 1..=4 {
-        let s = median(
-            (0..rounds)
-                .map(|_| {
-                    let (out, cache) = (new_dir("out"), new_dir("cache"));
-                    let s = timed(&mut compile_cmd(&out, &cache, Some(jobs)));
-                    (last_out, last_cache) = (out, cache);
-                    s
-                })
-                .collect(),
-        );
-        eprintln!("cold --jobs {jobs}: {:.1} ms wall, {:.1} ms CPU", s.wall * 1e3, s.cpu * 1e3);
-        by_jobs.push((jobs, s));
+    for _ in 0..rounds {
+        for jobs in 1..=4 {
+            let (out, cache) = (new_dir("out"), new_dir("cache"));
+            samples[jobs - 1].push(timed(&mut compile_cmd(&out, &cache, Some(jobs))));
+            (last_out, last_cache) = (out, cache);
+        }
+    }
+    let mut by_jobs = Vec::new();
+    for (i, runs) in samples.into_iter().enumerate() {
+        let s = median(runs);
+        eprintln!("cold --jobs {}: {:.1} ms wall, {:.1} ms CPU", i + 1, s.wall * 1e3, s.cpu * 1e3);
+        by_jobs.push((i + 1, s));
     }
     // The same, each round right after removing the previous round's files.
     let after_delete = median(

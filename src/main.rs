@@ -492,22 +492,13 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
         }
     }
     let mut reporter = Reporter::new(args.common.message_format);
-    let variants = match &args.variants {
-        None => Vec::new(),
-        Some(spec) => match load_spec(spec) {
-            Ok(v) => v,
-            Err(e) => {
-                let (map, d) = *e;
-                reporter.diagnostic(&d, &map);
-                return (EXIT_ERROR, watched);
-            }
-        },
-    };
     let opts = args.common.options(targets);
     let cache = args.batch.cache();
     let dir = args.out.clone().unwrap_or_else(|| PathBuf::from("."));
-    // A rerun that would change nothing ends here (src/rerun.rs).
-    let run_key = (!to_stdout).then(|| run_key(args, &inputs, &variants, &opts, &dir));
+    // A rerun that would change nothing ends here (src/rerun.rs), before
+    // the variant spec is even expanded: its bytes are among the files
+    // the record holds the hash of.
+    let run_key = (!to_stdout).then(|| run_key(args, &inputs, &opts, &dir));
     if let (Some(c), Some(key)) = (&cache, &run_key) {
         if let Some(rec) = umbrac::rerun::Record::load(c, key) {
             let stamps = umbrac::output::stamps::Stamps::load(c.dir(), &dir);
@@ -526,10 +517,25 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
                         return (EXIT_ERROR, watched);
                     }
                 }
+                // The process ends next (see the end of a full run).
+                if !args.watch {
+                    std::mem::forget((rec, stamps));
+                }
                 return (0, watched);
             }
         }
     }
+    let variants = match &args.variants {
+        None => Vec::new(),
+        Some(spec) => match load_spec(spec) {
+            Ok(v) => v,
+            Err(e) => {
+                let (map, d) = *e;
+                reporter.diagnostic(&d, &map);
+                return (EXIT_ERROR, watched);
+            }
+        },
+    };
     let settings = umbrac::jobs::Settings { options: &opts, workers: args.batch.workers(), cache: cache.as_ref() };
     // Variants whose directories do not exist yet: each job's outputs go
     // to a stage as soon as it compiles, and a rename per directory
@@ -796,12 +802,13 @@ fn report_stats(args: &BatchArgs, batch: &umbrac::jobs::Batch, cache: Option<&um
 
 /// The key of a compile command's whole configuration (src/rerun.rs):
 /// where it runs, what it reads, how and where it writes.
-fn run_key(args: &CompileArgs, inputs: &[umbrac::jobs::Input], variants: &[umbrac::variants::Variant], opts: &umbrac::Options, dir: &Path) -> umbrac::cache::Key {
+/// The spec's variants are not in it: the record holds the hash of the
+/// spec's bytes, which are all they depend on.
+fn run_key(args: &CompileArgs, inputs: &[umbrac::jobs::Input], opts: &umbrac::Options, dir: &Path) -> umbrac::cache::Key {
     let cwd = std::env::current_dir().unwrap_or_default();
     let parts = [
         format!("{cwd:?}"),
         format!("{inputs:?}"),
-        format!("{variants:?}"),
         format!("{:?}", args.variants),
         format!("{opts:?}"),
         format!("{dir:?}"),

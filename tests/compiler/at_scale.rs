@@ -535,6 +535,21 @@ fn a_rerun_that_would_change_nothing_compiles_nothing_and_anything_changed_makes
     assert!(!did_nothing(&o));
     let spec_time = std::fs::metadata(p.path("spec.toml")).unwrap().modified().unwrap();
     assert!(mtimes(&p.path("out")).iter().all(|(_, t)| *t >= spec_time), "outputs newer than the spec");
+
+    // The spec's variants are not in the record's key, only its bytes:
+    // a spec with one more variant is expanded and compiled, and a broken
+    // one is an error, not "nothing to do".
+    std::thread::sleep(umbrac::output::stamps::MARGIN * 3);
+    let _ = p.run(&args);
+    std::thread::sleep(umbrac::output::stamps::MARGIN * 3);
+    assert!(did_nothing(&p.run(&args)));
+    p.write("spec.toml", "[axes]\nSCALE_OF = [\"SCALE\", \"1.0\", \"3.0\"]\n");
+    assert!(!did_nothing(&p.run(&args)));
+    assert!(p.path("out/scale_of_3_0/main.wgsl").is_file());
+    p.write("spec.toml", "[axes]\nSCALE_OF = 7\n");
+    let o = p.run(&args);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(stderr(&o).contains("spec.toml:2:"), "{}", stderr(&o));
 }
 
 #[cfg(unix)]
