@@ -180,10 +180,10 @@ fn main() {
     // In process, the compile phase alone (no files written): every target,
     // one and two threads; then WGSL + SPIR-V on one thread against naga_oil.
     let all = Vec::new();
-    let phase1 = in_process_umbrac(&variants, rounds, &all, 1);
-    let phase2 = in_process_umbrac(&variants, rounds, &all, 2);
+    let phase = in_process_umbrac(&variants, rounds.max(5) * 2, &all, &[1, 2]);
+    let (phase1, phase2) = (phase[0], phase[1]);
     eprintln!("compile phase, every target: {phase1:.1} ms on 1 thread, {phase2:.1} ms on 2");
-    let lib = in_process_umbrac(&variants, rounds, &[umbrac::Target::Wgsl, umbrac::Target::Spirv], 1);
+    let lib = in_process_umbrac(&variants, rounds, &[umbrac::Target::Wgsl, umbrac::Target::Spirv], &[1])[0];
     let oil = naga_oil(rounds);
     eprintln!("in process: umbrac {lib:.1} ms, naga_oil {}", oil.map_or("n/a".into(), |o| format!("{o:.1} ms")));
 
@@ -291,26 +291,37 @@ fn verdict(met: bool) -> &'static str {
     }
 }
 
-fn in_process_umbrac(variants: &[umbrac::variants::Variant], rounds: usize, targets: &[umbrac::Target], workers: usize) -> f64 {
+/// The compile phase in process (`batch::compile_cached`, no cache, no
+/// files): the median ms of `rounds` runs for each of `workers`, the
+/// worker counts interleaved round by round (each sees the same drift of
+/// the machine).
+fn in_process_umbrac(variants: &[umbrac::variants::Variant], rounds: usize, targets: &[umbrac::Target], workers: &[usize]) -> Vec<f64> {
     let path = Path::new(PROG);
     let base = umbrac::Options { targets: targets.to_vec(), ..Default::default() };
-    let mut times = Vec::new();
+    let mut times = vec![Vec::new(); workers.len()];
     for _ in 0..rounds {
-        let units: Vec<umbrac::batch::Unit> = variants
-            .iter()
-            .map(|v| {
-                let mut opts = base.clone();
-                opts.defines = v.defines.clone();
-                umbrac::batch::Unit { path, opts, extra: String::new() }
-            })
-            .collect();
-        let t0 = Instant::now();
-        let (outcomes, _) = umbrac::batch::compile_cached(&units, workers, None, Default::default());
-        times.push(t0.elapsed().as_secs_f64() * 1e3);
-        assert!(outcomes.iter().all(|o| !o.failed()));
+        for (k, &w) in workers.iter().enumerate() {
+            let units: Vec<umbrac::batch::Unit> = variants
+                .iter()
+                .map(|v| {
+                    let mut opts = base.clone();
+                    opts.defines = v.defines.clone();
+                    umbrac::batch::Unit { path, opts, extra: String::new() }
+                })
+                .collect();
+            let t0 = Instant::now();
+            let (outcomes, _) = umbrac::batch::compile_cached(&units, w, None, Default::default());
+            times[k].push(t0.elapsed().as_secs_f64() * 1e3);
+            assert!(outcomes.iter().all(|o| !o.failed()));
+        }
     }
-    times.sort_by(f64::total_cmp);
-    times[times.len() / 2]
+    times
+        .into_iter()
+        .map(|mut t| {
+            t.sort_by(f64::total_cmp);
+            t[t.len() / 2]
+        })
+        .collect()
 }
 
 /// benches/naga_oil, built and run; its median in ms.
