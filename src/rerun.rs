@@ -145,7 +145,7 @@ fn decode(body: &[u8]) -> Option<Record> {
     for list in [&mut rec.files, &mut rec.outputs] {
         for _ in 0..r.u64()? {
             let p = r.path()?;
-            list.push((p, r.key()?));
+            list.push((p, Key(r.hash()?)));
         }
     }
     for _ in 0..r.u64()? {

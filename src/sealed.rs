@@ -15,7 +15,6 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicU32, Ordering};
 use std::time::SystemTime;
 
-use crate::cache::Key;
 
 /// How a temporary's name starts (cache entries are named by hex digits,
 /// stamps and records too).
@@ -79,8 +78,8 @@ impl<'a> Reader<'a> {
         path_of_bytes(self.field()?)
     }
 
-    pub fn key(&mut self) -> Option<Key> {
-        Some(Key(self.take(32)?.try_into().ok()?))
+    pub fn hash(&mut self) -> Option<[u8; 32]> {
+        self.take(32)?.try_into().ok()
     }
 
     pub fn is_empty(&self) -> bool {

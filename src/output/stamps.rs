@@ -187,7 +187,7 @@ fn decode(body: &[u8]) -> Option<FxHashMap<OsString, Stamp>> {
     let mut all = FxHashMap::with_capacity_and_hasher(body.len() / 140, Default::default());
     while !r.is_empty() {
         let path = r.path()?;
-        let hash = r.key()?;
+        let hash = Key(r.hash()?);
         let (len, ino, dev) = (r.u64()?, r.u64()?, r.u64()?);
         let (mtime_ns, ctime_ns, taken_ns) = (r.i128()?, r.i128()?, r.i128()?);
         all.insert(path.into_os_string(), Stamp { state: FileState { len, ino, dev, mtime_ns, ctime_ns }, hash, taken_ns });
