@@ -27,7 +27,6 @@
 use std::io::{IsTerminal, Write};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
-use std::sync::atomic::{AtomicBool, Ordering};
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use codespan_reporting::term::termcolor::{ColorChoice, StandardStream};
@@ -541,17 +540,11 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
     // to a stage as soon as it compiles, and a rename per directory
     // publishes them (src/output/staged.rs).
     let mut stage = (!to_stdout && !variants.is_empty()).then(|| umbrac::output::staged::Staged::begin(&dir)).flatten();
-    let staged: Vec<AtomicBool> = (0..inputs.len() * variants.len().max(1)).map(|_| AtomicBool::new(false)).collect();
-    let spoiled = AtomicBool::new(false);
-    let to_stage = |j: usize, rel: &Path, artifacts: &[umbrac::Artifact]| {
-        let Some(s) = stage.as_ref().filter(|s| s.takes(rel)) else { return };
-        if spoiled.load(Ordering::Relaxed) {
-            return;
-        }
-        match s.write(rel, artifacts) {
-            Ok(()) => staged[j].store(true, Ordering::Relaxed),
-            // Written the usual way, which reports why.
-            Err(_) => spoiled.store(true, Ordering::Relaxed),
+    let to_stage = |_job: usize, rel: &Path, artifacts: &[umbrac::Artifact]| {
+        if let Some(s) = stage.as_ref().filter(|s| s.takes(rel)) {
+            // A failed write spoils the stage; everything is then written
+            // the usual way, which reports why.
+            let _ = s.write(rel, artifacts);
         }
     };
     let ready: Option<&umbrac::jobs::Ready> = if stage.is_some() { Some(&to_stage) } else { None };
@@ -635,7 +628,7 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
     let manifest = (!batch.variants.is_empty()).then(|| umbrac::jobs::variants_artifact(&batch));
     // The staged directories are published; which of `to_write` they hold.
     let published: Vec<bool> = match stage.take() {
-        Some(s) if code == 0 && !spoiled.load(Ordering::Relaxed) => publish_stage(s, &staged, &batch, &to_write, &dir),
+        Some(s) if code == 0 => publish_stage(s, &batch, &to_write, &dir),
         _ => Vec::new(),
     };
     let is_published = |k: usize| published.get(k).copied().unwrap_or(false);
@@ -743,13 +736,13 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
 /// share another's outputs) and publishes it: for each of `to_write`,
 /// whether it was published. Empty where that could not be done: the
 /// caller then writes everything the usual way, and the stage is gone.
-fn publish_stage(stage: umbrac::output::staged::Staged, staged: &[AtomicBool], batch: &umbrac::jobs::Batch, to_write: &[(usize, PathBuf)], dir: &Path) -> Vec<bool> {
+fn publish_stage(stage: umbrac::output::staged::Staged, batch: &umbrac::jobs::Batch, to_write: &[(usize, PathBuf)], dir: &Path) -> Vec<bool> {
     let mut taken = Vec::with_capacity(to_write.len());
     for (j, out_dir) in to_write {
         let Ok(rel) = out_dir.strip_prefix(dir) else { return Vec::new() };
         let takes = stage.takes(rel);
         taken.push(takes);
-        if !takes || staged[*j].load(Ordering::Relaxed) {
+        if !takes || stage.holds(rel) {
             continue;
         }
         let Some(artifacts) = &batch.outcomes[*j].artifacts else { return Vec::new() };
@@ -784,8 +777,9 @@ fn load_spec(path: &Path) -> Result<Vec<umbrac::variants::Variant>, Box<(SourceM
     spec.expand().map_err(|e| Box::new((SourceMap::new(), Diagnostic::error_nowhere(format!("`{}`: {e}", path.display())))))
 }
 
-/// Says what `-v` asks (what was compiled, shared and read from the cache) and any cache store error; a run that stored
-/// entries trims the cache, on another thread until the result is dropped.
+/// Says what `-v` asks (what was compiled, shared and read from the
+/// cache) and any cache store error. A run that stored entries trims the
+/// cache, on another thread, until the result is dropped.
 fn report_stats(args: &BatchArgs, batch: &umbrac::jobs::Batch, cache: Option<&umbrac::cache::Cache>, reporter: &mut Reporter) -> Option<umbrac::cache::Trimming> {
     let s = &batch.stats;
     if let Some(e) = &s.store_error {

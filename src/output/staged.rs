@@ -25,7 +25,8 @@ use std::collections::HashSet;
 use std::ffi::OsString;
 use std::io::Write;
 use std::path::{Component, Path, PathBuf};
-use std::sync::atomic::{AtomicU32, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU32, Ordering};
+use std::sync::Mutex;
 
 use crate::target::Artifact;
 
@@ -43,6 +44,10 @@ pub struct Staged {
     existing: HashSet<OsString>,
     /// `root` was made for the stage (and goes with it, if still empty).
     made_root: bool,
+    /// The directories written into the stage ([`Staged::holds`]).
+    held: Mutex<HashSet<PathBuf>>,
+    /// A write failed: the stage is not published, and takes no more.
+    spoiled: AtomicBool,
     published: bool,
 }
 
@@ -84,7 +89,7 @@ impl Staged {
         }
         static COUNTER: AtomicU32 = AtomicU32::new(0);
         let pid = std::process::id();
-        let mut staged = Staged { root: root.to_path_buf(), stage: PathBuf::new(), existing, made_root, published: false };
+        let mut staged = Staged { root: root.to_path_buf(), stage: PathBuf::new(), existing, made_root, held: Mutex::default(), spoiled: AtomicBool::new(false), published: false };
         for _ in 0..1000 {
             let n = COUNTER.fetch_add(1, Ordering::Relaxed);
             let stage = root.join(format!("{STAGE_PREFIX}{pid}-{n:06x}{STAGE_SUFFIX}"));
@@ -114,8 +119,32 @@ impl Staged {
     /// Writes `artifacts` into `rel` inside the stage (made if missing),
     /// for a `rel` the stage [`takes`](Staged::takes). A file that is
     /// already there is an error (two jobs with one output): nothing is
-    /// ever overwritten in a stage. Safe to call from many threads at once.
+    /// ever overwritten in a stage. After any error the stage is spoiled:
+    /// later writes fail at once and it is never published (the caller
+    /// writes the usual way, which reports why). Safe to call from many
+    /// threads at once.
     pub fn write(&self, rel: &Path, artifacts: &[Artifact]) -> std::io::Result<()> {
+        if self.spoiled.load(Ordering::Relaxed) {
+            return Err(std::io::Error::other("an earlier write into the stage failed"));
+        }
+        let written = self.write_files(rel, artifacts);
+        match &written {
+            Ok(()) => {
+                if let Ok(mut held) = self.held.lock() {
+                    held.insert(rel.to_path_buf());
+                }
+            }
+            Err(_) => self.spoiled.store(true, Ordering::Relaxed),
+        }
+        written
+    }
+
+    /// Whether outputs for `rel` were written into the stage.
+    pub fn holds(&self, rel: &Path) -> bool {
+        self.held.lock().is_ok_and(|held| held.contains(rel))
+    }
+
+    fn write_files(&self, rel: &Path, artifacts: &[Artifact]) -> std::io::Result<()> {
         if !self.takes(rel) {
             return Err(std::io::Error::new(std::io::ErrorKind::InvalidInput, "not a new directory of the output directory"));
         }
@@ -132,8 +161,11 @@ impl Staged {
 
     /// Renames every directory in the stage into the root, none over
     /// anything that is there (then those already moved go back, and the
-    /// stage is handed back as it was).
+    /// stage is handed back as it was). A spoiled stage is handed back.
     pub fn publish(mut self) -> Result<(), Staged> {
+        if self.spoiled.load(Ordering::Relaxed) {
+            return Err(self);
+        }
         let names: Vec<OsString> = match std::fs::read_dir(&self.stage) {
             Ok(entries) => entries.flatten().map(|e| e.file_name()).collect(),
             Err(_) => return Err(self),
@@ -247,10 +279,16 @@ mod tests {
         assert!(s.takes(Path::new("new")) && s.takes(Path::new("new/sub")));
         assert!(!s.takes(Path::new("old")) && !s.takes(Path::new("old/sub")));
         assert!(!s.takes(Path::new("")) && !s.takes(Path::new("../x")) && !s.takes(Path::new("new/../old")) && !s.takes(Path::new("/abs")));
-        assert!(s.write(Path::new("old"), &[art("x.wgsl", "1")]).is_err());
         s.write(Path::new("new"), &[art("x.wgsl", "1")]).unwrap();
-        assert!(s.write(Path::new("new"), &[art("x.wgsl", "2")]).is_err(), "one output written twice");
-        assert!(s.write(Path::new("new2"), &[art("../x.wgsl", "1")]).is_err());
+        assert!(s.holds(Path::new("new")) && !s.holds(Path::new("new2")));
+        assert!(s.write(Path::new("old"), &[art("x.wgsl", "1")]).is_err());
+        assert!(s.publish().is_err(), "a failed write spoils the stage");
+        for bad in [("new", "x.wgsl"), ("new2", "../x.wgsl")] {
+            let s = Staged::begin(root.path()).unwrap();
+            s.write(Path::new("new"), &[art("x.wgsl", "1")]).unwrap();
+            assert!(s.write(Path::new(bad.0), &[art(bad.1, "2")]).is_err(), "{bad:?}");
+            assert!(s.write(Path::new("new3"), &[art("x.wgsl", "3")]).is_err(), "spoiled: no more writes");
+        }
     }
 
     #[test]
