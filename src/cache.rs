@@ -194,14 +194,8 @@ impl Made {
     fn has(&self, byte: u8) -> bool {
         self.fanout[usize::from(byte / 64)].load(std::sync::atomic::Ordering::Relaxed) & (1 << (byte % 64)) != 0
     }
-    fn set(&self, byte: u8, on: bool) {
-        let bit = 1u64 << (byte % 64);
-        let word = &self.fanout[usize::from(byte / 64)];
-        if on {
-            word.fetch_or(bit, std::sync::atomic::Ordering::Relaxed);
-        } else {
-            word.fetch_and(!bit, std::sync::atomic::Ordering::Relaxed);
-        }
+    fn set(&self, byte: u8) {
+        self.fanout[usize::from(byte / 64)].fetch_or(1 << (byte % 64), std::sync::atomic::Ordering::Relaxed);
     }
 }
 
@@ -287,7 +281,7 @@ impl Cache {
         let first = key.0[0];
         if !self.made.has(first) {
             std::fs::create_dir_all(parent)?;
-            self.made.set(first, true);
+            self.made.set(first);
         }
         self.tag_dir();
         // No fsync: an entry torn by a crash fails its CRC and is recompiled.
@@ -296,9 +290,7 @@ impl Cache {
             // The directory went away under this process (the cache was
             // deleted): made again, once.
             Err(e) if e.kind() == std::io::ErrorKind::NotFound => {
-                self.made.set(first, false);
                 std::fs::create_dir_all(parent)?;
-                self.made.set(first, true);
                 crate::sealed::write_atomically_in(parent, &path, &bytes)
             }
             r => r,
