@@ -211,13 +211,9 @@ impl Batch {
             }
         }
         let mut out: Vec<u8> = Vec::with_capacity(1024 + 800 * self.jobs.len());
-        let string = |out: &mut Vec<u8>, s: &str| {
-            // Escaping as JSON requires; writing to a Vec cannot fail.
-            let _ = serde_json::to_writer(&mut *out, s);
-        };
         out.extend_from_slice(b"{\n  \"format\": 1,\n  \"variants\": [");
         for (vi, v) in self.variants.iter().enumerate() {
-            let mut outputs = BTreeMap::new();
+            let mut outputs: BTreeMap<String, &crate::cache::Key> = BTreeMap::new();
             let mut same_as = None;
             for &j in &by_variant[vi] {
                 let job = &self.jobs[j];
@@ -237,40 +233,23 @@ impl Batch {
             }
             out.extend_from_slice(if vi == 0 { b"\n    {\n      \"defines\": " } else { b",\n    {\n      \"defines\": " });
             let defines: BTreeMap<&str, Option<&str>> = v.defines.iter().map(|(n, val)| (n.as_str(), val.as_deref())).collect();
-            if defines.is_empty() {
-                out.extend_from_slice(b"{}");
-            } else {
-                for (i, (n, val)) in defines.iter().enumerate() {
-                    out.extend_from_slice(if i == 0 { b"{\n        " } else { b",\n        " });
-                    string(&mut out, n);
-                    out.extend_from_slice(b": ");
-                    match val {
-                        Some(val) => string(&mut out, val),
-                        None => out.extend_from_slice(b"null"),
-                    }
-                }
-                out.extend_from_slice(b"\n      }");
-            }
+            inner_object(&mut out, defines, |out, val| match val {
+                Some(val) => json_string(out, val),
+                None => out.extend_from_slice(b"null"),
+            });
             out.extend_from_slice(b",\n      \"dir\": ");
-            string(&mut out, &v.name);
+            json_string(&mut out, &v.name);
             out.extend_from_slice(b",\n      \"name\": ");
-            string(&mut out, &v.name);
+            json_string(&mut out, &v.name);
             out.extend_from_slice(b",\n      \"outputs\": ");
-            if outputs.is_empty() {
-                out.extend_from_slice(b"{}");
-            } else {
-                for (i, (path, hash)) in outputs.iter().enumerate() {
-                    out.extend_from_slice(if i == 0 { b"{\n        " } else { b",\n        " });
-                    string(&mut out, path);
-                    out.extend_from_slice(b": \"sha256:");
-                    out.extend_from_slice(hash.hex().as_bytes());
-                    out.push(b'"');
-                }
-                out.extend_from_slice(b"\n      }");
-            }
+            inner_object(&mut out, outputs, |out, hash| {
+                out.extend_from_slice(b"\"sha256:");
+                out.extend_from_slice(hash.hex().as_bytes());
+                out.push(b'"');
+            });
             out.extend_from_slice(b",\n      \"same_source_as\": ");
             match same_as {
-                Some(name) => string(&mut out, name),
+                Some(name) => json_string(&mut out, name),
                 None => out.extend_from_slice(b"null"),
             }
             out.extend_from_slice(b"\n    }");
@@ -307,6 +286,29 @@ fn rel_dir(job: &Job, inputs: &[Input], variants: &[Variant]) -> PathBuf {
         d.push(sub);
     }
     d
+}
+
+/// A JSON string, escaped as JSON requires.
+fn json_string(out: &mut Vec<u8>, s: &str) {
+    // Writing to a Vec cannot fail.
+    let _ = serde_json::to_writer(&mut *out, s);
+}
+
+/// An object nested two levels down in `variants.json` (a variant's
+/// `defines` or `outputs`), in serde_json's pretty layout: `{}` when
+/// empty, else one `"key": value` per line.
+fn inner_object<K: AsRef<str>, V>(out: &mut Vec<u8>, entries: BTreeMap<K, V>, value: impl Fn(&mut Vec<u8>, V)) {
+    if entries.is_empty() {
+        out.extend_from_slice(b"{}");
+        return;
+    }
+    for (i, (key, v)) in entries.into_iter().enumerate() {
+        out.extend_from_slice(if i == 0 { b"{\n        " } else { b",\n        " });
+        json_string(out, key.as_ref());
+        out.extend_from_slice(b": ");
+        value(out, v);
+    }
+    out.extend_from_slice(b"\n      }");
 }
 
 /// Jobs that failed alike ([`Batch::failures`]).
