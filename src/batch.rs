@@ -532,13 +532,24 @@ mod tests {
         assert!(compile_many(&[], 4).is_empty());
     }
 
+    /// A fragment program writing `float4(V)`, in `dir`.
+    fn program_of_v(dir: &Path) -> PathBuf {
+        let prog = dir.join("p.das");
+        std::fs::write(&prog, "var @out f_color : float4\n[fragment_program]\ndef fs {\n    f_color = float4(V)\n}\n").unwrap();
+        prog
+    }
+
+    /// One WGSL unit of `prog` per value of `V`.
+    fn units_with_v<'a>(prog: &'a Path, values: &[&str]) -> Vec<Unit<'a>> {
+        let with = |v: &str| Options { defines: vec![("V".into(), Some(v.into()))], targets: vec![crate::Target::Wgsl], ..Options::default() };
+        values.iter().map(|v| Unit { path: prog, opts: with(v), extra: String::new() }).collect()
+    }
+
     #[test]
     fn a_cached_batch_compiles_each_key_once_and_a_panic_fails_only_its_unit() {
         let t = tempfile::tempdir().unwrap();
-        let prog = t.path().join("p.das");
-        std::fs::write(&prog, "var @out f_color : float4\n[fragment_program]\ndef fs {\n    f_color = float4(V)\n}\n").unwrap();
-        let with = |v: &str| Options { defines: vec![("V".into(), Some(v.into()))], targets: vec![crate::Target::Wgsl], ..Options::default() };
-        let units: Vec<Unit> = ["1.0", "2.0", "1.0", "3.0"].iter().map(|v| Unit { path: &prog, opts: with(v), extra: String::new() }).collect();
+        let prog = program_of_v(t.path());
+        let units = units_with_v(&prog, &["1.0", "2.0", "1.0", "3.0"]);
         let cache = Cache::new(t.path().join("cache"), crate::cache::DEFAULT_MAX_BYTES);
         // The unit compiled for "3.0" panics in the caller's hook.
         let derive = |i: usize, _: &crate::Compiled| -> Result<Vec<Artifact>, String> {
@@ -566,11 +577,9 @@ mod tests {
     #[test]
     fn outputs_are_reported_ready_once_each_on_any_number_of_workers_and_a_panic_there_fails_only_its_unit() {
         let t = tempfile::tempdir().unwrap();
-        let prog = t.path().join("p.das");
-        std::fs::write(&prog, "var @out f_color : float4\n[fragment_program]\ndef fs {\n    f_color = float4(V)\n}\n").unwrap();
-        let with = |v: &str| Options { defines: vec![("V".into(), Some(v.into()))], targets: vec![crate::Target::Wgsl], ..Options::default() };
+        let prog = program_of_v(t.path());
         let values = ["1.0", "2.0", "1.0", "3.0", "4.0", "5.0"];
-        let units: Vec<Unit> = values.iter().map(|v| Unit { path: &prog, opts: with(v), extra: String::new() }).collect();
+        let units = units_with_v(&prog, &values);
         let run = |workers: usize, cache: &Cache, panics: bool| {
             let seen = Mutex::new(Vec::new());
             let ready = |i: usize, arts: &[Artifact]| {

@@ -26,10 +26,10 @@
 
 use std::ffi::OsString;
 use std::path::{Path, PathBuf};
-
-use rustc_hash::FxHashMap;
 use std::sync::Mutex;
 use std::time::{Duration, SystemTime};
+
+use rustc_hash::FxHashMap;
 
 use crate::cache::Key;
 use crate::sealed::{self, Reader};
