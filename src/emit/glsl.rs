@@ -200,6 +200,8 @@ impl<'a> EntryModule<'a> {
 static BLOCK: LazyLock<Finder<'static>> = LazyLock::new(|| Finder::new("_block"));
 static LOCATION: LazyLock<Finder<'static>> = LazyLock::new(|| Finder::new("_location"));
 static SAMPLER: LazyLock<Finder<'static>> = LazyLock::new(|| Finder::new("sampler"));
+static STRUCT: LazyLock<Finder<'static>> = LazyLock::new(|| Finder::new("\nstruct "));
+static STRUCT_END: LazyLock<Finder<'static>> = LazyLock::new(|| Finder::new("\n};"));
 static PRECISION_INT: LazyLock<Finder<'static>> = LazyLock::new(|| Finder::new(PRECISION_INT_LINE));
 const PRECISION_INT_LINE: &str = "precision highp int;\n";
 
@@ -277,16 +279,24 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
     // Plain uniforms: `T name = zero;` becomes `uniform T name;`.
     for (handle, source) in em.uniforms {
         let naga_name = em.module.global_variables[*handle].name.as_deref().unwrap_or(source);
-        let candidates = [naga_name.to_string(), [naga_name, "_"].concat()];
-        let Some((naga_name, found)) = candidates.iter().find_map(|n| global_declaration(&out, n).map(|l| (n, l))) else {
+        // Declared under its name, or with naga's `_` after a final digit.
+        let underscored;
+        let found = match global_declaration(&out, naga_name) {
+            Some(found) => Some((naga_name, found)),
+            None => {
+                underscored = [naga_name, "_"].concat();
+                global_declaration(&out, &underscored).map(|found| (underscored.as_str(), found))
+            }
+        };
+        let Some((naga_name, found)) = found else {
             return Err(bug(format!("cannot find the declaration of uniform `{source}`")));
         };
         let name = restore_source_name(&mut out, naga_name, source);
         // Found again only if renaming moved the text.
-        let line = if name == *naga_name { Some(found) } else { global_declaration(&out, &name) };
-        let line = line.ok_or_else(|| bug(format!("cannot find the declaration of uniform `{name}`")))?;
+        let found = if name == naga_name { Some(found) } else { global_declaration(&out, &name) };
+        let (line, at) = found.ok_or_else(|| bug(format!("cannot find the declaration of uniform `{name}`")))?;
         let decl = &out[line.clone()];
-        let at = text::find_ident(decl, &name).next().ok_or_else(|| bug(format!("no `{name}` in its declaration")))?;
+        let at = at - line.start;
         let after = &decl[at + name.len()..];
         let dims = &after[..after.find([' ', ';']).unwrap_or(after.len())];
         let new = format!("uniform {}{name}{dims};", &decl[..at]);
@@ -338,6 +348,7 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
     // ES 3.00 requires a location on each of several colour outputs; both
     // profiles keep them there, so that one manifest describes both.
     let mrt = ep.stage == naga::ShaderStage::Fragment && ep.outputs.len() > 1;
+    let structs = if ep.inputs.is_empty() && ep.outputs.is_empty() { Vec::new() } else { struct_bodies(&out) };
     let mut renames: Vec<(String, String)> = Vec::new();
     let mut unlocated: Vec<String> = Vec::new();
     for (vars, prefix, map, attribute_or_output) in [
@@ -358,7 +369,7 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
             // holds inputs and outputs inside the function apart (`in_`,
             // `out_`), and the checker keeps top-level names unique and
             // locals off them, so only reserved words are renamed.
-            let glsl = glsl_names::glsl_name(&var.name, |n| names_a_variable(&out, n));
+            let glsl = glsl_names::glsl_name(&var.name, |n| names_a_variable(&out, &structs, n));
             // naga writes varyings without a location (they link by name).
             if attribute_or_output && !var.explicit_location && !mrt {
                 unlocated.push(glsl.clone());
@@ -386,20 +397,20 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
 }
 
 /// Whether `name` is a variable (or function, or type) of the text: an
-/// identifier there that is not a struct member (declared in a struct's
-/// body, or read after a `.`).
-fn names_a_variable(src: &str, name: &str) -> bool {
-    text::find_ident(src, name).any(|at| {
-        if src[..at].ends_with('.') {
-            return false;
-        }
-        // Inside `struct S {` ... `};`, which naga writes at the start of lines.
-        let before = &src[..at];
-        match (before.rfind("\nstruct ").or(before.starts_with("struct ").then_some(0)), before.rfind("\n};")) {
-            (Some(open), close) => close.is_some_and(|c| c > open),
-            (None, _) => true,
-        }
-    })
+/// identifier there that is not a struct member (declared in one of the
+/// `struct_bodies`, or read after a `.`).
+fn names_a_variable(src: &str, struct_bodies: &[Range<usize>], name: &str) -> bool {
+    text::find_ident(src, name).any(|at| !src[..at].ends_with('.') && !struct_bodies.iter().any(|body| body.contains(&at)))
+}
+
+/// The byte ranges of the struct definitions of the text, from `struct`
+/// to the `};` that closes it (naga writes both at the start of a line).
+/// Found once per file: searching back from every occurrence of every name
+/// cost more than the names' own search.
+fn struct_bodies(src: &str) -> Vec<Range<usize>> {
+    let b = src.as_bytes();
+    let starts = src.starts_with("struct ").then_some(0).into_iter().chain(STRUCT.find_iter(b).map(|at| at + 1));
+    starts.filter_map(|open| STRUCT_END.find(&b[open..]).map(|end| open..open + end + STRUCT_END.needle().len())).collect()
 }
 
 /// The GLSL block name of storage buffer `name`: `<name>_ssbo`.
@@ -467,16 +478,17 @@ fn restore_source_name(out: &mut String, naga_name: &str, source: &str) -> Strin
 }
 
 /// The line range (without its newline) of the global declaration of
-/// `name`: at the start of a line (struct members are indented), the name
-/// followed by an initialiser, an array size or `;`.
-fn global_declaration(src: &str, name: &str) -> Option<Range<usize>> {
+/// `name`, and where in the text the name is: at the start of a line
+/// (struct members are indented), the name followed by an initialiser, an
+/// array size or `;`.
+fn global_declaration(src: &str, name: &str) -> Option<(Range<usize>, usize)> {
     text::find_ident(src, name).find_map(|at| {
         let line_start = src[..at].rfind('\n').map_or(0, |k| k + 1);
         let line_end = src[at..].find('\n').map_or(src.len(), |k| at + k);
         let head = &src[line_start..at];
         let rest = &src[at + name.len()..line_end];
         let starts_decl = !head.is_empty() && !head.starts_with([' ', '\t']) && head.ends_with(' ') && !head.trim_end().contains([' ', '(', '=']);
-        (starts_decl && (rest.starts_with(" = ") || rest.starts_with('[') || rest.starts_with(';'))).then_some(line_start..line_end)
+        (starts_decl && (rest.starts_with(" = ") || rest.starts_with('[') || rest.starts_with(';'))).then_some((line_start..line_end, at))
     })
 }
 
