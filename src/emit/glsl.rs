@@ -228,7 +228,7 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
             zero_initialize_workgroup_memory: true,
         };
         let pipeline = PipelineOptions { shader_stage: ep.stage, entry_point: ep.name.clone(), multiview: None };
-        let mut out = String::new();
+        let mut out = String::with_capacity(super::output_capacity(module));
         let mut writer = naga::back::glsl::Writer::new(&mut out, module, module_info, &options, &pipeline, policies())
             .map_err(|e| e.to_string())?;
         let info = writer.write().map_err(|e| e.to_string())?;
@@ -299,7 +299,7 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
         let at = at - line.start;
         let after = &decl[at + name.len()..];
         let dims = &after[..after.find([' ', ';']).unwrap_or(after.len())];
-        let new = format!("uniform {}{name}{dims};", &decl[..at]);
+        let new = ["uniform ", &decl[..at], &name, dims, ";"].concat();
         out.replace_range(line, &new);
         names.uniforms.insert(source.clone(), name);
     }
@@ -356,10 +356,10 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
         (&ep.outputs, out_prefix, &mut names.outputs, ep.stage == naga::ShaderStage::Fragment),
     ] {
         for var in vars {
-            let name = format!("{prefix}{}", var.location);
-            if !declared.iter().any(|(_, id)| *id == name) {
-                return Err(bug(format!("`{}` (location {}) is not declared as `{name}`", var.name, var.location)));
-            }
+            let Some(&(_, name)) = declared.iter().find(|(_, id)| is_location_name(id, prefix, var.location)) else {
+                return Err(bug(format!("`{}` (location {}) is not declared as `{prefix}{}`", var.name, var.location, var.location)));
+            };
+            let name = name.to_string();
             if let Some(loc) = info.varying.get(&name) {
                 if loc.location != var.location {
                     return Err(bug(format!("`{name}` has location {}, expected {}", loc.location, var.location)));
@@ -394,6 +394,12 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
         add_es_precision(&mut out).ok_or_else(|| bug("no `precision highp int;` line to extend".into()))?;
     }
     Ok((out, names))
+}
+
+/// Whether `id` is naga's name for location `location` with `prefix`
+/// (`_vs2fs_location` and 1: `_vs2fs_location1`), without formatting it.
+fn is_location_name(id: &str, prefix: &str, location: u32) -> bool {
+    id.strip_prefix(prefix).is_some_and(|n| n.bytes().all(|b| b.is_ascii_digit()) && (n == "0" || !n.starts_with('0')) && n.parse() == Ok(location))
 }
 
 /// Whether `name` is a variable (or function, or type) of the text: an
@@ -573,6 +579,18 @@ mod tests {
         assert_eq!(block_instance(" { highp mat4 u_model; };\nuniform X_block_1Vertex { vec4 arr[4]; };"), Some("u_model"));
         assert_eq!(block_instance(" { vec4 arr[4]; };"), Some("arr"));
         assert_eq!(block_instance(" {"), None);
+    }
+
+    #[test]
+    fn location_names_match_their_number_only() {
+        assert!(is_location_name("_vs2fs_location1", "_vs2fs_location", 1));
+        assert!(is_location_name("_vs2fs_location0", "_vs2fs_location", 0));
+        assert!(is_location_name("_fs2p_location12", "_fs2p_location", 12));
+        assert!(!is_location_name("_vs2fs_location10", "_vs2fs_location", 1));
+        assert!(!is_location_name("_vs2fs_location01", "_vs2fs_location", 1));
+        assert!(!is_location_name("_vs2fs_location1_", "_vs2fs_location", 1));
+        assert!(!is_location_name("_p2vs_location1", "_vs2fs_location", 1));
+        assert!(!is_location_name("_vs2fs_location", "_vs2fs_location", 0));
     }
 
     #[test]

@@ -118,10 +118,14 @@ pub fn emit(lowered: &Lowered, stem: &str, source_name: &str, targets: &[Target]
     }
 
     let reflection = reflect::build(lowered, stem, source_name, &targets, &glsl_names, &layouts)?;
-    let mut json = serde_json::to_string_pretty(&reflection)
+    // The manifest grows with the interface: about 1 KB per entry point
+    // and per resource (7 KB for the tutorial's 4 and 3).
+    let interface = &lowered.interface;
+    let mut json = Vec::with_capacity(1024 * (2 + interface.entry_points.len() + interface.resources.len()));
+    serde_json::to_writer_pretty(&mut json, &reflection)
         .map_err(|e| Diagnostic::bug(format!("cannot serialise the reflection manifest: {e}"), None))?;
-    json.push('\n');
-    artifacts.push(Artifact { file_name: reflect::file_name(stem), target: None, entry: None, contents: json.into_bytes() });
+    json.push(b'\n');
+    artifacts.push(Artifact { file_name: reflect::file_name(stem), target: None, entry: None, contents: json });
 
     Ok((artifacts, reflection))
 }
@@ -157,6 +161,16 @@ fn check_consistency(lowered: &Lowered) -> Result<(), Diagnostic> {
         }
     }
     Ok(())
+}
+
+/// Bytes to reserve for a backend's output of `module`: naga's writers
+/// append to what they are given, and from empty the text of the
+/// tutorial's fragment shader regrew about ten times, each a copy. Outputs
+/// of the tutorials take 15-60 bytes per expression, the short files the
+/// most (their declarations are most of them).
+pub(crate) fn output_capacity(module: &naga::Module) -> usize {
+    let functions = module.functions.iter().map(|(_, f)| &f.expressions).chain(module.entry_points.iter().map(|e| &e.function.expressions));
+    512 + 40 * functions.map(|e| e.len()).sum::<usize>()
 }
 
 /// Runs a naga backend, turning a panic inside it into a bug diagnostic.

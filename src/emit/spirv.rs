@@ -58,6 +58,10 @@ pub fn write(lowered: &Lowered) -> Result<Vec<u32>, Diagnostic> {
         options.flags |= WriterFlags::FORCE_POINT_SIZE;
     }
     guard("the SPIR-V writer", || {
-        naga::back::spv::write_vec(&lowered.gpu, &lowered.gpu_info, &options, None).map_err(|e| e.to_string())
+        // `spv::write_vec`, into words reserved ahead.
+        let mut words = Vec::with_capacity(super::output_capacity(&lowered.gpu) / 4);
+        let mut writer = naga::back::spv::Writer::new(&options).map_err(|e| e.to_string())?;
+        writer.write(&lowered.gpu, &lowered.gpu_info, None, &options.debug_info, &mut words).map_err(|e| e.to_string())?;
+        Ok(words)
     })
 }

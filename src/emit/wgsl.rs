@@ -22,6 +22,7 @@ pub fn write(lowered: &Lowered) -> Result<String, Diagnostic> {
     if !out.is_empty() {
         out.push('\n');
     }
+    out.reserve(super::output_capacity(&lowered.gpu));
     guard("the WGSL writer", || {
         let mut writer = naga::back::wgsl::Writer::new(out, naga::back::wgsl::WriterFlags::empty());
         writer.write(&lowered.gpu, &lowered.gpu_info).map_err(|e| e.to_string())?;
