@@ -35,13 +35,6 @@ use umbrac::{Compilation, Conventions, Diagnostic, Options, Severity, SourceMap,
 /// Subcommands' argument types that live in their own files.
 mod cli;
 
-/// mimalloc instead of glibc's malloc: a compile of the tutorial makes
-/// about 3,300 allocations, 570 reallocations and as many frees, which took
-/// glibc about a quarter of the compile's instructions; with mimalloc the
-/// compile takes 17 % fewer (docs/performance.md, "The CLI's allocator").
-#[global_allocator]
-static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
-
 const EXIT_ERROR: u8 = 1;
 const EXIT_USAGE: u8 = 2;
 const EXIT_BUG: u8 = 3;
