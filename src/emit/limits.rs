@@ -274,28 +274,33 @@ impl Family {
 }
 
 /// What one entry point (or program) uses of a resource: the count, and
-/// the declaration of what it uses, in order (the item past the limit is
-/// where the error points).
+/// (when `items` is kept) the declaration of what it uses, in order, with
+/// the running count: the item past the limit is where the error points.
+/// Items are only kept when counting again for an error: every compile
+/// counts, and almost none goes over.
+#[derive(Default)]
 struct Use<'a> {
     count: u64,
-    items: Vec<(u64, Span, &'a str)>,
+    items: Option<Vec<(u64, Span, &'a str)>>,
 }
 
 impl<'a> Use<'a> {
-    fn new() -> Use<'a> {
-        Use { count: 0, items: Vec::new() }
+    fn new(keep_items: bool) -> Use<'a> {
+        Use { count: 0, items: keep_items.then(Vec::new) }
     }
 
     fn add(&mut self, n: u64, span: Span, name: &'a str) {
         self.count += n;
-        self.items.push((self.count, span, name));
+        if let Some(items) = &mut self.items {
+            items.push((self.count, span, name));
+        }
     }
 }
 
 /// Checks every entry point and program of `lowered` against the limits
 /// of each requested target (or the stated `raised` ones), pushing an
 /// error for each limit gone over.
-pub fn check(lowered: &Lowered, targets: &[Target], raised: &[(Limit, u64)], diags: &mut Vec<Diagnostic>) {
+pub fn check<'a>(lowered: &'a Lowered, targets: &[Target], raised: &[(Limit, u64)], diags: &mut Vec<Diagnostic>) {
     let mut families = Vec::new();
     for t in targets {
         let f = match t {
@@ -314,16 +319,18 @@ pub fn check(lowered: &Lowered, targets: &[Target], raised: &[(Limit, u64)], dia
     for family in families {
         // `whose` names the entry point or program; it is only formatted
         // for an error (this runs for every compile).
-        let mut report = |limit: Limit, stage: naga::ShaderStage, whose: &dyn Fn() -> String, used: &Use| {
+        // `itemised` counts again, keeping the items, for the error.
+        let mut report = |limit: Limit, stage: naga::ShaderStage, whose: &dyn Fn() -> String, used: &Use, itemised: &dyn Fn() -> Use<'a>| {
             let Some((minimum, api)) = family.minimum(limit, stage) else { return };
             let allowed = raised.iter().rev().find(|(l, _)| *l == limit).map_or(minimum, |&(_, n)| n);
             if used.count <= allowed {
                 return;
             }
-            let Some((_, span, name)) = used.items.iter().find(|(total, ..)| *total > allowed) else { return };
+            let used = itemised();
+            let Some(&(_, span, name)) = used.items.iter().flatten().find(|(total, ..)| *total > allowed) else { return };
             let stated = if allowed == minimum { format!("the {minimum} that {} ({api})", family.promise()) } else { format!("the stated limit of {allowed}") };
             diags.push(
-                Diagnostic::error(format!("{} uses {} {} in {}, over {stated}", whose(), used.count, limit.what(), family.target()), *span)
+                Diagnostic::error(format!("{} uses {} {} in {}, over {stated}", whose(), used.count, limit.what(), family.target()), span)
                     .with_label(format!("`{name}` goes over the limit"))
                     .with_note(format!("to compile for devices with more, state their limit: `--limit {}=N`", limit.name())),
             );
@@ -332,26 +339,33 @@ pub fn check(lowered: &Lowered, targets: &[Target], raised: &[(Limit, u64)], dia
         // GL's: counted once for GLSL 330 and ES 3.00 together.
         let gl = family != Family::Wgpu;
         let counted = if gl { &mut gl_uses } else { &mut wgpu_uses };
-        let per_entry: &Vec<Vec<(Limit, Use)>> = counted.get_or_insert_with(|| iface.entry_points.iter().map(|ep| entry_uses(lowered, ep, family)).collect());
+        let per_entry: &Vec<Vec<(Limit, Use)>> = counted.get_or_insert_with(|| iface.entry_points.iter().map(|ep| entry_uses(lowered, ep, family, false)).collect());
+        let itemised = |ep: &'a EntryInterface, limit: Limit| {
+            entry_uses(lowered, ep, family, true).into_iter().find(|(l, _)| *l == limit).map(|(_, u)| u).unwrap_or_default()
+        };
         for (ep, uses) in iface.entry_points.iter().zip(per_entry) {
             let whose = || format!("{} entry point `{}`", stage_name(ep.stage), ep.name);
             for (limit, used) in uses {
-                report(*limit, ep.stage, &whose, used);
+                report(*limit, ep.stage, &whose, used, &|| itemised(ep, *limit));
             }
         }
         for &(v, f) in &iface.links {
             let (ve, fe) = (&iface.entry_points[v], &iface.entry_points[f]);
             let whose = || format!("the program of `{}` and `{}`", ve.name, fe.name);
             for (limit, single) in [(Limit::CombinedUniformBlocks, Limit::UniformBlocks), (Limit::CombinedTextureUnits, Limit::TextureUnits)] {
-                let mut used = Use::new();
-                for i in [v, f] {
-                    if let Some((_, u)) = per_entry[i].iter().find(|(l, _)| *l == single) {
-                        for &(_, span, name) in &u.items {
+                // Each of the stage's blocks or units counts one.
+                let count = |i: usize| per_entry[i].iter().find(|(l, _)| *l == single).map_or(0, |(_, u)| u.count);
+                let used = Use { count: count(v) + count(f), items: None };
+                let both = || {
+                    let mut used = Use::new(true);
+                    for ep in [ve, fe] {
+                        for (_, span, name) in itemised(ep, single).items.into_iter().flatten() {
                             used.add(1, span, name);
                         }
                     }
-                }
-                report(limit, naga::ShaderStage::Vertex, &whose, &used);
+                    used
+                };
+                report(limit, naga::ShaderStage::Vertex, &whose, &used, &both);
             }
         }
     }
@@ -377,13 +391,15 @@ fn vectors(module: &naga::Module, ty: naga::Handle<naga::Type>) -> u64 {
 }
 
 /// What entry point `ep` uses of each limited resource on `family`.
-fn entry_uses<'a>(lowered: &'a Lowered, ep: &'a EntryInterface, family: Family) -> Vec<(Limit, Use<'a>)> {
+fn entry_uses<'a>(lowered: &'a Lowered, ep: &'a EntryInterface, family: Family, keep_items: bool) -> Vec<(Limit, Use<'a>)> {
     let iface = &lowered.interface;
     let module = &lowered.gpu;
     let vertex = ep.stage == naga::ShaderStage::Vertex;
-    let mut out = Vec::new();
+    // At most 13 limits apply to an entry point.
+    let mut out = Vec::with_capacity(13);
+    let new = || Use::new(keep_items);
     let io = |vars: &'a [crate::lower::IoVar]| {
-        let mut u = Use::new();
+        let mut u = new();
         for v in vars {
             u.add(vectors(module, v.ty), v.span, &v.name);
         }
@@ -398,15 +414,15 @@ fn entry_uses<'a>(lowered: &'a Lowered, ep: &'a EntryInterface, family: Family) 
     }
     let gl = family != Family::Wgpu;
     let blocks_in_gl = iface.gl_uniforms == GlUniforms::Blocks;
-    let (mut blocks, mut block_size, mut buffers, mut buffer_size) = (Use::new(), Use::new(), Use::new(), Use::new());
-    let (mut textures, mut samplers, mut groups) = (Use::new(), Use::new(), Use::new());
-    let (mut storage_buffers, mut storage_images) = (Use::new(), Use::new());
+    let (mut blocks, mut block_size, mut buffers, mut buffer_size) = (new(), new(), new(), new());
+    let (mut textures, mut samplers, mut groups) = (new(), new(), new());
+    let (mut storage_buffers, mut storage_images) = (new(), new());
     let mut max_group: Option<u32> = None;
     for &ri in &ep.resources {
         let Some(r) = iface.resources.get(ri) else { continue };
         if max_group.is_none_or(|g| r.group > g) {
             max_group = Some(r.group);
-            groups = Use::new();
+            groups = new();
             groups.add(r.group as u64 + 1, r.span, &r.name);
         }
         match &r.kind {
@@ -415,13 +431,13 @@ fn entry_uses<'a>(lowered: &'a Lowered, ep: &'a EntryInterface, family: Family) 
                 if gl && (!*loose || blocks_in_gl) {
                     blocks.add(1, r.span, &r.name);
                     if size > block_size.count {
-                        block_size = Use::new();
+                        block_size = new();
                         block_size.add(size, r.span, &r.name);
                     }
                 } else if !gl {
                     buffers.add(1, r.span, &r.name);
                     if size > buffer_size.count {
-                        buffer_size = Use::new();
+                        buffer_size = new();
                         buffer_size.add(size, r.span, &r.name);
                     }
                 }
@@ -439,15 +455,15 @@ fn entry_uses<'a>(lowered: &'a Lowered, ep: &'a EntryInterface, family: Family) 
     if ep.stage == naga::ShaderStage::Compute {
         let [x, y, z] = ep.workgroup_size;
         for (limit, n) in [(Limit::WorkgroupSizeX, x), (Limit::WorkgroupSizeY, y), (Limit::WorkgroupSizeZ, z)] {
-            let mut u = Use::new();
+            let mut u = new();
             u.add(n as u64, ep.span, &ep.name);
             out.push((limit, u));
         }
-        let mut u = Use::new();
+        let mut u = new();
         u.add(x as u64 * y as u64 * z as u64, ep.span, &ep.name);
         out.push((Limit::WorkgroupInvocations, u));
         let mut layouter = naga::proc::Layouter::default();
-        let mut shared = Use::new();
+        let mut shared = new();
         if layouter.update(module.to_ctx()).is_ok() {
             for (name, span) in &ep.workgroup {
                 if let Some((_, g)) = module.global_variables.iter().find(|(_, g)| g.space == naga::AddressSpace::WorkGroup && g.name.as_deref() == Some(name)) {
@@ -458,7 +474,7 @@ fn entry_uses<'a>(lowered: &'a Lowered, ep: &'a EntryInterface, family: Family) 
         out.push((Limit::WorkgroupStorage, shared));
     }
     if gl {
-        let mut vectors_used = Use::new();
+        let mut vectors_used = new();
         if !blocks_in_gl {
             for &u in &ep.loose {
                 if let Some(l) = iface.loose.get(u) {

@@ -128,3 +128,27 @@ fn bind_groups_and_buffer_size() {
     let e = errors(&compile_source("limits.das", &big, &opts));
     assert!(e.len() == 1 && e[0].contains("bytes in one uniform block in GLSL 330, over the 16384"), "{e:?}");
 }
+
+#[test]
+fn a_program_over_the_combined_blocks_points_at_the_block_past_the_limit() {
+    // 13 blocks in the vertex stage and 12 in the fragment stage: each
+    // within a stated limit of 16, together over the 24 GL guarantees.
+    let vs_decls: String = (0..13).map(|i| format!("var @uniform v_s{i} : S\n")).collect();
+    let fs_decls: String = (0..12).map(|i| format!("var @uniform f_s{i} : S\n")).collect();
+    let vs_sum: String = (0..13).map(|i| format!(" + v_s{i}.v")).collect();
+    let fs_sum: String = (0..12).map(|i| format!(" + f_s{i}.v")).collect();
+    let src = format!(
+        "struct S {{\n    v : float4\n}}\n{vs_decls}{fs_decls}var @inout v_c : float4\nvar @out f_color : float4\n\
+         [vertex_program]\ndef vs {{\n    v_c = float4(0.0){vs_sum}\n    gl_Position = v_c\n}}\n\
+         [fragment_program]\ndef fs {{\n    f_color = v_c{fs_sum}\n}}\n"
+    );
+    let raised = [(Limit::UniformBlocks, 16)];
+    for t in [Target::Glsl330, Target::Gles300] {
+        let c = compile(&src, &[t], &raised);
+        let e = errors(&c);
+        assert!(e.len() == 1 && e[0].starts_with("the program of `vs` and `fs` uses 25 uniform blocks in its two stages") && e[0].contains("over the 24"), "{t:?}: {e:?}");
+        let span = c.diagnostics.iter().find(|d| d.severity == umbrac::Severity::Error).and_then(|d| d.span).expect("located");
+        assert_eq!(&src[span.start as usize..span.end as usize], "f_s11", "{t:?}");
+    }
+    assert!(compile(&src, &[Target::Glsl330], &[(Limit::UniformBlocks, 16), (Limit::CombinedUniformBlocks, 25)]).result.is_some());
+}
