@@ -107,7 +107,8 @@ pub fn file_name(entry: &str, stage: naga::ShaderStage, profile: Profile) -> Str
         naga::ShaderStage::Compute => "comp",
         _ => "vert",
     };
-    format!("{entry}.{}.{ext}", profile.infix())
+    // Made for every file of every compile: no formatting machinery.
+    [entry, ".", profile.infix(), ".", ext].concat()
 }
 
 /// The identifiers one GLSL entry point uses for what a host binds.

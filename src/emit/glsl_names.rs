@@ -90,9 +90,9 @@ pub fn glsl_type(module: &naga::Module, ty: naga::Handle<naga::Type>) -> String 
             _ => "float",
         }
         .to_string(),
-        T::Vector { size, scalar } => format!("{}vec{}", prefix(scalar.kind), size as u32),
-        T::Matrix { columns, rows, .. } if columns == rows => format!("mat{}", columns as u32),
-        T::Matrix { columns, rows, .. } => format!("mat{}x{}", columns as u32, rows as u32),
+        T::Vector { size, scalar } => [prefix(scalar.kind), "vec", digit(size)].concat(),
+        T::Matrix { columns, rows, .. } if columns == rows => ["mat", digit(columns)].concat(),
+        T::Matrix { columns, rows, .. } => ["mat", digit(columns), "x", digit(rows)].concat(),
         T::Array { base, size: naga::ArraySize::Constant(n), .. } => {
             // `float[2][3]` in the DSL is `float[3][2]` in GLSL's order.
             let inner = glsl_type(module, base);
@@ -102,6 +102,16 @@ pub fn glsl_type(module: &naga::Module, ty: naga::Handle<naga::Type>) -> String 
             }
         }
         _ => t.name.clone().unwrap_or_default(),
+    }
+}
+
+/// `2`, `3` or `4`: type names are spelled for every uniform, attribute
+/// and varying of every compile, without the formatting machinery.
+pub fn digit(size: naga::VectorSize) -> &'static str {
+    match size {
+        naga::VectorSize::Bi => "2",
+        naga::VectorSize::Tri => "3",
+        naga::VectorSize::Quad => "4",
     }
 }
 

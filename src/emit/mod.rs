@@ -105,16 +105,17 @@ pub fn emit(lowered: &Lowered, stem: &str, source_name: &str, targets: &[Target]
 
     if targets.contains(&Target::Wgsl) {
         let text = wgsl::write(lowered)?;
-        artifacts.push(Artifact { file_name: format!("{stem}.wgsl"), target: Some(Target::Wgsl), entry: None, contents: text.into_bytes() });
+        artifacts.push(Artifact { file_name: [stem, ".wgsl"].concat(), target: Some(Target::Wgsl), entry: None, contents: text.into_bytes() });
     }
     if targets.contains(&Target::Spirv) {
         let words = spirv::write(lowered)?;
-        // One copy of the words' bytes (a `flat_map` collect pushes them one at a time).
-        let mut contents = Vec::with_capacity(4 * words.len());
-        for w in &words {
-            contents.extend_from_slice(&w.to_le_bytes());
+        // One copy of the words' bytes, into a buffer of the final size
+        // (pushing them a word at a time checks the capacity every time).
+        let mut contents = vec![0u8; 4 * words.len()];
+        for (bytes, w) in contents.chunks_exact_mut(4).zip(&words) {
+            bytes.copy_from_slice(&w.to_le_bytes());
         }
-        artifacts.push(Artifact { file_name: format!("{stem}.spv"), target: Some(Target::Spirv), entry: None, contents });
+        artifacts.push(Artifact { file_name: [stem, ".spv"].concat(), target: Some(Target::Spirv), entry: None, contents });
     }
 
     let reflection = reflect::build(lowered, stem, source_name, &targets, &glsl_names, &layouts)?;

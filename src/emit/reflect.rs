@@ -21,6 +21,7 @@ use naga::proc::Layouter;
 use naga::{ArraySize, Handle, Module, ScalarKind, ShaderStage, Type, TypeInner, VectorSize};
 
 use super::glsl::{self, EntryNames};
+use super::glsl_names::digit;
 use super::reflect_types::{EntryPoint, Io, Member, ProgramLink, Reflection, Sampler, StorageBuffer, StorageImage, StructLayout, Uniform, UniformBuffer, REFLECTION_FORMAT};
 use crate::diag::Diagnostic;
 use crate::lower::{EntryInterface, GlUniforms, IoVar, Lowered, ResourceKind};
@@ -28,7 +29,7 @@ use crate::sema::{ConstValue, SamplerKind, Ty};
 use crate::target::Target;
 
 pub fn file_name(stem: &str) -> String {
-    format!("{stem}.reflect.json")
+    [stem, ".reflect.json"].concat()
 }
 
 /// The layout of one uniform block.
@@ -72,7 +73,7 @@ pub fn uniform_layouts(lowered: &Lowered) -> Result<UniformLayouts, Diagnostic> 
         let Ok(t) = module.types.get_handle(*ty) else {
             return Err(Diagnostic::bug(format!("uniform `{}` has a type that is not in the GPU module", r.name), Some(r.span)));
         };
-        if let Err(why) = std140(module, *ty, &r.name) {
+        if let Err(why) = std140(module, *ty, &|| r.name.clone()) {
             return Err(Diagnostic::bug(
                 format!("the lowering produced uniform buffer `{}` whose layout differs between GLSL std140 and the WGSL uniform rules: {why}", r.name),
                 Some(r.span),
@@ -282,7 +283,9 @@ fn vec_align(size: VectorSize, width: u32) -> u32 {
 
 /// std140 size and alignment of `ty`, or why its explicit layout in the IR
 /// (struct offsets, array strides, matrix column strides) differs from it.
-fn std140(module: &Module, ty: Handle<Type>, path: &str) -> Result<(u32, u32), String> {
+/// `path` spells where `ty` is (`u_light.colors[]`); it is formatted only
+/// for an error, as this runs for every uniform of every compile.
+fn std140(module: &Module, ty: Handle<Type>, path: &dyn Fn() -> String) -> Result<(u32, u32), String> {
     let t = &module.types[ty];
     match t.inner {
         TypeInner::Scalar(s) if s.kind != ScalarKind::Bool => Ok((s.width as u32, s.width as u32)),
@@ -292,17 +295,17 @@ fn std140(module: &Module, ty: Handle<Type>, path: &str) -> Result<(u32, u32), S
         }
         TypeInner::Matrix { columns, rows, scalar } => {
             if rows == VectorSize::Bi {
-                return Err(format!("`{path}` is a {}: std140 column stride 16, WGSL column stride 8", dsl_name(module, ty)));
+                return Err(format!("`{}` is a {}: std140 column stride 16, WGSL column stride 8", path(), dsl_name(module, ty)));
             }
             let _ = scalar;
             Ok((columns as u32 * 16, 16))
         }
         TypeInner::Array { base, size: ArraySize::Constant(n), stride } => {
-            let (bs, ba) = std140(module, base, &format!("{path}[]"))?;
+            let (bs, ba) = std140(module, base, &|| [path().as_str(), "[]"].concat())?;
             let align = round_up(16, ba);
             let std_stride = round_up(align, bs);
             if std_stride != stride {
-                return Err(format!("`{path}`: std140 array stride {std_stride}, WGSL array stride {stride}"));
+                return Err(format!("`{}`: std140 array stride {std_stride}, WGSL array stride {stride}", path()));
             }
             Ok((n.get() * stride, align))
         }
@@ -310,11 +313,14 @@ fn std140(module: &Module, ty: Handle<Type>, path: &str) -> Result<(u32, u32), S
             let mut end = 0;
             let mut align = 16;
             for (i, m) in members.iter().enumerate() {
-                let name = m.name.clone().unwrap_or_else(|| format!("_{i}"));
-                let (ms, ma) = std140(module, m.ty, &format!("{path}.{name}"))?;
+                let member_path = || {
+                    let name = m.name.clone().unwrap_or_else(|| format!("_{i}"));
+                    format!("{}.{name}", path())
+                };
+                let (ms, ma) = std140(module, m.ty, &member_path)?;
                 let offset = round_up(ma, end);
                 if offset != m.offset {
-                    return Err(format!("`{path}.{name}`: std140 offset {offset}, WGSL offset {}", m.offset));
+                    return Err(format!("`{}`: std140 offset {offset}, WGSL offset {}", member_path(), m.offset));
                 }
                 end = offset + ms;
                 align = align.max(ma);
@@ -322,7 +328,7 @@ fn std140(module: &Module, ty: Handle<Type>, path: &str) -> Result<(u32, u32), S
             let align = round_up(16, align);
             Ok((round_up(align, end), align))
         }
-        _ => Err(format!("`{path}` has type {}, which cannot be in a uniform block", dsl_name(module, ty))),
+        _ => Err(format!("`{}` has type {}, which cannot be in a uniform block", path(), dsl_name(module, ty))),
     }
 }
 
@@ -337,8 +343,8 @@ pub fn dsl_name(module: &Module, ty: Handle<Type>) -> String {
     };
     match t.inner {
         TypeInner::Scalar(s) => scalar(s.kind).to_string(),
-        TypeInner::Vector { size, scalar: s } => format!("{}{}", scalar(s.kind), size as u32),
-        TypeInner::Matrix { columns, rows, .. } => format!("float{}x{}", columns as u32, rows as u32),
+        TypeInner::Vector { size, scalar: s } => [scalar(s.kind), digit(size)].concat(),
+        TypeInner::Matrix { columns, rows, .. } => ["float", digit(columns), "x", digit(rows)].concat(),
         TypeInner::Array { base, size: ArraySize::Constant(n), .. } => format!("{}[{n}]", dsl_name(module, base)),
         TypeInner::Struct { .. } => t.name.clone().unwrap_or_else(|| "struct".into()),
         _ => t.name.clone().unwrap_or_else(|| format!("{:?}", t.inner)),
@@ -523,7 +529,7 @@ pub fn build(
         .collect();
 
     // The per-module file names, made once for every entry point.
-    let module_files = ModuleFiles { wgsl: format!("{stem}.wgsl"), spirv: format!("{stem}.spv") };
+    let module_files = ModuleFiles { wgsl: [stem, ".wgsl"].concat(), spirv: [stem, ".spv"].concat() };
     let mut entry_points = Vec::with_capacity(iface.entry_points.len());
     for (ep, names) in iface.entry_points.iter().zip(glsl_names) {
         entry_points.push(entry_point(module, ep, names, &module_files, targets, iface)?);
@@ -693,8 +699,8 @@ fn dsl_type_name(module: &Module, ty: naga::Handle<naga::Type>) -> String {
     };
     match &module.types[ty].inner {
         naga::TypeInner::Scalar(s) | naga::TypeInner::Atomic(s) => scalar(*s).to_string(),
-        naga::TypeInner::Vector { size, scalar: s } => format!("{}{}", scalar(*s), *size as u8),
-        naga::TypeInner::Matrix { columns, rows, .. } => format!("float{}x{}", *columns as u8, *rows as u8),
+        naga::TypeInner::Vector { size, scalar: s } => [scalar(*s), digit(*size)].concat(),
+        naga::TypeInner::Matrix { columns, rows, .. } => ["float", digit(*columns), "x", digit(*rows)].concat(),
         naga::TypeInner::Array { base, size: naga::ArraySize::Constant(n), .. } => format!("{}[{n}]", dsl_type_name(module, *base)),
         naga::TypeInner::Array { base, .. } => format!("{}[]", dsl_type_name(module, *base)),
         _ => module.types[ty].name.clone().unwrap_or_default(),
