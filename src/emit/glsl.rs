@@ -179,13 +179,17 @@ pub struct EntryModule<'a> {
     to_original: Vec<Option<usize>>,
     /// [`crate::lower::GlEntry::uniforms`].
     uniforms: &'a [(naga::Handle<naga::GlobalVariable>, String)],
+    /// The names naga's namer is given for `module`, for both profiles
+    /// (only for an entry point with inputs or outputs to rename).
+    labels: Option<glsl_names::NamerLabels<'a>>,
 }
 
 impl<'a> EntryModule<'a> {
     pub fn new(lowered: &'a Lowered, ep: &EntryInterface) -> Result<EntryModule<'a>, Diagnostic> {
         let gl = lowered.gl.get(ep.index).ok_or_else(|| Diagnostic::bug(format!("entry point `{}` has no GL module", ep.name), None))?;
         let to_original = global_map(&gl.module, &lowered.gpu);
-        Ok(EntryModule { module: &gl.module, info: &gl.info, to_original, uniforms: &gl.uniforms })
+        let labels = (!ep.inputs.is_empty() || !ep.outputs.is_empty()).then(|| glsl_names::NamerLabels::of(&gl.module));
+        Ok(EntryModule { module: &gl.module, info: &gl.info, to_original, uniforms: &gl.uniforms, labels })
     }
 
     /// The GPU module's global index for a global of the GL module.
@@ -349,7 +353,17 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
     // ES 3.00 requires a location on each of several colour outputs; both
     // profiles keep them there, so that one manifest describes both.
     let mrt = ep.stage == naga::ShaderStage::Fragment && ep.outputs.len() > 1;
-    let structs = if ep.inputs.is_empty() && ep.outputs.is_empty() { Vec::new() } else { struct_bodies(&out) };
+    // Found only if some name has to be looked for in the text.
+    let structs = std::cell::OnceCell::new();
+    let taken = |n: &str| {
+        // Whether naga could have written `n`: if not (the usual case),
+        // the text need not be searched. GLSL 430 / ES 3.10 text is
+        // always searched (naga writes more builtins there).
+        let maybe = profile.binds_in_shader() || em.labels.as_ref().is_none_or(|l| l.may_be_taken(n));
+        let taken = maybe && names_a_variable(&out, structs.get_or_init(|| struct_bodies(&out)), n);
+        debug_assert!(maybe || !names_a_variable(&out, &struct_bodies(&out), n), "`{n}` is a variable of the GLSL text but not a name naga could have written");
+        taken
+    };
     let mut renames: Vec<(String, String)> = Vec::new();
     let mut unlocated: Vec<String> = Vec::new();
     for (vars, prefix, map, attribute_or_output) in [
@@ -370,7 +384,7 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
             // holds inputs and outputs inside the function apart (`in_`,
             // `out_`), and the checker keeps top-level names unique and
             // locals off them, so only reserved words are renamed.
-            let glsl = glsl_names::glsl_name(&var.name, |n| names_a_variable(&out, &structs, n));
+            let glsl = glsl_names::glsl_name(&var.name, taken);
             // naga writes varyings without a location (they link by name).
             if attribute_or_output && !var.explicit_location && !mrt {
                 unlocated.push(glsl.clone());

@@ -71,6 +71,88 @@ pub fn glsl_name(source: &str, taken: impl Fn(&str) -> bool) -> String {
     (1u32..).map(|k| format!("{base}_{k}")).find(|n| free(n)).expect("a free name")
 }
 
+/// The names naga's namer is given when it writes a module (struct
+/// members aside: they live in their own namespace), as the namer keeps
+/// them: every identifier of naga's text that is no keyword, builtin or
+/// name of naga's own comes from one of these.
+pub struct NamerLabels<'a> {
+    /// Each label without leading digits and trailing `_` (the namer drops
+    /// them), the namer's fallbacks for unnamed items among them.
+    bases: Vec<&'a str>,
+    /// Some label is one the namer rewrites further (a character other than
+    /// a letter, digit or `_`, or `__`): any name may be taken then.
+    rewritten: bool,
+}
+
+impl<'a> NamerLabels<'a> {
+    pub fn of(module: &'a naga::Module) -> NamerLabels<'a> {
+        let functions = || module.functions.iter().map(|(_, f)| f).chain(module.entry_points.iter().map(|e| &e.function));
+        let count = NAMER_FALLBACKS.len()
+            + module.types.len()
+            + module.constants.len()
+            + module.overrides.len()
+            + module.global_variables.len()
+            + 2 * module.entry_points.len()
+            + functions().map(|f| 1 + f.arguments.len() + f.local_variables.len() + f.named_expressions.len()).sum::<usize>();
+        let mut labels = NamerLabels { bases: Vec::with_capacity(count), rewritten: false };
+        labels.bases.extend_from_slice(NAMER_FALLBACKS);
+        let mut add = |n: Option<&'a str>| {
+            let Some(n) = n else { return };
+            let base = n.trim_start_matches(|c: char| c.is_ascii_digit()).trim_end_matches('_');
+            let b = base.as_bytes();
+            if b.is_empty() || !b.iter().all(|&c| c.is_ascii_alphanumeric() || c == b'_') || b.windows(2).any(|w| w == b"__") {
+                labels.rewritten = true;
+            }
+            labels.bases.push(base);
+        };
+        module.types.iter().for_each(|(_, t)| add(t.name.as_deref()));
+        module.constants.iter().for_each(|(_, c)| add(c.name.as_deref()));
+        module.overrides.iter().for_each(|(_, o)| add(o.name.as_deref()));
+        module.global_variables.iter().for_each(|(_, g)| add(g.name.as_deref()));
+        module.entry_points.iter().for_each(|e| add(Some(&e.name)));
+        for f in functions() {
+            add(f.name.as_deref());
+            f.arguments.iter().for_each(|a| add(a.name.as_deref()));
+            f.local_variables.iter().for_each(|(_, l)| add(l.name.as_deref()));
+            f.named_expressions.values().for_each(|n| add(Some(n)));
+        }
+        labels
+    }
+
+    /// Whether naga's GLSL text could hold the identifier `name` outside
+    /// struct members: a name naga makes up, a uniform block
+    /// (`<type>_block_<N><stage>`), or what its namer makes of a label (its
+    /// base, the base and `_` after a final digit or a keyword, or the
+    /// base, `_` and a number for a repeat; a reserved prefix, `gl_` or
+    /// `_group`, makes it `gen_...`). When this is false the text need not
+    /// be searched for `name`; when it is true the text says.
+    pub fn may_be_taken(&self, name: &str) -> bool {
+        let Some(&first) = name.as_bytes().first() else { return true };
+        // (`windows`, not `contains`: a substring search builds a searcher first.)
+        if self.rewritten || MADE_UP_PREFIXES.iter().any(|p| p.as_bytes()[0] == first && name.starts_with(p)) || name.as_bytes().windows(7).any(|w| w == b"_block_") {
+            return true;
+        }
+        // The bases the namer could have made `name` from.
+        let bare = name.strip_suffix('_');
+        let numbered = name.rfind('_').filter(|&at| at + 1 < name.len() && name[at + 1..].bytes().all(|b| b.is_ascii_digit())).map(|at| &name[..at]);
+        self.bases.iter().any(|&l| l == name || Some(l) == bare || Some(l) == numbered)
+    }
+}
+
+/// What naga's namer calls an unnamed type, function, argument, local,
+/// global or entry point result (an unnamed constant is `const_...`).
+const NAMER_FALLBACKS: &[&str] = &["type", "VertexOutput", "FragmentOutput", "ComputeOutput", "function", "param", "local", "global"];
+
+/// Prefixes of the identifiers naga's GLSL writer makes up (`_e12`,
+/// `_group_0_binding_1_fs`, `_vs2fs_location0`, `loop_init`, `naga_modf`,
+/// `gen_gl_Position`, `const_float`) and of GLSL builtin function families
+/// beyond 330 / ES 3.00 that `RESERVED` leaves out (extensions, GLSL 4.x).
+const MADE_UP_PREFIXES: &[&str] = &[
+    "_", "gl_", "gen_", "naga_", "const_", "loop_init", "image", "atomic", "memoryBarrier", "groupMemoryBarrier", "subgroup", "interpolateAt",
+    "textureQuery", "textureSamples", "textureGatherOffsets", "dFd", "fwidth", "anyInvocation", "allInvocation", "packDouble", "unpackDouble",
+    "EmitStream", "EndStream", "bitfield", "find", "uadd", "usub", "umul", "imul", "bitCount",
+];
+
 /// The GLSL spelling of a type of a module (`mat3x2`, `bvec2`, `float[9]`,
 /// `Light[4]`), as a host reads it to choose a `glUniform*` call.
 pub fn glsl_type(module: &naga::Module, ty: naga::Handle<naga::Type>) -> String {
@@ -127,5 +209,35 @@ mod tests {
         assert_eq!(glsl_name("sample", |_| false), "sample_");
         assert_eq!(glsl_name("gl_x", |_| false), "ugl_x");
         assert!(is_reserved("gl_Thing") && !is_reserved("a_b"));
+    }
+
+    #[test]
+    fn names_the_namer_could_write_are_looked_for() {
+        let labels = |names: &[&str]| {
+            let mut module = naga::Module::default();
+            for n in names {
+                module.constants.append(naga::Constant { name: Some(n.to_string()), ty: module.types.insert(naga::Type { name: None, inner: naga::TypeInner::Scalar(naga::Scalar::F32) }, naga::Span::UNDEFINED), init: module.global_expressions.append(naga::Expression::Literal(naga::Literal::F32(0.0)), naga::Span::UNDEFINED) }, naga::Span::UNDEFINED);
+            }
+            module
+        };
+        let module = labels(&["v", "in_a_pos", "lit1", "world", "step_", "gl_Position"]);
+        let l = NamerLabels::of(&module);
+        // What the namer makes of a label: its base, with `_`, with `_N`.
+        assert!(l.may_be_taken("world") && l.may_be_taken("world_") && l.may_be_taken("world_2") && l.may_be_taken("lit1_"));
+        assert!(l.may_be_taken("step") && l.may_be_taken("step_"), "a final `_` is dropped, then added back for a keyword");
+        assert!(l.may_be_taken("function") && l.may_be_taken("local_1"), "the namer's fallbacks for unnamed items");
+        // Not from `v`, `world` or `gl_Position` (which becomes `gen_gl_Position`): other names.
+        for free in ["v_world_pos", "worlds", "world_x", "world_2x", "a_pos", "Position"] {
+            assert!(!l.may_be_taken(free), "{free}");
+        }
+        // naga's own names and builtins beyond GLSL 330 / ES 3.00.
+        for made_up in ["_e12", "loop_init_1", "gen_gl_Position", "naga_modf", "Uniforms_block_0Vertex", "imageLoad", "atomicAdd", "dFdxFine", "const_float", ""] {
+            assert!(l.may_be_taken(made_up), "{made_up}");
+        }
+        // A label the namer rewrites further makes every name one to look for.
+        for rewritten in ["u__x", "a-b"] {
+            let module = labels(&[rewritten]);
+            assert!(NamerLabels::of(&module).may_be_taken("anything"), "{rewritten}");
+        }
     }
 }
