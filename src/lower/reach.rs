@@ -10,6 +10,10 @@ pub(super) struct Reach {
     pub(super) by_entry: Vec<Vec<bool>>,
     pub(super) vertex: Vec<bool>,
     pub(super) fragment: Vec<bool>,
+    /// Per entry point, the globals its own body assigns (all or part of)
+    /// or passes to a `var p : T&` parameter: found once, for every module
+    /// built from the program.
+    pub(super) written: Vec<Vec<sema::GlobalId>>,
 }
 
 impl Reach {
@@ -23,7 +27,16 @@ impl Reach {
                 *s |= r;
             }
         }
-        Reach { by_entry, vertex, fragment }
+        let written = p
+            .entry_points
+            .iter()
+            .map(|ep| {
+                let mut out = ep.func.ref_writes.clone();
+                assigned_globals(&ep.func.body, &mut out);
+                out
+            })
+            .collect();
+        Reach { by_entry, vertex, fragment, written }
     }
 }
 
@@ -69,9 +82,7 @@ impl EntryIo {
                     touched[gid] = true;
                 }
             }
-            assigned_globals(&ep.func.body, &mut written);
-            // What the entry point passes to `var p : T&` parameters.
-            for &gid in &ep.func.ref_writes {
+            for &gid in &reach.written[index] {
                 written[gid] = true;
             }
             let mut mine = vec![false; n];
@@ -91,8 +102,8 @@ impl EntryIo {
     }
 }
 
-/// Marks the globals that `stmts` assign to (all or part of).
-fn assigned_globals(stmts: &[sema::Stmt], out: &mut [bool]) {
+/// Adds the globals that `stmts` assign to (all or part of) to `out`.
+fn assigned_globals(stmts: &[sema::Stmt], out: &mut Vec<sema::GlobalId>) {
     fn root(e: &sema::Expr) -> Option<sema::GlobalId> {
         match &e.kind {
             sema::ExprKind::Global(g) => Some(*g),
@@ -104,7 +115,7 @@ fn assigned_globals(stmts: &[sema::Stmt], out: &mut [bool]) {
         match s {
             sema::Stmt::Assign { target, .. } => {
                 if let Some(g) = root(target) {
-                    out[g] = true;
+                    out.push(g);
                 }
             }
             sema::Stmt::If { then, otherwise, .. } => {
@@ -285,10 +296,11 @@ def fs {
 }
 ",
         );
-        let mut written = vec![false; p.globals.len()];
+        let mut written = Vec::new();
         assigned_globals(&p.entry_points[0].func.body, &mut written);
         let [a, b, color] = ["a", "b", "f_color"].map(|n| global(&p, n));
-        assert!(!written[a] && written[b] && written[color]);
+        assert!(!written.contains(&a) && written.contains(&b) && written.contains(&color));
+        assert_eq!(Reach::of(&p).written, [written], "found once per entry point");
     }
 
     #[test]

@@ -25,6 +25,10 @@ use crate::diag::{Diagnostic, Diagnostics};
 use crate::source::Span;
 use crate::syntax::ast::BinaryOp;
 
+/// The most arguments of a builtin call the folder evaluates (no builtin
+/// takes more).
+const MAX_FOLDED_ARGS: usize = 8;
+
 const NOTE: &str = "its operands are constants, so it is evaluated when compiling: WGSL rejects the shader, GLSL leaves the result undefined";
 
 /// Reports every constant subexpression of every checked function without
@@ -178,7 +182,13 @@ impl<'p> Folder<'p, '_> {
                 None
             }
             ExprKind::Builtin(b, args) => {
-                let vals: Vec<Val<'p>> = args.iter().map(|a| self.expr(a)).collect();
+                // Inline: every builtin call is folded, most with a run-time
+                // argument, and no builtin takes more than a few.
+                if args.len() > MAX_FOLDED_ARGS {
+                    args.iter().for_each(|a| drop(self.expr(a)));
+                    return None;
+                }
+                let vals: arrayvec::ArrayVec<Val<'p>, MAX_FOLDED_ARGS> = args.iter().map(|a| self.expr(a)).collect();
                 if b.is_texture() {
                     return None;
                 }
@@ -206,11 +216,22 @@ impl<'p> Folder<'p, '_> {
                 }
             }
             ExprKind::Construct(xs) => {
-                let vals: Vec<Val<'p>> = xs.iter().map(|x| self.expr(x)).collect();
-                if vals.iter().any(Option::is_none) {
-                    return None;
+                // Every part is walked (for its own errors); the values are
+                // kept only while all are constant, so a construction with a
+                // run-time part allocates nothing.
+                let mut vals: Option<Vec<(ConstValue, Ty)>> = Some(Vec::new());
+                for x in xs {
+                    let v = self.expr(x);
+                    match (v, &mut vals) {
+                        (Some(v), Some(vs)) => {
+                            vs.reserve_exact(xs.len() - vs.len());
+                            vs.push((v.into_owned(), x.ty.clone()));
+                        }
+                        (None, _) => vals = None,
+                        (Some(_), None) => {}
+                    }
                 }
-                let vals = vals.into_iter().zip(xs).map(|(v, x)| v.map(|v| (v.into_owned(), x.ty.clone()))).collect::<Option<Vec<_>>>()?;
+                let vals = vals?;
                 match &e.ty {
                     Ty::Struct(_) | Ty::Array(..) => Some(Cow::Owned(ConstValue::Composite(vals.into_iter().map(|v| v.0).collect()))),
                     ty => consts::construct(ty, vals).map(Cow::Owned),

@@ -94,7 +94,14 @@ impl<'a, 'd> Checker<'a, 'd> {
     /// buffer. The GPU module holds every entry point, so bindings are
     /// unique across the file.
     fn assign_bindings(&mut self) {
-        let used: std::collections::BTreeSet<GlobalId> = self.out.entry_points.iter().flat_map(|ep| ep.func.uses.keys().copied()).collect();
+        // In declaration (id) order; a flag per global, not a set.
+        let mut is_used = vec![false; self.out.globals.len()];
+        for ep in &self.out.entry_points {
+            for &g in ep.func.uses.keys() {
+                is_used[g] = true;
+            }
+        }
+        let used = is_used.iter().enumerate().filter(|(_, u)| **u).map(|(g, _)| g);
         // What takes bindings, in declaration order of its first global:
         // (its globals, group, how many bindings, the binding written).
         struct Holder {
@@ -105,7 +112,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
         let mut holders: Vec<Holder> = Vec::new();
         let mut buffer_of_group: BTreeMap<u32, usize> = BTreeMap::new();
-        for &g in &used {
+        for g in used {
             let global = &self.out.globals[g];
             let slots = match global.kind {
                 GlobalKind::Uniform { .. } | GlobalKind::Storage { .. } | GlobalKind::Image { .. } => 1u32,
@@ -236,10 +243,11 @@ impl<'a, 'd> Checker<'a, 'd> {
         for (&scope, globals) in &mut scopes {
             globals.sort_unstable();
             globals.dedup();
-            let mut taken: BTreeMap<u32, GlobalId> = BTreeMap::new();
+            // (location, global): a scope holds a few, searched in place.
+            let mut taken: Vec<(u32, GlobalId)> = Vec::new();
             for &g in globals.iter() {
                 let GlobalKind::Io { kind, location: Some(l) } = self.out.globals[g].kind else { continue };
-                if let Some(&prev) = taken.get(&l) {
+                if let Some(&(_, prev)) = taken.iter().find(|(at, _)| *at == l) {
                     let GlobalKind::Io { kind: prev_kind, .. } = self.out.globals[prev].kind else { continue };
                     let (a, b) = (&self.out.globals[prev].name, &self.out.globals[g].name);
                     let what = if prev_kind == kind {
@@ -255,17 +263,17 @@ impl<'a, 'd> Checker<'a, 'd> {
                     self.diags.push(d.with_note("locations are per program: give one of them another `@location = N`, or none to have one assigned"));
                     continue;
                 }
-                taken.insert(l, g);
+                taken.push((l, g));
                 assigned.insert((scope, g), l);
             }
             for &g in globals.iter() {
                 let GlobalKind::Io { location: None, .. } = self.out.globals[g].kind else { continue };
-                let Some(l) = (0..MAX_LOCATIONS).find(|l| !taken.contains_key(l)) else {
+                let Some(l) = (0..MAX_LOCATIONS).find(|l| !taken.iter().any(|(at, _)| at == l)) else {
                     let msg = format!("no free location left (at most {MAX_LOCATIONS}) in {}", self.scope_text(scope, group));
                     self.diags.push(Diagnostic::error(msg, self.out.globals[g].span));
                     break;
                 };
-                taken.insert(l, g);
+                taken.push((l, g));
                 assigned.insert((scope, g), l);
             }
         }
