@@ -222,9 +222,10 @@ impl<'a, 'd> Checker<'a, 'd> {
     }
 
     fn number_locations(&mut self, group: &[usize]) {
-        // Each scope's globals, in declaration order.
-        let mut scopes: BTreeMap<Scope, Vec<GlobalId>> = BTreeMap::new();
-        let mut placed: Vec<(usize, GlobalId, Scope)> = Vec::new();
+        // (scope, global, entry point) of every interface global an entry
+        // point uses; sorted, each scope's globals are a run in
+        // declaration order. A flat list: a program has a few dozen.
+        let mut placed: Vec<(Scope, GlobalId, usize)> = Vec::new();
         for (e, ep) in self.out.entry_points.iter().enumerate() {
             let vertex = ep.stage == naga::ShaderStage::Vertex;
             for &g in ep.func.uses.keys() {
@@ -235,17 +236,26 @@ impl<'a, 'd> Checker<'a, 'd> {
                     IoKind::InOut => true,
                 };
                 let scope = if varying { Scope::Group(group[e]) } else { Scope::Entry(e) };
-                scopes.entry(scope).or_default().push(g);
-                placed.push((e, g, scope));
+                placed.push((scope, g, e));
             }
         }
-        let mut assigned: FxHashMap<(Scope, GlobalId), u32> = FxHashMap::default();
-        for (&scope, globals) in &mut scopes {
-            globals.sort_unstable();
-            globals.dedup();
-            // (location, global): a scope holds a few, searched in place.
+        placed.sort_unstable();
+        let mut start = 0;
+        while start < placed.len() {
+            let scope = placed[start].0;
+            let end = start + placed[start..].iter().take_while(|p| p.0 == scope).count();
+            let run = &placed[start..end];
+            // The scope's globals, each once, and the location each gets.
+            let mut globals: Vec<(GlobalId, Option<u32>)> = Vec::with_capacity(run.len());
+            for &(_, g, _) in run {
+                if globals.last().is_none_or(|&(last, _)| last != g) {
+                    globals.push((g, None));
+                }
+            }
+            // (location, global): a scope holds at most `MAX_LOCATIONS`.
             let mut taken: Vec<(u32, GlobalId)> = Vec::new();
-            for &g in globals.iter() {
+            for (g, at) in globals.iter_mut() {
+                let g = *g;
                 let GlobalKind::Io { kind, location: Some(l) } = self.out.globals[g].kind else { continue };
                 if let Some(&(_, prev)) = taken.iter().find(|(at, _)| *at == l) {
                     let GlobalKind::Io { kind: prev_kind, .. } = self.out.globals[prev].kind else { continue };
@@ -264,23 +274,25 @@ impl<'a, 'd> Checker<'a, 'd> {
                     continue;
                 }
                 taken.push((l, g));
-                assigned.insert((scope, g), l);
+                *at = Some(l);
             }
-            for &g in globals.iter() {
-                let GlobalKind::Io { location: None, .. } = self.out.globals[g].kind else { continue };
+            for (g, at) in globals.iter_mut() {
+                let GlobalKind::Io { location: None, .. } = self.out.globals[*g].kind else { continue };
                 let Some(l) = (0..MAX_LOCATIONS).find(|l| !taken.iter().any(|(at, _)| at == l)) else {
                     let msg = format!("no free location left (at most {MAX_LOCATIONS}) in {}", self.scope_text(scope, group));
-                    self.diags.push(Diagnostic::error(msg, self.out.globals[g].span));
+                    self.diags.push(Diagnostic::error(msg, self.out.globals[*g].span));
                     break;
                 };
-                taken.push((l, g));
-                assigned.insert((scope, g), l);
+                taken.push((l, *g));
+                *at = Some(l);
             }
-        }
-        for (e, g, scope) in placed {
-            if let Some(&l) = assigned.get(&(scope, g)) {
-                self.out.entry_points[e].locations.insert(g, l);
+            for &(_, g, e) in run {
+                let at = globals.binary_search_by_key(&g, |&(g, _)| g).ok().and_then(|i| globals[i].1);
+                if let Some(l) = at {
+                    self.out.entry_points[e].locations.insert(g, l);
+                }
             }
+            start = end;
         }
     }
 
