@@ -166,7 +166,37 @@ fn policies() -> BoundsCheckPolicies {
 
 /// Writes one entry point's GL module and fixes up its names.
 pub fn write_entry(lowered: &Lowered, ep: &EntryInterface, profile: Profile) -> Result<(String, EntryNames), Diagnostic> {
-    write_entry_from(lowered, &EntryModule::new(lowered, ep)?, ep, profile)
+    let varyings = VaryingNames::of(lowered);
+    write_entry_from(lowered, &EntryModule::new(lowered, ep, &varyings)?, ep, profile)
+}
+
+/// The GLSL name of each attribute, varying and colour output of a
+/// compile, by source name: chosen once against what naga can call
+/// anything in the GL modules that have them ([`glsl_names::NamerLabels`]),
+/// so that both stages of a program, and every profile, agree.
+pub struct VaryingNames<'a> {
+    names: Vec<(&'a str, String)>,
+}
+
+impl<'a> VaryingNames<'a> {
+    pub fn of(lowered: &'a Lowered) -> VaryingNames<'a> {
+        let with_io = || lowered.interface.entry_points.iter().filter(|ep| !ep.inputs.is_empty() || !ep.outputs.is_empty());
+        let mut labels = glsl_names::NamerLabels::default();
+        for gl in with_io().filter_map(|ep| lowered.gl.get(ep.index)) {
+            labels.add_module(&gl.module);
+        }
+        let mut names: Vec<(&str, String)> = Vec::new();
+        for var in with_io().flat_map(|ep| ep.inputs.iter().chain(&ep.outputs)) {
+            if !names.iter().any(|(n, _)| *n == var.name) {
+                names.push((&var.name, glsl_names::glsl_name(&var.name, |n| labels.taken(n))));
+            }
+        }
+        VaryingNames { names }
+    }
+
+    fn get(&self, source: &str) -> Option<&str> {
+        self.names.iter().find(|(n, _)| *n == source).map(|(_, g)| g.as_str())
+    }
 }
 
 /// The GL module of one entry point and the map from its globals to the
@@ -179,17 +209,17 @@ pub struct EntryModule<'a> {
     to_original: Vec<Option<usize>>,
     /// [`crate::lower::GlEntry::uniforms`].
     uniforms: &'a [(naga::Handle<naga::GlobalVariable>, String)],
-    /// The names naga's namer is given for `module`, for both profiles
-    /// (only for an entry point with inputs or outputs to rename).
-    labels: Option<glsl_names::NamerLabels<'a>>,
+    /// The GLSL name of every attribute, varying and colour output of the
+    /// compile: the same in every stage and profile.
+    varyings: &'a VaryingNames<'a>,
 }
 
 impl<'a> EntryModule<'a> {
-    pub fn new(lowered: &'a Lowered, ep: &EntryInterface) -> Result<EntryModule<'a>, Diagnostic> {
+    /// `varyings`: [`VaryingNames::of`] the compile.
+    pub fn new(lowered: &'a Lowered, ep: &EntryInterface, varyings: &'a VaryingNames<'a>) -> Result<EntryModule<'a>, Diagnostic> {
         let gl = lowered.gl.get(ep.index).ok_or_else(|| Diagnostic::bug(format!("entry point `{}` has no GL module", ep.name), None))?;
         let to_original = global_map(&gl.module, &lowered.gpu);
-        let labels = (!ep.inputs.is_empty() || !ep.outputs.is_empty()).then(|| glsl_names::NamerLabels::of(&gl.module));
-        Ok(EntryModule { module: &gl.module, info: &gl.info, to_original, uniforms: &gl.uniforms, labels })
+        Ok(EntryModule { module: &gl.module, info: &gl.info, to_original, uniforms: &gl.uniforms, varyings })
     }
 
     /// The GPU module's global index for a global of the GL module.
@@ -353,17 +383,6 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
     // ES 3.00 requires a location on each of several colour outputs; both
     // profiles keep them there, so that one manifest describes both.
     let mrt = ep.stage == naga::ShaderStage::Fragment && ep.outputs.len() > 1;
-    // Found only if some name has to be looked for in the text.
-    let structs = std::cell::OnceCell::new();
-    let taken = |n: &str| {
-        // Whether naga could have written `n`: if not (the usual case),
-        // the text need not be searched. GLSL 430 / ES 3.10 text is
-        // always searched (naga writes more builtins there).
-        let maybe = profile.binds_in_shader() || em.labels.as_ref().is_none_or(|l| l.may_be_taken(n));
-        let taken = maybe && names_a_variable(&out, structs.get_or_init(|| struct_bodies(&out)), n);
-        debug_assert!(maybe || !names_a_variable(&out, &struct_bodies(&out), n), "`{n}` is a variable of the GLSL text but not a name naga could have written");
-        taken
-    };
     let mut renames: Vec<(String, String)> = Vec::new();
     let mut unlocated: Vec<String> = Vec::new();
     for (vars, prefix, map, attribute_or_output) in [
@@ -380,11 +399,13 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
                     return Err(bug(format!("`{name}` has location {}, expected {}", loc.location, var.location)));
                 }
             }
-            // The same in every stage of a program: the lowering names what
-            // holds inputs and outputs inside the function apart (`in_`,
-            // `out_`), and the checker keeps top-level names unique and
-            // locals off them, so only reserved words are renamed.
-            let glsl = glsl_names::glsl_name(&var.name, taken);
+            // The same in every stage of a program (`VaryingNames`): the
+            // lowering names what holds inputs and outputs
+            // inside the function apart (`in_`, `out_`), and the checker
+            // keeps top-level names unique and locals off them, so only
+            // reserved words and names naga makes up are renamed.
+            let glsl = em.varyings.get(&var.name).ok_or_else(|| bug(format!("`{}` has no GLSL name", var.name)))?.to_string();
+            debug_assert!(!names_a_variable(&out, &struct_bodies(&out), &glsl), "`{glsl}` is a variable of the GLSL text but not a name naga could have written");
             // naga writes varyings without a location (they link by name).
             if attribute_or_output && !var.explicit_location && !mrt {
                 unlocated.push(glsl.clone());
@@ -419,15 +440,14 @@ fn is_location_name(id: &str, prefix: &str, location: u32) -> bool {
 
 /// Whether `name` is a variable (or function, or type) of the text: an
 /// identifier there that is not a struct member (declared in one of the
-/// `struct_bodies`, or read after a `.`).
+/// `struct_bodies`, or read after a `.`). Debug builds check every name
+/// given against the text with it.
 fn names_a_variable(src: &str, struct_bodies: &[Range<usize>], name: &str) -> bool {
     text::find_ident(src, name).any(|at| !src[..at].ends_with('.') && !struct_bodies.iter().any(|body| body.contains(&at)))
 }
 
 /// The byte ranges of the struct definitions of the text, from `struct`
 /// to the `};` that closes it (naga writes both at the start of a line).
-/// Found once per file: searching back from every occurrence of every name
-/// cost more than the names' own search.
 fn struct_bodies(src: &str) -> Vec<Range<usize>> {
     let b = src.as_bytes();
     let starts = src.starts_with("struct ").then_some(0).into_iter().chain(STRUCT.find_iter(b).map(|at| at + 1));

@@ -4,13 +4,18 @@
 //! GLSL 330 and GLSL ES 3.00 reserve their keywords, the words reserved for
 //! future use, the names of their builtin functions (a global of that name
 //! would hide the function) and every name starting with `gl_`. A source
-//! name that is one of those, or that another identifier of the file
-//! already uses, becomes the name followed by `_` (naga's own rule for the
-//! names it makes), then `_1`, `_2` ... until it is free. The manifest
-//! records every GLSL name (`glsl_name`), so a host never guesses.
+//! name that is one of those, or that naga could give to something else
+//! in a GL file of the compile ([`NamerLabels`]: what its namer makes of
+//! the modules' names, and the names it makes up, such as `loop_init`),
+//! becomes the name followed by `_` (naga's own rule for the names it
+//! makes), then `_1`, `_2` ... until it is free. The choice depends on the
+//! compile, not on one file, so both stages of a program give a varying
+//! the same name. The manifest records every GLSL name (`glsl_name`), so a
+//! host never guesses.
 
 /// Keywords, reserved words and builtin function names of GLSL 330 core and
-/// GLSL ES 3.00 (their specifications, sections 3.6 and 8).
+/// GLSL ES 3.00 (their specifications, sections 3.6 and 8), and the builtin
+/// functions of GLSL 4.30 / ES 3.10 naga writes.
 const RESERVED: &[&str] = &[
     // Keywords.
     "attribute", "const", "uniform", "varying", "layout", "centroid", "flat", "smooth", "noperspective", "break", "continue", "do", "for", "while",
@@ -44,6 +49,15 @@ const RESERVED: &[&str] = &[
     "texture2DLod", "texture3D", "texture3DProj", "texture3DLod", "textureCube", "textureCubeLod", "shadow1D", "shadow2D", "shadow1DProj",
     "shadow2DProj", "shadow1DLod", "shadow2DLod", "bitfieldExtract", "bitfieldInsert", "bitfieldReverse", "bitCount", "findLSB", "findMSB",
     "uaddCarry", "usubBorrow", "umulExtended", "imulExtended", "barrier", "memoryBarrier", "average", "main",
+    // Builtin functions of GLSL 4.30 / ES 3.10 (images, atomics, barriers)
+    // and of the extensions naga may use, which its text can call.
+    "imageLoad", "imageStore", "imageSize", "imageSamples", "imageAtomicAdd", "imageAtomicMin", "imageAtomicMax", "imageAtomicAnd",
+    "imageAtomicOr", "imageAtomicXor", "imageAtomicExchange", "imageAtomicCompSwap", "atomicAdd", "atomicMin", "atomicMax", "atomicAnd",
+    "atomicOr", "atomicXor", "atomicExchange", "atomicCompSwap", "atomicCounter", "atomicCounterIncrement", "atomicCounterDecrement",
+    "memoryBarrierAtomicCounter", "memoryBarrierBuffer", "memoryBarrierShared", "memoryBarrierImage", "groupMemoryBarrier",
+    "textureQueryLevels", "textureSamples", "textureGatherOffsets", "dFdxFine", "dFdyFine", "dFdxCoarse", "dFdyCoarse", "fwidthFine",
+    "fwidthCoarse", "interpolateAtCentroid", "interpolateAtSample", "interpolateAtOffset", "packDouble2x32", "unpackDouble2x32",
+    "EmitStreamVertex", "EndStreamPrimitive", "anyInvocation", "allInvocations", "allInvocationsEqual",
 ];
 
 /// Whether GLSL 330 or GLSL ES 3.00 cannot take `name` as an identifier.
@@ -71,87 +85,179 @@ pub fn glsl_name(source: &str, taken: impl Fn(&str) -> bool) -> String {
     (1u32..).map(|k| format!("{base}_{k}")).find(|n| free(n)).expect("a free name")
 }
 
-/// The names naga's namer is given when it writes a module (struct
-/// members aside: they live in their own namespace), as the namer keeps
-/// them: every identifier of naga's text that is no keyword, builtin or
-/// name of naga's own comes from one of these.
+/// What naga's GLSL writer can call anything in a set of GL modules: what
+/// its namer makes of each name the modules hold (struct members aside:
+/// they live in their own namespace), with its fallbacks for unnamed
+/// items, and the names the writer makes up itself. A varying's GLSL name
+/// is chosen against this, the same for every module of a compile, so
+/// that the stages of a program agree on it: a name naga takes in one
+/// stage only (`loop_init` where a loop needs one) is given up in all.
+#[derive(Default)]
 pub struct NamerLabels<'a> {
-    /// Each label without leading digits and trailing `_` (the namer drops
-    /// them), the namer's fallbacks for unnamed items among them.
-    bases: Vec<&'a str>,
-    /// Some label is one the namer rewrites further (a character other than
-    /// a letter, digit or `_`, or `__`): any name may be taken then.
-    rewritten: bool,
+    /// Each module's names as the namer keeps them (their bases: nearly
+    /// always the names themselves). The namer writes a base, the base
+    /// with `_` (after a final digit, or a keyword), then `_1`, `_2` ...
+    /// for the repeats in one module.
+    modules: Vec<Vec<std::borrow::Cow<'a, str>>>,
+    /// The most loops one module has: the writer names each loop's
+    /// first-iteration flag `loop_init`, numbered as any name.
+    loops: u32,
 }
 
 impl<'a> NamerLabels<'a> {
-    pub fn of(module: &'a naga::Module) -> NamerLabels<'a> {
+    /// Adds the names of `module`.
+    pub fn add_module(&mut self, module: &'a naga::Module) {
         let functions = || module.functions.iter().map(|(_, f)| f).chain(module.entry_points.iter().map(|e| &e.function));
         let count = NAMER_FALLBACKS.len()
             + module.types.len()
             + module.constants.len()
             + module.overrides.len()
             + module.global_variables.len()
-            + 2 * module.entry_points.len()
+            + module.entry_points.len()
             + functions().map(|f| 1 + f.arguments.len() + f.local_variables.len() + f.named_expressions.len()).sum::<usize>();
-        let mut labels = NamerLabels { bases: Vec::with_capacity(count), rewritten: false };
-        labels.bases.extend_from_slice(NAMER_FALLBACKS);
-        let mut add = |n: Option<&'a str>| {
-            let Some(n) = n else { return };
-            let base = n.trim_start_matches(|c: char| c.is_ascii_digit()).trim_end_matches('_');
-            let b = base.as_bytes();
-            if b.is_empty() || !b.iter().all(|&c| c.is_ascii_alphanumeric() || c == b'_') || b.windows(2).any(|w| w == b"__") {
-                labels.rewritten = true;
-            }
-            labels.bases.push(base);
-        };
-        module.types.iter().for_each(|(_, t)| add(t.name.as_deref()));
-        module.constants.iter().for_each(|(_, c)| add(c.name.as_deref()));
-        module.overrides.iter().for_each(|(_, o)| add(o.name.as_deref()));
-        module.global_variables.iter().for_each(|(_, g)| add(g.name.as_deref()));
-        module.entry_points.iter().for_each(|e| add(Some(&e.name)));
+        let mut bases = Vec::with_capacity(count);
+        let mut add = |n: &'a str| bases.push(namer_base(n));
+        NAMER_FALLBACKS.iter().for_each(|n| add(n));
+        module.types.iter().filter_map(|(_, t)| t.name.as_deref()).for_each(&mut add);
+        module.constants.iter().filter_map(|(_, c)| c.name.as_deref()).for_each(&mut add);
+        module.overrides.iter().filter_map(|(_, o)| o.name.as_deref()).for_each(&mut add);
+        module.global_variables.iter().filter_map(|(_, g)| g.name.as_deref()).for_each(&mut add);
+        module.entry_points.iter().for_each(|e| add(&e.name));
+        let mut loops = 0;
         for f in functions() {
-            add(f.name.as_deref());
-            f.arguments.iter().for_each(|a| add(a.name.as_deref()));
-            f.local_variables.iter().for_each(|(_, l)| add(l.name.as_deref()));
-            f.named_expressions.values().for_each(|n| add(Some(n)));
+            f.name.as_deref().into_iter().for_each(&mut add);
+            f.arguments.iter().filter_map(|a| a.name.as_deref()).for_each(&mut add);
+            f.local_variables.iter().filter_map(|(_, l)| l.name.as_deref()).for_each(&mut add);
+            f.named_expressions.values().for_each(|n| add(n));
+            loops += count_loops(&f.body);
         }
-        labels
+        self.modules.push(bases);
+        self.loops = self.loops.max(loops);
     }
 
-    /// Whether naga's GLSL text could hold the identifier `name` outside
-    /// struct members: a name naga makes up, a uniform block
-    /// (`<type>_block_<N><stage>`), or what its namer makes of a label (its
-    /// base, the base and `_` after a final digit or a keyword, or the
-    /// base, `_` and a number for a repeat; a reserved prefix, `gl_` or
-    /// `_group`, makes it `gen_...`). When this is false the text need not
-    /// be searched for `name`; when it is true the text says.
-    pub fn may_be_taken(&self, name: &str) -> bool {
-        let Some(&first) = name.as_bytes().first() else { return true };
-        // (`windows`, not `contains`: a substring search builds a searcher first.)
-        if self.rewritten || MADE_UP_PREFIXES.iter().any(|p| p.as_bytes()[0] == first && name.starts_with(p)) || name.as_bytes().windows(7).any(|w| w == b"_block_") {
+    /// How many names of one module at most have namer base `base`.
+    fn count(&self, base: &str) -> u32 {
+        let loops = if base == "loop_init" { self.loops } else { 0 };
+        let named = self.modules.iter().map(|m| m.iter().filter(|b| *b == base).count() as u32).max().unwrap_or(0);
+        loops + named
+    }
+
+    /// Whether naga's GLSL text for some module added could hold the
+    /// identifier `name` outside struct members (keywords and builtins are
+    /// [`is_reserved`]'s). The set is finite, so [`glsl_name`] ends.
+    pub fn taken(&self, name: &str) -> bool {
+        if made_up(name) || self.count(name) > 0 || name.strip_suffix('_').is_some_and(|b| self.count(b) > 0) {
             return true;
         }
-        // The bases the namer could have made `name` from.
-        let bare = name.strip_suffix('_');
-        let numbered = name.rfind('_').filter(|&at| at + 1 < name.len() && name[at + 1..].bytes().all(|b| b.is_ascii_digit())).map(|at| &name[..at]);
-        self.bases.iter().any(|&l| l == name || Some(l) == bare || Some(l) == numbered)
+        // `BASE_N`, N from 1 to the repeats (the namer's numbering).
+        let Some(at) = name.rfind('_') else { return false };
+        let digits = &name[at + 1..];
+        let repeat = (!digits.is_empty() && !digits.starts_with('0') && digits.bytes().all(|b| b.is_ascii_digit())).then(|| digits.parse::<u32>().ok()).flatten();
+        repeat.is_some_and(|n| n < self.count(&name[..at]))
     }
 }
 
-/// What naga's namer calls an unnamed type, function, argument, local,
-/// global or entry point result (an unnamed constant is `const_...`).
-const NAMER_FALLBACKS: &[&str] = &["type", "VertexOutput", "FragmentOutput", "ComputeOutput", "function", "param", "local", "global"];
+/// The loops in `block`, however nested.
+fn count_loops(block: &naga::Block) -> u32 {
+    use naga::Statement as S;
+    block
+        .iter()
+        .map(|s| match s {
+            S::Block(b) => count_loops(b),
+            S::If { accept, reject, .. } => count_loops(accept) + count_loops(reject),
+            S::Switch { cases, .. } => cases.iter().map(|c| count_loops(&c.body)).sum(),
+            S::Loop { body, continuing, .. } => 1 + count_loops(body) + count_loops(continuing),
+            _ => 0,
+        })
+        .sum()
+}
 
-/// Prefixes of the identifiers naga's GLSL writer makes up (`_e12`,
-/// `_group_0_binding_1_fs`, `_vs2fs_location0`, `loop_init`, `naga_modf`,
-/// `gen_gl_Position`, `const_float`) and of GLSL builtin function families
-/// beyond 330 / ES 3.00 that `RESERVED` leaves out (extensions, GLSL 4.x).
-const MADE_UP_PREFIXES: &[&str] = &[
-    "_", "gl_", "gen_", "naga_", "const_", "loop_init", "image", "atomic", "memoryBarrier", "groupMemoryBarrier", "subgroup", "interpolateAt",
-    "textureQuery", "textureSamples", "textureGatherOffsets", "dFd", "fwidth", "anyInvocation", "allInvocation", "packDouble", "unpackDouble",
-    "EmitStream", "EndStream", "bitfield", "find", "uadd", "usub", "umul", "imul", "bitCount",
-];
+/// What naga's namer keeps of a name: leading digits and trailing `_`
+/// dropped, `:<>,` made `_`, any other character not a letter, digit or
+/// `_` written `uXXXX_`, runs of `_` made one, `unnamed` for nothing left,
+/// and `gen_` before a prefix GLSL reserves (`gl_`, `_group`,
+/// `_immediates_binding_`).
+fn namer_base(name: &str) -> std::borrow::Cow<'_, str> {
+    use std::borrow::Cow;
+    // Nearly every name is kept as it is: one pass over its bytes says so.
+    let b = name.as_bytes();
+    let mut kept = !b.is_empty() && !b[0].is_ascii_digit() && b[b.len() - 1] != b'_' && !name.starts_with("gl_") && !name.starts_with("_group") && !name.starts_with("_immediates_binding_");
+    let mut after_underscore = false;
+    for &c in b {
+        if !kept {
+            break;
+        }
+        kept = c.is_ascii_alphanumeric() || (c == b'_' && !after_underscore);
+        after_underscore = c == b'_';
+    }
+    if kept {
+        return Cow::Borrowed(name);
+    }
+    let trimmed = name.trim_start_matches(|c: char| c.is_numeric()).trim_end_matches('_');
+    let plain = !trimmed.is_empty() && !trimmed.contains("__") && trimmed.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_');
+    let base: Cow<'_, str> = if plain {
+        Cow::Borrowed(trimmed)
+    } else {
+        let mut out = String::new();
+        for c in trimmed.chars() {
+            let c = if matches!(c, ':' | '<' | '>' | ',') { '_' } else { c };
+            let after_underscore = out.ends_with('_');
+            if c == '_' && after_underscore {
+                continue;
+            }
+            if c.is_ascii_alphanumeric() || c == '_' {
+                out.push(c);
+            } else {
+                if !out.is_empty() && !after_underscore {
+                    out.push('_');
+                }
+                out.push_str(&format!("u{:04x}_", c as u32));
+            }
+        }
+        let len = out.trim_end_matches('_').len();
+        out.truncate(len);
+        if out.is_empty() {
+            out.push_str("unnamed");
+        }
+        Cow::Owned(out)
+    };
+    if ["gl_", "_group", "_immediates_binding_"].iter().any(|p| base.starts_with(p)) {
+        return Cow::Owned(["gen_", &base].concat());
+    }
+    base
+}
+
+/// What naga's namer calls an unnamed type, function, argument, local,
+/// global or entry point result.
+const NAMER_FALLBACKS: &[&str] = &["type", "VertexOutput", "FragmentOutput", "ComputeOutput", "function", "param", "local", "global", "member"];
+
+/// The identifiers naga's GLSL writer makes up outside its namer: `_e12`
+/// (an expression's value, `_e12_clamped_lod` its clamped level),
+/// `_tmp_return`, `_group_0_binding_1_fs`, `_vs2fs_location0` and the other
+/// interface names, `naga_modf` / `naga_frexp`, `const_...` (an unnamed
+/// constant) and uniform blocks `<type>_block_<N><stage>`.
+fn made_up(name: &str) -> bool {
+    // (No identifier is empty.)
+    if name.is_empty() {
+        return true;
+    }
+    let digits = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
+    if let Some(rest) = name.strip_prefix("_e") {
+        return digits(rest.strip_suffix("_clamped_lod").unwrap_or(rest));
+    }
+    if ["_p2vs_location", "_vs2fs_location", "_fs2p_location"].iter().any(|p| name.strip_prefix(p).is_some_and(digits)) {
+        return true;
+    }
+    if name == "_tmp_return" || name.starts_with("_group_") || name.starts_with("_immediates_binding_") || name.starts_with("const_") || name == "naga_modf" || name == "naga_frexp" {
+        return true;
+    }
+    // `<type>_block_<N><stage>`.
+    name.rfind("_block_").is_some_and(|at| {
+        let rest = &name[at + "_block_".len()..];
+        let stage = ["Vertex", "Fragment", "Compute"].iter().find_map(|s| rest.strip_suffix(s));
+        stage.is_some_and(digits)
+    })
+}
 
 /// The GLSL spelling of a type of a module (`mat3x2`, `bvec2`, `float[9]`,
 /// `Light[4]`), as a host reads it to choose a `glUniform*` call.
@@ -212,32 +318,39 @@ mod tests {
     }
 
     #[test]
-    fn names_the_namer_could_write_are_looked_for() {
-        let labels = |names: &[&str]| {
-            let mut module = naga::Module::default();
-            for n in names {
-                module.constants.append(naga::Constant { name: Some(n.to_string()), ty: module.types.insert(naga::Type { name: None, inner: naga::TypeInner::Scalar(naga::Scalar::F32) }, naga::Span::UNDEFINED), init: module.global_expressions.append(naga::Expression::Literal(naga::Literal::F32(0.0)), naga::Span::UNDEFINED) }, naga::Span::UNDEFINED);
-            }
-            module
-        };
-        let module = labels(&["v", "in_a_pos", "lit1", "world", "step_", "gl_Position"]);
-        let l = NamerLabels::of(&module);
-        // What the namer makes of a label: its base, with `_`, with `_N`.
-        assert!(l.may_be_taken("world") && l.may_be_taken("world_") && l.may_be_taken("world_2") && l.may_be_taken("lit1_"));
-        assert!(l.may_be_taken("step") && l.may_be_taken("step_"), "a final `_` is dropped, then added back for a keyword");
-        assert!(l.may_be_taken("function") && l.may_be_taken("local_1"), "the namer's fallbacks for unnamed items");
-        // Not from `v`, `world` or `gl_Position` (which becomes `gen_gl_Position`): other names.
-        for free in ["v_world_pos", "worlds", "world_x", "world_2x", "a_pos", "Position"] {
-            assert!(!l.may_be_taken(free), "{free}");
+    fn names_naga_could_write_are_taken() {
+        let mut module = naga::Module::default();
+        let f32 = module.types.insert(naga::Type { name: None, inner: naga::TypeInner::Scalar(naga::Scalar::F32) }, naga::Span::UNDEFINED);
+        for n in ["v", "in_a_pos", "lit1", "world", "world", "step_", "gl_Position", "a::b"] {
+            let init = module.global_expressions.append(naga::Expression::Literal(naga::Literal::F32(0.0)), naga::Span::UNDEFINED);
+            module.constants.append(naga::Constant { name: Some(n.to_string()), ty: f32, init }, naga::Span::UNDEFINED);
         }
-        // naga's own names and builtins beyond GLSL 330 / ES 3.00.
-        for made_up in ["_e12", "loop_init_1", "gen_gl_Position", "naga_modf", "Uniforms_block_0Vertex", "imageLoad", "atomicAdd", "dFdxFine", "const_float", ""] {
-            assert!(l.may_be_taken(made_up), "{made_up}");
+        let mut l = NamerLabels::default();
+        l.add_module(&module);
+        // What the namer makes of a name: its base, with `_`, with `_N` for a repeat.
+        for taken in ["world", "world_", "world_1", "lit1", "lit1_", "step", "step_", "gen_gl_Position", "a_b", "function", "local_"] {
+            assert!(l.taken(taken), "{taken}");
         }
-        // A label the namer rewrites further makes every name one to look for.
-        for rewritten in ["u__x", "a-b"] {
-            let module = labels(&[rewritten]);
-            assert!(NamerLabels::of(&module).may_be_taken("anything"), "{rewritten}");
+        // Other names, and numbers beyond the repeats: what `glsl_name` falls back to.
+        for free in ["v_world_pos", "worlds", "world_x", "world_2", "world_01", "a_pos", "Position", "gl_Position_", "loop_init", "step_1"] {
+            assert!(!l.taken(free), "{free}");
         }
+        // naga's own names, exactly.
+        for made in ["_e12", "_e3_clamped_lod", "_tmp_return", "_vs2fs_location1", "_group_0_binding_1_fs", "naga_modf", "Uniforms_block_0Vertex", "const_float"] {
+            assert!(l.taken(made), "{made}");
+        }
+        for not_made in ["_e", "_ex", "_e1_", "_tmp_return_", "_vs2fs_location", "u_block_ubo", "Uniforms_block_0Vertex_"] {
+            assert!(!l.taken(not_made), "{not_made}");
+        }
+        // A loop's flag, once there is a loop.
+        let body = naga::Block::from_vec(vec![naga::Statement::Loop { body: naga::Block::new(), continuing: naga::Block::new(), break_if: None }]);
+        module.functions.append(naga::Function { body, ..Default::default() }, naga::Span::UNDEFINED);
+        let mut l = NamerLabels::default();
+        l.add_module(&module);
+        assert!(l.taken("loop_init") && l.taken("loop_init_") && !l.taken("loop_init_1"));
+        // `glsl_name` ends: every taken set is finite.
+        assert_eq!(glsl_name("loop_init", |n| l.taken(n)), "loop_init_1");
+        assert_eq!(glsl_name("world", |n| l.taken(n)), "world_2");
+        assert_eq!(namer_base("3x__y:z"), "x_y_z");
     }
 }

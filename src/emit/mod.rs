@@ -59,8 +59,9 @@ pub fn emit(lowered: &Lowered, stem: &str, source_name: &str, targets: &[Target]
     // GLSL: the names a GL host needs come from the GLSL writer itself, so
     // it runs (for GLSL 330) even when no GLSL target is requested.
     let mut glsl_names: Vec<glsl::EntryNames> = Vec::with_capacity(lowered.interface.entry_points.len());
+    let varyings = glsl::VaryingNames::of(lowered);
     for ep in &lowered.interface.entry_points {
-        let entry_module = glsl::EntryModule::new(lowered, ep)?;
+        let entry_module = glsl::EntryModule::new(lowered, ep, &varyings)?;
         let naming = if needs_430 { glsl::Profile::Desktop430 } else { glsl::Profile::Desktop330 };
         let (text, names) = glsl::write_entry_from(lowered, &entry_module, ep, naming)?;
         for (target, profile) in [(Target::Glsl430, glsl::Profile::Desktop430), (Target::Gles310, glsl::Profile::Es310)] {
@@ -101,6 +102,15 @@ pub fn emit(lowered: &Lowered, stem: &str, source_name: &str, targets: &[Target]
             });
         }
         glsl_names.push(names);
+    }
+    // GL links a program's varyings by name: both stages must use one.
+    for &(v, f) in &lowered.interface.links {
+        let (Some(vs), Some(fs)) = (glsl_names.get(v), glsl_names.get(f)) else { continue };
+        for (location, name) in &vs.outputs {
+            if fs.inputs.get(location).is_some_and(|other| other != name) {
+                return Err(Diagnostic::bug(format!("the varying at location {location} is `{name}` in the vertex GLSL and `{}` in the fragment GLSL", fs.inputs[location]), None));
+            }
+        }
     }
 
     if targets.contains(&Target::Wgsl) {

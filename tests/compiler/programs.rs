@@ -237,3 +237,46 @@ def fs {
     let e = first_error(varyings);
     assert!(e.contains("location 3") && e.contains("v_a") && e.contains("v_b"), "{e}");
 }
+
+/// A varying whose name naga gives to something of its own in one stage
+/// only (`loop_init`, the gate of a `for` loop, here in the fragment
+/// program; `gen_gl_Position` in every vertex program) is renamed the same
+/// way in both stages: GL links varyings by name.
+#[test]
+fn a_varying_has_one_glsl_name_in_every_stage() {
+    let src = "
+var @in @location = 0 a_pos : float2
+var @inout loop_init : float2
+var @inout gen_gl_Position : float
+var @out f_color : float4
+
+[vertex_program]
+def edge_vs {
+    loop_init = a_pos * 0.5 + 0.5
+    gen_gl_Position = a_pos.x
+    gl_Position = float4(a_pos, 0.0, 1.0)
+}
+
+[fragment_program]
+def edge_fs {
+    var acc = 0.0
+    for (k in range(0, 4)) {
+        acc += loop_init.x * float(k)
+    }
+    f_color = float4(acc, loop_init.y, gen_gl_Position, 1.0)
+}
+";
+    let c = compile("edge.das", src, &Options::default());
+    let r = ok(&c);
+    let (vs, fs) = (entry(&r.reflection, "edge_vs"), entry(&r.reflection, "edge_fs"));
+    assert_eq!(vs.outputs.len(), 2);
+    for out in &vs.outputs {
+        let input = fs.inputs.iter().find(|i| i.name == out.name).unwrap();
+        assert_eq!(out.glsl_name, input.glsl_name, "`{}` must have one GLSL name in both stages", out.name);
+        assert_ne!(out.glsl_name, out.name, "`{}` is also a name of naga's: renamed", out.name);
+        for (file, decl) in [("edge_vs.330.vert", "out"), ("edge_vs.300es.vert", "out"), ("edge_fs.330.frag", "in"), ("edge_fs.300es.frag", "in")] {
+            let text = std::str::from_utf8(&r.artifact(file).unwrap().contents).unwrap();
+            assert!(text.lines().any(|l| l.ends_with(&format!("{decl} {} {};", out.ty.replace("float2", "vec2"), out.glsl_name))), "{file} declares no `{decl} ... {};`:\n{text}", out.glsl_name);
+        }
+    }
+}
