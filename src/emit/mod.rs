@@ -103,12 +103,17 @@ pub fn emit(lowered: &Lowered, stem: &str, source_name: &str, targets: &[Target]
         }
         glsl_names.push(names);
     }
-    // GL links a program's varyings by name: both stages must use one.
+    // GL links a program's varyings by name: both ends of each must use
+    // one (compared per varying: two programs that share none may hold
+    // different ones at a location).
+    let eps = &lowered.interface.entry_points;
     for &(v, f) in &lowered.interface.links {
-        let (Some(vs), Some(fs)) = (glsl_names.get(v), glsl_names.get(f)) else { continue };
-        for (location, name) in &vs.outputs {
-            if fs.inputs.get(location).is_some_and(|other| other != name) {
-                return Err(Diagnostic::bug(format!("the varying at location {location} is `{name}` in the vertex GLSL and `{}` in the fragment GLSL", fs.inputs[location]), None));
+        let (Some(vs), Some(fs), Some(ve), Some(fe)) = (glsl_names.get(v), glsl_names.get(f), eps.get(v), eps.get(f)) else { continue };
+        for out in &ve.outputs {
+            let Some(input) = fe.inputs.iter().find(|i| i.name == out.name) else { continue };
+            let (a, b) = (vs.outputs.get(&out.location), fs.inputs.get(&input.location));
+            if a != b {
+                return Err(Diagnostic::bug(format!("varying `{}` is {a:?} in the vertex GLSL and {b:?} in the fragment GLSL", out.name), None));
             }
         }
     }

@@ -280,3 +280,32 @@ def edge_fs {
         }
     }
 }
+
+/// A vertex and a fragment program linked though they share no varying
+/// (each is the only one of its stage) may hold different varyings at
+/// one location: the GLSL names of the two ends are compared per varying,
+/// not per location (the fuzzer found this).
+#[test]
+fn programs_sharing_no_varying_compile() {
+    let src = "
+var @in @location = 0 a_pos : float3
+var @inout v_wpos : float3
+var @inout v_dir : float3
+var @out f_color : float4
+
+[vertex_program]
+def only_vs {
+    v_wpos = a_pos
+    gl_Position = float4(a_pos, 1.0)
+}
+
+[fragment_program]
+def only_fs {
+    f_color = float4(v_dir, 1.0)
+}
+";
+    let c = compile("apart.das", src, &Options::default());
+    let r = ok(&c);
+    let (vs, fs) = (entry(&r.reflection, "only_vs"), entry(&r.reflection, "only_fs"));
+    assert_eq!((vs.outputs[0].glsl_name.as_str(), fs.inputs[0].glsl_name.as_str()), ("v_wpos", "v_dir"));
+}
