@@ -400,10 +400,10 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
                 }
             }
             // The same in every stage of a program (`VaryingNames`): the
-            // lowering names what holds inputs and outputs
-            // inside the function apart (`in_`, `out_`), and the checker
-            // keeps top-level names unique and locals off them, so only
-            // reserved words and names naga makes up are renamed.
+            // lowering names what holds inputs and outputs inside the
+            // function apart (`in_`, `out_`), and the checker keeps
+            // top-level names unique and locals off them, so only reserved
+            // words and names naga makes up are renamed.
             let glsl = em.varyings.get(&var.name).ok_or_else(|| bug(format!("`{}` has no GLSL name", var.name)))?.to_string();
             debug_assert!(!names_a_variable(&out, &struct_bodies(&out), &glsl), "`{glsl}` is a variable of the GLSL text but not a name naga could have written");
             // naga writes varyings without a location (they link by name).

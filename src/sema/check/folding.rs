@@ -224,7 +224,9 @@ impl<'p> Folder<'p, '_> {
                     let v = self.expr(x);
                     match (v, &mut vals) {
                         (Some(v), Some(vs)) => {
-                            vs.reserve_exact(xs.len() - vs.len());
+                            if vs.is_empty() {
+                                vs.reserve_exact(xs.len());
+                            }
                             vs.push((v.into_owned(), x.ty.clone()));
                         }
                         (None, _) => vals = None,
