@@ -240,20 +240,23 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
         }
         placed.sort_unstable();
+        // Per scope, reused: the scope's globals, each once, with the
+        // location each gets; (location, global) taken, at most
+        // `MAX_LOCATIONS`.
+        let mut globals: Vec<(GlobalId, Option<u32>)> = Vec::new();
+        let mut taken: Vec<(u32, GlobalId)> = Vec::new();
         let mut start = 0;
         while start < placed.len() {
             let scope = placed[start].0;
             let end = start + placed[start..].iter().take_while(|p| p.0 == scope).count();
             let run = &placed[start..end];
-            // The scope's globals, each once, and the location each gets.
-            let mut globals: Vec<(GlobalId, Option<u32>)> = Vec::with_capacity(run.len());
+            globals.clear();
+            taken.clear();
             for &(_, g, _) in run {
                 if globals.last().is_none_or(|&(last, _)| last != g) {
                     globals.push((g, None));
                 }
             }
-            // (location, global): a scope holds at most `MAX_LOCATIONS`.
-            let mut taken: Vec<(u32, GlobalId)> = Vec::new();
             for (g, at) in globals.iter_mut() {
                 let g = *g;
                 let GlobalKind::Io { kind, location: Some(l) } = self.out.globals[g].kind else { continue };
@@ -322,14 +325,13 @@ impl<'a, 'd> Checker<'a, 'd> {
         };
         // Units written in the source: clashes.
         let mut reported: FxHashSet<(GlobalId, GlobalId)> = FxHashSet::default();
-        let mut taken: Vec<Vec<bool>> = vec![vec![false; 32]; scopes.len()];
+        // Per scope, bit `u` for each texture unit taken (units 0..32).
+        let mut taken: Vec<u32> = vec![0; scopes.len()];
         for (k, (what, samplers)) in scopes.iter().enumerate() {
             let explicit: Vec<GlobalId> = samplers.iter().copied().filter(|g| self.unit_spans.contains_key(g)).collect();
             for (i, &b) in explicit.iter().enumerate() {
                 let rb = range(b, &self.out.globals);
-                for u in rb.clone() {
-                    taken[k][u as usize] = true;
-                }
+                taken[k] |= unit_mask(rb.start as usize, rb.len());
                 for &a in &explicit[..i] {
                     let ra = range(a, &self.out.globals);
                     let Some(u) = rb.clone().find(|u| ra.contains(u)) else { continue };
@@ -354,20 +356,30 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
             let count = count.unwrap_or(1) as usize;
             let homes: Vec<usize> = (0..scopes.len()).filter(|&k| scopes[k].1.contains(&g)).collect();
-            let free = |u: usize| homes.iter().all(|&k| taken[k][u..u + count].iter().all(|t| !t));
+            let free = |u: usize| count <= 32 && homes.iter().all(|&k| taken[k] & unit_mask(u, count) == 0);
             let Some(unit) = (0..=32 - count.min(32)).find(|&u| free(u)) else {
-                let msg = if count > 1 { format!("no {count} consecutive free texture units left (at most 32)") } else { "no free texture unit left (at most 32)".to_string() };
+                let msg = match count {
+                    33.. => format!("`{}` needs {count} texture units; a program has at most 32", self.out.globals[g].name),
+                    2.. => format!("no {count} consecutive free texture units left (at most 32)"),
+                    _ => "no free texture unit left (at most 32)".to_string(),
+                };
                 self.diags.push(Diagnostic::error(msg, self.out.globals[g].span));
                 continue;
             };
             for &k in &homes {
-                taken[k][unit..unit + count].fill(true);
+                taken[k] |= unit_mask(unit, count);
             }
             if let GlobalKind::Sampler { texture_unit, .. } = &mut self.out.globals[g].kind {
                 *texture_unit = unit as u32;
             }
         }
     }
+}
+
+/// The bits of texture units `first..first + count` (within 0..32).
+fn unit_mask(first: usize, count: usize) -> u32 {
+    let bits = if count >= 32 { u32::MAX } else { (1u32 << count) - 1 };
+    bits.checked_shl(first as u32).unwrap_or(0)
 }
 
 /// `a`, `a and b`, `a, b and c`.
