@@ -194,26 +194,37 @@ fn flat_scalars(v: &ConstValue) -> Cow<'_, [ConstValue]> {
 }
 
 pub(crate) fn construct(ty: &Ty, vals: Vec<(ConstValue, Ty)>) -> Option<ConstValue> {
-    let flat: Vec<ConstValue> = vals.iter().flat_map(|v| scalars(&v.0)).collect();
+    if let (Ty::Matrix(c, r), [(m, Ty::Matrix(..))]) = (ty, vals.as_slice()) {
+        return Some(super::fold::matrix_from_matrix(m, *c, *r));
+    }
+    // Every scalar of the arguments in one buffer, converted in place: the
+    // folder constructs each constant vector of a shader this way.
+    let single = vals.len() == 1;
+    let mut flat: Vec<ConstValue> = Vec::with_capacity(vals.len());
+    for (v, _) in vals {
+        push_scalars(v, &mut flat);
+    }
+    let convert_all = |mut flat: Vec<ConstValue>, s: Scalar| -> Option<Vec<ConstValue>> {
+        for c in flat.iter_mut() {
+            *c = super::fold::convert(c, s)?;
+        }
+        Some(flat)
+    };
     match *ty {
-        Ty::Scalar(s) => (flat.len() == 1 && vals.len() == 1).then(|| super::fold::convert(&flat[0], s)).flatten(),
+        Ty::Scalar(s) => (flat.len() == 1 && single).then(|| super::fold::convert(&flat[0], s)).flatten(),
         Ty::Vector(s, n) => {
             let n = n as usize;
-            let comps: Vec<ConstValue> = if flat.len() == 1 {
-                vec![flat[0].clone(); n]
-            } else if vals.len() == 1 && flat.len() >= n {
-                flat[..n].to_vec()
-            } else if flat.len() == n {
-                flat
-            } else {
+            if flat.len() == 1 {
+                let c = super::fold::convert(&flat[0], s)?;
+                flat = vec![c; n];
+            } else if single && flat.len() >= n {
+                flat.truncate(n);
+            } else if flat.len() != n {
                 return None;
-            };
-            comps.iter().map(|c| super::fold::convert(c, s)).collect::<Option<Vec<_>>>().map(ConstValue::Composite)
+            }
+            convert_all(flat, s).map(ConstValue::Composite)
         }
         Ty::Matrix(c, r) => {
-            if let [(m, Ty::Matrix(..))] = vals.as_slice() {
-                return Some(super::fold::matrix_from_matrix(m, c, r));
-            }
             let (c, r) = (c as usize, r as usize);
             let flat: Vec<ConstValue> = if flat.len() == 1 {
                 (0..c * r).map(|i| if i / r == i % r { flat[0].clone() } else { ConstValue::Float(0.0) }).collect()
@@ -222,10 +233,18 @@ pub(crate) fn construct(ty: &Ty, vals: Vec<(ConstValue, Ty)>) -> Option<ConstVal
             } else {
                 return None;
             };
-            let flat = flat.iter().map(|x| super::fold::convert(x, Scalar::Float)).collect::<Option<Vec<_>>>()?;
+            let flat = convert_all(flat, Scalar::Float)?;
             Some(ConstValue::Composite(flat.chunks(r).map(|col| ConstValue::Composite(col.to_vec())).collect()))
         }
         _ => None,
+    }
+}
+
+/// Moves the scalars of `v` onto `out`, in order.
+fn push_scalars(v: ConstValue, out: &mut Vec<ConstValue>) {
+    match v {
+        ConstValue::Composite(cs) => cs.into_iter().for_each(|c| push_scalars(c, out)),
+        c => out.push(c),
     }
 }
 

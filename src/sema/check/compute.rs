@@ -263,8 +263,9 @@ impl<'a, 'd> Checker<'a, 'd> {
             self.compute_used(at, &format!("compute program `{name}`"));
         }
         for (&gid, &span) in &func.uses {
+            // Borrowed: `self.diags` is another field, and most uses are fine.
             let g = &self.out.globals[gid];
-            let gname = g.name.clone();
+            let gname = &g.name;
             match g.kind {
                 GlobalKind::Io { .. } if stage == naga::ShaderStage::Compute => {
                     let d = Diagnostic::error(format!("compute program `{name}` uses `{gname}`, an interface variable"), span)
@@ -285,14 +286,15 @@ impl<'a, 'd> Checker<'a, 'd> {
                 }
                 _ => {}
             }
-            let what = match self.out.globals[gid].kind {
+            let what = match g.kind {
                 GlobalKind::Storage { .. } => Some("storage buffer"),
                 GlobalKind::Image { .. } => Some("storage image"),
                 GlobalKind::Workgroup => Some("workgroup variable"),
                 _ => None,
             };
             if let Some(what) = what {
-                self.compute_used(span, &format!("{what} `{gname}`"));
+                let what = format!("{what} `{gname}`");
+                self.compute_used(span, &what);
             }
         }
     }

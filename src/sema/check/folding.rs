@@ -189,9 +189,6 @@ impl<'p> Folder<'p, '_> {
                     return None;
                 }
                 let vals: arrayvec::ArrayVec<Val<'p>, MAX_FOLDED_ARGS> = args.iter().map(|a| self.expr(a)).collect();
-                if b.is_texture() {
-                    return None;
-                }
                 // naga refuses a `clamp` whose constant bounds are reversed,
                 // whatever the value clamped.
                 if let (Builtin::Math(naga::MathFunction::Clamp), [_, Some(lo), Some(hi)]) = (b, &vals[..]) {
@@ -202,7 +199,7 @@ impl<'p> Folder<'p, '_> {
                 }
                 // Most calls have a run-time argument: done, with nothing
                 // more allocated.
-                if vals.iter().any(Option::is_none) {
+                if vals.iter().any(Option::is_none) || b.is_texture() {
                     return None;
                 }
                 let vals: Vec<Cow<'p, ConstValue>> = vals.into_iter().collect::<Option<_>>()?;
