@@ -280,20 +280,32 @@ impl Family {
 /// counts, and almost none goes over.
 #[derive(Default)]
 struct Use<'a> {
+    /// What is needed: the sum of what is added, or for locations, the
+    /// highest location used + 1 where that is more.
     count: u64,
+    sum: u64,
     items: Option<Vec<(u64, Span, &'a str)>>,
 }
 
 impl<'a> Use<'a> {
     fn new(keep_items: bool) -> Use<'a> {
-        Use { count: 0, items: keep_items.then(Vec::new) }
+        Use { count: 0, sum: 0, items: keep_items.then(Vec::new) }
     }
 
     fn add(&mut self, n: u64, span: Span, name: &'a str) {
-        self.count += n;
+        self.sum += n;
+        self.count = self.count.max(self.sum);
         if let Some(items) = &mut self.items {
             items.push((self.count, span, name));
         }
+    }
+
+    /// Adds `n` locations from `location` on: a location past the limit
+    /// does not exist on a device with the minimum, however few are used
+    /// (`@location = 16` is the 17th vertex attribute location).
+    fn add_at(&mut self, n: u64, location: u32, span: Span, name: &'a str) {
+        self.count = self.count.max(location as u64 + n);
+        self.add(n, span, name);
     }
 }
 
@@ -329,11 +341,13 @@ pub fn check<'a>(lowered: &'a Lowered, targets: &[Target], raised: &[(Limit, u64
             let used = itemised();
             let Some(&(_, span, name)) = used.items.iter().flatten().find(|(total, ..)| *total > allowed) else { return };
             let stated = if allowed == minimum { format!("the {minimum} that {} ({api})", family.promise()) } else { format!("the stated limit of {allowed}") };
-            diags.push(
-                Diagnostic::error(format!("{} uses {} {} in {}, over {stated}", whose(), used.count, limit.what(), family.target()), span)
-                    .with_label(format!("`{name}` goes over the limit"))
-                    .with_note(format!("to compile for devices with more, state their limit: `--limit {}=N`", limit.name())),
-            );
+            let mut d = Diagnostic::error(format!("{} uses {} {} in {}, over {stated}", whose(), used.count, limit.what(), family.target()), span)
+                .with_label(format!("`{name}` goes over the limit"));
+            if used.count > used.sum {
+                // Fewer are used than the limit: a location is past it.
+                d = d.with_note(format!("locations count from 0: with {allowed}, the last is {}", allowed.saturating_sub(1)));
+            }
+            diags.push(d.with_note(format!("to compile for devices with more, state their limit: `--limit {}=N`", limit.name())));
         };
         // What an entry point uses depends only on whether the family is
         // GL's: counted once for GLSL 330 and ES 3.00 together.
@@ -355,7 +369,7 @@ pub fn check<'a>(lowered: &'a Lowered, targets: &[Target], raised: &[(Limit, u64
             for (limit, single) in [(Limit::CombinedUniformBlocks, Limit::UniformBlocks), (Limit::CombinedTextureUnits, Limit::TextureUnits)] {
                 // Each of the stage's blocks or units counts one.
                 let count = |i: usize| per_entry[i].iter().find(|(l, _)| *l == single).map_or(0, |(_, u)| u.count);
-                let used = Use { count: count(v) + count(f), items: None };
+                let used = Use { count: count(v) + count(f), ..Use::default() };
                 let both = || {
                     let mut used = Use::new(true);
                     for ep in [ve, fe] {
@@ -398,21 +412,27 @@ fn entry_uses<'a>(lowered: &'a Lowered, ep: &'a EntryInterface, family: Family, 
     // At most 13 limits apply to an entry point.
     let mut out = Vec::with_capacity(13);
     let new = || Use::new(keep_items);
-    let io = |vars: &'a [crate::lower::IoVar]| {
+    let gl = family != Family::Wgpu;
+    // A location is a limit where it is declared: vertex attributes and
+    // colour outputs everywhere, varyings in WGSL/SPIR-V (GL matches
+    // them by name). One assigned is never past the count.
+    let io = |vars: &'a [crate::lower::IoVar], located: bool| {
         let mut u = new();
         for v in vars {
-            u.add(vectors(module, v.ty), v.span, &v.name);
+            match located && (v.explicit_location || !gl) {
+                true => u.add_at(vectors(module, v.ty), v.location, v.span, &v.name),
+                false => u.add(vectors(module, v.ty), v.span, &v.name),
+            }
         }
         u
     };
     if vertex {
-        out.push((Limit::VertexAttributes, io(&ep.inputs)));
-        out.push((Limit::Varyings, io(&ep.outputs)));
+        out.push((Limit::VertexAttributes, io(&ep.inputs, true)));
+        out.push((Limit::Varyings, io(&ep.outputs, !gl)));
     } else {
-        out.push((Limit::Varyings, io(&ep.inputs)));
-        out.push((Limit::ColorOutputs, io(&ep.outputs)));
+        out.push((Limit::Varyings, io(&ep.inputs, !gl)));
+        out.push((Limit::ColorOutputs, io(&ep.outputs, true)));
     }
-    let gl = family != Family::Wgpu;
     let blocks_in_gl = iface.gl_uniforms == GlUniforms::Blocks;
     let (mut blocks, mut block_size, mut buffers, mut buffer_size) = (new(), new(), new(), new());
     let (mut textures, mut samplers, mut groups) = (new(), new(), new());

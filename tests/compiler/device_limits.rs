@@ -152,3 +152,36 @@ fn a_program_over_the_combined_blocks_points_at_the_block_past_the_limit() {
     }
     assert!(compile(&src, &[Target::Glsl330], &[(Limit::UniformBlocks, 16), (Limit::CombinedUniformBlocks, 25)]).result.is_some());
 }
+
+#[test]
+fn a_location_past_the_limit_is_over_it_however_few_are_used() {
+    // One vertex attribute, at location 16: locations 0..15 exist.
+    let attribute = "var @in @location = 16 q : float4\n[vertex_program]\ndef vs { gl_Position = q }\n";
+    // One colour output at location 5: GLES 3.0 has draw buffers 0..3.
+    let output = "var @out @location = 5 c : float4\n[fragment_program]\ndef fs { c = float4(1.0) }\n";
+    // A varying at location 20: GL matches it by name, WebGPU has 0..15.
+    let varying = "var @inout @location = 20 v : float4\nvar @out f : float4\n[vertex_program]\ndef vs { v = float4(1.0); gl_Position = v }\n[fragment_program]\ndef fs { f = v }\n";
+    for t in each_target() {
+        let e = errors(&compile(attribute, &[t], &[]));
+        assert!(e.len() == 1 && e[0].starts_with("vertex entry point `vs` uses 17 vertex attribute locations in "), "{t:?}: {e:?}");
+        let e = errors(&compile(output, &[t], &[]));
+        match t {
+            Target::Gles300 => assert!(e.len() == 1 && e[0].starts_with("fragment entry point `fs` uses 6 colour outputs in GLSL ES 3.00"), "{t:?}: {e:?}"),
+            _ => assert!(e.is_empty(), "{t:?}: {e:?}"),
+        }
+        let e = errors(&compile(varying, &[t], &[]));
+        match t {
+            Target::Wgsl | Target::Spirv => assert!(e.len() == 2 && e.iter().all(|m| m.contains("uses 21 varying vectors in WGSL/SPIR-V")), "{t:?}: {e:?}"),
+            _ => assert!(e.is_empty(), "{t:?}: {e:?}"),
+        }
+    }
+    // The note says why so few are too many; a stated limit allows it.
+    let c = compile(attribute, &[Target::Glsl330], &[]);
+    assert!(c.diagnostics[0].notes.iter().any(|n| n.contains("locations count from 0: with 16, the last is 15")), "{:?}", c.diagnostics[0].notes);
+    assert!(compile(attribute, &[Target::Glsl330], &[(Limit::VertexAttributes, 17)]).result.is_some());
+    // The last location of each compiles everywhere.
+    let last = "var @in @location = 15 q : float4\n[vertex_program]\ndef vs { gl_Position = q }\n";
+    for t in each_target() {
+        assert!(compile(last, &[t], &[]).result.is_some(), "{t:?}");
+    }
+}
