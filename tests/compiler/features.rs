@@ -137,6 +137,8 @@ fn compute(add: &mut impl FnMut(&'static str, String)) {
 fn functions_and_data(add: &mut impl FnMut(&'static str, String)) {
     add("inferred-result", frag("def half_of(x : float) {\n    return x * 0.5\n}\ndef twice(x : float) => x * 2.0\ndef third(x : float) -> float {\n    return x / 3.0\n}\ndef nothing(x : float) : void {\n    return\n}", "    nothing(1.0)\n    f_color = float4(half_of(1.0), twice(0.25), third(1.5), 1.0)"));
     add("default-parameters", frag("def tone(x : float; gain : float = 2.0; bias : float3 = float3(0.1)) => x * gain + bias", "    f_color = float4(tone(0.5) + tone(0.5, 1.0) + tone(0.5, 1.0, float3(0.0)), 1.0)"));
+    add("named-arguments", frag("def tone(x : float = 1.0; gain : float = 2.0; bias : float3) => x * gain + bias\ndef tone(x : int) => float3(float(x))", "    f_color = float4(tone([bias = float3(0.1), x = 0.5]) + tone([bias = float3(0.0)]) + tone(1), 1.0)"));
+    add("named-arguments-unknown", frag("def tone(x : float; gain : float = 2.0) => x * gain", "    f_color = float4(tone([x = 0.5, gian = 1.0]))"));
     add("default-not-constant", frag("var @uniform u_g : float\ndef tone(x : float; gain : float = u_g) => x * gain", "    f_color = float4(tone(0.5))"));
     add("visibility-modifiers", frag("struct private S {\n    a : float\n}\nlet private K = 0.5\nenum private E {\n    one\n}\ndef private f(s : S) : float {\n    return s.a * K\n}\ndef public g(x : float) => x", "    f_color = float4(g(f(S(1.0))))"));
     add("var-parameters", frag("def shrink(var x : float) : float {\n    x *= 0.5\n    return x\n}", "    let a = 1.0\n    f_color = float4(shrink(a), a, 0.0, 1.0)"));
@@ -165,6 +167,8 @@ const NEEDLES_FUNCTIONS_AND_DATA: &[(&str, Target, &str, &str, bool)] = &[
     ("overloads", Target::Glsl330, ".330.frag", "float luma_float3_(vec3 c)", true),
     ("overloads", Target::Wgsl, ".wgsl", "fn luma_float4_(", true),
     ("default-parameters", Target::Glsl330, ".330.frag", "tone(0.5, 2.0, vec3(0.1))", true),
+    ("named-arguments", Target::Glsl330, ".330.frag", "tone_float_float_float3_(0.5, 2.0, vec3(0.1))", true),
+    ("named-arguments", Target::Wgsl, ".wgsl", "tone_float_float_float3_(1f, 2f, vec3(0f))", true),
     ("enums", Target::Wgsl, ".wgsl", "i32", true),
 ];
 

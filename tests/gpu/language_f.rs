@@ -1,9 +1,9 @@
 //! Functions and data as daslang writes them, run on every consumer
 //! (`programs::assert_all_hold`): results inferred from `return`, default
-//! values, `var` and `var p : T&` parameters (through the temporaries the
-//! lowering adds for fields, elements and repeated arguments), overloads,
-//! pipes, postfix `if`, `with`, enumerations, construction by field name
-//! and `for` over arrays and several sources. Every input depends on `z`
+//! values, arguments by name, `var` and `var p : T&` parameters (through
+//! the temporaries the lowering adds for fields, elements and repeated
+//! arguments), overloads, pipes, postfix `if`, `with`, enumerations,
+//! construction by field name and `for` over arrays and several sources. Every input depends on `z`
 //! or `fz` (zero at run time), so the device computes the values.
 
 use crate::programs::assert_all_hold;
@@ -65,6 +65,8 @@ def Ray(from, to : float3) : Ray {
             "third(9.0 + fz) == 3.0",
             // Defaults filled in from the right.
             "tone(1.0 + fz) == 2.25 && tone(1.0 + fz, 3.0) == 3.25 && tone(1.0 + fz, 3.0, fz) == 3.0",
+            // By name, in any order; a default between the values given.
+            "tone([bias = fz, x = 1.0 + fz]) == 2.0 && tone([gain = 3.0, x = 1.0 + fz]) == 3.25",
             // A `var` parameter is the callee's copy.
             "shrink(4.0 + fz) == 3.0 && keep(4.0 + fz) == 4.0",
             // The argument types pick the overload.

@@ -248,6 +248,122 @@ impl<'a, 'd> Checker<'a, 'd> {
         format!("{}({})", decl.name.name, ps.join("; "))
     }
 
+    /// `f([a = x, b = y])`: daslang's call by parameter name. Each value
+    /// goes to the parameter of its name, in any order; the parameters
+    /// left out take their default values, wherever they are. Of several
+    /// overloads, the one whose parameter names and types the values fit.
+    pub(super) fn check_call_by_name(&mut self, cx: &mut FnCtx<'a>, callee: &'a ast::Ident, items: &'a [ast::Expr], span: Span) -> Expr {
+        let name = callee.name.as_str();
+        let Some(decls) = self.funcs.get(name).cloned() else {
+            let what = if self.structs.contains_key(name) {
+                format!("`{name}` is a struct: construct it as `{name}(field = value, ...)`")
+            } else if builtins::is_builtin(name) || Ty::from_builtin_name(name).is_some() {
+                format!("`{name}` is a builtin, which takes its arguments by position")
+            } else {
+                format!("`{name}` is not a function of this program")
+            };
+            self.diags.push(Diagnostic::error(format!("arguments by name (`{name}([a = ...])`) call a function; {what}"), callee.span));
+            return err_expr(span);
+        };
+        // The values, each checked once, with their names.
+        let mut given: Vec<(&'a ast::Ident, Expr)> = Vec::with_capacity(items.len());
+        for a in items {
+            let ast::ExprKind::Named(pname, value) = &a.kind else { unreachable!("checked by the caller") };
+            if let Some((_, prev)) = given.iter().find(|(n, _)| n.name == pname.name) {
+                let d = Diagnostic::error(format!("argument `{}` is given twice", pname.name), pname.span).with_secondary(prev.span, "first given here");
+                self.diags.push(d);
+                return err_expr(span);
+            }
+            let x = self.check_expr(cx, value);
+            if x.ty.is_error() {
+                return err_expr(span);
+            }
+            given.push((pname, x));
+        }
+        // The overloads the names and types fit: each name a parameter of
+        // the value's type, each parameter left out one with a default.
+        let mut fitting = Vec::new();
+        for &d in &decls {
+            let Some(sig) = self.signature(d) else { return err_expr(span) };
+            let params = &self.fn_decls[d].params;
+            let names_fit = given.iter().all(|(n, x)| params.iter().zip(&sig.params).any(|(p, t)| p.name.name == n.name && *t == x.ty));
+            let rest_default = params.iter().all(|p| p.default.is_some() || given.iter().any(|(n, _)| n.name == p.name.name));
+            if names_fit && rest_default {
+                fitting.push(d);
+            }
+        }
+        let d = match fitting.as_slice() {
+            [one] => *one,
+            [] if decls.len() == 1 => {
+                let d = decls[0];
+                let params = &self.fn_decls[d].params;
+                let sig = self.signature(d).expect("checked above");
+                // What does not fit: an unknown name, a type, a parameter left out.
+                for (n, x) in &given {
+                    match params.iter().position(|p| p.name.name == n.name) {
+                        None => {
+                            let names: Vec<&str> = params.iter().map(|p| p.name.name.as_str()).collect();
+                            let mut e = Diagnostic::error(format!("`{name}` has no parameter `{}`", n.name), n.span);
+                            e = match suggest(&n.name, names.iter().copied()) {
+                                Some(s) => e.with_note(format!("help: did you mean `{s}`?")),
+                                None => e.with_note(format!("its parameters are: {}", names.join(", "))),
+                            };
+                            self.diags.push(e.with_secondary(self.fn_decls[d].name.span, "defined here"));
+                            return err_expr(span);
+                        }
+                        Some(i) if sig.params[i] != x.ty => {
+                            let e = Diagnostic::error(format!("type mismatch: parameter `{}` of `{name}` is `{}`, given `{}`", n.name, self.show(&sig.params[i]), self.show(&x.ty)), x.span);
+                            self.diags.push(e.with_secondary(params[i].span, "declared here"));
+                            return err_expr(span);
+                        }
+                        Some(_) => {}
+                    }
+                }
+                let missing: Vec<String> = params.iter().filter(|p| p.default.is_none() && !given.iter().any(|(n, _)| n.name == p.name.name)).map(|p| format!("`{}`", p.name.name)).collect();
+                let e = Diagnostic::error(format!("this call of `{name}` leaves out {}, which has no default value", missing.join(", ")), span)
+                    .with_note("help: give every parameter without a default value by name")
+                    .with_secondary(self.fn_decls[d].name.span, "defined here");
+                self.diags.push(e);
+                return err_expr(span);
+            }
+            [] => {
+                let shown: Vec<String> = given.iter().map(|(n, x)| format!("{} : {}", n.name, self.show(&x.ty))).collect();
+                let mut e = Diagnostic::error(format!("no overload of `{name}` takes the arguments [{}] by name", shown.join("; ")), span);
+                for &k in &decls {
+                    e = e.with_secondary(self.fn_decls[k].name.span, "an overload");
+                }
+                self.diags.push(e.with_note("an overload fits when each name is one of its parameters, of the value's type, and the parameters left out have default values"));
+                return err_expr(span);
+            }
+            several => {
+                let mut e = Diagnostic::error(format!("ambiguous call: {} overloads of `{name}` take these arguments by name", several.len()), span);
+                for &k in several {
+                    e = e.with_secondary(self.fn_decls[k].name.span, "this one");
+                }
+                self.diags.push(e.with_note("help: name more of the arguments, or remove an overload"));
+                return err_expr(span);
+            }
+        };
+        // In parameter order: the values given, the defaults elsewhere.
+        let sig = self.signature(d).expect("checked above");
+        let decl = self.fn_decls[d];
+        let mut xs = Vec::with_capacity(decl.params.len());
+        for (p, ty) in decl.params.iter().zip(&sig.params) {
+            match given.iter().position(|(n, _)| n.name == p.name.name) {
+                Some(k) => xs.push(given.swap_remove(k).1),
+                None => {
+                    let default = p.default.as_ref().expect("the overload fits: the parameters left out have defaults");
+                    match self.constant_value(default, Some(ty), "the default value") {
+                        Some(v) => xs.push(Expr { span, ..v }),
+                        None => return err_expr(span),
+                    }
+                }
+            }
+        }
+        // Not a struct's construction: `Err` is never returned.
+        self.check_helper_call(cx, callee, xs, span, false).unwrap_or_else(|_| err_expr(span))
+    }
+
     /// `S(a = x, b = y)`: the fields named take the values given, the others
     /// their initial values (`a : float = 1.0` in the struct), or zero.
     /// `S()` gives every field its initial value.
@@ -255,8 +371,11 @@ impl<'a, 'd> Checker<'a, 'd> {
         let name = callee.name.as_str();
         let Some(&sid) = self.structs.get(name) else {
             let what = if self.funcs.contains_key(name) || builtins::is_builtin(name) { "a function" } else { "not a struct" };
-            let d = Diagnostic::error(format!("`name = value` arguments construct a struct, and `{name}` is {what}"), callee.span)
-                .with_note("help: pass a function's arguments by position, in the order of its parameters");
+            let help = match what {
+                "a function" if !builtins::is_builtin(name) => format!("help: pass a function's arguments by position, or by name in brackets: `{name}([a = ..., b = ...])`"),
+                _ => "help: pass a function's arguments by position, in the order of its parameters".to_string(),
+            };
+            let d = Diagnostic::error(format!("`name = value` arguments construct a struct, and `{name}` is {what}"), callee.span).with_note(help);
             self.diags.push(d);
             return err_expr(span);
         };

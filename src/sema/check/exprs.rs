@@ -377,6 +377,12 @@ impl<'a, 'd> Checker<'a, 'd> {
 
     pub(super) fn check_call(&mut self, cx: &mut FnCtx<'a>, callee: &'a ast::Ident, args: &'a [ast::Expr], span: Span) -> Expr {
         let name = callee.name.as_str();
+        // Arguments by parameter name: `f([a = 1.0, b = v])`.
+        if let [ast::Expr { kind: ast::ExprKind::Array { elem: None, items }, .. }] = args {
+            if !items.is_empty() && items.iter().all(|a| matches!(a.kind, ast::ExprKind::Named(..))) {
+                return self.check_call_by_name(cx, callee, items, span);
+            }
+        }
         // Fields by name: a struct construction (`Light(k = 1.0)`).
         if args.iter().any(|a| matches!(a.kind, ast::ExprKind::Named(..))) {
             return self.check_named_construction(cx, callee, args, span);

@@ -191,6 +191,38 @@ impl<'m> Parser<'_, 'm> {
         Ok((items, end))
     }
 
+    /// `name = value, ...]` after a `[`: the arguments of a call by
+    /// parameter name.
+    #[cold]
+    #[inline(never)]
+    fn named_values(&mut self, opener: Token) -> PResult<(Vec<Expr>, Token)> {
+        self.nl_skip += 1;
+        self.open += 1;
+        let mut items = Vec::new();
+        let end = loop {
+            if let Some(c) = self.eat(P::RBracket) {
+                break c;
+            }
+            let t = self.peek();
+            if !(t.kind == TokKind::Ident && self.toks.get(self.pos + 1).is_some_and(|n| n.is(P::Eq))) {
+                self.err(t, "expected `name = value`: a call by parameter name names every argument".to_string(), "expected `name = value`");
+                return Err(());
+            }
+            self.bump();
+            self.bump(); // `=`
+            let value = self.expr()?;
+            let name = Ident { name: self.texts.name(t.span), span: t.span };
+            items.push(Expr { span: t.span.to(value.span), kind: ExprKind::Named(name, Box::new(value)) });
+            if self.eat(P::Comma).is_some() {
+                continue;
+            }
+            break self.expect_close(P::RBracket, opener, "',' or ")?;
+        };
+        self.nl_skip -= 1;
+        self.open -= 1;
+        Ok((items, end))
+    }
+
     #[cold]
     #[inline(never)]
     pub(super) fn error_pipe(&mut self, forward: bool, at: Span) {
@@ -214,7 +246,17 @@ impl<'m> Parser<'_, 'm> {
             }
             let t = self.peek();
             let named = t.kind == TokKind::Ident && self.toks.get(self.pos + 1).is_some_and(|n| n.is(P::Eq));
-            if named {
+            // `f([a = 1, b = 2])`: daslang's call by parameter name, one
+            // bracketed list of `name = value` (an array of them, which the
+            // checker reads as the call's arguments).
+            let by_name = t.is(P::LBracket)
+                && self.toks.get(self.pos + 1).is_some_and(|n| n.kind == TokKind::Ident)
+                && self.toks.get(self.pos + 2).is_some_and(|n| n.is(P::Eq));
+            if by_name {
+                self.bump();
+                let (values, close) = self.named_values(t)?;
+                items.push(Expr { span: t.span.to(close.span), kind: ExprKind::Array { elem: None, items: values } });
+            } else if named {
                 self.bump();
                 self.bump(); // `=`
                 let value = self.expr()?;

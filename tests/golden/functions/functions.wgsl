@@ -76,12 +76,13 @@ fn functions_fs(@location(0) v_uv_1: vec2<f32>) -> functions_fs_out {
     let _e17 = vignette(v_uv_1, 0.6f, 0.75f);
     let _e20 = vignette(v_uv_1, 0.2f, 0.75f);
     let _e24 = vignette(v_uv_1, 0.1f, 0.9f);
-    let v = ((_e17 * _e20) * _e24);
-    let _e28 = luma_float4_(vec4<f32>(_e14, 1f));
-    let _e29 = luma_float3_(_e14);
-    let g = (_e28 + _e29);
-    let _e35 = banded((g * 0.5f));
-    f_color = vec4<f32>((_e14 * v), _e35);
-    let _e38 = f_color;
-    return functions_fs_out(_e38);
+    let _e28 = vignette(v_uv_1, 0.6f, 1.2f);
+    let v = (((_e17 * _e20) * _e24) * _e28);
+    let _e32 = luma_float4_(vec4<f32>(_e14, 1f));
+    let _e33 = luma_float3_(_e14);
+    let g = (_e32 + _e33);
+    let _e39 = banded((g * 0.5f));
+    f_color = vec4<f32>((_e14 * v), _e39);
+    let _e42 = f_color;
+    return functions_fs_out(_e42);
 }
