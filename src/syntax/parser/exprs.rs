@@ -173,6 +173,13 @@ impl<'m> Parser<'_, 'm> {
 
     /// `( a, b, ... )` or `[ a, b, ... ]` after the opener was consumed.
     pub(super) fn list(&mut self, opener: Token, close: P) -> PResult<(Vec<Expr>, Token)> {
+        self.separated(opener, close, |p| p.expr())
+    }
+
+    /// Items parsed by `item`, separated by commas, up to `close` (a
+    /// trailing comma allowed), with newlines inside the brackets skipped.
+    #[inline(always)]
+    fn separated(&mut self, opener: Token, close: P, mut item: impl FnMut(&mut Self) -> PResult<Expr>) -> PResult<(Vec<Expr>, Token)> {
         self.nl_skip += 1;
         self.open += 1;
         let mut items = Vec::new();
@@ -180,7 +187,7 @@ impl<'m> Parser<'_, 'm> {
             if let Some(c) = self.eat(close) {
                 break c;
             }
-            items.push(self.expr()?);
+            items.push(item(self)?);
             if self.eat(P::Comma).is_some() {
                 continue;
             }
@@ -196,31 +203,28 @@ impl<'m> Parser<'_, 'm> {
     #[cold]
     #[inline(never)]
     fn named_values(&mut self, opener: Token) -> PResult<(Vec<Expr>, Token)> {
-        self.nl_skip += 1;
-        self.open += 1;
-        let mut items = Vec::new();
-        let end = loop {
-            if let Some(c) = self.eat(P::RBracket) {
-                break c;
-            }
-            let t = self.peek();
-            if !(t.kind == TokKind::Ident && self.toks.get(self.pos + 1).is_some_and(|n| n.is(P::Eq))) {
-                self.err(t, "expected `name = value`: a call by parameter name names every argument".to_string(), "expected `name = value`");
+        self.separated(opener, P::RBracket, |p| {
+            let t = p.peek();
+            if !p.named_at(p.pos) {
+                p.err(t, "expected `name = value`: a call by parameter name names every argument".to_string(), "expected `name = value`");
                 return Err(());
             }
-            self.bump();
-            self.bump(); // `=`
-            let value = self.expr()?;
-            let name = Ident { name: self.texts.name(t.span), span: t.span };
-            items.push(Expr { span: t.span.to(value.span), kind: ExprKind::Named(name, Box::new(value)) });
-            if self.eat(P::Comma).is_some() {
-                continue;
-            }
-            break self.expect_close(P::RBracket, opener, "',' or ")?;
-        };
-        self.nl_skip -= 1;
-        self.open -= 1;
-        Ok((items, end))
+            p.named_item(t)
+        })
+    }
+
+    /// Whether the tokens at `pos` are `name =`.
+    fn named_at(&self, pos: usize) -> bool {
+        self.toks.get(pos).is_some_and(|t| t.kind == TokKind::Ident) && self.toks.get(pos + 1).is_some_and(|n| n.is(P::Eq))
+    }
+
+    /// `name = value`, with `name` the next token `t`.
+    fn named_item(&mut self, t: Token) -> PResult<Expr> {
+        self.bump();
+        self.bump(); // `=`
+        let value = self.expr()?;
+        let name = Ident { name: self.texts.name(t.span), span: t.span };
+        Ok(Expr { span: t.span.to(value.span), kind: ExprKind::Named(name, Box::new(value)) })
     }
 
     #[cold]
@@ -237,42 +241,21 @@ impl<'m> Parser<'_, 'm> {
     /// `primary` small enough to be inlined into the operator parsers.
     #[inline(never)]
     pub(super) fn call_args(&mut self, opener: Token) -> PResult<(Vec<Expr>, Token)> {
-        self.nl_skip += 1;
-        self.open += 1;
-        let mut items = Vec::new();
-        let end = loop {
-            if let Some(c) = self.eat(P::RParen) {
-                break c;
-            }
-            let t = self.peek();
-            let named = t.kind == TokKind::Ident && self.toks.get(self.pos + 1).is_some_and(|n| n.is(P::Eq));
+        self.separated(opener, P::RParen, |p| {
+            let t = p.peek();
             // `f([a = 1, b = 2])`: daslang's call by parameter name, one
             // bracketed list of `name = value` (an array of them, which the
             // checker reads as the call's arguments).
-            let by_name = t.is(P::LBracket)
-                && self.toks.get(self.pos + 1).is_some_and(|n| n.kind == TokKind::Ident)
-                && self.toks.get(self.pos + 2).is_some_and(|n| n.is(P::Eq));
-            if by_name {
-                self.bump();
-                let (values, close) = self.named_values(t)?;
-                items.push(Expr { span: t.span.to(close.span), kind: ExprKind::Array { elem: None, items: values } });
-            } else if named {
-                self.bump();
-                self.bump(); // `=`
-                let value = self.expr()?;
-                let name = Ident { name: self.texts.name(t.span), span: t.span };
-                items.push(Expr { span: t.span.to(value.span), kind: ExprKind::Named(name, Box::new(value)) });
+            if t.is(P::LBracket) && p.named_at(p.pos + 1) {
+                p.bump();
+                let (values, close) = p.named_values(t)?;
+                Ok(Expr { span: t.span.to(close.span), kind: ExprKind::Array { elem: None, items: values } })
+            } else if p.named_at(p.pos) {
+                p.named_item(t)
             } else {
-                items.push(self.expr()?);
+                p.expr()
             }
-            if self.eat(P::Comma).is_some() {
-                continue;
-            }
-            break self.expect_close(P::RParen, opener, "',' or ")?;
-        };
-        self.nl_skip -= 1;
-        self.open -= 1;
-        Ok((items, end))
+        })
     }
 
     #[inline(always)]
