@@ -378,10 +378,21 @@ impl<'a, 'd> Checker<'a, 'd> {
     pub(super) fn check_call(&mut self, cx: &mut FnCtx<'a>, callee: &'a ast::Ident, args: &'a [ast::Expr], span: Span) -> Expr {
         let name = callee.name.as_str();
         // Arguments by parameter name: `f([a = 1.0, b = v])`.
-        if let [ast::Expr { kind: ast::ExprKind::Array { elem: None, items }, .. }] = args {
-            if !items.is_empty() && items.iter().all(|a| matches!(a.kind, ast::ExprKind::Named(..))) {
+        let by_name = |a: &'a ast::Expr| match &a.kind {
+            ast::ExprKind::Array { elem: None, items } if !items.is_empty() && items.iter().all(|a| matches!(a.kind, ast::ExprKind::Named(..))) => Some(items),
+            _ => None,
+        };
+        if let [one] = args {
+            if let Some(items) = by_name(one) {
                 return self.check_call_by_name(cx, callee, items, span);
             }
+        } else if let Some(list) = args.iter().find(|a| by_name(a).is_some()) {
+            // `x |> f([b = 1.0])`, `f(x, [b = 1.0])`.
+            let d = Diagnostic::error(format!("a call of `{name}` by parameter name gives all its arguments in the one list"), list.span)
+                .with_label("arguments by name")
+                .with_note("help: name the others too (a pipe passes its value by position): `f([a = x, b = 1.0])`");
+            self.diags.push(d);
+            return err_expr(span);
         }
         // Fields by name: a struct construction (`Light(k = 1.0)`).
         if args.iter().any(|a| matches!(a.kind, ast::ExprKind::Named(..))) {
