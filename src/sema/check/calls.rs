@@ -91,6 +91,11 @@ impl<'a, 'd> Checker<'a, 'd> {
         Some(x)
     }
 
+    /// A parameter's default value as the argument of a call at `span`.
+    fn default_argument(&mut self, default: &'a ast::Expr, ty: &Ty, span: Span) -> Option<Expr> {
+        self.constant_value(default, Some(ty), "the default value").map(|v| Expr { span, ..v })
+    }
+
     /// A call of helper `callee` with the checked arguments `xs`: the
     /// overload their types pick, with default values for the parameters
     /// left out. `Err(xs)` where no overload takes them and the name is a
@@ -138,8 +143,8 @@ impl<'a, 'd> Checker<'a, 'd> {
         for (i, p) in decl.params.iter().enumerate().skip(xs.len()) {
             let ty = self.out.functions[fid].locals[i].ty.clone();
             let default = p.default.as_ref().expect("the overload matched: the parameters left out have defaults");
-            match self.constant_value(default, Some(&ty), "the default value") {
-                Some(v) => xs.push(Expr { span, ..v }),
+            match self.default_argument(default, &ty, span) {
+                Some(v) => xs.push(v),
                 None => return Ok(err_expr(span)),
             }
         }
@@ -353,8 +358,8 @@ impl<'a, 'd> Checker<'a, 'd> {
                 Some(k) => xs.push(given.swap_remove(k).1),
                 None => {
                     let default = p.default.as_ref().expect("the overload fits: the parameters left out have defaults");
-                    match self.constant_value(default, Some(ty), "the default value") {
-                        Some(v) => xs.push(Expr { span, ..v }),
+                    match self.default_argument(default, ty, span) {
+                        Some(v) => xs.push(v),
                         None => return err_expr(span),
                     }
                 }
@@ -370,10 +375,11 @@ impl<'a, 'd> Checker<'a, 'd> {
     pub(super) fn check_named_construction(&mut self, cx: &mut FnCtx<'a>, callee: &'a ast::Ident, args: &'a [ast::Expr], span: Span) -> Expr {
         let name = callee.name.as_str();
         let Some(&sid) = self.structs.get(name) else {
-            let what = if self.funcs.contains_key(name) || builtins::is_builtin(name) { "a function" } else { "not a struct" };
-            let help = match what {
-                "a function" if !builtins::is_builtin(name) => format!("help: pass a function's arguments by position, or by name in brackets: `{name}([a = ..., b = ...])`"),
-                _ => "help: pass a function's arguments by position, in the order of its parameters".to_string(),
+            let (helper, builtin) = (self.funcs.contains_key(name), builtins::is_builtin(name));
+            let what = if helper || builtin { "a function" } else { "not a struct" };
+            let help = match helper && !builtin {
+                true => format!("help: pass a function's arguments by position, or by name in brackets: `{name}([a = ..., b = ...])`"),
+                false => "help: pass a function's arguments by position, in the order of its parameters".to_string(),
             };
             let d = Diagnostic::error(format!("`name = value` arguments construct a struct, and `{name}` is {what}"), callee.span).with_note(help);
             self.diags.push(d);
