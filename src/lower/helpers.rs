@@ -41,8 +41,9 @@ pub(super) fn lower_helper<'p>(m: &mut ModuleBuilder<'p>, f: &'p sema::Function,
     let mut b = FnBuilder::new(m, name, &f.locals, FnKind::Helper);
     b.vertex_lod = vertex_lod;
     let mut samplers = samplers.iter();
-    // Copies of `var` parameters, then the body.
-    let mut body = Block::new();
+    // Copies of `var` parameters, then the body, in a block sized for
+    // both (growing it costs reallocations in every helper).
+    let mut body = super::function::block_for(f.body.len() + f.params);
     for (i, l) in f.locals[..f.params].iter().enumerate() {
         let sampler = matches!(l.ty, Ty::Sampler(_)).then(|| *samplers.next().expect("one sampler per sampler parameter"));
         b.add_param(i, sampler, &mut body);

@@ -217,7 +217,18 @@ impl FnBuilder<'_, '_> {
 
     /// The value of `e` if it is (a part of) a loose uniform held in a
     /// buffer: loaded from the stored place and converted.
+    /// Asked of every expression lowered, so the common answer (not a
+    /// place at all, or no uniform buffer in the module) is inline.
+    #[inline]
     pub(super) fn uniform_buffer_value(&mut self, e: &Expr, block: &mut Block) -> Option<Handle<E>> {
+        if self.m.uniform_buffers.is_empty() || !matches!(e.kind, ExprKind::Global(_) | ExprKind::Field(..) | ExprKind::Index(..) | ExprKind::Swizzle(..)) {
+            return None;
+        }
+        self.uniform_buffer_place_value(e, block)
+    }
+
+    #[inline(never)]
+    fn uniform_buffer_place_value(&mut self, e: &Expr, block: &mut Block) -> Option<Handle<E>> {
         if !self.in_uniform_buffer(e) {
             return None;
         }
