@@ -310,8 +310,8 @@ pub struct EntryPoint {
     /// The body, with no parameters and no result.
     pub func: Function,
     /// The location of each `@in`, `@out` and `@inout` global this entry
-    /// point reads or writes.
-    pub locations: std::collections::BTreeMap<GlobalId, u32>,
+    /// point reads or writes, sorted by global (a few per entry point).
+    pub locations: Vec<(GlobalId, u32)>,
     /// A compute entry point's `local_size_x/y/z` (1 where not written);
     /// `[0; 3]` for the other stages.
     pub workgroup_size: [u32; 3],
@@ -323,7 +323,7 @@ pub struct EntryPoint {
 impl EntryPoint {
     /// The location of interface global `g` in this entry point.
     pub fn location(&self, g: GlobalId) -> u32 {
-        self.locations.get(&g).copied().unwrap_or(0)
+        self.locations.binary_search_by_key(&g, |&(g, _)| g).map_or(0, |i| self.locations[i].1)
     }
 }
 

@@ -316,7 +316,7 @@ pub type StructId = usize;
 /// Index of an enumeration in `sema::Program::enums`.
 pub type EnumId = u32;
 
-#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+#[derive(Debug, PartialEq, Eq, Hash)]
 pub enum Ty {
     Scalar(Scalar),
     /// 2, 3 or 4 components.
@@ -339,6 +339,38 @@ pub enum Ty {
     Void,
     /// Stands in after an error so one mistake does not cascade.
     Error,
+}
+
+/// Written out so that the common case, a type without a box, is a copy
+/// inlined where it happens (the derived clone is a call for every
+/// expression's type).
+impl Clone for Ty {
+    #[inline]
+    fn clone(&self) -> Ty {
+        match self {
+            Ty::Scalar(s) => Ty::Scalar(*s),
+            Ty::Vector(s, n) => Ty::Vector(*s, *n),
+            Ty::Matrix(c, r) => Ty::Matrix(*c, *r),
+            Ty::Struct(id) => Ty::Struct(*id),
+            Ty::Enum(id) => Ty::Enum(*id),
+            Ty::Sampler(k) => Ty::Sampler(*k),
+            Ty::Image(k) => Ty::Image(*k),
+            Ty::Void => Ty::Void,
+            Ty::Error => Ty::Error,
+            Ty::Array(..) | Ty::RuntimeArray(_) => self.clone_boxed(),
+        }
+    }
+}
+
+impl Ty {
+    #[inline(never)]
+    fn clone_boxed(&self) -> Ty {
+        match self {
+            Ty::Array(elem, n) => Ty::Array(elem.clone(), *n),
+            Ty::RuntimeArray(elem) => Ty::RuntimeArray(elem.clone()),
+            _ => unreachable!("only the boxed types"),
+        }
+    }
 }
 
 pub const FLOAT: Ty = Ty::Scalar(Scalar::Float);

@@ -34,7 +34,7 @@ const NOTE: &str = "its operands are constants, so it is evaluated when compilin
 /// Reports every constant subexpression of every checked function without
 /// a defined value.
 pub(super) fn check_program(p: &Program, diags: &mut Diagnostics) {
-    let mut f = Folder { consts: &p.consts, struct_names: p.struct_names(), lets: Vec::new(), locals: &[], diags };
+    let mut f = Folder { program: p, consts: &p.consts, lets: Vec::new(), locals: &[], diags };
     for func in p.functions.iter().chain(p.entry_points.iter().map(|e| &e.func)) {
         f.locals = &func.locals;
         f.lets.clear();
@@ -44,8 +44,9 @@ pub(super) fn check_program(p: &Program, diags: &mut Diagnostics) {
 }
 
 struct Folder<'p, 'd> {
+    /// For the struct names an error shows (looked up only then).
+    program: &'p Program,
     consts: &'p [Const],
-    struct_names: Vec<String>,
     /// The value of each `let` of the function initialised by a constant
     /// scalar: naga's writers put a literal bound by `let` in place of
     /// each use (`let x = 2147483647` then `x + 1` is written
@@ -264,7 +265,8 @@ impl<'p> Folder<'p, '_> {
                     _ => return None,
                 };
                 if !(0..len).contains(&k) {
-                    let shown = super::super::types::TyDisplay { ty: &x.ty, struct_names: &self.struct_names, enum_names: &[] }.to_string();
+                    let struct_names = self.program.struct_names();
+                    let shown = super::super::types::TyDisplay { ty: &x.ty, struct_names: &struct_names, enum_names: &[] }.to_string();
                     self.error(format!("index {k} is out of bounds for `{shown}` (length {len})"), i.span);
                     return None;
                 }

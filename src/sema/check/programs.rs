@@ -292,10 +292,13 @@ impl<'a, 'd> Checker<'a, 'd> {
             for &(_, g, e) in run {
                 let at = globals.binary_search_by_key(&g, |&(g, _)| g).ok().and_then(|i| globals[i].1);
                 if let Some(l) = at {
-                    self.out.entry_points[e].locations.insert(g, l);
+                    self.out.entry_points[e].locations.push((g, l));
                 }
             }
             start = end;
+        }
+        for ep in &mut self.out.entry_points {
+            ep.locations.sort_unstable();
         }
     }
 

@@ -32,7 +32,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             self.check_stage_rules(&name, stage, &func);
             self.check_compute_rules(decl, &name, stage, &func);
             let annotation = decl.annotations.iter().find(|a| matches!(a.name.name.as_str(), "vertex_program" | "fragment_program" | "compute_program")).map_or(decl.name.span, |a| a.span);
-            self.out.entry_points.push(EntryPoint { name, stage, func, locations: BTreeMap::new(), workgroup_size, annotation });
+            self.out.entry_points.push(EntryPoint { name, stage, func, locations: Vec::new(), workgroup_size, annotation });
         }
     }
 
