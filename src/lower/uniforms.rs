@@ -205,7 +205,10 @@ impl ModuleBuilder<'_> {
 }
 
 impl FnBuilder<'_, '_> {
-    /// Whether `e` is (a part of) a loose uniform held in a buffer.
+    /// Whether `e` is (a part of) a loose uniform held in a buffer. Asked
+    /// of every expression lowered: inline, so the common answer (not a
+    /// place) costs no call.
+    #[inline]
     fn in_uniform_buffer(&self, e: &Expr) -> bool {
         match &e.kind {
             ExprKind::Global(g) => self.global_slot(*g).is_none() && matches!(self.m.globals[*g], GlobalSlot::Packed { .. }),
@@ -217,23 +220,18 @@ impl FnBuilder<'_, '_> {
 
     /// The value of `e` if it is (a part of) a loose uniform held in a
     /// buffer: loaded from the stored place and converted.
-    /// Asked of every expression lowered, so the common answer (not a
-    /// place at all, or no uniform buffer in the module) is inline.
     #[inline]
     pub(super) fn uniform_buffer_value(&mut self, e: &Expr, block: &mut Block) -> Option<Handle<E>> {
-        if self.m.uniform_buffers.is_empty() || !matches!(e.kind, ExprKind::Global(_) | ExprKind::Field(..) | ExprKind::Index(..) | ExprKind::Swizzle(..)) {
+        if self.m.uniform_buffers.is_empty() || !self.in_uniform_buffer(e) {
             return None;
         }
-        self.uniform_buffer_place_value(e, block)
+        Some(self.load_from_uniform_buffer(e, block))
     }
 
     #[inline(never)]
-    fn uniform_buffer_place_value(&mut self, e: &Expr, block: &mut Block) -> Option<Handle<E>> {
-        if !self.in_uniform_buffer(e) {
-            return None;
-        }
+    fn load_from_uniform_buffer(&mut self, e: &Expr, block: &mut Block) -> Handle<E> {
         let (ptr, how) = self.stored_place(e, block);
-        Some(self.load_stored(ptr, &how, &e.ty, e.span))
+        self.load_stored(ptr, &how, &e.ty, e.span)
     }
 
     /// A pointer to where `e` (inside a loose uniform) is stored, and how.

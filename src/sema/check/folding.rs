@@ -34,7 +34,7 @@ const NOTE: &str = "its operands are constants, so it is evaluated when compilin
 /// Reports every constant subexpression of every checked function without
 /// a defined value.
 pub(super) fn check_program(p: &Program, diags: &mut Diagnostics) {
-    let mut f = Folder { program: p, consts: &p.consts, lets: Vec::new(), locals: &[], diags };
+    let mut f = Folder { program: p, lets: Vec::new(), locals: &[], diags };
     for func in p.functions.iter().chain(p.entry_points.iter().map(|e| &e.func)) {
         f.locals = &func.locals;
         f.lets.clear();
@@ -44,9 +44,9 @@ pub(super) fn check_program(p: &Program, diags: &mut Diagnostics) {
 }
 
 struct Folder<'p, 'd> {
-    /// For the struct names an error shows (looked up only then).
+    /// Its constants, and the struct names an error shows (looked up
+    /// only then).
     program: &'p Program,
-    consts: &'p [Const],
     /// The value of each `let` of the function initialised by a constant
     /// scalar: naga's writers put a literal bound by `let` in place of
     /// each use (`let x = 2147483647` then `x + 1` is written
@@ -124,7 +124,7 @@ impl<'p> Folder<'p, '_> {
             ExprKind::Int(v) => Some(Cow::Owned(ConstValue::Int(*v))),
             ExprKind::Uint(v) => Some(Cow::Owned(ConstValue::Uint(*v))),
             ExprKind::Bool(v) => Some(Cow::Owned(ConstValue::Bool(*v))),
-            ExprKind::Const(c) => Some(Cow::Borrowed(&self.consts[*c].value)),
+            ExprKind::Const(c) => Some(Cow::Borrowed(&self.program.consts[*c].value)),
             ExprKind::Local(l) => self.lets.get(*l).and_then(|v| v.clone()).map(Cow::Owned),
             // A zero value (an unset field of a construction by name).
             ExprKind::Global(_) | ExprKind::Zero => None,
