@@ -181,12 +181,13 @@ pub struct VaryingNames<'a> {
 impl<'a> VaryingNames<'a> {
     pub fn of(lowered: &'a Lowered) -> VaryingNames<'a> {
         let with_io = || lowered.interface.entry_points.iter().filter(|ep| !ep.inputs.is_empty() || !ep.outputs.is_empty());
-        let mut labels = glsl_names::NamerLabels::default();
+        let vars = || with_io().flat_map(|ep| ep.inputs.iter().chain(&ep.outputs));
+        let mut labels = glsl_names::NamerLabels::for_initials(vars().map(|v| v.name.as_str()));
         for gl in with_io().filter_map(|ep| lowered.gl.get(ep.index)) {
             labels.add_module(&gl.module);
         }
         let mut names: Vec<(&str, String)> = Vec::new();
-        for var in with_io().flat_map(|ep| ep.inputs.iter().chain(&ep.outputs)) {
+        for var in vars() {
             if !names.iter().any(|(n, _)| *n == var.name) {
                 names.push((&var.name, glsl_names::glsl_name(&var.name, |n| labels.taken(n))));
             }

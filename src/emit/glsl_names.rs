@@ -71,9 +71,7 @@ pub fn is_reserved(name: &str) -> bool {
 /// `_1`, `_2` ..., the first that is neither reserved nor `taken` (see the
 /// module docs).
 pub fn glsl_name(source: &str, taken: impl Fn(&str) -> bool) -> String {
-    // The checker keeps `gl_` names for builtins; a source name never
-    // starts so, but the rule must end for any name.
-    let base = if source.starts_with("gl_") { ["u", source].concat() } else { source.to_string() };
+    let base = glsl_base(source).into_owned();
     let free = |n: &str| !is_reserved(n) && !taken(n);
     if free(&base) {
         return base;
@@ -83,6 +81,18 @@ pub fn glsl_name(source: &str, taken: impl Fn(&str) -> bool) -> String {
         return under;
     }
     (1u32..).map(|k| format!("{base}_{k}")).find(|n| free(n)).expect("a free name")
+}
+
+/// The first name [`glsl_name`] tries for `source`, which every other it
+/// tries begins with.
+fn glsl_base(source: &str) -> std::borrow::Cow<'_, str> {
+    // The checker keeps `gl_` names for builtins; a source name never
+    // starts so, but the rule must end for any name.
+    if source.starts_with("gl_") {
+        ["u", source].concat().into()
+    } else {
+        source.into()
+    }
 }
 
 /// What naga's GLSL writer can call anything in a set of GL modules: what
@@ -102,9 +112,27 @@ pub struct NamerLabels<'a> {
     /// The most loops one module has: the writer names each loop's
     /// first-iteration flag `loop_init`, numbered as any name.
     loops: u32,
+    /// Where set ([`NamerLabels::for_initials`]), the first bytes of the
+    /// names that will be asked about: a base starting otherwise can never
+    /// be one of them, so it is not kept (a module holds hundreds of
+    /// names, a compile asks about a few).
+    initials: Option<Box<[bool; 256]>>,
 }
 
 impl<'a> NamerLabels<'a> {
+    /// Labels that answer [`NamerLabels::taken`] only for names whose
+    /// first byte is the first byte of one of `names`. Every name
+    /// [`glsl_name`] asks about for a source name starts as its base does.
+    pub fn for_initials<'n>(names: impl IntoIterator<Item = &'n str>) -> NamerLabels<'a> {
+        let mut initials = Box::new([false; 256]);
+        for n in names {
+            if let Some(&b) = glsl_base(n).as_bytes().first() {
+                initials[b as usize] = true;
+            }
+        }
+        NamerLabels { initials: Some(initials), ..Default::default() }
+    }
+
     /// Adds the names of `module`.
     pub fn add_module(&mut self, module: &'a naga::Module) {
         let functions = || module.functions.iter().map(|(_, f)| f).chain(module.entry_points.iter().map(|e| &e.function));
@@ -115,8 +143,24 @@ impl<'a> NamerLabels<'a> {
             + module.global_variables.len()
             + module.entry_points.len()
             + functions().map(|f| 1 + f.arguments.len() + f.local_variables.len() + f.named_expressions.len()).sum::<usize>();
-        let mut bases = Vec::with_capacity(count);
-        let mut add = |n: &'a str| bases.push(namer_base(n));
+        let mut bases = Vec::with_capacity(if self.initials.is_some() { 16 } else { count });
+        let initials = self.initials.as_deref();
+        let mut add = |n: &'a str| {
+            if let Some(initials) = initials {
+                // A name starting with a letter keeps it as the first byte
+                // of its base (`gl_` gains `gen_`, also a `g`).
+                let first = n.as_bytes().first().copied().unwrap_or(0);
+                if first.is_ascii_alphabetic() && !initials[first as usize] {
+                    return;
+                }
+                let base = namer_base(n);
+                if base.as_bytes().first().is_some_and(|&b| initials[b as usize]) {
+                    bases.push(base);
+                }
+            } else {
+                bases.push(namer_base(n));
+            }
+        };
         NAMER_FALLBACKS.iter().for_each(|n| add(n));
         module.types.iter().filter_map(|(_, t)| t.name.as_deref()).for_each(&mut add);
         module.constants.iter().filter_map(|(_, c)| c.name.as_deref()).for_each(&mut add);
@@ -146,6 +190,10 @@ impl<'a> NamerLabels<'a> {
     /// identifier `name` outside struct members (keywords and builtins are
     /// [`is_reserved`]'s). The set is finite, so [`glsl_name`] ends.
     pub fn taken(&self, name: &str) -> bool {
+        debug_assert!(
+            self.initials.as_ref().is_none_or(|i| name.as_bytes().first().is_some_and(|&b| i[b as usize])),
+            "`{name}` was not among the initials asked for"
+        );
         if made_up(name) || self.count(name) > 0 || name.strip_suffix('_').is_some_and(|b| self.count(b) > 0) {
             return true;
         }
@@ -341,6 +389,15 @@ mod tests {
         }
         for not_made in ["_e", "_ex", "_e1_", "_tmp_return_", "_vs2fs_location", "u_block_ubo", "Uniforms_block_0Vertex_"] {
             assert!(!l.taken(not_made), "{not_made}");
+        }
+        // Labels kept only for some initials answer as the full ones for
+        // every name starting so.
+        let mut some = NamerLabels::for_initials(["world", "step", "a_pos", "gl_x", "loop"]);
+        some.add_module(&module);
+        for name in ["world", "world_", "world_1", "world_2", "worlds", "step", "step_", "step_1", "a_b", "a_pos", "ul", "uv", "local_", "lit1"] {
+            if ["w", "s", "a", "u", "l"].iter().any(|i| name.starts_with(i)) {
+                assert_eq!(some.taken(name), l.taken(name), "{name}");
+            }
         }
         // A loop's flag, once there is a loop.
         let body = naga::Block::from_vec(vec![naga::Statement::Loop { body: naga::Block::new(), continuing: naga::Block::new(), break_if: None }]);
