@@ -126,9 +126,9 @@ impl<'a> NamerLabels<'a> {
     pub fn for_initials<'n>(names: impl IntoIterator<Item = &'n str>) -> NamerLabels<'a> {
         let mut initials = Box::new([false; 256]);
         for n in names {
-            if let Some(&b) = glsl_base(n).as_bytes().first() {
-                initials[b as usize] = true;
-            }
+            // An empty base is tried as `_`, `_1` ...
+            let b = glsl_base(n).as_bytes().first().copied().unwrap_or(b'_');
+            initials[b as usize] = true;
         }
         NamerLabels { initials: Some(initials), ..Default::default() }
     }
@@ -191,7 +191,7 @@ impl<'a> NamerLabels<'a> {
     /// [`is_reserved`]'s). The set is finite, so [`glsl_name`] ends.
     pub fn taken(&self, name: &str) -> bool {
         debug_assert!(
-            self.initials.as_ref().is_none_or(|i| name.as_bytes().first().is_some_and(|&b| i[b as usize])),
+            self.initials.as_ref().is_none_or(|i| name.as_bytes().first().is_none_or(|&b| i[b as usize])),
             "`{name}` was not among the initials asked for"
         );
         if made_up(name) || self.count(name) > 0 || name.strip_suffix('_').is_some_and(|b| self.count(b) > 0) {
@@ -399,6 +399,10 @@ mod tests {
                 assert_eq!(some.taken(name), l.taken(name), "{name}");
             }
         }
+        // So do the names tried for an empty source name.
+        let mut empty = NamerLabels::for_initials([""]);
+        empty.add_module(&module);
+        assert_eq!(glsl_name("", |n| empty.taken(n)), glsl_name("", |n| l.taken(n)));
         // A loop's flag, once there is a loop.
         let body = naga::Block::from_vec(vec![naga::Statement::Loop { body: naga::Block::new(), continuing: naga::Block::new(), break_if: None }]);
         module.functions.append(naga::Function { body, ..Default::default() }, naga::Span::UNDEFINED);
