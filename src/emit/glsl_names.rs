@@ -136,29 +136,32 @@ impl<'a> NamerLabels<'a> {
     /// Adds the names of `module`.
     pub fn add_module(&mut self, module: &'a naga::Module) {
         let functions = || module.functions.iter().map(|(_, f)| f).chain(module.entry_points.iter().map(|e| &e.function));
-        let count = NAMER_FALLBACKS.len()
-            + module.types.len()
-            + module.constants.len()
-            + module.overrides.len()
-            + module.global_variables.len()
-            + module.entry_points.len()
-            + functions().map(|f| 1 + f.arguments.len() + f.local_variables.len() + f.named_expressions.len()).sum::<usize>();
-        let mut bases = Vec::with_capacity(if self.initials.is_some() { 16 } else { count });
         let initials = self.initials.as_deref();
+        // Filtered, a module keeps a few; otherwise one per name.
+        let capacity = match initials {
+            Some(_) => 16,
+            None => {
+                NAMER_FALLBACKS.len()
+                    + module.types.len()
+                    + module.constants.len()
+                    + module.overrides.len()
+                    + module.global_variables.len()
+                    + module.entry_points.len()
+                    + functions().map(|f| 1 + f.arguments.len() + f.local_variables.len() + f.named_expressions.len()).sum::<usize>()
+            }
+        };
+        let mut bases = Vec::with_capacity(capacity);
         let mut add = |n: &'a str| {
-            if let Some(initials) = initials {
-                // A name starting with a letter keeps it as the first byte
-                // of its base (`gl_` gains `gen_`, also a `g`).
-                let first = n.as_bytes().first().copied().unwrap_or(0);
-                if first.is_ascii_alphabetic() && !initials[first as usize] {
-                    return;
-                }
-                let base = namer_base(n);
-                if base.as_bytes().first().is_some_and(|&b| initials[b as usize]) {
-                    bases.push(base);
-                }
-            } else {
-                bases.push(namer_base(n));
+            // A name starting with a letter keeps it as the first byte of
+            // its base (`gl_` gains `gen_`, also a `g`): such a name is
+            // passed over without working its base out.
+            let first = n.as_bytes().first().copied().unwrap_or(0);
+            if first.is_ascii_alphabetic() && initials.is_some_and(|i| !i[first as usize]) {
+                return;
+            }
+            let base = namer_base(n);
+            if initials.is_none_or(|i| base.as_bytes().first().is_some_and(|&b| i[b as usize])) {
+                bases.push(base);
             }
         };
         NAMER_FALLBACKS.iter().for_each(|n| add(n));
