@@ -94,30 +94,38 @@ impl<'a, 'd> Checker<'a, 'd> {
     /// buffer. The GPU module holds every entry point, so bindings are
     /// unique across the file.
     fn assign_bindings(&mut self) {
-        // In declaration (id) order; a flag per global, not a set.
-        let mut is_used = vec![false; self.out.globals.len()];
+        // Per global in declaration (id) order: the holder it is bound
+        // with, `UNUSED` where no entry point uses it (a table, not a set).
+        const UNUSED: usize = usize::MAX;
+        const USED: usize = usize::MAX - 1;
+        let mut holder_of = vec![UNUSED; self.out.globals.len()];
         for ep in &self.out.entry_points {
             for &g in ep.func.uses.keys() {
-                is_used[g] = true;
+                holder_of[g] = USED;
             }
         }
-        let used = is_used.iter().enumerate().filter(|(_, u)| **u).map(|(g, _)| g);
         // What takes bindings, in declaration order of its first global:
-        // (its globals, group, how many bindings, the binding written).
+        // (that global, group, how many bindings, the binding written).
         struct Holder {
-            globals: Vec<GlobalId>,
+            first: GlobalId,
             group: u32,
             slots: u32,
             written: Option<(u32, Span, GlobalId)>,
         }
         let mut holders: Vec<Holder> = Vec::new();
         let mut buffer_of_group: BTreeMap<u32, usize> = BTreeMap::new();
-        for g in used {
+        for g in 0..holder_of.len() {
+            if holder_of[g] == UNUSED {
+                continue;
+            }
             let global = &self.out.globals[g];
             let slots = match global.kind {
                 GlobalKind::Uniform { .. } | GlobalKind::Storage { .. } | GlobalKind::Image { .. } => 1u32,
                 GlobalKind::Sampler { count, .. } => 2 * count.unwrap_or(1),
-                _ => continue,
+                _ => {
+                    holder_of[g] = UNUSED;
+                    continue;
+                }
             };
             let loose = global.is_loose_uniform();
             let (set, binding) = self.bind_written.get(&g).copied().unwrap_or((None, None));
@@ -128,11 +136,12 @@ impl<'a, 'd> Checker<'a, 'd> {
                 if loose {
                     buffer_of_group.insert(group, holders.len());
                 }
-                holders.push(Holder { globals: vec![g], group, slots, written });
+                holder_of[g] = holders.len();
+                holders.push(Holder { first: g, group, slots, written });
                 continue;
             };
+            holder_of[g] = at;
             let h = &mut holders[at];
-            h.globals.push(g);
             match (h.written, written) {
                 (Some((b0, _, g0)), Some((b1, span, _))) if b0 != b1 => {
                     let (a, b) = (&self.out.globals[g0].name, &self.out.globals[g].name);
@@ -154,7 +163,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             let Some((first, span, g)) = h.written else { continue };
             let (group, n) = (h.group, h.slots);
             if let Some((at, prev)) = (first..first + n).find_map(|b| taken.get(&(group, b)).map(|&p| (b, p))) {
-                let prev_g = holders[prev].written.map_or(holders[prev].globals[0], |w| w.2);
+                let prev_g = holders[prev].written.map_or(holders[prev].first, |w| w.2);
                 let (a, b) = (&self.out.globals[prev_g].name, &self.out.globals[g].name);
                 let mut d = Diagnostic::error(format!("`{a}` and `{b}` are both bound in group {group} at binding {at}"), span)
                     .with_label(format!("`{b}` takes binding {first}{}", if n > 1 { format!("..{}", first + n - 1) } else { String::new() }));
@@ -185,7 +194,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
             let free = |b: u32| (b..b + n).all(|k| !taken.contains_key(&(group, k)));
             let Some(first) = (0..1000u32.saturating_sub(n - 1)).find(|&b| free(b)) else {
-                self.diags.push(Diagnostic::error(format!("no {n} free bindings left in group {group} (at most 1000)"), self.out.globals[h.globals[0]].span));
+                self.diags.push(Diagnostic::error(format!("no {n} free bindings left in group {group} (at most 1000)"), self.out.globals[h.first].span));
                 no_room.insert(group, n);
                 continue;
             };
@@ -194,10 +203,12 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
             placed[i] = Some(first);
         }
-        for (h, first) in holders.iter().zip(placed) {
-            let Some(binding) = first else { continue };
-            for &g in &h.globals {
-                self.out.globals[g].bind = Some(Bind { group: h.group, binding });
+        for (g, &h) in holder_of.iter().enumerate() {
+            if h >= USED {
+                continue;
+            }
+            if let Some(binding) = placed[h] {
+                self.out.globals[g].bind = Some(Bind { group: holders[h].group, binding });
             }
         }
     }
@@ -225,7 +236,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         // (scope, global, entry point) of every interface global an entry
         // point uses; sorted, each scope's globals are a run in
         // declaration order. A flat list: a program has a few dozen.
-        let mut placed: Vec<(Scope, GlobalId, usize)> = Vec::new();
+        let mut placed: Vec<(Scope, GlobalId, usize)> = Vec::with_capacity(self.out.entry_points.iter().map(|ep| ep.func.uses.len()).sum());
         for (e, ep) in self.out.entry_points.iter().enumerate() {
             let vertex = ep.stage == naga::ShaderStage::Vertex;
             for &g in ep.func.uses.keys() {
@@ -351,14 +362,19 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
         }
         // The others: the lowest units free wherever the sampler is used.
-        let used: FxHashSet<GlobalId> = scopes.iter().flat_map(|s| s.1.iter().copied()).collect();
+        let mut used = vec![false; self.out.globals.len()];
+        for &g in scopes.iter().flat_map(|s| &s.1) {
+            used[g] = true;
+        }
+        let mut homes: Vec<usize> = Vec::new();
         for g in 0..self.out.globals.len() {
             let GlobalKind::Sampler { count, .. } = self.out.globals[g].kind else { continue };
-            if self.unit_spans.contains_key(&g) || !used.contains(&g) {
+            if !used[g] || self.unit_spans.contains_key(&g) {
                 continue;
             }
             let count = count.unwrap_or(1) as usize;
-            let homes: Vec<usize> = (0..scopes.len()).filter(|&k| scopes[k].1.contains(&g)).collect();
+            homes.clear();
+            homes.extend((0..scopes.len()).filter(|&k| scopes[k].1.contains(&g)));
             let free = |u: usize| count <= 32 && homes.iter().all(|&k| taken[k] & unit_mask(u, count) == 0);
             let Some(unit) = (0..=32 - count.min(32)).find(|&u| free(u)) else {
                 let msg = match count {
