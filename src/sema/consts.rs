@@ -117,6 +117,10 @@ fn eval(e: &Expr, env: &dyn ConstEnv, depth: usize) -> Result<(ConstValue, Ty), 
             if let Some((msg, help)) = super::types::unsupported_type(&callee.name) {
                 return Err(Diagnostic::error(msg, callee.span).with_note(format!("help: {help}")));
             }
+            // `length` of a fixed array: its type's length.
+            if let ([(_, Ty::Array(_, n))], "length") = (vals.as_slice(), callee.name.as_str()) {
+                return Ok((ConstValue::Int(*n as i64), INT));
+            }
             // Builtin functions: `sema::fold`.
             if let Some(folded) = super::fold::call(&callee.name, &vals) {
                 return folded.map_err(|msg| Diagnostic::error(msg, e.span).with_note("this call is evaluated at compile time"));

@@ -156,6 +156,7 @@ fn functions_and_data(add: &mut impl FnMut(&'static str, String)) {
     add("enum-uniform", frag("enum Mode {\n    flat\n    lit\n}\nvar @uniform u_mode : Mode", "    f_color = float4(u_mode == Mode.lit ? 1.0 : 0.0)"));
     add("named-struct-construction", frag("struct M {\n    albedo : float3 = float3(0.8)\n    rough = 0.5\n    metal : float\n}", "    let a = M()\n    let b = M(metal = 1.0, albedo = float3(0.1))\n    f_color = float4(a.albedo * a.rough + b.albedo * b.metal, b.rough)"));
     add("for-arrays", frag("var @uniform u_k : float4[3]", "    var acc : float[3]\n    for (a in acc) {\n        a = 0.5\n    }\n    var s = float4(0.0)\n    for (k in u_k) {\n        s += k\n    }\n    for (a in acc) {\n        s.x += a\n    }\n    f_color = s"));
+    add("array-length", frag("let K = fixed_array<float>(0.25, 0.5, 0.25)\nlet N = length(K)\nvar @uniform u_k : float4[3]", "    var s = float4(0.0)\n    for (i in range(length(u_k))) {\n        s += u_k[i] * K[i % N]\n    }\n    f_color = s"));
     add("for-parallel", frag("var @uniform u_k : float4[3]\nvar @uniform u_n : int", "    var s = float4(0.0)\n    for (i, k in range(u_n), u_k) {\n        s += k * float(i)\n    }\n    for (i, j in range(2, 5), range(10, 20)) {\n        s.x += float(i * j)\n    }\n    f_color = s"));
 }
 

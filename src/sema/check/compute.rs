@@ -223,10 +223,26 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
     }
 
-    /// `length(buf.data)` of a run-time-sized array, if that is the call.
+    /// `length(buf.data)` of a run-time-sized array, or `length(a)` of a
+    /// fixed array (daslang's `typeinfo dim`: an `int` known when
+    /// compiling), if that is the call.
     pub(super) fn array_length_call(&mut self, xs: &[Expr], span: Span) -> Option<Expr> {
         match xs {
             [x] if matches!(x.ty, Ty::RuntimeArray(_)) => Some(Expr { kind: ExprKind::Builtin(Builtin::ArrayLength, xs.to_vec()), ty: UINT, span }),
+            [x] => {
+                let Ty::Array(_, n) = x.ty else { return None };
+                // The length is the type's: the argument is not evaluated,
+                // so a call in it would lose what the call does.
+                if let Some(call) = first_call(x) {
+                    let d = Diagnostic::error("`length` of a fixed array does not evaluate its argument, which calls a function here", call.span)
+                        .with_label("this call would not run")
+                        .with_secondary(span, format!("the length is {n}, known when compiling"))
+                        .with_note("help: store the array in a `let` first, then take `length` of that");
+                    self.diags.push(d);
+                    return Some(err_expr(span));
+                }
+                Some(Expr { kind: ExprKind::Int(n as i64), ty: INT, span })
+            }
             _ => None,
         }
     }
@@ -381,5 +397,18 @@ fn whole_uses(p: &Program, e: &Expr, whole: bool, diags: &mut Diagnostics, repor
                 whole_uses(p, c, true, diags, reported);
             }
         }
+    }
+}
+
+/// The first call to a helper function inside `e`, if any.
+fn first_call(e: &Expr) -> Option<&Expr> {
+    match &e.kind {
+        ExprKind::Call(..) => Some(e),
+        ExprKind::Unary(_, x) | ExprKind::Swizzle(x, _) | ExprKind::Field(x, _) => first_call(x),
+        ExprKind::Binary(_, ab) => first_call(&ab.0).or_else(|| first_call(&ab.1)),
+        ExprKind::Index(a, b) => first_call(a).or_else(|| first_call(b)),
+        ExprKind::Select { cond, accept, reject } => first_call(cond).or_else(|| first_call(accept)).or_else(|| first_call(reject)),
+        ExprKind::Builtin(_, xs) | ExprKind::Construct(xs) => xs.iter().find_map(first_call),
+        ExprKind::Float(_) | ExprKind::Int(_) | ExprKind::Uint(_) | ExprKind::Bool(_) | ExprKind::Local(_) | ExprKind::Global(_) | ExprKind::Const(_) | ExprKind::Zero => None,
     }
 }

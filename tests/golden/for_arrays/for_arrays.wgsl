@@ -20,6 +20,7 @@ struct for_arrays_fs_out {
 }
 
 const KERNEL: array<f32, 3> = array<f32, 3>(0.25f, 0.5f, 0.25f);
+const TAPS: i32 = 3i;
 
 @group(0) @binding(0) 
 var<uniform> uniforms: Uniforms;
@@ -45,8 +46,9 @@ fn for_arrays_fs(@location(0) v_uv_1: vec2<f32>) -> for_arrays_fs_out {
     var t_index: i32;
     var blur: f32;
     var t_index_1: i32;
-    var ramp: f32;
     var i_1: i32;
+    var ramp: f32;
+    var i_2: i32;
 
     c = vec3(0f);
     i = 0i;
@@ -103,17 +105,33 @@ fn for_arrays_fs(@location(0) v_uv_1: vec2<f32>) -> for_arrays_fs_out {
             t_index_1 = (_e81 + 1i);
         }
     }
+    i_1 = 0i;
+    loop {
+        let _e87 = i_1;
+        if !((_e87 < 3i)) {
+            break;
+        }
+        let _e93 = i_1;
+        let _e95 = taps[_e93];
+        let _e101 = i_1;
+        let _e105 = blur;
+        blur = (_e105 + (_e95 * KERNEL[((TAPS - 1i) - _e101)]));
+        continuing {
+            let _e107 = i_1;
+            i_1 = (_e107 + 1i);
+        }
+    }
     ramp = 0f;
     {
         let j_count = select(0u, (u32(8i) - u32(5i)), (8i > 5i));
-        i_1 = 1i;
+        i_2 = 1i;
         loop {
-            let _e99 = i_1;
-            if !((_e99 < 10i)) {
+            let _e125 = i_2;
+            if !((_e125 < 10i)) {
                 break;
             }
-            let _e103 = i_1;
-            let i_step = (u32(_e103) - u32(1i));
+            let _e129 = i_2;
+            let i_step = (u32(_e129) - u32(1i));
             if (i_step >= j_count) {
                 break;
             }
@@ -122,19 +140,19 @@ fn for_arrays_fs(@location(0) v_uv_1: vec2<f32>) -> for_arrays_fs_out {
             }
             let j = (5i + i32(i_step));
             let k_1 = KERNEL[i32(i_step)];
-            let _e119 = i_1;
-            let _e123 = ramp;
-            ramp = (_e123 + (f32((_e119 * j)) * k_1));
+            let _e145 = i_2;
+            let _e149 = ramp;
+            ramp = (_e149 + (f32((_e145 * j)) * k_1));
             continuing {
-                let _e125 = i_1;
-                i_1 = (_e125 + 1i);
+                let _e151 = i_2;
+                i_2 = (_e151 + 1i);
             }
         }
     }
-    let _e130 = c;
-    let _e132 = blur;
-    let _e136 = ramp;
-    f_color = vec4<f32>((_e130 + vec3(_e132)), (_e136 / 50f));
-    let _e141 = f_color;
-    return for_arrays_fs_out(_e141);
+    let _e156 = c;
+    let _e158 = blur;
+    let _e162 = ramp;
+    f_color = vec4<f32>((_e156 + vec3(_e158)), (_e162 / 50f));
+    let _e167 = f_color;
+    return for_arrays_fs_out(_e167);
 }

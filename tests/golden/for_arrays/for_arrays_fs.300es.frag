@@ -11,6 +11,7 @@ struct for_arrays_fs_out {
     vec4 f_color;
 };
 const float KERNEL[3] = float[3](0.25, 0.5, 0.25);
+const int TAPS = 3;
 
 uniform Light u_lights[4];
 
@@ -28,8 +29,9 @@ void main() {
     int t_index = 0;
     float blur = 0.0;
     int t_index_1 = 0;
-    float ramp = 0.0;
     int i_1 = 0;
+    float ramp = 0.0;
+    int i_2 = 0;
     c = vec3(0.0);
     i = 0;
     int _e7 = u_count;
@@ -91,23 +93,41 @@ void main() {
         float _e77 = blur;
         blur = (_e77 + _e76);
     }
+    i_1 = 0;
+    bool loop_init_3 = true;
+    while(true) {
+        if (!loop_init_3) {
+            int _e105 = i_1;
+            i_1 = (_e105 + 1);
+        }
+        loop_init_3 = false;
+        int _e85 = i_1;
+        if (!((_e85 < 3))) {
+            break;
+        }
+        int _e91 = i_1;
+        float _e93 = taps[_e91];
+        int _e99 = i_1;
+        float _e103 = blur;
+        blur = (_e103 + (_e93 * KERNEL[((TAPS - 1) - _e99)]));
+    }
     ramp = 0.0;
     {
         uint j_count = ((8 > 5) ? (uint(8) - uint(5)) : 0u);
-        i_1 = 1;
-        bool loop_init_3 = true;
+        i_2 = 1;
+        bool loop_init_4 = true;
         while(true) {
-            if (!loop_init_3) {
-                int _e123 = i_1;
-                i_1 = (_e123 + 1);
+            if (!loop_init_4) {
+                int _e149 = i_2;
+                i_2 = (_e149 + 1);
             }
-            loop_init_3 = false;
-            int _e97 = i_1;
-            if (!((_e97 < 10))) {
+            loop_init_4 = false;
+            int _e123 = i_2;
+            if (!((_e123 < 10))) {
                 break;
             }
-            int _e101 = i_1;
-            uint i_step = (uint(_e101) - uint(1));
+            int _e127 = i_2;
+            uint i_step = (uint(_e127) - uint(1));
             if ((i_step >= j_count)) {
                 break;
             }
@@ -116,17 +136,17 @@ void main() {
             }
             int j = (5 + int(i_step));
             float k_1 = KERNEL[int(i_step)];
-            int _e117 = i_1;
-            float _e121 = ramp;
-            ramp = (_e121 + (float((_e117 * j)) * k_1));
+            int _e143 = i_2;
+            float _e147 = ramp;
+            ramp = (_e147 + (float((_e143 * j)) * k_1));
         }
     }
-    vec3 _e128 = c;
-    float _e130 = blur;
-    float _e134 = ramp;
-    out_f_color = vec4((_e128 + vec3(_e130)), (_e134 / 50.0));
-    vec4 _e139 = out_f_color;
-    for_arrays_fs_out _tmp_return = for_arrays_fs_out(_e139);
+    vec3 _e154 = c;
+    float _e156 = blur;
+    float _e160 = ramp;
+    out_f_color = vec4((_e154 + vec3(_e156)), (_e160 / 50.0));
+    vec4 _e165 = out_f_color;
+    for_arrays_fs_out _tmp_return = for_arrays_fs_out(_e165);
     f_color = _tmp_return.f_color;
     return;
 }
