@@ -201,9 +201,13 @@ fn scan(toks: &[Token], start: usize, mode: Mode, guard_defs: bool, stack: &mut 
     n
 }
 
+/// Whether token `k` is a modifier word: one of [`MODIFIERS`] followed by a
+/// name (`def private f`), a qualifier (`var private @in a`) or a block
+/// (`let private { ... }`). Followed by anything else it is a name itself
+/// (`var shared = 1`).
 fn is_modifier(texts: &Texts, toks: &[Token], k: usize) -> bool {
     toks[k].kind == TokKind::Ident
-        && toks.get(k + 1).is_some_and(|t| t.kind == TokKind::Ident)
+        && toks.get(k + 1).is_some_and(|t| t.kind == TokKind::Ident || t.is(P::At) || t.is(P::LBrace))
         && MODIFIERS.contains(&texts.get(toks[k].span))
 }
 

@@ -174,6 +174,20 @@ fn project_shadow_program_parses() {
     assert!(sm.unwrap().qualifiers.iter().any(|q| q.kind == QualifierKind::Stage(Some(0))));
 }
 
+/// A visibility word before a shader qualifier or a block
+/// (`var private @uniform`, `let private { ... }`) once made the item
+/// host code: a shader global dropped without a word, its uses "unknown".
+#[test]
+fn visibility_words_keep_shader_globals_and_blocks() {
+    let src = "var private @uniform u_unused : float\nvar public @in a_pos : float2\nvar shared @uniform u_k : float\nlet private {\n    A = 0.5\n}\nvar shared = 2.0\n";
+    let p = parse_str(&format!("{src}{}", fs("    col = float4(a_pos * A * u_k * shared, 0.0, 1.0)")));
+    assert!(p.diags.is_empty(), "{}", p.rendered());
+    let names = p.names();
+    for n in ["u_unused", "a_pos", "u_k", "A", "shared", "col", "main_fs"] {
+        assert!(names.iter().any(|x| x == n), "`{n}` missing from {names:?}");
+    }
+}
+
 #[test]
 fn entry_filter_and_unknown_entry() {
     let src = "var @out c : float4\n[vertex_program]\ndef a_vs {\n}\n[fragment_program(name = \"frag\")]\ndef b_fs {\nc = f()\n}\ndef f : float4 {\nreturn float4(1.0)\n}\n";
