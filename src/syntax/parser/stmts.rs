@@ -40,11 +40,15 @@ impl<'m> Parser<'_, 'm> {
         if matches!(t.kind, TokKind::Error(_)) {
             return;
         }
-        let msg = format!("expected '{{', found {}", self.describe(&t));
+        // The end of the item: the header's line ended without `{`, which
+        // is how daslang's older syntax starts an indented body.
+        let found = if t.kind == TokKind::Eof { "the end of the line".to_string() } else { self.describe(&t) };
+        let msg = format!("expected '{{', found {found}");
         self.push(
             Diagnostic::error(msg, t.span)
                 .with_label("expected '{'")
-                .with_note("bodies of functions, `if`, `while` and `for` are enclosed in braces"),
+                .with_note("bodies of functions, `if`, `while` and `for` are enclosed in braces")
+                .with_note("a body given by indentation alone is daslang's older syntax (files without `options gen2`), which umbrac does not read: enclose it in `{ }`"),
         );
     }
 
