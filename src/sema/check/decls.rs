@@ -44,16 +44,21 @@ impl<'a, 'd> Checker<'a, 'd> {
         for item in items {
             if let ast::Item::Struct(s) = item {
                 self.check_unique(&mut seen, &s.name);
-                self.structs.insert(&s.name.name, self.out.structs.len());
+                // A second struct of one name is reported; uses mean the first.
+                self.structs.entry(&s.name.name).or_insert(self.out.structs.len());
                 self.out.structs.push(StructDef { name: s.name.name.as_str().to_string(), fields: Vec::new(), span: s.span });
             }
         }
         self.declare_enums(&mut seen);
         self.field_inits = vec![Vec::new(); self.out.structs.len()];
+        // The n-th struct item is struct n (pushed in that order above);
+        // not looked up by name, which a duplicate name maps to the other.
+        let mut next_struct = 0;
         for item in items {
             match item {
                 ast::Item::Struct(s) => {
-                    let id = self.structs[s.name.name.as_str()];
+                    let id = next_struct;
+                    next_struct += 1;
                     let mut fields: Vec<(String, Ty, Span)> = Vec::with_capacity(s.fields.len());
                     // Name -> index, for the duplicate check here and field
                     // lookups later: one hash lookup each, whatever the size.
@@ -133,9 +138,11 @@ impl<'a, 'd> Checker<'a, 'd> {
     /// Fields' initial values: constants of the field's type (or giving the
     /// type of a field declared without one).
     fn check_field_inits(&mut self) {
-        for item in &self.ast.items {
-            let ast::Item::Struct(s) = item else { continue };
-            let id = self.structs[s.name.name.as_str()];
+        let structs = self.ast.items.iter().filter_map(|item| match item {
+            ast::Item::Struct(s) => Some(s),
+            _ => None,
+        });
+        for (id, s) in structs.enumerate() {
             for (i, f) in s.fields.iter().enumerate() {
                 let Some(init) = &f.init else { continue };
                 let declared = self.out.structs[id].fields[i].1.clone();
