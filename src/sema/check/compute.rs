@@ -404,11 +404,6 @@ fn whole_uses(p: &Program, e: &Expr, whole: bool, diags: &mut Diagnostics, repor
 fn first_call(e: &Expr) -> Option<&Expr> {
     match &e.kind {
         ExprKind::Call(..) => Some(e),
-        ExprKind::Unary(_, x) | ExprKind::Swizzle(x, _) | ExprKind::Field(x, _) => first_call(x),
-        ExprKind::Binary(_, ab) => first_call(&ab.0).or_else(|| first_call(&ab.1)),
-        ExprKind::Index(a, b) => first_call(a).or_else(|| first_call(b)),
-        ExprKind::Select { cond, accept, reject } => first_call(cond).or_else(|| first_call(accept)).or_else(|| first_call(reject)),
-        ExprKind::Builtin(_, xs) | ExprKind::Construct(xs) => xs.iter().find_map(first_call),
-        ExprKind::Float(_) | ExprKind::Int(_) | ExprKind::Uint(_) | ExprKind::Bool(_) | ExprKind::Local(_) | ExprKind::Global(_) | ExprKind::Const(_) | ExprKind::Zero => None,
+        _ => super::uniformity::children(e).into_iter().find_map(first_call),
     }
 }
