@@ -60,8 +60,23 @@ pub fn write(lowered: &Lowered) -> Result<Vec<u32>, Diagnostic> {
     guard("the SPIR-V writer", || {
         // `spv::write_vec`, into words reserved ahead.
         let mut words = Vec::with_capacity(super::output_capacity(&lowered.gpu) / 4);
-        let mut writer = naga::back::spv::Writer::new(&options).map_err(|e| e.to_string())?;
+        // Taken out while it runs: a panic in naga drops it instead of
+        // leaving one in an unknown state for the next module.
+        let mut writer = match WRITER.take() {
+            Some(mut w) => w.set_options(&options).map(|()| w),
+            None => naga::back::spv::Writer::new(&options),
+        }
+        .map_err(|e| e.to_string())?;
         writer.write(&lowered.gpu, &lowered.gpu_info, None, &options.debug_info, &mut words).map_err(|e| e.to_string())?;
+        WRITER.set(Some(writer));
         Ok(words)
     })
+}
+
+thread_local! {
+    /// This thread's SPIR-V writer, kept between compilations: naga resets
+    /// it per module and keeps its tables' memory, so a thread that compiles
+    /// many variants builds them once. Every option [`options`] sets, apart
+    /// from the constant ones, is one `Writer::set_options` replaces.
+    static WRITER: std::cell::Cell<Option<naga::back::spv::Writer>> = const { std::cell::Cell::new(None) };
 }

@@ -67,9 +67,7 @@ pub fn lower(program: &sema::Program, options: impl Into<LowerOptions>) -> Resul
     let reach = Reach::of(program);
     let (gpu, gpu_info, mut interface) = gpu(program, options.conventions, &reach)?;
     interface.gl_uniforms = options.gl_uniforms;
-    // One validator for all the GL modules: its tables are reused.
-    let mut validator = validate::validator(Flavor::Gl);
-    let gl = (0..program.entry_points.len()).map(|i| gl_entry(program, i, options.gl_uniforms, &reach, &mut validator)).collect::<Result<_, _>>()?;
+    let gl = (0..program.entry_points.len()).map(|i| gl_entry(program, i, options.gl_uniforms, &reach)).collect::<Result<_, _>>()?;
     Ok(Lowered { gl, gpu, gpu_info, interface })
 }
 
@@ -83,27 +81,27 @@ fn gpu(program: &sema::Program, conventions: Conventions, reach: &Reach) -> Resu
     #[cfg(debug_assertions)]
     let gpu = fault::inject(gpu);
     let flavor = Flavor::Gpu(conventions);
-    let gpu_info = validate::validate(&mut validate::validator(flavor), &gpu, flavor)?;
+    let gpu_info = validate::validate(&gpu, flavor)?;
     interface.conventions = conventions;
     Ok((gpu, gpu_info, interface))
 }
 
 /// The validated GL module of entry point `index` alone.
 pub fn lower_gl_entry(program: &sema::Program, index: usize, gl_uniforms: GlUniforms) -> Result<GlEntry, Diagnostic> {
-    gl_entry(program, index, gl_uniforms, &Reach::of(program), &mut validate::validator(Flavor::Gl))
+    gl_entry(program, index, gl_uniforms, &Reach::of(program))
 }
 
-/// [`lower_gl_entry`] with a validator from `validate::validator(Flavor::Gl)`.
-fn gl_entry(program: &sema::Program, index: usize, gl_uniforms: GlUniforms, reach: &Reach, validator: &mut naga::valid::Validator) -> Result<GlEntry, Diagnostic> {
+/// [`lower_gl_entry`] with the program's reach already computed.
+fn gl_entry(program: &sema::Program, index: usize, gl_uniforms: GlUniforms, reach: &Reach) -> Result<GlEntry, Diagnostic> {
     let (module, _, uniforms) = build(program, Flavor::Gl, gl_uniforms, Some(index), reach)?;
-    let info = validate::validate(validator, &module, Flavor::Gl)?;
+    let info = validate::validate(&module, Flavor::Gl)?;
     Ok(GlEntry { module, info, uniforms })
 }
 
 /// Validates a module the way [`lower`] validates its own output: a failure
 /// is an internal compiler error at the span naga reports.
 pub fn validate(module: &naga::Module, flavor: Flavor) -> Result<naga::valid::ModuleInfo, Diagnostic> {
-    validate::validate(&mut validate::validator(flavor), module, flavor)
+    validate::validate(module, flavor)
 }
 
 /// Builds the whole program, or (`only`) one entry point and what it

@@ -1,16 +1,18 @@
 //! naga's validator, with the flags and capabilities of each flavour of
 //! module; a rejection is an internal compiler error.
 
+use std::cell::RefCell;
+
+use naga::valid::Validator;
 use naga::Module;
 
 use super::interface::Flavor;
 use crate::diag::Diagnostic;
 use crate::source::Span;
 
-/// The validator for modules of `flavor`. One validator can check several
-/// modules (naga resets it per module), keeping its tables' memory.
-pub fn validator(flavor: Flavor) -> naga::valid::Validator {
-    use naga::valid::{Capabilities, ValidationFlags, Validator};
+/// The validator for modules of `flavor`.
+fn validator(flavor: Flavor) -> Validator {
+    use naga::valid::{Capabilities, ValidationFlags};
     let (flags, caps) = match flavor {
         Flavor::Gl => (ValidationFlags::all() - ValidationFlags::BINDINGS, naga::back::glsl::supported_capabilities()),
         // `packHalf2x16` needs SHADER_FLOAT16_IN_FLOAT32 (WebGPU has it
@@ -20,10 +22,24 @@ pub fn validator(flavor: Flavor) -> naga::valid::Validator {
     Validator::new(flags, caps)
 }
 
-/// Validates a finished module with a validator from [`validator`]`(flavor)`;
+thread_local! {
+    /// This thread's validators, GL's and the GPU modules', kept between
+    /// modules and compilations: naga resets a validator per module and
+    /// keeps its tables' memory, so a thread that compiles many variants
+    /// builds them once.
+    static VALIDATORS: RefCell<[Option<Validator>; 2]> = const { RefCell::new([None, None]) };
+}
+
+/// Validates a finished module with this thread's validator for `flavor`;
 /// a failure is an internal compiler error located at the span naga reports.
-pub fn validate(validator: &mut naga::valid::Validator, module: &Module, flavor: Flavor) -> Result<naga::valid::ModuleInfo, Diagnostic> {
-    validator.validate(module).map_err(|e| {
+pub fn validate(module: &Module, flavor: Flavor) -> Result<naga::valid::ModuleInfo, Diagnostic> {
+    let slot = usize::from(matches!(flavor, Flavor::Gpu(_)));
+    // Taken out while it runs: a panic in naga drops it instead of leaving
+    // one in an unknown state for the next module.
+    let mut validator = VALIDATORS.with_borrow_mut(|v| v[slot].take()).unwrap_or_else(|| validator(flavor));
+    let result = validator.validate(module);
+    VALIDATORS.with_borrow_mut(|v| v[slot] = Some(validator));
+    result.map_err(|e| {
         let span = e.spans().next().map(|(s, _)| Span::from(*s)).filter(|s| !s.is_empty());
         let mut msg = e.as_inner().to_string();
         let mut src: Option<&dyn std::error::Error> = std::error::Error::source(e.as_inner());

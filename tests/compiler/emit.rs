@@ -515,3 +515,34 @@ fn glslang_needs_the_es_precision_line() {
     let err = support::glslang(&without).unwrap_err();
     assert!(err.contains("precision"), "{err}");
 }
+
+/// naga's validators and SPIR-V writer are kept per thread between
+/// compilations (their tables' memory is reused): what a thread compiled
+/// before must not show in what it compiles next. Each program is compiled
+/// on a fresh thread, then all of them again, one after another, on one
+/// thread; every output must be the same. `points.das` turns on the
+/// writer's point-size flag, and `bind_groups.das` has its own binding map.
+#[test]
+fn reused_writers_and_validators_leave_nothing_behind() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("shaders");
+    let files = [dir.join("shadow.das"), dir.join("features/points.das"), dir.join("features/bind_groups.das"), dir.join("features/packing.das")];
+    let outputs = |path: &std::path::Path| -> Vec<(String, Vec<u8>)> {
+        let c = umbrac::compile_file(path, &umbrac::Options::default());
+        assert!(!c.has_errors(), "{}", c.render_diagnostics());
+        c.result.unwrap().artifacts.into_iter().map(|a| (a.file_name, a.contents)).collect()
+    };
+    // Compiler threads run compilations on themselves in every build (a
+    // debug build would otherwise start a thread per compilation).
+    let on_compiler_thread = |f: &(dyn Fn() -> Vec<Vec<(String, Vec<u8>)>> + Sync)| std::thread::scope(|s| umbrac::spawn_compiler_thread(s, f).unwrap().join().unwrap());
+    let fresh: Vec<_> = files.iter().flat_map(|f| on_compiler_thread(&|| vec![outputs(f)])).collect();
+    let reused = on_compiler_thread(&|| files.iter().chain(files.iter().rev()).map(|f| outputs(f)).collect());
+    let n = files.len();
+    for (i, f) in files.iter().enumerate() {
+        for again in [&reused[i], &reused[2 * n - 1 - i]] {
+            assert_eq!(fresh[i].len(), again.len(), "{}", f.display());
+            for (a, b) in fresh[i].iter().zip(again) {
+                assert!(a == b, "{}: `{}` differs after other compilations on the thread", f.display(), a.0);
+            }
+        }
+    }
+}
