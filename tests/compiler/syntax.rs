@@ -188,6 +188,18 @@ fn visibility_words_keep_shader_globals_and_blocks() {
     }
 }
 
+/// A body given by indentation alone (daslang's older syntax, as in
+/// daslang's own `sdfi.das` and toy path tracer) is named, with the way
+/// daslang converts such a file.
+#[test]
+fn indented_bodies_name_the_older_syntax_and_its_converter() {
+    let p = parse_str("var @out c : float4\n[fragment_program]\ndef main_fs\n    c = float4(1.0)\n");
+    let d = p.errors()[0];
+    assert_eq!(d.message, "expected '{', found the end of the line");
+    assert!(d.notes.iter().any(|n| n.contains("older syntax") && n.contains("options gen2")), "{:?}", d.notes);
+    assert!(d.notes.iter().any(|n| n.contains("gen1-to-gen2")), "{:?}", d.notes);
+}
+
 #[test]
 fn entry_filter_and_unknown_entry() {
     let src = "var @out c : float4\n[vertex_program]\ndef a_vs {\n}\n[fragment_program(name = \"frag\")]\ndef b_fs {\nc = f()\n}\ndef f : float4 {\nreturn float4(1.0)\n}\n";

@@ -48,7 +48,8 @@ impl<'m> Parser<'_, 'm> {
             Diagnostic::error(msg, t.span)
                 .with_label("expected '{'")
                 .with_note("bodies of functions, `if`, `while` and `for` are enclosed in braces")
-                .with_note("a body given by indentation alone is daslang's older syntax (files without `options gen2`), which umbrac does not read: enclose it in `{ }`"),
+                .with_note("a body given by indentation alone is daslang's older syntax (files without `options gen2`), which umbrac does not read: enclose it in `{ }`")
+                .with_note("help: daslang converts a whole file of the older syntax: `daslang utils/gen1-to-gen2/main.das -- -i FILE`"),
         );
     }
 
