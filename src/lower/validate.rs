@@ -1,7 +1,7 @@
 //! naga's validator, with the flags and capabilities of each flavour of
 //! module; a rejection is an internal compiler error.
 
-use std::cell::RefCell;
+use std::cell::Cell;
 
 use naga::valid::Validator;
 use naga::Module;
@@ -27,18 +27,22 @@ thread_local! {
     /// modules and compilations: naga resets a validator per module and
     /// keeps its tables' memory, so a thread that compiles many variants
     /// builds them once.
-    static VALIDATORS: RefCell<[Option<Validator>; 2]> = const { RefCell::new([None, None]) };
+    static GL_VALIDATOR: Cell<Option<Validator>> = const { Cell::new(None) };
+    static GPU_VALIDATOR: Cell<Option<Validator>> = const { Cell::new(None) };
 }
 
 /// Validates a finished module with this thread's validator for `flavor`;
 /// a failure is an internal compiler error located at the span naga reports.
 pub fn validate(module: &Module, flavor: Flavor) -> Result<naga::valid::ModuleInfo, Diagnostic> {
-    let slot = usize::from(matches!(flavor, Flavor::Gpu(_)));
+    let kept = match flavor {
+        Flavor::Gl => &GL_VALIDATOR,
+        Flavor::Gpu(_) => &GPU_VALIDATOR,
+    };
     // Taken out while it runs: a panic in naga drops it instead of leaving
     // one in an unknown state for the next module.
-    let mut validator = VALIDATORS.with_borrow_mut(|v| v[slot].take()).unwrap_or_else(|| validator(flavor));
+    let mut validator = kept.take().unwrap_or_else(|| validator(flavor));
     let result = validator.validate(module);
-    VALIDATORS.with_borrow_mut(|v| v[slot] = Some(validator));
+    kept.set(Some(validator));
     result.map_err(|e| {
         let span = e.spans().next().map(|(s, _)| Span::from(*s)).filter(|s| !s.is_empty());
         let mut msg = e.as_inner().to_string();
