@@ -53,6 +53,8 @@ mod types;
 mod uniforms;
 mod validate;
 
+/// Validates a module the way [`lower`] validates its own output.
+pub use validate::validate;
 pub use interface::{Conventions, EntryInterface, Flavor, GlEntry, GlUniforms, Interface, IoVar, LooseUniform, LowerOptions, Lowered, Resource, ResourceKind};
 
 use crate::diag::Diagnostic;
@@ -96,12 +98,6 @@ fn gl_entry(program: &sema::Program, index: usize, gl_uniforms: GlUniforms, reac
     let (module, _, uniforms) = build(program, Flavor::Gl, gl_uniforms, Some(index), reach)?;
     let info = validate::validate(&module, Flavor::Gl)?;
     Ok(GlEntry { module, info, uniforms })
-}
-
-/// Validates a module the way [`lower`] validates its own output: a failure
-/// is an internal compiler error at the span naga reports.
-pub fn validate(module: &naga::Module, flavor: Flavor) -> Result<naga::valid::ModuleInfo, Diagnostic> {
-    validate::validate(module, flavor)
 }
 
 /// Builds the whole program, or (`only`) one entry point and what it
