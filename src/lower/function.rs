@@ -64,6 +64,49 @@ pub(super) struct FnBuilder<'m, 'p> {
     /// (`Value`) or an output held in a local variable (`Var`) instead of
     /// the module's private global. Empty in helpers.
     pub(super) entry_globals: Vec<LocalSlot>,
+    /// The expressions naga never emits (literals, constants, variables'
+    /// pointers, zero values), one of each per function: naga may use them
+    /// anywhere in it, so a second use takes the first's handle instead of
+    /// a new expression (and a new split of the running emit range).
+    plain: rustc_hash::FxHashMap<PlainKey, Handle<E>>,
+}
+
+/// What identifies an expression [`FnBuilder::append_plain`] shares.
+#[derive(Clone, Copy, PartialEq, Eq, Hash)]
+enum PlainKey {
+    /// A literal: its kind and its bits (`-0.0` and `0.0` differ).
+    Literal(u8, u64),
+    Constant(Handle<naga::Constant>),
+    Global(Handle<naga::GlobalVariable>),
+    Local(Handle<naga::LocalVariable>),
+    Zero(Handle<naga::Type>),
+}
+
+impl PlainKey {
+    fn of(e: &E) -> Option<PlainKey> {
+        use naga::Literal as L;
+        Some(match *e {
+            E::Literal(l) => match l {
+                L::F64(v) => PlainKey::Literal(0, v.to_bits()),
+                L::F32(v) => PlainKey::Literal(1, v.to_bits() as u64),
+                L::U32(v) => PlainKey::Literal(2, v as u64),
+                L::I32(v) => PlainKey::Literal(3, v as u32 as u64),
+                L::U64(v) => PlainKey::Literal(4, v),
+                L::I64(v) => PlainKey::Literal(5, v as u64),
+                L::Bool(v) => PlainKey::Literal(6, v as u64),
+                L::F16(v) => PlainKey::Literal(7, v.to_bits() as u64),
+                L::AbstractInt(v) => PlainKey::Literal(8, v as u64),
+                L::AbstractFloat(v) => PlainKey::Literal(9, v.to_bits()),
+                L::U16(v) => PlainKey::Literal(10, v as u64),
+                L::I16(v) => PlainKey::Literal(11, v as u16 as u64),
+            },
+            E::Constant(h) => PlainKey::Constant(h),
+            E::GlobalVariable(h) => PlainKey::Global(h),
+            E::LocalVariable(h) => PlainKey::Local(h),
+            E::ZeroValue(h) => PlainKey::Zero(h),
+            _ => return None,
+        })
+    }
 }
 
 pub(super) fn span(s: Span) -> naga::Span {
@@ -93,7 +136,7 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
         let mut func = naga::Function { name: Some(name.to_string()), ..Default::default() };
         // A `let` names its expression: room for all of them up front.
         func.named_expressions.reserve(sema_locals.iter().filter(|l| !l.mutable).count());
-        let mut b = FnBuilder { m, func, emitter: Default::default(), locals: vec![LocalSlot::Unset; sema_locals.len()], sema_locals, kind, pending: Vec::new(), vertex_lod: false, entry_globals: Vec::new() };
+        let mut b = FnBuilder { m, func, emitter: Default::default(), locals: vec![LocalSlot::Unset; sema_locals.len()], sema_locals, kind, pending: Vec::new(), vertex_lod: false, entry_globals: Vec::new(), plain: Default::default() };
         b.emitter.start(&b.func.expressions);
         b
     }
@@ -133,6 +176,10 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
 
     /// Appends an expression that must not be emitted.
     pub(super) fn append_plain(&mut self, e: E, s: Span) -> Handle<E> {
+        let key = PlainKey::of(&e);
+        if let Some(&h) = key.as_ref().and_then(|k| self.plain.get(k)) {
+            return h;
+        }
         // Close the running range, append outside it, and start again.
         let pending = self.emitter.finish(&self.func.expressions);
         let h = self.func.expressions.append(e, span(s));
@@ -140,6 +187,9 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
         if let Some((stmt, sp)) = pending {
             // The range ends before `h`; it is pushed with the next statement.
             self.pending.push((stmt, sp));
+        }
+        if let Some(k) = key {
+            self.plain.insert(k, h);
         }
         h
     }

@@ -37,6 +37,7 @@ mod language_f;
 #[cfg(feature = "cli")]
 mod hostile_inputs;
 mod limits;
+mod lowering;
 #[cfg(feature = "deserialize")]
 mod programs;
 mod proptest_programs;

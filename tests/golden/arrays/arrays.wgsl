@@ -34,33 +34,33 @@ fn sum_first(n: i32) -> f32 {
         if !((_e6 < 5i)) {
             break;
         }
-        let _e11 = i;
-        let _e15 = i;
-        let _e18 = i;
-        acc[_e11] = (WEIGHTS[_e15] * f32((_e18 + 1i)));
+        let _e9 = i;
+        let _e12 = i;
+        let _e14 = i;
+        acc[_e9] = (WEIGHTS[_e12] * f32((_e14 + 1i)));
         continuing {
-            let _e23 = i;
-            i = (_e23 + 1i);
+            let _e19 = i;
+            i = (_e19 + 1i);
         }
     }
     s = 0f;
     i_1 = 0i;
     loop {
-        let _e32 = i_1;
-        if !((_e32 < min(n, 5i))) {
+        let _e25 = i_1;
+        if !((_e25 < min(n, 5i))) {
             break;
         }
-        let _e38 = i_1;
-        let _e40 = acc[_e38];
-        let _e41 = s;
-        s = (_e41 + _e40);
+        let _e28 = i_1;
+        let _e30 = acc[_e28];
+        let _e31 = s;
+        s = (_e31 + _e30);
         continuing {
-            let _e43 = i_1;
-            i_1 = (_e43 + 1i);
+            let _e33 = i_1;
+            i_1 = (_e33 + 1i);
         }
     }
-    let _e47 = s;
-    return _e47;
+    let _e35 = s;
+    return _e35;
 }
 
 @vertex 
@@ -72,10 +72,10 @@ fn arrays_vs(@location(0) a_pos: vec2<f32>, @builtin(vertex_index) VertexID: u32
     v_uv = ((a_pos * 0.5f) + vec2(0.5f));
     v_id = RING[(i32(VertexID) % 4i)];
     gl_Position = vec4<f32>(a_pos, 0f, 1f);
-    let _e19 = gl_Position;
-    let _e30 = v_uv;
-    let _e32 = v_id;
-    return arrays_vs_out(vec4<f32>(_e19.x, -(_e19.y), ((_e19.z + _e19.w) * 0.5f), _e19.w), _e30, _e32);
+    let _e17 = gl_Position;
+    let _e26 = v_uv;
+    let _e27 = v_id;
+    return arrays_vs_out(vec4<f32>(_e17.x, -(_e17.y), ((_e17.z + _e17.w) * 0.5f), _e17.w), _e26, _e27);
 }
 
 @fragment 
@@ -92,12 +92,12 @@ fn arrays_fs(@location(1) @interpolate(flat) v_id_1: i32) -> arrays_fs_out {
     grid[(v_id_1 & 1i)] = vec2<i32>(v_id_1, -(v_id_1));
     let g = grid[1];
     m = mat2x2<f32>(vec2<f32>(1f, 0f), vec2<f32>(0f, 1f));
-    let _e33 = uniforms.u_count;
-    m[(_e33 & 1i)] = vec2(0.5f);
-    let _e42 = uniforms.u_count;
-    let _e43 = sum_first(_e42);
-    let _e49 = m[1];
-    f_color = vec4<f32>(((col * _e43) + vec3<f32>(f32(g.x), _e49)), 1f);
-    let _e55 = f_color;
-    return arrays_fs_out(_e55);
+    let _e28 = uniforms.u_count;
+    m[(_e28 & 1i)] = vec2(0.5f);
+    let _e35 = uniforms.u_count;
+    let _e36 = sum_first(_e35);
+    let _e41 = m[1];
+    f_color = vec4<f32>(((col * _e36) + vec3<f32>(f32(g.x), _e41)), 1f);
+    let _e45 = f_color;
+    return arrays_fs_out(_e45);
 }

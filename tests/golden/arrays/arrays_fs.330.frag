@@ -20,39 +20,39 @@ float sum_first(int n) {
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            int _e23 = i;
-            i = (_e23 + 1);
+            int _e19 = i;
+            i = (_e19 + 1);
         }
         loop_init = false;
         int _e6 = i;
         if (!((_e6 < 5))) {
             break;
         }
-        int _e11 = i;
-        int _e15 = i;
-        int _e18 = i;
-        acc[_e11] = (WEIGHTS[_e15] * float((_e18 + 1)));
+        int _e9 = i;
+        int _e12 = i;
+        int _e14 = i;
+        acc[_e9] = (WEIGHTS[_e12] * float((_e14 + 1)));
     }
     s = 0.0;
     i_1 = 0;
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            int _e43 = i_1;
-            i_1 = (_e43 + 1);
+            int _e33 = i_1;
+            i_1 = (_e33 + 1);
         }
         loop_init_1 = false;
-        int _e32 = i_1;
-        if (!((_e32 < min(n, 5)))) {
+        int _e25 = i_1;
+        if (!((_e25 < min(n, 5)))) {
             break;
         }
-        int _e38 = i_1;
-        float _e40 = acc[_e38];
-        float _e41 = s;
-        s = (_e41 + _e40);
+        int _e28 = i_1;
+        float _e30 = acc[_e28];
+        float _e31 = s;
+        s = (_e31 + _e30);
     }
-    float _e47 = s;
-    return _e47;
+    float _e35 = s;
+    return _e35;
 }
 
 void main() {
@@ -68,14 +68,14 @@ void main() {
     grid[(in_v_id & 1)] = ivec2(in_v_id, -(in_v_id));
     ivec2 g = grid[1];
     m = mat2x2(vec2(1.0, 0.0), vec2(0.0, 1.0));
-    int _e34 = u_count;
-    m[(_e34 & 1)] = vec2(0.5);
-    int _e42 = u_count;
-    float _e43 = sum_first(_e42);
-    vec2 _e49 = m[1];
-    out_f_color = vec4(((col * _e43) + vec3(float(g.x), _e49)), 1.0);
-    vec4 _e55 = out_f_color;
-    arrays_fs_out _tmp_return = arrays_fs_out(_e55);
+    int _e29 = u_count;
+    m[(_e29 & 1)] = vec2(0.5);
+    int _e35 = u_count;
+    float _e36 = sum_first(_e35);
+    vec2 _e41 = m[1];
+    out_f_color = vec4(((col * _e36) + vec3(float(g.x), _e41)), 1.0);
+    vec4 _e45 = out_f_color;
+    arrays_fs_out _tmp_return = arrays_fs_out(_e45);
     f_color = _tmp_return.f_color;
     return;
 }

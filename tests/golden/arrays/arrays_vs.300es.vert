@@ -24,10 +24,10 @@ void main() {
     out_v_uv = ((in_a_pos * 0.5) + vec2(0.5));
     out_v_id = RING[(_e2 - (4 * (_e2 / 4)))];
     gen_gl_Position = vec4(in_a_pos, 0.0, 1.0);
-    vec4 _e21 = gen_gl_Position;
-    vec2 _e23 = out_v_uv;
-    int _e25 = out_v_id;
-    arrays_vs_out _tmp_return = arrays_vs_out(_e21, _e23, _e25);
+    vec4 _e19 = gen_gl_Position;
+    vec2 _e20 = out_v_uv;
+    int _e21 = out_v_id;
+    arrays_vs_out _tmp_return = arrays_vs_out(_e19, _e20, _e21);
     gl_Position = _tmp_return.gen_gl_Position;
     v_uv = _tmp_return.v_uv;
     v_id = _tmp_return.v_id;

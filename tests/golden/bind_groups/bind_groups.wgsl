@@ -34,11 +34,11 @@ fn material_vs(@location(0) a_pos: vec3<f32>, @location(1) a_uv: vec2<f32>) -> m
 
     v_uv = a_uv;
     let _e6 = uniforms.u_view_proj;
-    let _e9 = uniforms.u_model;
-    gl_Position = ((_e6 * _e9) * vec4<f32>(a_pos, 1f));
-    let _e15 = gl_Position;
-    let _e26 = v_uv;
-    return material_vs_out(vec4<f32>(_e15.x, -(_e15.y), ((_e15.z + _e15.w) * 0.5f), _e15.w), _e26);
+    let _e8 = uniforms.u_model;
+    gl_Position = ((_e6 * _e8) * vec4<f32>(a_pos, 1f));
+    let _e13 = gl_Position;
+    let _e23 = v_uv;
+    return material_vs_out(vec4<f32>(_e13.x, -(_e13.y), ((_e13.z + _e13.w) * 0.5f), _e13.w), _e23);
 }
 
 @fragment 
@@ -48,6 +48,6 @@ fn material_fs(@location(0) v_uv_1: vec2<f32>) -> material_fs_out {
     let _e4 = textureSample(albedo, albedo_sampler, v_uv_1);
     let _e7 = set1_uniforms.u_tint;
     f_color = (_e4 * _e7);
-    let _e10 = f_color;
-    return material_fs_out(_e10);
+    let _e9 = f_color;
+    return material_fs_out(_e9);
 }

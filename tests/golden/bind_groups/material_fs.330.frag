@@ -15,8 +15,8 @@ void main() {
     vec4 _e4 = texture(albedo, vec2(in_v_uv));
     vec4 _e6 = u_tint;
     out_f_color = (_e4 * _e6);
-    vec4 _e9 = out_f_color;
-    material_fs_out _tmp_return = material_fs_out(_e9);
+    vec4 _e8 = out_f_color;
+    material_fs_out _tmp_return = material_fs_out(_e8);
     f_color = _tmp_return.f_color;
     return;
 }

@@ -24,9 +24,9 @@ void main() {
     mat4x4 _e5 = u_view_proj;
     mat4x4 _e7 = u_model;
     gen_gl_Position = ((_e5 * _e7) * vec4(in_a_pos, 1.0));
-    vec4 _e13 = gen_gl_Position;
-    vec2 _e15 = out_v_uv;
-    material_vs_out _tmp_return = material_vs_out(_e13, _e15);
+    vec4 _e12 = gen_gl_Position;
+    vec2 _e13 = out_v_uv;
+    material_vs_out _tmp_return = material_vs_out(_e12, _e13);
     gl_Position = _tmp_return.gen_gl_Position;
     v_uv = _tmp_return.v_uv;
     return;

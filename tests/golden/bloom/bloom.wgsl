@@ -56,9 +56,9 @@ fn fullscreen_vs(@builtin(vertex_index) VertexID: u32) -> fullscreen_vs_out {
     let corner = vec2<f32>(f32(((_e1 << u32(1i)) & 2i)), f32((_e1 & 2i)));
     v_uv = corner;
     gl_Position = vec4<f32>(((corner * 2f) - vec2(1f)), 0f, 1f);
-    let _e23 = gl_Position;
-    let _e34 = v_uv;
-    return fullscreen_vs_out(vec4<f32>(_e23.x, -(_e23.y), ((_e23.z + _e23.w) * 0.5f), _e23.w), _e34);
+    let _e20 = gl_Position;
+    let _e30 = v_uv;
+    return fullscreen_vs_out(vec4<f32>(_e20.x, -(_e20.y), ((_e20.z + _e20.w) * 0.5f), _e20.w), _e30);
 }
 
 @fragment 
@@ -69,20 +69,20 @@ fn bright_fs(@location(0) v_uv_1: vec2<f32>) -> bright_fs_out {
     let _e3 = textureSample(hdr_scene, hdr_scene_sampler, v_uv_1);
     let c_1 = _e3.xyz;
     let _e8 = uniforms.u_threshold.x;
-    let _e12 = uniforms.u_threshold.y;
-    let knee = (_e8 * _e12);
-    let _e14 = luminance(c_1);
-    let _e19 = uniforms.u_threshold.x;
-    soft = clamp(((_e14 - _e19) + knee), 0f, (2f * knee));
-    let _e28 = soft;
-    let _e30 = soft;
-    soft = ((_e28 * _e30) / ((4f * knee) + 0.00001f));
-    let _e38 = soft;
-    let _e42 = uniforms.u_threshold.x;
-    let contribution = (max(_e38, (_e14 - _e42)) / max(_e14, 0.00001f));
+    let _e11 = uniforms.u_threshold.y;
+    let knee = (_e8 * _e11);
+    let _e13 = luminance(c_1);
+    let _e17 = uniforms.u_threshold.x;
+    soft = clamp(((_e13 - _e17) + knee), 0f, (2f * knee));
+    let _e24 = soft;
+    let _e25 = soft;
+    soft = ((_e24 * _e25) / ((4f * knee) + 0.00001f));
+    let _e32 = soft;
+    let _e35 = uniforms.u_threshold.x;
+    let contribution = (max(_e32, (_e13 - _e35)) / max(_e13, 0.00001f));
     f_color = vec4<f32>((c_1 * contribution), 1f);
-    let _e53 = f_color;
-    return bright_fs_out(_e53);
+    let _e44 = f_color;
+    return bright_fs_out(_e44);
 }
 
 @fragment 
@@ -94,33 +94,33 @@ fn blur_fs(@location(0) v_uv_2: vec2<f32>) -> blur_fs_out {
     let _e3 = uniforms.u_direction;
     let _e6 = textureDimensions(bloom_src, 0i);
     let texel = (_e3 / vec2<f32>(vec2<i32>(_e6)));
-    let _e13 = textureSample(bloom_src, bloom_src_sampler, v_uv_2);
-    sum = (_e13.xyz * WEIGHTS[0]);
+    let _e12 = textureSample(bloom_src, bloom_src_sampler, v_uv_2);
+    sum = (_e12.xyz * WEIGHTS[0]);
     i = 1i;
     loop {
-        let _e21 = i;
-        if !((_e21 < 5i)) {
+        let _e20 = i;
+        if !((_e20 < 5i)) {
             break;
         }
-        let _e25 = i;
-        let off = (texel * f32(_e25));
-        let _e32 = textureSample(bloom_src, bloom_src_sampler, (v_uv_2 + off));
-        let _e36 = i;
-        let _e39 = sum;
-        sum = (_e39 + (_e32.xyz * WEIGHTS[_e36]));
-        let _e45 = textureSample(bloom_src, bloom_src_sampler, (v_uv_2 - off));
-        let _e49 = i;
-        let _e52 = sum;
-        sum = (_e52 + (_e45.xyz * WEIGHTS[_e49]));
+        let _e23 = i;
+        let off = (texel * f32(_e23));
+        let _e27 = textureSample(bloom_src, bloom_src_sampler, (v_uv_2 + off));
+        let _e29 = i;
+        let _e32 = sum;
+        sum = (_e32 + (_e27.xyz * WEIGHTS[_e29]));
+        let _e35 = textureSample(bloom_src, bloom_src_sampler, (v_uv_2 - off));
+        let _e37 = i;
+        let _e40 = sum;
+        sum = (_e40 + (_e35.xyz * WEIGHTS[_e37]));
         continuing {
-            let _e54 = i;
-            i = (_e54 + 1i);
+            let _e42 = i;
+            i = (_e42 + 1i);
         }
     }
-    let _e59 = sum;
-    f_color_1 = vec4<f32>(_e59, 1f);
-    let _e63 = f_color_1;
-    return blur_fs_out(_e63);
+    let _e45 = sum;
+    f_color_1 = vec4<f32>(_e45, 1f);
+    let _e48 = f_color_1;
+    return blur_fs_out(_e48);
 }
 
 @fragment 
@@ -131,9 +131,9 @@ fn composite_fs(@location(0) v_uv_3: vec2<f32>) -> composite_fs_out {
     let _e7 = textureSample(bloom_src, bloom_src_sampler, v_uv_3);
     let _e11 = uniforms.u_bloom_strength;
     let hdr = (_e3.xyz + (_e7.xyz * _e11));
-    let _e16 = uniforms.u_exposure;
-    let _e18 = aces((hdr * _e16));
-    f_color_2 = vec4<f32>(pow(_e18, vec3((1f / 2.2f))), 1f);
-    let _e28 = f_color_2;
-    return composite_fs_out(_e28);
+    let _e15 = uniforms.u_exposure;
+    let _e17 = aces((hdr * _e15));
+    f_color_2 = vec4<f32>(pow(_e17, vec3((1f / 2.2f))), 1f);
+    let _e25 = f_color_2;
+    return composite_fs_out(_e25);
 }

@@ -33,8 +33,8 @@ void main() {
     float _e14 = u_exposure;
     vec3 _e16 = aces((hdr * _e14));
     out_f_color = vec4(pow(_e16, vec3((1.0 / 2.2))), 1.0);
-    vec4 _e26 = out_f_color;
-    composite_fs_out _tmp_return = composite_fs_out(_e26);
+    vec4 _e24 = out_f_color;
+    composite_fs_out _tmp_return = composite_fs_out(_e24);
     f_color = _tmp_return.f_color;
     return;
 }

@@ -13,9 +13,9 @@ void main() {
     vec2 corner = vec2(float(((_e1 << uint(1)) & 2)), float((_e1 & 2)));
     out_v_uv = corner;
     gen_gl_Position = vec4(((corner * 2.0) - vec2(1.0)), 0.0, 1.0);
-    vec4 _e23 = gen_gl_Position;
-    vec2 _e25 = out_v_uv;
-    fullscreen_vs_out _tmp_return = fullscreen_vs_out(_e23, _e25);
+    vec4 _e20 = gen_gl_Position;
+    vec2 _e21 = out_v_uv;
+    fullscreen_vs_out _tmp_return = fullscreen_vs_out(_e20, _e21);
     gl_Position = _tmp_return.gen_gl_Position;
     v_uv = _tmp_return.v_uv;
     return;

@@ -52,9 +52,9 @@ var cascade_maps_2_sampler: sampler_comparison;
 
 fn shadow_clip() -> vec4<f32> {
     let _e2 = uniforms.u_light_vp;
-    let _e5 = uniforms.u_model;
-    let _e7 = a_pos;
-    return (_e2 * (_e5 * vec4<f32>(_e7, 1f)));
+    let _e4 = uniforms.u_model;
+    let _e6 = a_pos;
+    return (_e2 * (_e4 * vec4<f32>(_e6, 1f)));
 }
 
 fn world_position() -> vec4<f32> {
@@ -80,20 +80,20 @@ fn pick_cascade(p: vec4<f32>) -> i32 {
     let margin = (2f / f32(vec2<i32>(_e4).x));
     i = 0i;
     loop {
-        let _e14 = i;
-        if !((_e14 < (CASCADES - 1i))) {
+        let _e13 = i;
+        if !((_e13 < (CASCADES - 1i))) {
             break;
         }
-        let _e20 = i;
-        let _e22 = uniforms.u_cascade_vp[_e20];
-        let _e24 = to_map((_e22 * p));
-        if (((((_e24.x > margin) && (_e24.y > margin)) && (_e24.x < (1f - margin))) && (_e24.y < (1f - margin))) && (_e24.z < 1f)) {
-            let _e45 = i;
-            return _e45;
+        let _e18 = i;
+        let _e20 = uniforms.u_cascade_vp[_e18];
+        let _e22 = to_map((_e20 * p));
+        if (((((_e22.x > margin) && (_e22.y > margin)) && (_e22.x < (1f - margin))) && (_e22.y < (1f - margin))) && (_e22.z < 1f)) {
+            let _e40 = i;
+            return _e40;
         }
         continuing {
-            let _e46 = i;
-            i = (_e46 + 1i);
+            let _e41 = i;
+            i = (_e41 + 1i);
         }
     }
     return (CASCADES - 1i);
@@ -139,18 +139,18 @@ fn sun_shade(visibility: f32) -> vec3<f32> {
     let n_1 = normalize(_e2);
     let _e6 = uniforms.u_light_dir;
     let l = normalize(_e6);
-    let _e10 = uniforms.u_cam_pos;
-    let _e12 = v_world_pos_1;
-    let v = normalize((_e10 - _e12));
+    let _e9 = uniforms.u_cam_pos;
+    let _e11 = v_world_pos_1;
+    let v = normalize((_e9 - _e11));
     let ndotl_1 = max(dot(n_1, l), 0f);
     let lit = select(visibility, 0f, (ndotl_1 < 0.05f));
     let h = normalize((l + v));
-    let _e30 = surface_gloss();
-    let spec = ((pow(max(dot(n_1, h), 0f), 48f) * lit) * _e30);
+    let _e27 = surface_gloss();
+    let spec = ((pow(max(dot(n_1, h), 0f), 48f) * lit) * _e27);
     let sun = vec3<f32>(1.3f, 1.15f, 0.9f);
-    let _e36 = surface_albedo();
-    let _e37 = hemisphere(n_1);
-    return ((_e36 * (_e37 + (sun * (ndotl_1 * lit)))) + vec3(spec));
+    let _e33 = surface_albedo();
+    let _e34 = hemisphere(n_1);
+    return ((_e33 * (_e34 + (sun * (ndotl_1 * lit)))) + vec3(spec));
 }
 
 @vertex 
@@ -160,8 +160,8 @@ fn cascades_shadow_vs(@location(0) in_a_pos: vec3<f32>) -> cascades_shadow_vs_ou
     a_pos = in_a_pos;
     let _e3 = shadow_clip();
     gl_Position = _e3;
-    let _e5 = gl_Position;
-    return cascades_shadow_vs_out(vec4<f32>(_e5.x, -(_e5.y), ((_e5.z + _e5.w) * 0.5f), _e5.w));
+    let _e4 = gl_Position;
+    return cascades_shadow_vs_out(vec4<f32>(_e4.x, -(_e4.y), ((_e4.z + _e4.w) * 0.5f), _e4.w));
 }
 
 @fragment 
@@ -169,8 +169,8 @@ fn cascades_shadow_fs() -> cascades_shadow_fs_out {
     var f_FragColor: vec4<f32>;
 
     f_FragColor = vec4(1f);
-    let _e4 = f_FragColor;
-    return cascades_shadow_fs_out(_e4);
+    let _e3 = f_FragColor;
+    return cascades_shadow_fs_out(_e3);
 }
 
 @vertex 
@@ -186,12 +186,12 @@ fn cascades_main_vs(@location(0) in_a_pos_1: vec3<f32>, @location(1) in_a_normal
     let _e8 = world_normal();
     v_world_normal = _e8;
     let _e12 = uniforms.u_proj;
-    let _e15 = uniforms.u_view;
-    gl_Position_1 = (_e12 * (_e15 * _e4));
-    let _e19 = gl_Position_1;
-    let _e30 = v_world_pos;
-    let _e32 = v_world_normal;
-    return cascades_main_vs_out(vec4<f32>(_e19.x, -(_e19.y), ((_e19.z + _e19.w) * 0.5f), _e19.w), _e30, _e32);
+    let _e14 = uniforms.u_view;
+    gl_Position_1 = (_e12 * (_e14 * _e4));
+    let _e17 = gl_Position_1;
+    let _e27 = v_world_pos;
+    let _e28 = v_world_normal;
+    return cascades_main_vs_out(vec4<f32>(_e17.x, -(_e17.y), ((_e17.z + _e17.w) * 0.5f), _e17.w), _e27, _e28);
 }
 
 @fragment 
@@ -201,33 +201,33 @@ fn cascades_main_fs(@location(0) in_v_world_pos: vec3<f32>, @location(1) in_v_wo
 
     v_world_pos_1 = in_v_world_pos;
     v_world_normal_1 = in_v_world_normal;
-    let _e5 = v_world_pos_1;
-    let p_2 = vec4<f32>(_e5, 1f);
-    let _e8 = pick_cascade(p_2);
-    let _e12 = uniforms.u_cascade_vp[_e8];
-    let _e14 = to_map((_e12 * p_2));
-    let _e15 = sun_ndotl();
-    let _e16 = slope_bias(_e15);
-    let bias = (_e16 * f32((1i << u32(_e8))));
-    let _e22 = _e14.xy;
-    let _e24 = (_e14.z - bias);
-    switch clamp(_e8, 0i, 2i) {
+    let _e4 = v_world_pos_1;
+    let p_2 = vec4<f32>(_e4, 1f);
+    let _e7 = pick_cascade(p_2);
+    let _e11 = uniforms.u_cascade_vp[_e7];
+    let _e13 = to_map((_e11 * p_2));
+    let _e14 = sun_ndotl();
+    let _e15 = slope_bias(_e14);
+    let bias = (_e15 * f32((1i << u32(_e7))));
+    let _e21 = _e13.xy;
+    let _e23 = (_e13.z - bias);
+    switch clamp(_e7, 0i, 2i) {
         case 0: {
-            let _e30 = textureSampleCompare(cascade_maps_0_, cascade_maps_0_sampler, _e22, _e24);
-            texel = _e30;
+            let _e29 = textureSampleCompare(cascade_maps_0_, cascade_maps_0_sampler, _e21, _e23);
+            texel = _e29;
         }
         case 1: {
-            let _e34 = textureSampleCompare(cascade_maps_1_, cascade_maps_1_sampler, _e22, _e24);
-            texel = _e34;
+            let _e33 = textureSampleCompare(cascade_maps_1_, cascade_maps_1_sampler, _e21, _e23);
+            texel = _e33;
         }
         default: {
-            let _e38 = textureSampleCompare(cascade_maps_2_, cascade_maps_2_sampler, _e22, _e24);
-            texel = _e38;
+            let _e36 = textureSampleCompare(cascade_maps_2_, cascade_maps_2_sampler, _e21, _e23);
+            texel = _e36;
         }
     }
     let visibility_1 = texel;
-    let _e43 = sun_shade(visibility_1);
-    f_FragColor_1 = vec4<f32>(_e43, 1f);
-    let _e47 = f_FragColor_1;
-    return cascades_main_fs_out(_e47);
+    let _e39 = sun_shade(visibility_1);
+    f_FragColor_1 = vec4<f32>(_e39, 1f);
+    let _e41 = f_FragColor_1;
+    return cascades_main_fs_out(_e41);
 }

@@ -37,20 +37,20 @@ int pick_cascade(vec4 p) {
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            int _e45 = i;
-            i = (_e45 + 1);
+            int _e40 = i;
+            i = (_e40 + 1);
         }
         loop_init = false;
-        int _e14 = i;
-        if (!((_e14 < (CASCADES - 1)))) {
+        int _e13 = i;
+        if (!((_e13 < (CASCADES - 1)))) {
             break;
         }
-        int _e19 = i;
-        mat4x4 _e21 = u_cascade_vp[_e19];
-        vec3 _e23 = to_map((_e21 * p));
-        if ((((((_e23.x > margin) && (_e23.y > margin)) && (_e23.x < (1.0 - margin))) && (_e23.y < (1.0 - margin))) && (_e23.z < 1.0))) {
-            int _e44 = i;
-            return _e44;
+        int _e17 = i;
+        mat4x4 _e19 = u_cascade_vp[_e17];
+        vec3 _e21 = to_map((_e19 * p));
+        if ((((((_e21.x > margin) && (_e21.y > margin)) && (_e21.x < (1.0 - margin))) && (_e21.y < (1.0 - margin))) && (_e21.z < 1.0))) {
+            int _e39 = i;
+            return _e39;
         }
     }
     return (CASCADES - 1);
@@ -102,12 +102,12 @@ vec3 sun_shade(float visibility) {
     float ndotl_1 = max(dot(n_1, l), 0.0);
     float lit = ((ndotl_1 < 0.05) ? 0.0 : visibility);
     vec3 h = normalize((l + v));
-    float _e28 = surface_gloss();
-    float spec = ((pow(max(dot(n_1, h), 0.0), 48.0) * lit) * _e28);
+    float _e26 = surface_gloss();
+    float spec = ((pow(max(dot(n_1, h), 0.0), 48.0) * lit) * _e26);
     vec3 sun = vec3(1.3, 1.15, 0.9);
-    vec3 _e34 = surface_albedo();
-    vec3 _e35 = hemisphere(n_1);
-    return ((_e34 * (_e35 + (sun * (ndotl_1 * lit)))) + vec3(spec));
+    vec3 _e32 = surface_albedo();
+    vec3 _e33 = hemisphere(n_1);
+    return ((_e32 * (_e33 + (sun * (ndotl_1 * lit)))) + vec3(spec));
 }
 
 void main() {
@@ -117,38 +117,38 @@ void main() {
     float texel = 0.0;
     io_v_world_pos = in_v_world_pos;
     io_v_world_normal = in_v_world_normal;
-    vec3 _e5 = io_v_world_pos;
-    vec4 p_2 = vec4(_e5, 1.0);
-    int _e8 = pick_cascade(p_2);
-    mat4x4 _e11 = u_cascade_vp[_e8];
-    vec3 _e13 = to_map((_e11 * p_2));
-    float _e14 = sun_ndotl();
-    float _e15 = slope_bias(_e14);
-    float bias = (_e15 * float((1 << uint(_e8))));
-    vec2 _e21 = _e13.xy;
-    float _e23 = (_e13.z - bias);
-    switch(min(max(_e8, 0), 2)) {
+    vec3 _e4 = io_v_world_pos;
+    vec4 p_2 = vec4(_e4, 1.0);
+    int _e7 = pick_cascade(p_2);
+    mat4x4 _e10 = u_cascade_vp[_e7];
+    vec3 _e12 = to_map((_e10 * p_2));
+    float _e13 = sun_ndotl();
+    float _e14 = slope_bias(_e13);
+    float bias = (_e14 * float((1 << uint(_e7))));
+    vec2 _e20 = _e12.xy;
+    float _e22 = (_e12.z - bias);
+    switch(min(max(_e7, 0), 2)) {
         case 0: {
-            float _e29 = texture(cascade_maps_0, vec3(_e21, _e23));
-            texel = _e29;
+            float _e28 = texture(cascade_maps_0, vec3(_e20, _e22));
+            texel = _e28;
             break;
         }
         case 1: {
-            float _e33 = texture(cascade_maps_1, vec3(_e21, _e23));
-            texel = _e33;
+            float _e32 = texture(cascade_maps_1, vec3(_e20, _e22));
+            texel = _e32;
             break;
         }
         default: {
-            float _e37 = texture(cascade_maps_2, vec3(_e21, _e23));
-            texel = _e37;
+            float _e35 = texture(cascade_maps_2, vec3(_e20, _e22));
+            texel = _e35;
             break;
         }
     }
     float visibility_1 = texel;
-    vec3 _e42 = sun_shade(visibility_1);
-    out_f_FragColor = vec4(_e42, 1.0);
-    vec4 _e46 = out_f_FragColor;
-    cascades_main_fs_out _tmp_return = cascades_main_fs_out(_e46);
+    vec3 _e38 = sun_shade(visibility_1);
+    out_f_FragColor = vec4(_e38, 1.0);
+    vec4 _e40 = out_f_FragColor;
+    cascades_main_fs_out _tmp_return = cascades_main_fs_out(_e40);
     f_FragColor = _tmp_return.f_FragColor;
     return;
 }

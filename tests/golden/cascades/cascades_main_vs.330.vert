@@ -46,10 +46,10 @@ void main() {
     mat4x4 _e11 = u_proj;
     mat4x4 _e13 = u_view;
     gen_gl_Position = (_e11 * (_e13 * _e4));
-    vec4 _e17 = gen_gl_Position;
-    vec3 _e19 = out_v_world_pos;
-    vec3 _e21 = out_v_world_normal;
-    cascades_main_vs_out _tmp_return = cascades_main_vs_out(_e17, _e19, _e21);
+    vec4 _e16 = gen_gl_Position;
+    vec3 _e17 = out_v_world_pos;
+    vec3 _e18 = out_v_world_normal;
+    cascades_main_vs_out _tmp_return = cascades_main_vs_out(_e16, _e17, _e18);
     gl_Position = _tmp_return.gen_gl_Position;
     v_world_pos = _tmp_return.v_world_pos;
     v_world_normal = _tmp_return.v_world_normal;

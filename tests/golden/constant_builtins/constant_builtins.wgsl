@@ -25,9 +25,9 @@ fn constant_builtins_vs(@location(0) a_pos: vec3<f32>) -> constant_builtins_vs_o
 
     v_dir = (TILT * a_pos);
     gl_Position = vec4<f32>(a_pos, 1f);
-    let _e8 = gl_Position;
-    let _e19 = v_dir;
-    return constant_builtins_vs_out(vec4<f32>(_e8.x, -(_e8.y), ((_e8.z + _e8.w) * 0.5f), _e8.w), _e19);
+    let _e7 = gl_Position;
+    let _e17 = v_dir;
+    return constant_builtins_vs_out(vec4<f32>(_e7.x, -(_e7.y), ((_e7.z + _e7.w) * 0.5f), _e7.w), _e17);
 }
 
 @fragment 
@@ -38,6 +38,6 @@ fn constant_builtins_fs(@location(0) v_dir_1: vec3<f32>) -> constant_builtins_fs
     let sun = smoothstep(HALF_ANGLE, 1f, d);
     let bits = (f32((((MASK.x | MASK.y) | MASK.z) & i32((SEED & 63u)))) / 64f);
     f_color = vec4<f32>(((SKY + vec3(sun)) + vec3(((bits * GOLDEN) * 0f))), (f32((WHITE >> 24u)) / 255f));
-    let _e41 = f_color;
-    return constant_builtins_fs_out(_e41);
+    let _e38 = f_color;
+    return constant_builtins_fs_out(_e38);
 }

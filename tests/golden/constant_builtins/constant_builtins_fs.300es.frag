@@ -24,8 +24,8 @@ void main() {
     float sun = smoothstep(HALF_ANGLE, 1.0, d);
     float bits = (float((((MASK.x | MASK.y) | MASK.z) & int((SEED & 63u)))) / 64.0);
     out_f_color = vec4(((SKY + vec3(sun)) + vec3(((bits * GOLDEN) * 0.0))), (float((WHITE >> 24u)) / 255.0));
-    vec4 _e41 = out_f_color;
-    constant_builtins_fs_out _tmp_return = constant_builtins_fs_out(_e41);
+    vec4 _e38 = out_f_color;
+    constant_builtins_fs_out _tmp_return = constant_builtins_fs_out(_e38);
     f_color = _tmp_return.f_color;
     return;
 }

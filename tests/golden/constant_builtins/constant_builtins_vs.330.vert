@@ -14,9 +14,9 @@ void main() {
     vec4 gen_gl_Position = vec4(0.0);
     out_v_dir = (TILT * in_a_pos);
     gen_gl_Position = vec4(in_a_pos, 1.0);
-    vec4 _e8 = gen_gl_Position;
-    vec3 _e10 = out_v_dir;
-    constant_builtins_vs_out _tmp_return = constant_builtins_vs_out(_e8, _e10);
+    vec4 _e7 = gen_gl_Position;
+    vec3 _e8 = out_v_dir;
+    constant_builtins_vs_out _tmp_return = constant_builtins_vs_out(_e7, _e8);
     gl_Position = _tmp_return.gen_gl_Position;
     v_dir = _tmp_return.v_dir;
     return;

@@ -40,9 +40,9 @@ fn flow_vs(@location(0) a_pos: vec2<f32>) -> flow_vs_out {
 
     v_uv = ((a_pos * 0.5f) + vec2(0.5f));
     gl_Position = vec4<f32>(a_pos, 0f, 1f);
-    let _e12 = gl_Position;
-    let _e23 = v_uv;
-    return flow_vs_out(vec4<f32>(_e12.x, -(_e12.y), ((_e12.z + _e12.w) * 0.5f), _e12.w), _e23);
+    let _e10 = gl_Position;
+    let _e19 = v_uv;
+    return flow_vs_out(vec4<f32>(_e10.x, -(_e10.y), ((_e10.z + _e10.w) * 0.5f), _e10.w), _e19);
 }
 
 @fragment 
@@ -57,49 +57,49 @@ fn flow_fs(@location(0) v_uv_1: vec2<f32>) -> flow_fs_out {
     acc = 0f;
     i = 0i;
     loop {
-        let _e6 = i;
-        let _e9 = uniforms.u_steps;
-        if !((_e6 < _e9)) {
+        let _e5 = i;
+        let _e8 = uniforms.u_steps;
+        if !((_e5 < _e8)) {
             break;
         }
+        let _e12 = i;
+        i = (_e12 + 1i);
         let _e14 = i;
-        i = (_e14 + 1i);
-        let _e17 = i;
-        if ((_e17 % 2i) == 0i) {
+        if ((_e14 % 2i) == 0i) {
             continue;
         }
-        let _e25 = i;
-        let _e28 = acc;
-        acc = (_e28 + (1f / f32(_e25)));
-        let _e31 = acc;
-        let _e34 = uniforms.u_threshold;
-        if (_e31 > _e34) {
+        let _e19 = i;
+        let _e22 = acc;
+        acc = (_e22 + (1f / f32(_e19)));
+        let _e24 = acc;
+        let _e26 = uniforms.u_threshold;
+        if (_e24 > _e26) {
             break;
         }
     }
     count = 0u;
     k = 2i;
     loop {
-        let _e41 = k;
-        if !((_e41 < 7i)) {
+        let _e32 = k;
+        if !((_e32 < 7i)) {
             break;
         }
-        let _e46 = k;
-        let _e48 = count;
-        count = (_e48 + u32(_e46));
+        let _e35 = k;
+        let _e37 = count;
+        count = (_e37 + u32(_e35));
         continuing {
-            let _e50 = k;
-            k = (_e50 + 1i);
+            let _e39 = k;
+            k = (_e39 + 1i);
         }
     }
-    let _e55 = band(v_uv_1.x);
-    level = (f32(_e55) / 3f);
-    let _e66 = level;
-    level = (_e66 * select(0.5f, 1f, (v_uv_1.y > 0.5f)));
-    let _e70 = acc;
-    let _e72 = level;
-    let _e74 = count;
-    f_color = vec4<f32>(_e70, _e72, (f32(_e74) / 20f), 1f);
-    let _e81 = f_color;
-    return flow_fs_out(_e81);
+    let _e43 = band(v_uv_1.x);
+    level = (f32(_e43) / 3f);
+    let _e51 = level;
+    level = (_e51 * select(0.5f, 1f, (v_uv_1.y > 0.5f)));
+    let _e54 = acc;
+    let _e55 = level;
+    let _e56 = count;
+    f_color = vec4<f32>(_e54, _e55, (f32(_e56) / 20f), 1f);
+    let _e61 = f_color;
+    return flow_fs_out(_e61);
 }

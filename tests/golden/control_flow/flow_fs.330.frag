@@ -36,23 +36,23 @@ void main() {
     acc = 0.0;
     i = 0;
     while(true) {
-        int _e6 = i;
-        int _e8 = u_steps;
-        if (!((_e6 < _e8))) {
+        int _e5 = i;
+        int _e7 = u_steps;
+        if (!((_e5 < _e7))) {
             break;
         }
+        int _e11 = i;
+        i = (_e11 + 1);
         int _e13 = i;
-        i = (_e13 + 1);
-        int _e16 = i;
-        if (((_e16 - (2 * (_e16 / 2))) == 0)) {
+        if (((_e13 - (2 * (_e13 / 2))) == 0)) {
             continue;
         }
-        int _e26 = i;
-        float _e29 = acc;
-        acc = (_e29 + (1.0 / float(_e26)));
-        float _e32 = acc;
-        float _e34 = u_threshold;
-        if ((_e32 > _e34)) {
+        int _e20 = i;
+        float _e23 = acc;
+        acc = (_e23 + (1.0 / float(_e20)));
+        float _e25 = acc;
+        float _e27 = u_threshold;
+        if ((_e25 > _e27)) {
             break;
         }
     }
@@ -61,28 +61,28 @@ void main() {
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            int _e50 = k;
-            k = (_e50 + 1);
+            int _e40 = k;
+            k = (_e40 + 1);
         }
         loop_init = false;
-        int _e41 = k;
-        if (!((_e41 < 7))) {
+        int _e33 = k;
+        if (!((_e33 < 7))) {
             break;
         }
-        int _e46 = k;
-        uint _e48 = count;
-        count = (_e48 + uint(_e46));
+        int _e36 = k;
+        uint _e38 = count;
+        count = (_e38 + uint(_e36));
     }
-    int _e55 = band(in_v_uv.x);
-    level = (float(_e55) / 3.0);
-    float _e66 = level;
-    level = (_e66 * ((in_v_uv.y > 0.5) ? 1.0 : 0.5));
-    float _e70 = acc;
-    float _e72 = level;
-    uint _e74 = count;
-    out_f_color = vec4(_e70, _e72, (float(_e74) / 20.0), 1.0);
-    vec4 _e81 = out_f_color;
-    flow_fs_out _tmp_return = flow_fs_out(_e81);
+    int _e44 = band(in_v_uv.x);
+    level = (float(_e44) / 3.0);
+    float _e52 = level;
+    level = (_e52 * ((in_v_uv.y > 0.5) ? 1.0 : 0.5));
+    float _e55 = acc;
+    float _e56 = level;
+    uint _e57 = count;
+    out_f_color = vec4(_e55, _e56, (float(_e57) / 20.0), 1.0);
+    vec4 _e62 = out_f_color;
+    flow_fs_out _tmp_return = flow_fs_out(_e62);
     f_color = _tmp_return.f_color;
     return;
 }

@@ -36,21 +36,21 @@ float pcf_visibility(vec3 coord, float bias) {
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            int _e33 = i;
-            i = (_e33 + 1);
+            int _e29 = i;
+            i = (_e29 + 1);
         }
         loop_init = false;
-        int _e15 = i;
-        if (!((_e15 < PCF_TAPS))) {
+        int _e14 = i;
+        if (!((_e14 < PCF_TAPS))) {
             break;
         }
-        int _e22 = i;
-        float _e30 = texture(shadow_map, vec3((coord.xy + (PCF_OFFSETS[_e22] * texel)), (coord.z - bias)));
-        float _e31 = seen;
-        seen = (_e31 + _e30);
+        int _e19 = i;
+        float _e26 = texture(shadow_map, vec3((coord.xy + (PCF_OFFSETS[_e19] * texel)), (coord.z - bias)));
+        float _e27 = seen;
+        seen = (_e27 + _e26);
     }
-    float _e37 = seen;
-    return (_e37 / float(PCF_TAPS));
+    float _e32 = seen;
+    return (_e32 / float(PCF_TAPS));
 }
 
 float surface_gloss() {
@@ -89,12 +89,12 @@ vec3 sun_shade(float visibility) {
     float ndotl = max(dot(n_1, l), 0.0);
     float lit = ((ndotl < 0.05) ? 0.0 : visibility);
     vec3 h = normalize((l + v));
-    float _e28 = surface_gloss();
-    float spec = ((pow(max(dot(n_1, h), 0.0), 48.0) * lit) * _e28);
+    float _e26 = surface_gloss();
+    float spec = ((pow(max(dot(n_1, h), 0.0), 48.0) * lit) * _e26);
     vec3 sun = vec3(1.3, 1.15, 0.9);
-    vec3 _e34 = surface_albedo();
-    vec3 _e35 = hemisphere(n_1);
-    return ((_e34 * (_e35 + (sun * (ndotl * lit)))) + vec3(spec));
+    vec3 _e32 = surface_albedo();
+    vec3 _e33 = hemisphere(n_1);
+    return ((_e32 * (_e33 + (sun * (ndotl * lit)))) + vec3(spec));
 }
 
 void main() {
@@ -104,13 +104,13 @@ void main() {
     io_v_world_pos = in_v_world_pos;
     io_v_world_normal = in_v_world_normal;
     mat4x4 _e5 = u_light_vp;
-    vec3 _e7 = io_v_world_pos;
-    vec3 _e11 = to_map((_e5 * vec4(_e7, 1.0)));
-    float _e14 = pcf_visibility(_e11, 0.0);
-    vec3 _e15 = sun_shade(_e14);
-    out_f_FragColor = vec4(_e15, 1.0);
-    vec4 _e19 = out_f_FragColor;
-    cull_main_fs_out _tmp_return = cull_main_fs_out(_e19);
+    vec3 _e6 = io_v_world_pos;
+    vec3 _e10 = to_map((_e5 * vec4(_e6, 1.0)));
+    float _e13 = pcf_visibility(_e10, 0.0);
+    vec3 _e14 = sun_shade(_e13);
+    out_f_FragColor = vec4(_e14, 1.0);
+    vec4 _e16 = out_f_FragColor;
+    cull_main_fs_out _tmp_return = cull_main_fs_out(_e16);
     f_FragColor = _tmp_return.f_FragColor;
     return;
 }

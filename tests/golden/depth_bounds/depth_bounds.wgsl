@@ -33,58 +33,58 @@ fn depth_bounds_cs(@builtin(local_invocation_index) LocalInvocationIndex: u32, @
 
     if (LocalInvocationIndex < 3u) {
         let _e7 = atomicExchange((&lo[LocalInvocationIndex]), 2147483647i);
-        let _e14 = atomicExchange((&hi[LocalInvocationIndex]), (-(2147483647i) - 1i));
+        let _e13 = atomicExchange((&hi[LocalInvocationIndex]), (-(2147483647i) - 1i));
     }
     if (LocalInvocationIndex == 0u) {
-        let _e19 = atomicExchange((&seen), 0u);
+        let _e17 = atomicExchange((&seen), 0u);
     }
     workgroupBarrier();
     let p = vec2<i32>(GlobalInvocationID.xy);
-    let _e27 = view.size.x;
-    let _e33 = view.size.y;
-    if ((p.x < _e27) && (p.y < _e33)) {
-        let _e37 = textureLoad(depth, p);
-        let d = _e37.x;
+    let _e25 = view.size.x;
+    let _e30 = view.size.y;
+    if ((p.x < _e25) && (p.y < _e30)) {
+        let _e34 = textureLoad(depth, p);
+        let d = _e34.x;
         if (d < 1f) {
-            let _e47 = view.size;
-            let uv = ((vec2<f32>(p) + vec2(0.5f)) / vec2<f32>(_e47));
+            let _e43 = view.size;
+            let uv = ((vec2<f32>(p) + vec2(0.5f)) / vec2<f32>(_e43));
             let ndc = vec4<f32>(((uv * 2f) - vec2(1f)), ((d * 2f) - 1f), 1f);
-            let _e63 = view.inv_view_proj;
-            let world = (_e63 * ndc);
-            let _e67 = view.light_view;
-            let light = (_e67 * vec4<f32>((world.xyz / vec3(world.w)), 1f));
+            let _e54 = view.inv_view_proj;
+            let world = (_e54 * ndc);
+            let _e57 = view.light_view;
+            let light = (_e57 * vec4<f32>((world.xyz / vec3(world.w)), 1f));
             i = 0i;
             loop {
-                let _e78 = i;
-                if !((_e78 < 3i)) {
+                let _e67 = i;
+                if !((_e67 < 3i)) {
                     break;
                 }
-                let _e83 = i;
-                let _e86 = i;
-                let _e88 = key(light[_e86]);
-                let _e89 = atomicMin((&lo[_e83]), _e88);
-                let _e92 = i;
-                let _e95 = i;
-                let _e97 = key(light[_e95]);
-                let _e98 = atomicMax((&hi[_e92]), _e97);
+                let _e70 = i;
+                let _e72 = i;
+                let _e74 = key(light[_e72]);
+                let _e75 = atomicMin((&lo[_e70]), _e74);
+                let _e76 = i;
+                let _e78 = i;
+                let _e80 = key(light[_e78]);
+                let _e81 = atomicMax((&hi[_e76]), _e80);
                 continuing {
-                    let _e99 = i;
-                    i = (_e99 + 1i);
+                    let _e82 = i;
+                    i = (_e82 + 1i);
                 }
             }
-            let _e104 = atomicAdd((&seen), 1u);
+            let _e85 = atomicAdd((&seen), 1u);
         }
     }
     workgroupBarrier();
     if (LocalInvocationIndex < 3u) {
-        let _e113 = atomicLoad((&lo[LocalInvocationIndex]));
-        let _e114 = atomicMin((&bounds.lo[LocalInvocationIndex]), _e113);
-        let _e120 = atomicLoad((&hi[LocalInvocationIndex]));
-        let _e121 = atomicMax((&bounds.hi[LocalInvocationIndex]), _e120);
+        let _e91 = atomicLoad((&lo[LocalInvocationIndex]));
+        let _e92 = atomicMin((&bounds.lo[LocalInvocationIndex]), _e91);
+        let _e96 = atomicLoad((&hi[LocalInvocationIndex]));
+        let _e97 = atomicMax((&bounds.hi[LocalInvocationIndex]), _e96);
     }
     if (LocalInvocationIndex == 0u) {
-        let _e127 = atomicLoad((&seen));
-        let _e128 = atomicAdd((&bounds.count), _e127);
+        let _e100 = atomicLoad((&seen));
+        let _e101 = atomicAdd((&bounds.count), _e100);
     }
     return;
 }

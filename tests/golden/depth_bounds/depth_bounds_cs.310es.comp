@@ -46,62 +46,62 @@ void main() {
     int i = 0;
     if ((LocalInvocationIndex < 3u)) {
         int _e7 = atomicExchange(lo[LocalInvocationIndex], 2147483647);
-        int _e14 = atomicExchange(hi[LocalInvocationIndex], (-(2147483647) - 1));
+        int _e13 = atomicExchange(hi[LocalInvocationIndex], (-(2147483647) - 1));
     }
     if ((LocalInvocationIndex == 0u)) {
-        uint _e19 = atomicExchange(seen, 0u);
+        uint _e17 = atomicExchange(seen, 0u);
     }
     memoryBarrierShared();
     barrier();
     ivec2 p = ivec2(GlobalInvocationID.xy);
-    int _e27 = view.size.x;
-    int _e33 = view.size.y;
-    if (((p.x < _e27) && (p.y < _e33))) {
-        vec4 _e37 = imageLoad(depth, p);
-        float d = _e37.x;
+    int _e25 = view.size.x;
+    int _e30 = view.size.y;
+    if (((p.x < _e25) && (p.y < _e30))) {
+        vec4 _e34 = imageLoad(depth, p);
+        float d = _e34.x;
         if ((d < 1.0)) {
-            ivec2 _e47 = view.size;
-            vec2 uv = ((vec2(p) + vec2(0.5)) / vec2(_e47));
+            ivec2 _e43 = view.size;
+            vec2 uv = ((vec2(p) + vec2(0.5)) / vec2(_e43));
             vec4 ndc = vec4(((uv * 2.0) - vec2(1.0)), ((d * 2.0) - 1.0), 1.0);
-            mat4x4 _e63 = view.inv_view_proj;
-            vec4 world = (_e63 * ndc);
-            mat4x4 _e67 = view.light_view;
-            vec4 light = (_e67 * vec4((world.xyz / vec3(world.w)), 1.0));
+            mat4x4 _e54 = view.inv_view_proj;
+            vec4 world = (_e54 * ndc);
+            mat4x4 _e57 = view.light_view;
+            vec4 light = (_e57 * vec4((world.xyz / vec3(world.w)), 1.0));
             i = 0;
             bool loop_init = true;
             while(true) {
                 if (!loop_init) {
-                    int _e99 = i;
-                    i = (_e99 + 1);
+                    int _e82 = i;
+                    i = (_e82 + 1);
                 }
                 loop_init = false;
-                int _e78 = i;
-                if (!((_e78 < 3))) {
+                int _e67 = i;
+                if (!((_e67 < 3))) {
                     break;
                 }
-                int _e83 = i;
-                int _e86 = i;
-                int _e88 = key(light[_e86]);
-                int _e89 = atomicMin(lo[_e83], _e88);
-                int _e92 = i;
-                int _e95 = i;
-                int _e97 = key(light[_e95]);
-                int _e98 = atomicMax(hi[_e92], _e97);
+                int _e70 = i;
+                int _e72 = i;
+                int _e74 = key(light[_e72]);
+                int _e75 = atomicMin(lo[_e70], _e74);
+                int _e76 = i;
+                int _e78 = i;
+                int _e80 = key(light[_e78]);
+                int _e81 = atomicMax(hi[_e76], _e80);
             }
-            uint _e104 = atomicAdd(seen, 1u);
+            uint _e85 = atomicAdd(seen, 1u);
         }
     }
     memoryBarrierShared();
     barrier();
     if ((LocalInvocationIndex < 3u)) {
-        int _e113 = atomicOr(lo[LocalInvocationIndex], 0);
-        int _e114 = atomicMin(bounds.lo[LocalInvocationIndex], _e113);
-        int _e120 = atomicOr(hi[LocalInvocationIndex], 0);
-        int _e121 = atomicMax(bounds.hi[LocalInvocationIndex], _e120);
+        int _e91 = atomicOr(lo[LocalInvocationIndex], 0);
+        int _e92 = atomicMin(bounds.lo[LocalInvocationIndex], _e91);
+        int _e96 = atomicOr(hi[LocalInvocationIndex], 0);
+        int _e97 = atomicMax(bounds.hi[LocalInvocationIndex], _e96);
     }
     if ((LocalInvocationIndex == 0u)) {
-        uint _e127 = atomicOr(seen, 0u);
-        uint _e128 = atomicAdd(bounds.count, _e127);
+        uint _e100 = atomicOr(seen, 0u);
+        uint _e101 = atomicAdd(bounds.count, _e100);
     }
     return;
 }

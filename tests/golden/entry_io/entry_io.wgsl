@@ -44,27 +44,27 @@ fn entry_io_vs(@location(0) in_a_pos: vec3<f32>, @location(1) a_uv: vec2<f32>, @
     gl_VertexID = i32(in_VertexID);
     v_uv.x = a_uv.x;
     v_uv.y = (1f - a_uv.y);
-    let _e17 = uniforms.u_scale;
-    let _e18 = v_uv;
-    v_uv = (_e18 * _e17);
-    let _e22 = v_uv.x;
-    set_tint(_e22);
-    let _e26 = a_pos.z;
-    v_shade = _e26;
-    let _e28 = lifted();
-    let _e31 = uniforms.u_scale;
-    gl_Position = vec4<f32>((_e28 * _e31), 1f);
-    let _e36 = gl_VertexID;
-    if (_e36 > 2i) {
-        let _e43 = a_pos.x;
-        let _e44 = gl_Position.w;
-        gl_Position.w = (_e44 + _e43);
+    let _e15 = uniforms.u_scale;
+    let _e16 = v_uv;
+    v_uv = (_e16 * _e15);
+    let _e19 = v_uv.x;
+    set_tint(_e19);
+    let _e22 = a_pos.z;
+    v_shade = _e22;
+    let _e24 = lifted();
+    let _e26 = uniforms.u_scale;
+    gl_Position = vec4<f32>((_e24 * _e26), 1f);
+    let _e29 = gl_VertexID;
+    if (_e29 > 2i) {
+        let _e34 = a_pos.x;
+        let _e35 = gl_Position.w;
+        gl_Position.w = (_e35 + _e34);
     }
-    let _e47 = gl_Position;
-    let _e58 = v_uv;
-    let _e60 = v_tint_1;
-    let _e62 = v_shade;
-    return entry_io_vs_out(vec4<f32>(_e47.x, -(_e47.y), ((_e47.z + _e47.w) * 0.5f), _e47.w), _e58, _e60, _e62);
+    let _e37 = gl_Position;
+    let _e47 = v_uv;
+    let _e49 = v_tint_1;
+    let _e50 = v_shade;
+    return entry_io_vs_out(vec4<f32>(_e37.x, -(_e37.y), ((_e37.z + _e37.w) * 0.5f), _e37.w), _e47, _e49, _e50);
 }
 
 @fragment 
@@ -73,16 +73,16 @@ fn entry_io_fs(@location(0) v_uv_1: vec2<f32>, @location(1) v_tint: vec3<f32>, @
     var f_extra: vec4<f32>;
 
     v_shade_1 = in_v_shade;
-    let _e7 = v_shade_1;
-    v_shade_1 = clamp(_e7, 0f, 1f);
+    let _e5 = v_shade_1;
+    v_shade_1 = clamp(_e5, 0f, 1f);
     if (FragCoord.x > 10f) {
-        let _e16 = v_shade_1;
-        v_shade_1 = (_e16 * 0.5f);
+        let _e13 = v_shade_1;
+        v_shade_1 = (_e13 * 0.5f);
         f_extra = vec4<f32>(v_uv_1, 0f, 1f);
     }
-    let _e24 = v_shade_1;
-    f_color = vec4<f32>((v_tint * _e24), 1f);
-    let _e29 = f_color;
-    let _e31 = f_extra;
-    return entry_io_fs_out(_e29, _e31);
+    let _e18 = v_shade_1;
+    f_color = vec4<f32>((v_tint * _e18), 1f);
+    let _e21 = f_color;
+    let _e22 = f_extra;
+    return entry_io_fs_out(_e21, _e22);
 }

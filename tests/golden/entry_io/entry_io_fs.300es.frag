@@ -23,18 +23,18 @@ void main() {
     vec4 out_f_color = vec4(0.0);
     vec4 out_f_extra = vec4(0.0);
     io_v_shade = in_v_shade;
-    float _e7 = io_v_shade;
-    io_v_shade = clamp(_e7, 0.0, 1.0);
+    float _e5 = io_v_shade;
+    io_v_shade = clamp(_e5, 0.0, 1.0);
     if ((FragCoord.x > 10.0)) {
-        float _e16 = io_v_shade;
-        io_v_shade = (_e16 * 0.5);
+        float _e13 = io_v_shade;
+        io_v_shade = (_e13 * 0.5);
         out_f_extra = vec4(in_v_uv, 0.0, 1.0);
     }
-    float _e24 = io_v_shade;
-    out_f_color = vec4((in_v_tint * _e24), 1.0);
-    vec4 _e29 = out_f_color;
-    vec4 _e31 = out_f_extra;
-    entry_io_fs_out _tmp_return = entry_io_fs_out(_e29, _e31);
+    float _e18 = io_v_shade;
+    out_f_color = vec4((in_v_tint * _e18), 1.0);
+    vec4 _e21 = out_f_color;
+    vec4 _e22 = out_f_extra;
+    entry_io_fs_out _tmp_return = entry_io_fs_out(_e21, _e22);
     f_color = _tmp_return.f_color;
     f_extra = _tmp_return.f_extra;
     return;

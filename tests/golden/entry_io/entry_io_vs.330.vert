@@ -41,27 +41,27 @@ void main() {
     gen_gl_VertexID = int(in_VertexID);
     out_v_uv.x = in_a_uv.x;
     out_v_uv.y = (1.0 - in_a_uv.y);
-    float _e16 = u_scale;
-    vec2 _e17 = out_v_uv;
-    out_v_uv = (_e17 * _e16);
-    float _e21 = out_v_uv.x;
-    set_tint(_e21);
-    float _e25 = io_a_pos.z;
-    out_v_shade = _e25;
-    vec3 _e27 = lifted();
-    float _e29 = u_scale;
-    gen_gl_Position = vec4((_e27 * _e29), 1.0);
-    int _e34 = gen_gl_VertexID;
-    if ((_e34 > 2)) {
-        float _e41 = io_a_pos.x;
-        float _e42 = gen_gl_Position.w;
-        gen_gl_Position.w = (_e42 + _e41);
+    float _e14 = u_scale;
+    vec2 _e15 = out_v_uv;
+    out_v_uv = (_e15 * _e14);
+    float _e18 = out_v_uv.x;
+    set_tint(_e18);
+    float _e21 = io_a_pos.z;
+    out_v_shade = _e21;
+    vec3 _e23 = lifted();
+    float _e24 = u_scale;
+    gen_gl_Position = vec4((_e23 * _e24), 1.0);
+    int _e27 = gen_gl_VertexID;
+    if ((_e27 > 2)) {
+        float _e32 = io_a_pos.x;
+        float _e33 = gen_gl_Position.w;
+        gen_gl_Position.w = (_e33 + _e32);
     }
-    vec4 _e45 = gen_gl_Position;
-    vec2 _e47 = out_v_uv;
-    vec3 _e49 = io_v_tint;
-    float _e51 = out_v_shade;
-    entry_io_vs_out _tmp_return = entry_io_vs_out(_e45, _e47, _e49, _e51);
+    vec4 _e35 = gen_gl_Position;
+    vec2 _e36 = out_v_uv;
+    vec3 _e38 = io_v_tint;
+    float _e39 = out_v_shade;
+    entry_io_vs_out _tmp_return = entry_io_vs_out(_e35, _e36, _e38, _e39);
     gl_Position = _tmp_return.gen_gl_Position;
     v_uv = _tmp_return.v_uv;
     v_tint = _tmp_return.v_tint;

@@ -40,9 +40,9 @@ fn enums_vs(@location(0) a_pos: vec2<f32>) -> enums_vs_out {
 
     v_uv = ((a_pos * 0.5f) + vec2(0.5f));
     gl_Position = vec4<f32>(a_pos, 0f, 1f);
-    let _e12 = gl_Position;
-    let _e23 = v_uv;
-    return enums_vs_out(vec4<f32>(_e12.x, -(_e12.y), ((_e12.z + _e12.w) * 0.5f), _e12.w), _e23);
+    let _e10 = gl_Position;
+    let _e19 = v_uv;
+    return enums_vs_out(vec4<f32>(_e10.x, -(_e10.y), ((_e10.z + _e10.w) * 0.5f), _e10.w), _e19);
 }
 
 @fragment 
@@ -53,9 +53,9 @@ fn enums_fs(@location(0) v_uv_1: vec2<f32>) -> enums_fs_out {
     let ch_1 = select(2i, 0i, (_e3 == 0i));
     let f_1 = select(2u, 8u, (ch_1 > 1i));
     let c_1 = vec4<f32>(v_uv_1, 0.5f, 1f);
-    let _e18 = attenuate(f_1, length(v_uv_1));
-    let _e20 = channel(c_1, ch_1);
-    f_color = vec4<f32>((_e20 * _e18), WEIGHTS[3], (f32(ch_1) / 3f), 1f);
-    let _e30 = f_color;
-    return enums_fs_out(_e30);
+    let _e17 = attenuate(f_1, length(v_uv_1));
+    let _e19 = channel(c_1, ch_1);
+    f_color = vec4<f32>((_e19 * _e17), WEIGHTS[3], (f32(ch_1) / 3f), 1f);
+    let _e27 = f_color;
+    return enums_fs_out(_e27);
 }

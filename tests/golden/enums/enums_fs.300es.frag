@@ -35,11 +35,11 @@ void main() {
     int ch_1 = ((_e2 == 0) ? 0 : 2);
     uint f_1 = ((ch_1 > 1) ? 8u : 2u);
     vec4 c_1 = vec4(in_v_uv, 0.5, 1.0);
-    float _e17 = attenuate(f_1, length(in_v_uv));
-    float _e19 = channel(c_1, ch_1);
-    out_f_color = vec4((_e19 * _e17), WEIGHTS[3], (float(ch_1) / 3.0), 1.0);
-    vec4 _e29 = out_f_color;
-    enums_fs_out _tmp_return = enums_fs_out(_e29);
+    float _e16 = attenuate(f_1, length(in_v_uv));
+    float _e18 = channel(c_1, ch_1);
+    out_f_color = vec4((_e18 * _e16), WEIGHTS[3], (float(ch_1) / 3.0), 1.0);
+    vec4 _e26 = out_f_color;
+    enums_fs_out _tmp_return = enums_fs_out(_e26);
     f_color = _tmp_return.f_color;
     return;
 }

@@ -32,9 +32,9 @@ fn for_arrays_vs(@location(0) a_pos: vec2<f32>) -> for_arrays_vs_out {
 
     v_uv = ((a_pos * 0.5f) + vec2(0.5f));
     gl_Position = vec4<f32>(a_pos, 0f, 1f);
-    let _e12 = gl_Position;
-    let _e23 = v_uv;
-    return for_arrays_vs_out(vec4<f32>(_e12.x, -(_e12.y), ((_e12.z + _e12.w) * 0.5f), _e12.w), _e23);
+    let _e10 = gl_Position;
+    let _e19 = v_uv;
+    return for_arrays_vs_out(vec4<f32>(_e10.x, -(_e10.y), ((_e10.z + _e10.w) * 0.5f), _e10.w), _e19);
 }
 
 @fragment 
@@ -58,67 +58,67 @@ fn for_arrays_fs(@location(0) v_uv_1: vec2<f32>) -> for_arrays_fs_out {
         if !((_e9 < _e8)) {
             break;
         }
-        let _e13 = i;
-        if (u32(_e13) >= 4u) {
+        let _e12 = i;
+        if (u32(_e12) >= 4u) {
             break;
         }
-        let _e20 = i;
-        let l = uniforms.u_lights[_e20];
+        let _e17 = i;
+        let l = uniforms.u_lights[_e17];
         let d = distance(v_uv_1, l.pos.xy);
-        let _e32 = i;
-        let _e39 = c;
-        c = (_e39 + (l.color.xyz * (1f / ((1f + f32(_e32)) + (d * d)))));
+        let _e26 = i;
+        let _e33 = c;
+        c = (_e33 + (l.color.xyz * (1f / ((1f + f32(_e26)) + (d * d)))));
         continuing {
-            let _e41 = i;
-            i = (_e41 + 1i);
+            let _e35 = i;
+            i = (_e35 + 1i);
         }
     }
     taps = array<f32, 3>();
     t_index = 0i;
     loop {
-        let _e49 = t_index;
-        if !((_e49 < 3i)) {
+        let _e42 = t_index;
+        if !((_e42 < 3i)) {
             break;
         }
-        let _e54 = t_index;
-        let k = KERNEL[_e54];
-        let _e58 = t_index;
-        taps[_e58] = (k * v_uv_1.y);
+        let _e46 = t_index;
+        let k = KERNEL[_e46];
+        let _e48 = t_index;
+        taps[_e48] = (k * v_uv_1.y);
         continuing {
-            let _e62 = t_index;
-            t_index = (_e62 + 1i);
+            let _e52 = t_index;
+            t_index = (_e52 + 1i);
         }
     }
     blur = 0f;
     t_index_1 = 0i;
     loop {
-        let _e70 = t_index_1;
-        if !((_e70 < 3i)) {
+        let _e56 = t_index_1;
+        if !((_e56 < 3i)) {
             break;
         }
-        let _e76 = t_index_1;
-        let _e78 = taps[_e76];
-        let _e79 = blur;
-        blur = (_e79 + _e78);
+        let _e59 = t_index_1;
+        let _e61 = taps[_e59];
+        let _e62 = blur;
+        blur = (_e62 + _e61);
         continuing {
-            let _e81 = t_index_1;
-            t_index_1 = (_e81 + 1i);
+            let _e64 = t_index_1;
+            t_index_1 = (_e64 + 1i);
         }
     }
     i_1 = 0i;
     loop {
-        let _e87 = i_1;
-        if !((_e87 < 3i)) {
+        let _e67 = i_1;
+        if !((_e67 < 3i)) {
             break;
         }
-        let _e93 = i_1;
-        let _e95 = taps[_e93];
-        let _e101 = i_1;
-        let _e105 = blur;
-        blur = (_e105 + (_e95 * KERNEL[((TAPS - 1i) - _e101)]));
+        let _e70 = i_1;
+        let _e72 = taps[_e70];
+        let _e75 = i_1;
+        let _e79 = blur;
+        blur = (_e79 + (_e72 * KERNEL[((TAPS - 1i) - _e75)]));
         continuing {
-            let _e107 = i_1;
-            i_1 = (_e107 + 1i);
+            let _e81 = i_1;
+            i_1 = (_e81 + 1i);
         }
     }
     ramp = 0f;
@@ -126,12 +126,12 @@ fn for_arrays_fs(@location(0) v_uv_1: vec2<f32>) -> for_arrays_fs_out {
         let j_count = select(0u, (u32(8i) - u32(5i)), (8i > 5i));
         i_2 = 1i;
         loop {
-            let _e125 = i_2;
-            if !((_e125 < 10i)) {
+            let _e94 = i_2;
+            if !((_e94 < 10i)) {
                 break;
             }
-            let _e129 = i_2;
-            let i_step = (u32(_e129) - u32(1i));
+            let _e97 = i_2;
+            let i_step = (u32(_e97) - u32(1i));
             if (i_step >= j_count) {
                 break;
             }
@@ -140,19 +140,19 @@ fn for_arrays_fs(@location(0) v_uv_1: vec2<f32>) -> for_arrays_fs_out {
             }
             let j = (5i + i32(i_step));
             let k_1 = KERNEL[i32(i_step)];
-            let _e145 = i_2;
-            let _e149 = ramp;
-            ramp = (_e149 + (f32((_e145 * j)) * k_1));
+            let _e108 = i_2;
+            let _e112 = ramp;
+            ramp = (_e112 + (f32((_e108 * j)) * k_1));
             continuing {
-                let _e151 = i_2;
-                i_2 = (_e151 + 1i);
+                let _e114 = i_2;
+                i_2 = (_e114 + 1i);
             }
         }
     }
-    let _e156 = c;
-    let _e158 = blur;
-    let _e162 = ramp;
-    f_color = vec4<f32>((_e156 + vec3(_e158)), (_e162 / 50f));
-    let _e167 = f_color;
-    return for_arrays_fs_out(_e167);
+    let _e117 = c;
+    let _e118 = blur;
+    let _e121 = ramp;
+    f_color = vec4<f32>((_e117 + vec3(_e118)), (_e121 / 50f));
+    let _e125 = f_color;
+    return for_arrays_fs_out(_e125);
 }

@@ -38,78 +38,78 @@ void main() {
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            int _e39 = i;
-            i = (_e39 + 1);
+            int _e34 = i;
+            i = (_e34 + 1);
         }
         loop_init = false;
         int _e8 = i;
         if (!((_e8 < _e7))) {
             break;
         }
-        int _e12 = i;
-        if ((uint(_e12) >= 4u)) {
+        int _e11 = i;
+        if ((uint(_e11) >= 4u)) {
             break;
         }
-        int _e18 = i;
-        Light l = u_lights[_e18];
+        int _e16 = i;
+        Light l = u_lights[_e16];
         float d = distance(in_v_uv, l.pos.xy);
-        int _e30 = i;
-        vec3 _e37 = c;
-        c = (_e37 + (l.color.xyz * (1.0 / ((1.0 + float(_e30)) + (d * d)))));
+        int _e25 = i;
+        vec3 _e32 = c;
+        c = (_e32 + (l.color.xyz * (1.0 / ((1.0 + float(_e25)) + (d * d)))));
     }
     taps = float[3](0.0, 0.0, 0.0);
     t_index = 0;
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            int _e60 = t_index;
-            t_index = (_e60 + 1);
+            int _e51 = t_index;
+            t_index = (_e51 + 1);
         }
         loop_init_1 = false;
-        int _e47 = t_index;
-        if (!((_e47 < 3))) {
+        int _e41 = t_index;
+        if (!((_e41 < 3))) {
             break;
         }
-        int _e52 = t_index;
-        float k = KERNEL[_e52];
-        int _e56 = t_index;
-        taps[_e56] = (k * in_v_uv.y);
+        int _e45 = t_index;
+        float k = KERNEL[_e45];
+        int _e47 = t_index;
+        taps[_e47] = (k * in_v_uv.y);
     }
     blur = 0.0;
     t_index_1 = 0;
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            int _e79 = t_index_1;
-            t_index_1 = (_e79 + 1);
+            int _e63 = t_index_1;
+            t_index_1 = (_e63 + 1);
         }
         loop_init_2 = false;
-        int _e68 = t_index_1;
-        if (!((_e68 < 3))) {
+        int _e55 = t_index_1;
+        if (!((_e55 < 3))) {
             break;
         }
-        int _e74 = t_index_1;
-        float _e76 = taps[_e74];
-        float _e77 = blur;
-        blur = (_e77 + _e76);
+        int _e58 = t_index_1;
+        float _e60 = taps[_e58];
+        float _e61 = blur;
+        blur = (_e61 + _e60);
     }
     i_1 = 0;
     bool loop_init_3 = true;
     while(true) {
         if (!loop_init_3) {
-            int _e105 = i_1;
-            i_1 = (_e105 + 1);
+            int _e80 = i_1;
+            i_1 = (_e80 + 1);
         }
         loop_init_3 = false;
-        int _e85 = i_1;
-        if (!((_e85 < 3))) {
+        int _e66 = i_1;
+        if (!((_e66 < 3))) {
             break;
         }
-        int _e91 = i_1;
-        float _e93 = taps[_e91];
-        int _e99 = i_1;
-        float _e103 = blur;
-        blur = (_e103 + (_e93 * KERNEL[((TAPS - 1) - _e99)]));
+        int _e69 = i_1;
+        float _e71 = taps[_e69];
+        int _e74 = i_1;
+        float _e78 = blur;
+        blur = (_e78 + (_e71 * KERNEL[((TAPS - 1) - _e74)]));
     }
     ramp = 0.0;
     {
@@ -118,16 +118,16 @@ void main() {
         bool loop_init_4 = true;
         while(true) {
             if (!loop_init_4) {
-                int _e149 = i_2;
-                i_2 = (_e149 + 1);
+                int _e113 = i_2;
+                i_2 = (_e113 + 1);
             }
             loop_init_4 = false;
-            int _e123 = i_2;
-            if (!((_e123 < 10))) {
+            int _e93 = i_2;
+            if (!((_e93 < 10))) {
                 break;
             }
-            int _e127 = i_2;
-            uint i_step = (uint(_e127) - uint(1));
+            int _e96 = i_2;
+            uint i_step = (uint(_e96) - uint(1));
             if ((i_step >= j_count)) {
                 break;
             }
@@ -136,17 +136,17 @@ void main() {
             }
             int j = (5 + int(i_step));
             float k_1 = KERNEL[int(i_step)];
-            int _e143 = i_2;
-            float _e147 = ramp;
-            ramp = (_e147 + (float((_e143 * j)) * k_1));
+            int _e107 = i_2;
+            float _e111 = ramp;
+            ramp = (_e111 + (float((_e107 * j)) * k_1));
         }
     }
-    vec3 _e154 = c;
-    float _e156 = blur;
-    float _e160 = ramp;
-    out_f_color = vec4((_e154 + vec3(_e156)), (_e160 / 50.0));
-    vec4 _e165 = out_f_color;
-    for_arrays_fs_out _tmp_return = for_arrays_fs_out(_e165);
+    vec3 _e116 = c;
+    float _e117 = blur;
+    float _e120 = ramp;
+    out_f_color = vec4((_e116 + vec3(_e117)), (_e120 / 50.0));
+    vec4 _e124 = out_f_color;
+    for_arrays_fs_out _tmp_return = for_arrays_fs_out(_e124);
     f_color = _tmp_return.f_color;
     return;
 }

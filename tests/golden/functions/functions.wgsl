@@ -60,9 +60,9 @@ fn functions_vs(@location(0) a_pos: vec2<f32>) -> functions_vs_out {
 
     v_uv = ((a_pos * 0.5f) + vec2(0.5f));
     gl_Position = vec4<f32>(a_pos, 0f, 1f);
-    let _e12 = gl_Position;
-    let _e23 = v_uv;
-    return functions_vs_out(vec4<f32>(_e12.x, -(_e12.y), ((_e12.z + _e12.w) * 0.5f), _e12.w), _e23);
+    let _e10 = gl_Position;
+    let _e19 = v_uv;
+    return functions_vs_out(vec4<f32>(_e10.x, -(_e10.y), ((_e10.z + _e10.w) * 0.5f), _e10.w), _e19);
 }
 
 @fragment 
@@ -74,15 +74,15 @@ fn functions_fs(@location(0) v_uv_1: vec2<f32>) -> functions_fs_out {
     let _e7 = square(v_uv_1.y);
     let _e14 = tint(vec3<f32>(_e5, _e7, 0.25f), vec3<f32>(1f, 0.9f, 0.8f));
     let _e17 = vignette(v_uv_1, 0.6f, 0.75f);
-    let _e20 = vignette(v_uv_1, 0.2f, 0.75f);
-    let _e24 = vignette(v_uv_1, 0.1f, 0.9f);
-    let _e28 = vignette(v_uv_1, 0.6f, 1.2f);
-    let v = (((_e17 * _e20) * _e24) * _e28);
-    let _e32 = luma_float4_(vec4<f32>(_e14, 1f));
-    let _e33 = luma_float3_(_e14);
-    let g = (_e32 + _e33);
-    let _e39 = banded((g * 0.5f));
-    f_color = vec4<f32>((_e14 * v), _e39);
-    let _e42 = f_color;
-    return functions_fs_out(_e42);
+    let _e19 = vignette(v_uv_1, 0.2f, 0.75f);
+    let _e22 = vignette(v_uv_1, 0.1f, 0.9f);
+    let _e25 = vignette(v_uv_1, 0.6f, 1.2f);
+    let v = (((_e17 * _e19) * _e22) * _e25);
+    let _e28 = luma_float4_(vec4<f32>(_e14, 1f));
+    let _e29 = luma_float3_(_e14);
+    let g = (_e28 + _e29);
+    let _e35 = banded((g * 0.5f));
+    f_color = vec4<f32>((_e14 * v), _e35);
+    let _e37 = f_color;
+    return functions_fs_out(_e37);
 }

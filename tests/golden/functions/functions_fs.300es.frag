@@ -56,17 +56,17 @@ void main() {
     float _e6 = square(in_v_uv.y);
     vec3 _e13 = tint(vec3(_e4, _e6, 0.25), vec3(1.0, 0.9, 0.8));
     float _e16 = vignette(in_v_uv, 0.6, 0.75);
-    float _e19 = vignette(in_v_uv, 0.2, 0.75);
-    float _e23 = vignette(in_v_uv, 0.1, 0.9);
-    float _e27 = vignette(in_v_uv, 0.6, 1.2);
-    float v = (((_e16 * _e19) * _e23) * _e27);
-    float _e31 = luma_float4_(vec4(_e13, 1.0));
-    float _e32 = luma_float3_(_e13);
-    float g = (_e31 + _e32);
-    float _e38 = banded((g * 0.5));
-    out_f_color = vec4((_e13 * v), _e38);
-    vec4 _e41 = out_f_color;
-    functions_fs_out _tmp_return = functions_fs_out(_e41);
+    float _e18 = vignette(in_v_uv, 0.2, 0.75);
+    float _e21 = vignette(in_v_uv, 0.1, 0.9);
+    float _e24 = vignette(in_v_uv, 0.6, 1.2);
+    float v = (((_e16 * _e18) * _e21) * _e24);
+    float _e27 = luma_float4_(vec4(_e13, 1.0));
+    float _e28 = luma_float3_(_e13);
+    float g = (_e27 + _e28);
+    float _e34 = banded((g * 0.5));
+    out_f_color = vec4((_e13 * v), _e34);
+    vec4 _e36 = out_f_color;
+    functions_fs_out _tmp_return = functions_fs_out(_e36);
     f_color = _tmp_return.f_color;
     return;
 }

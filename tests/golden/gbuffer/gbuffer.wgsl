@@ -67,14 +67,14 @@ fn gbuffer_vs(@location(0) a_position: vec3<f32>, @location(1) a_normal: vec3<f3
     v_normal = (model_view * vec4<f32>(a_normal, 0f)).xyz;
     v_tangent = vec4<f32>((model_view * vec4<f32>(a_tangent.xyz, 0f)).xyz, a_tangent.w);
     v_uv = a_uv;
-    let _e33 = frame.proj;
-    gl_Position = (_e33 * p);
-    let _e36 = gl_Position;
-    let _e47 = v_view_pos;
-    let _e49 = v_normal;
-    let _e51 = v_tangent;
-    let _e53 = v_uv;
-    return gbuffer_vs_out(vec4<f32>(_e36.x, -(_e36.y), ((_e36.z + _e36.w) * 0.5f), _e36.w), _e47, _e49, _e51, _e53);
+    let _e31 = frame.proj;
+    gl_Position = (_e31 * p);
+    let _e33 = gl_Position;
+    let _e43 = v_view_pos;
+    let _e44 = v_normal;
+    let _e45 = v_tangent;
+    let _e46 = v_uv;
+    return gbuffer_vs_out(vec4<f32>(_e33.x, -(_e33.y), ((_e33.z + _e33.w) * 0.5f), _e33.w), _e43, _e44, _e45, _e46);
 }
 
 @fragment 
@@ -87,33 +87,33 @@ fn gbuffer_fs(@location(0) v_view_pos_1: vec3<f32>, @location(1) v_normal_1: vec
     let _e6 = textureSample(albedo_map, albedo_map_sampler, v_uv_1);
     let _e9 = surface.base_color;
     let base = (_e6 * _e9);
-    let _e14 = surface.alpha_cutoff;
-    if (base.w < _e14) {
+    let _e13 = surface.alpha_cutoff;
+    if (base.w < _e13) {
         discard;
     }
     let n = normalize(v_normal_1);
     let t = normalize((v_tangent_1.xyz - (n * dot(n, v_tangent_1.xyz))));
     let b = (cross(n, t) * v_tangent_1.w);
-    let _e29 = textureSample(normal_map, normal_map_sampler, v_uv_1);
-    tn = ((_e29.xyz * 2f) - vec3(1f));
-    let _e37 = tn;
-    let _e40 = surface.normal_scale;
-    let _e42 = (_e37.xy * _e40);
-    tn = vec3<f32>(_e42.x, _e42.y, _e37.z);
-    let _e49 = tn;
-    let mapped = normalize((mat3x3<f32>(t, b, n) * _e49));
+    let _e28 = textureSample(normal_map, normal_map_sampler, v_uv_1);
+    tn = ((_e28.xyz * 2f) - vec3(1f));
+    let _e35 = tn;
+    let _e37 = surface.normal_scale;
+    let _e39 = (_e35.xy * _e37);
+    tn = vec3<f32>(_e39.x, _e39.y, _e35.z);
+    let _e45 = tn;
+    let mapped = normalize((mat3x3<f32>(t, b, n) * _e45));
     let orm = textureSample(orm_map, orm_map_sampler, v_uv_1);
-    let _e60 = frame.near_far.x;
-    let _e65 = frame.near_far.y;
-    let _e69 = frame.near_far.x;
-    let linear_depth = ((-(v_view_pos_1.z) - _e60) / (_e65 - _e69));
-    let _e77 = surface.roughness;
-    g_albedo = vec4<f32>(base.xyz, (orm.y * _e77));
-    let _e89 = surface.metalness;
-    g_normal = vec4<f32>(((mapped * 0.5f) + vec3(0.5f)), (orm.z * _e89));
+    let _e56 = frame.near_far.x;
+    let _e60 = frame.near_far.y;
+    let _e63 = frame.near_far.x;
+    let linear_depth = ((-(v_view_pos_1.z) - _e56) / (_e60 - _e63));
+    let _e70 = surface.roughness;
+    g_albedo = vec4<f32>(base.xyz, (orm.y * _e70));
+    let _e80 = surface.metalness;
+    g_normal = vec4<f32>(((mapped * 0.5f) + vec3(0.5f)), (orm.z * _e80));
     g_position = vec4<f32>(v_view_pos_1, linear_depth);
-    let _e95 = g_albedo;
-    let _e97 = g_normal;
-    let _e99 = g_position;
-    return gbuffer_fs_out(_e95, _e97, _e99);
+    let _e85 = g_albedo;
+    let _e86 = g_normal;
+    let _e87 = g_position;
+    return gbuffer_fs_out(_e85, _e86, _e87);
 }

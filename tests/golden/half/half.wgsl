@@ -32,9 +32,9 @@ fn half_vs(@location(0) a_pos: vec2<f32>) -> half_vs_out {
 
     v_uv = ((a_pos * 0.5f) + vec2(0.5f));
     gl_Position = vec4<f32>(a_pos, 0f, 1f);
-    let _e12 = gl_Position;
-    let _e23 = v_uv;
-    return half_vs_out(vec4<f32>(_e12.x, -(_e12.y), ((_e12.z + _e12.w) * 0.5f), _e12.w), _e23);
+    let _e10 = gl_Position;
+    let _e19 = v_uv;
+    return half_vs_out(vec4<f32>(_e10.x, -(_e10.y), ((_e10.z + _e10.w) * 0.5f), _e10.w), _e19);
 }
 
 @fragment 
@@ -45,6 +45,6 @@ fn half_fs(@location(0) v_uv_1: vec2<f32>) -> half_fs_out {
     let hdr = vec3<f16>((vec3<f32>(v_uv_1, 0.5f) * _e5));
     let _e8 = reinhard(hdr);
     f_color = vec4<f32>(vec3<f32>(_e8), f32(max(_e8.x, 0.25h)));
-    let _e17 = f_color;
-    return half_fs_out(_e17);
+    let _e16 = f_color;
+    return half_fs_out(_e16);
 }

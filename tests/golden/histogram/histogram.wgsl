@@ -27,14 +27,14 @@ fn histogram_cs(@builtin(local_invocation_index) LocalInvocationIndex: u32, @bui
     let _e9 = samples.count;
     if (i < _e9) {
         let v = samples.data[i];
-        let _e21 = atomicAdd((&local_bins[(v % u32(BINS))]), 1u);
-        let _e24 = atomicMax((&histogram.largest), v);
+        let _e19 = atomicAdd((&local_bins[(v % u32(BINS))]), 1u);
+        let _e22 = atomicMax((&histogram.largest), v);
     }
     workgroupBarrier();
     let n = atomicLoad((&local_bins[LocalInvocationIndex]));
     if (n > 0u) {
-        let _e34 = atomicAdd((&histogram.bins[LocalInvocationIndex]), n);
-        let _e37 = atomicAdd((&histogram.total), n);
+        let _e28 = atomicAdd((&histogram.bins[LocalInvocationIndex]), n);
+        let _e30 = atomicAdd((&histogram.total), n);
     }
     return;
 }

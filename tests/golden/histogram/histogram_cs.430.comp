@@ -35,15 +35,15 @@ void main() {
     uint _e9 = samples.count;
     if ((i < _e9)) {
         uint v = samples.data[i];
-        uint _e21 = atomicAdd(local_bins[(v % uint(BINS))], 1u);
-        uint _e24 = atomicMax(histogram.largest, v);
+        uint _e19 = atomicAdd(local_bins[(v % uint(BINS))], 1u);
+        uint _e22 = atomicMax(histogram.largest, v);
     }
     memoryBarrierShared();
     barrier();
     uint n = atomicOr(local_bins[LocalInvocationIndex], 0u);
     if ((n > 0u)) {
-        uint _e34 = atomicAdd(histogram.bins[LocalInvocationIndex], n);
-        uint _e37 = atomicAdd(histogram.total, n);
+        uint _e28 = atomicAdd(histogram.bins[LocalInvocationIndex], n);
+        uint _e30 = atomicAdd(histogram.total, n);
     }
     return;
 }

@@ -16,8 +16,8 @@ void main() {
         return;
     }
     vec2 uv = ((vec2(p) + vec2(0.5)) / vec2(size));
-    int _e25 = ((p.x / 4) + (p.y / 4));
-    float checker = float((_e25 - (2 * (_e25 / 2))));
+    int _e24 = ((p.x / 4) + (p.y / 4));
+    float checker = float((_e24 - (2 * (_e24 / 2))));
     imageStore(out_image, p, vec4(uv.x, uv.y, checker, 1.0));
     return;
 }

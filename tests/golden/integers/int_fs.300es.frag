@@ -24,15 +24,15 @@ void main() {
     ivec2 masked = ((in_v_cell & ivec2(255)) | (ivec2(1) << uvec2(ivec2(2, 3))));
     ivec2 flipped = (~(masked) ^ ivec2(NEG_MOD, NEG_DIV));
     bits = (uvec2(flipped) >> uvec2(1u, 2u));
-    uvec2 _e27 = bits;
-    bits = (_e27 % uvec2(7u));
+    uvec2 _e26 = bits;
+    bits = (_e26 % uvec2(7u));
     float f = (intBitsToFloat(1065353216) + uintBitsToFloat(floatBitsToUint(0.5)));
-    uint _e37 = bits.x;
-    uint _e40 = bits.y;
-    float k = ((float(((_e37 + _e40) + (in_v_hash & WRAP))) + float(TRUNC)) + FMOD);
+    uint _e35 = bits.x;
+    uint _e37 = bits.y;
+    float k = ((float(((_e35 + _e37) + (in_v_hash & WRAP))) + float(TRUNC)) + FMOD);
     out_f_color = vec4(fract((k * 0.001)), f, float((int((in_v_hash % 5u)) - 2)), 1.0);
-    vec4 _e64 = out_f_color;
-    int_fs_out _tmp_return = int_fs_out(_e64);
+    vec4 _e59 = out_f_color;
+    int_fs_out _tmp_return = int_fs_out(_e59);
     f_color = _tmp_return.f_color;
     return;
 }

@@ -17,16 +17,16 @@ flat out uint v_hash;
 uint hash(uint x) {
     uint h = 0u;
     h = (x ^ (x >> 16u));
-    uint _e7 = h;
-    h = (_e7 * 2146121005u);
-    uint _e11 = h;
-    uint _e15 = h;
-    h = (_e15 ^ (_e11 >> uint(15)));
-    uint _e19 = h;
-    uint _e24 = h;
-    h = ((_e19 << uint(3)) | (_e24 >> 29u));
-    uint _e29 = h;
-    return _e29;
+    uint _e6 = h;
+    h = (_e6 * 2146121005u);
+    uint _e8 = h;
+    uint _e12 = h;
+    h = (_e12 ^ (_e8 >> uint(15)));
+    uint _e14 = h;
+    uint _e18 = h;
+    h = ((_e14 << uint(3)) | (_e18 >> 29u));
+    uint _e22 = h;
+    return _e22;
 }
 
 void main() {
@@ -38,14 +38,14 @@ void main() {
     ivec2 cell = ivec2(floor((in_a_pos * 8.0)));
     ivec2 _e9 = ivec2(3);
     out_v_cell = ((cell - (_e9 * (cell / _e9))) * (cell / ivec2(2, -(2))));
-    uint _e22 = u_seed;
-    uint _e24 = hash((uint(int(VertexID)) + _e22));
-    out_v_hash = _e24;
+    uint _e21 = u_seed;
+    uint _e23 = hash((uint(int(VertexID)) + _e21));
+    out_v_hash = _e23;
     gen_gl_Position = vec4(in_a_pos, 0.0, 1.0);
-    vec4 _e30 = gen_gl_Position;
-    ivec2 _e32 = out_v_cell;
-    uint _e34 = out_v_hash;
-    int_vs_out _tmp_return = int_vs_out(_e30, _e32, _e34);
+    vec4 _e28 = gen_gl_Position;
+    ivec2 _e29 = out_v_cell;
+    uint _e30 = out_v_hash;
+    int_vs_out _tmp_return = int_vs_out(_e28, _e29, _e30);
     gl_Position = _tmp_return.gen_gl_Position;
     v_cell = _tmp_return.v_cell;
     v_hash = _tmp_return.v_hash;

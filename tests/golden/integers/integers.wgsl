@@ -27,16 +27,16 @@ fn hash(x: u32) -> u32 {
     var h: u32;
 
     h = (x ^ (x >> 16u));
-    let _e7 = h;
-    h = (_e7 * 2146121005u);
-    let _e11 = h;
-    let _e15 = h;
-    h = (_e15 ^ (_e11 >> u32(15i)));
-    let _e19 = h;
-    let _e24 = h;
-    h = ((_e19 << u32(3i)) | (_e24 >> 29u));
-    let _e29 = h;
-    return _e29;
+    let _e6 = h;
+    h = (_e6 * 2146121005u);
+    let _e8 = h;
+    let _e12 = h;
+    h = (_e12 ^ (_e8 >> u32(15i)));
+    let _e14 = h;
+    let _e18 = h;
+    h = ((_e14 << u32(3i)) | (_e18 >> 29u));
+    let _e22 = h;
+    return _e22;
 }
 
 @vertex 
@@ -47,14 +47,14 @@ fn int_vs(@location(0) a_pos: vec2<f32>, @builtin(vertex_index) VertexID: u32) -
 
     let cell = vec2<i32>(floor((a_pos * 8f)));
     v_cell = ((cell % vec2(3i)) * (cell / vec2<i32>(2i, -(2i))));
-    let _e21 = uniforms.u_seed;
-    let _e23 = hash((u32(i32(VertexID)) + _e21));
-    v_hash = _e23;
+    let _e20 = uniforms.u_seed;
+    let _e22 = hash((u32(i32(VertexID)) + _e20));
+    v_hash = _e22;
     gl_Position = vec4<f32>(a_pos, 0f, 1f);
-    let _e29 = gl_Position;
-    let _e40 = v_cell;
-    let _e42 = v_hash;
-    return int_vs_out(vec4<f32>(_e29.x, -(_e29.y), ((_e29.z + _e29.w) * 0.5f), _e29.w), _e40, _e42);
+    let _e27 = gl_Position;
+    let _e37 = v_cell;
+    let _e38 = v_hash;
+    return int_vs_out(vec4<f32>(_e27.x, -(_e27.y), ((_e27.z + _e27.w) * 0.5f), _e27.w), _e37, _e38);
 }
 
 @fragment 
@@ -65,13 +65,13 @@ fn int_fs(@location(0) @interpolate(flat) v_cell_1: vec2<i32>, @location(1) @int
     let masked = ((v_cell_1 & vec2(255i)) | (vec2(1i) << vec2<u32>(vec2<i32>(2i, 3i))));
     let flipped = (~(masked) ^ vec2<i32>(NEG_MOD, NEG_DIV));
     bits = (vec2<u32>(flipped) >> vec2<u32>(1u, 2u));
-    let _e27 = bits;
-    bits = (_e27 % vec2(7u));
+    let _e26 = bits;
+    bits = (_e26 % vec2(7u));
     let f = (bitcast<f32>(1065353216i) + bitcast<f32>(bitcast<u32>(0.5f)));
-    let _e37 = bits.x;
-    let _e40 = bits.y;
-    let k = ((f32(((_e37 + _e40) + (v_hash_1 & WRAP))) + f32(TRUNC)) + FMOD);
+    let _e35 = bits.x;
+    let _e37 = bits.y;
+    let k = ((f32(((_e35 + _e37) + (v_hash_1 & WRAP))) + f32(TRUNC)) + FMOD);
     f_color = vec4<f32>(fract((k * 0.001f)), f, f32((i32((v_hash_1 % 5u)) - 2i)), 1f);
-    let _e64 = f_color;
-    return int_fs_out(_e64);
+    let _e59 = f_color;
+    return int_fs_out(_e59);
 }

@@ -47,24 +47,24 @@ fn inverse_vs(@location(0) a_pos: vec3<f32>, @location(1) a_normal: vec3<f32>) -
     var gl_Position: vec4<f32>;
 
     let _e5 = uniforms.u_model[0];
-    let _e10 = uniforms.u_model[1];
-    let _e15 = uniforms.u_model[2];
-    let upper = mat3x3<f32>(_e5.xyz, _e10.xyz, _e15.xyz);
-    let _e18 = inverse_3x3_(upper);
-    let normal_matrix = transpose(_e18);
+    let _e9 = uniforms.u_model[1];
+    let _e13 = uniforms.u_model[2];
+    let upper = mat3x3<f32>(_e5.xyz, _e9.xyz, _e13.xyz);
+    let _e16 = inverse_3x3_(upper);
+    let normal_matrix = transpose(_e16);
     v_normal = normalize((normal_matrix * a_normal));
-    let _e25 = uniforms.u_view_proj;
-    let _e28 = uniforms.u_model;
-    let clip = (_e25 * (_e28 * vec4<f32>(a_pos, 1f)));
-    let _e35 = uniforms.u_view_proj;
-    let _e36 = inverse_4x4_(_e35);
-    let world = (_e36 * clip);
+    let _e22 = uniforms.u_view_proj;
+    let _e24 = uniforms.u_model;
+    let clip = (_e22 * (_e24 * vec4<f32>(a_pos, 1f)));
+    let _e30 = uniforms.u_view_proj;
+    let _e31 = inverse_4x4_(_e30);
+    let world = (_e31 * clip);
     v_view_pos = (world.xyz / vec3(world.w));
     gl_Position = clip;
-    let _e45 = gl_Position;
-    let _e56 = v_normal;
-    let _e58 = v_view_pos;
-    return inverse_vs_out(vec4<f32>(_e45.x, -(_e45.y), ((_e45.z + _e45.w) * 0.5f), _e45.w), _e56, _e58);
+    let _e39 = gl_Position;
+    let _e49 = v_normal;
+    let _e50 = v_view_pos;
+    return inverse_vs_out(vec4<f32>(_e39.x, -(_e39.y), ((_e39.z + _e39.w) * 0.5f), _e39.w), _e49, _e50);
 }
 
 @fragment 
@@ -72,6 +72,6 @@ fn inverse_fs(@location(0) v_normal_1: vec3<f32>) -> inverse_fs_out {
     var f_color: vec4<f32>;
 
     f_color = vec4<f32>(((v_normal_1 * 0.5f) + vec3(0.5f)), 1f);
-    let _e10 = f_color;
-    return inverse_fs_out(_e10);
+    let _e8 = f_color;
+    return inverse_fs_out(_e8);
 }

@@ -28,10 +28,10 @@ fn legacy_texture_vs(@location(0) a_pos: vec2<f32>) -> legacy_texture_vs_out {
     v_uv = ((a_pos * 0.5f) + vec2(0.5f));
     v_dir = vec3<f32>(a_pos, 1f);
     gl_Position = vec4<f32>(a_pos, 0f, 1f);
-    let _e15 = gl_Position;
-    let _e26 = v_uv;
-    let _e28 = v_dir;
-    return legacy_texture_vs_out(vec4<f32>(_e15.x, -(_e15.y), ((_e15.z + _e15.w) * 0.5f), _e15.w), _e26, _e28);
+    let _e12 = gl_Position;
+    let _e21 = v_uv;
+    let _e22 = v_dir;
+    return legacy_texture_vs_out(vec4<f32>(_e12.x, -(_e12.y), ((_e12.z + _e12.w) * 0.5f), _e12.w), _e21, _e22);
 }
 
 @fragment 
@@ -41,6 +41,6 @@ fn legacy_texture_fs(@location(0) v_uv_1: vec2<f32>, @location(1) v_dir_1: vec3<
     let _e5 = textureSample(u_tex, u_tex_sampler, v_uv_1);
     let _e8 = textureSample(u_env, u_env_sampler, v_dir_1);
     f_color = (_e5 * _e8);
-    let _e11 = f_color;
-    return legacy_texture_fs_out(_e11);
+    let _e10 = f_color;
+    return legacy_texture_fs_out(_e10);
 }

@@ -21,8 +21,8 @@ void main() {
     vec4 _e5 = texture(u_tex, vec2(in_v_uv));
     vec4 _e8 = texture(u_env, vec3(in_v_dir));
     out_f_color = (_e5 * _e8);
-    vec4 _e11 = out_f_color;
-    legacy_texture_fs_out _tmp_return = legacy_texture_fs_out(_e11);
+    vec4 _e10 = out_f_color;
+    legacy_texture_fs_out _tmp_return = legacy_texture_fs_out(_e10);
     f_color = _tmp_return.f_color;
     return;
 }

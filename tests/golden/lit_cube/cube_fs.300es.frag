@@ -40,10 +40,10 @@ out vec4 f_color;
 vec3 blinn(vec3 n, vec3 l, vec3 v, vec3 color) {
     vec3 h = normalize((l + v));
     float diffuse = max(dot(n, l), 0.0);
-    float _e16 = material.shininess;
-    float spec = ((diffuse > 0.0) ? pow(max(dot(n, h), 0.0), _e16) : 0.0);
-    vec3 _e23 = material.specular;
-    return ((color * diffuse) + ((_e23 * color) * spec));
+    float _e14 = material.shininess;
+    float spec = ((diffuse > 0.0) ? pow(max(dot(n, h), 0.0), _e14) : 0.0);
+    vec3 _e19 = material.specular;
+    return ((color * diffuse) + ((_e19 * color) * spec));
 }
 
 void main() {
@@ -61,24 +61,24 @@ void main() {
     vec3 v_1 = normalize((_e16 - in_v_world));
     float _e23 = lighting.ambient;
     c = (albedo.xyz * _e23);
-    vec3 _e29 = lighting.sun_dir;
-    vec4 _e34 = lighting.sun_color;
-    vec3 _e36 = blinn(n_1, normalize(-(_e29)), v_1, _e34.xyz);
-    vec3 _e38 = c;
-    c = (_e38 + (albedo.xyz * _e36));
-    vec3 _e42 = lighting.point_pos;
-    vec3 to_point = (_e42 - in_v_world);
+    vec3 _e27 = lighting.sun_dir;
+    vec4 _e31 = lighting.sun_color;
+    vec3 _e33 = blinn(n_1, normalize(-(_e27)), v_1, _e31.xyz);
+    vec3 _e35 = c;
+    c = (_e35 + (albedo.xyz * _e33));
+    vec3 _e38 = lighting.point_pos;
+    vec3 to_point = (_e38 - in_v_world);
     float dist = length(to_point);
-    float _e48 = lighting.point_range;
-    float falloff = clamp((1.0 - (dist / _e48)), 0.0, 1.0);
-    vec4 _e58 = lighting.point_color;
-    vec3 _e60 = blinn(n_1, (to_point / vec3(dist)), v_1, _e58.xyz);
-    vec3 _e64 = c;
-    c = (_e64 + ((albedo.xyz * _e60) * (falloff * falloff)));
-    vec3 _e68 = c;
-    out_f_color = vec4(_e68, albedo.w);
-    vec4 _e72 = out_f_color;
-    cube_fs_out _tmp_return = cube_fs_out(_e72);
+    float _e43 = lighting.point_range;
+    float falloff = clamp((1.0 - (dist / _e43)), 0.0, 1.0);
+    vec4 _e51 = lighting.point_color;
+    vec3 _e53 = blinn(n_1, (to_point / vec3(dist)), v_1, _e51.xyz);
+    vec3 _e57 = c;
+    c = (_e57 + ((albedo.xyz * _e53) * (falloff * falloff)));
+    vec3 _e60 = c;
+    out_f_color = vec4(_e60, albedo.w);
+    vec4 _e63 = out_f_color;
+    cube_fs_out _tmp_return = cube_fs_out(_e63);
     f_color = _tmp_return.f_color;
     return;
 }

@@ -43,11 +43,11 @@ void main() {
     out_v_uv = in_a_uv;
     mat4x4 _e18 = camera.view_proj;
     gen_gl_Position = (_e18 * world);
-    vec4 _e21 = gen_gl_Position;
-    vec3 _e23 = out_v_world;
-    vec3 _e25 = out_v_normal;
-    vec2 _e27 = out_v_uv;
-    cube_vs_out _tmp_return = cube_vs_out(_e21, _e23, _e25, _e27);
+    vec4 _e20 = gen_gl_Position;
+    vec3 _e21 = out_v_world;
+    vec3 _e22 = out_v_normal;
+    vec2 _e23 = out_v_uv;
+    cube_vs_out _tmp_return = cube_vs_out(_e20, _e21, _e22, _e23);
     gl_Position = _tmp_return.gen_gl_Position;
     v_world = _tmp_return.v_world;
     v_normal = _tmp_return.v_normal;

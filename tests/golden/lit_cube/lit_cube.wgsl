@@ -53,10 +53,10 @@ var diffuse_map_sampler: sampler;
 fn blinn(n: vec3<f32>, l: vec3<f32>, v: vec3<f32>, color: vec3<f32>) -> vec3<f32> {
     let h = normalize((l + v));
     let diffuse = max(dot(n, l), 0f);
-    let _e16 = material.shininess;
-    let spec = select(0f, pow(max(dot(n, h), 0f), _e16), (diffuse > 0f));
-    let _e23 = material.specular;
-    return ((color * diffuse) + ((_e23 * color) * spec));
+    let _e14 = material.shininess;
+    let spec = select(0f, pow(max(dot(n, h), 0f), _e14), (diffuse > 0f));
+    let _e19 = material.specular;
+    return ((color * diffuse) + ((_e19 * color) * spec));
 }
 
 @vertex 
@@ -69,16 +69,16 @@ fn cube_vs(@location(0) a_position: vec3<f32>, @location(1) a_normal: vec3<f32>,
     let _e5 = uniforms.u_model;
     let world = (_e5 * vec4<f32>(a_position, 1f));
     v_world = world.xyz;
-    let _e14 = uniforms.u_normal_matrix;
-    v_normal = (_e14 * a_normal);
+    let _e13 = uniforms.u_normal_matrix;
+    v_normal = (_e13 * a_normal);
     v_uv = a_uv;
-    let _e20 = camera.view_proj;
-    gl_Position = (_e20 * world);
-    let _e23 = gl_Position;
-    let _e34 = v_world;
-    let _e36 = v_normal;
-    let _e38 = v_uv;
-    return cube_vs_out(vec4<f32>(_e23.x, -(_e23.y), ((_e23.z + _e23.w) * 0.5f), _e23.w), _e34, _e36, _e38);
+    let _e19 = camera.view_proj;
+    gl_Position = (_e19 * world);
+    let _e21 = gl_Position;
+    let _e31 = v_world;
+    let _e32 = v_normal;
+    let _e33 = v_uv;
+    return cube_vs_out(vec4<f32>(_e21.x, -(_e21.y), ((_e21.z + _e21.w) * 0.5f), _e21.w), _e31, _e32, _e33);
 }
 
 @fragment 
@@ -94,22 +94,22 @@ fn cube_fs(@location(0) v_world_1: vec3<f32>, @location(1) v_normal_1: vec3<f32>
     let v_1 = normalize((_e16 - v_world_1));
     let _e23 = lighting.ambient;
     c = (albedo.xyz * _e23);
-    let _e29 = lighting.sun_dir;
-    let _e34 = lighting.sun_color;
-    let _e36 = blinn(n_1, normalize(-(_e29)), v_1, _e34.xyz);
-    let _e38 = c;
-    c = (_e38 + (albedo.xyz * _e36));
-    let _e42 = lighting.point_pos;
-    let to_point = (_e42 - v_world_1);
+    let _e27 = lighting.sun_dir;
+    let _e31 = lighting.sun_color;
+    let _e33 = blinn(n_1, normalize(-(_e27)), v_1, _e31.xyz);
+    let _e35 = c;
+    c = (_e35 + (albedo.xyz * _e33));
+    let _e38 = lighting.point_pos;
+    let to_point = (_e38 - v_world_1);
     let dist = length(to_point);
-    let _e48 = lighting.point_range;
-    let falloff = saturate((1f - (dist / _e48)));
-    let _e58 = lighting.point_color;
-    let _e60 = blinn(n_1, (to_point / vec3(dist)), v_1, _e58.xyz);
-    let _e64 = c;
-    c = (_e64 + ((albedo.xyz * _e60) * (falloff * falloff)));
-    let _e68 = c;
-    f_color = vec4<f32>(_e68, albedo.w);
-    let _e72 = f_color;
-    return cube_fs_out(_e72);
+    let _e43 = lighting.point_range;
+    let falloff = saturate((1f - (dist / _e43)));
+    let _e51 = lighting.point_color;
+    let _e53 = blinn(n_1, (to_point / vec3(dist)), v_1, _e51.xyz);
+    let _e57 = c;
+    c = (_e57 + ((albedo.xyz * _e53) * (falloff * falloff)));
+    let _e60 = c;
+    f_color = vec4<f32>(_e60, albedo.w);
+    let _e63 = f_color;
+    return cube_fs_out(_e63);
 }

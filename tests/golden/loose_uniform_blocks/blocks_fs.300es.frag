@@ -48,58 +48,58 @@ void main() {
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            int _e21 = i;
-            i = (_e21 + 1);
+            int _e19 = i;
+            i = (_e19 + 1);
         }
         loop_init = false;
         int _e8 = i;
         if (!((_e8 < 9))) {
             break;
         }
-        int _e15 = i;
-        vec4 _e17 = uniforms.u_weights[_e15];
-        float _e19 = s;
-        s = (_e19 + _e17.x);
+        int _e13 = i;
+        vec4 _e15 = uniforms.u_weights[_e13];
+        float _e17 = s;
+        s = (_e17 + _e15.x);
     }
-    uint _e28 = uniforms.u_index;
-    float _e31 = uniforms.u_taps[_e28].x;
-    float _e36 = uniforms.u_taps[2].y;
-    float t = (_e31 + _e36);
-    mat3x3 _e40 = uniforms.u_basis;
-    vec3 _e43 = uniforms.u_tint;
-    vec3 c = (_e40 * _e43);
-    vec3 _e48 = uniforms.u_gains[1];
-    float _e51 = uniforms.u_bias;
-    vec3 g = (_e48 * _e51);
-    vec4 _e59 = uniforms.u_mix[0];
-    vec4 _e62 = uniforms.u_mix[1];
-    vec4 _e65 = uniforms.u_mix[2];
-    vec4 _e68 = uniforms.u_mix[3];
-    vec4 mx = (vec2(in_v_p.x, in_v_m.y) * mat4x2(_e59.xy, _e62.xy, _e65.xy, _e68.xy));
-    uint _e76 = uniforms.u_mask.y;
-    on = ((_e76 != 0u) ? 0.05 : 0.0);
-    uint _e85 = uniforms.u_on.x;
-    if ((_e85 != 0u)) {
-        float _e90 = on;
-        on = (_e90 + 0.1);
+    uint _e24 = uniforms.u_index;
+    float _e27 = uniforms.u_taps[_e24].x;
+    float _e31 = uniforms.u_taps[2].y;
+    float t = (_e27 + _e31);
+    mat3x3 _e34 = uniforms.u_basis;
+    vec3 _e36 = uniforms.u_tint;
+    vec3 c = (_e34 * _e36);
+    vec3 _e40 = uniforms.u_gains[1];
+    float _e42 = uniforms.u_bias;
+    vec3 g = (_e40 * _e42);
+    vec4 _e49 = uniforms.u_mix[0];
+    vec4 _e52 = uniforms.u_mix[1];
+    vec4 _e55 = uniforms.u_mix[2];
+    vec4 _e58 = uniforms.u_mix[3];
+    vec4 mx = (vec2(in_v_p.x, in_v_m.y) * mat4x2(_e49.xy, _e52.xy, _e55.xy, _e58.xy));
+    uint _e65 = uniforms.u_mask.y;
+    on = ((_e65 != 0u) ? 0.05 : 0.0);
+    uint _e72 = uniforms.u_on.x;
+    if ((_e72 != 0u)) {
+        float _e75 = on;
+        on = (_e75 + 0.1);
     }
-    uint _e95 = uniforms.u_on.z;
-    if ((_e95 != 0u)) {
-        float _e100 = on;
-        on = (_e100 + 0.2);
+    uint _e79 = uniforms.u_on.z;
+    if ((_e79 != 0u)) {
+        float _e82 = on;
+        on = (_e82 + 0.2);
     }
-    uint _e105 = uniforms.u_levels.x;
-    uint _e109 = uniforms.u_levels.y;
-    float lv = (float((_e105 + _e109)) * 0.01);
-    vec4 _e116 = uniforms.u_color;
-    vec3 base = (((_e116.xyz * 0.5) + (c * 0.1)) + g);
-    float _e133 = on;
-    float _e144 = s;
-    ivec4 _e151 = uniforms.u_steps[1];
-    vec3 rgb = (((base + (vec3(in_v_p.x, in_v_p.y, in_v_k) * 0.25)) + (vec3(mx.x, (mx.y + _e133), (mx.z + lv)) * 0.1)) + vec3((((t * 0.1) + (_e144 * 0.02)) + (float(_e151.x) * 0.01))));
+    uint _e86 = uniforms.u_levels.x;
+    uint _e89 = uniforms.u_levels.y;
+    float lv = (float((_e86 + _e89)) * 0.01);
+    vec4 _e95 = uniforms.u_color;
+    vec3 base = (((_e95.xyz * 0.5) + (c * 0.1)) + g);
+    float _e110 = on;
+    float _e118 = s;
+    ivec4 _e124 = uniforms.u_steps[1];
+    vec3 rgb = (((base + (vec3(in_v_p.x, in_v_p.y, in_v_k) * 0.25)) + (vec3(mx.x, (mx.y + _e110), (mx.z + lv)) * 0.1)) + vec3((((t * 0.1) + (_e118 * 0.02)) + (float(_e124.x) * 0.01))));
     out_f_color = vec4(clamp(rgb, vec3(0.0), vec3(1.0)), 1.0);
-    vec4 _e168 = out_f_color;
-    blocks_fs_out _tmp_return = blocks_fs_out(_e168);
+    vec4 _e137 = out_f_color;
+    blocks_fs_out _tmp_return = blocks_fs_out(_e137);
     f_color = _tmp_return.f_color;
     return;
 }

@@ -50,55 +50,55 @@ void main() {
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            int _e19 = i;
-            i = (_e19 + 1);
+            int _e17 = i;
+            i = (_e17 + 1);
         }
         loop_init = false;
         int _e8 = i;
         if (!((_e8 < 9))) {
             break;
         }
-        int _e14 = i;
-        float _e16 = u_weights[_e14];
-        float _e17 = s;
-        s = (_e17 + _e16);
+        int _e12 = i;
+        float _e14 = u_weights[_e12];
+        float _e15 = s;
+        s = (_e15 + _e14);
     }
-    uint _e24 = u_index;
-    float _e27 = u_taps[_e24].x;
-    float _e31 = u_taps[2].y;
-    float t = (_e27 + _e31);
-    mat3x3 _e34 = u_basis;
-    vec3 _e36 = u_tint;
-    vec3 c = (_e34 * _e36);
-    vec3 _e40 = u_gains[1];
-    float _e42 = u_bias;
-    vec3 g = (_e40 * _e42);
-    mat4x2 _e48 = u_mix;
-    vec4 mx = (vec2(in_v_p.x, in_v_m.y) * _e48);
-    bool _e53 = u_mask.y;
-    on = (_e53 ? 0.05 : 0.0);
-    bool _e59 = u_on.x;
-    if (_e59) {
+    uint _e22 = u_index;
+    float _e25 = u_taps[_e22].x;
+    float _e28 = u_taps[2].y;
+    float t = (_e25 + _e28);
+    mat3x3 _e31 = u_basis;
+    vec3 _e33 = u_tint;
+    vec3 c = (_e31 * _e33);
+    vec3 _e37 = u_gains[1];
+    float _e39 = u_bias;
+    vec3 g = (_e37 * _e39);
+    mat4x2 _e45 = u_mix;
+    vec4 mx = (vec2(in_v_p.x, in_v_m.y) * _e45);
+    bool _e50 = u_mask.y;
+    on = (_e50 ? 0.05 : 0.0);
+    bool _e55 = u_on.x;
+    if (_e55) {
+        float _e57 = on;
+        on = (_e57 + 0.1);
+    }
+    bool _e60 = u_on.z;
+    if (_e60) {
         float _e62 = on;
-        on = (_e62 + 0.1);
+        on = (_e62 + 0.2);
     }
-    bool _e66 = u_on.z;
-    if (_e66) {
-        float _e69 = on;
-        on = (_e69 + 0.2);
-    }
-    uint _e73 = u_levels.x;
-    uint _e76 = u_levels.y;
-    float lv = (float((_e73 + _e76)) * 0.01);
-    vec4 _e82 = u_color;
-    vec3 base = (((_e82.xyz * 0.5) + (c * 0.1)) + g);
-    float _e99 = on;
-    float _e110 = s;
-    int _e116 = u_steps[1];
-    vec3 rgb = (((base + (vec3(in_v_p.x, in_v_p.y, in_v_k) * 0.25)) + (vec3(mx.x, (mx.y + _e99), (mx.z + lv)) * 0.1)) + vec3((((t * 0.1) + (_e110 * 0.02)) + (float(_e116) * 0.01))));
+    uint _e66 = u_levels.x;
+    uint _e68 = u_levels.y;
+    float lv = (float((_e66 + _e68)) * 0.01);
+    vec4 _e74 = u_color;
+    vec3 base = (((_e74.xyz * 0.5) + (c * 0.1)) + g);
+    float _e89 = on;
+    float _e97 = s;
+    int _e103 = u_steps[1];
+    vec3 rgb = (((base + (vec3(in_v_p.x, in_v_p.y, in_v_k) * 0.25)) + (vec3(mx.x, (mx.y + _e89), (mx.z + lv)) * 0.1)) + vec3((((t * 0.1) + (_e97 * 0.02)) + (float(_e103) * 0.01))));
     out_f_color = vec4(clamp(rgb, vec3(0.0), vec3(1.0)), 1.0);
-    vec4 _e132 = out_f_color;
-    loose_fs_out _tmp_return = loose_fs_out(_e132);
+    vec4 _e115 = out_f_color;
+    loose_fs_out _tmp_return = loose_fs_out(_e115);
     f_color = _tmp_return.f_color;
     return;
 }

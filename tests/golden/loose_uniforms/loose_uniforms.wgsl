@@ -47,28 +47,28 @@ fn loose_vs(@builtin(vertex_index) VertexID: u32) -> loose_vs_out {
     let _e1 = i32(VertexID);
     let c = vec2<f32>(f32(((_e1 << u32(1i)) & 2i)), f32((_e1 & 2i)));
     let a_pos = ((c * 2f) - vec2(1f));
-    let _e21 = uniforms.u_shear[0];
-    let _e24 = uniforms.u_shear[1];
-    let _e27 = uniforms.u_shear[2];
-    let _e35 = uniforms.u_offset;
-    v_p = ((mat3x2<f32>(_e21.xy, _e24.xy, _e27.xy) * vec3<f32>(a_pos, 1f)) + _e35);
-    let _e41 = uniforms.u_rot[0];
-    let _e44 = uniforms.u_rot[1];
-    v_m = (mat2x2<f32>(_e41.xy, _e44.xy) * a_pos);
-    let _e52 = uniforms.u_weights[0];
-    let _e57 = uniforms.u_weights[8];
-    let _e61 = uniforms.u_count;
-    let _e67 = uniforms.u_flip;
-    let _e77 = uniforms.u_steps[3];
-    v_k = (((_e52.x + (_e57.x * f32(_e61))) + select(0f, 0.25f, (_e67 != 0u))) + (f32(_e77.x) * 0.01f));
-    let _e86 = uniforms.u_model;
-    let _e89 = uniforms.u_scale;
-    gl_Position = (_e86 * vec4<f32>((a_pos * _e89), 0f, 1f));
-    let _e96 = gl_Position;
-    let _e107 = v_p;
-    let _e109 = v_m;
-    let _e111 = v_k;
-    return loose_vs_out(vec4<f32>(_e96.x, -(_e96.y), ((_e96.z + _e96.w) * 0.5f), _e96.w), _e107, _e109, _e111);
+    let _e20 = uniforms.u_shear[0];
+    let _e23 = uniforms.u_shear[1];
+    let _e26 = uniforms.u_shear[2];
+    let _e32 = uniforms.u_offset;
+    v_p = ((mat3x2<f32>(_e20.xy, _e23.xy, _e26.xy) * vec3<f32>(a_pos, 1f)) + _e32);
+    let _e37 = uniforms.u_rot[0];
+    let _e40 = uniforms.u_rot[1];
+    v_m = (mat2x2<f32>(_e37.xy, _e40.xy) * a_pos);
+    let _e47 = uniforms.u_weights[0];
+    let _e51 = uniforms.u_weights[8];
+    let _e54 = uniforms.u_count;
+    let _e59 = uniforms.u_flip;
+    let _e68 = uniforms.u_steps[3];
+    v_k = (((_e47.x + (_e51.x * f32(_e54))) + select(0f, 0.25f, (_e59 != 0u))) + (f32(_e68.x) * 0.01f));
+    let _e76 = uniforms.u_model;
+    let _e78 = uniforms.u_scale;
+    gl_Position = (_e76 * vec4<f32>((a_pos * _e78), 0f, 1f));
+    let _e82 = gl_Position;
+    let _e92 = v_p;
+    let _e93 = v_m;
+    let _e94 = v_k;
+    return loose_vs_out(vec4<f32>(_e82.x, -(_e82.y), ((_e82.z + _e82.w) * 0.5f), _e82.w), _e92, _e93, _e94);
 }
 
 @fragment 
@@ -85,52 +85,52 @@ fn loose_fs(@location(0) v_p_1: vec2<f32>, @location(1) v_m_1: vec2<f32>, @locat
         if !((_e8 < 9i)) {
             break;
         }
-        let _e15 = i;
-        let _e17 = uniforms.u_weights[_e15];
-        let _e19 = s;
-        s = (_e19 + _e17.x);
+        let _e13 = i;
+        let _e15 = uniforms.u_weights[_e13];
+        let _e17 = s;
+        s = (_e17 + _e15.x);
         continuing {
-            let _e21 = i;
-            i = (_e21 + 1i);
+            let _e19 = i;
+            i = (_e19 + 1i);
         }
     }
-    let _e28 = uniforms.u_index;
-    let _e31 = uniforms.u_taps[_e28].x;
-    let _e36 = uniforms.u_taps[2].y;
-    let t = (_e31 + _e36);
-    let _e40 = uniforms.u_basis;
-    let _e43 = uniforms.u_tint;
-    let c_1 = (_e40 * _e43);
-    let _e48 = uniforms.u_gains[1];
-    let _e51 = uniforms.u_bias;
-    let g = (_e48 * _e51);
-    let _e59 = uniforms.u_mix[0];
-    let _e62 = uniforms.u_mix[1];
-    let _e65 = uniforms.u_mix[2];
-    let _e68 = uniforms.u_mix[3];
-    let mx = (vec2<f32>(v_p_1.x, v_m_1.y) * mat4x2<f32>(_e59.xy, _e62.xy, _e65.xy, _e68.xy));
-    let _e76 = uniforms.u_mask.y;
-    on = select(0f, 0.05f, (_e76 != 0u));
-    let _e85 = uniforms.u_on.x;
-    if (_e85 != 0u) {
-        let _e90 = on;
-        on = (_e90 + 0.1f);
+    let _e24 = uniforms.u_index;
+    let _e27 = uniforms.u_taps[_e24].x;
+    let _e31 = uniforms.u_taps[2].y;
+    let t = (_e27 + _e31);
+    let _e34 = uniforms.u_basis;
+    let _e36 = uniforms.u_tint;
+    let c_1 = (_e34 * _e36);
+    let _e40 = uniforms.u_gains[1];
+    let _e42 = uniforms.u_bias;
+    let g = (_e40 * _e42);
+    let _e49 = uniforms.u_mix[0];
+    let _e52 = uniforms.u_mix[1];
+    let _e55 = uniforms.u_mix[2];
+    let _e58 = uniforms.u_mix[3];
+    let mx = (vec2<f32>(v_p_1.x, v_m_1.y) * mat4x2<f32>(_e49.xy, _e52.xy, _e55.xy, _e58.xy));
+    let _e65 = uniforms.u_mask.y;
+    on = select(0f, 0.05f, (_e65 != 0u));
+    let _e72 = uniforms.u_on.x;
+    if (_e72 != 0u) {
+        let _e75 = on;
+        on = (_e75 + 0.1f);
     }
-    let _e95 = uniforms.u_on.z;
-    if (_e95 != 0u) {
-        let _e100 = on;
-        on = (_e100 + 0.2f);
+    let _e79 = uniforms.u_on.z;
+    if (_e79 != 0u) {
+        let _e82 = on;
+        on = (_e82 + 0.2f);
     }
-    let _e105 = uniforms.u_levels.x;
-    let _e109 = uniforms.u_levels.y;
-    let lv = (f32((_e105 + _e109)) * 0.01f);
-    let _e116 = uniforms.u_color;
-    let base = (((_e116.xyz * 0.5f) + (c_1 * 0.1f)) + g);
-    let _e133 = on;
-    let _e144 = s;
-    let _e151 = uniforms.u_steps[1];
-    let rgb = (((base + (vec3<f32>(v_p_1.x, v_p_1.y, v_k_1) * 0.25f)) + (vec3<f32>(mx.x, (mx.y + _e133), (mx.z + lv)) * 0.1f)) + vec3((((t * 0.1f) + (_e144 * 0.02f)) + (f32(_e151.x) * 0.01f))));
+    let _e86 = uniforms.u_levels.x;
+    let _e89 = uniforms.u_levels.y;
+    let lv = (f32((_e86 + _e89)) * 0.01f);
+    let _e95 = uniforms.u_color;
+    let base = (((_e95.xyz * 0.5f) + (c_1 * 0.1f)) + g);
+    let _e110 = on;
+    let _e118 = s;
+    let _e124 = uniforms.u_steps[1];
+    let rgb = (((base + (vec3<f32>(v_p_1.x, v_p_1.y, v_k_1) * 0.25f)) + (vec3<f32>(mx.x, (mx.y + _e110), (mx.z + lv)) * 0.1f)) + vec3((((t * 0.1f) + (_e118 * 0.02f)) + (f32(_e124.x) * 0.01f))));
     f_color = vec4<f32>(clamp(rgb, vec3(0f), vec3(1f)), 1f);
-    let _e168 = f_color;
-    return loose_fs_out(_e168);
+    let _e137 = f_color;
+    return loose_fs_out(_e137);
 }

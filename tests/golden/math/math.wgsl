@@ -34,13 +34,13 @@ fn math_vs(@location(0) a_pos: vec2<f32>) -> math_vs_out {
     var gl_Position: vec4<f32>;
 
     v_uv = ((a_pos * 0.5f) + vec2(0.5f));
-    let _e10 = uniforms.u_frame;
-    v_id = ((_e10 << u32(2i)) | 1i);
+    let _e9 = uniforms.u_frame;
+    v_id = ((_e9 << u32(2i)) | 1i);
     gl_Position = vec4<f32>(a_pos, 0f, 1f);
-    let _e21 = gl_Position;
-    let _e32 = v_uv;
-    let _e34 = v_id;
-    return math_vs_out(vec4<f32>(_e21.x, -(_e21.y), ((_e21.z + _e21.w) * 0.5f), _e21.w), _e32, _e34);
+    let _e19 = gl_Position;
+    let _e28 = v_uv;
+    let _e29 = v_id;
+    return math_vs_out(vec4<f32>(_e19.x, -(_e19.y), ((_e19.z + _e19.w) * 0.5f), _e19.w), _e28, _e29);
 }
 
 @fragment 
@@ -52,47 +52,47 @@ fn math_fs(@location(0) v_uv_1: vec2<f32>, @location(1) @interpolate(flat) v_id_
     var i: i32;
 
     p = ((v_uv_1 * 2f) - vec2(1f));
-    let _e11 = uniforms.u_time;
-    let _e12 = rotate(_e11);
-    let _e14 = p;
-    p = (_e12 * _e14);
+    let _e10 = uniforms.u_time;
+    let _e11 = rotate(_e10);
+    let _e12 = p;
+    p = (_e11 * _e12);
     col = vec3(0f);
-    let _e20 = col;
-    let _e22 = p;
-    let _e23 = abs(_e22);
-    col = vec3<f32>(_e23.x, _e23.y, _e20.z);
-    let _e32 = uniforms.u_time;
-    let _e39 = -(7.5f);
-    col.z = ((_e32 - (1f * floor((_e32 / 1f)))) + ((_e39 - (2f * floor((_e39 / 2f)))) * 0f));
+    let _e17 = col;
+    let _e18 = p;
+    let _e19 = abs(_e18);
+    col = vec3<f32>(_e19.x, _e19.y, _e17.z);
+    let _e26 = uniforms.u_time;
+    let _e32 = -(7.5f);
+    col.z = ((_e26 - (1f * floor((_e26 / 1f)))) + ((_e32 - (2f * floor((_e32 / 2f)))) * 0f));
     sum = vec2(0f);
     i = 0i;
     loop {
-        let _e54 = i;
-        if !((_e54 < 4i)) {
+        let _e44 = i;
+        if !((_e44 < 4i)) {
             break;
         }
-        let _e60 = i;
-        let _e62 = sum;
-        sum = (_e62 + OFFSETS[_e60]);
+        let _e48 = i;
+        let _e50 = sum;
+        sum = (_e50 + OFFSETS[_e48]);
         continuing {
-            let _e64 = i;
-            i = (_e64 + 1i);
+            let _e52 = i;
+            i = (_e52 + 1i);
         }
     }
     let m = mat3x3<f32>(vec3<f32>(1f, 0f, 0f), vec3<f32>(0f, 1f, 0f), vec3<f32>(0f, 0f, 1f));
-    let _e75 = col;
-    let _e78 = sum;
-    col = ((m * _e75) + vec3<f32>(_e78, 0f));
+    let _e59 = col;
+    let _e61 = sum;
+    col = ((m * _e59) + vec3<f32>(_e61, 0f));
     let bits = ((v_id_1 & 7i) ^ (v_id_1 >> u32(1i)));
-    let _e90 = p.y;
-    let _e93 = p.x;
-    let angle = ((atan2(_e90, _e93) / TAU) + 0.5f);
-    let _e103 = col.x;
-    col.x = clamp(mix(_e103, angle, 0.5f), 0f, 1f);
-    let _e114 = p;
-    col.y = (smoothstep(0.2f, 0.8f, length(_e114)) * step(0.5f, f32((bits % 3i))));
-    let _e125 = col;
-    f_color = vec4<f32>(pow(_e125, vec3((1f / 2.2f))), 1f);
-    let _e134 = f_color;
-    return math_fs_out(_e134);
+    let _e70 = p.y;
+    let _e72 = p.x;
+    let angle = ((atan2(_e70, _e72) / TAU) + 0.5f);
+    let _e80 = col.x;
+    col.x = clamp(mix(_e80, angle, 0.5f), 0f, 1f);
+    let _e86 = p;
+    col.y = (smoothstep(0.2f, 0.8f, length(_e86)) * step(0.5f, f32((bits % 3i))));
+    let _e95 = col;
+    f_color = vec4<f32>(pow(_e95, vec3((1f / 2.2f))), 1f);
+    let _e101 = f_color;
+    return math_fs_out(_e101);
 }

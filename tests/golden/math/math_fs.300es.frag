@@ -30,51 +30,51 @@ void main() {
     vec2 sum = vec2(0.0);
     int i = 0;
     p = ((in_v_uv * 2.0) - vec2(1.0));
-    float _e10 = u_time;
-    mat2x2 _e11 = rotate(_e10);
-    vec2 _e13 = p;
-    p = (_e11 * _e13);
+    float _e9 = u_time;
+    mat2x2 _e10 = rotate(_e9);
+    vec2 _e11 = p;
+    p = (_e10 * _e11);
     col = vec3(0.0);
-    vec3 _e19 = col;
-    vec2 _e21 = p;
-    vec2 _e22 = abs(_e21);
-    col = vec3(_e22.x, _e22.y, _e19.z);
-    float _e30 = u_time;
-    float _e37 = -(7.5);
-    col.z = ((_e30 - (1.0 * floor((_e30 / 1.0)))) + ((_e37 - (2.0 * floor((_e37 / 2.0)))) * 0.0));
+    vec3 _e16 = col;
+    vec2 _e17 = p;
+    vec2 _e18 = abs(_e17);
+    col = vec3(_e18.x, _e18.y, _e16.z);
+    float _e24 = u_time;
+    float _e30 = -(7.5);
+    col.z = ((_e24 - (1.0 * floor((_e24 / 1.0)))) + ((_e30 - (2.0 * floor((_e30 / 2.0)))) * 0.0));
     sum = vec2(0.0);
     i = 0;
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            int _e62 = i;
-            i = (_e62 + 1);
+            int _e50 = i;
+            i = (_e50 + 1);
         }
         loop_init = false;
-        int _e52 = i;
-        if (!((_e52 < 4))) {
+        int _e42 = i;
+        if (!((_e42 < 4))) {
             break;
         }
-        int _e58 = i;
-        vec2 _e60 = sum;
-        sum = (_e60 + OFFSETS[_e58]);
+        int _e46 = i;
+        vec2 _e48 = sum;
+        sum = (_e48 + OFFSETS[_e46]);
     }
     mat3x3 m = mat3x3(vec3(1.0, 0.0, 0.0), vec3(0.0, 1.0, 0.0), vec3(0.0, 0.0, 1.0));
-    vec3 _e73 = col;
-    vec2 _e76 = sum;
-    col = ((m * _e73) + vec3(_e76, 0.0));
+    vec3 _e57 = col;
+    vec2 _e59 = sum;
+    col = ((m * _e57) + vec3(_e59, 0.0));
     int bits = ((in_v_id & 7) ^ (in_v_id >> uint(1)));
-    float _e88 = p.y;
-    float _e91 = p.x;
-    float angle = ((atan(_e88, _e91) / TAU) + 0.5);
-    float _e101 = col.x;
-    col.x = clamp(mix(_e101, angle, 0.5), 0.0, 1.0);
-    vec2 _e112 = p;
-    col.y = (smoothstep(0.2, 0.8, length(_e112)) * step(0.5, float((bits - (3 * (bits / 3))))));
-    vec3 _e125 = col;
-    out_f_color = vec4(pow(_e125, vec3((1.0 / 2.2))), 1.0);
-    vec4 _e134 = out_f_color;
-    math_fs_out _tmp_return = math_fs_out(_e134);
+    float _e68 = p.y;
+    float _e70 = p.x;
+    float angle = ((atan(_e68, _e70) / TAU) + 0.5);
+    float _e78 = col.x;
+    col.x = clamp(mix(_e78, angle, 0.5), 0.0, 1.0);
+    vec2 _e84 = p;
+    col.y = (smoothstep(0.2, 0.8, length(_e84)) * step(0.5, float((bits - (3 * (bits / 3))))));
+    vec3 _e95 = col;
+    out_f_color = vec4(pow(_e95, vec3((1.0 / 2.2))), 1.0);
+    vec4 _e101 = out_f_color;
+    math_fs_out _tmp_return = math_fs_out(_e101);
     f_color = _tmp_return.f_color;
     return;
 }

@@ -33,20 +33,20 @@ fn matrix_conversions_vs(@location(0) a_pos: vec3<f32>, @location(1) a_normal: v
     let _e14 = inverse_3x3_(mat3x3<f32>(_e4[0].xyz, _e4[1].xyz, _e4[2].xyz));
     let normal_matrix = transpose(_e14);
     v_normal = (normal_matrix * a_normal);
-    let _e20 = uniforms.u_model;
-    let flat = mat2x2<f32>(_e20[0].xy, _e20[1].xy);
+    let _e19 = uniforms.u_model;
+    let flat = mat2x2<f32>(_e19[0].xy, _e19[1].xy);
     let mirrored = mat2x2<f32>(-(flat[0]), -(flat[1]));
-    let _e38 = uniforms.u_view_proj;
-    v_skew = ((mirrored * a_pos.xy) + mat2x3<f32>(_e38[0].xyz, _e38[1].xyz)[1].xy);
-    let _e51 = uniforms.u_model;
-    let _e60 = mat3x3<f32>(_e51[0].xyz, _e51[1].xyz, _e51[2].xyz);
-    let rotation_only = mat4x4<f32>(vec4<f32>(_e60[0].x, _e60[0].y, _e60[0].z, 0f), vec4<f32>(_e60[1].x, _e60[1].y, _e60[1].z, 0f), vec4<f32>(_e60[2].x, _e60[2].y, _e60[2].z, 0f), vec4<f32>(0f, 0f, 0f, 1f));
-    let _e83 = uniforms.u_view_proj;
-    gl_Position = ((_e83 * rotation_only) * vec4<f32>(a_pos, 1f));
-    let _e89 = gl_Position;
-    let _e100 = v_normal;
-    let _e102 = v_skew;
-    return matrix_conversions_vs_out(vec4<f32>(_e89.x, -(_e89.y), ((_e89.z + _e89.w) * 0.5f), _e89.w), _e100, _e102);
+    let _e34 = uniforms.u_view_proj;
+    v_skew = ((mirrored * a_pos.xy) + mat2x3<f32>(_e34[0].xyz, _e34[1].xyz)[1].xy);
+    let _e44 = uniforms.u_model;
+    let _e51 = mat3x3<f32>(_e44[0].xyz, _e44[1].xyz, _e44[2].xyz);
+    let rotation_only = mat4x4<f32>(vec4<f32>(_e51[0].x, _e51[0].y, _e51[0].z, 0f), vec4<f32>(_e51[1].x, _e51[1].y, _e51[1].z, 0f), vec4<f32>(_e51[2].x, _e51[2].y, _e51[2].z, 0f), vec4<f32>(0f, 0f, 0f, 1f));
+    let _e71 = uniforms.u_view_proj;
+    gl_Position = ((_e71 * rotation_only) * vec4<f32>(a_pos, 1f));
+    let _e75 = gl_Position;
+    let _e85 = v_normal;
+    let _e86 = v_skew;
+    return matrix_conversions_vs_out(vec4<f32>(_e75.x, -(_e75.y), ((_e75.z + _e75.w) * 0.5f), _e75.w), _e85, _e86);
 }
 
 @fragment 
@@ -57,6 +57,6 @@ fn matrix_conversions_fs(@location(0) v_normal_1: vec3<f32>, @location(1) v_skew
     let _e9 = (mat2x2<f32>(vec2<f32>(1f, 0f), vec2<f32>(0f, 1f)) * 0.5f);
     let m_1 = mat3x3<f32>(vec3<f32>(_e9[0].x, _e9[0].y, 0f), vec3<f32>(_e9[1].x, _e9[1].y, 0f), vec3<f32>(0f, 0f, 1f));
     f_color = (vec4<f32>((((m_1 * n) * 0.5f) + vec3(0.5f)), 1f) + vec4<f32>((v_skew_1 * 0f), 0f, 0f));
-    let _e38 = f_color;
-    return matrix_conversions_fs_out(_e38);
+    let _e29 = f_color;
+    return matrix_conversions_fs_out(_e29);
 }

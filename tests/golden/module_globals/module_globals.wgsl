@@ -30,10 +30,10 @@ fn visit_ring(d: f32) {
         let _e14 = glow;
         glow = (_e14 + (1f / f32(RINGS)));
     }
-    let _e18 = rings_seen;
-    rings_seen = (_e18 + 1i);
-    let _e22 = fade;
-    fade = (_e22 * 0.9f);
+    let _e16 = rings_seen;
+    rings_seen = (_e16 + 1i);
+    let _e20 = fade;
+    fade = (_e20 * 0.9f);
     return;
 }
 
@@ -44,9 +44,9 @@ fn rings_vs(@location(0) a_pos: vec2<f32>) -> rings_vs_out {
 
     v_uv = ((a_pos * 0.5f) + vec2(0.5f));
     gl_Position = vec4<f32>(a_pos, 0f, 1f);
-    let _e12 = gl_Position;
-    let _e23 = v_uv;
-    return rings_vs_out(vec4<f32>(_e12.x, -(_e12.y), ((_e12.z + _e12.w) * 0.5f), _e12.w), _e23);
+    let _e10 = gl_Position;
+    let _e19 = v_uv;
+    return rings_vs_out(vec4<f32>(_e10.x, -(_e10.y), ((_e10.z + _e10.w) * 0.5f), _e10.w), _e19);
 }
 
 @fragment 
@@ -73,6 +73,6 @@ fn rings_fs(@location(0) v_uv_1: vec2<f32>) -> rings_fs_out {
     let _e31 = fade;
     let _e34 = rings_seen;
     f_color = vec4<f32>((c * _e31), (f32(_e34) / f32(RINGS)));
-    let _e41 = f_color;
-    return rings_fs_out(_e41);
+    let _e39 = f_color;
+    return rings_fs_out(_e39);
 }

@@ -24,10 +24,10 @@ void visit_ring(float d) {
         float _e14 = glow;
         glow = (_e14 + (1.0 / float(RINGS)));
     }
-    int _e18 = rings_seen;
-    rings_seen = (_e18 + 1);
-    float _e22 = fade;
-    fade = (_e22 * 0.9);
+    int _e16 = rings_seen;
+    rings_seen = (_e16 + 1);
+    float _e20 = fade;
+    fade = (_e20 * 0.9);
     return;
 }
 
@@ -56,8 +56,8 @@ void main() {
     float _e30 = fade;
     int _e33 = rings_seen;
     out_f_color = vec4((c * _e30), (float(_e33) / float(RINGS)));
-    vec4 _e40 = out_f_color;
-    rings_fs_out _tmp_return = rings_fs_out(_e40);
+    vec4 _e38 = out_f_color;
+    rings_fs_out _tmp_return = rings_fs_out(_e38);
     f_color = _tmp_return.f_color;
     return;
 }

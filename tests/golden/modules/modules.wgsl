@@ -34,9 +34,9 @@ fn modules_vs(@location(0) a_pos: vec2<f32>) -> modules_vs_out {
 
     v_uv = ((a_pos * 0.5f) + vec2(0.5f));
     gl_Position = vec4<f32>(a_pos, 0f, 1f);
-    let _e12 = gl_Position;
-    let _e23 = v_uv;
-    return modules_vs_out(vec4<f32>(_e12.x, -(_e12.y), ((_e12.z + _e12.w) * 0.5f), _e12.w), _e23);
+    let _e10 = gl_Position;
+    let _e19 = v_uv;
+    return modules_vs_out(vec4<f32>(_e10.x, -(_e10.y), ((_e10.z + _e10.w) * 0.5f), _e10.w), _e19);
 }
 
 @fragment 
@@ -48,6 +48,6 @@ fn modules_fs(@location(0) v_uv_1: vec2<f32>) -> modules_fs_out {
     let hdr = (_e2 * _e5);
     let _e8 = aces(hdr);
     f_color = vec4<f32>(_e8, 1f);
-    let _e12 = f_color;
-    return modules_fs_out(_e12);
+    let _e11 = f_color;
+    return modules_fs_out(_e11);
 }

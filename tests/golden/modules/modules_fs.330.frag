@@ -26,8 +26,8 @@ void main() {
     vec3 hdr = (_e2 * _e4);
     vec3 _e7 = aces(hdr);
     out_f_color = vec4(_e7, 1.0);
-    vec4 _e11 = out_f_color;
-    modules_fs_out _tmp_return = modules_fs_out(_e11);
+    vec4 _e10 = out_f_color;
+    modules_fs_out _tmp_return = modules_fs_out(_e10);
     f_color = _tmp_return.f_color;
     return;
 }

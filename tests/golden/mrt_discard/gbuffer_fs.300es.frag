@@ -30,18 +30,18 @@ void main() {
     }
     n = normalize(in_v_normal);
     if (!(FrontFacing)) {
-        vec3 _e16 = n;
-        n = -(_e16);
+        vec3 _e14 = n;
+        n = -(_e14);
     }
     out_g_albedo = vec4(in_v_uv, 0.5, 1.0);
-    vec3 _e24 = n;
-    out_g_normal = vec4(((_e24 * 0.5) + vec3(0.5)), 1.0);
-    float _e33 = fwidth(in_v_depth);
-    out_g_depth = vec4(in_v_depth, _e33, FragCoord.z, 1.0);
-    vec4 _e38 = out_g_albedo;
-    vec4 _e40 = out_g_normal;
-    vec4 _e42 = out_g_depth;
-    gbuffer_fs_out _tmp_return = gbuffer_fs_out(_e38, _e40, _e42);
+    vec3 _e21 = n;
+    out_g_normal = vec4(((_e21 * 0.5) + vec3(0.5)), 1.0);
+    float _e27 = fwidth(in_v_depth);
+    out_g_depth = vec4(in_v_depth, _e27, FragCoord.z, 1.0);
+    vec4 _e30 = out_g_albedo;
+    vec4 _e31 = out_g_normal;
+    vec4 _e32 = out_g_depth;
+    gbuffer_fs_out _tmp_return = gbuffer_fs_out(_e30, _e31, _e32);
     g_albedo = _tmp_return.g_albedo;
     g_normal = _tmp_return.g_normal;
     g_depth = _tmp_return.g_depth;

@@ -32,11 +32,11 @@ void main() {
     out_v_uv = (in_a_uv + vec2((float(int(VertexID)) * 0.0), (float(int(InstanceID)) * 0.0)));
     out_v_depth = (p.z / p.w);
     gen_gl_Position = p;
-    vec4 _e28 = gen_gl_Position;
-    vec3 _e30 = out_v_normal;
-    vec2 _e32 = out_v_uv;
-    float _e34 = out_v_depth;
-    gbuffer_vs_out _tmp_return = gbuffer_vs_out(_e28, _e30, _e32, _e34);
+    vec4 _e26 = gen_gl_Position;
+    vec3 _e27 = out_v_normal;
+    vec2 _e28 = out_v_uv;
+    float _e29 = out_v_depth;
+    gbuffer_vs_out _tmp_return = gbuffer_vs_out(_e26, _e27, _e28, _e29);
     gl_Position = _tmp_return.gen_gl_Position;
     v_normal = _tmp_return.v_normal;
     v_uv = _tmp_return.v_uv;

@@ -33,11 +33,11 @@ fn gbuffer_vs(@location(0) a_pos: vec3<f32>, @location(1) a_normal: vec3<f32>, @
     v_uv = (a_uv + vec2<f32>((f32(i32(VertexID)) * 0f), (f32(i32(InstanceID)) * 0f)));
     v_depth = (p.z / p.w);
     gl_Position = p;
-    let _e29 = gl_Position;
-    let _e40 = v_normal;
-    let _e42 = v_uv;
-    let _e44 = v_depth;
-    return gbuffer_vs_out(vec4<f32>(_e29.x, -(_e29.y), ((_e29.z + _e29.w) * 0.5f), _e29.w), _e40, _e42, _e44);
+    let _e27 = gl_Position;
+    let _e37 = v_normal;
+    let _e38 = v_uv;
+    let _e39 = v_depth;
+    return gbuffer_vs_out(vec4<f32>(_e27.x, -(_e27.y), ((_e27.z + _e27.w) * 0.5f), _e27.w), _e37, _e38, _e39);
 }
 
 @fragment 
@@ -52,16 +52,16 @@ fn gbuffer_fs(@location(0) v_normal_1: vec3<f32>, @location(1) v_uv_1: vec2<f32>
     }
     n = normalize(v_normal_1);
     if !(FrontFacing) {
-        let _e16 = n;
-        n = -(_e16);
+        let _e14 = n;
+        n = -(_e14);
     }
     g_albedo = vec4<f32>(v_uv_1, 0.5f, 1f);
-    let _e24 = n;
-    g_normal = vec4<f32>(((_e24 * 0.5f) + vec3(0.5f)), 1f);
-    let _e33 = fwidth(v_depth_1);
-    g_depth = vec4<f32>(v_depth_1, _e33, FragCoord.z, 1f);
-    let _e38 = g_albedo;
-    let _e40 = g_normal;
-    let _e42 = g_depth;
-    return gbuffer_fs_out(_e38, _e40, _e42);
+    let _e21 = n;
+    g_normal = vec4<f32>(((_e21 * 0.5f) + vec3(0.5f)), 1f);
+    let _e27 = fwidth(v_depth_1);
+    g_depth = vec4<f32>(v_depth_1, _e27, FragCoord.z, 1f);
+    let _e30 = g_albedo;
+    let _e31 = g_normal;
+    let _e32 = g_depth;
+    return gbuffer_fs_out(_e30, _e31, _e32);
 }

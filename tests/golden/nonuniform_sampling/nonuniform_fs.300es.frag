@@ -22,23 +22,23 @@ float march(vec2 uv) {
     t = 0.0;
     p = uv;
     while(true) {
-        float _e5 = t;
-        if (!((_e5 < 1.0))) {
+        float _e4 = t;
+        if (!((_e4 < 1.0))) {
             break;
         }
-        vec2 _e10 = p;
-        vec4 _e13 = texture(mask, vec2(_e10));
-        float m = _e13.x;
+        vec2 _e8 = p;
+        vec4 _e11 = texture(mask, vec2(_e8));
+        float m = _e11.x;
         if ((m > 0.9)) {
             break;
         }
-        float _e20 = t;
-        t = (_e20 + (0.1 + m));
-        vec2 _e25 = p;
-        p = (_e25 + vec2(0.01));
+        float _e17 = t;
+        t = (_e17 + (0.1 + m));
+        vec2 _e21 = p;
+        p = (_e21 + vec2(0.01));
     }
-    float _e28 = t;
-    return _e28;
+    float _e23 = t;
+    return _e23;
 }
 
 void main() {
@@ -48,8 +48,8 @@ void main() {
     int i = 0;
     if ((in_v_uv.x < 0.1)) {
         out_f_color = vec4(0.0);
-        vec4 _e8 = out_f_color;
-        nonuniform_fs_out _tmp_return = nonuniform_fs_out(_e8);
+        vec4 _e7 = out_f_color;
+        nonuniform_fs_out _tmp_return = nonuniform_fs_out(_e7);
         f_color = _tmp_return.f_color;
         return;
     }
@@ -57,36 +57,36 @@ void main() {
     if ((m_1.w < 0.5)) {
         discard;
     }
-    vec4 _e19 = texture(albedo, vec2(in_v_uv));
-    c = _e19;
+    vec4 _e18 = texture(albedo, vec2(in_v_uv));
+    c = _e18;
     i = 0;
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            int _e46 = i;
-            i = (_e46 + 1);
+            int _e39 = i;
+            i = (_e39 + 1);
         }
         loop_init = false;
-        int _e23 = i;
-        if (!((_e23 < 8))) {
+        int _e22 = i;
+        if (!((_e22 < 8))) {
             break;
         }
-        float _e28 = c.x;
-        if ((_e28 > 0.95)) {
+        float _e26 = c.x;
+        if ((_e26 > 0.95)) {
             break;
         }
-        int _e33 = i;
-        vec4 _e41 = texture(albedo, vec2((in_v_uv + vec2((float(_e33) * 0.01)))));
-        vec4 _e44 = c;
-        c = (_e44 + (_e41 * 0.1));
+        int _e29 = i;
+        vec4 _e35 = texture(albedo, vec2((in_v_uv + vec2((float(_e29) * 0.01)))));
+        vec4 _e37 = c;
+        c = (_e37 + (_e35 * 0.1));
     }
-    float _e55 = texture(depth, vec3(in_v_uv, 0.5));
-    float lit = ((m_1.y > 0.5) ? _e55 : 1.0);
-    vec4 _e60 = c;
-    float _e63 = march(in_v_uv);
-    out_f_color = vec4(((_e60.xyz * lit) * _e63), 1.0);
-    vec4 _e68 = out_f_color;
-    nonuniform_fs_out _tmp_return = nonuniform_fs_out(_e68);
+    float _e46 = texture(depth, vec3(in_v_uv, 0.5));
+    float lit = ((m_1.y > 0.5) ? _e46 : 1.0);
+    vec4 _e49 = c;
+    float _e52 = march(in_v_uv);
+    out_f_color = vec4(((_e49.xyz * lit) * _e52), 1.0);
+    vec4 _e55 = out_f_color;
+    nonuniform_fs_out _tmp_return = nonuniform_fs_out(_e55);
     f_color = _tmp_return.f_color;
     return;
 }

@@ -24,9 +24,9 @@ fn packing_vs(@location(0) a_pos: vec2<f32>) -> packing_vs_out {
 
     v_normal = normalize(vec3<f32>(a_pos, 1f));
     gl_Position = vec4<f32>(a_pos, 0f, 1f);
-    let _e10 = gl_Position;
-    let _e21 = v_normal;
-    return packing_vs_out(vec4<f32>(_e10.x, -(_e10.y), ((_e10.z + _e10.w) * 0.5f), _e10.w), _e21);
+    let _e8 = gl_Position;
+    let _e18 = v_normal;
+    return packing_vs_out(vec4<f32>(_e8.x, -(_e8.y), ((_e8.z + _e8.w) * 0.5f), _e8.w), _e18);
 }
 
 @fragment 
@@ -40,11 +40,11 @@ fn packing_fs(@location(0) v_normal_1: vec3<f32>, @builtin(position) FragCoord: 
     let normal = (pack2x16snorm(n.xy) ^ pack2x16unorm(((n.xy * 0.5f) + vec2(0.5f))));
     let depth = pack2x16float(vec2<f32>(FragCoord.z, n.z));
     g_packed = vec4<u32>(albedo, normal, depth, pack4x8snorm(vec4<f32>(n, -(1f))));
-    let _e30 = g_packed.w;
-    let back = (unpack4x8unorm(albedo) + unpack4x8snorm(_e30));
+    let _e28 = g_packed.w;
+    let back = (unpack4x8unorm(albedo) + unpack4x8snorm(_e28));
     let nz = ((unpack2x16float(depth).y + (unpack2x16snorm(normal).x * 0f)) + (unpack2x16unorm(normal).y * 0f));
     f_check = vec4<f32>(back.xyz, nz);
-    let _e49 = g_packed;
-    let _e51 = f_check;
-    return packing_fs_out(_e49, _e51);
+    let _e45 = g_packed;
+    let _e46 = f_check;
+    return packing_fs_out(_e45, _e46);
 }

@@ -16,9 +16,9 @@ void main() {
     vec4 gen_gl_Position = vec4(0.0);
     out_v_normal = normalize(vec3(in_a_pos, 1.0));
     gen_gl_Position = vec4(in_a_pos, 0.0, 1.0);
-    vec4 _e10 = gen_gl_Position;
-    vec3 _e12 = out_v_normal;
-    packing_vs_out _tmp_return = packing_vs_out(_e10, _e12);
+    vec4 _e8 = gen_gl_Position;
+    vec3 _e9 = out_v_normal;
+    packing_vs_out _tmp_return = packing_vs_out(_e8, _e9);
     gl_Position = _tmp_return.gen_gl_Position;
     v_normal = _tmp_return.v_normal;
     return;

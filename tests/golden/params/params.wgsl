@@ -27,21 +27,21 @@ fn total(xs: array<f32, 4>, n: i32) -> f32 {
     i = i32();
     j = i32();
     loop {
-        let _e9 = i;
-        if !((_e9 < n)) {
+        let _e7 = i;
+        if !((_e7 < n)) {
             break;
         }
-        let _e14 = i;
-        let _e16 = s;
-        s = (_e16 + xs[_e14]);
-        let _e20 = i;
-        i = (_e20 + 1i);
-        let _e24 = j;
-        j = (_e24 - 1i);
+        let _e10 = i;
+        let _e12 = s;
+        s = (_e12 + xs[_e10]);
+        let _e15 = i;
+        i = (_e15 + 1i);
+        let _e17 = j;
+        j = (_e17 - 1i);
     }
-    let _e27 = s;
-    let _e29 = j;
-    return (_e27 + (f32(_e29) * 0f));
+    let _e19 = s;
+    let _e20 = j;
+    return (_e19 + (f32(_e20) * 0f));
 }
 
 fn blend(a: vec3<f32>, b: vec3<f32>, t_1: f32, uv: vec2<f32>) -> vec3<f32> {
@@ -55,9 +55,9 @@ fn params_vs(@location(0) a_pos: vec2<f32>) -> params_vs_out {
 
     v_uv = a_pos;
     gl_Position = vec4<f32>(a_pos, 0f, 1f);
-    let _e7 = gl_Position;
-    let _e18 = v_uv;
-    return params_vs_out(vec4<f32>(_e7.x, -(_e7.y), ((_e7.z + _e7.w) * 0.5f), _e7.w), _e18);
+    let _e6 = gl_Position;
+    let _e16 = v_uv;
+    return params_vs_out(vec4<f32>(_e6.x, -(_e6.y), ((_e6.z + _e6.w) * 0.5f), _e6.w), _e16);
 }
 
 @fragment 
@@ -67,9 +67,9 @@ fn params_fs(@location(0) v_uv_1: vec2<f32>) -> params_fs_out {
     let r_1 = Ray(vec3(0f), normalize(vec3<f32>(v_uv_1, -(1f))));
     let xs_1 = array<f32, 4>(0.1f, 0.2f, 0.3f, 0.4f);
     let _e14 = along(r_1, 2f);
-    let _e20 = total(xs_1, 3i);
-    let _e21 = blend(_e14, vec3<f32>(1f, 0.5f, 0f), _e20, v_uv_1);
-    f_color = vec4<f32>(_e21, 1f);
-    let _e26 = f_color;
-    return params_fs_out(_e26);
+    let _e18 = total(xs_1, 3i);
+    let _e19 = blend(_e14, vec3<f32>(1f, 0.5f, 0f), _e18, v_uv_1);
+    f_color = vec4<f32>(_e19, 1f);
+    let _e22 = f_color;
+    return params_fs_out(_e22);
 }

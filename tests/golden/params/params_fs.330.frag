@@ -21,21 +21,21 @@ float total(float xs[4], int n) {
     i = 0;
     j = 0;
     while(true) {
-        int _e9 = i;
-        if (!((_e9 < n))) {
+        int _e7 = i;
+        if (!((_e7 < n))) {
             break;
         }
-        int _e14 = i;
-        float _e16 = s;
-        s = (_e16 + xs[_e14]);
-        int _e20 = i;
-        i = (_e20 + 1);
-        int _e24 = j;
-        j = (_e24 - 1);
+        int _e10 = i;
+        float _e12 = s;
+        s = (_e12 + xs[_e10]);
+        int _e15 = i;
+        i = (_e15 + 1);
+        int _e17 = j;
+        j = (_e17 - 1);
     }
-    float _e27 = s;
-    int _e29 = j;
-    return (_e27 + (float(_e29) * 0.0));
+    float _e19 = s;
+    int _e20 = j;
+    return (_e19 + (float(_e20) * 0.0));
 }
 
 vec3 blend(vec3 a, vec3 b, float t_1, vec2 uv) {
@@ -48,11 +48,11 @@ void main() {
     Ray r_1 = Ray(vec3(0.0), normalize(vec3(in_v_uv, -(1.0))));
     float xs_1[4] = float[4](0.1, 0.2, 0.3, 0.4);
     vec3 _e14 = along(r_1, 2.0);
-    float _e20 = total(xs_1, 3);
-    vec3 _e21 = blend(_e14, vec3(1.0, 0.5, 0.0), _e20, in_v_uv);
-    out_f_color = vec4(_e21, 1.0);
-    vec4 _e26 = out_f_color;
-    params_fs_out _tmp_return = params_fs_out(_e26);
+    float _e18 = total(xs_1, 3);
+    vec3 _e19 = blend(_e14, vec3(1.0, 0.5, 0.0), _e18, in_v_uv);
+    out_f_color = vec4(_e19, 1.0);
+    vec4 _e22 = out_f_color;
+    params_fs_out _tmp_return = params_fs_out(_e22);
     f_color = _tmp_return.f_color;
     return;
 }

@@ -12,9 +12,9 @@ void main() {
     vec4 gen_gl_Position = vec4(0.0);
     out_v_uv = in_a_pos;
     gen_gl_Position = vec4(in_a_pos, 0.0, 1.0);
-    vec4 _e7 = gen_gl_Position;
-    vec2 _e9 = out_v_uv;
-    params_vs_out _tmp_return = params_vs_out(_e7, _e9);
+    vec4 _e6 = gen_gl_Position;
+    vec2 _e7 = out_v_uv;
+    params_vs_out _tmp_return = params_vs_out(_e6, _e7);
     gl_Position = _tmp_return.gen_gl_Position;
     v_uv = _tmp_return.v_uv;
     return;

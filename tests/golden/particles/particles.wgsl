@@ -35,20 +35,20 @@ fn particles_vs(@location(0) a_origin: vec3<f32>, @location(1) a_velocity: vec3<
     let _e7 = (_e6 - a_birth);
     let t = (_e7 - (a_life * floor((_e7 / a_life))));
     v_age = (t / a_life);
-    let _e18 = uniforms.u_gravity;
-    let p = ((a_origin + (a_velocity * t)) + (_e18 * ((0.5f * t) * t)));
-    let _e26 = uniforms.u_view_proj;
-    let clip = (_e26 * vec4<f32>(p, 1f));
-    let _e33 = uniforms.u_size;
-    let _e36 = v_age;
-    gl_PointSize = clamp(((_e33 * (1f - (_e36 * 0.5f))) / max(clip.w, 0.001f)), 1f, 64f);
-    let _e60 = v_age;
-    v_color = mix(vec4<f32>(1f, 0.9f, 0.5f, 1f), vec4<f32>(0.8f, 0.2f, 0.1f, 0f), vec4(_e60));
+    let _e17 = uniforms.u_gravity;
+    let p = ((a_origin + (a_velocity * t)) + (_e17 * ((0.5f * t) * t)));
+    let _e24 = uniforms.u_view_proj;
+    let clip = (_e24 * vec4<f32>(p, 1f));
+    let _e30 = uniforms.u_size;
+    let _e31 = v_age;
+    gl_PointSize = clamp(((_e30 * (1f - (_e31 * 0.5f))) / max(clip.w, 0.001f)), 1f, 64f);
+    let _e49 = v_age;
+    v_color = mix(vec4<f32>(1f, 0.9f, 0.5f, 1f), vec4<f32>(0.8f, 0.2f, 0.1f, 0f), vec4(_e49));
     gl_Position = clip;
-    let _e65 = gl_Position;
-    let _e76 = v_age;
-    let _e78 = v_color;
-    return particles_vs_out(vec4<f32>(_e65.x, -(_e65.y), ((_e65.z + _e65.w) * 0.5f), _e65.w), _e76, _e78);
+    let _e53 = gl_Position;
+    let _e62 = v_age;
+    let _e63 = v_color;
+    return particles_vs_out(vec4<f32>(_e53.x, -(_e53.y), ((_e53.z + _e53.w) * 0.5f), _e53.w), _e62, _e63);
 }
 
 @fragment 
@@ -67,6 +67,6 @@ fn particles_fs(@location(1) v_color_1: vec4<f32>) -> particles_fs_out {
         discard;
     }
     f_color = vec4<f32>((v_color_1.xyz * tex.xyz), alpha);
-    let _e28 = f_color;
-    return particles_fs_out(_e28);
+    let _e25 = f_color;
+    return particles_fs_out(_e25);
 }

@@ -26,8 +26,8 @@ void main() {
         discard;
     }
     out_f_color = vec4((in_v_color.xyz * tex.xyz), alpha);
-    vec4 _e27 = out_f_color;
-    particles_fs_out _tmp_return = particles_fs_out(_e27);
+    vec4 _e24 = out_f_color;
+    particles_fs_out _tmp_return = particles_fs_out(_e24);
     f_color = _tmp_return.f_color;
     return;
 }

@@ -24,37 +24,37 @@ float pcf_5x5_(vec3 coord, float bias) {
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            int _e51 = y;
-            y = (_e51 + 1);
+            int _e42 = y;
+            y = (_e42 + 1);
         }
         loop_init = false;
-        int _e18 = y;
-        if (!((_e18 < (PCF_RADIUS + 1)))) {
+        int _e17 = y;
+        if (!((_e17 < (PCF_RADIUS + 1)))) {
             break;
         }
         x = -(PCF_RADIUS);
         bool loop_init_1 = true;
         while(true) {
             if (!loop_init_1) {
-                int _e48 = x;
-                x = (_e48 + 1);
+                int _e40 = x;
+                x = (_e40 + 1);
             }
             loop_init_1 = false;
-            int _e27 = x;
-            if (!((_e27 < (PCF_RADIUS + 1)))) {
+            int _e23 = x;
+            if (!((_e23 < (PCF_RADIUS + 1)))) {
                 break;
             }
-            int _e31 = x;
-            int _e34 = y;
-            vec2 offset = (vec2(float(_e31), float(_e34)) * texel);
-            float _e45 = texture(shadow_map, vec3((coord.xy + offset), (coord.z - bias)));
-            float _e46 = lit;
-            lit = (_e46 + _e45);
+            int _e26 = x;
+            int _e28 = y;
+            vec2 offset = (vec2(float(_e26), float(_e28)) * texel);
+            float _e37 = texture(shadow_map, vec3((coord.xy + offset), (coord.z - bias)));
+            float _e38 = lit;
+            lit = (_e38 + _e37);
         }
     }
     int n = ((2 * PCF_RADIUS) + 1);
-    float _e60 = lit;
-    return (_e60 / float((n * n)));
+    float _e47 = lit;
+    return (_e47 / float((n * n)));
 }
 
 void main() {
@@ -71,15 +71,15 @@ void main() {
     if ((coord_1.z <= 1.0)) {
         float bias_1 = max((0.005 * (1.0 - ndotl)), 0.0005);
         float edge = min(min(coord_1.x, coord_1.y), min((1.0 - coord_1.x), (1.0 - coord_1.y)));
-        float _e43 = pcf_5x5_(coord_1, bias_1);
-        shadow = mix(1.0, _e43, clamp((edge * 20.0), 0.0, 1.0));
+        float _e36 = pcf_5x5_(coord_1, bias_1);
+        shadow = mix(1.0, _e36, clamp((edge * 20.0), 0.0, 1.0));
     }
-    vec4 _e50 = u_color;
-    float _e56 = shadow;
-    float _e62 = u_color.w;
-    out_f_color = vec4((_e50.xyz * (0.15 + ((0.85 * ndotl) * _e56))), _e62);
-    vec4 _e65 = out_f_color;
-    pcf_fs_out _tmp_return = pcf_fs_out(_e65);
+    vec4 _e43 = u_color;
+    float _e48 = shadow;
+    float _e53 = u_color.w;
+    out_f_color = vec4((_e43.xyz * (0.15 + ((0.85 * ndotl) * _e48))), _e53);
+    vec4 _e55 = out_f_color;
+    pcf_fs_out _tmp_return = pcf_fs_out(_e55);
     f_color = _tmp_return.f_color;
     return;
 }

@@ -37,35 +37,35 @@ fn pcf_5x5_(coord: vec3<f32>, bias: f32) -> f32 {
     lit = 0f;
     y = -(PCF_RADIUS);
     loop {
-        let _e18 = y;
-        if !((_e18 < (PCF_RADIUS + 1i))) {
+        let _e17 = y;
+        if !((_e17 < (PCF_RADIUS + 1i))) {
             break;
         }
         x = -(PCF_RADIUS);
         loop {
-            let _e27 = x;
-            if !((_e27 < (PCF_RADIUS + 1i))) {
+            let _e23 = x;
+            if !((_e23 < (PCF_RADIUS + 1i))) {
                 break;
             }
-            let _e31 = x;
-            let _e34 = y;
-            let offset = (vec2<f32>(f32(_e31), f32(_e34)) * texel);
-            let _e45 = textureSampleCompare(shadow_map, shadow_map_sampler, (coord.xy + offset), (coord.z - bias));
-            let _e46 = lit;
-            lit = (_e46 + _e45);
+            let _e26 = x;
+            let _e28 = y;
+            let offset = (vec2<f32>(f32(_e26), f32(_e28)) * texel);
+            let _e37 = textureSampleCompare(shadow_map, shadow_map_sampler, (coord.xy + offset), (coord.z - bias));
+            let _e38 = lit;
+            lit = (_e38 + _e37);
             continuing {
-                let _e48 = x;
-                x = (_e48 + 1i);
+                let _e40 = x;
+                x = (_e40 + 1i);
             }
         }
         continuing {
-            let _e51 = y;
-            y = (_e51 + 1i);
+            let _e42 = y;
+            y = (_e42 + 1i);
         }
     }
     let n = ((2i * PCF_RADIUS) + 1i);
-    let _e60 = lit;
-    return (_e60 / f32((n * n)));
+    let _e47 = lit;
+    return (_e47 / f32((n * n)));
 }
 
 @vertex 
@@ -76,16 +76,16 @@ fn pcf_vs(@location(0) a_position: vec3<f32>, @location(1) a_normal: vec3<f32>) 
 
     let _e4 = uniforms.u_model;
     let world = (_e4 * vec4<f32>(a_position, 1f));
-    let _e11 = uniforms.u_model;
-    v_normal = (_e11 * vec4<f32>(a_normal, 0f)).xyz;
-    let _e19 = uniforms.u_light_view_proj;
-    v_light_pos = (_e19 * world);
-    let _e24 = uniforms.u_view_proj;
-    gl_Position = (_e24 * world);
-    let _e27 = gl_Position;
-    let _e38 = v_normal;
-    let _e40 = v_light_pos;
-    return pcf_vs_out(vec4<f32>(_e27.x, -(_e27.y), ((_e27.z + _e27.w) * 0.5f), _e27.w), _e38, _e40);
+    let _e10 = uniforms.u_model;
+    v_normal = (_e10 * vec4<f32>(a_normal, 0f)).xyz;
+    let _e17 = uniforms.u_light_view_proj;
+    v_light_pos = (_e17 * world);
+    let _e21 = uniforms.u_view_proj;
+    gl_Position = (_e21 * world);
+    let _e23 = gl_Position;
+    let _e33 = v_normal;
+    let _e34 = v_light_pos;
+    return pcf_vs_out(vec4<f32>(_e23.x, -(_e23.y), ((_e23.z + _e23.w) * 0.5f), _e23.w), _e33, _e34);
 }
 
 @fragment 
@@ -102,13 +102,13 @@ fn pcf_fs(@location(0) v_normal_1: vec3<f32>, @location(1) v_light_pos_1: vec4<f
     if (coord_1.z <= 1f) {
         let bias_1 = max((0.005f * (1f - ndotl)), 0.0005f);
         let edge = min(min(coord_1.x, coord_1.y), min((1f - coord_1.x), (1f - coord_1.y)));
-        let _e44 = pcf_5x5_(coord_1, bias_1);
-        shadow = mix(1f, _e44, saturate((edge * 20f)));
+        let _e37 = pcf_5x5_(coord_1, bias_1);
+        shadow = mix(1f, _e37, saturate((edge * 20f)));
     }
-    let _e52 = uniforms.u_color;
-    let _e58 = shadow;
-    let _e65 = uniforms.u_color.w;
-    f_color = vec4<f32>((_e52.xyz * (0.15f + ((0.85f * ndotl) * _e58))), _e65);
-    let _e68 = f_color;
-    return pcf_fs_out(_e68);
+    let _e44 = uniforms.u_color;
+    let _e49 = shadow;
+    let _e55 = uniforms.u_color.w;
+    f_color = vec4<f32>((_e44.xyz * (0.15f + ((0.85f * ndotl) * _e49))), _e55);
+    let _e57 = f_color;
+    return pcf_fs_out(_e57);
 }

@@ -44,9 +44,9 @@ var shadow_map_sampler: sampler_comparison;
 
 fn shadow_clip() -> vec4<f32> {
     let _e2 = uniforms.u_light_vp;
-    let _e5 = uniforms.u_model;
-    let _e7 = a_pos;
-    return (_e2 * (_e5 * vec4<f32>(_e7, 1f)));
+    let _e4 = uniforms.u_model;
+    let _e6 = a_pos;
+    return (_e2 * (_e4 * vec4<f32>(_e6, 1f)));
 }
 
 fn world_position() -> vec4<f32> {
@@ -84,21 +84,21 @@ fn pcf_visibility(coord: vec3<f32>, bias: f32) -> f32 {
     seen = 0f;
     i = 0i;
     loop {
-        let _e15 = i;
-        if !((_e15 < PCF_TAPS)) {
+        let _e14 = i;
+        if !((_e14 < PCF_TAPS)) {
             break;
         }
-        let _e22 = i;
-        let _e30 = textureSampleCompare(shadow_map, shadow_map_sampler, (coord.xy + (PCF_OFFSETS[_e22] * texel)), (coord.z - bias));
-        let _e31 = seen;
-        seen = (_e31 + _e30);
+        let _e19 = i;
+        let _e26 = textureSampleCompare(shadow_map, shadow_map_sampler, (coord.xy + (PCF_OFFSETS[_e19] * texel)), (coord.z - bias));
+        let _e27 = seen;
+        seen = (_e27 + _e26);
         continuing {
-            let _e33 = i;
-            i = (_e33 + 1i);
+            let _e29 = i;
+            i = (_e29 + 1i);
         }
     }
-    let _e37 = seen;
-    return (_e37 / f32(PCF_TAPS));
+    let _e32 = seen;
+    return (_e32 / f32(PCF_TAPS));
 }
 
 fn surface_gloss() -> f32 {
@@ -131,18 +131,18 @@ fn sun_shade(visibility: f32) -> vec3<f32> {
     let n_1 = normalize(_e2);
     let _e6 = uniforms.u_light_dir;
     let l = normalize(_e6);
-    let _e10 = uniforms.u_cam_pos;
-    let _e12 = v_world_pos_1;
-    let v = normalize((_e10 - _e12));
+    let _e9 = uniforms.u_cam_pos;
+    let _e11 = v_world_pos_1;
+    let v = normalize((_e9 - _e11));
     let ndotl_1 = max(dot(n_1, l), 0f);
     let lit = select(visibility, 0f, (ndotl_1 < 0.05f));
     let h = normalize((l + v));
-    let _e30 = surface_gloss();
-    let spec = ((pow(max(dot(n_1, h), 0f), 48f) * lit) * _e30);
+    let _e27 = surface_gloss();
+    let spec = ((pow(max(dot(n_1, h), 0f), 48f) * lit) * _e27);
     let sun = vec3<f32>(1.3f, 1.15f, 0.9f);
-    let _e36 = surface_albedo();
-    let _e37 = hemisphere(n_1);
-    return ((_e36 * (_e37 + (sun * (ndotl_1 * lit)))) + vec3(spec));
+    let _e33 = surface_albedo();
+    let _e34 = hemisphere(n_1);
+    return ((_e33 * (_e34 + (sun * (ndotl_1 * lit)))) + vec3(spec));
 }
 
 @vertex 
@@ -152,8 +152,8 @@ fn pcf_shadow_vs(@location(0) in_a_pos: vec3<f32>) -> pcf_shadow_vs_out {
     a_pos = in_a_pos;
     let _e3 = shadow_clip();
     gl_Position = _e3;
-    let _e5 = gl_Position;
-    return pcf_shadow_vs_out(vec4<f32>(_e5.x, -(_e5.y), ((_e5.z + _e5.w) * 0.5f), _e5.w));
+    let _e4 = gl_Position;
+    return pcf_shadow_vs_out(vec4<f32>(_e4.x, -(_e4.y), ((_e4.z + _e4.w) * 0.5f), _e4.w));
 }
 
 @fragment 
@@ -161,8 +161,8 @@ fn pcf_shadow_fs() -> pcf_shadow_fs_out {
     var f_FragColor: vec4<f32>;
 
     f_FragColor = vec4(1f);
-    let _e4 = f_FragColor;
-    return pcf_shadow_fs_out(_e4);
+    let _e3 = f_FragColor;
+    return pcf_shadow_fs_out(_e3);
 }
 
 @vertex 
@@ -178,12 +178,12 @@ fn pcf_main_vs(@location(0) in_a_pos_1: vec3<f32>, @location(1) in_a_normal: vec
     let _e8 = world_normal();
     v_world_normal = _e8;
     let _e12 = uniforms.u_proj;
-    let _e15 = uniforms.u_view;
-    gl_Position_1 = (_e12 * (_e15 * _e4));
-    let _e19 = gl_Position_1;
-    let _e30 = v_world_pos;
-    let _e32 = v_world_normal;
-    return pcf_main_vs_out(vec4<f32>(_e19.x, -(_e19.y), ((_e19.z + _e19.w) * 0.5f), _e19.w), _e30, _e32);
+    let _e14 = uniforms.u_view;
+    gl_Position_1 = (_e12 * (_e14 * _e4));
+    let _e17 = gl_Position_1;
+    let _e27 = v_world_pos;
+    let _e28 = v_world_normal;
+    return pcf_main_vs_out(vec4<f32>(_e17.x, -(_e17.y), ((_e17.z + _e17.w) * 0.5f), _e17.w), _e27, _e28);
 }
 
 @fragment 
@@ -193,13 +193,13 @@ fn pcf_main_fs(@location(0) in_v_world_pos: vec3<f32>, @location(1) in_v_world_n
     v_world_pos_1 = in_v_world_pos;
     v_world_normal_1 = in_v_world_normal;
     let _e6 = uniforms.u_light_vp;
-    let _e8 = v_world_pos_1;
-    let _e12 = to_map((_e6 * vec4<f32>(_e8, 1f)));
-    let _e13 = sun_ndotl();
-    let _e14 = slope_bias(_e13);
-    let _e15 = pcf_visibility(_e12, _e14);
-    let _e17 = sun_shade(_e15);
-    f_FragColor_1 = vec4<f32>(_e17, 1f);
-    let _e21 = f_FragColor_1;
-    return pcf_main_fs_out(_e21);
+    let _e7 = v_world_pos_1;
+    let _e11 = to_map((_e6 * vec4<f32>(_e7, 1f)));
+    let _e12 = sun_ndotl();
+    let _e13 = slope_bias(_e12);
+    let _e14 = pcf_visibility(_e11, _e13);
+    let _e16 = sun_shade(_e14);
+    f_FragColor_1 = vec4<f32>(_e16, 1f);
+    let _e18 = f_FragColor_1;
+    return pcf_main_fs_out(_e18);
 }

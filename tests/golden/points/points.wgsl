@@ -23,8 +23,8 @@ fn points_vs(@location(0) a_pos: vec3<f32>) -> points_vs_out {
     let _e4 = uniforms.u_size;
     gl_PointSize = (_e4 / max(a_pos.z, 0.1f));
     gl_Position = vec4<f32>(a_pos, 1f);
-    let _e13 = gl_Position;
-    return points_vs_out(vec4<f32>(_e13.x, -(_e13.y), ((_e13.z + _e13.w) * 0.5f), _e13.w));
+    let _e12 = gl_Position;
+    return points_vs_out(vec4<f32>(_e12.x, -(_e12.y), ((_e12.z + _e12.w) * 0.5f), _e12.w));
 }
 
 @fragment 
@@ -37,6 +37,6 @@ fn points_fs() -> points_fs_out {
         discard;
     }
     f_color = vec4<f32>(_e1, 1f, 1f);
-    let _e13 = f_color;
-    return points_fs_out(_e13);
+    let _e10 = f_color;
+    return points_fs_out(_e10);
 }

@@ -16,8 +16,8 @@ void main() {
         discard;
     }
     out_f_color = vec4(PointCoord, 1.0, 1.0);
-    vec4 _e12 = out_f_color;
-    points_fs_out _tmp_return = points_fs_out(_e12);
+    vec4 _e10 = out_f_color;
+    points_fs_out _tmp_return = points_fs_out(_e10);
     f_color = _tmp_return.f_color;
     return;
 }

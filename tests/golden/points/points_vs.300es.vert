@@ -18,9 +18,9 @@ void main() {
     float _e3 = u_size;
     gen_gl_PointSize = (_e3 / max(in_a_pos.z, 0.1));
     gen_gl_Position = vec4(in_a_pos, 1.0);
-    vec4 _e12 = gen_gl_Position;
-    float _e14 = gen_gl_PointSize;
-    points_vs_out _tmp_return = points_vs_out(_e12, _e14);
+    vec4 _e11 = gen_gl_Position;
+    float _e12 = gen_gl_PointSize;
+    points_vs_out _tmp_return = points_vs_out(_e11, _e12);
     gl_Position = _tmp_return.gen_gl_Position;
     gl_PointSize = _tmp_return.gen_gl_PointSize;
     return;

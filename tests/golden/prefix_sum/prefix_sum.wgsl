@@ -29,41 +29,41 @@ fn prefix_sum_cs(@builtin(global_invocation_id) GlobalInvocationID: vec3<u32>, @
     value = 0u;
     let _e8 = input.count;
     if (i < _e8) {
-        let _e14 = input.data[i];
-        value = _e14;
+        let _e12 = input.data[i];
+        value = _e12;
     }
-    let _e18 = value;
-    scratch[LocalInvocationIndex] = _e18;
+    let _e15 = value;
+    scratch[LocalInvocationIndex] = _e15;
     workgroupBarrier();
     offset = 1u;
     loop {
-        let _e23 = offset;
-        if !((_e23 < u32(BLOCK))) {
+        let _e19 = offset;
+        if !((_e19 < u32(BLOCK))) {
             break;
         }
         add = 0u;
-        let _e31 = offset;
-        if (LocalInvocationIndex >= _e31) {
-            let _e36 = offset;
-            let _e39 = scratch[(LocalInvocationIndex - _e36)];
-            add = _e39;
+        let _e25 = offset;
+        if (LocalInvocationIndex >= _e25) {
+            let _e27 = offset;
+            let _e30 = scratch[(LocalInvocationIndex - _e27)];
+            add = _e30;
         }
         workgroupBarrier();
-        let _e45 = scratch[LocalInvocationIndex];
-        let _e47 = add;
-        scratch[LocalInvocationIndex] = (_e45 + _e47);
+        let _e33 = scratch[LocalInvocationIndex];
+        let _e34 = add;
+        scratch[LocalInvocationIndex] = (_e33 + _e34);
         workgroupBarrier();
-        let _e52 = offset;
-        offset = (_e52 * 2u);
+        let _e36 = offset;
+        offset = (_e36 * 2u);
     }
-    let _e57 = input.count;
-    if (i < _e57) {
-        let _e64 = scratch[LocalInvocationIndex];
-        output.data[i] = _e64;
+    let _e40 = input.count;
+    if (i < _e40) {
+        let _e46 = scratch[LocalInvocationIndex];
+        output.data[i] = _e46;
     }
     if (LocalInvocationIndex == (u32(BLOCK) - 1u)) {
-        let _e76 = scratch[LocalInvocationIndex];
-        totals.data[WorkGroupID.x] = _e76;
+        let _e55 = scratch[LocalInvocationIndex];
+        totals.data[WorkGroupID.x] = _e55;
     }
     return;
 }

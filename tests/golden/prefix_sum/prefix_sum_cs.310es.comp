@@ -40,44 +40,44 @@ void main() {
     value = 0u;
     uint _e8 = input_.count;
     if ((i < _e8)) {
-        uint _e14 = input_.data[i];
-        value = _e14;
+        uint _e12 = input_.data[i];
+        value = _e12;
     }
-    uint _e18 = value;
-    scratch[LocalInvocationIndex] = _e18;
+    uint _e15 = value;
+    scratch[LocalInvocationIndex] = _e15;
     memoryBarrierShared();
     barrier();
     offset = 1u;
     while(true) {
-        uint _e23 = offset;
-        if (!((_e23 < uint(BLOCK)))) {
+        uint _e19 = offset;
+        if (!((_e19 < uint(BLOCK)))) {
             break;
         }
         add = 0u;
-        uint _e31 = offset;
-        if ((LocalInvocationIndex >= _e31)) {
-            uint _e36 = offset;
-            uint _e39 = scratch[(LocalInvocationIndex - _e36)];
-            add = _e39;
+        uint _e25 = offset;
+        if ((LocalInvocationIndex >= _e25)) {
+            uint _e27 = offset;
+            uint _e30 = scratch[(LocalInvocationIndex - _e27)];
+            add = _e30;
         }
         memoryBarrierShared();
         barrier();
-        uint _e45 = scratch[LocalInvocationIndex];
-        uint _e47 = add;
-        scratch[LocalInvocationIndex] = (_e45 + _e47);
+        uint _e33 = scratch[LocalInvocationIndex];
+        uint _e34 = add;
+        scratch[LocalInvocationIndex] = (_e33 + _e34);
         memoryBarrierShared();
         barrier();
-        uint _e52 = offset;
-        offset = (_e52 * 2u);
+        uint _e36 = offset;
+        offset = (_e36 * 2u);
     }
-    uint _e57 = input_.count;
-    if ((i < _e57)) {
-        uint _e64 = scratch[LocalInvocationIndex];
-        output_.data[i] = _e64;
+    uint _e40 = input_.count;
+    if ((i < _e40)) {
+        uint _e46 = scratch[LocalInvocationIndex];
+        output_.data[i] = _e46;
     }
     if ((LocalInvocationIndex == (uint(BLOCK) - 1u))) {
-        uint _e76 = scratch[LocalInvocationIndex];
-        totals.data[WorkGroupID.x] = _e76;
+        uint _e55 = scratch[LocalInvocationIndex];
+        totals.data[WorkGroupID.x] = _e55;
     }
     return;
 }

@@ -19,12 +19,12 @@ void main() {
     vec3 _e4 = u_light_dir;
     float _e5 = lambert(n_1, _e4);
     c = vec3(_e5);
-    vec3 _e9 = c;
-    c = (_e9 * 0.9);
-    vec3 _e13 = c;
-    out_f_color = vec4(_e13, 1.0);
-    vec4 _e17 = out_f_color;
-    pp_fs_out _tmp_return = pp_fs_out(_e17);
+    vec3 _e8 = c;
+    c = (_e8 * 0.9);
+    vec3 _e11 = c;
+    out_f_color = vec4(_e11, 1.0);
+    vec4 _e14 = out_f_color;
+    pp_fs_out _tmp_return = pp_fs_out(_e14);
     f_color = _tmp_return.f_color;
     return;
 }

@@ -29,9 +29,9 @@ fn pp_vs(@location(0) a_pos: vec3<f32>, @location(1) a_normal: vec3<f32>) -> pp_
     v_normal = a_normal;
     let _e6 = uniforms.u_mvp;
     gl_Position = (_e6 * vec4<f32>(a_pos, 1f));
-    let _e11 = gl_Position;
-    let _e22 = v_normal;
-    return pp_vs_out(vec4<f32>(_e11.x, -(_e11.y), ((_e11.z + _e11.w) * 0.5f), _e11.w), _e22);
+    let _e10 = gl_Position;
+    let _e20 = v_normal;
+    return pp_vs_out(vec4<f32>(_e10.x, -(_e10.y), ((_e10.z + _e10.w) * 0.5f), _e10.w), _e20);
 }
 
 @fragment 
@@ -43,10 +43,10 @@ fn pp_fs(@location(0) v_normal_1: vec3<f32>) -> pp_fs_out {
     let _e5 = uniforms.u_light_dir;
     let _e6 = lambert(n_1, _e5);
     c = vec3(_e6);
-    let _e10 = c;
-    c = (_e10 * 0.9f);
-    let _e14 = c;
-    f_color = vec4<f32>(_e14, 1f);
-    let _e18 = f_color;
-    return pp_fs_out(_e18);
+    let _e9 = c;
+    c = (_e9 * 0.9f);
+    let _e12 = c;
+    f_color = vec4<f32>(_e12, 1f);
+    let _e15 = f_color;
+    return pp_fs_out(_e15);
 }

@@ -42,9 +42,9 @@ var shadow_map_sampler: sampler_comparison;
 
 fn shadow_clip() -> vec4<f32> {
     let _e2 = uniforms.u_light_vp;
-    let _e5 = uniforms.u_model;
-    let _e7 = a_pos;
-    return (_e2 * (_e5 * vec4<f32>(_e7, 1f)));
+    let _e4 = uniforms.u_model;
+    let _e6 = a_pos;
+    return (_e2 * (_e4 * vec4<f32>(_e6, 1f)));
 }
 
 fn world_position() -> vec4<f32> {
@@ -103,18 +103,18 @@ fn sun_shade(visibility: f32) -> vec3<f32> {
     let n_1 = normalize(_e2);
     let _e6 = uniforms.u_light_dir;
     let l = normalize(_e6);
-    let _e10 = uniforms.u_cam_pos;
-    let _e12 = v_world_pos_1;
-    let v = normalize((_e10 - _e12));
+    let _e9 = uniforms.u_cam_pos;
+    let _e11 = v_world_pos_1;
+    let v = normalize((_e9 - _e11));
     let ndotl_1 = max(dot(n_1, l), 0f);
     let lit = select(visibility, 0f, (ndotl_1 < 0.05f));
     let h = normalize((l + v));
-    let _e30 = surface_gloss();
-    let spec = ((pow(max(dot(n_1, h), 0f), 48f) * lit) * _e30);
+    let _e27 = surface_gloss();
+    let spec = ((pow(max(dot(n_1, h), 0f), 48f) * lit) * _e27);
     let sun = vec3<f32>(1.3f, 1.15f, 0.9f);
-    let _e36 = surface_albedo();
-    let _e37 = hemisphere(n_1);
-    return ((_e36 * (_e37 + (sun * (ndotl_1 * lit)))) + vec3(spec));
+    let _e33 = surface_albedo();
+    let _e34 = hemisphere(n_1);
+    return ((_e33 * (_e34 + (sun * (ndotl_1 * lit)))) + vec3(spec));
 }
 
 @vertex 
@@ -124,8 +124,8 @@ fn proj_shadow_vs(@location(0) in_a_pos: vec3<f32>) -> proj_shadow_vs_out {
     a_pos = in_a_pos;
     let _e3 = shadow_clip();
     gl_Position = _e3;
-    let _e5 = gl_Position;
-    return proj_shadow_vs_out(vec4<f32>(_e5.x, -(_e5.y), ((_e5.z + _e5.w) * 0.5f), _e5.w));
+    let _e4 = gl_Position;
+    return proj_shadow_vs_out(vec4<f32>(_e4.x, -(_e4.y), ((_e4.z + _e4.w) * 0.5f), _e4.w));
 }
 
 @fragment 
@@ -133,8 +133,8 @@ fn proj_shadow_fs() -> proj_shadow_fs_out {
     var f_FragColor: vec4<f32>;
 
     f_FragColor = vec4(1f);
-    let _e4 = f_FragColor;
-    return proj_shadow_fs_out(_e4);
+    let _e3 = f_FragColor;
+    return proj_shadow_fs_out(_e3);
 }
 
 @vertex 
@@ -153,14 +153,14 @@ fn proj_main_vs(@location(0) in_a_pos_1: vec3<f32>, @location(1) in_a_normal: ve
     let _e10 = bias_matrix();
     let _e13 = uniforms.u_light_vp;
     v_shadow_coord = ((_e10 * _e13) * _e4);
-    let _e19 = uniforms.u_proj;
-    let _e22 = uniforms.u_view;
-    gl_Position_1 = (_e19 * (_e22 * _e4));
-    let _e26 = gl_Position_1;
-    let _e37 = v_world_pos;
-    let _e39 = v_world_normal;
-    let _e41 = v_shadow_coord;
-    return proj_main_vs_out(vec4<f32>(_e26.x, -(_e26.y), ((_e26.z + _e26.w) * 0.5f), _e26.w), _e37, _e39, _e41);
+    let _e18 = uniforms.u_proj;
+    let _e20 = uniforms.u_view;
+    gl_Position_1 = (_e18 * (_e20 * _e4));
+    let _e23 = gl_Position_1;
+    let _e33 = v_world_pos;
+    let _e34 = v_world_normal;
+    let _e35 = v_shadow_coord;
+    return proj_main_vs_out(vec4<f32>(_e23.x, -(_e23.y), ((_e23.z + _e23.w) * 0.5f), _e23.w), _e33, _e34, _e35);
 }
 
 @fragment 
@@ -175,6 +175,6 @@ fn proj_main_fs(@location(0) in_v_world_pos: vec3<f32>, @location(1) in_v_world_
     let _e23 = textureSampleCompare(shadow_map, shadow_map_sampler, (biased.xy / vec2(biased.w)), (biased.z / biased.w));
     let _e24 = sun_shade(_e23);
     f_FragColor_1 = vec4<f32>(_e24, 1f);
-    let _e28 = f_FragColor_1;
-    return proj_main_fs_out(_e28);
+    let _e27 = f_FragColor_1;
+    return proj_main_fs_out(_e27);
 }

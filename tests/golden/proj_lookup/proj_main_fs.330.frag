@@ -65,12 +65,12 @@ vec3 sun_shade(float visibility) {
     float ndotl_1 = max(dot(n_1, l), 0.0);
     float lit = ((ndotl_1 < 0.05) ? 0.0 : visibility);
     vec3 h = normalize((l + v));
-    float _e28 = surface_gloss();
-    float spec = ((pow(max(dot(n_1, h), 0.0), 48.0) * lit) * _e28);
+    float _e26 = surface_gloss();
+    float spec = ((pow(max(dot(n_1, h), 0.0), 48.0) * lit) * _e26);
     vec3 sun = vec3(1.3, 1.15, 0.9);
-    vec3 _e34 = surface_albedo();
-    vec3 _e35 = hemisphere(n_1);
-    return ((_e34 * (_e35 + (sun * (ndotl_1 * lit)))) + vec3(spec));
+    vec3 _e32 = surface_albedo();
+    vec3 _e33 = hemisphere(n_1);
+    return ((_e32 * (_e33 + (sun * (ndotl_1 * lit)))) + vec3(spec));
 }
 
 void main() {
@@ -86,8 +86,8 @@ void main() {
     float _e23 = texture(shadow_map, vec3((biased.xy / vec2(biased.w)), (biased.z / biased.w)));
     vec3 _e24 = sun_shade(_e23);
     out_f_FragColor = vec4(_e24, 1.0);
-    vec4 _e28 = out_f_FragColor;
-    proj_main_fs_out _tmp_return = proj_main_fs_out(_e28);
+    vec4 _e27 = out_f_FragColor;
+    proj_main_fs_out _tmp_return = proj_main_fs_out(_e27);
     f_FragColor = _tmp_return.f_FragColor;
     return;
 }

@@ -58,11 +58,11 @@ void main() {
     mat4x4 _e17 = u_proj;
     mat4x4 _e19 = u_view;
     gen_gl_Position = (_e17 * (_e19 * _e4));
-    vec4 _e23 = gen_gl_Position;
-    vec3 _e25 = out_v_world_pos;
-    vec3 _e27 = out_v_world_normal;
-    vec4 _e29 = out_v_shadow_coord;
-    proj_main_vs_out _tmp_return = proj_main_vs_out(_e23, _e25, _e27, _e29);
+    vec4 _e22 = gen_gl_Position;
+    vec3 _e23 = out_v_world_pos;
+    vec3 _e24 = out_v_world_normal;
+    vec4 _e25 = out_v_shadow_coord;
+    proj_main_vs_out _tmp_return = proj_main_vs_out(_e22, _e23, _e24, _e25);
     gl_Position = _tmp_return.gen_gl_Position;
     v_world_pos = _tmp_return.v_world_pos;
     v_world_normal = _tmp_return.v_world_normal;

@@ -7,8 +7,8 @@ out vec4 f_FragColor;
 void main() {
     vec4 out_f_FragColor = vec4(0.0);
     out_f_FragColor = vec4(1.0);
-    vec4 _e4 = out_f_FragColor;
-    proj_shadow_fs_out _tmp_return = proj_shadow_fs_out(_e4);
+    vec4 _e3 = out_f_FragColor;
+    proj_shadow_fs_out _tmp_return = proj_shadow_fs_out(_e3);
     f_FragColor = _tmp_return.f_FragColor;
     return;
 }

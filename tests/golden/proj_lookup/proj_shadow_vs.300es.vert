@@ -27,8 +27,8 @@ void main() {
     io_a_pos = in_a_pos;
     vec4 _e3 = shadow_clip();
     gen_gl_Position = _e3;
-    vec4 _e5 = gen_gl_Position;
-    proj_shadow_vs_out _tmp_return = proj_shadow_vs_out(_e5);
+    vec4 _e4 = gen_gl_Position;
+    proj_shadow_vs_out _tmp_return = proj_shadow_vs_out(_e4);
     gl_Position = _tmp_return.gen_gl_Position;
     return;
 }

@@ -31,13 +31,13 @@ fn falloff(d: f32, k: f32) -> f32 {
     var d_1: f32;
 
     d_1 = d;
-    let _e5 = d_1;
-    d_1 = max(_e5, 0f);
+    let _e3 = d_1;
+    d_1 = max(_e3, 0f);
+    let _e6 = d_1;
+    d_1 = (_e6 * k);
     let _e9 = d_1;
-    d_1 = (_e9 * k);
-    let _e14 = d_1;
-    let _e16 = d_1;
-    return (1f / (1f + (_e14 * _e16)));
+    let _e10 = d_1;
+    return (1f / (1f + (_e9 * _e10)));
 }
 
 fn add_tap(acc_1: ptr<function, Accum>, c_1: vec3<f32>, w: f32) {
@@ -80,15 +80,15 @@ fn references_vs(@location(0) a_pos: vec2<f32>) -> references_vs_out {
     var uv: vec2<f32>;
 
     v_uv = ((a_pos * 0.5f) + vec2(0.5f));
-    let _e8 = v_uv;
-    uv = _e8;
+    let _e6 = v_uv;
+    uv = _e6;
     flip_y((&uv));
-    let _e11 = uv;
-    v_uv = _e11;
+    let _e8 = uv;
+    v_uv = _e8;
     gl_Position = vec4<f32>(a_pos, 0f, 1f);
-    let _e17 = gl_Position;
-    let _e28 = v_uv;
-    return references_vs_out(vec4<f32>(_e17.x, -(_e17.y), ((_e17.z + _e17.w) * 0.5f), _e17.w), _e28);
+    let _e13 = gl_Position;
+    let _e22 = v_uv;
+    return references_vs_out(vec4<f32>(_e13.x, -(_e13.y), ((_e13.z + _e13.w) * 0.5f), _e13.w), _e22);
 }
 
 @fragment 
@@ -106,46 +106,46 @@ fn references_fs(@location(0) v_uv_1: vec2<f32>) -> references_fs_out {
     weights = array<f32, 4>();
     i = 0i;
     loop {
-        let _e11 = i;
-        if !((_e11 < 4i)) {
+        let _e10 = i;
+        if !((_e10 < 4i)) {
             break;
         }
-        let _e17 = i;
-        let tap = uniforms.u_taps[_e17];
-        let _e22 = i;
-        let _e27 = falloff(distance(v_uv_1, tap.xy), 4f);
-        weights[_e22] = _e27;
-        let _e37 = i;
-        let _e39 = weights[_e37];
-        add_tap((&acc), vec3<f32>(tap.z, tap.w, (1f - tap.z)), _e39);
+        let _e15 = i;
+        let tap = uniforms.u_taps[_e15];
+        let _e18 = i;
+        let _e23 = falloff(distance(v_uv_1, tap.xy), 4f);
+        weights[_e18] = _e23;
+        let _e30 = i;
+        let _e32 = weights[_e30];
+        add_tap((&acc), vec3<f32>(tap.z, tap.w, (1f - tap.z)), _e32);
         continuing {
-            let _e40 = i;
-            i = (_e40 + 1i);
+            let _e33 = i;
+            i = (_e33 + 1i);
         }
     }
-    let _e45 = weights[3];
-    x = _e45;
+    let _e37 = weights[3];
+    x = _e37;
     clamp_into((&x), 0f, 0.5f);
-    let _e50 = x;
-    weights[3] = _e50;
+    let _e40 = x;
+    weights[3] = _e40;
     settle((&acc));
-    let _e54 = acc;
-    let _e55 = mean(_e54);
-    c = _e55;
-    let _e58 = c.y;
-    x_1 = _e58;
+    let _e42 = acc;
+    let _e43 = mean(_e42);
+    c = _e43;
+    let _e45 = c.y;
+    x_1 = _e45;
     clamp_into((&x_1), 0.1f, 0.9f);
-    let _e63 = x_1;
-    c.y = _e63;
-    let _e65 = c;
-    v = _e65.xz;
+    let _e49 = x_1;
+    c.y = _e49;
+    let _e50 = c;
+    v = _e50.xz;
     saturate2_((&v));
-    let _e69 = v;
-    let _e70 = c;
-    c = vec3<f32>(_e69.x, _e70.y, _e69.y);
-    let _e77 = c;
-    let _e80 = weights[3];
-    f_color = vec4<f32>(_e77, _e80);
-    let _e83 = f_color;
-    return references_fs_out(_e83);
+    let _e53 = v;
+    let _e54 = c;
+    c = vec3<f32>(_e53.x, _e54.y, _e53.y);
+    let _e60 = c;
+    let _e62 = weights[3];
+    f_color = vec4<f32>(_e60, _e62);
+    let _e64 = f_color;
+    return references_fs_out(_e64);
 }

@@ -18,13 +18,13 @@ out vec4 f_color;
 float falloff(float d, float k) {
     float d_1 = 0.0;
     d_1 = d;
-    float _e5 = d_1;
-    d_1 = max(_e5, 0.0);
+    float _e3 = d_1;
+    d_1 = max(_e3, 0.0);
+    float _e6 = d_1;
+    d_1 = (_e6 * k);
     float _e9 = d_1;
-    d_1 = (_e9 * k);
-    float _e14 = d_1;
-    float _e16 = d_1;
-    return (1.0 / (1.0 + (_e14 * _e16)));
+    float _e10 = d_1;
+    return (1.0 / (1.0 + (_e9 * _e10)));
 }
 
 void add_tap(inout Accum acc_1, vec3 c_1, float w) {
@@ -76,48 +76,48 @@ void main() {
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            int _e39 = i;
-            i = (_e39 + 1);
+            int _e32 = i;
+            i = (_e32 + 1);
         }
         loop_init = false;
-        int _e11 = i;
-        if (!((_e11 < 4))) {
+        int _e10 = i;
+        if (!((_e10 < 4))) {
             break;
         }
-        int _e16 = i;
-        vec4 tap = u_taps[_e16];
-        int _e21 = i;
-        float _e26 = falloff(distance(in_v_uv, tap.xy), 4.0);
-        weights[_e21] = _e26;
-        int _e36 = i;
-        float _e38 = weights[_e36];
-        add_tap(acc, vec3(tap.z, tap.w, (1.0 - tap.z)), _e38);
+        int _e14 = i;
+        vec4 tap = u_taps[_e14];
+        int _e17 = i;
+        float _e22 = falloff(distance(in_v_uv, tap.xy), 4.0);
+        weights[_e17] = _e22;
+        int _e29 = i;
+        float _e31 = weights[_e29];
+        add_tap(acc, vec3(tap.z, tap.w, (1.0 - tap.z)), _e31);
     }
-    float _e44 = weights[3];
-    x = _e44;
+    float _e36 = weights[3];
+    x = _e36;
     clamp_into(x, 0.0, 0.5);
-    float _e49 = x;
-    weights[3] = _e49;
+    float _e39 = x;
+    weights[3] = _e39;
     settle(acc);
-    Accum _e53 = acc;
-    vec3 _e54 = mean(_e53);
-    c = _e54;
-    float _e57 = c.y;
-    x_1 = _e57;
+    Accum _e41 = acc;
+    vec3 _e42 = mean(_e41);
+    c = _e42;
+    float _e44 = c.y;
+    x_1 = _e44;
     clamp_into(x_1, 0.1, 0.9);
-    float _e62 = x_1;
-    c.y = _e62;
-    vec3 _e64 = c;
-    v = _e64.xz;
+    float _e48 = x_1;
+    c.y = _e48;
+    vec3 _e49 = c;
+    v = _e49.xz;
     saturate2_(v);
-    vec2 _e68 = v;
-    vec3 _e69 = c;
-    c = vec3(_e68.x, _e69.y, _e68.y);
-    vec3 _e76 = c;
-    float _e79 = weights[3];
-    out_f_color = vec4(_e76, _e79);
-    vec4 _e82 = out_f_color;
-    references_fs_out _tmp_return = references_fs_out(_e82);
+    vec2 _e52 = v;
+    vec3 _e53 = c;
+    c = vec3(_e52.x, _e53.y, _e52.y);
+    vec3 _e59 = c;
+    float _e61 = weights[3];
+    out_f_color = vec4(_e59, _e61);
+    vec4 _e63 = out_f_color;
+    references_fs_out _tmp_return = references_fs_out(_e63);
     f_color = _tmp_return.f_color;
     return;
 }

@@ -55,9 +55,9 @@ fn world_normal() -> vec3<f32> {
 
 fn shadow_clip() -> vec4<f32> {
     let _e2 = uniforms.u_light_vp;
-    let _e5 = uniforms.u_model;
-    let _e7 = a_pos;
-    return (_e2 * (_e5 * vec4<f32>(_e7, 1f)));
+    let _e4 = uniforms.u_model;
+    let _e6 = a_pos;
+    return (_e2 * (_e4 * vec4<f32>(_e6, 1f)));
 }
 
 fn encode_depth(d: f32) -> vec4<f32> {
@@ -113,18 +113,18 @@ fn sun_shade(visibility: f32) -> vec3<f32> {
     let n_1 = normalize(_e2);
     let _e6 = uniforms.u_light_dir;
     let l = normalize(_e6);
-    let _e10 = uniforms.u_cam_pos;
-    let _e12 = v_world_pos_1;
-    let v = normalize((_e10 - _e12));
+    let _e9 = uniforms.u_cam_pos;
+    let _e11 = v_world_pos_1;
+    let v = normalize((_e9 - _e11));
     let ndotl_1 = max(dot(n_1, l), 0f);
     let lit = select(visibility, 0f, (ndotl_1 < 0.05f));
     let h = normalize((l + v));
-    let _e30 = surface_gloss();
-    let spec = ((pow(max(dot(n_1, h), 0f), 48f) * lit) * _e30);
+    let _e27 = surface_gloss();
+    let spec = ((pow(max(dot(n_1, h), 0f), 48f) * lit) * _e27);
     let sun = vec3<f32>(1.3f, 1.15f, 0.9f);
-    let _e36 = surface_albedo();
-    let _e37 = hemisphere(n_1);
-    return ((_e36 * (_e37 + (sun * (ndotl_1 * lit)))) + vec3(spec));
+    let _e33 = surface_albedo();
+    let _e34 = hemisphere(n_1);
+    return ((_e33 * (_e34 + (sun * (ndotl_1 * lit)))) + vec3(spec));
 }
 
 @vertex 
@@ -140,12 +140,12 @@ fn rgba8_main_vs(@location(0) in_a_pos: vec3<f32>, @location(1) in_a_normal: vec
     let _e8 = world_normal();
     v_world_normal = _e8;
     let _e12 = uniforms.u_proj;
-    let _e15 = uniforms.u_view;
-    gl_Position = (_e12 * (_e15 * _e4));
-    let _e19 = gl_Position;
-    let _e30 = v_world_pos;
-    let _e32 = v_world_normal;
-    return rgba8_main_vs_out(vec4<f32>(_e19.x, -(_e19.y), ((_e19.z + _e19.w) * 0.5f), _e19.w), _e30, _e32);
+    let _e14 = uniforms.u_view;
+    gl_Position = (_e12 * (_e14 * _e4));
+    let _e17 = gl_Position;
+    let _e27 = v_world_pos;
+    let _e28 = v_world_normal;
+    return rgba8_main_vs_out(vec4<f32>(_e17.x, -(_e17.y), ((_e17.z + _e17.w) * 0.5f), _e17.w), _e27, _e28);
 }
 
 @vertex 
@@ -155,8 +155,8 @@ fn rgba8_shadow_vs(@location(0) in_a_pos_1: vec3<f32>) -> rgba8_shadow_vs_out {
     a_pos = in_a_pos_1;
     let _e3 = shadow_clip();
     gl_Position_1 = _e3;
-    let _e5 = gl_Position_1;
-    return rgba8_shadow_vs_out(vec4<f32>(_e5.x, -(_e5.y), ((_e5.z + _e5.w) * 0.5f), _e5.w));
+    let _e4 = gl_Position_1;
+    return rgba8_shadow_vs_out(vec4<f32>(_e4.x, -(_e4.y), ((_e4.z + _e4.w) * 0.5f), _e4.w));
 }
 
 @fragment 
@@ -165,8 +165,8 @@ fn rgba8_shadow_fs(@builtin(position) FragCoord: vec4<f32>) -> rgba8_shadow_fs_o
 
     let _e3 = encode_depth(FragCoord.z);
     f_FragColor = _e3;
-    let _e5 = f_FragColor;
-    return rgba8_shadow_fs_out(_e5);
+    let _e4 = f_FragColor;
+    return rgba8_shadow_fs_out(_e4);
 }
 
 @fragment 
@@ -176,15 +176,15 @@ fn rgba8_main_fs(@location(0) in_v_world_pos: vec3<f32>, @location(1) in_v_world
     v_world_pos_1 = in_v_world_pos;
     v_world_normal_1 = in_v_world_normal;
     let _e6 = uniforms.u_light_vp;
-    let _e8 = v_world_pos_1;
-    let _e12 = to_map((_e6 * vec4<f32>(_e8, 1f)));
-    let _e16 = textureSample(shadow_rgba, shadow_rgba_sampler, _e12.xy);
-    let _e17 = decode_depth(_e16);
-    let _e21 = sun_ndotl();
-    let _e22 = slope_bias(_e21);
-    let visibility_1 = select(1f, 0f, (((_e12.z - DEPTH_BIAS) - _e22) > _e17));
-    let _e29 = sun_shade(visibility_1);
-    f_FragColor_1 = vec4<f32>(_e29, 1f);
-    let _e33 = f_FragColor_1;
-    return rgba8_main_fs_out(_e33);
+    let _e7 = v_world_pos_1;
+    let _e11 = to_map((_e6 * vec4<f32>(_e7, 1f)));
+    let _e15 = textureSample(shadow_rgba, shadow_rgba_sampler, _e11.xy);
+    let _e16 = decode_depth(_e15);
+    let _e20 = sun_ndotl();
+    let _e21 = slope_bias(_e20);
+    let visibility_1 = select(1f, 0f, (((_e11.z - DEPTH_BIAS) - _e21) > _e16));
+    let _e27 = sun_shade(visibility_1);
+    f_FragColor_1 = vec4<f32>(_e27, 1f);
+    let _e29 = f_FragColor_1;
+    return rgba8_main_fs_out(_e29);
 }

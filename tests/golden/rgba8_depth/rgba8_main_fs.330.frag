@@ -76,12 +76,12 @@ vec3 sun_shade(float visibility) {
     float ndotl_1 = max(dot(n_1, l), 0.0);
     float lit = ((ndotl_1 < 0.05) ? 0.0 : visibility);
     vec3 h = normalize((l + v));
-    float _e28 = surface_gloss();
-    float spec = ((pow(max(dot(n_1, h), 0.0), 48.0) * lit) * _e28);
+    float _e26 = surface_gloss();
+    float spec = ((pow(max(dot(n_1, h), 0.0), 48.0) * lit) * _e26);
     vec3 sun = vec3(1.3, 1.15, 0.9);
-    vec3 _e34 = surface_albedo();
-    vec3 _e35 = hemisphere(n_1);
-    return ((_e34 * (_e35 + (sun * (ndotl_1 * lit)))) + vec3(spec));
+    vec3 _e32 = surface_albedo();
+    vec3 _e33 = hemisphere(n_1);
+    return ((_e32 * (_e33 + (sun * (ndotl_1 * lit)))) + vec3(spec));
 }
 
 void main() {
@@ -91,17 +91,17 @@ void main() {
     io_v_world_pos = in_v_world_pos;
     io_v_world_normal = in_v_world_normal;
     mat4x4 _e5 = u_light_vp;
-    vec3 _e7 = io_v_world_pos;
-    vec3 _e11 = to_map((_e5 * vec4(_e7, 1.0)));
-    vec4 _e15 = texture(shadow_rgba, vec2(_e11.xy));
-    float _e16 = decode_depth(_e15);
-    float _e20 = sun_ndotl();
-    float _e21 = slope_bias(_e20);
-    float visibility_1 = ((((_e11.z - DEPTH_BIAS) - _e21) > _e16) ? 0.0 : 1.0);
-    vec3 _e28 = sun_shade(visibility_1);
-    out_f_FragColor = vec4(_e28, 1.0);
-    vec4 _e32 = out_f_FragColor;
-    rgba8_main_fs_out _tmp_return = rgba8_main_fs_out(_e32);
+    vec3 _e6 = io_v_world_pos;
+    vec3 _e10 = to_map((_e5 * vec4(_e6, 1.0)));
+    vec4 _e14 = texture(shadow_rgba, vec2(_e10.xy));
+    float _e15 = decode_depth(_e14);
+    float _e19 = sun_ndotl();
+    float _e20 = slope_bias(_e19);
+    float visibility_1 = ((((_e10.z - DEPTH_BIAS) - _e20) > _e15) ? 0.0 : 1.0);
+    vec3 _e26 = sun_shade(visibility_1);
+    out_f_FragColor = vec4(_e26, 1.0);
+    vec4 _e28 = out_f_FragColor;
+    rgba8_main_fs_out _tmp_return = rgba8_main_fs_out(_e28);
     f_FragColor = _tmp_return.f_FragColor;
     return;
 }

@@ -18,8 +18,8 @@ void main() {
     vec4 out_f_FragColor = vec4(0.0);
     vec4 _e3 = encode_depth(FragCoord.z);
     out_f_FragColor = _e3;
-    vec4 _e5 = out_f_FragColor;
-    rgba8_shadow_fs_out _tmp_return = rgba8_shadow_fs_out(_e5);
+    vec4 _e4 = out_f_FragColor;
+    rgba8_shadow_fs_out _tmp_return = rgba8_shadow_fs_out(_e4);
     f_FragColor = _tmp_return.f_FragColor;
     return;
 }

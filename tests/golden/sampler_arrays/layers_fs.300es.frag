@@ -36,13 +36,13 @@ vec4 layer(int i_1, vec2 uv) {
             break;
         }
         default: {
-            vec4 _e15 = texture(layers_2, vec2(uv));
-            texel_2 = _e15;
+            vec4 _e14 = texture(layers_2, vec2(uv));
+            texel_2 = _e14;
             break;
         }
     }
-    vec4 _e18 = texel_2;
-    return _e18;
+    vec4 _e15 = texel_2;
+    return _e15;
 }
 
 void main() {
@@ -55,15 +55,15 @@ void main() {
     float texel_1 = 0.0;
     vec4 _e4 = texture(layers_0, vec2(in_v_uv));
     c = (_e4 * 0.5);
-    vec4 _e13 = textureLod(layers_2, vec2((in_v_uv * 4.0)), 0.0);
-    vec4 _e14 = c;
-    c = (_e14 + _e13);
-    int _e18 = u_pick;
-    vec4 _e19 = layer(_e18, in_v_uv);
-    vec4 _e20 = c;
-    c = (_e20 + _e19);
-    int _e24 = u_pick;
-    switch(min(max((_e24 + 1), 0), 2)) {
+    vec4 _e12 = textureLod(layers_2, vec2((in_v_uv * 4.0)), 0.0);
+    vec4 _e13 = c;
+    c = (_e13 + _e12);
+    int _e16 = u_pick;
+    vec4 _e17 = layer(_e16, in_v_uv);
+    vec4 _e18 = c;
+    c = (_e18 + _e17);
+    int _e21 = u_pick;
+    switch(min(max((_e21 + 1), 0), 2)) {
         case 0: {
             texel = ivec2(uvec2(textureSize(layers_0, 0).xy));
             break;
@@ -83,36 +83,36 @@ void main() {
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            int _e71 = i;
-            i = (_e71 + 1);
+            int _e52 = i;
+            i = (_e52 + 1);
         }
         loop_init = false;
-        int _e49 = i;
-        if (!((_e49 < 2))) {
+        int _e37 = i;
+        if (!((_e37 < 2))) {
             break;
         }
-        int _e55 = i;
-        switch(min(max(_e55, 0), 1)) {
+        int _e40 = i;
+        switch(min(max(_e40, 0), 1)) {
             case 0: {
-                float _e61 = texture(shadows_0, vec3(in_v_uv, 0.5));
-                texel_1 = _e61;
+                float _e44 = texture(shadows_0, vec3(in_v_uv, 0.5));
+                texel_1 = _e44;
                 break;
             }
             default: {
-                float _e65 = texture(shadows_1, vec3(in_v_uv, 0.5));
-                texel_1 = _e65;
+                float _e48 = texture(shadows_1, vec3(in_v_uv, 0.5));
+                texel_1 = _e48;
                 break;
             }
         }
-        float _e68 = texel_1;
-        float _e69 = lit;
-        lit = (_e69 + _e68);
+        float _e49 = texel_1;
+        float _e50 = lit;
+        lit = (_e50 + _e49);
     }
-    vec4 _e76 = c;
-    float _e78 = lit;
-    out_f_color = ((_e76 * _e78) + vec4((float(size.x) * 0.0)));
-    vec4 _e87 = out_f_color;
-    layers_fs_out _tmp_return = layers_fs_out(_e87);
+    vec4 _e55 = c;
+    float _e56 = lit;
+    out_f_color = ((_e55 * _e56) + vec4((float(size.x) * 0.0)));
+    vec4 _e63 = out_f_color;
+    layers_fs_out _tmp_return = layers_fs_out(_e63);
     f_color = _tmp_return.f_color;
     return;
 }

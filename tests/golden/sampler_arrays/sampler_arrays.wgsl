@@ -51,12 +51,12 @@ fn layer(i_1: i32, uv: vec2<f32>) -> vec4<f32> {
             texel_2 = _e11;
         }
         default: {
-            let _e15 = textureSample(layers_2_, layers_2_sampler, uv);
-            texel_2 = _e15;
+            let _e14 = textureSample(layers_2_, layers_2_sampler, uv);
+            texel_2 = _e14;
         }
     }
-    let _e18 = texel_2;
-    return _e18;
+    let _e15 = texel_2;
+    return _e15;
 }
 
 @vertex 
@@ -66,9 +66,9 @@ fn layers_vs(@location(0) a_pos: vec2<f32>) -> layers_vs_out {
 
     v_uv = ((a_pos * 0.5f) + vec2(0.5f));
     gl_Position = vec4<f32>(a_pos, 0f, 1f);
-    let _e12 = gl_Position;
-    let _e23 = v_uv;
-    return layers_vs_out(vec4<f32>(_e12.x, -(_e12.y), ((_e12.z + _e12.w) * 0.5f), _e12.w), _e23);
+    let _e10 = gl_Position;
+    let _e19 = v_uv;
+    return layers_vs_out(vec4<f32>(_e10.x, -(_e10.y), ((_e10.z + _e10.w) * 0.5f), _e10.w), _e19);
 }
 
 @fragment 
@@ -82,58 +82,58 @@ fn layers_fs(@location(0) v_uv_1: vec2<f32>) -> layers_fs_out {
 
     let _e4 = textureSample(layers_0_, layers_0_sampler, v_uv_1);
     c = (_e4 * 0.5f);
-    let _e13 = textureSampleLevel(layers_2_, layers_2_sampler, (v_uv_1 * 4f), 0f);
-    let _e14 = c;
-    c = (_e14 + _e13);
-    let _e19 = uniforms.u_pick;
-    let _e20 = layer(_e19, v_uv_1);
-    let _e21 = c;
-    c = (_e21 + _e20);
-    let _e26 = uniforms.u_pick;
-    switch clamp((_e26 + 1i), 0i, 2i) {
+    let _e12 = textureSampleLevel(layers_2_, layers_2_sampler, (v_uv_1 * 4f), 0f);
+    let _e13 = c;
+    c = (_e13 + _e12);
+    let _e17 = uniforms.u_pick;
+    let _e18 = layer(_e17, v_uv_1);
+    let _e19 = c;
+    c = (_e19 + _e18);
+    let _e23 = uniforms.u_pick;
+    switch clamp((_e23 + 1i), 0i, 2i) {
         case 0: {
-            let _e33 = textureDimensions(layers_0_, 0i);
-            texel = vec2<i32>(_e33);
+            let _e28 = textureDimensions(layers_0_, 0i);
+            texel = vec2<i32>(_e28);
         }
         case 1: {
-            let _e37 = textureDimensions(layers_1_, 0i);
-            texel = vec2<i32>(_e37);
+            let _e32 = textureDimensions(layers_1_, 0i);
+            texel = vec2<i32>(_e32);
         }
         default: {
-            let _e41 = textureDimensions(layers_2_, 0i);
-            texel = vec2<i32>(_e41);
+            let _e34 = textureDimensions(layers_2_, 0i);
+            texel = vec2<i32>(_e34);
         }
     }
     let size = texel;
     lit = 0f;
     i = 0i;
     loop {
-        let _e51 = i;
-        if !((_e51 < 2i)) {
+        let _e39 = i;
+        if !((_e39 < 2i)) {
             break;
         }
-        let _e57 = i;
-        switch clamp(_e57, 0i, 1i) {
+        let _e42 = i;
+        switch clamp(_e42, 0i, 1i) {
             case 0: {
-                let _e63 = textureSampleCompare(shadows_0_, shadows_0_sampler, v_uv_1, 0.5f);
-                texel_1 = _e63;
+                let _e46 = textureSampleCompare(shadows_0_, shadows_0_sampler, v_uv_1, 0.5f);
+                texel_1 = _e46;
             }
             default: {
-                let _e67 = textureSampleCompare(shadows_1_, shadows_1_sampler, v_uv_1, 0.5f);
-                texel_1 = _e67;
+                let _e50 = textureSampleCompare(shadows_1_, shadows_1_sampler, v_uv_1, 0.5f);
+                texel_1 = _e50;
             }
         }
-        let _e70 = texel_1;
-        let _e71 = lit;
-        lit = (_e71 + _e70);
+        let _e51 = texel_1;
+        let _e52 = lit;
+        lit = (_e52 + _e51);
         continuing {
-            let _e73 = i;
-            i = (_e73 + 1i);
+            let _e54 = i;
+            i = (_e54 + 1i);
         }
     }
-    let _e78 = c;
-    let _e80 = lit;
-    f_color = ((_e78 * _e80) + vec4((f32(size.x) * 0f)));
-    let _e89 = f_color;
-    return layers_fs_out(_e89);
+    let _e57 = c;
+    let _e58 = lit;
+    f_color = ((_e57 * _e58) + vec4((f32(size.x) * 0f)));
+    let _e65 = f_color;
+    return layers_fs_out(_e65);
 }

@@ -50,9 +50,9 @@ fn tap_albedo(uv_1: vec2<f32>) -> vec4<f32> {
 fn blur_albedo(uv_2: vec2<f32>) -> vec4<f32> {
     let _e3 = uniforms.u_texel;
     let _e7 = tap_albedo((uv_2 - vec2<f32>(_e3, 0f)));
-    let _e10 = uniforms.u_texel;
-    let _e14 = tap_albedo((uv_2 + vec2<f32>(_e10, 0f)));
-    return ((_e7 + _e14) * 0.5f);
+    let _e9 = uniforms.u_texel;
+    let _e12 = tap_albedo((uv_2 + vec2<f32>(_e9, 0f)));
+    return ((_e7 + _e12) * 0.5f);
 }
 
 fn tap_detail(uv_3: vec2<f32>) -> vec4<f32> {
@@ -63,9 +63,9 @@ fn tap_detail(uv_3: vec2<f32>) -> vec4<f32> {
 fn blur_detail(uv_4: vec2<f32>) -> vec4<f32> {
     let _e3 = uniforms.u_texel;
     let _e7 = tap_detail((uv_4 - vec2<f32>(_e3, 0f)));
-    let _e10 = uniforms.u_texel;
-    let _e14 = tap_detail((uv_4 + vec2<f32>(_e10, 0f)));
-    return ((_e7 + _e14) * 0.5f);
+    let _e9 = uniforms.u_texel;
+    let _e12 = tap_detail((uv_4 + vec2<f32>(_e9, 0f)));
+    return ((_e7 + _e12) * 0.5f);
 }
 
 fn pcf_sun_shadow(uv_5: vec2<f32>, depth: f32) -> f32 {
@@ -82,28 +82,28 @@ fn pcf_sun_shadow(uv_5: vec2<f32>, depth: f32) -> f32 {
         }
         x = -(1i);
         loop {
-            let _e15 = x;
-            if !((_e15 < 2i)) {
+            let _e13 = x;
+            if !((_e13 < 2i)) {
                 break;
             }
-            let _e20 = x;
-            let _e23 = y;
-            let _e28 = uniforms.u_texel;
-            let _e33 = textureSampleCompare(sun_shadow, sun_shadow_sampler, (uv_5 + (vec2<f32>(f32(_e20), f32(_e23)) * _e28)), depth);
-            let _e34 = lit;
-            lit = (_e34 + _e33);
+            let _e16 = x;
+            let _e18 = y;
+            let _e23 = uniforms.u_texel;
+            let _e28 = textureSampleCompare(sun_shadow, sun_shadow_sampler, (uv_5 + (vec2<f32>(f32(_e16), f32(_e18)) * _e23)), depth);
+            let _e29 = lit;
+            lit = (_e29 + _e28);
             continuing {
-                let _e36 = x;
-                x = (_e36 + 1i);
+                let _e31 = x;
+                x = (_e31 + 1i);
             }
         }
         continuing {
-            let _e39 = y;
-            y = (_e39 + 1i);
+            let _e33 = y;
+            y = (_e33 + 1i);
         }
     }
-    let _e43 = lit;
-    return (_e43 / 9f);
+    let _e35 = lit;
+    return (_e35 / 9f);
 }
 
 fn pcf_cascades_1_(uv_6: vec2<f32>, depth_1: f32) -> f32 {
@@ -120,28 +120,28 @@ fn pcf_cascades_1_(uv_6: vec2<f32>, depth_1: f32) -> f32 {
         }
         x_1 = -(1i);
         loop {
-            let _e15 = x_1;
-            if !((_e15 < 2i)) {
+            let _e13 = x_1;
+            if !((_e13 < 2i)) {
                 break;
             }
-            let _e20 = x_1;
-            let _e23 = y_1;
-            let _e28 = uniforms.u_texel;
-            let _e33 = textureSampleCompare(cascades_1_, cascades_1_sampler, (uv_6 + (vec2<f32>(f32(_e20), f32(_e23)) * _e28)), depth_1);
-            let _e34 = lit_1;
-            lit_1 = (_e34 + _e33);
+            let _e16 = x_1;
+            let _e18 = y_1;
+            let _e23 = uniforms.u_texel;
+            let _e28 = textureSampleCompare(cascades_1_, cascades_1_sampler, (uv_6 + (vec2<f32>(f32(_e16), f32(_e18)) * _e23)), depth_1);
+            let _e29 = lit_1;
+            lit_1 = (_e29 + _e28);
             continuing {
-                let _e36 = x_1;
-                x_1 = (_e36 + 1i);
+                let _e31 = x_1;
+                x_1 = (_e31 + 1i);
             }
         }
         continuing {
-            let _e39 = y_1;
-            y_1 = (_e39 + 1i);
+            let _e33 = y_1;
+            y_1 = (_e33 + 1i);
         }
     }
-    let _e43 = lit_1;
-    return (_e43 / 9f);
+    let _e35 = lit_1;
+    return (_e35 / 9f);
 }
 
 @vertex 
@@ -151,15 +151,15 @@ fn sampler_params_vs(@location(0) a_pos: vec2<f32>) -> sampler_params_vs_out {
     var gl_Position: vec4<f32>;
 
     v_uv = ((a_pos * 0.5f) + vec2(0.5f));
-    let _e9 = v_uv;
-    let _e10 = tap_detail_vertex(_e9);
-    v_height = _e10.x;
-    let _e14 = v_height;
-    gl_Position = vec4<f32>(a_pos, _e14, 1f);
-    let _e18 = gl_Position;
-    let _e29 = v_uv;
-    let _e31 = v_height;
-    return sampler_params_vs_out(vec4<f32>(_e18.x, -(_e18.y), ((_e18.z + _e18.w) * 0.5f), _e18.w), _e29, _e31);
+    let _e7 = v_uv;
+    let _e8 = tap_detail_vertex(_e7);
+    v_height = _e8.x;
+    let _e11 = v_height;
+    gl_Position = vec4<f32>(a_pos, _e11, 1f);
+    let _e14 = gl_Position;
+    let _e23 = v_uv;
+    let _e24 = v_height;
+    return sampler_params_vs_out(vec4<f32>(_e14.x, -(_e14.y), ((_e14.z + _e14.w) * 0.5f), _e14.w), _e23, _e24);
 }
 
 @fragment 
@@ -174,6 +174,6 @@ fn sampler_params_fs(@location(0) v_uv_1: vec2<f32>, @location(1) v_height_1: f3
     let lit_2 = (_e12 * _e13);
     let _e18 = tap_detail(v_uv_1);
     f_color = vec4<f32>((base.xyz * lit_2), _e18.w);
-    let _e22 = f_color;
-    return sampler_params_fs_out(_e22);
+    let _e21 = f_color;
+    return sampler_params_fs_out(_e21);
 }

@@ -24,9 +24,9 @@ vec4 tap_albedo(vec2 uv) {
 vec4 blur_albedo(vec2 uv_1) {
     float _e2 = u_texel;
     vec4 _e6 = tap_albedo((uv_1 - vec2(_e2, 0.0)));
-    float _e8 = u_texel;
-    vec4 _e12 = tap_albedo((uv_1 + vec2(_e8, 0.0)));
-    return ((_e6 + _e12) * 0.5);
+    float _e7 = u_texel;
+    vec4 _e10 = tap_albedo((uv_1 + vec2(_e7, 0.0)));
+    return ((_e6 + _e10) * 0.5);
 }
 
 vec4 tap_detail(vec2 uv_2) {
@@ -37,9 +37,9 @@ vec4 tap_detail(vec2 uv_2) {
 vec4 blur_detail(vec2 uv_3) {
     float _e2 = u_texel;
     vec4 _e6 = tap_detail((uv_3 - vec2(_e2, 0.0)));
-    float _e8 = u_texel;
-    vec4 _e12 = tap_detail((uv_3 + vec2(_e8, 0.0)));
-    return ((_e6 + _e12) * 0.5);
+    float _e7 = u_texel;
+    vec4 _e10 = tap_detail((uv_3 + vec2(_e7, 0.0)));
+    return ((_e6 + _e10) * 0.5);
 }
 
 float pcf_sun_shadow(vec2 uv_4, float depth) {
@@ -51,8 +51,8 @@ float pcf_sun_shadow(vec2 uv_4, float depth) {
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            int _e38 = y;
-            y = (_e38 + 1);
+            int _e32 = y;
+            y = (_e32 + 1);
         }
         loop_init = false;
         int _e8 = y;
@@ -63,24 +63,24 @@ float pcf_sun_shadow(vec2 uv_4, float depth) {
         bool loop_init_1 = true;
         while(true) {
             if (!loop_init_1) {
-                int _e35 = x;
-                x = (_e35 + 1);
+                int _e30 = x;
+                x = (_e30 + 1);
             }
             loop_init_1 = false;
-            int _e15 = x;
-            if (!((_e15 < 2))) {
+            int _e13 = x;
+            if (!((_e13 < 2))) {
                 break;
             }
-            int _e20 = x;
-            int _e23 = y;
-            float _e27 = u_texel;
-            float _e32 = texture(sun_shadow, vec3((uv_4 + (vec2(float(_e20), float(_e23)) * _e27)), depth));
-            float _e33 = lit;
-            lit = (_e33 + _e32);
+            int _e16 = x;
+            int _e18 = y;
+            float _e22 = u_texel;
+            float _e27 = texture(sun_shadow, vec3((uv_4 + (vec2(float(_e16), float(_e18)) * _e22)), depth));
+            float _e28 = lit;
+            lit = (_e28 + _e27);
         }
     }
-    float _e42 = lit;
-    return (_e42 / 9.0);
+    float _e34 = lit;
+    return (_e34 / 9.0);
 }
 
 float pcf_cascades_1_(vec2 uv_5, float depth_1) {
@@ -92,8 +92,8 @@ float pcf_cascades_1_(vec2 uv_5, float depth_1) {
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            int _e38 = y_1;
-            y_1 = (_e38 + 1);
+            int _e32 = y_1;
+            y_1 = (_e32 + 1);
         }
         loop_init_2 = false;
         int _e8 = y_1;
@@ -104,24 +104,24 @@ float pcf_cascades_1_(vec2 uv_5, float depth_1) {
         bool loop_init_3 = true;
         while(true) {
             if (!loop_init_3) {
-                int _e35 = x_1;
-                x_1 = (_e35 + 1);
+                int _e30 = x_1;
+                x_1 = (_e30 + 1);
             }
             loop_init_3 = false;
-            int _e15 = x_1;
-            if (!((_e15 < 2))) {
+            int _e13 = x_1;
+            if (!((_e13 < 2))) {
                 break;
             }
-            int _e20 = x_1;
-            int _e23 = y_1;
-            float _e27 = u_texel;
-            float _e32 = texture(cascades_1, vec3((uv_5 + (vec2(float(_e20), float(_e23)) * _e27)), depth_1));
-            float _e33 = lit_1;
-            lit_1 = (_e33 + _e32);
+            int _e16 = x_1;
+            int _e18 = y_1;
+            float _e22 = u_texel;
+            float _e27 = texture(cascades_1, vec3((uv_5 + (vec2(float(_e16), float(_e18)) * _e22)), depth_1));
+            float _e28 = lit_1;
+            lit_1 = (_e28 + _e27);
         }
     }
-    float _e42 = lit_1;
-    return (_e42 / 9.0);
+    float _e34 = lit_1;
+    return (_e34 / 9.0);
 }
 
 void main() {
@@ -136,8 +136,8 @@ void main() {
     float lit_2 = (_e12 * _e13);
     vec4 _e18 = tap_detail(in_v_uv);
     out_f_color = vec4((base.xyz * lit_2), _e18.w);
-    vec4 _e22 = out_f_color;
-    sampler_params_fs_out _tmp_return = sampler_params_fs_out(_e22);
+    vec4 _e21 = out_f_color;
+    sampler_params_fs_out _tmp_return = sampler_params_fs_out(_e21);
     f_color = _tmp_return.f_color;
     return;
 }

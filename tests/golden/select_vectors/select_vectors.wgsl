@@ -21,10 +21,10 @@ fn select_vs(@location(0) a_pos: vec2<f32>) -> select_vs_out {
     v_cell = select(vec2<i32>(-(1i), -(2i)), vec2<i32>(1i, 2i), inside);
     v_uv = select(vec2(0f), a_pos, inside);
     gl_Position = vec4<f32>(a_pos, 0f, 1f);
-    let _e24 = gl_Position;
-    let _e35 = v_uv;
-    let _e37 = v_cell;
-    return select_vs_out(vec4<f32>(_e24.x, -(_e24.y), ((_e24.z + _e24.w) * 0.5f), _e24.w), _e35, _e37);
+    let _e20 = gl_Position;
+    let _e29 = v_uv;
+    let _e30 = v_cell;
+    return select_vs_out(vec4<f32>(_e20.x, -(_e20.y), ((_e20.z + _e20.w) * 0.5f), _e20.w), _e29, _e30);
 }
 
 @fragment 
@@ -41,7 +41,7 @@ fn select_fs(@location(0) v_uv_1: vec2<f32>, @location(1) @interpolate(flat) v_c
     let pick = select(vec3(0i), vec3<i32>(n, 3i), (v_uv_1.x > 0.5f));
     f_color = vec4<f32>(c, f32(pick.z), any_b);
     f_ids = vec4<u32>(u, u32(n.x), u32(pick.y));
-    let _e50 = f_color;
-    let _e52 = f_ids;
-    return select_fs_out(_e50, _e52);
+    let _e46 = f_color;
+    let _e47 = f_ids;
+    return select_fs_out(_e46, _e47);
 }

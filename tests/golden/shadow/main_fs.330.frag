@@ -30,38 +30,38 @@ float sun_visibility(vec2 uv, float depth) {
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            int _e49 = y;
-            y = (_e49 + 1);
+            int _e38 = y;
+            y = (_e38 + 1);
         }
         loop_init = false;
-        int _e15 = y;
-        if (!((_e15 < (PCF_RADIUS + 1)))) {
+        int _e13 = y;
+        if (!((_e13 < (PCF_RADIUS + 1)))) {
             break;
         }
         x = -(PCF_RADIUS);
         bool loop_init_1 = true;
         while(true) {
             if (!loop_init_1) {
-                int _e46 = x;
-                x = (_e46 + 1);
+                int _e36 = x;
+                x = (_e36 + 1);
             }
             loop_init_1 = false;
-            int _e24 = x;
-            if (!((_e24 < (PCF_RADIUS + 1)))) {
+            int _e19 = x;
+            if (!((_e19 < (PCF_RADIUS + 1)))) {
                 break;
             }
-            int _e29 = x;
-            int _e31 = y;
-            float _e39 = texture(shadow_map, vec3((uv + (vec2(float(_e29), float(_e31)) * step_)), depth));
-            float _e40 = lit_1;
-            lit_1 = (_e40 + _e39);
-            float _e44 = taps;
-            taps = (_e44 + 1.0);
+            int _e22 = x;
+            int _e23 = y;
+            float _e31 = texture(shadow_map, vec3((uv + (vec2(float(_e22), float(_e23)) * step_)), depth));
+            float _e32 = lit_1;
+            lit_1 = (_e32 + _e31);
+            float _e34 = taps;
+            taps = (_e34 + 1.0);
         }
     }
-    float _e53 = lit_1;
-    float _e55 = taps;
-    return (_e53 / _e55);
+    float _e40 = lit_1;
+    float _e41 = taps;
+    return (_e40 / _e41);
 }
 
 vec3 floor_albedo(vec3 p) {
@@ -90,8 +90,8 @@ void main() {
     vec2 uv_1 = ((ndc.xy * 0.5) + vec2(0.5));
     float depth_1 = ((ndc.z * 0.5) + 0.5);
     float bias = max((0.0025 * (1.0 - ndotl)), 0.0008);
-    float _e39 = sun_visibility(uv_1, (depth_1 - bias));
-    lit = _e39;
+    float _e36 = sun_visibility(uv_1, (depth_1 - bias));
+    lit = _e36;
     if ((ndotl < 0.05)) {
         lit = 0.0;
     }
@@ -100,22 +100,22 @@ void main() {
     vec3 sun_color = vec3(1.3, 1.15, 0.9);
     albedo = vec3(0.85, 0.45, 0.3);
     gloss = 0.5;
-    float _e71 = u_is_floor;
-    if ((_e71 > 0.5)) {
-        vec3 _e75 = floor_albedo(in_v_world_pos);
-        albedo = _e75;
+    float _e62 = u_is_floor;
+    if ((_e62 > 0.5)) {
+        vec3 _e64 = floor_albedo(in_v_world_pos);
+        albedo = _e64;
         gloss = 0.15;
     }
     vec3 h = normalize((l + v));
-    float _e86 = lit;
-    float _e89 = gloss;
-    float spec = ((pow(max(dot(n, h), 0.0), 48.0) * _e86) * _e89);
-    vec3 _e92 = albedo;
-    float _e94 = lit;
-    vec3 color = ((_e92 * (ambient + (sun_color * (ndotl * _e94)))) + vec3(spec));
+    float _e72 = lit;
+    float _e74 = gloss;
+    float spec = ((pow(max(dot(n, h), 0.0), 48.0) * _e72) * _e74);
+    vec3 _e76 = albedo;
+    float _e77 = lit;
+    vec3 color = ((_e76 * (ambient + (sun_color * (ndotl * _e77)))) + vec3(spec));
     out_f_FragColor = vec4(color, 1.0);
-    vec4 _e105 = out_f_FragColor;
-    main_fs_out _tmp_return = main_fs_out(_e105);
+    vec4 _e86 = out_f_FragColor;
+    main_fs_out _tmp_return = main_fs_out(_e86);
     f_FragColor = _tmp_return.f_FragColor;
     return;
 }

@@ -50,36 +50,36 @@ fn sun_visibility(uv: vec2<f32>, depth: f32) -> f32 {
     taps = 0f;
     y = -(PCF_RADIUS);
     loop {
-        let _e15 = y;
-        if !((_e15 < (PCF_RADIUS + 1i))) {
+        let _e13 = y;
+        if !((_e13 < (PCF_RADIUS + 1i))) {
             break;
         }
         x = -(PCF_RADIUS);
         loop {
-            let _e24 = x;
-            if !((_e24 < (PCF_RADIUS + 1i))) {
+            let _e19 = x;
+            if !((_e19 < (PCF_RADIUS + 1i))) {
                 break;
             }
-            let _e29 = x;
-            let _e31 = y;
-            let _e39 = textureSampleCompare(shadow_map, shadow_map_sampler, (uv + (vec2<f32>(f32(_e29), f32(_e31)) * step_)), depth);
-            let _e40 = lit_1;
-            lit_1 = (_e40 + _e39);
-            let _e44 = taps;
-            taps = (_e44 + 1f);
+            let _e22 = x;
+            let _e23 = y;
+            let _e31 = textureSampleCompare(shadow_map, shadow_map_sampler, (uv + (vec2<f32>(f32(_e22), f32(_e23)) * step_)), depth);
+            let _e32 = lit_1;
+            lit_1 = (_e32 + _e31);
+            let _e34 = taps;
+            taps = (_e34 + 1f);
             continuing {
-                let _e46 = x;
-                x = (_e46 + 1i);
+                let _e36 = x;
+                x = (_e36 + 1i);
             }
         }
         continuing {
-            let _e49 = y;
-            y = (_e49 + 1i);
+            let _e38 = y;
+            y = (_e38 + 1i);
         }
     }
-    let _e53 = lit_1;
-    let _e55 = taps;
-    return (_e53 / _e55);
+    let _e40 = lit_1;
+    let _e41 = taps;
+    return (_e40 / _e41);
 }
 
 fn floor_albedo(p: vec3<f32>) -> vec3<f32> {
@@ -94,10 +94,10 @@ fn shadow_vs(@location(0) a_pos: vec3<f32>) -> shadow_vs_out {
     var gl_Position: vec4<f32>;
 
     let _e4 = uniforms.u_light_vp;
-    let _e7 = uniforms.u_model;
-    gl_Position = (_e4 * (_e7 * vec4<f32>(a_pos, 1f)));
-    let _e13 = gl_Position;
-    return shadow_vs_out(vec4<f32>(_e13.x, -(_e13.y), ((_e13.z + _e13.w) * 0.5f), _e13.w));
+    let _e6 = uniforms.u_model;
+    gl_Position = (_e4 * (_e6 * vec4<f32>(a_pos, 1f)));
+    let _e11 = gl_Position;
+    return shadow_vs_out(vec4<f32>(_e11.x, -(_e11.y), ((_e11.z + _e11.w) * 0.5f), _e11.w));
 }
 
 @fragment 
@@ -105,8 +105,8 @@ fn shadow_fs() -> shadow_fs_out {
     var f_FragColor: vec4<f32>;
 
     f_FragColor = vec4(1f);
-    let _e4 = f_FragColor;
-    return shadow_fs_out(_e4);
+    let _e3 = f_FragColor;
+    return shadow_fs_out(_e3);
 }
 
 @vertex 
@@ -119,18 +119,18 @@ fn main_vs(@location(0) a_pos_1: vec3<f32>, @location(1) a_normal: vec3<f32>) ->
     let _e4 = uniforms.u_model;
     let world = (_e4 * vec4<f32>(a_pos_1, 1f));
     v_world_pos = world.xyz;
-    let _e13 = uniforms.u_model;
-    v_world_normal = (_e13 * vec4<f32>(a_normal, 0f)).xyz;
-    let _e21 = uniforms.u_light_vp;
-    v_light_space = (_e21 * world);
-    let _e26 = uniforms.u_proj;
-    let _e29 = uniforms.u_view;
-    gl_Position_1 = (_e26 * (_e29 * world));
-    let _e33 = gl_Position_1;
-    let _e44 = v_world_pos;
-    let _e46 = v_world_normal;
-    let _e48 = v_light_space;
-    return main_vs_out(vec4<f32>(_e33.x, -(_e33.y), ((_e33.z + _e33.w) * 0.5f), _e33.w), _e44, _e46, _e48);
+    let _e12 = uniforms.u_model;
+    v_world_normal = (_e12 * vec4<f32>(a_normal, 0f)).xyz;
+    let _e19 = uniforms.u_light_vp;
+    v_light_space = (_e19 * world);
+    let _e23 = uniforms.u_proj;
+    let _e25 = uniforms.u_view;
+    gl_Position_1 = (_e23 * (_e25 * world));
+    let _e28 = gl_Position_1;
+    let _e38 = v_world_pos;
+    let _e39 = v_world_normal;
+    let _e40 = v_light_space;
+    return main_vs_out(vec4<f32>(_e28.x, -(_e28.y), ((_e28.z + _e28.w) * 0.5f), _e28.w), _e38, _e39, _e40);
 }
 
 @fragment 
@@ -143,16 +143,16 @@ fn main_fs(@location(0) v_world_pos_1: vec3<f32>, @location(1) v_world_normal_1:
     let n = normalize(v_world_normal_1);
     let _e6 = uniforms.u_light_dir;
     let l = normalize(_e6);
-    let _e10 = uniforms.u_cam_pos;
-    let v = normalize((_e10 - v_world_pos_1));
+    let _e9 = uniforms.u_cam_pos;
+    let v = normalize((_e9 - v_world_pos_1));
     let ndotl = max(dot(n, l), 0f);
     let clip_w = max(v_light_space_1.w, 0.0001f);
     let ndc = (v_light_space_1.xyz / vec3(clip_w));
     let uv_1 = ((ndc.xy * 0.5f) + vec2(0.5f));
     let depth_1 = ((ndc.z * 0.5f) + 0.5f);
     let bias = max((0.0025f * (1f - ndotl)), 0.0008f);
-    let _e41 = sun_visibility(uv_1, (depth_1 - bias));
-    lit = _e41;
+    let _e37 = sun_visibility(uv_1, (depth_1 - bias));
+    lit = _e37;
     if (ndotl < 0.05f) {
         lit = 0f;
     }
@@ -161,20 +161,20 @@ fn main_fs(@location(0) v_world_pos_1: vec3<f32>, @location(1) v_world_normal_1:
     let sun_color = vec3<f32>(1.3f, 1.15f, 0.9f);
     albedo = vec3<f32>(0.85f, 0.45f, 0.3f);
     gloss = 0.5f;
-    let _e74 = uniforms.u_is_floor;
-    if (_e74 > 0.5f) {
-        let _e78 = floor_albedo(v_world_pos_1);
-        albedo = _e78;
+    let _e63 = uniforms.u_is_floor;
+    if (_e63 > 0.5f) {
+        let _e65 = floor_albedo(v_world_pos_1);
+        albedo = _e65;
         gloss = 0.15f;
     }
     let h = normalize((l + v));
-    let _e89 = lit;
-    let _e92 = gloss;
-    let spec = ((pow(max(dot(n, h), 0f), 48f) * _e89) * _e92);
-    let _e95 = albedo;
-    let _e97 = lit;
-    let color = ((_e95 * (ambient + (sun_color * (ndotl * _e97)))) + vec3(spec));
+    let _e73 = lit;
+    let _e75 = gloss;
+    let spec = ((pow(max(dot(n, h), 0f), 48f) * _e73) * _e75);
+    let _e77 = albedo;
+    let _e78 = lit;
+    let color = ((_e77 * (ambient + (sun_color * (ndotl * _e78)))) + vec3(spec));
     f_FragColor_1 = vec4<f32>(color, 1f);
-    let _e108 = f_FragColor_1;
-    return main_fs_out(_e108);
+    let _e87 = f_FragColor_1;
+    return main_fs_out(_e87);
 }

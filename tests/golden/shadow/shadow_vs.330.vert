@@ -14,8 +14,8 @@ void main() {
     mat4x4 _e3 = u_light_vp;
     mat4x4 _e5 = u_model;
     gen_gl_Position = (_e3 * (_e5 * vec4(in_a_pos, 1.0)));
-    vec4 _e11 = gen_gl_Position;
-    shadow_vs_out _tmp_return = shadow_vs_out(_e11);
+    vec4 _e10 = gen_gl_Position;
+    shadow_vs_out _tmp_return = shadow_vs_out(_e10);
     gl_Position = _tmp_return.gen_gl_Position;
     return;
 }

@@ -35,13 +35,13 @@ fn shadow_lookup(coord: vec3<f32>, bias: f32) -> f32 {
 
 fn shadow_factor(ndotl: f32) -> f32 {
     let _e2 = v_light_pos_1;
-    let _e6 = v_light_pos_1.w;
-    let coord_1 = (((_e2.xyz / vec3(_e6)) * 0.5f) + vec3(0.5f));
+    let _e5 = v_light_pos_1.w;
+    let coord_1 = (((_e2.xyz / vec3(_e5)) * 0.5f) + vec3(0.5f));
     if (coord_1.z > 1f) {
         return 1f;
     }
-    let _e19 = shadow_lookup(coord_1, 0.002f);
-    return _e19;
+    let _e16 = shadow_lookup(coord_1, 0.002f);
+    return _e16;
 }
 
 @vertex 
@@ -54,17 +54,17 @@ fn variants_vs(@location(0) a_position: vec3<f32>, @location(1) a_normal: vec3<f
     let _e4 = uniforms.u_model;
     let world = (_e4 * vec4<f32>(a_position, 1f));
     v_world = world.xyz;
-    let _e13 = uniforms.u_model;
-    v_normal = (_e13 * vec4<f32>(a_normal, 0f)).xyz;
-    let _e21 = uniforms.u_light_view_proj;
-    v_light_pos = (_e21 * world);
-    let _e26 = uniforms.u_view_proj;
-    gl_Position = (_e26 * world);
-    let _e29 = gl_Position;
-    let _e40 = v_normal;
-    let _e42 = v_world;
-    let _e44 = v_light_pos;
-    return variants_vs_out(vec4<f32>(_e29.x, -(_e29.y), ((_e29.z + _e29.w) * 0.5f), _e29.w), _e40, _e42, _e44);
+    let _e12 = uniforms.u_model;
+    v_normal = (_e12 * vec4<f32>(a_normal, 0f)).xyz;
+    let _e19 = uniforms.u_light_view_proj;
+    v_light_pos = (_e19 * world);
+    let _e23 = uniforms.u_view_proj;
+    gl_Position = (_e23 * world);
+    let _e25 = gl_Position;
+    let _e35 = v_normal;
+    let _e36 = v_world;
+    let _e37 = v_light_pos;
+    return variants_vs_out(vec4<f32>(_e25.x, -(_e25.y), ((_e25.z + _e25.w) * 0.5f), _e25.w), _e35, _e36, _e37);
 }
 
 @fragment 
@@ -76,15 +76,15 @@ fn variants_fs(@location(0) v_normal_1: vec3<f32>, @location(1) v_world_1: vec3<
     let n = normalize(v_normal_1);
     let _e7 = uniforms.u_light_dir;
     let l = normalize(-(_e7));
-    let _e12 = uniforms.u_eye;
-    let v = normalize((_e12 - v_world_1));
+    let _e11 = uniforms.u_eye;
+    let v = normalize((_e11 - v_world_1));
     let ndotl_1 = max(dot(n, l), 0f);
-    let _e18 = shadow_factor(ndotl_1);
-    let _e22 = uniforms.u_color;
-    color = (_e22.xyz * (0.15f + ((0.85f * ndotl_1) * _e18)));
-    let _e32 = color;
-    let _e36 = uniforms.u_color.w;
-    f_color = vec4<f32>(_e32, _e36);
-    let _e39 = f_color;
-    return variants_fs_out(_e39);
+    let _e17 = shadow_factor(ndotl_1);
+    let _e20 = uniforms.u_color;
+    color = (_e20.xyz * (0.15f + ((0.85f * ndotl_1) * _e17)));
+    let _e29 = color;
+    let _e32 = uniforms.u_color.w;
+    f_color = vec4<f32>(_e29, _e32);
+    let _e34 = f_color;
+    return variants_fs_out(_e34);
 }

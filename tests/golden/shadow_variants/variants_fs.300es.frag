@@ -29,13 +29,13 @@ float shadow_lookup(vec3 coord, float bias) {
 
 float shadow_factor(float ndotl) {
     vec4 _e2 = io_v_light_pos;
-    float _e6 = io_v_light_pos.w;
-    vec3 coord_1 = (((_e2.xyz / vec3(_e6)) * 0.5) + vec3(0.5));
+    float _e5 = io_v_light_pos.w;
+    vec3 coord_1 = (((_e2.xyz / vec3(_e5)) * 0.5) + vec3(0.5));
     if ((coord_1.z > 1.0)) {
         return 1.0;
     }
-    float _e19 = shadow_lookup(coord_1, 0.002);
-    return _e19;
+    float _e16 = shadow_lookup(coord_1, 0.002);
+    return _e16;
 }
 
 void main() {
@@ -54,11 +54,11 @@ void main() {
     float _e16 = shadow_factor(ndotl_1);
     vec4 _e19 = u_color;
     color = (_e19.xyz * (0.15 + ((0.85 * ndotl_1) * _e16)));
-    vec3 _e29 = color;
-    float _e32 = u_color.w;
-    out_f_color = vec4(_e29, _e32);
-    vec4 _e35 = out_f_color;
-    variants_fs_out _tmp_return = variants_fs_out(_e35);
+    vec3 _e28 = color;
+    float _e30 = u_color.w;
+    out_f_color = vec4(_e28, _e30);
+    vec4 _e32 = out_f_color;
+    variants_fs_out _tmp_return = variants_fs_out(_e32);
     f_color = _tmp_return.f_color;
     return;
 }

@@ -21,8 +21,8 @@ void main() {
     vec3 hdr = (_e4.xyz * _e7);
     vec3 mapped = (hdr / (hdr + vec3(1.0)));
     out_f_color = vec4(pow(mapped, vec3((1.0 / 2.2))), 1.0);
-    vec4 _e22 = out_f_color;
-    sky_fs_out _tmp_return = sky_fs_out(_e22);
+    vec4 _e19 = out_f_color;
+    sky_fs_out _tmp_return = sky_fs_out(_e19);
     f_color = _tmp_return.f_color;
     return;
 }

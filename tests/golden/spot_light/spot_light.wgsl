@@ -46,9 +46,9 @@ var shadow_map_sampler: sampler;
 
 fn shadow_clip() -> vec4<f32> {
     let _e2 = uniforms.u_light_vp;
-    let _e5 = uniforms.u_model;
-    let _e7 = a_pos;
-    return (_e2 * (_e5 * vec4<f32>(_e7, 1f)));
+    let _e4 = uniforms.u_model;
+    let _e6 = a_pos;
+    return (_e2 * (_e4 * vec4<f32>(_e6, 1f)));
 }
 
 fn world_position() -> vec4<f32> {
@@ -112,8 +112,8 @@ fn spot_shadow_vs(@location(0) in_a_pos: vec3<f32>) -> spot_shadow_vs_out {
     a_pos = in_a_pos;
     let _e3 = shadow_clip();
     gl_Position = _e3;
-    let _e5 = gl_Position;
-    return spot_shadow_vs_out(vec4<f32>(_e5.x, -(_e5.y), ((_e5.z + _e5.w) * 0.5f), _e5.w));
+    let _e4 = gl_Position;
+    return spot_shadow_vs_out(vec4<f32>(_e4.x, -(_e4.y), ((_e4.z + _e4.w) * 0.5f), _e4.w));
 }
 
 @fragment 
@@ -121,8 +121,8 @@ fn spot_shadow_fs() -> spot_shadow_fs_out {
     var f_FragColor: vec4<f32>;
 
     f_FragColor = vec4(1f);
-    let _e4 = f_FragColor;
-    return spot_shadow_fs_out(_e4);
+    let _e3 = f_FragColor;
+    return spot_shadow_fs_out(_e3);
 }
 
 @vertex 
@@ -138,12 +138,12 @@ fn spot_main_vs(@location(0) in_a_pos_1: vec3<f32>, @location(1) in_a_normal: ve
     let _e8 = world_normal();
     v_world_normal = _e8;
     let _e12 = uniforms.u_proj;
-    let _e15 = uniforms.u_view;
-    gl_Position_1 = (_e12 * (_e15 * _e4));
-    let _e19 = gl_Position_1;
-    let _e30 = v_world_pos;
-    let _e32 = v_world_normal;
-    return spot_main_vs_out(vec4<f32>(_e19.x, -(_e19.y), ((_e19.z + _e19.w) * 0.5f), _e19.w), _e30, _e32);
+    let _e14 = uniforms.u_view;
+    gl_Position_1 = (_e12 * (_e14 * _e4));
+    let _e17 = gl_Position_1;
+    let _e27 = v_world_pos;
+    let _e28 = v_world_normal;
+    return spot_main_vs_out(vec4<f32>(_e17.x, -(_e17.y), ((_e17.z + _e17.w) * 0.5f), _e17.w), _e27, _e28);
 }
 
 @fragment 
@@ -153,24 +153,24 @@ fn spot_main_fs(@location(0) in_v_world_pos: vec3<f32>, @location(1) v_world_nor
     v_world_pos_1 = in_v_world_pos;
     let n_1 = normalize(v_world_normal_1);
     let _e6 = uniforms.u_light_pos;
-    let _e8 = v_world_pos_1;
-    let l = normalize((_e6 - _e8));
-    let _e13 = uniforms.u_cam_pos;
-    let _e15 = v_world_pos_1;
-    let v = normalize((_e13 - _e15));
+    let _e7 = v_world_pos_1;
+    let l = normalize((_e6 - _e7));
+    let _e11 = uniforms.u_cam_pos;
+    let _e12 = v_world_pos_1;
+    let v = normalize((_e11 - _e12));
     let ndotl = max(dot(n_1, l), 0f);
-    let _e21 = cone(l);
-    let _e23 = v_world_pos_1;
-    let _e24 = spot_shadow(_e23);
-    let light = (_e21 * _e24);
+    let _e18 = cone(l);
+    let _e19 = v_world_pos_1;
+    let _e20 = spot_shadow(_e19);
+    let light = (_e18 * _e20);
     let h = normalize((l + v));
-    let _e35 = surface_gloss();
-    let spec = select(0f, (pow(max(dot(n_1, h), 0f), 48f) * _e35), (ndotl > 0f));
+    let _e29 = surface_gloss();
+    let spec = select(0f, (pow(max(dot(n_1, h), 0f), 48f) * _e29), (ndotl > 0f));
     let color = vec3<f32>(1.25f, 1.15f, 0.95f);
-    let _e43 = surface_albedo();
-    let _e44 = hemisphere(n_1);
-    let rgb = ((_e43 * (_e44 + (color * (ndotl * light)))) + vec3((spec * light)));
+    let _e36 = surface_albedo();
+    let _e37 = hemisphere(n_1);
+    let rgb = ((_e36 * (_e37 + (color * (ndotl * light)))) + vec3((spec * light)));
     f_FragColor_1 = vec4<f32>(rgb, 1f);
-    let _e56 = f_FragColor_1;
-    return spot_main_fs_out(_e56);
+    let _e48 = f_FragColor_1;
+    return spot_main_fs_out(_e48);
 }

@@ -40,8 +40,8 @@ fn shade(m: Material, n: vec3<f32>, l: vec3<f32>) -> vec3<f32> {
         let diffuse = ((m.albedo * (1f - m.metallic)) * max(dot(n, l), 0f));
         c_1 = ((diffuse * (1f - (m.roughness * 0.5f))) + m.emissive);
     }
-    let _e24 = c_1;
-    return _e24;
+    let _e21 = c_1;
+    return _e21;
 }
 
 @vertex 
@@ -51,9 +51,9 @@ fn struct_init_vs(@location(0) a_pos: vec2<f32>) -> struct_init_vs_out {
 
     v_uv = ((a_pos * 0.5f) + vec2(0.5f));
     gl_Position = vec4<f32>(a_pos, 0f, 1f);
-    let _e12 = gl_Position;
-    let _e23 = v_uv;
-    return struct_init_vs_out(vec4<f32>(_e12.x, -(_e12.y), ((_e12.z + _e12.w) * 0.5f), _e12.w), _e23);
+    let _e10 = gl_Position;
+    let _e19 = v_uv;
+    return struct_init_vs_out(vec4<f32>(_e10.x, -(_e10.y), ((_e10.z + _e10.w) * 0.5f), _e10.w), _e19);
 }
 
 @fragment 
@@ -66,29 +66,29 @@ fn struct_init_fs(@location(0) v_uv_1: vec2<f32>) -> struct_init_fs_out {
     let metal = Material(vec3(0.8f), 0.2f, 1f, vec3<f32>());
     glow = Material(vec3(0.8f), 0.5f, f32(), vec3<f32>(0.1f, 0.05f, 0f));
     {
-        let _e26 = glow.albedo;
-        glow.albedo = (_e26 * 0.5f);
+        let _e19 = glow.albedo;
+        glow.albedo = (_e19 * 0.5f);
     }
-    let _e34 = Ray_1(vec3<f32>(v_uv_1, 1f), vec3<f32>(0.5f, 0.5f, 0f));
-    let n_1 = -(_e34.dir);
+    let _e23 = Ray_1(vec3<f32>(v_uv_1, 1f), vec3<f32>(0.5f, 0.5f, 0f));
+    let n_1 = -(_e23.dir);
     let m_1 = select(select(2i, 1i, (v_uv_1.x < 0.66f)), 0i, (v_uv_1.x < 0.33f));
-    let _e50 = glow;
-    let _e53 = uniforms.u_light_dir;
-    let _e54 = shade(_e50, n_1, _e53);
-    c = _e54;
+    let _e38 = glow;
+    let _e41 = uniforms.u_light_dir;
+    let _e42 = shade(_e38, n_1, _e41);
+    c = _e42;
     if (m_1 == 0i) {
-        let _e60 = uniforms.u_light_dir;
-        let _e61 = shade(base, n_1, _e60);
-        c = _e61;
+        let _e45 = uniforms.u_light_dir;
+        let _e46 = shade(base, n_1, _e45);
+        c = _e46;
     } else {
         if (m_1 == 1i) {
-            let _e67 = uniforms.u_light_dir;
-            let _e68 = shade(metal, n_1, _e67);
-            c = _e68;
+            let _e49 = uniforms.u_light_dir;
+            let _e50 = shade(metal, n_1, _e49);
+            c = _e50;
         }
     }
-    let _e71 = c;
-    f_color = vec4<f32>(_e71, 1f);
-    let _e75 = f_color;
-    return struct_init_fs_out(_e75);
+    let _e52 = c;
+    f_color = vec4<f32>(_e52, 1f);
+    let _e54 = f_color;
+    return struct_init_fs_out(_e54);
 }

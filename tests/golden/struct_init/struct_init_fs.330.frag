@@ -28,8 +28,8 @@ vec3 shade(Material m, vec3 n, vec3 l) {
         vec3 diffuse = ((m.albedo * (1.0 - m.metallic)) * max(dot(n, l), 0.0));
         c_1 = ((diffuse * (1.0 - (m.roughness * 0.5))) + m.emissive);
     }
-    vec3 _e24 = c_1;
-    return _e24;
+    vec3 _e21 = c_1;
+    return _e21;
 }
 
 void main() {
@@ -41,31 +41,31 @@ void main() {
     Material metal = Material(vec3(0.8), 0.2, 1.0, vec3(0.0));
     glow = Material(vec3(0.8), 0.5, 0.0, vec3(0.1, 0.05, 0.0));
     {
-        vec3 _e26 = glow.albedo;
-        glow.albedo = (_e26 * 0.5);
+        vec3 _e19 = glow.albedo;
+        glow.albedo = (_e19 * 0.5);
     }
-    Ray _e34 = Ray_1(vec3(in_v_uv, 1.0), vec3(0.5, 0.5, 0.0));
-    vec3 n_1 = -(_e34.dir);
+    Ray _e23 = Ray_1(vec3(in_v_uv, 1.0), vec3(0.5, 0.5, 0.0));
+    vec3 n_1 = -(_e23.dir);
     int m_1 = ((in_v_uv.x < 0.33) ? 0 : ((in_v_uv.x < 0.66) ? 1 : 2));
-    Material _e50 = glow;
-    vec3 _e52 = u_light_dir;
-    vec3 _e53 = shade(_e50, n_1, _e52);
-    c = _e53;
+    Material _e38 = glow;
+    vec3 _e40 = u_light_dir;
+    vec3 _e41 = shade(_e38, n_1, _e40);
+    c = _e41;
     if ((m_1 == 0)) {
-        vec3 _e58 = u_light_dir;
-        vec3 _e59 = shade(base, n_1, _e58);
-        c = _e59;
+        vec3 _e43 = u_light_dir;
+        vec3 _e44 = shade(base, n_1, _e43);
+        c = _e44;
     } else {
         if ((m_1 == 1)) {
-            vec3 _e64 = u_light_dir;
-            vec3 _e65 = shade(metal, n_1, _e64);
-            c = _e65;
+            vec3 _e46 = u_light_dir;
+            vec3 _e47 = shade(metal, n_1, _e46);
+            c = _e47;
         }
     }
-    vec3 _e68 = c;
-    out_f_color = vec4(_e68, 1.0);
-    vec4 _e72 = out_f_color;
-    struct_init_fs_out _tmp_return = struct_init_fs_out(_e72);
+    vec3 _e49 = c;
+    out_f_color = vec4(_e49, 1.0);
+    vec4 _e51 = out_f_color;
+    struct_init_fs_out _tmp_return = struct_init_fs_out(_e51);
     f_color = _tmp_return.f_color;
     return;
 }

@@ -12,9 +12,9 @@ void main() {
     vec4 gen_gl_Position = vec4(0.0);
     out_v_uv = ((in_a_pos * 0.5) + vec2(0.5));
     gen_gl_Position = vec4(in_a_pos, 0.0, 1.0);
-    vec4 _e12 = gen_gl_Position;
-    vec2 _e14 = out_v_uv;
-    struct_init_vs_out _tmp_return = struct_init_vs_out(_e12, _e14);
+    vec4 _e10 = gen_gl_Position;
+    vec2 _e11 = out_v_uv;
+    struct_init_vs_out _tmp_return = struct_init_vs_out(_e10, _e11);
     gl_Position = _tmp_return.gen_gl_Position;
     v_uv = _tmp_return.v_uv;
     return;

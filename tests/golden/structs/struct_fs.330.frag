@@ -28,13 +28,13 @@ void main() {
     m = Material(vec3(0.0), 0.0);
     m.albedo = vec3(0.8, 0.6, 0.4);
     m.roughness = 0.5;
-    Material _e13 = m;
-    Light _e16 = light;
-    vec3 _e17 = shade(_e13, normalize(in_v_normal), _e16);
-    float _e21 = m.roughness;
-    out_f_color = vec4((_e17 + vec3((_e21 * 0.1))), 1.0);
-    vec4 _e29 = out_f_color;
-    struct_fs_out _tmp_return = struct_fs_out(_e29);
+    Material _e10 = m;
+    Light _e13 = light;
+    vec3 _e14 = shade(_e10, normalize(in_v_normal), _e13);
+    float _e17 = m.roughness;
+    out_f_color = vec4((_e14 + vec3((_e17 * 0.1))), 1.0);
+    vec4 _e24 = out_f_color;
+    struct_fs_out _tmp_return = struct_fs_out(_e24);
     f_color = _tmp_return.f_color;
     return;
 }

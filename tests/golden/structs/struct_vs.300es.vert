@@ -21,9 +21,9 @@ void main() {
     out_v_normal = in_a_normal;
     mat4x4 _e5 = u_mvp;
     gen_gl_Position = (_e5 * vec4(in_a_pos, 1.0));
-    vec4 _e10 = gen_gl_Position;
-    vec3 _e12 = out_v_normal;
-    struct_vs_out _tmp_return = struct_vs_out(_e10, _e12);
+    vec4 _e9 = gen_gl_Position;
+    vec3 _e10 = out_v_normal;
+    struct_vs_out _tmp_return = struct_vs_out(_e9, _e10);
     gl_Position = _tmp_return.gen_gl_Position;
     v_normal = _tmp_return.v_normal;
     return;

@@ -42,9 +42,9 @@ fn struct_vs(@location(0) a_pos: vec3<f32>, @location(1) a_normal: vec3<f32>) ->
     v_normal = a_normal;
     let _e6 = uniforms.u_mvp;
     gl_Position = (_e6 * vec4<f32>(a_pos, 1f));
-    let _e11 = gl_Position;
-    let _e22 = v_normal;
-    return struct_vs_out(vec4<f32>(_e11.x, -(_e11.y), ((_e11.z + _e11.w) * 0.5f), _e11.w), _e22);
+    let _e10 = gl_Position;
+    let _e20 = v_normal;
+    return struct_vs_out(vec4<f32>(_e10.x, -(_e10.y), ((_e10.z + _e10.w) * 0.5f), _e10.w), _e20);
 }
 
 @fragment 
@@ -55,11 +55,11 @@ fn struct_fs(@location(0) v_normal_1: vec3<f32>) -> struct_fs_out {
     m = Material();
     m.albedo = vec3<f32>(0.8f, 0.6f, 0.4f);
     m.roughness = 0.5f;
-    let _e13 = m;
-    let _e16 = light;
-    let _e17 = shade(_e13, normalize(v_normal_1), _e16);
-    let _e21 = m.roughness;
-    f_color = vec4<f32>((_e17 + vec3((_e21 * 0.1f))), 1f);
-    let _e29 = f_color;
-    return struct_fs_out(_e29);
+    let _e10 = m;
+    let _e13 = light;
+    let _e14 = shade(_e10, normalize(v_normal_1), _e13);
+    let _e17 = m.roughness;
+    f_color = vec4<f32>((_e14 + vec3((_e17 * 0.1f))), 1f);
+    let _e24 = f_color;
+    return struct_fs_out(_e24);
 }

@@ -20,10 +20,10 @@ void main() {
     out_v_uv = ((in_a_pos.xy * 0.5) + vec2(0.5));
     out_v_dir = in_a_pos;
     gen_gl_Position = vec4(in_a_pos, 1.0);
-    vec4 _e13 = gen_gl_Position;
-    vec2 _e15 = out_v_uv;
-    vec3 _e17 = out_v_dir;
-    tex_vs_out _tmp_return = tex_vs_out(_e13, _e15, _e17);
+    vec4 _e11 = gen_gl_Position;
+    vec2 _e12 = out_v_uv;
+    vec3 _e13 = out_v_dir;
+    tex_vs_out _tmp_return = tex_vs_out(_e11, _e12, _e13);
     gl_Position = _tmp_return.gen_gl_Position;
     v_uv = _tmp_return.v_uv;
     v_dir = _tmp_return.v_dir;

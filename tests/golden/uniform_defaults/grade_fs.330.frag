@@ -22,17 +22,17 @@ void main() {
     vec2 in_v_uv = v_uv;
     vec4 out_f_color = vec4(0.0);
     int _e3 = u_steps;
-    int _e8 = u_steps;
-    float banded = (floor((in_v_uv.x * float(_e3))) / float(_e8));
-    mat3x3 _e12 = u_basis;
-    float _e18 = u_exposure;
-    vec3 _e22 = u_grade.lift;
-    vec3 c = (((_e12 * vec3(banded, in_v_uv.y, 0.5)) * _e18) + _e22);
-    float _e28 = u_grade.gamma;
-    vec4 _e36 = u_grade.gain;
-    out_f_color = (vec4(pow(c, vec3((1.0 / _e28))), 1.0) * _e36);
-    vec4 _e39 = out_f_color;
-    grade_fs_out _tmp_return = grade_fs_out(_e39);
+    int _e7 = u_steps;
+    float banded = (floor((in_v_uv.x * float(_e3))) / float(_e7));
+    mat3x3 _e11 = u_basis;
+    float _e17 = u_exposure;
+    vec3 _e21 = u_grade.lift;
+    vec3 c = (((_e11 * vec3(banded, in_v_uv.y, 0.5)) * _e17) + _e21);
+    float _e26 = u_grade.gamma;
+    vec4 _e32 = u_grade.gain;
+    out_f_color = (vec4(pow(c, vec3((1.0 / _e26))), 1.0) * _e32);
+    vec4 _e34 = out_f_color;
+    grade_fs_out _tmp_return = grade_fs_out(_e34);
     f_color = _tmp_return.f_color;
     return;
 }

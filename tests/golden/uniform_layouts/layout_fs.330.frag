@@ -51,70 +51,70 @@ void main() {
     bool loop_init = true;
     while(true) {
         if (!loop_init) {
-            int _e24 = i;
-            i = (_e24 + 1);
+            int _e21 = i;
+            i = (_e21 + 1);
         }
         loop_init = false;
         int _e11 = i;
         if (!((_e11 < _e10))) {
             break;
         }
-        int _e18 = i;
-        Light _e20 = scene.lights[_e18];
-        vec3 _e21 = light_at(_e20, in_v_pos, n_1);
-        vec3 _e22 = c;
-        c = (_e22 + _e21);
+        int _e15 = i;
+        Light _e17 = scene.lights[_e15];
+        vec3 _e18 = light_at(_e17, in_v_pos, n_1);
+        vec3 _e19 = c;
+        c = (_e19 + _e18);
     }
     i_1 = 0;
     bool loop_init_1 = true;
     while(true) {
         if (!loop_init_1) {
-            int _e42 = i_1;
-            i_1 = (_e42 + 1);
+            int _e36 = i_1;
+            i_1 = (_e36 + 1);
         }
         loop_init_1 = false;
-        int _e30 = i_1;
-        if (!((_e30 < 2))) {
+        int _e26 = i_1;
+        if (!((_e26 < 2))) {
             break;
         }
-        int _e36 = i_1;
-        Light _e38 = u_lights[_e36];
-        vec3 _e39 = light_at(_e38, in_v_pos, n_1);
-        vec3 _e40 = c;
-        c = (_e40 + _e39);
+        int _e30 = i_1;
+        Light _e32 = u_lights[_e30];
+        vec3 _e33 = light_at(_e32, in_v_pos, n_1);
+        vec3 _e34 = c;
+        c = (_e34 + _e33);
     }
     k = 0.0;
     i_2 = 0;
     bool loop_init_2 = true;
     while(true) {
         if (!loop_init_2) {
-            int _e69 = i_2;
-            i_2 = (_e69 + 1);
+            int _e56 = i_2;
+            i_2 = (_e56 + 1);
         }
         loop_init_2 = false;
-        int _e50 = i_2;
-        if (!((_e50 < 8))) {
+        int _e41 = i_2;
+        if (!((_e41 < 8))) {
             break;
         }
-        int _e56 = i_2;
-        float _e59 = u_kernel[_e56].x;
-        int _e62 = i_2;
-        float _e65 = u_kernel[_e62].w;
-        float _e67 = k;
-        k = (_e67 + (_e59 + _e65));
+        int _e45 = i_2;
+        float _e48 = u_kernel[_e45].x;
+        int _e49 = i_2;
+        float _e52 = u_kernel[_e49].w;
+        float _e54 = k;
+        k = (_e54 + (_e48 + _e52));
     }
-    float _e75 = scene.fog.density;
-    float f = exp((-(_e75) * length(in_v_pos)));
-    vec3 _e84 = scene.fog.color;
-    vec3 _e86 = c;
-    float _e89 = scene.exposure;
-    c = mix(_e84, (_e86 * _e89), vec3(f));
-    vec3 _e95 = c;
-    vec2 _e98 = scene.tint;
-    float _e103 = k;
-    out_f_color = vec4(((_e95 * vec3(_e98, 1.0)) + vec3((_e103 * 0.001))), 1.0);
-    vec4 _e111 = out_f_color;
-    layout_fs_out _tmp_return = layout_fs_out(_e111);
+    float _e60 = scene.fog.density;
+    float f = exp((-(_e60) * length(in_v_pos)));
+    vec3 _e67 = scene.fog.color;
+    vec3 _e68 = c;
+    float _e70 = scene.exposure;
+    c = mix(_e67, (_e68 * _e70), vec3(f));
+    vec3 _e75 = c;
+    vec2 _e77 = scene.tint;
+    float _e81 = k;
+    out_f_color = vec4(((_e75 * vec3(_e77, 1.0)) + vec3((_e81 * 0.001))), 1.0);
+    vec4 _e87 = out_f_color;
+    layout_fs_out _tmp_return = layout_fs_out(_e87);
     f_color = _tmp_return.f_color;
     return;
 }

@@ -41,10 +41,10 @@ void main() {
     out_v_normal = (_e6 * in_a_normal);
     mat4x4 _e10 = u_mvp;
     gen_gl_Position = (_e10 * vec4(in_a_pos, 1.0));
-    vec4 _e15 = gen_gl_Position;
-    vec3 _e17 = out_v_pos;
-    vec3 _e19 = out_v_normal;
-    layout_vs_out _tmp_return = layout_vs_out(_e15, _e17, _e19);
+    vec4 _e14 = gen_gl_Position;
+    vec3 _e15 = out_v_pos;
+    vec3 _e16 = out_v_normal;
+    layout_vs_out _tmp_return = layout_vs_out(_e14, _e15, _e16);
     gl_Position = _tmp_return.gen_gl_Position;
     v_pos = _tmp_return.v_pos;
     v_normal = _tmp_return.v_normal;

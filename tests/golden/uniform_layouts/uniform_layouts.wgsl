@@ -58,10 +58,10 @@ fn layout_vs(@location(0) a_pos: vec3<f32>, @location(1) a_normal: vec3<f32>) ->
     v_normal = (_e6 * a_normal);
     let _e11 = uniforms.u_mvp;
     gl_Position = (_e11 * vec4<f32>(a_pos, 1f));
-    let _e16 = gl_Position;
-    let _e27 = v_pos;
-    let _e29 = v_normal;
-    return layout_vs_out(vec4<f32>(_e16.x, -(_e16.y), ((_e16.z + _e16.w) * 0.5f), _e16.w), _e27, _e29);
+    let _e15 = gl_Position;
+    let _e25 = v_pos;
+    let _e26 = v_normal;
+    return layout_vs_out(vec4<f32>(_e15.x, -(_e15.y), ((_e15.z + _e15.w) * 0.5f), _e15.w), _e25, _e26);
 }
 
 @fragment 
@@ -82,60 +82,60 @@ fn layout_fs(@location(0) v_pos_1: vec3<f32>, @location(1) v_normal_1: vec3<f32>
         if !((_e11 < _e10)) {
             break;
         }
-        let _e18 = i;
-        let _e20 = scene.lights[_e18];
-        let _e21 = light_at(_e20, v_pos_1, n_1);
-        let _e22 = c;
-        c = (_e22 + _e21);
+        let _e15 = i;
+        let _e17 = scene.lights[_e15];
+        let _e18 = light_at(_e17, v_pos_1, n_1);
+        let _e19 = c;
+        c = (_e19 + _e18);
         continuing {
-            let _e24 = i;
-            i = (_e24 + 1i);
+            let _e21 = i;
+            i = (_e21 + 1i);
         }
     }
     i_1 = 0i;
     loop {
-        let _e30 = i_1;
-        if !((_e30 < 2i)) {
+        let _e26 = i_1;
+        if !((_e26 < 2i)) {
             break;
         }
-        let _e37 = i_1;
-        let _e39 = uniforms.u_lights[_e37];
-        let _e40 = light_at(_e39, v_pos_1, n_1);
-        let _e41 = c;
-        c = (_e41 + _e40);
+        let _e31 = i_1;
+        let _e33 = uniforms.u_lights[_e31];
+        let _e34 = light_at(_e33, v_pos_1, n_1);
+        let _e35 = c;
+        c = (_e35 + _e34);
         continuing {
-            let _e43 = i_1;
-            i_1 = (_e43 + 1i);
+            let _e37 = i_1;
+            i_1 = (_e37 + 1i);
         }
     }
     k = 0f;
     i_2 = 0i;
     loop {
-        let _e51 = i_2;
-        if !((_e51 < 8i)) {
+        let _e42 = i_2;
+        if !((_e42 < 8i)) {
             break;
         }
-        let _e58 = i_2;
-        let _e61 = uniforms.u_kernel[_e58].x;
-        let _e65 = i_2;
-        let _e68 = uniforms.u_kernel[_e65].w;
-        let _e70 = k;
-        k = (_e70 + (_e61 + _e68));
+        let _e46 = i_2;
+        let _e49 = uniforms.u_kernel[_e46].x;
+        let _e51 = i_2;
+        let _e54 = uniforms.u_kernel[_e51].w;
+        let _e56 = k;
+        k = (_e56 + (_e49 + _e54));
         continuing {
-            let _e72 = i_2;
-            i_2 = (_e72 + 1i);
+            let _e58 = i_2;
+            i_2 = (_e58 + 1i);
         }
     }
-    let _e78 = scene.fog.density;
-    let f = exp((-(_e78) * length(v_pos_1)));
-    let _e87 = scene.fog.color;
-    let _e89 = c;
-    let _e92 = scene.exposure;
-    c = mix(_e87, (_e89 * _e92), vec3(f));
-    let _e98 = c;
-    let _e101 = scene.tint;
-    let _e106 = k;
-    f_color = vec4<f32>(((_e98 * vec3<f32>(_e101, 1f)) + vec3((_e106 * 0.001f))), 1f);
-    let _e114 = f_color;
-    return layout_fs_out(_e114);
+    let _e62 = scene.fog.density;
+    let f = exp((-(_e62) * length(v_pos_1)));
+    let _e69 = scene.fog.color;
+    let _e70 = c;
+    let _e72 = scene.exposure;
+    c = mix(_e69, (_e70 * _e72), vec3(f));
+    let _e77 = c;
+    let _e79 = scene.tint;
+    let _e83 = k;
+    f_color = vec4<f32>(((_e77 * vec3<f32>(_e79, 1f)) + vec3((_e83 * 0.001f))), 1f);
+    let _e89 = f_color;
+    return layout_fs_out(_e89);
 }

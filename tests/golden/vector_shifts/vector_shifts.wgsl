@@ -20,16 +20,16 @@ fn vector_shifts_fs(@builtin(position) FragCoord: vec4<f32>) -> vector_shifts_fs
     let texel = vec2<i32>(FragCoord.xy);
     let tile = (texel >> vec2(u32(3i)));
     let _e9 = uniforms.u_mask;
-    let _e12 = uniforms.u_bits;
-    let unpacked = ((_e9 >> vec4(u32(_e12))) & vec4(255u));
+    let _e11 = uniforms.u_bits;
+    let unpacked = ((_e9 >> vec4(u32(_e11))) & vec4(255u));
     acc = (vec3<i32>(tile, 1i) << vec3(u32(2i)));
-    let _e28 = acc;
-    acc = (_e28 << vec3(u32(1i)));
-    let _e35 = uniforms.u_bits;
+    let _e25 = acc;
+    acc = (_e25 << vec3(u32(1i)));
+    let _e30 = uniforms.u_bits;
+    let _e31 = acc;
+    acc = (_e31 >> vec3(u32(_e30)));
     let _e36 = acc;
-    acc = (_e36 >> vec3(u32(_e35)));
-    let _e42 = acc;
-    f_color = vec4<f32>((vec3<f32>((_e42 & vec3(7i))) / vec3(7f)), (f32(unpacked.x) / 255f));
-    let _e56 = f_color;
-    return vector_shifts_fs_out(_e56);
+    f_color = vec4<f32>((vec3<f32>((_e36 & vec3(7i))) / vec3(7f)), (f32(unpacked.x) / 255f));
+    let _e49 = f_color;
+    return vector_shifts_fs_out(_e49);
 }

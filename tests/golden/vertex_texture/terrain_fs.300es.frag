@@ -27,8 +27,8 @@ void main() {
     vec4 _e7 = textureGrad(heightmap, vec2(in_v_uv), _e3, _e4);
     float dx = _e7.x;
     out_f_color = vec4(vec3(((_e2 * 0.5) + (dx * 0.1)), in_v_height, 0.0), 1.0);
-    vec4 _e20 = out_f_color;
-    terrain_fs_out _tmp_return = terrain_fs_out(_e20);
+    vec4 _e19 = out_f_color;
+    terrain_fs_out _tmp_return = terrain_fs_out(_e19);
     f_color = _tmp_return.f_color;
     return;
 }

@@ -42,23 +42,23 @@ fn terrain_vs(@location(0) a_pos: vec2<f32>) -> terrain_vs_out {
     var gl_Position: vec4<f32>;
 
     v_uv = ((a_pos * 0.5f) + vec2(0.5f));
+    let _e6 = v_uv;
+    let _e7 = height_at_vertex(_e6);
     let _e8 = v_uv;
-    let _e9 = height_at_vertex(_e8);
-    let _e11 = v_uv;
-    let _e15 = textureSampleLevel(heightmap, heightmap_sampler, _e11, 1f);
-    let h = (_e9 + _e15.y);
-    let _e20 = v_uv;
-    let _e24 = textureSampleCompareLevel(shadow, shadow_sampler, _e20, 0.5f);
-    let _e27 = v_uv;
-    let _e29 = vec3<f32>(_e27, 1f);
-    let _e36 = textureSampleLevel(heightmap, heightmap_sampler, (_e29.xy / vec2(_e29.z)), 0.0);
-    v_height = ((h * _e24) + _e36.z);
-    let _e42 = uniforms.u_mvp;
-    gl_Position = (_e42 * vec4<f32>(a_pos.x, h, a_pos.y, 1f));
-    let _e49 = gl_Position;
-    let _e60 = v_uv;
-    let _e62 = v_height;
-    return terrain_vs_out(vec4<f32>(_e49.x, -(_e49.y), ((_e49.z + _e49.w) * 0.5f), _e49.w), _e60, _e62);
+    let _e12 = textureSampleLevel(heightmap, heightmap_sampler, _e8, 1f);
+    let h = (_e7 + _e12.y);
+    let _e16 = v_uv;
+    let _e19 = textureSampleCompareLevel(shadow, shadow_sampler, _e16, 0.5f);
+    let _e21 = v_uv;
+    let _e22 = vec3<f32>(_e21, 1f);
+    let _e27 = textureSampleLevel(heightmap, heightmap_sampler, (_e22.xy / vec2(_e22.z)), 0.0);
+    v_height = ((h * _e19) + _e27.z);
+    let _e33 = uniforms.u_mvp;
+    gl_Position = (_e33 * vec4<f32>(a_pos.x, h, a_pos.y, 1f));
+    let _e38 = gl_Position;
+    let _e47 = v_uv;
+    let _e48 = v_height;
+    return terrain_vs_out(vec4<f32>(_e38.x, -(_e38.y), ((_e38.z + _e38.w) * 0.5f), _e38.w), _e47, _e48);
 }
 
 @fragment 
@@ -71,6 +71,6 @@ fn terrain_fs(@location(0) v_uv_1: vec2<f32>, @location(1) v_height_1: f32) -> t
     let _e7 = textureSampleGrad(heightmap, heightmap_sampler, v_uv_1, _e3, _e4);
     let dx = _e7.x;
     f_color = vec4<f32>(vec3<f32>(((_e2 * 0.5f) + (dx * 0.1f)), v_height_1, 0f), 1f);
-    let _e20 = f_color;
-    return terrain_fs_out(_e20);
+    let _e19 = f_color;
+    return terrain_fs_out(_e19);
 }
