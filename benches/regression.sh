@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Compile speed of this checkout against an older commit, in one run
-# (docs/performance.md, "Against an older commit"):
+# (docs/performance.md, "Ninth sitting"):
 #
 #   bash benches/regression.sh [BASE_REV [PROGRAM]]   # default 8dfc985 (before issue 17),
 #                                                    # shaders/shadow.das

@@ -1,6 +1,6 @@
 //! The compile loop that `benches/regression.sh` builds twice, once against
 //! this checkout and once against an older one, to compare them in one run
-//! (docs/performance.md, "Against an older commit").
+//! (docs/performance.md, "Ninth sitting").
 //!
 //!     harness MODE N PROGRAM
 //!

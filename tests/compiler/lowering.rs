@@ -1,23 +1,10 @@
 //! Properties of the naga modules the lowering builds, over every program
 //! under `shaders/` that compiles on its own.
 
-use std::path::{Path, PathBuf};
-
-/// Every `.das` file under `dir`, sorted.
-fn programs(dir: &Path, out: &mut Vec<PathBuf>) {
-    let mut entries: Vec<_> = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().path()).collect();
-    entries.sort();
-    for p in entries {
-        if p.is_dir() {
-            programs(&p, out);
-        } else if p.extension().is_some_and(|e| e == "das") {
-            out.push(p);
-        }
-    }
-}
+use std::path::Path;
 
 /// The lowered modules of `path`, or `None` when it does not compile with
-/// default options (an include-only file, one that needs defines).
+/// default options (one that needs defines, say).
 fn lower(path: &Path) -> Option<umbrac::Lowered> {
     let mut sources = umbrac::SourceMap::new();
     let text = std::fs::read_to_string(path).unwrap();
@@ -40,10 +27,10 @@ fn lower(path: &Path) -> Option<umbrac::Lowered> {
 /// validate and write, and a split of the running emit range).
 #[test]
 fn a_function_holds_each_unemitted_expression_once() {
-    let mut files = Vec::new();
-    programs(&Path::new(env!("CARGO_MANIFEST_DIR")).join("shaders"), &mut files);
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("shaders");
     let mut checked = 0;
-    for path in &files {
+    for found in umbrac::batch::programs_under(&root).expect("shaders/ is readable") {
+        let path = &found.path;
         let Some(lowered) = lower(path) else { continue };
         let modules = std::iter::once(&lowered.gpu).chain(lowered.gl.iter().map(|g| &g.module));
         for module in modules {
