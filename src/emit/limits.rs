@@ -312,7 +312,7 @@ impl Family {
             (Family::Es300 | Family::Es310, Limit::UniformVectors, naga::ShaderStage::Vertex) => {
                 Some("Qualcomm Adreno GPUs report exactly 256 (GLES and WebGL2 on Android): the program fails to link there")
             }
-            (Family::Wgpu, ..) => Some("a WebGPU device created with default limits refuses the pipeline; with `--limit`, the host must request that limit (`requiredLimits`)"),
+            (Family::Wgpu, ..) => Some("a WebGPU device created with default limits refuses the pipeline; compiled with `--limit`, the manifest's `required_limits` says what the host must request"),
             _ => None,
         }
     }
@@ -451,6 +451,43 @@ pub fn check<'a>(lowered: &'a Lowered, targets: &[Target], raised: &[(Limit, u64
             }
         }
     }
+}
+
+/// What the WGSL/SPIR-V program needs above WebGPU's default limits, by
+/// their `requiredLimits` names (`maxUniformBuffersPerShaderStage`), the
+/// most any entry point needs; `None` when the defaults hold it. Only a
+/// program compiled with `--limit` gets here needing more: the manifest
+/// says what a host must request, as a default device refuses it.
+pub fn webgpu_requirements(lowered: &Lowered) -> Option<std::collections::BTreeMap<String, u64>> {
+    let mut needs = std::collections::BTreeMap::new();
+    for ep in &lowered.interface.entry_points {
+        for (limit, used) in entry_uses(lowered, ep, Family::Wgpu, false) {
+            let Some((minimum, api)) = Family::Wgpu.minimum(limit, ep.stage) else { continue };
+            if used.count > minimum {
+                let n = needs.entry(camel_case(api)).or_insert(0);
+                *n = used.count.max(*n);
+            }
+        }
+    }
+    (!needs.is_empty()).then_some(needs)
+}
+
+/// wgpu's `Limits` field name as WebGPU spells it: `max_bind_groups` ->
+/// `maxBindGroups`.
+fn camel_case(snake: &str) -> String {
+    let mut out = String::with_capacity(snake.len());
+    let mut upper = false;
+    for c in snake.chars() {
+        match c {
+            '_' => upper = true,
+            c if upper => {
+                out.push(c.to_ascii_uppercase());
+                upper = false;
+            }
+            c => out.push(c),
+        }
+    }
+    out
 }
 
 fn stage_name(stage: naga::ShaderStage) -> &'static str {
@@ -596,6 +633,12 @@ fn buffer_bytes(module: &naga::Module, ty: naga::Handle<naga::Type>) -> u64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn webgpu_names() {
+        assert_eq!(camel_case("max_uniform_buffers_per_shader_stage"), "maxUniformBuffersPerShaderStage");
+        assert_eq!(camel_case("max_compute_workgroup_size_x"), "maxComputeWorkgroupSizeX");
+    }
 
     #[test]
     fn limit_names_round_trip() {

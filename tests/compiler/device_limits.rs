@@ -283,7 +283,28 @@ fn hard_limits_stay_errors_without_strict() {
     // WebGPU's defaults are what a default device enforces: the note says
     // the host must ask for more.
     let c = compile(&src, &[Target::Wgsl], &[]);
-    assert!(c.diagnostics[0].notes.iter().any(|n| n.contains("requiredLimits")), "{:?}", c.diagnostics[0].notes);
+    assert!(c.diagnostics[0].notes.iter().any(|n| n.contains("`required_limits`")), "{:?}", c.diagnostics[0].notes);
+}
+
+#[test]
+fn the_manifest_lists_the_webgpu_limits_a_stated_program_needs() {
+    // 13 uniform buffers: WebGPU's default device has 12. Stated, it
+    // compiles, and the manifest says what the host must request.
+    let src = struct_uniforms(13);
+    let c = compile(&src, &[Target::Wgsl, Target::Spirv], &[(Limit::UniformBuffers, 16)]);
+    let r = &c.result.as_ref().expect("compiles for the stated limit").reflection;
+    let needs = r.required_limits.as_ref().expect("required_limits");
+    assert_eq!(needs.iter().map(|(k, v)| (k.as_str(), *v)).collect::<Vec<_>>(), [("maxUniformBuffersPerShaderStage", 13)]);
+    let json = c.result.as_ref().unwrap().artifact("limits.reflect.json").unwrap().text().into_owned();
+    assert!(json.contains("\"required_limits\": {\n    \"maxUniformBuffersPerShaderStage\": 13\n  }"), "{json}");
+    // Within the defaults, or with no WebGPU target, the field is left out.
+    for (src, targets) in [(struct_uniforms(12), &[Target::Wgsl][..]), (src.clone(), &[Target::Glsl330][..])] {
+        let limits = [(Limit::UniformBlocks, 16)];
+        let c = compile(&src, targets, &limits);
+        let compiled = c.result.as_ref().unwrap_or_else(|| panic!("{}", c.render_diagnostics()));
+        assert!(compiled.reflection.required_limits.is_none(), "{targets:?}");
+        assert!(!compiled.artifact("limits.reflect.json").unwrap().text().contains("required_limits"), "{targets:?}");
+    }
 }
 
 #[test]
