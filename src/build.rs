@@ -224,6 +224,13 @@ impl Build {
         self
     }
 
+    /// Make going over any guaranteed device minimum an error, not only over
+    /// what devices in use report (`--strict-limits`).
+    pub fn strict_limits(mut self, strict: bool) -> Self {
+        self.options.strict_limits = strict;
+        self
+    }
+
     /// Let `#include` reach files outside the input's directory and the
     /// include directories.
     pub fn allow_outside_includes(mut self, allow: bool) -> Self {

@@ -95,7 +95,7 @@ impl Key {
         }
         field(&mut h, format!("{:?}", opts.conventions).as_bytes());
         field(&mut h, opts.gl_uniforms.as_str().as_bytes());
-        field(&mut h, format!("{:?}", opts.limits).as_bytes());
+        field(&mut h, format!("{:?} strict {}", opts.limits, opts.strict_limits).as_bytes());
         field(&mut h, extra.as_bytes());
         field(&mut h, b"tokens");
         hash_tokens(&mut h, pre.tokens(), pre.sources());

@@ -70,6 +70,10 @@ pub struct Options {
     /// `--limit NAME=N`: compile for devices with more of a resource than
     /// the targets' minimums (`emit::limits`).
     pub limits: Vec<(Limit, u64)>,
+    /// `--strict-limits`: going over any guaranteed minimum is an error, not
+    /// only over what devices in use report (a warning by default;
+    /// docs/targets.md, "Device limits").
+    pub strict_limits: bool,
     /// Allow `#include` to reach files outside the input's directory and the
     /// include directories.
     pub allow_outside_includes: bool,
@@ -379,11 +383,12 @@ fn finish(pre: Preprocessed, opts: &Options) -> Compilation {
             }
         };
         let mut over = Vec::new();
-        emit::limits::check(&lowered, &targets, &opts.limits, &mut over);
-        if !over.is_empty() {
-            for d in over {
-                diags.push(d);
-            }
+        emit::limits::check(&lowered, &targets, &opts.limits, opts.strict_limits, &mut over);
+        let refused = over.iter().any(|d| d.is_error());
+        for d in over {
+            diags.push(d);
+        }
+        if refused {
             return None;
         }
         let root_name = &sources.file(root).name;

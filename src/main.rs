@@ -206,6 +206,10 @@ struct CommonArgs {
     /// names and minimums.
     #[arg(long = "limit", value_name = "NAME=N", value_parser = parse_limit)]
     limits: Vec<(umbrac::Limit, u64)>,
+    /// Refuse a program over any guaranteed minimum; by default, going over a
+    /// guarantee that every device in use exceeds is a warning.
+    #[arg(long)]
+    strict_limits: bool,
     /// Let #include reach files outside the input's directory and the -I directories.
     #[arg(long)]
     allow_outside_includes: bool,
@@ -292,6 +296,7 @@ impl CommonArgs {
                 GlUniformsArg::Blocks => umbrac::GlUniforms::Blocks,
             },
             limits: self.limits.clone(),
+            strict_limits: self.strict_limits,
             allow_outside_includes: self.allow_outside_includes,
             daslib: self.daslib.clone(),
             source_name: None,
