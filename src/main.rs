@@ -166,6 +166,9 @@ struct ReflectArgs {
 }
 
 #[derive(Args, Debug)]
+// `--module NAME` names the bindings' module here: the module prefixes
+// (`--module PREFIX=DIR` elsewhere) are `--module-prefix`.
+#[command(mut_arg("modules", |a| a.long("module-prefix")))]
 struct BindgenArgs {
     #[arg(value_name = "FILE")]
     file: PathBuf,
@@ -217,7 +220,7 @@ struct CommonArgs {
     #[arg(long, value_name = "DIR", value_parser = umbrac::syntax::modules::parse_daslang_root)]
     daslang_root: Option<PathBuf>,
     /// Where `require PREFIX/NAME` finds `NAME.das` (repeatable), e.g.
-    /// `--module geometry=modules/dasGlsl/glsl`.
+    /// `geometry=modules/dasGlsl/glsl`.
     #[arg(long = "module", value_name = "PREFIX=DIR", value_parser = umbrac::syntax::modules::parse_module_arg)]
     modules: Vec<(String, PathBuf)>,
     /// How diagnostics are printed.
