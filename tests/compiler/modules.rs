@@ -218,3 +218,40 @@ fn the_command_line_takes_a_daslang_root_and_module_prefixes() {
         assert!(err.contains(want), "{all:?}: {err}");
     }
 }
+
+/// Only what shaders reach is compiled: a reached module's host code,
+/// `options` lines, generics, macros and its `require`s of host-only
+/// modules produce no error, nor does a module in daslang's older (gen1)
+/// syntax that no shader reaches.
+#[test]
+fn host_code_in_required_modules_is_never_an_error() {
+    let t = tempfile::tempdir().unwrap();
+    let write = |rel: &str, text: &str| {
+        let p = t.path().join(rel);
+        std::fs::create_dir_all(p.parent().unwrap()).unwrap();
+        std::fs::write(p, text).unwrap();
+    };
+    write(
+        "lib/mixed.das",
+        "options gen2\noptions no_aot = true\nmodule mixed public\nrequire fio\nrequire glfw/glfw_boost\nrequire imgui/imgui_boost\nrequire ./old_style\n\ndef half_of(x : float) : float {\n    return x * 0.5\n}\n\ndef generic_sum(a, b : auto(T)) : T {\n    return a + b\n}\n\n[macro_function]\ndef make_call(var expr : ExpressionPtr) : ExpressionPtr {\n    return <- expr\n}\n\n[export]\ndef main {\n    let files <- [for (x in range(3)); \"{x}.txt\"]\n    print(\"{files}\")\n}\n",
+    );
+    write("lib/old_style.das", "module old_style\n\ndef old_helper(x:float)\n    let y = x * 2.0\n    return y\n\nstruct Legacy\n    a : int\n");
+    write("app/main.das", "options gen2\nrequire ../lib/mixed\nvar @out f_color : float4\n[fragment_program]\ndef fs {\n    f_color = float4(half_of(0.5))\n}\n");
+    let c = compile(&t.path().join("app/main.das"), &Options::default());
+    assert!(c.result.is_some() && c.diagnostics.is_empty(), "{}", c.render_diagnostics());
+    assert!(read_names(&c).contains(&"old_style.das".to_string()), "{:?}", read_names(&c));
+}
+
+/// An error inside a module found through a prefix points into that file
+/// with the `require` chain.
+#[test]
+fn an_error_in_a_prefixed_module_shows_the_require_chain() {
+    let t = tempfile::tempdir().unwrap();
+    std::fs::create_dir_all(t.path().join("pack")).unwrap();
+    std::fs::write(t.path().join("pack/bad.das"), "def broken(x : float) : float {\n    return x + true\n}\n").unwrap();
+    let main = t.path().join("main.das");
+    std::fs::write(&main, "require p/bad\nvar @out f_color : float4\n[fragment_program]\ndef fs {\n    f_color = float4(broken(1.0))\n}\n").unwrap();
+    let c = compile(&main, &Options { modules: vec![("p".into(), t.path().join("pack"))], ..Default::default() });
+    let text = c.render_diagnostics();
+    assert!(c.result.is_none() && text.contains("bad.das:2:") && text.contains("required from") && text.contains("main.das:1:"), "{text}");
+}
