@@ -40,6 +40,9 @@ pub(super) struct Roots {
     /// The daslang root (`%/` names): `--daslang-root`, else the
     /// `--daslib` directory's parent.
     root: Option<PathBuf>,
+    /// The `.das_module` files read, with their text: they decide where
+    /// modules are, so they count as read (depfiles, reruns, `--watch`).
+    pub descriptors: Vec<(PathBuf, String)>,
 }
 
 impl Roots {
@@ -51,7 +54,11 @@ impl Roots {
             let mut packs: Vec<PathBuf> = std::fs::read_dir(root.join("modules")).into_iter().flatten().flatten().map(|e| e.path()).filter(|p| p.is_dir()).collect();
             packs.sort();
             for pack in packs {
-                r.registered.extend(registrations(&pack));
+                let descriptor = pack.join(".das_module");
+                if let Ok(text) = std::fs::read_to_string(&descriptor) {
+                    r.registered.extend(registrations(&pack, &text));
+                    r.descriptors.push((descriptor, text));
+                }
                 let mut subs: Vec<PathBuf> = std::fs::read_dir(&pack).into_iter().flatten().flatten().map(|e| e.path()).filter(|p| p.is_dir()).collect();
                 subs.sort();
                 for sub in subs {
@@ -108,15 +115,15 @@ fn is_prefix_name(s: &str) -> bool {
     !s.is_empty() && !s.starts_with('.') && s.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')
 }
 
-/// The `register_native_path(PREFIX, REST, FILE)` calls of `pack/.das_module`,
+/// The `register_native_path(PREFIX, REST, FILE)` calls of `pack/.das_module`
+/// (`text`),
 /// read without running it: `{project_path}` is the pack's folder, and a
 /// `{v}` bound by `for (v in LIST)` to a `let LIST = ["a", "b"]` of string
 /// literals expands to each. A call umbrac cannot read so is skipped
 /// (`--module` states it instead).
-pub(super) fn registrations(pack: &Path) -> Vec<(String, String, PathBuf)> {
-    let Ok(text) = std::fs::read_to_string(pack.join(".das_module")) else { return Vec::new() };
+pub(super) fn registrations(pack: &Path, text: &str) -> Vec<(String, String, PathBuf)> {
     let mut map = SourceMap::new();
-    let id = map.add(".das_module", None, text, None);
+    let id = map.add(".das_module", None, text.to_string(), None);
     let mut toks = Vec::new();
     super::lexer::lex(&map.file(id).text, map.file(id).base, &mut toks);
     toks.retain(|t| t.kind != TokKind::Newline);
@@ -221,13 +228,12 @@ mod tests {
         let pack = t.path().join("dasPack");
         std::fs::create_dir(&pack).unwrap();
         let text = "options gen2\nrequire daslib/fio\n[export]\ndef initialize(project_path : string) {\n    register_native_path(\"one\", \"solo\", \"{project_path}/x/solo.das\")\n    let names = [\n        \"a\", \"b\"\n    ]\n    for (n in names) {\n        register_native_path(\"two\", \"{n}\", \"{project_path}/lib/{n}.das\")\n    }\n    register_native_path(\"three\", \"{unknown}\", \"{project_path}/{unknown}.das\")\n}\n";
-        std::fs::write(pack.join(".das_module"), text).unwrap();
-        let got = registrations(&pack);
+        let got = registrations(&pack, text);
         let want = [("one", "solo", pack.join("x/solo.das")), ("two", "a", pack.join("lib/a.das")), ("two", "b", pack.join("lib/b.das"))];
         assert_eq!(got.len(), want.len(), "{got:?}");
         for (g, w) in got.iter().zip(want) {
             assert_eq!((g.0.as_str(), g.1.as_str(), &g.2), (w.0, w.1, &w.2));
         }
-        assert!(registrations(t.path()).is_empty());
+        assert!(registrations(&pack, "def initialize(project_path : string) {\n    register_native_path(\"x\", y, \"{project_path}/z.das\")\n}\n").is_empty());
     }
 }

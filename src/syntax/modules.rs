@@ -271,7 +271,13 @@ pub(super) fn load(map: &mut SourceMap, root: FileId, toks: &mut Vec<Token>, raw
             if BUILTIN_MODULES.contains(&req.name.as_str()) {
                 continue;
             }
-            let roots = roots.get_or_insert_with(|| Roots::new(opts));
+            let roots = roots.get_or_insert_with(|| {
+                let mut r = Roots::new(opts);
+                for (path, text) in std::mem::take(&mut r.descriptors) {
+                    map.add(path.display().to_string(), Some(path), text, None);
+                }
+                r
+            });
             let requiring_dir = map.file_of(req.span.start).and_then(|f| map.file(f).path.as_deref().map(parent_dir)).unwrap_or_else(|| root_dir.clone());
             let cands = candidates(&req.name, &requiring_dir, roots, opts);
             let taken = cands.files.iter().position(|p| p.is_file());

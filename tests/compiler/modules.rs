@@ -146,6 +146,8 @@ fn user_modules_through_registered_and_stated_prefixes() {
     let tree = own_tree();
     let by_root = compile(&path, &Options { daslang_root: Some(tree.clone()), ..Default::default() });
     let want = outputs(&by_root);
+    // The `.das_module` that registered `reg/` counts as read (depfiles, reruns).
+    assert!(by_root.files_read().iter().any(|p| p.ends_with("dasReg/.das_module")), "{:?}", by_root.files_read());
     let stated = Options { modules: vec![("reg".into(), tree.join("modules/dasReg/lib")), ("pack".into(), tree.join("modules/dasPack/pack"))], ..Default::default() };
     assert_eq!(outputs(&compile(&path, &stated)), want);
     // A `--module` comes before the tree's registration of the prefix.
