@@ -231,6 +231,41 @@ pub fn parse_daslang_root(s: &str) -> Result<PathBuf, String> {
     Ok(dir)
 }
 
+/// Appends a module's tokens to `toks` and its items to `raw`. A
+/// builtin-declaring module ([`BUILTIN_DECLARING`]) gives its names to
+/// `builtins` and only its `require`s to `raw` (items never parsed); then
+/// this returns true.
+fn join_items(module_toks: Vec<Token>, map: &SourceMap, toks: &mut Vec<Token>, raw: &mut Vec<RawItem>, builtins: &mut Vec<DaslangBuiltin>) -> bool {
+    let base = toks.len();
+    let split = items::split(&module_toks, map);
+    let declares = module_name(&module_toks, &split, map).filter(|n| BUILTIN_DECLARING.contains(n)).map(str::to_string);
+    for mut item in split {
+        if let Some(module) = &declares {
+            for k in item.names() {
+                let t = &module_toks[k];
+                builtins.push(DaslangBuiltin { name: map.slice(t.span).to_string(), module: module.clone(), span: t.span });
+            }
+            if item.kind != ItemKind::Other {
+                continue;
+            }
+        }
+        let shift = |r: &mut Range<usize>| *r = r.start + base..r.end + base;
+        shift(&mut item.annots);
+        shift(&mut item.body);
+        shift(&mut item.names);
+        for k in &mut item.block_names {
+            *k += base;
+        }
+        // A module's entry points are its own; its shader globals
+        // count only where a shader reaches them by name.
+        item.entry = false;
+        item.from_module = true;
+        raw.push(item);
+    }
+    toks.extend(module_toks);
+    declares.is_some()
+}
+
 /// One module file read.
 struct Module {
     /// Its items in the combined list.
@@ -343,37 +378,10 @@ pub(super) fn load(map: &mut SourceMap, root: FileId, toks: &mut Vec<Token>, raw
             };
             let id = map.add(path.display().to_string(), Some(path.clone()), text, Some(req.site));
             let module_toks = super::preprocess::preprocess(map, id, opts, diags);
-            let base = toks.len();
             let first_item = raw.len();
-            let split = items::split(&module_toks, map);
-            let declares_builtins = module_name(&module_toks, &split, map).filter(|n| BUILTIN_DECLARING.contains(n)).map(str::to_string);
-            for mut item in split {
-                if let Some(module) = &declares_builtins {
-                    // Its names are builtins; only its own `require`s are
-                    // kept (as items never parsed), and followed now.
-                    for k in item.names() {
-                        let t = &module_toks[k];
-                        out.builtins.push(DaslangBuiltin { name: map.slice(t.span).to_string(), module: module.clone(), span: t.span });
-                    }
-                    if item.kind != ItemKind::Other {
-                        continue;
-                    }
-                }
-                let shift = |r: &mut Range<usize>| *r = r.start + base..r.end + base;
-                shift(&mut item.annots);
-                shift(&mut item.body);
-                shift(&mut item.names);
-                for k in &mut item.block_names {
-                    *k += base;
-                }
-                // A module's entry points are its own; its shader globals
-                // count only where a shader reaches them by name.
-                item.entry = false;
-                item.from_module = true;
-                raw.push(item);
-            }
-            toks.extend(module_toks);
-            if declares_builtins.is_some() {
+            let declares_builtins = join_items(module_toks, map, toks, raw, &mut out.builtins);
+            if declares_builtins {
+                // Its own requires (the lingua franca) are followed now.
                 pending.extend((first_item..raw.len()).map(|i| (i, depth + 1)));
             } else {
                 modules.push(Module { items: first_item..raw.len(), depth: depth + 1, expanded: false });
