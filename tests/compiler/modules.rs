@@ -257,3 +257,21 @@ fn an_error_in_a_prefixed_module_shows_the_require_chain() {
     let text = c.render_diagnostics();
     assert!(c.result.is_none() && text.contains("bad.das:2:") && text.contains("required from") && text.contains("main.das:1:"), "{text}");
 }
+
+/// daslang's 12 GL tutorials compile to the same outputs with the daslang
+/// tree given: their host modules (`opengl/opengl_boost`, `live/live_gc`,
+/// `daslib/...`) are then found and read, and none of it is compiled.
+#[test]
+fn the_gl_tutorials_are_the_same_with_the_daslang_tree() {
+    let Some(tree) = daslang_tree() else { return };
+    let dir = support::repo().join("../shared/reference/daslang-tutorials");
+    let mut tutorials: Vec<PathBuf> = std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()).filter(|p| p.extension().is_some_and(|x| x == "das")).collect();
+    tutorials.sort();
+    assert_eq!(tutorials.len(), 12, "{tutorials:?}");
+    for t in &tutorials {
+        let alone = compile(t, &Options::default());
+        let with = compile(t, &Options { daslang_root: Some(tree.clone()), ..Default::default() });
+        assert_eq!(outputs(&with), outputs(&alone), "{}", t.display());
+        assert!(read_names(&with).contains(&"opengl_boost.das".to_string()), "{}: {:?}", t.display(), read_names(&with));
+    }
+}
