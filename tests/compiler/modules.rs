@@ -275,3 +275,31 @@ fn the_gl_tutorials_are_the_same_with_the_daslang_tree() {
         assert!(read_names(&with).contains(&"opengl_boost.das".to_string()), "{}: {:?}", t.display(), read_names(&with));
     }
 }
+
+/// A `.das_module` decides where a module is: it is in the depfile, and
+/// editing it recompiles (the rerun record and the cache key see it).
+#[cfg(feature = "cli")]
+#[test]
+fn an_edited_das_module_recompiles() {
+    let t = tempfile::tempdir().unwrap();
+    let write = |rel: &str, text: &str| {
+        let p = t.path().join(rel);
+        std::fs::create_dir_all(p.parent().unwrap()).unwrap();
+        std::fs::write(p, text).unwrap();
+    };
+    let descriptor = |file: &str| format!("def initialize(project_path : string) {{\n    register_native_path(\"x\", \"tone\", \"{{project_path}}/{file}\")\n}}\n");
+    write("tree/modules/dasX/.das_module", &descriptor("a.das"));
+    write("tree/modules/dasX/a.das", "def tone(c : float4) : float4 {\n    return c * 0.5\n}\n");
+    write("tree/modules/dasX/b.das", "def tone(c : float4) : float4 {\n    return c * 0.25\n}\n");
+    write("m.das", "require x/tone\nvar @uniform u_tint : float4\nvar @out f_color : float4\n[fragment_program]\ndef m_fs {\n    f_color = tone(u_tint)\n}\n");
+    let args = ["compile", "m.das", "--target", "wgsl", "--daslang-root", "tree", "-o", "out", "--cache", "cache", "--depfile", "m.d"];
+    let run = || {
+        let o = support::umbrac(&args, t.path());
+        assert!(o.status.success(), "{}", String::from_utf8_lossy(&o.stderr));
+        std::fs::read_to_string(t.path().join("out/m.wgsl")).unwrap()
+    };
+    assert!(run().contains("0.5"));
+    assert!(std::fs::read_to_string(t.path().join("m.d")).unwrap().contains(".das_module"));
+    write("tree/modules/dasX/.das_module", &descriptor("b.das"));
+    assert!(run().contains("0.25"), "the edited registration is followed");
+}
