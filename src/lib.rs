@@ -80,6 +80,14 @@ pub struct Options {
     /// `--daslib DIR`: daslang's `daslib` directory, where `require
     /// daslib/NAME` finds `NAME.das`.
     pub daslib: Option<PathBuf>,
+    /// `--daslang-root DIR`: a daslang tree or install, for `require`:
+    /// `DIR/daslib`, the prefixes its `modules/*/.das_module` files
+    /// register and its folders named after a prefix (docs/language.md,
+    /// "Modules").
+    pub daslang_root: Option<PathBuf>,
+    /// `--module PREFIX=DIR`: `require PREFIX/NAME` finds `DIR/NAME.das`
+    /// (before the daslang tree's registrations).
+    pub modules: Vec<(String, PathBuf)>,
     /// The name the outputs record for the input (the manifest's `source`,
     /// the bindings' header); `None`: the name diagnostics show, the path
     /// as given. The CLI and [`build`] set a name that does not depend on
@@ -337,6 +345,8 @@ fn parse_options(opts: &Options) -> syntax::ParseOptions {
         entries: opts.entries.clone(),
         allow_outside_includes: opts.allow_outside_includes,
         daslib: opts.daslib.iter().cloned().collect(),
+        daslang_root: opts.daslang_root.clone(),
+        module_dirs: opts.modules.clone(),
     }
 }
 

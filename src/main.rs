@@ -166,6 +166,9 @@ struct ReflectArgs {
 }
 
 #[derive(Args, Debug)]
+// `--module NAME` names the bindings' module here: the module prefixes
+// (`--module PREFIX=DIR` elsewhere) are `--module-prefix`.
+#[command(mut_arg("modules", |a| a.long("module-prefix")))]
 struct BindgenArgs {
     #[arg(value_name = "FILE")]
     file: PathBuf,
@@ -216,6 +219,14 @@ struct CommonArgs {
     /// daslang's `daslib` directory, for `require daslib/NAME`.
     #[arg(long, value_name = "DIR")]
     daslib: Option<PathBuf>,
+    /// A daslang tree or install, for `require`: its `daslib/`, the prefixes
+    /// its `modules/*/.das_module` files register, its prefix-named folders.
+    #[arg(long, value_name = "DIR", value_parser = umbrac::syntax::modules::parse_daslang_root)]
+    daslang_root: Option<PathBuf>,
+    /// Where `require PREFIX/NAME` finds `NAME.das` (repeatable), e.g.
+    /// `geometry=modules/dasGlsl/glsl`.
+    #[arg(long = "module", value_name = "PREFIX=DIR", value_parser = umbrac::syntax::modules::parse_module_arg)]
+    modules: Vec<(String, PathBuf)>,
     /// How diagnostics are printed.
     #[arg(long, value_enum, default_value_t = MessageFormat::Human)]
     message_format: MessageFormat,
@@ -299,6 +310,8 @@ impl CommonArgs {
             strict_limits: self.strict_limits,
             allow_outside_includes: self.allow_outside_includes,
             daslib: self.daslib.clone(),
+            daslang_root: self.daslang_root.clone(),
+            modules: self.modules.clone(),
             source_name: None,
         }
     }

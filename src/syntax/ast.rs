@@ -51,6 +51,8 @@ pub struct Program {
     /// Required modules that were not found, for the checker's errors
     /// about names nothing defines.
     pub modules_not_found: Vec<MissingModule>,
+    /// Names daslang's builtin-declaring modules declare.
+    pub daslang_builtins: Vec<DaslangBuiltin>,
 }
 
 #[derive(Clone, Debug)]
@@ -326,6 +328,18 @@ pub enum ExprKind {
     /// A `half` literal (`1.5h`): its value, rounded once from the decimal
     /// to the nearest binary16 value (held exactly in the `f64`).
     Half(f64),
+}
+
+/// A name one of daslang's builtin-declaring modules declares
+/// (`syntax::modules::BUILTIN_DECLARING`): umbrac's builtin of that name
+/// is meant, and one umbrac lacks is refused by name.
+#[derive(Clone, Debug)]
+pub struct DaslangBuiltin {
+    pub name: String,
+    /// `shader_lingua_franca`, ...
+    pub module: String,
+    /// The declaration's name.
+    pub span: Span,
 }
 
 /// A required module that was not found, for the checker's errors about
