@@ -1107,12 +1107,12 @@ mod tests {
     }
 
     fn member(name: &str, ty: &str, offset: u32, size: u32, array_stride: Option<u32>) -> Member {
-        Member { name: name.into(), ty: ty.into(), offset, size, array_stride, matrix_stride: None, storage: None, default: None }
+        Member { name: name.into(), ty: ty.into(), offset, size, array_stride, matrix_stride: None, storage: None, glsl_name: None, default: None }
     }
 
     /// A loose buffer of these members.
     fn block(name: &str, ty: &str, size: u32, members: Vec<Member>) -> crate::emit::reflect_types::UniformBuffer {
-        crate::emit::reflect_types::UniformBuffer { name: name.into(), ty: ty.into(), loose: true, size, group: 0, binding: 9, glsl_block: None, members }
+        crate::emit::reflect_types::UniformBuffer { name: name.into(), ty: ty.into(), loose: true, size, group: 0, binding: 9, glsl_block: None, glsl_binding: None, members }
     }
 
     /// Layouts the checker never lets through still follow the manifest's

@@ -129,6 +129,9 @@ pub struct EntryNames {
     pub outputs: BTreeMap<u32, String>,
     /// Source name -> GLSL name of each storage image (GLSL 430 / ES 3.10).
     pub images: BTreeMap<String, String>,
+    /// Uniform global (handle index) -> the GLSL names of its block's
+    /// members, in order (`u_cam_ubo.model` is what a host queries).
+    pub block_members: BTreeMap<usize, Vec<String>>,
 }
 
 /// ES 3.00 types that have no default precision (GLSL ES 3.00 §4.5.4) and
@@ -281,7 +284,8 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
     let mut uniforms: Vec<_> = info.uniforms.iter().collect();
     uniforms.sort_by_key(|(h, _)| h.index());
     let mut renames: Vec<(Range<usize>, String)> = Vec::new();
-    let mut instances: Vec<(String, String)> = Vec::new();
+    // (naga's instance name, source name, global, block name, a uniform block)
+    let mut instances: Vec<(String, String, usize, String, bool)> = Vec::new();
     if !uniforms.is_empty() {
         let idents = text::idents_containing(&out, &BLOCK);
         for (handle, naga_block) in uniforms {
@@ -301,16 +305,21 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
             if renames.iter().any(|(_, n)| *n == new) {
                 return Err(bug(format!("two uniform blocks would both be named `{new}`")));
             }
-            instances.push((instance.to_string(), source));
+            instances.push((instance.to_string(), source, original, new.clone(), !storage));
             renames.extend(at.map(|r| (r, new.clone())));
             names.blocks.insert(original, new);
         }
     }
     text::apply_edits(&mut out, renames);
-    for (naga_name, source) in &instances {
-        restore_source_name(&mut out, naga_name, source);
+    for (naga_name, source, original, block, uniform) in &instances {
+        let name = restore_source_name(&mut out, naga_name, source);
+        // A uniform block declares its struct's members, with an instance
+        // name, as daslang's generator does: stages of both link.
+        if *uniform {
+            let members = inline_block_members(&mut out, block, &name).ok_or_else(|| bug(format!("cannot declare the members of uniform block `{block}`")))?;
+            names.block_members.insert(*original, members);
+        }
     }
-
 
     // Plain uniforms: `T name = zero;` becomes `uniform T name;`.
     for (handle, source) in em.uniforms {
@@ -427,6 +436,7 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
         drop_location_qualifier(&mut out, name).ok_or_else(|| bug(format!("no `layout(location = N)` declaration of `{name}` to drop")))?;
     }
 
+    drop_smooth_qualifiers(&mut out);
     if profile.is_es() {
         add_es_precision(&mut out).ok_or_else(|| bug("no `precision highp int;` line to extend".into()))?;
     }
@@ -588,6 +598,41 @@ fn trailing_instance(rest: &str) -> Option<&str> {
     let after = rest[close + 2..].strip_prefix(' ')?;
     let name = &after[..after.find(';')?];
     (!name.is_empty() && name.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_')).then_some(name)
+}
+
+/// Rewrites naga's `uniform BLOCK { T instance; };` as `uniform BLOCK {
+/// <T's members> } instance;`, and returns the members' names. The
+/// members are copied from naga's `struct T` (which stays: other code may
+/// use the type), so they have the names naga reads them by; the body
+/// still reads `instance.member`.
+fn inline_block_members(src: &mut String, block: &str, instance: &str) -> Option<Vec<String>> {
+    let at = text::find_ident(src, block).find(|&at| src[..at].ends_with("uniform ") && src[at + block.len()..].starts_with(" { "))?;
+    let open = at + block.len() + 1;
+    let close = open + src[open..].find("; };")?;
+    let decl = &src[open + 2..close];
+    let (ty, name) = decl.split_once(' ')?;
+    if name != instance {
+        return None;
+    }
+    let head = ["struct ", ty, " {\n"].concat();
+    let body_start = memchr::memmem::find_iter(src.as_bytes(), head.as_bytes()).find(|&k| k == 0 || src.as_bytes()[k - 1] == b'\n')? + head.len();
+    let body_end = body_start + src[body_start..].find("\n};")? + 1;
+    let body = src[body_start..body_end].to_string();
+    let members = body.lines().filter_map(|l| l.trim().trim_end_matches(';').split('[').next()?.split_whitespace().last().map(str::to_string)).collect();
+    src.replace_range(open..close + "; };".len(), &["{\n", &body, "} ", instance, ";"].concat());
+    Some(members)
+}
+
+/// Drops naga's `smooth` from varying declarations: it is GLSL's default
+/// for float varyings, and daslang's generator writes none, so a stage
+/// of either links with a stage of the other (the presence of
+/// interpolation qualifiers must match). `flat` stays (integers need it).
+fn drop_smooth_qualifiers(src: &mut String) {
+    let edits: Vec<(Range<usize>, &str)> = memchr::memmem::find_iter(src.as_bytes(), b"\nsmooth ")
+        .filter(|&k| src[k + 8..].starts_with("in ") || src[k + 8..].starts_with("out "))
+        .map(|k| (k + 1..k + 8, ""))
+        .collect();
+    text::apply_edits(src, edits);
 }
 
 /// Adds `precision highp T;` for every no-default-precision type the text

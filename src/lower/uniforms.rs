@@ -326,6 +326,65 @@ impl FnBuilder<'_, '_> {
     }
 }
 
+/// The GL binding point of each uniform block GLSL declares, by resource
+/// index, as daslang's GL binder (dasOpenGL) assigns them, so that a host
+/// written for daslang binds umbrac's blocks at the same points: every
+/// struct `@uniform` of the program, used or not, sorted by name; one
+/// with `@binding = N` takes point N, the others the lowest free points
+/// in that order. The loose buffers of `--gl-uniforms blocks` (which
+/// daslang does not have) follow, by group, at the next free points.
+/// Several blocks asking for one point keep the first; the later take
+/// free points.
+pub(super) fn gl_block_points(p: &sema::Program, resources: &[Resource], gl_uniforms: GlUniforms) -> Vec<Option<u32>> {
+    let mut blocks: Vec<(&str, Option<u32>)> = p
+        .globals
+        .iter()
+        .enumerate()
+        .filter(|(_, g)| matches!(g.kind, sema::GlobalKind::Uniform { .. }) && matches!(g.ty, Ty::Struct(_)))
+        .map(|(id, g)| (g.name.as_str(), p.written_bindings.get(&id).copied()))
+        .collect();
+    blocks.sort();
+    let mut taken = std::collections::BTreeSet::new();
+    let mut point: Vec<(&str, u32)> = Vec::new();
+    for &(name, written) in &blocks {
+        if let Some(n) = written.filter(|n| taken.insert(*n)) {
+            point.push((name, n));
+        }
+    }
+    let mut next = 0;
+    let mut free = |taken: &mut std::collections::BTreeSet<u32>| {
+        while !taken.insert(next) {
+            next += 1;
+        }
+        next
+    };
+    for &(name, _) in &blocks {
+        if !point.iter().any(|(n, _)| *n == name) {
+            let n = free(&mut taken);
+            point.push((name, n));
+        }
+    }
+    let mut loose: Vec<(u32, usize)> = Vec::new();
+    let out = resources
+        .iter()
+        .enumerate()
+        .map(|(i, r)| match r.kind {
+            ResourceKind::Uniform { loose: false, .. } => point.iter().find(|(n, _)| *n == r.name).map(|&(_, n)| n),
+            ResourceKind::Uniform { loose: true, .. } if gl_uniforms == GlUniforms::Blocks => {
+                loose.push((r.group, i));
+                None
+            }
+            _ => None,
+        })
+        .collect::<Vec<_>>();
+    let mut out = out;
+    loose.sort();
+    for (_, i) in loose {
+        out[i] = Some(free(&mut taken));
+    }
+    out
+}
+
 /// How an element (or component) of a value stored as `how` is stored,
 /// the element being of type `ty`.
 fn element_storage(how: Stored, ty: &Ty) -> Stored {
