@@ -17,6 +17,8 @@ mod compute;
 mod consumers;
 #[cfg(feature = "render")]
 mod differential;
+#[cfg(feature = "gl")]
+mod gl_interop;
 #[cfg(feature = "render")]
 mod language_f;
 mod features_l;
