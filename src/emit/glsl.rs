@@ -9,7 +9,15 @@
 //!   between the stages of one program and is meaningless to a host. Each is
 //!   renamed to `<name>_ubo` (`u_cam_ubo`, as daslang's generator names
 //!   it), identical in every stage; a rename that would collide with another
-//!   identifier is refused.
+//!   identifier is refused. naga declares the struct as the block's one
+//!   member (`{ Camera u_cam; }`); a uniform block is given the struct's
+//!   members and an instance name instead (`{ mat4 model; ... } u_cam;`),
+//!   as daslang's generator declares it, so that a stage links with the
+//!   generator's other stage (the GL lowering reads a whole struct member
+//!   by member, as an instance is no value).
+//! - varyings: naga's `smooth` is dropped (GLSL's default for floats;
+//!   daslang's generator writes none, and Mesa refuses a qualifier on one
+//!   side only); `flat` stays.
 //! - plain uniforms: the GL module holds a loose uniform as a private global
 //!   (`GlEntry::uniforms`), which naga declares `T name = zero;`; that line
 //!   becomes `uniform T name;`.
