@@ -636,9 +636,16 @@ fn inline_block_members(src: &mut String, block: &str, instance: &str) -> Option
 /// of either links with a stage of the other (the presence of
 /// interpolation qualifiers must match). `flat` stays (integers need it).
 fn drop_smooth_qualifiers(src: &mut String) {
-    let edits: Vec<(Range<usize>, &str)> = memchr::memmem::find_iter(src.as_bytes(), b"\nsmooth ")
-        .filter(|&k| src[k + 8..].starts_with("in ") || src[k + 8..].starts_with("out "))
-        .map(|k| (k + 1..k + 8, ""))
+    const SMOOTH: &str = "smooth ";
+    let edits: Vec<(Range<usize>, &str)> = memchr::memmem::find_iter(src.as_bytes(), SMOOTH.as_bytes())
+        .filter(|&k| {
+            // A global declaration: at the start of a line, or after its
+            // `layout(location = N) ` (GLSL 430 / ES 3.10).
+            let line = &src[src[..k].rfind('\n').map_or(0, |n| n + 1)..k];
+            let rest = &src[k + SMOOTH.len()..];
+            (line.is_empty() || (line.starts_with("layout(") && line.ends_with(") "))) && (rest.starts_with("in ") || rest.starts_with("out "))
+        })
+        .map(|k| (k..k + SMOOTH.len(), ""))
         .collect();
     text::apply_edits(src, edits);
 }
@@ -680,6 +687,23 @@ mod tests {
         assert!(!is_location_name("_vs2fs_location1_", "_vs2fs_location", 1));
         assert!(!is_location_name("_p2vs_location1", "_vs2fs_location", 1));
         assert!(!is_location_name("_vs2fs_location", "_vs2fs_location", 0));
+    }
+
+    #[test]
+    fn smooth_goes_flat_stays() {
+        let mut s = "smooth out vec3 a;\nlayout(location = 1) smooth in vec2 b;\nflat out int c;\n    float smoothed = 0.0;\nvoid f() { smooth_x(); }\n".to_string();
+        drop_smooth_qualifiers(&mut s);
+        assert_eq!(s, "out vec3 a;\nlayout(location = 1) in vec2 b;\nflat out int c;\n    float smoothed = 0.0;\nvoid f() { smooth_x(); }\n");
+    }
+
+    #[test]
+    fn blocks_get_their_structs_members() {
+        let mut s = "struct Cam {\n    mat4x4 view;\n    vec4 lights[2];\n};\nlayout(std140) uniform cam_ubo { Cam cam; };\n\nvoid main() { vec4 x = cam.lights[0]; }\n".to_string();
+        let members = inline_block_members(&mut s, "cam_ubo", "cam").unwrap();
+        assert_eq!(members, ["view", "lights"]);
+        assert!(s.contains("layout(std140) uniform cam_ubo {\n    mat4x4 view;\n    vec4 lights[2];\n} cam;\n\nvoid main()"), "{s}");
+        assert!(s.starts_with("struct Cam {\n"), "the struct stays: {s}");
+        assert_eq!(inline_block_members(&mut "uniform b_ubo { Cam other; };\n".to_string(), "b_ubo", "cam"), None);
     }
 
     #[test]

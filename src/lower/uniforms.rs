@@ -402,6 +402,47 @@ fn element_storage(how: Stored, ty: &Ty) -> Stored {
 mod tests {
     use super::*;
 
+    /// A program of struct uniforms `(name, written @binding)`, each bound
+    /// in group 0, as resources in declaration order.
+    fn blocks(decls: &[(&str, Option<u32>)]) -> (sema::Program, Vec<Resource>) {
+        let mut p = sema::Program::default();
+        let mut resources = Vec::new();
+        let mut m = naga::Module::default();
+        let ty = m.types.insert(naga::Type { name: None, inner: naga::TypeInner::Scalar(naga::Scalar::F32) }, naga::Span::UNDEFINED);
+        let global = m.global_variables.append(naga::GlobalVariable { name: None, space: naga::AddressSpace::Uniform, binding: None, ty, init: None, memory_decorations: Default::default() }, naga::Span::UNDEFINED);
+        for (i, &(name, written)) in decls.iter().enumerate() {
+            p.globals.push(sema::Global { name: name.into(), ty: Ty::Struct(0), kind: sema::GlobalKind::Uniform { default: None }, span: Span::default(), bind: None });
+            if let Some(b) = written {
+                p.written_bindings.insert(i, b);
+            }
+            resources.push(Resource {
+                name: name.into(),
+                span: Span::default(),
+                kind: ResourceKind::Uniform { ty, dsl_type: "S".into(), loose: false },
+                global,
+                sampler_global: None,
+                group: 0,
+                binding: i as u32,
+                sampler_binding: None,
+                texture_unit: None,
+                default: None,
+            });
+        }
+        (p, resources)
+    }
+
+    #[test]
+    fn gl_block_points_follow_daslangs_binder() {
+        // Sorted by name, whatever the declaration order.
+        let (p, r) = blocks(&[("u_light", None), ("u_cam", None), ("u_mat", None)]);
+        assert_eq!(gl_block_points(&p, &r, GlUniforms::Plain), [Some(1), Some(0), Some(2)]);
+        // An `@binding` keeps its point; the others fill the free ones.
+        let (p, r) = blocks(&[("a", None), ("b", Some(0)), ("c", None)]);
+        assert_eq!(gl_block_points(&p, &r, GlUniforms::Plain), [Some(1), Some(0), Some(2)]);
+        let (p, r) = blocks(&[("a", Some(5)), ("b", None)]);
+        assert_eq!(gl_block_points(&p, &r, GlUniforms::Plain), [Some(5), Some(0)]);
+    }
+
     #[test]
     fn storage_of_types_whose_layouts_differ() {
         let f = Ty::Scalar(Scalar::Float);

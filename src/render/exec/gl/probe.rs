@@ -138,7 +138,7 @@ fn grid() -> (Vec<[f32; 2]>, Vec<u32>) {
 
 /// An 8x8 RGBA8 pattern, tinted by `tint`.
 fn pattern(tint: u8) -> Vec<u8> {
-    (0..64u32).flat_map(|i| [(i % 8) as u8 * 32, (i / 8) as u8 * 32 ^ tint, (((i % 8) ^ (i / 8)) as u8 * 32).wrapping_add(tint), 255]).collect()
+    (0..64u32).flat_map(|i| [(i % 8) as u8 * 32, ((i / 8) as u8 * 32) ^ tint, (((i % 8) ^ (i / 8)) as u8 * 32).wrapping_add(tint), 255]).collect()
 }
 
 /// The GL type of sampler uniform type `ty` the probe makes a texture
