@@ -292,7 +292,8 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
     let mut uniforms: Vec<_> = info.uniforms.iter().collect();
     uniforms.sort_by_key(|(h, _)| h.index());
     let mut renames: Vec<(Range<usize>, String)> = Vec::new();
-    // (naga's instance name, source name, global, block name, a uniform block)
+    // (naga's instance name, source name, global, block name, a uniform
+    // block of a struct)
     let mut instances: Vec<(String, String, usize, String, bool)> = Vec::new();
     if !uniforms.is_empty() {
         let idents = text::idents_containing(&out, &BLOCK);
@@ -313,7 +314,10 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
             if renames.iter().any(|(_, n)| *n == new) {
                 return Err(bug(format!("two uniform blocks would both be named `{new}`")));
             }
-            instances.push((instance.to_string(), source, original, new.clone(), !storage));
+            // Only a struct has members to declare (a test's WGSL module may
+            // hold a lone matrix in a uniform buffer).
+            let is_struct = matches!(em.module.types[em.module.global_variables[*handle].ty].inner, naga::TypeInner::Struct { .. });
+            instances.push((instance.to_string(), source, original, new.clone(), !storage && is_struct));
             renames.extend(at.map(|r| (r, new.clone())));
             names.blocks.insert(original, new);
         }

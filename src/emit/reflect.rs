@@ -455,12 +455,10 @@ pub fn build(
                     _ => Some(res_glsl.get(&ri).cloned().unwrap_or_else(|| super::glsl::block_name(&r.name))),
                 };
                 let mut members = layout.members.clone();
-                if let Some(block) = &glsl_block {
+                if let (Some(block), Some(glsl)) = (&glsl_block, block_members.get(&r.global.index())) {
                     // The names the GLSL declares the block's members by
-                    // (agreed by every stage), else the source names.
-                    let glsl = block_members.get(&r.global.index());
-                    for (i, m) in members.iter_mut().enumerate() {
-                        let name = glsl.and_then(|g| g.get(i)).unwrap_or(&m.name);
+                    // (agreed by every stage).
+                    for (m, name) in members.iter_mut().zip(glsl.iter()) {
                         m.glsl_name = Some([block.as_str(), ".", name].concat());
                     }
                 }
