@@ -698,6 +698,11 @@ fn write_uniforms(w: &mut Writer, r: &Reflection, g: &Gen) {
             Some(name) => w.line(&format!("pub const GLSL_BLOCK: Option<&str> = Some({});", str_lit(name))),
             None => w.line("pub const GLSL_BLOCK: Option<&str> = None;"),
         }
+        w.line("/// The GL binding point of GLSL_BLOCK, as daslang's GL binder assigns it (glUniformBlockBinding).");
+        match b.glsl_binding {
+            Some(point) => w.line(&format!("pub const GLSL_BINDING: Option<u32> = Some({point});")),
+            None => w.line("pub const GLSL_BINDING: Option<u32> = None;"),
+        }
         if let Some(words) = block_default(b) {
             w.line("/// The buffer's default contents (`var @uniform NAME : T = value`, zero where no default is");
             w.line("/// given): upload it before setting anything else.");
