@@ -333,8 +333,8 @@ impl FnBuilder<'_, '_> {
 /// with `@binding = N` takes point N, the others the lowest free points
 /// in that order. The loose buffers of `--gl-uniforms blocks` (which
 /// daslang does not have) follow, by group, at the next free points.
-/// Several blocks asking for one point keep the first; the later take
-/// free points.
+/// Of several blocks asking for one point (the same `@binding` in two
+/// `@set`s), the first by name has it; the others take free points.
 pub(super) fn gl_block_points(p: &sema::Program, resources: &[Resource], gl_uniforms: GlUniforms) -> Vec<Option<u32>> {
     let mut blocks: Vec<(&str, Option<u32>)> = p
         .globals
@@ -441,6 +441,9 @@ mod tests {
         assert_eq!(gl_block_points(&p, &r, GlUniforms::Plain), [Some(1), Some(0), Some(2)]);
         let (p, r) = blocks(&[("a", Some(5)), ("b", None)]);
         assert_eq!(gl_block_points(&p, &r, GlUniforms::Plain), [Some(5), Some(0)]);
+        // One `@binding` in two `@set`s: the first by name keeps it.
+        let (p, r) = blocks(&[("b", Some(0)), ("a", Some(0)), ("c", None)]);
+        assert_eq!(gl_block_points(&p, &r, GlUniforms::Plain), [Some(1), Some(0), Some(2)]);
     }
 
     #[test]
