@@ -698,6 +698,11 @@ fn write_uniforms(w: &mut Writer, r: &Reflection, g: &Gen) {
             Some(name) => w.line(&format!("pub const GLSL_BLOCK: Option<&str> = Some({});", str_lit(name))),
             None => w.line("pub const GLSL_BLOCK: Option<&str> = None;"),
         }
+        w.line("/// The GL binding point of GLSL_BLOCK, as daslang's GL binder assigns it (glUniformBlockBinding).");
+        match b.glsl_binding {
+            Some(point) => w.line(&format!("pub const GLSL_BINDING: Option<u32> = Some({point});")),
+            None => w.line("pub const GLSL_BINDING: Option<u32> = None;"),
+        }
         if let Some(words) = block_default(b) {
             w.line("/// The buffer's default contents (`var @uniform NAME : T = value`, zero where no default is");
             w.line("/// given): upload it before setting anything else.");
@@ -1107,12 +1112,12 @@ mod tests {
     }
 
     fn member(name: &str, ty: &str, offset: u32, size: u32, array_stride: Option<u32>) -> Member {
-        Member { name: name.into(), ty: ty.into(), offset, size, array_stride, matrix_stride: None, storage: None, default: None }
+        Member { name: name.into(), ty: ty.into(), offset, size, array_stride, matrix_stride: None, storage: None, glsl_name: None, default: None }
     }
 
     /// A loose buffer of these members.
     fn block(name: &str, ty: &str, size: u32, members: Vec<Member>) -> crate::emit::reflect_types::UniformBuffer {
-        crate::emit::reflect_types::UniformBuffer { name: name.into(), ty: ty.into(), loose: true, size, group: 0, binding: 9, glsl_block: None, members }
+        crate::emit::reflect_types::UniformBuffer { name: name.into(), ty: ty.into(), loose: true, size, group: 0, binding: 9, glsl_block: None, glsl_binding: None, members }
     }
 
     /// Layouts the checker never lets through still follow the manifest's

@@ -9,7 +9,15 @@
 //!   between the stages of one program and is meaningless to a host. Each is
 //!   renamed to `<name>_ubo` (`u_cam_ubo`, as daslang's generator names
 //!   it), identical in every stage; a rename that would collide with another
-//!   identifier is refused.
+//!   identifier is refused. naga declares the struct as the block's one
+//!   member (`{ Camera u_cam; }`); a uniform block is given the struct's
+//!   members and an instance name instead (`{ mat4 model; ... } u_cam;`),
+//!   as daslang's generator declares it, so that a stage links with the
+//!   generator's other stage (the GL lowering reads a whole struct member
+//!   by member, as an instance is no value).
+//! - varyings: naga's `smooth` is dropped (GLSL's default for floats;
+//!   daslang's generator writes none, and Mesa refuses a qualifier on one
+//!   side only); `flat` stays.
 //! - plain uniforms: the GL module holds a loose uniform as a private global
 //!   (`GlEntry::uniforms`), which naga declares `T name = zero;`; that line
 //!   becomes `uniform T name;`.
@@ -129,6 +137,9 @@ pub struct EntryNames {
     pub outputs: BTreeMap<u32, String>,
     /// Source name -> GLSL name of each storage image (GLSL 430 / ES 3.10).
     pub images: BTreeMap<String, String>,
+    /// Uniform global (handle index) -> the GLSL names of its block's
+    /// members, in order (`u_cam_ubo.model` is what a host queries).
+    pub block_members: BTreeMap<usize, Vec<String>>,
 }
 
 /// ES 3.00 types that have no default precision (GLSL ES 3.00 §4.5.4) and
@@ -281,7 +292,9 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
     let mut uniforms: Vec<_> = info.uniforms.iter().collect();
     uniforms.sort_by_key(|(h, _)| h.index());
     let mut renames: Vec<(Range<usize>, String)> = Vec::new();
-    let mut instances: Vec<(String, String)> = Vec::new();
+    // (naga's instance name, source name, global, block name, a uniform
+    // block of a struct)
+    let mut instances: Vec<(String, String, usize, String, bool)> = Vec::new();
     if !uniforms.is_empty() {
         let idents = text::idents_containing(&out, &BLOCK);
         for (handle, naga_block) in uniforms {
@@ -301,16 +314,24 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
             if renames.iter().any(|(_, n)| *n == new) {
                 return Err(bug(format!("two uniform blocks would both be named `{new}`")));
             }
-            instances.push((instance.to_string(), source));
+            // Only a struct has members to declare (a test's WGSL module may
+            // hold a lone matrix in a uniform buffer).
+            let is_struct = matches!(em.module.types[em.module.global_variables[*handle].ty].inner, naga::TypeInner::Struct { .. });
+            instances.push((instance.to_string(), source, original, new.clone(), !storage && is_struct));
             renames.extend(at.map(|r| (r, new.clone())));
             names.blocks.insert(original, new);
         }
     }
     text::apply_edits(&mut out, renames);
-    for (naga_name, source) in &instances {
-        restore_source_name(&mut out, naga_name, source);
+    for (naga_name, source, original, block, uniform) in &instances {
+        let name = restore_source_name(&mut out, naga_name, source);
+        // A uniform block declares its struct's members, with an instance
+        // name, as daslang's generator does: stages of both link.
+        if *uniform {
+            let members = inline_block_members(&mut out, block, &name).ok_or_else(|| bug(format!("cannot declare the members of uniform block `{block}`")))?;
+            names.block_members.insert(*original, members);
+        }
     }
-
 
     // Plain uniforms: `T name = zero;` becomes `uniform T name;`.
     for (handle, source) in em.uniforms {
@@ -427,6 +448,7 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
         drop_location_qualifier(&mut out, name).ok_or_else(|| bug(format!("no `layout(location = N)` declaration of `{name}` to drop")))?;
     }
 
+    drop_smooth_qualifiers(&mut out);
     if profile.is_es() {
         add_es_precision(&mut out).ok_or_else(|| bug("no `precision highp int;` line to extend".into()))?;
     }
@@ -590,6 +612,48 @@ fn trailing_instance(rest: &str) -> Option<&str> {
     (!name.is_empty() && name.bytes().all(|b| b.is_ascii_alphanumeric() || b == b'_')).then_some(name)
 }
 
+/// Rewrites naga's `uniform BLOCK { T instance; };` as `uniform BLOCK {
+/// <T's members> } instance;`, and returns the members' names. The
+/// members are copied from naga's `struct T` (which stays: other code may
+/// use the type), so they have the names naga reads them by; the body
+/// still reads `instance.member`.
+fn inline_block_members(src: &mut String, block: &str, instance: &str) -> Option<Vec<String>> {
+    let at = text::find_ident(src, block).find(|&at| src[..at].ends_with("uniform ") && src[at + block.len()..].starts_with(" { "))?;
+    let open = at + block.len() + 1;
+    let close = open + src[open..].find("; };")?;
+    let decl = &src[open + 2..close];
+    let (ty, name) = decl.split_once(' ')?;
+    if name != instance {
+        return None;
+    }
+    let head = ["struct ", ty, " {\n"].concat();
+    let body_start = memchr::memmem::find_iter(src.as_bytes(), head.as_bytes()).find(|&k| k == 0 || src.as_bytes()[k - 1] == b'\n')? + head.len();
+    let body_end = body_start + src[body_start..].find("\n};")? + 1;
+    let body = src[body_start..body_end].to_string();
+    let members = body.lines().filter_map(|l| l.trim().trim_end_matches(';').split('[').next()?.split_whitespace().last().map(str::to_string)).collect();
+    src.replace_range(open..close + "; };".len(), &["{\n", &body, "} ", instance, ";"].concat());
+    Some(members)
+}
+
+/// Drops naga's `smooth` from varying declarations: it is GLSL's default
+/// for float varyings, and daslang's generator writes none, so a stage
+/// of either links with a stage of the other (the presence of
+/// interpolation qualifiers must match). `flat` stays (integers need it).
+fn drop_smooth_qualifiers(src: &mut String) {
+    const SMOOTH: &str = "smooth ";
+    let edits: Vec<(Range<usize>, &str)> = memchr::memmem::find_iter(src.as_bytes(), SMOOTH.as_bytes())
+        .filter(|&k| {
+            // A global declaration: at the start of a line, or after its
+            // `layout(location = N) ` (GLSL 430 / ES 3.10).
+            let line = &src[src[..k].rfind('\n').map_or(0, |n| n + 1)..k];
+            let rest = &src[k + SMOOTH.len()..];
+            (line.is_empty() || (line.starts_with("layout(") && line.ends_with(") "))) && (rest.starts_with("in ") || rest.starts_with("out "))
+        })
+        .map(|k| (k..k + SMOOTH.len(), ""))
+        .collect();
+    text::apply_edits(src, edits);
+}
+
 /// Adds `precision highp T;` for every no-default-precision type the text
 /// uses, right after naga's `precision highp int;`.
 fn add_es_precision(src: &mut String) -> Option<()> {
@@ -627,6 +691,23 @@ mod tests {
         assert!(!is_location_name("_vs2fs_location1_", "_vs2fs_location", 1));
         assert!(!is_location_name("_p2vs_location1", "_vs2fs_location", 1));
         assert!(!is_location_name("_vs2fs_location", "_vs2fs_location", 0));
+    }
+
+    #[test]
+    fn smooth_goes_flat_stays() {
+        let mut s = "smooth out vec3 a;\nlayout(location = 1) smooth in vec2 b;\nflat out int c;\n    float smoothed = 0.0;\nvoid f() { smooth_x(); }\n".to_string();
+        drop_smooth_qualifiers(&mut s);
+        assert_eq!(s, "out vec3 a;\nlayout(location = 1) in vec2 b;\nflat out int c;\n    float smoothed = 0.0;\nvoid f() { smooth_x(); }\n");
+    }
+
+    #[test]
+    fn blocks_get_their_structs_members() {
+        let mut s = "struct Cam {\n    mat4x4 view;\n    vec4 lights[2];\n};\nlayout(std140) uniform cam_ubo { Cam cam; };\n\nvoid main() { vec4 x = cam.lights[0]; }\n".to_string();
+        let members = inline_block_members(&mut s, "cam_ubo", "cam").unwrap();
+        assert_eq!(members, ["view", "lights"]);
+        assert!(s.contains("layout(std140) uniform cam_ubo {\n    mat4x4 view;\n    vec4 lights[2];\n} cam;\n\nvoid main()"), "{s}");
+        assert!(s.starts_with("struct Cam {\n"), "the struct stays: {s}");
+        assert_eq!(inline_block_members(&mut "uniform b_ubo { Cam other; };\n".to_string(), "b_ubo", "cam"), None);
     }
 
     #[test]

@@ -192,6 +192,7 @@ fn member(module: &Module, layouter: &Layouter, name: String, ty_name: String, t
             _ => None,
         },
         storage: None,
+        glsl_name: None,
         default: None,
     }
 }
@@ -430,6 +431,14 @@ pub fn build(
     }
 
     let image_glsl: BTreeMap<&String, &String> = glsl_names.iter().flat_map(|n| n.images.iter()).collect();
+    let mut block_members: BTreeMap<usize, &Vec<String>> = BTreeMap::new();
+    for names in glsl_names {
+        for (global, members) in &names.block_members {
+            if block_members.insert(*global, members).is_some_and(|prev| prev != members) {
+                return Err(Diagnostic::bug(format!("a uniform block declares different members in different stages: {members:?}"), None));
+            }
+        }
+    }
     let mut uniform_buffers = Vec::new();
     let mut samplers = Vec::new();
     let mut storage_buffers = Vec::new();
@@ -445,6 +454,14 @@ pub fn build(
                     (true, GlUniforms::Plain) => None,
                     _ => Some(res_glsl.get(&ri).cloned().unwrap_or_else(|| super::glsl::block_name(&r.name))),
                 };
+                let mut members = layout.members.clone();
+                if let (Some(block), Some(glsl)) = (&glsl_block, block_members.get(&r.global.index())) {
+                    // The names the GLSL declares the block's members by
+                    // (agreed by every stage).
+                    for (m, name) in members.iter_mut().zip(glsl.iter()) {
+                        m.glsl_name = Some([block.as_str(), ".", name].concat());
+                    }
+                }
                 uniform_buffers.push(UniformBuffer {
                     name: r.name.clone(),
                     ty: dsl_type.clone(),
@@ -452,8 +469,9 @@ pub fn build(
                     size: layout.size,
                     group: r.group,
                     binding: r.binding,
+                    glsl_binding: glsl_block.as_ref().and_then(|_| iface.gl_block_points.get(ri).copied().flatten()),
                     glsl_block,
-                    members: layout.members.clone(),
+                    members,
                 });
             }
             ResourceKind::Sampler(kind) => {
@@ -679,6 +697,7 @@ fn storage_members(module: &Module, ty: naga::Handle<naga::Type>) -> (Vec<Member
             array_stride,
             matrix_stride,
             storage: None,
+            glsl_name: None,
             default: None,
         });
     }

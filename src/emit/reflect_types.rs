@@ -209,6 +209,11 @@ pub struct UniformBuffer {
     /// loose buffer has one only with `--gl-uniforms blocks`.
     #[cfg_attr(feature = "deserialize", serde(default))]
     pub glsl_block: Option<String>,
+    /// The GL binding point of `glsl_block` (glUniformBlockBinding,
+    /// glBindBufferRange), as daslang's GL binder assigns it: struct
+    /// uniforms by name, an `@binding = N` kept (docs/targets.md).
+    #[cfg_attr(feature = "deserialize", serde(default))]
+    pub glsl_binding: Option<u32>,
     /// Members with byte offsets.
     pub members: Vec<Member>,
 }
@@ -269,6 +274,11 @@ pub struct Member {
     /// the first components of a `float4`), `float4[C]` for `floatCx2`.
     #[cfg_attr(feature = "deserialize", serde(default))]
     pub storage: Option<String>,
+    /// A uniform block member's name for a GL host
+    /// (`glGetUniformIndices`): `<glsl_block>.<member>`, the block being
+    /// declared with an instance name. `None` elsewhere.
+    #[cfg_attr(feature = "deserialize", serde(default))]
+    pub glsl_name: Option<String>,
     /// The member's default contents, from `var @uniform x : T = value`:
     /// its `size` bytes as little-endian 32-bit words (floats by their
     /// IEEE-754 bits, padding zero), to copy to `offset` before the host
@@ -402,6 +412,7 @@ serialize_struct!(UniformBuffer {
     "group": group,
     "binding": binding,
     "glsl_block": glsl_block?,
+    "glsl_binding": glsl_binding?,
     "members": members,
 });
 
@@ -422,6 +433,7 @@ serialize_struct!(Member {
     "array_stride": array_stride?,
     "matrix_stride": matrix_stride?,
     "storage": storage?,
+    "glsl_name": glsl_name?,
     "default": default?,
 });
 

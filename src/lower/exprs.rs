@@ -105,6 +105,9 @@ impl FnBuilder<'_, '_> {
             },
             ExprKind::Global(_) | ExprKind::Field(..) | ExprKind::Index(..) if self.is_place(e) => {
                 let p = self.pointer(e, block).expect("is_place checked");
+                if self.is_gl_uniform_block(e) {
+                    return self.load_block_members(p, &e.ty, s);
+                }
                 self.append(E::Load { pointer: p }, s)
             }
             ExprKind::Swizzle(base, comps) => {
@@ -213,6 +216,31 @@ impl FnBuilder<'_, '_> {
                 self.append_plain(E::ZeroValue(ty), s)
             }
         }
+    }
+
+    /// Whether `e` is a whole struct uniform of a GL module. GLSL declares
+    /// it as a block with an instance name (`emit::glsl`), which is no
+    /// value: it is read member by member.
+    fn is_gl_uniform_block(&self, e: &Expr) -> bool {
+        let ExprKind::Global(g) = e.kind else { return false };
+        if self.m.flavor != Flavor::Gl || !matches!(e.ty, Ty::Struct(_)) || self.global_slot(g).is_some() {
+            return false;
+        }
+        matches!(self.m.globals[g], GlobalSlot::Var(h) if self.m.module.global_variables[h].space == naga::AddressSpace::Uniform)
+    }
+
+    /// The struct at `ptr` composed from a load of each member.
+    fn load_block_members(&mut self, ptr: Handle<E>, ty: &Ty, s: Span) -> Handle<E> {
+        let Ty::Struct(id) = *ty else { unreachable!("checked by is_gl_uniform_block") };
+        let count = self.m.p.structs[id].fields.len() as u32;
+        let members = (0..count)
+            .map(|i| {
+                let member = self.append(E::AccessIndex { base: ptr, index: i }, s);
+                self.append(E::Load { pointer: member }, s)
+            })
+            .collect();
+        let t = self.m.ty(ty);
+        self.append(E::Compose { ty: t, components: members }, s)
     }
 
     pub(super) fn is_place(&self, e: &Expr) -> bool {

@@ -176,6 +176,9 @@ pub struct Interface {
     /// `(vertex, fragment)` indices into `entry_points` of the entry
     /// points that form one program (`sema::Link`).
     pub links: Vec<(usize, usize)>,
+    /// The GL uniform-buffer binding point of each resource GLSL declares
+    /// a uniform block for, by resource index (`uniforms::gl_block_points`).
+    pub gl_block_points: Vec<Option<u32>>,
 }
 
 /// The GL module of one entry point (its only entry point), validated.

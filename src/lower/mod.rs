@@ -69,6 +69,7 @@ pub fn lower(program: &sema::Program, options: impl Into<LowerOptions>) -> Resul
     let reach = Reach::of(program);
     let (gpu, gpu_info, mut interface) = gpu(program, options.conventions, &reach)?;
     interface.gl_uniforms = options.gl_uniforms;
+    interface.gl_block_points = uniforms::gl_block_points(program, &interface.resources, options.gl_uniforms);
     let gl = (0..program.entry_points.len()).map(|i| gl_entry(program, i, options.gl_uniforms, &reach)).collect::<Result<_, _>>()?;
     Ok(Lowered { gl, gpu, gpu_info, interface })
 }
@@ -146,6 +147,7 @@ fn build(
         loose: std::mem::take(&mut m.loose),
         entry_points: entries,
         links,
+        gl_block_points: Vec::new(),
     };
     Ok((m.module, interface, m.plain_uniforms))
 }

@@ -326,6 +326,65 @@ impl FnBuilder<'_, '_> {
     }
 }
 
+/// The GL binding point of each uniform block GLSL declares, by resource
+/// index, as daslang's GL binder (dasOpenGL) assigns them, so that a host
+/// written for daslang binds umbrac's blocks at the same points: every
+/// struct `@uniform` of the program, used or not, sorted by name; one
+/// with `@binding = N` takes point N, the others the lowest free points
+/// in that order. The loose buffers of `--gl-uniforms blocks` (which
+/// daslang does not have) follow, by group, at the next free points.
+/// Of several blocks asking for one point (the same `@binding` in two
+/// `@set`s), the first by name has it; the others take free points.
+pub(super) fn gl_block_points(p: &sema::Program, resources: &[Resource], gl_uniforms: GlUniforms) -> Vec<Option<u32>> {
+    let mut blocks: Vec<(&str, Option<u32>)> = p
+        .globals
+        .iter()
+        .enumerate()
+        .filter(|(_, g)| matches!(g.kind, sema::GlobalKind::Uniform { .. }) && matches!(g.ty, Ty::Struct(_)))
+        .map(|(id, g)| (g.name.as_str(), p.written_bindings.get(&id).copied()))
+        .collect();
+    blocks.sort();
+    let mut taken = std::collections::BTreeSet::new();
+    let mut point: Vec<(&str, u32)> = Vec::new();
+    for &(name, written) in &blocks {
+        if let Some(n) = written.filter(|n| taken.insert(*n)) {
+            point.push((name, n));
+        }
+    }
+    let mut next = 0;
+    let mut free = |taken: &mut std::collections::BTreeSet<u32>| {
+        while !taken.insert(next) {
+            next += 1;
+        }
+        next
+    };
+    for &(name, _) in &blocks {
+        if !point.iter().any(|(n, _)| *n == name) {
+            let n = free(&mut taken);
+            point.push((name, n));
+        }
+    }
+    let mut loose: Vec<(u32, usize)> = Vec::new();
+    let out = resources
+        .iter()
+        .enumerate()
+        .map(|(i, r)| match r.kind {
+            ResourceKind::Uniform { loose: false, .. } => point.iter().find(|(n, _)| *n == r.name).map(|&(_, n)| n),
+            ResourceKind::Uniform { loose: true, .. } if gl_uniforms == GlUniforms::Blocks => {
+                loose.push((r.group, i));
+                None
+            }
+            _ => None,
+        })
+        .collect::<Vec<_>>();
+    let mut out = out;
+    loose.sort();
+    for (_, i) in loose {
+        out[i] = Some(free(&mut taken));
+    }
+    out
+}
+
 /// How an element (or component) of a value stored as `how` is stored,
 /// the element being of type `ty`.
 fn element_storage(how: Stored, ty: &Ty) -> Stored {
@@ -342,6 +401,50 @@ fn element_storage(how: Stored, ty: &Ty) -> Stored {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A program of struct uniforms `(name, written @binding)`, each bound
+    /// in group 0, as resources in declaration order.
+    fn blocks(decls: &[(&str, Option<u32>)]) -> (sema::Program, Vec<Resource>) {
+        let mut p = sema::Program::default();
+        let mut resources = Vec::new();
+        let mut m = naga::Module::default();
+        let ty = m.types.insert(naga::Type { name: None, inner: naga::TypeInner::Scalar(naga::Scalar::F32) }, naga::Span::UNDEFINED);
+        let global = m.global_variables.append(naga::GlobalVariable { name: None, space: naga::AddressSpace::Uniform, binding: None, ty, init: None, memory_decorations: Default::default() }, naga::Span::UNDEFINED);
+        for (i, &(name, written)) in decls.iter().enumerate() {
+            p.globals.push(sema::Global { name: name.into(), ty: Ty::Struct(0), kind: sema::GlobalKind::Uniform { default: None }, span: Span::default(), bind: None });
+            if let Some(b) = written {
+                p.written_bindings.insert(i, b);
+            }
+            resources.push(Resource {
+                name: name.into(),
+                span: Span::default(),
+                kind: ResourceKind::Uniform { ty, dsl_type: "S".into(), loose: false },
+                global,
+                sampler_global: None,
+                group: 0,
+                binding: i as u32,
+                sampler_binding: None,
+                texture_unit: None,
+                default: None,
+            });
+        }
+        (p, resources)
+    }
+
+    #[test]
+    fn gl_block_points_follow_daslangs_binder() {
+        // Sorted by name, whatever the declaration order.
+        let (p, r) = blocks(&[("u_light", None), ("u_cam", None), ("u_mat", None)]);
+        assert_eq!(gl_block_points(&p, &r, GlUniforms::Plain), [Some(1), Some(0), Some(2)]);
+        // An `@binding` keeps its point; the others fill the free ones.
+        let (p, r) = blocks(&[("a", None), ("b", Some(0)), ("c", None)]);
+        assert_eq!(gl_block_points(&p, &r, GlUniforms::Plain), [Some(1), Some(0), Some(2)]);
+        let (p, r) = blocks(&[("a", Some(5)), ("b", None)]);
+        assert_eq!(gl_block_points(&p, &r, GlUniforms::Plain), [Some(5), Some(0)]);
+        // One `@binding` in two `@set`s: the first by name keeps it.
+        let (p, r) = blocks(&[("b", Some(0)), ("a", Some(0)), ("c", None)]);
+        assert_eq!(gl_block_points(&p, &r, GlUniforms::Plain), [Some(1), Some(0), Some(2)]);
+    }
 
     #[test]
     fn storage_of_types_whose_layouts_differ() {

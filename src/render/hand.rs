@@ -113,6 +113,7 @@ pub fn reflection() -> Reflection {
                 array_stride: None,
                 matrix_stride: (ty == "float4x4").then_some(16),
                 storage: None,
+                glsl_name: None,
                 default: None,
             };
             offset += size;
@@ -127,6 +128,7 @@ pub fn reflection() -> Reflection {
         group: 0,
         binding: 0,
         glsl_block: None,
+        glsl_binding: None,
         members,
     }];
     let uniforms: Vec<Uniform> = UNIFORMS

@@ -30,6 +30,8 @@ pub struct Program {
     /// (`Some(member)`). Lowering gives them atomic types, which plain
     /// reads and writes of them load and store.
     pub atomics: std::collections::BTreeSet<(GlobalId, Option<u32>)>,
+    /// The `@binding = N` written on a global, where one is.
+    pub written_bindings: std::collections::BTreeMap<GlobalId, u32>,
 }
 
 /// A vertex entry point and a fragment entry point of one program: they

@@ -134,10 +134,12 @@ fn gl_uniform_form_and_limits_on_the_command_line() {
     let o = umbrac(&["compile", shader.to_str().unwrap(), "-o", "blocks", "--gl-uniforms", "blocks", "--target", "glsl330"], d.path());
     assert!(o.status.success(), "{}", text(&o.stderr));
     let vs = std::fs::read_to_string(d.path().join("blocks/main_vs.330.vert")).unwrap();
-    assert!(vs.contains("layout(std140) uniform uniforms_ubo { Uniforms uniforms; };") && !vs.contains("uniform mat4x4 u_model;"), "{vs}");
+    assert!(vs.contains("layout(std140) uniform uniforms_ubo {\n    mat4x4 u_light_vp;\n") && vs.contains("} uniforms;") && !vs.contains("uniform mat4x4 u_model;"), "{vs}");
     let manifest: serde_json::Value = serde_json::from_str(&std::fs::read_to_string(d.path().join("blocks/shadow.reflect.json")).unwrap()).unwrap();
     assert_eq!(manifest["gl_uniforms"], "blocks");
     assert_eq!(manifest["uniform_buffers"][0]["glsl_block"], "uniforms_ubo");
+    assert_eq!(manifest["uniform_buffers"][0]["glsl_binding"], 0);
+    assert_eq!(manifest["uniform_buffers"][0]["members"][0]["glsl_name"], "uniforms_ubo.u_light_vp");
 
     let o = umbrac(&["compile", shader.to_str().unwrap(), "-o", "x", "--limit", "uniform-blocks=16", "--limit", "texture-units=32"], d.path());
     assert!(o.status.success(), "{}", text(&o.stderr));

@@ -546,3 +546,40 @@ fn reused_writers_and_validators_leave_nothing_behind() {
         }
     }
 }
+
+/// Struct uniforms are GLSL blocks that declare their members with an
+/// instance name (as daslang's generator writes them), at the GL binding
+/// points daslang's binder gives them (sorted by name, `@binding` kept);
+/// the manifest says the member names a host queries. A whole-struct read
+/// is built from the members, in both `--gl-uniforms` modes.
+#[test]
+fn struct_uniform_blocks_as_daslang_declares_them() {
+    let src = "struct Light {\n    color : float4\n}\nstruct Cam {\n    view : float4x4\n    lights : Light[2]\n    key : Light\n}\n\
+               var @uniform @binding = 3 z_cam : Cam\nvar @uniform m_cam : Cam\nvar @uniform a_cam : Cam\nvar @uniform u_k : float\n\
+               var @in @location = 0 a_pos : float3\nvar @inout v_c : float4\nvar @out f_color : float4\n\
+               def lit(c : Cam) : float4 {\n    return c.key.color + c.lights[1].color\n}\n\
+               [vertex_program]\ndef vs {\n    let c = m_cam\n    v_c = lit(a_cam) * u_k\n    gl_Position = z_cam.view * c.view * float4(a_pos, 1.0)\n}\n\
+               [fragment_program]\ndef fs {\n    f_color = v_c + lit(z_cam)\n}\n";
+    for gl_uniforms in [umbrac::GlUniforms::Plain, umbrac::GlUniforms::Blocks] {
+        let c = umbrac::compile_source("blocks.das", src, &umbrac::Options { gl_uniforms, ..Default::default() });
+        let compiled = c.result.as_ref().unwrap_or_else(|| panic!("{}", c.render_diagnostics()));
+        let r = &compiled.reflection;
+        let point = |name: &str| r.uniform_buffers.iter().find(|b| b.name == name).and_then(|b| b.glsl_binding);
+        // a_cam, m_cam by name at 0 and 1; z_cam keeps its @binding.
+        assert_eq!([point("a_cam"), point("m_cam"), point("z_cam")], [Some(0), Some(1), Some(3)]);
+        let z = r.uniform_buffers.iter().find(|b| b.name == "z_cam").unwrap();
+        let names: Vec<_> = z.members.iter().map(|m| m.glsl_name.as_deref().unwrap()).collect();
+        assert_eq!(names, ["z_cam_ubo.view", "z_cam_ubo.lights", "z_cam_ubo.key"]);
+        let vs = compiled.artifact("vs.330.vert").unwrap().text().into_owned();
+        assert!(vs.contains("uniform m_cam_ubo {\n    mat4x4 view;\n    Light lights[2];\n    Light key;\n} m_cam;"), "{vs}");
+        assert!(!vs.contains("{ Cam"), "{vs}");
+        match gl_uniforms {
+            umbrac::GlUniforms::Plain => assert!(vs.contains("uniform float u_k;") && point("uniforms").is_none(), "{vs}"),
+            umbrac::GlUniforms::Blocks => {
+                // The loose buffer after the struct uniforms' points.
+                assert_eq!(point("uniforms"), Some(2));
+                assert!(vs.contains("uniform uniforms_ubo {\n    float u_k;\n} uniforms;"), "{vs}");
+            }
+        }
+    }
+}

@@ -47,6 +47,7 @@ fn snippets() -> BTreeMap<&'static str, String> {
     add("uniform-scalar-array", frag("var @uniform u_w : float[4]\nvar @uniform u_v : float2[2]\nvar @uniform u_i : int", "    f_color = float4(u_w[u_i], u_w[0], u_v[u_i])"));
     add("uniform-bool", frag("var @uniform u_b : bool\nvar @uniform u_b2 : bool2", "    f_color = float4(u_b ? 1.0 : 0.0, u_b2.y ? 1.0 : 0.0, 0.0, 1.0)"));
     add("uniform-float2x2", frag("var @uniform u_m : float2x2\nvar @uniform u_n : float3x2", "    f_color = float4(u_m[0], u_n[2])"));
+    add("uniform-struct-whole", frag("struct F {\n    c : float4\n}\nstruct S {\n    m : float3x3\n    f : F[2]\n    g : F\n}\nvar @uniform u_s : S\ndef tint(s : S) : float4 {\n    return s.g.c + s.f[1].c\n}", "    let s = u_s\n    f_color = tint(u_s) + float4(s.m * s.f[0].c.xyz, 1.0)"));
     add("uniform-struct-scalar-array", frag("struct S {\n    w : float[4]\n}\nvar @uniform u_s : S", "    f_color = float4(u_s.w[0])"));
     add("uniform-struct-bool", frag("struct S {\n    b : bool\n}\nvar @uniform u_s : S", "    f_color = float4(u_s.b ? 1.0 : 0.0)"));
     add("uniform-struct-float2x2", frag("struct S {\n    m : float2x2\n}\nvar @uniform u_s : S", "    f_color = float4(u_s.m[0], u_s.m[1])"));

@@ -43,25 +43,34 @@ fn every_tutorial_compiles_to_every_target_and_validates() {
     eprintln!("{} tutorials, {runs} validator runs", files.len());
 }
 
-/// What a GL host binds in one GLSL file: uniforms, uniform blocks,
-/// attributes / varyings / fragment outputs, each with its type and
-/// `layout(location = N)` (or none).
+/// What a GL host binds in one GLSL file, spelled so that two files
+/// whose stages would link with each other's give the same set: uniforms,
+/// uniform blocks (name, each member's type and name, instance name),
+/// attributes / varyings / fragment outputs, each with its type, its
+/// interpolation qualifiers (`smooth` said or not: a linker compares
+/// their presence) and `layout(location = N)` (or none). Precision
+/// qualifiers and the `mat4x4` / `mat4` spellings are not told apart.
 fn host_declarations(glsl: &str) -> std::collections::BTreeSet<String> {
     let mut out = std::collections::BTreeSet::new();
     let text: String = glsl.lines().map(|l| l.split("//").next().unwrap_or("")).collect::<Vec<_>>().join("\n");
+    let words = |decl: &str| -> Vec<String> {
+        decl.split_whitespace().filter(|w| !matches!(*w, "highp" | "mediump" | "lowp")).map(|w| glsl_type(w).to_string()).collect()
+    };
     let mut rest = text.as_str();
     let mut top = String::new();
-    // Uniform blocks: `[layout(std140)] uniform NAME { ... } [instance];`.
+    // Uniform blocks: `[layout(std140)] uniform NAME { members } [instance];`.
     while let Some(at) = rest.find("uniform ") {
         let after = &rest[at + "uniform ".len()..];
         let name: String = after.chars().take_while(|c| c.is_alphanumeric() || *c == '_').collect();
         let tail = after[name.len()..].trim_start();
         if !name.is_empty() && tail.starts_with('{') {
-            let close = tail.find("};").or_else(|| tail.find('}')).expect("a block ends");
-            out.insert(format!("block {name}"));
+            let close = tail.find('}').expect("a block ends");
+            let members: Vec<String> = tail[1..close].split(';').map(|m| words(m).join(" ")).filter(|m| !m.is_empty()).collect();
+            let end = tail[close..].find(';').map_or(tail.len(), |k| close + k);
+            let instance = tail[close + 1..end].trim();
+            out.insert(format!("block {name} {{ {} }} {instance}", members.join("; ")));
             top.push_str(&rest[..at]);
-            rest = &tail[close..];
-            rest = &rest[rest.find(';').map_or(rest.len(), |k| k + 1)..];
+            rest = &tail[(end + 1).min(tail.len())..];
         } else {
             top.push_str(&rest[..at + "uniform ".len()]);
             rest = after;
@@ -69,36 +78,35 @@ fn host_declarations(glsl: &str) -> std::collections::BTreeSet<String> {
     }
     top.push_str(rest);
     for line in top.lines().filter(|l| !l.starts_with([' ', '\t'])) {
-        let mut words: Vec<&str> = line.trim().trim_end_matches(';').split_whitespace().collect();
+        let line = line.trim().trim_end_matches(';');
         let mut location = "none".to_string();
-        if let Some(first) = words.first().copied() {
-            if first.starts_with("layout(") {
-                // `layout(location=0)` or `layout(location = 0)`.
-                let mut l = String::new();
-                while let Some(w) = words.first().copied() {
-                    l.push_str(w);
-                    words.remove(0);
-                    if w.ends_with(')') {
-                        break;
-                    }
-                }
-                location = l.chars().filter(|c| c.is_ascii_digit()).collect();
-            }
+        let mut decl = line;
+        if line.starts_with("layout(") {
+            // `layout(location=0)` or `layout(location = 0)`.
+            let close = line.find(')').expect("a layout closes");
+            location = line[..close].chars().filter(|c| c.is_ascii_digit()).collect();
+            decl = &line[close + 1..];
         }
-        words.retain(|w| !matches!(*w, "flat" | "smooth" | "noperspective" | "centroid" | "highp" | "mediump" | "lowp"));
-        let [storage, ty, name] = words[..] else { continue };
-        if !matches!(storage, "uniform" | "in" | "out") || name.contains('(') {
+        let w = words(decl);
+        let (qualifiers, rest) = w.split_at(w.iter().position(|x| matches!(x.as_str(), "uniform" | "in" | "out")).unwrap_or(w.len()));
+        let [storage, ty, name] = rest else { continue };
+        if name.contains('(') || qualifiers.iter().any(|q| !matches!(q.as_str(), "flat" | "smooth" | "noperspective" | "centroid")) {
             continue;
         }
-        let ty = match ty {
-            "mat4x4" => "mat4",
-            "mat3x3" => "mat3",
-            "mat2x2" => "mat2",
-            t => t,
-        };
-        out.insert(format!("{storage} {ty} {name} location {location}"));
+        let q = if qualifiers.is_empty() { String::new() } else { [qualifiers.join(" "), " ".into()].concat() };
+        out.insert(format!("{q}{storage} {ty} {name} location {location}"));
     }
     out
+}
+
+/// One GLSL type spelling for the two that name the same type.
+fn glsl_type(w: &str) -> &str {
+    match w {
+        "mat4x4" => "mat4",
+        "mat3x3" => "mat3",
+        "mat2x2" => "mat2",
+        t => t,
+    }
 }
 
 /// For every program of the twelve tutorials, the declarations a GL host
@@ -143,10 +151,18 @@ fn gl_interfaces_match_daslangs_generator() {
 
 #[test]
 fn host_declarations_read_both_spellings() {
-    let theirs = "uniform mat4 u_model;\n\nlayout(location=0) in vec3 a_pos;\n\nlayout(std140) uniform u_cam_ubo\n{\n    mat4 model;\n} u_cam;\n\nout vec3 v_n;\nvoid main()\n{\n\tvec3 x = v_n;\n}\n";
-    let ours = "layout(std140) uniform u_cam_ubo { Camera u_cam; };\n\nuniform mat4x4 u_model;\n\nlayout(location = 0) in vec3 a_pos;\nsmooth out vec3 v_n;\n\nvoid main() {\n    vec3 x = v_n;\n}\n";
+    let theirs = "uniform mat4 u_model;\n\nlayout(location=0) in vec3 a_pos;\n\nlayout(std140) uniform u_cam_ubo\n{\n    mat4 model;\n    vec3 pos;\n} u_cam;\n\nout vec3 v_n;\nflat out int v_id;\nvoid main()\n{\n\tvec3 x = v_n;\n}\n";
+    let ours = "layout(std140) uniform u_cam_ubo {\n    mat4x4 model;\n    vec3 pos;\n} u_cam;\n\nuniform highp mat4x4 u_model;\n\nlayout(location = 0) in vec3 a_pos;\nout vec3 v_n;\nflat out int v_id;\n\nvoid main() {\n    vec3 x = v_n;\n}\n";
     assert_eq!(host_declarations(theirs), host_declarations(ours));
     let d = host_declarations(ours);
-    assert!(d.contains("in vec3 a_pos location 0") && d.contains("block u_cam_ubo") && d.contains("uniform mat4 u_model location none"), "{d:?}");
+    assert!(d.contains("in vec3 a_pos location 0") && d.contains("block u_cam_ubo { mat4 model; vec3 pos } u_cam") && d.contains("uniform mat4 u_model location none"), "{d:?}");
+    assert!(d.contains("flat out int v_id location none"), "{d:?}");
     assert_ne!(host_declarations("in vec3 a_pos;\n"), host_declarations("layout(location = 0) in vec3 a_pos;\n"));
+    // What keeps two stages from linking is told apart: an interpolation
+    // qualifier on one side only, a block of other members or without an
+    // instance name.
+    assert_ne!(host_declarations("out vec3 v_n;\n"), host_declarations("smooth out vec3 v_n;\n"));
+    let wrapped = "layout(std140) uniform u_cam_ubo { Camera u_cam; };\n";
+    assert_ne!(host_declarations(wrapped), host_declarations("layout(std140) uniform u_cam_ubo {\n    mat4 model;\n    vec3 pos;\n} u_cam;\n"));
+    assert!(host_declarations(wrapped).contains("block u_cam_ubo { Camera u_cam } "), "{:?}", host_declarations(wrapped));
 }

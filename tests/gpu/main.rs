@@ -19,6 +19,8 @@ mod consumers;
 mod device_limits;
 #[cfg(feature = "render")]
 mod differential;
+#[cfg(feature = "gl")]
+mod gl_interop;
 #[cfg(feature = "render")]
 mod language_f;
 mod features_l;

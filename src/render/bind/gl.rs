@@ -77,8 +77,9 @@ pub struct GlDraw {
     pub uniforms: Vec<(String, Value)>,
 }
 
-/// A pass's program as the manifest binds it. Uniform blocks get binding
-/// point = their index in the manifest; a loose buffer GLSL declares no
+/// A pass's program as the manifest binds it. Uniform blocks get the
+/// manifest's binding point (`glsl_binding`; a manifest without one: the
+/// block's index); a loose buffer GLSL declares no
 /// block for is its plain uniforms, set by name. Attributes are bound to
 /// the manifest's locations before linking (`glBindAttribLocation`; the
 /// GLSL declares one only where the source gives it), and so are the
@@ -90,7 +91,8 @@ pub fn program(r: &Reflection, fit: &PassFit) -> GlProgram {
         .filter_map(|&(b, _)| {
             let block = &r.uniform_buffers[b];
             let glsl_name = block.glsl_block.clone()?;
-            Some(GlBlock { glsl_name, point: b as u32, layout: super::manifest_layout(block) })
+            let point = block.glsl_binding.unwrap_or(b as u32);
+            Some(GlBlock { glsl_name, point, layout: super::manifest_layout(block) })
         })
         .collect();
     let uniforms = fit

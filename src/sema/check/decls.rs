@@ -594,6 +594,9 @@ impl<'a, 'd> Checker<'a, 'd> {
         // is checked per target (`emit::limits`); 1000 bindings per group.
         let set = checked(set, "set", crate::sema::limits::MAX_SETS);
         let binding = checked(binding, "binding", 1000);
+        if let Some((b, _)) = binding {
+            self.out.written_bindings.insert(self.out.globals.len(), b);
+        }
         if set.is_some() || binding.is_some() {
             self.bind_written.insert(self.out.globals.len(), (set, binding));
         }

@@ -7,7 +7,7 @@ struct arrays_vs_out {
 const int RING[4] = int[4](3, 1, 4, 1);
 
 layout(location = 0) in vec2 a_pos;
-smooth out vec2 v_uv;
+out vec2 v_uv;
 flat out int v_id;
 
 void main() {

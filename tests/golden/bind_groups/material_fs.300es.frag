@@ -10,7 +10,7 @@ uniform vec4 u_tint;
 
 uniform highp sampler2D albedo;
 
-smooth in vec2 v_uv;
+in vec2 v_uv;
 out vec4 f_color;
 
 void main() {

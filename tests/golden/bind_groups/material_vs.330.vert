@@ -9,7 +9,7 @@ uniform mat4x4 u_model;
 
 layout(location = 0) in vec3 a_pos;
 layout(location = 1) in vec2 a_uv;
-smooth out vec2 v_uv;
+out vec2 v_uv;
 
 void main() {
     vec3 in_a_pos = a_pos;

@@ -12,7 +12,7 @@ uniform vec2 u_direction;
 
 uniform highp sampler2D bloom_src;
 
-smooth in vec2 v_uv;
+in vec2 v_uv;
 out vec4 f_color;
 
 void main() {

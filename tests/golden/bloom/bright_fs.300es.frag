@@ -10,7 +10,7 @@ uniform vec4 u_threshold;
 
 uniform highp sampler2D hdr_scene;
 
-smooth in vec2 v_uv;
+in vec2 v_uv;
 out vec4 f_color;
 
 float luminance(vec3 c) {

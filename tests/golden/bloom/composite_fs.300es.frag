@@ -14,7 +14,7 @@ uniform highp sampler2D hdr_scene;
 
 uniform highp sampler2D bloom_src;
 
-smooth in vec2 v_uv;
+in vec2 v_uv;
 out vec4 f_color;
 
 vec3 aces(vec3 x) {

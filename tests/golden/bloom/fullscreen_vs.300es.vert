@@ -7,7 +7,7 @@ struct fullscreen_vs_out {
     vec4 gen_gl_Position;
     vec2 v_uv;
 };
-smooth out vec2 v_uv;
+out vec2 v_uv;
 
 void main() {
     uint VertexID = uint(gl_VertexID);

@@ -22,8 +22,8 @@ uniform sampler2DShadow cascade_maps_1;
 
 uniform sampler2DShadow cascade_maps_2;
 
-smooth in vec3 v_world_pos;
-smooth in vec3 v_world_normal;
+in vec3 v_world_pos;
+in vec3 v_world_normal;
 out vec4 f_FragColor;
 
 vec3 to_map(vec4 clip) {

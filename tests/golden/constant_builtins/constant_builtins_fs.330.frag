@@ -10,7 +10,7 @@ const vec3 SKY = vec3(0.35500002, 0.39499998, 0.6375);
 const float GOLDEN = 2.3999631;
 const uint WHITE = 4294967295u;
 
-smooth in vec3 v_dir;
+in vec3 v_dir;
 out vec4 f_color;
 
 void main() {

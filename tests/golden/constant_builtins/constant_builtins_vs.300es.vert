@@ -10,7 +10,7 @@ struct constant_builtins_vs_out {
 const mat3x3 TILT = mat3x3(vec3(0.5, 0.0, 0.0), vec3(0.0, 0.5, 0.0), vec3(0.0, 0.0, 0.5));
 
 layout(location = 0) in vec3 a_pos;
-smooth out vec3 v_dir;
+out vec3 v_dir;
 
 void main() {
     vec3 in_a_pos = a_pos;

@@ -10,7 +10,7 @@ uniform int u_steps;
 
 uniform float u_threshold;
 
-smooth in vec2 v_uv;
+in vec2 v_uv;
 out vec4 f_color;
 
 int band(float x) {

@@ -5,9 +5,9 @@ struct entry_io_fs_out {
 };
 float io_v_shade = 0.0;
 
-smooth in vec2 v_uv;
-smooth in vec3 v_tint;
-smooth in float v_shade;
+in vec2 v_uv;
+in vec3 v_tint;
+in float v_shade;
 layout(location = 0) out vec4 f_color;
 layout(location = 1) out vec4 f_extra;
 

@@ -15,9 +15,9 @@ int gen_gl_VertexID = 0;
 
 layout(location = 0) in vec3 a_pos;
 layout(location = 1) in vec2 a_uv;
-smooth out vec2 v_uv;
-smooth out vec3 v_tint;
-smooth out float v_shade;
+out vec2 v_uv;
+out vec3 v_tint;
+out float v_shade;
 
 void set_tint(float k) {
     io_v_tint = vec3(k, (1.0 - k), 0.5);

@@ -10,7 +10,7 @@ const float WEIGHTS[4] = float[4](0.25, 0.5, 0.75, 1.0);
 
 uniform int u_mode;
 
-smooth in vec2 v_uv;
+in vec2 v_uv;
 out vec4 f_color;
 
 float attenuate(uint f, float d) {

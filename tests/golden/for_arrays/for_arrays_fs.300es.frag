@@ -17,7 +17,7 @@ uniform Light u_lights[4];
 
 uniform int u_count;
 
-smooth in vec2 v_uv;
+in vec2 v_uv;
 out vec4 f_color;
 
 void main() {

@@ -8,7 +8,7 @@ struct functions_fs_out {
 };
 uniform float u_time;
 
-smooth in vec2 v_uv;
+in vec2 v_uv;
 out vec4 f_color;
 
 float wave(float x, float t) {

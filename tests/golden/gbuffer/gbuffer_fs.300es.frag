@@ -20,9 +20,19 @@ struct gbuffer_fs_out {
     vec4 g_normal;
     vec4 g_position;
 };
-layout(std140) uniform frame_ubo { Frame frame; };
+layout(std140) uniform frame_ubo {
+    mat4x4 view;
+    mat4x4 proj;
+    vec4 near_far;
+} frame;
 
-layout(std140) uniform surface_ubo { Surface surface; };
+layout(std140) uniform surface_ubo {
+    vec4 base_color;
+    float roughness;
+    float metalness;
+    float normal_scale;
+    float alpha_cutoff;
+} surface;
 
 uniform highp sampler2D albedo_map;
 
@@ -30,10 +40,10 @@ uniform highp sampler2D normal_map;
 
 uniform highp sampler2D orm_map;
 
-smooth in vec3 v_view_pos;
-smooth in vec3 v_normal;
-smooth in vec4 v_tangent;
-smooth in vec2 v_uv;
+in vec3 v_view_pos;
+in vec3 v_normal;
+in vec4 v_tangent;
+in vec2 v_uv;
 layout(location = 0) out vec4 g_albedo;
 layout(location = 1) out vec4 g_normal;
 layout(location = 2) out vec4 g_position;

@@ -15,7 +15,11 @@ struct gbuffer_vs_out {
     vec4 v_tangent;
     vec2 v_uv;
 };
-layout(std140) uniform frame_ubo { Frame frame; };
+layout(std140) uniform frame_ubo {
+    mat4x4 view;
+    mat4x4 proj;
+    vec4 near_far;
+} frame;
 
 uniform mat4x4 u_model;
 
@@ -23,10 +27,10 @@ layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec4 a_tangent;
 layout(location = 3) in vec2 a_uv;
-smooth out vec3 v_view_pos;
-smooth out vec3 v_normal;
-smooth out vec4 v_tangent;
-smooth out vec2 v_uv;
+out vec3 v_view_pos;
+out vec3 v_normal;
+out vec4 v_tangent;
+out vec2 v_uv;
 
 void main() {
     vec3 in_a_position = a_position;

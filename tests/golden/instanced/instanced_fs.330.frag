@@ -2,9 +2,9 @@
 struct instanced_fs_out {
     vec4 f_color;
 };
-smooth in vec4 v_color;
-smooth in vec3 v_normal;
-smooth in vec3 v_bary;
+in vec4 v_color;
+in vec3 v_normal;
+in vec3 v_bary;
 flat in int v_instance;
 out vec4 f_color;
 

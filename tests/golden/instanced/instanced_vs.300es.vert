@@ -26,9 +26,9 @@ uniform float u_time;
 
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
-smooth out vec4 v_color;
-smooth out vec3 v_normal;
-smooth out vec3 v_bary;
+out vec4 v_color;
+out vec3 v_normal;
+out vec3 v_bary;
 flat out int v_instance;
 
 vec3 spin(vec3 p, float angle) {

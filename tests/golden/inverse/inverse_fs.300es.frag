@@ -6,7 +6,7 @@ precision highp int;
 struct inverse_fs_out {
     vec4 f_color;
 };
-smooth in vec3 v_normal;
+in vec3 v_normal;
 out vec4 f_color;
 
 void main() {

@@ -6,8 +6,8 @@ uniform sampler2D u_tex;
 
 uniform samplerCube u_env;
 
-smooth in vec2 v_uv;
-smooth in vec3 v_dir;
+in vec2 v_uv;
+in vec3 v_dir;
 out vec4 f_color;
 
 void main() {

@@ -9,8 +9,8 @@ struct legacy_texture_vs_out {
     vec3 v_dir;
 };
 layout(location = 0) in vec2 a_pos;
-smooth out vec2 v_uv;
-smooth out vec3 v_dir;
+out vec2 v_uv;
+out vec3 v_dir;
 
 void main() {
     vec2 in_a_pos = a_pos;

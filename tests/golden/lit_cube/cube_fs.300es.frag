@@ -24,17 +24,32 @@ struct Lighting {
 struct cube_fs_out {
     vec4 f_color;
 };
-layout(std140) uniform camera_ubo { Camera camera; };
+layout(std140) uniform camera_ubo {
+    mat4x4 view_proj;
+    vec3 position;
+    float time;
+} camera;
 
-layout(std140) uniform material_ubo { Material material; };
+layout(std140) uniform material_ubo {
+    vec3 specular;
+    float shininess;
+    vec4 tint;
+} material;
 
-layout(std140) uniform lighting_ubo { Lighting lighting; };
+layout(std140) uniform lighting_ubo {
+    vec3 sun_dir;
+    float ambient;
+    vec4 sun_color;
+    vec3 point_pos;
+    float point_range;
+    vec4 point_color;
+} lighting;
 
 uniform highp sampler2D diffuse_map;
 
-smooth in vec3 v_world;
-smooth in vec3 v_normal;
-smooth in vec2 v_uv;
+in vec3 v_world;
+in vec3 v_normal;
+in vec2 v_uv;
 out vec4 f_color;
 
 vec3 blinn(vec3 n, vec3 l, vec3 v, vec3 color) {

@@ -14,7 +14,11 @@ struct cube_vs_out {
     vec3 v_normal;
     vec2 v_uv;
 };
-layout(std140) uniform camera_ubo { Camera camera; };
+layout(std140) uniform camera_ubo {
+    mat4x4 view_proj;
+    vec3 position;
+    float time;
+} camera;
 
 uniform mat4x4 u_model;
 
@@ -23,9 +27,9 @@ uniform mat3x3 u_normal_matrix;
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec2 a_uv;
-smooth out vec3 v_world;
-smooth out vec3 v_normal;
-smooth out vec2 v_uv;
+out vec3 v_world;
+out vec3 v_normal;
+out vec2 v_uv;
 
 void main() {
     vec3 in_a_position = a_position;

@@ -28,11 +28,32 @@ struct Uniforms {
 struct blocks_fs_out {
     vec4 f_color;
 };
-layout(std140) uniform uniforms_ubo { Uniforms uniforms; };
+layout(std140) uniform uniforms_ubo {
+    float u_scale;
+    vec2 u_offset;
+    vec3 u_tint;
+    vec4 u_color;
+    uint u_flip;
+    uvec2 u_mask;
+    int u_count;
+    uint u_index;
+    vec4 u_weights[9];
+    vec4 u_taps[3];
+    vec4 u_shear[3];
+    vec4 u_rot[2];
+    mat3x3 u_basis;
+    mat4x4 u_model;
+    ivec4 u_steps[4];
+    vec3 u_gains[2];
+    float u_bias;
+    uvec2 u_levels;
+    uvec3 u_on;
+    vec4 u_mix[4];
+} uniforms;
 
-smooth in vec2 v_p;
-smooth in vec2 v_m;
-smooth in float v_k;
+in vec2 v_p;
+in vec2 v_m;
+in float v_k;
 out vec4 f_color;
 
 void main() {

@@ -32,9 +32,9 @@ uniform bvec3 u_on;
 
 uniform mat4x2 u_mix;
 
-smooth in vec2 v_p;
-smooth in vec2 v_m;
-smooth in float v_k;
+in vec2 v_p;
+in vec2 v_m;
+in float v_k;
 out vec4 f_color;
 
 void main() {

@@ -27,9 +27,9 @@ uniform mat4x4 u_model;
 
 uniform int u_steps[4];
 
-smooth out vec2 v_p;
-smooth out vec2 v_m;
-smooth out float v_k;
+out vec2 v_p;
+out vec2 v_m;
+out float v_k;
 
 void main() {
     uint VertexID = uint(gl_VertexID);

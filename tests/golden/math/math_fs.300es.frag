@@ -11,7 +11,7 @@ const float TAU = 6.2831855;
 
 uniform float u_time;
 
-smooth in vec2 v_uv;
+in vec2 v_uv;
 flat in int v_id;
 out vec4 f_color;
 

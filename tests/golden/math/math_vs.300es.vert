@@ -11,7 +11,7 @@ struct math_vs_out {
 uniform int u_frame;
 
 layout(location = 0) in vec2 a_pos;
-smooth out vec2 v_uv;
+out vec2 v_uv;
 flat out int v_id;
 
 void main() {

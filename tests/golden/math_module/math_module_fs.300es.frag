@@ -8,7 +8,7 @@ struct math_module_fs_out {
 };
 uniform uint u_seed;
 
-smooth in vec2 v_pos;
+in vec2 v_pos;
 out vec4 f_color;
 
 float falloff(vec3 p, vec3 light) {

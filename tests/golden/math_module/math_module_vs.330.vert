@@ -6,7 +6,7 @@ struct math_module_vs_out {
 uniform float u_time;
 
 layout(location = 0) in vec2 a_pos;
-smooth out vec2 v_pos;
+out vec2 v_pos;
 
 void main() {
     vec2 in_a_pos = a_pos;

@@ -6,8 +6,8 @@ precision highp int;
 struct matrix_conversions_fs_out {
     vec4 f_color;
 };
-smooth in vec3 v_normal;
-smooth in vec2 v_skew;
+in vec3 v_normal;
+in vec2 v_skew;
 out vec4 f_color;
 
 void main() {

@@ -2,8 +2,8 @@
 struct matrix_conversions_fs_out {
     vec4 f_color;
 };
-smooth in vec3 v_normal;
-smooth in vec2 v_skew;
+in vec3 v_normal;
+in vec2 v_skew;
 out vec4 f_color;
 
 void main() {

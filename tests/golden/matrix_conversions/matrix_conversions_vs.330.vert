@@ -10,8 +10,8 @@ uniform mat4x4 u_view_proj;
 
 layout(location = 0) in vec3 a_pos;
 layout(location = 1) in vec3 a_normal;
-smooth out vec3 v_normal;
-smooth out vec2 v_skew;
+out vec3 v_normal;
+out vec2 v_skew;
 
 mat3x3 inverse_3x3_(mat3x3 m) {
     vec3 _e5 = cross(m[1], m[2]);

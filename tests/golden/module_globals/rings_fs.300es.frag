@@ -19,7 +19,7 @@ float fade = 1.0;
 
 uniform float pc_time;
 
-smooth in vec2 v_uv;
+in vec2 v_uv;
 out vec4 f_color;
 
 void visit_ring(float d) {

@@ -11,7 +11,7 @@ const vec3 RAMP_HI = vec3(3.0, 2.2, 1.4);
 
 uniform float u_exposure;
 
-smooth in vec2 v_uv;
+in vec2 v_uv;
 out vec4 f_color;
 
 vec3 palette_ramp(float t) {

@@ -8,9 +8,9 @@ struct gbuffer_fs_out {
     vec4 g_normal;
     vec4 g_depth;
 };
-smooth in vec3 v_normal;
-smooth in vec2 v_uv;
-smooth in float v_depth;
+in vec3 v_normal;
+in vec2 v_uv;
+in float v_depth;
 layout(location = 0) out vec4 g_albedo;
 layout(location = 1) out vec4 g_normal;
 layout(location = 2) out vec4 g_depth;

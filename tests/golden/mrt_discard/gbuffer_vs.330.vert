@@ -12,9 +12,9 @@ uniform mat4x4 u_view_proj;
 layout(location = 0) in vec3 a_pos;
 layout(location = 1) in vec3 a_normal;
 layout(location = 2) in vec2 a_uv;
-smooth out vec3 v_normal;
-smooth out vec2 v_uv;
-smooth out float v_depth;
+out vec3 v_normal;
+out vec2 v_uv;
+out float v_depth;
 
 void main() {
     vec3 in_a_pos = a_pos;

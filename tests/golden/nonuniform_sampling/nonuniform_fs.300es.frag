@@ -13,7 +13,7 @@ uniform highp sampler2D mask;
 
 uniform highp sampler2DShadow depth;
 
-smooth in vec2 v_uv;
+in vec2 v_uv;
 out vec4 f_color;
 
 float march(vec2 uv) {

@@ -8,7 +8,7 @@ uniform sampler2D mask;
 
 uniform sampler2DShadow depth;
 
-smooth in vec2 v_uv;
+in vec2 v_uv;
 out vec4 f_color;
 
 float march(vec2 uv) {

@@ -9,7 +9,7 @@ struct packing_fs_out {
 };
 uniform vec4 u_albedo;
 
-smooth in vec3 v_normal;
+in vec3 v_normal;
 layout(location = 0) out uvec4 g_packed;
 layout(location = 1) out vec4 f_check;
 

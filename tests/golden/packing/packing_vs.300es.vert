@@ -8,7 +8,7 @@ struct packing_vs_out {
     vec3 v_normal;
 };
 layout(location = 0) in vec2 a_pos;
-smooth out vec3 v_normal;
+out vec3 v_normal;
 
 void main() {
     vec2 in_a_pos = a_pos;

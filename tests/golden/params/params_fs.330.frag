@@ -6,7 +6,7 @@ struct Ray {
 struct params_fs_out {
     vec4 f_color;
 };
-smooth in vec2 v_uv;
+in vec2 v_uv;
 out vec4 f_color;
 
 vec3 along(Ray r, float t) {

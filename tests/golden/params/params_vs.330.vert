@@ -4,7 +4,7 @@ struct params_vs_out {
     vec2 v_uv;
 };
 layout(location = 0) in vec2 a_pos;
-smooth out vec2 v_uv;
+out vec2 v_uv;
 
 void main() {
     vec2 in_a_pos = a_pos;

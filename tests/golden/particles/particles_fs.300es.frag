@@ -8,7 +8,7 @@ struct particles_fs_out {
 };
 uniform highp sampler2D sprite;
 
-smooth in vec4 v_color;
+in vec4 v_color;
 out vec4 f_color;
 
 void main() {

@@ -17,8 +17,8 @@ layout(location = 0) in vec3 a_origin;
 layout(location = 1) in vec3 a_velocity;
 layout(location = 2) in float a_birth;
 layout(location = 3) in float a_life;
-smooth out float v_age;
-smooth out vec4 v_color;
+out float v_age;
+out vec4 v_color;
 
 void main() {
     vec3 in_a_origin = a_origin;

@@ -10,8 +10,8 @@ uniform vec4 u_color;
 
 uniform sampler2DShadow shadow_map;
 
-smooth in vec3 v_normal;
-smooth in vec4 v_light_pos;
+in vec3 v_normal;
+in vec4 v_light_pos;
 out vec4 f_color;
 
 float pcf_5x5_(vec3 coord, float bias) {

@@ -19,8 +19,8 @@ uniform vec3 u_light_dir;
 
 uniform sampler2DShadow shadow_map;
 
-smooth in vec3 v_world_pos;
-smooth in vec3 v_world_normal;
+in vec3 v_world_pos;
+in vec3 v_world_normal;
 out vec4 f_FragColor;
 
 vec3 to_map(vec4 clip) {

@@ -4,7 +4,7 @@ struct pp_fs_out {
 };
 uniform vec3 u_light_dir;
 
-smooth in vec3 v_normal;
+in vec3 v_normal;
 out vec4 f_color;
 
 float lambert(vec3 n, vec3 l) {

@@ -11,7 +11,7 @@ uniform mat4x4 u_mvp;
 
 layout(location = 0) in vec3 a_pos;
 layout(location = 1) in vec3 a_normal;
-smooth out vec3 v_normal;
+out vec3 v_normal;
 
 void main() {
     vec3 in_a_pos = a_pos;

@@ -19,9 +19,9 @@ uniform vec3 u_light_dir;
 
 uniform highp sampler2DShadow shadow_map;
 
-smooth in vec3 v_world_pos;
-smooth in vec3 v_world_normal;
-smooth in vec4 v_shadow_coord;
+in vec3 v_world_pos;
+in vec3 v_world_normal;
+in vec4 v_shadow_coord;
 out vec4 f_FragColor;
 
 float sun_ndotl() {

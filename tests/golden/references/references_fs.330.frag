@@ -8,7 +8,7 @@ struct references_fs_out {
 };
 uniform vec4 u_taps[4];
 
-smooth in vec2 v_uv;
+in vec2 v_uv;
 out vec4 f_color;
 
 float falloff(float d, float k) {

@@ -8,7 +8,7 @@ struct references_vs_out {
     vec2 v_uv;
 };
 layout(location = 0) in vec2 a_pos;
-smooth out vec2 v_uv;
+out vec2 v_uv;
 
 void flip_y(inout vec2 uv_1) {
     float _e4 = uv_1.y;

@@ -14,7 +14,7 @@ uniform sampler2DShadow shadows_1;
 
 uniform int u_pick;
 
-smooth in vec2 v_uv;
+in vec2 v_uv;
 out vec4 f_color;
 
 vec4 layer(int i_1, vec2 uv) {

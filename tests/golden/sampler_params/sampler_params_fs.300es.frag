@@ -17,8 +17,8 @@ uniform highp sampler2DShadow cascades_1;
 
 uniform float u_texel;
 
-smooth in vec2 v_uv;
-smooth in float v_height;
+in vec2 v_uv;
+in float v_height;
 out vec4 f_color;
 
 vec4 tap_albedo(vec2 uv) {

@@ -7,8 +7,8 @@ struct sampler_params_vs_out {
 uniform sampler2D detail;
 
 layout(location = 0) in vec2 a_pos;
-smooth out vec2 v_uv;
-smooth out float v_height;
+out vec2 v_uv;
+out float v_height;
 
 vec4 tap_detail_vertex(vec2 uv) {
     vec4 _e3 = textureLod(detail, vec2(uv), 0.0);

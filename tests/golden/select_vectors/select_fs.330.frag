@@ -3,7 +3,7 @@ struct select_fs_out {
     vec4 f_color;
     uvec4 f_ids;
 };
-smooth in vec2 v_uv;
+in vec2 v_uv;
 flat in ivec2 v_cell;
 layout(location = 0) out vec4 f_color;
 layout(location = 1) out uvec4 f_ids;

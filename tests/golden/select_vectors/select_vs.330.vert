@@ -5,7 +5,7 @@ struct select_vs_out {
     ivec2 v_cell;
 };
 layout(location = 0) in vec2 a_pos;
-smooth out vec2 v_uv;
+out vec2 v_uv;
 flat out ivec2 v_cell;
 
 void main() {

@@ -18,9 +18,9 @@ uniform float u_is_floor;
 
 uniform highp sampler2DShadow shadow_map;
 
-smooth in vec3 v_world_pos;
-smooth in vec3 v_world_normal;
-smooth in vec4 v_light_space;
+in vec3 v_world_pos;
+in vec3 v_world_normal;
+in vec4 v_light_space;
 out vec4 f_FragColor;
 
 float sun_visibility(vec2 uv, float depth) {

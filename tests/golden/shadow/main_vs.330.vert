@@ -15,9 +15,9 @@ uniform mat4x4 u_proj;
 
 layout(location = 0) in vec3 a_pos;
 layout(location = 1) in vec3 a_normal;
-smooth out vec3 v_world_pos;
-smooth out vec3 v_world_normal;
-smooth out vec4 v_light_space;
+out vec3 v_world_pos;
+out vec3 v_world_normal;
+out vec4 v_light_space;
 
 void main() {
     vec3 in_a_pos = a_pos;

@@ -12,9 +12,9 @@ uniform sampler2DShadow shadow_map;
 
 vec4 io_v_light_pos = vec4(0.0);
 
-smooth in vec3 v_normal;
-smooth in vec3 v_world;
-smooth in vec4 v_light_pos;
+in vec3 v_normal;
+in vec3 v_world;
+in vec4 v_light_pos;
 out vec4 f_color;
 
 float shadow_lookup(vec3 coord, float bias) {

@@ -17,9 +17,9 @@ uniform mat4x4 u_light_view_proj;
 
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
-smooth out vec3 v_normal;
-smooth out vec3 v_world;
-smooth out vec4 v_light_pos;
+out vec3 v_normal;
+out vec3 v_world;
+out vec4 v_light_pos;
 
 void main() {
     vec3 in_a_position = a_position;

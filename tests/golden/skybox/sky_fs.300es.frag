@@ -10,7 +10,7 @@ uniform float u_exposure;
 
 uniform highp samplerCube sky;
 
-smooth in vec3 v_dir;
+in vec3 v_dir;
 out vec4 f_color;
 
 void main() {

@@ -12,7 +12,7 @@ uniform mat4x4 u_view;
 uniform mat4x4 u_proj;
 
 layout(location = 0) in vec3 a_position;
-smooth out vec3 v_dir;
+out vec3 v_dir;
 
 void main() {
     vec3 in_a_position = a_position;

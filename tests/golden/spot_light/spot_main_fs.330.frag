@@ -21,8 +21,8 @@ uniform vec3 u_spot_dir;
 
 uniform sampler2D shadow_map;
 
-smooth in vec3 v_world_pos;
-smooth in vec3 v_world_normal;
+in vec3 v_world_pos;
+in vec3 v_world_normal;
 out vec4 f_FragColor;
 
 float cone(vec3 to_light) {

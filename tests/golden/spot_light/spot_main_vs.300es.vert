@@ -20,8 +20,8 @@ vec3 io_a_normal = vec3(0.0);
 
 layout(location = 0) in vec3 a_pos;
 layout(location = 1) in vec3 a_normal;
-smooth out vec3 v_world_pos;
-smooth out vec3 v_world_normal;
+out vec3 v_world_pos;
+out vec3 v_world_normal;
 
 vec4 world_position() {
     mat4x4 _e1 = u_model;

@@ -18,7 +18,7 @@ struct struct_init_fs_out {
 };
 uniform vec3 u_light_dir;
 
-smooth in vec2 v_uv;
+in vec2 v_uv;
 out vec4 f_color;
 
 Ray Ray_1(vec3 from, vec3 to) {

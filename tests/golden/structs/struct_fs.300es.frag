@@ -15,9 +15,13 @@ struct Material {
 struct struct_fs_out {
     vec4 f_color;
 };
-layout(std140) uniform light_ubo { Light light; };
+layout(std140) uniform light_ubo {
+    vec3 dir;
+    float intensity;
+    vec4 color;
+} light;
 
-smooth in vec3 v_normal;
+in vec3 v_normal;
 out vec4 f_color;
 
 vec3 shade(Material m_1, vec3 n, Light l) {
@@ -33,12 +37,14 @@ void main() {
     m.albedo = vec3(0.8, 0.6, 0.4);
     m.roughness = 0.5;
     Material _e10 = m;
-    Light _e13 = light;
-    vec3 _e14 = shade(_e10, normalize(in_v_normal), _e13);
-    float _e17 = m.roughness;
-    out_f_color = vec4((_e14 + vec3((_e17 * 0.1))), 1.0);
-    vec4 _e24 = out_f_color;
-    struct_fs_out _tmp_return = struct_fs_out(_e24);
+    vec3 _e14 = light.dir;
+    float _e16 = light.intensity;
+    vec4 _e18 = light.color;
+    vec3 _e20 = shade(_e10, normalize(in_v_normal), Light(_e14, _e16, _e18));
+    float _e23 = m.roughness;
+    out_f_color = vec4((_e20 + vec3((_e23 * 0.1))), 1.0);
+    vec4 _e30 = out_f_color;
+    struct_fs_out _tmp_return = struct_fs_out(_e30);
     f_color = _tmp_return.f_color;
     return;
 }

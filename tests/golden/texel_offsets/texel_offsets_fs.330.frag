@@ -10,7 +10,7 @@ uniform sampler3D volume;
 
 uniform sampler2DShadow sun_shadow;
 
-smooth in vec2 v_uv;
+in vec2 v_uv;
 out vec4 f_color;
 
 float pcf4_(vec2 uv, float depth) {

@@ -6,7 +6,7 @@ struct texel_offsets_vs_out {
 uniform sampler2D albedo;
 
 layout(location = 0) in vec2 a_pos;
-smooth out vec2 v_uv;
+out vec2 v_uv;
 
 void main() {
     vec2 in_a_pos = a_pos;

@@ -28,8 +28,8 @@ uniform highp samplerCubeShadow t_shadow_cube;
 
 uniform highp isampler2D t_ids;
 
-smooth in vec2 v_uv;
-smooth in vec3 v_dir;
+in vec2 v_uv;
+in vec3 v_dir;
 out vec4 f_color;
 
 void main() {

@@ -18,8 +18,8 @@ uniform samplerCubeShadow t_shadow_cube;
 
 uniform isampler2D t_ids;
 
-smooth in vec2 v_uv;
-smooth in vec3 v_dir;
+in vec2 v_uv;
+in vec3 v_dir;
 out vec4 f_color;
 
 void main() {

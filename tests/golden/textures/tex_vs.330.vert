@@ -5,8 +5,8 @@ struct tex_vs_out {
     vec3 v_dir;
 };
 layout(location = 0) in vec3 a_pos;
-smooth out vec2 v_uv;
-smooth out vec3 v_dir;
+out vec2 v_uv;
+out vec3 v_dir;
 
 void main() {
     vec3 in_a_pos = a_pos;

@@ -14,9 +14,9 @@ uniform float u_dt;
 
 layout(location = 0) in vec3 a_pos;
 layout(location = 1) in vec3 a_vel;
-smooth out float v_speed;
-smooth out vec3 o_pos;
-smooth out vec3 o_vel;
+out float v_speed;
+out vec3 o_pos;
+out vec3 o_vel;
 flat out int o_alive;
 
 void main() {

@@ -15,11 +15,15 @@ uniform float u_exposure;
 
 uniform int u_steps;
 
-layout(std140) uniform u_grade_ubo { Grade u_grade; };
+layout(std140) uniform u_grade_ubo {
+    vec3 lift;
+    float gamma;
+    vec4 gain;
+} u_grade;
 
 uniform mat3x3 u_basis;
 
-smooth in vec2 v_uv;
+in vec2 v_uv;
 out vec4 f_color;
 
 void main() {

@@ -19,14 +19,21 @@ struct Scene {
 struct layout_fs_out {
     vec4 f_color;
 };
-layout(std140) uniform scene_ubo { Scene scene; };
+layout(std140) uniform scene_ubo {
+    mat3x3 normal_matrix;
+    Light lights[4];
+    Fog fog;
+    int light_count;
+    float exposure;
+    vec2 tint;
+} scene;
 
 uniform vec4 u_kernel[8];
 
 uniform Light u_lights[2];
 
-smooth in vec3 v_pos;
-smooth in vec3 v_normal;
+in vec3 v_pos;
+in vec3 v_normal;
 out vec4 f_color;
 
 vec3 light_at(Light l, vec3 p, vec3 n) {

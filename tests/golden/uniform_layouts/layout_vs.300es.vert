@@ -25,14 +25,21 @@ struct layout_vs_out {
     vec3 v_pos;
     vec3 v_normal;
 };
-layout(std140) uniform scene_ubo { Scene scene; };
+layout(std140) uniform scene_ubo {
+    mat3x3 normal_matrix;
+    Light lights[4];
+    Fog fog;
+    int light_count;
+    float exposure;
+    vec2 tint;
+} scene;
 
 uniform mat4x4 u_mvp;
 
 layout(location = 0) in vec3 a_pos;
 layout(location = 1) in vec3 a_normal;
-smooth out vec3 v_pos;
-smooth out vec3 v_normal;
+out vec3 v_pos;
+out vec3 v_normal;
 
 void main() {
     vec3 in_a_pos = a_pos;

@@ -8,8 +8,8 @@ struct terrain_fs_out {
 };
 uniform highp sampler2D heightmap;
 
-smooth in vec2 v_uv;
-smooth in float v_height;
+in vec2 v_uv;
+in float v_height;
 out vec4 f_color;
 
 float height_at(vec2 uv) {

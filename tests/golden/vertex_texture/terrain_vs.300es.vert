@@ -16,8 +16,8 @@ uniform highp sampler2DShadow shadow;
 uniform mat4x4 u_mvp;
 
 layout(location = 0) in vec2 a_pos;
-smooth out vec2 v_uv;
-smooth out float v_height;
+out vec2 v_uv;
+out float v_height;
 
 float height_at_vertex(vec2 uv) {
     vec4 _e3 = textureLod(heightmap, vec2(uv), 0.0);

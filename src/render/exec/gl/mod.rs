@@ -17,6 +17,7 @@
 mod by_name;
 mod compute;
 mod frame;
+pub mod probe;
 pub mod objects;
 
 use std::cell::RefCell;
