@@ -6,7 +6,7 @@ uniform sampler2D u_tex;
 
 uniform float u_lift;
 
-smooth in vec2 v_uv;
+in vec2 v_uv;
 out vec4 f_color;
 
 vec3 grade(vec3 c, float lift, float gain) {

@@ -6,7 +6,7 @@ struct daslang_modules_vs_out {
 uniform mat4x4 u_mvp;
 
 layout(location = 0) in vec3 a_pos;
-smooth out vec2 v_uv;
+out vec2 v_uv;
 
 void main() {
     vec3 in_a_pos = a_pos;
