@@ -265,9 +265,12 @@ impl<'m> Parser<'_, 'm> {
         let value = if self.peek().is(P::Eq) {
             self.bump();
             let v = self.peek();
-            if name == "format" && v.kind == TokKind::Ident {
+            // `@format = r32f` or, as dasGlsl reads its string argument,
+            // `@format = "r32f"`.
+            if name == "format" && matches!(v.kind, TokKind::Ident | TokKind::Str) {
                 self.bump();
-                let id = Ident { name: self.texts.name(v.span), span: v.span };
+                let inner = if v.kind == TokKind::Str { Span::new(v.span.start + 1, v.span.end.saturating_sub(1).max(v.span.start + 1)) } else { v.span };
+                let id = Ident { name: self.texts.name(inner), span: v.span };
                 return Ok(Qualifier { kind: QualifierKind::Format(id), span: at.span.to(v.span) });
             }
             if v.kind != TokKind::Int {
@@ -300,6 +303,8 @@ impl<'m> Parser<'_, 'm> {
             "inout" => QualifierKind::InOut,
             "location" => QualifierKind::Location(value),
             "stage" => QualifierKind::Stage(value),
+            // Bare `@format`: dasGlsl's default, rgba8.
+            "format" if value.is_none() => QualifierKind::Format(Ident { name: "rgba8".into(), span: t.span }),
             "set" | "binding" => match value {
                 Some(v) if name == "set" => QualifierKind::Set(v),
                 Some(v) => QualifierKind::Binding(v),

@@ -96,6 +96,8 @@ impl<'m> Parser<'_, 'm> {
             let t = self.peek();
             let forward = match t.kind {
                 TokKind::P(P::RPipe) => true,
+                // `f() <| $ { ... }`: a block argument, the statement's.
+                TokKind::P(P::LPipe) if self.toks.get(self.pos + 1).is_some_and(|n| n.is(P::Dollar)) => return Ok(e),
                 TokKind::P(P::LPipe) => false,
                 _ => return Ok(e),
             };
@@ -334,12 +336,31 @@ impl<'m> Parser<'_, 'm> {
         if next.is(P::LParen) && name.name == "fixed_array" {
             return self.untyped_fixed_array(t, next);
         }
+        if next.is(P::Lt) && name.name == "reinterpret" {
+            return self.reinterpret(t);
+        }
         if next.is(P::LParen) {
             self.bump();
             let (args, end) = self.call_args(next)?;
             return Ok(Expr { kind: ExprKind::Call { callee: name, args }, span: t.span.to(end.span) });
         }
         Ok(Expr { kind: ExprKind::Name(name), span: t.span })
+    }
+
+    /// `reinterpret<T>(x)`: a type name between the angle brackets, one
+    /// value in the parentheses.
+    #[inline(never)]
+    pub(super) fn reinterpret(&mut self, t: Token) -> PResult<Expr> {
+        self.bump(); // `<`
+        let ty = self.ident("a type name")?;
+        self.expect(P::Gt)?;
+        let po = self.peek();
+        if !po.is(P::LParen) {
+            self.error_expected(po, "'('");
+            return Err(());
+        }
+        let (value, end) = self.bracketed(po, P::RParen)?;
+        Ok(Expr { kind: ExprKind::Reinterpret(ty, Box::new(value)), span: t.span.to(end.span) })
     }
 
     /// `fixed_array(a, b)`: the element type is the values'.
