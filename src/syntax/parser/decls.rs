@@ -273,6 +273,11 @@ impl<'m> Parser<'_, 'm> {
                 let id = Ident { name: self.texts.name(inner), span: v.span };
                 return Ok(Qualifier { kind: QualifierKind::Format(id), span: at.span.to(v.span) });
             }
+            if name == "format" {
+                let msg = format!("expected a format name after `@format =`, found {}", self.describe(&v));
+                self.err(v, msg, "expected a name such as `rgba8` or `\"r32f\"`");
+                return Err(());
+            }
             if v.kind != TokKind::Int {
                 if matches!(name, "location" | "stage" | "set" | "binding") {
                     let msg = format!("expected an integer after `@{name} =`, found {}", self.describe(&v));
