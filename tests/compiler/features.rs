@@ -150,6 +150,7 @@ def pick(x : int) : float {\n    if (x < 0) return 0.0\n    elif (x == 0) return
     add("reinterpret-other-sizes", frag("var @uniform u_x : float2", "    f_color = float4(reinterpret<uint>(u_x))"));
     add("cpu-only-lattice", frag("", "    let b = byte8(1)\n    var h : half8\n    f_color = float4(1.0)"));
     add("cpu-only-calls", frag("", "    var v = float4(1.0)\n    memzero(v)\n    f_color = v"));
+    add("host-expressions", frag("", "    var a = 1.0\n    let b = cast<int> a\n    f_color = float4(a ?? 2.0)"));
 }
 
 fn functions_and_data(add: &mut impl FnMut(&'static str, String)) {

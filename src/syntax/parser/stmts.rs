@@ -25,7 +25,11 @@ impl<'m> Parser<'_, 'm> {
                 stmts.push(p.stmt()?);
                 Ok(())
             },
-            |p, t| p.error_expected(t, "newline or ';' after the statement"),
+            |p, t| {
+                if !p.refuse_host_construct(t) {
+                    p.error_expected(t, "newline or ';' after the statement")
+                }
+            },
         );
         self.nl_skip = nl0;
         self.open = open0;
