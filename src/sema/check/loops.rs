@@ -97,7 +97,9 @@ impl<'a, 'd> Checker<'a, 'd> {
     /// copied once per step, with no loop left) no `break`/`continue` of it.
     pub(super) fn check_call_block(&mut self, cx: &mut FnCtx<'a>, callee: &'a ast::Ident, args: &'a [ast::Expr], body: &'a ast::Block, span: Span, out: &mut Vec<Stmt>) {
         let name = callee.name.as_str();
-        if name != "unroll" || self.funcs.contains_key(name) {
+        // `unroll` is daslang's macro (daslib/unroll), which `require
+        // daslib/unroll` also declares as a function taking a block.
+        if name != "unroll" {
             let d = Diagnostic::error(format!("`{name}` with a block argument is not supported in shader code"), callee.span)
                 .with_label("called with a block (`$ { ... }`)")
                 .with_note("daslang's blocks are host code; in a shader only `unroll() $ { for (...) { ... } }` takes one");
