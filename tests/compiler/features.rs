@@ -141,8 +141,7 @@ fn compute(add: &mut impl FnMut(&'static str, String)) {
 /// `unroll`, `reinterpret`, the CPU-only names, `@stage`/`@format` on
 /// storage resources.
 fn gl_dialect(add: &mut impl FnMut(&'static str, String)) {
-    add("one-line-bodies", frag("var @uniform u_i : int
-def pick(x : int) : float {\n    if (x < 0) return 0.0\n    elif (x == 0) return 0.5\n    return 1.0\n}", "    var s = 0.0\n    var k = 0\n    if (u_i > 2) s = 1.0 else s = 2.0\n    while (k < u_i) k++\n    for (i in range(4)) s += float(i)\n    for (i in range(8)) {\n        if (i > u_i) break\n        if (i == 1) continue\n        s += 1.0\n    }\n    f_color = float4(s + float(k) + pick(u_i))"));
+    add("one-line-bodies", frag("var @uniform u_i : int\ndef pick(x : int) : float {\n    if (x < 0) return 0.0\n    elif (x == 0) return 0.5\n    return 1.0\n}", "    var s = 0.0\n    var k = 0\n    if (u_i > 2) s = 1.0 else s = 2.0\n    while (k < u_i) k++\n    for (i in range(4)) s += float(i)\n    for (i in range(8)) {\n        if (i > u_i) break\n        if (i == 1) continue\n        s += 1.0\n    }\n    f_color = float4(s + float(k) + pick(u_i))"));
     add("unroll", frag("let N = 3\nvar @uniform u_w : float4[4]", "    var s = float4(0.0)\n    unroll() $ {\n        for (i in range(N)) {\n            s += u_w[i]\n        }\n    }\n    unroll($ {\n        for (i in range(1, 4)) {\n            s *= u_w[i]\n        }\n    })\n    f_color = s"));
     add("unroll-not-constant", frag("var @uniform u_n : int", "    var s = 0.0\n    unroll() $ {\n        for (i in range(u_n)) {\n            s += 1.0\n        }\n    }\n    f_color = float4(s)"));
     add("call-with-block", frag("", "    var s = 0.0\n    invoke() $ {\n        s = 1.0\n    }\n    f_color = float4(s)"));

@@ -266,13 +266,7 @@ fn crlf_bom_tabs_and_nul() {
 /// the one-line `if`.
 #[test]
 fn one_line_bodies() {
-    let body = "if (a) return
-if (b) x = 1
-elif (c) x += 2
-else x = 3
-while (x < 4) x++
-for (i in range(4)) s += i
-if (d) f(x) else return";
+    let body = "if (a) return\nif (b) x = 1\nelif (c) x += 2\nelse x = 3\nwhile (x < 4) x++\nfor (i in range(4)) s += i\nif (d) f(x) else return";
     let p = parse_str(&fs(body));
     assert!(p.diags.is_empty(), "{}", p.rendered());
     let f = p.function("main_fs");
@@ -286,28 +280,14 @@ if (d) f(x) else return";
     // A declaration or a compound statement needs braces; so does a body on the next line.
     assert_eq!(parse_str(&fs("if (a) let y = 1")).locs(), ["test.das:4:8: keyword 'let' cannot stand alone as a one-line body"]);
     assert_eq!(parse_str(&fs("while (a) if (b) break")).locs(), ["test.das:4:11: keyword 'if' cannot stand alone as a one-line body"]);
-    assert!(parse_str(&fs("if (a)
-    return")).locs()[0].starts_with("test.das:5:5: expected '{'"));
+    assert!(parse_str(&fs("if (a)\n    return")).locs()[0].starts_with("test.das:5:5: expected '{'"));
 }
 
 /// Calls with daslang's block argument (`f() $ { }`, `f() <| $ { }`,
 /// `f($ { })`): parsed for every name; the checker takes only `unroll`.
 #[test]
 fn calls_with_a_block() {
-    let body = "unroll() $ {
-for (i in range(4)) {
-s += i
-}
-}
-unroll() <| $ {
-for (i in range(2)) {
-}
-}
-unroll($ {
-let k = 1
-})
-other(1, 2) $ {
-}";
+    let body = "unroll() $ {\nfor (i in range(4)) {\ns += i\n}\n}\nunroll() <| $ {\nfor (i in range(2)) {\n}\n}\nunroll($ {\nlet k = 1\n})\nother(1, 2) $ {\n}";
     let p = parse_str(&fs(body));
     assert!(p.diags.is_empty(), "{}", p.rendered());
     let f = p.function("main_fs");
@@ -321,8 +301,11 @@ other(1, 2) $ {
         })
         .collect();
     assert_eq!(calls, [("unroll", 0, 1), ("unroll", 0, 1), ("unroll", 0, 1), ("other", 2, 0)]);
-    assert_eq!(parse_str(&fs("x $ {
-}")).locs(), ["test.das:4:3: a block argument follows a call: `f() $ { ... }`"]);
+    assert_eq!(parse_str(&fs("x $ {\n}")).locs(), ["test.das:4:3: a block argument follows a call: `f() $ { ... }`"]);
+    // `unsafe { ... }` is its statements.
+    let p = parse_str(&fs("unsafe {\nlet b = reinterpret<uint>(1.0)\n}"));
+    assert!(p.diags.is_empty(), "{}", p.rendered());
+    assert!(matches!(&p.function("main_fs").body.stmts[0].kind, StmtKind::Block(b) if b.stmts.len() == 1));
 }
 
 #[test]

@@ -149,6 +149,12 @@ impl<'m> Parser<'_, 'm> {
                 return Err(());
             }
             TokKind::Ident if t.span.end - t.span.start == 4 && self.toks.get(self.pos + 1).is_some_and(|n| n.is(P::LParen)) && self.text(&t) == "with" => self.with_stmt()?,
+            // `unsafe { ... }`: daslang's permission (for `reinterpret`);
+            // the statements themselves.
+            TokKind::Ident if self.toks.get(self.pos + 1).is_some_and(|n| n.is(P::LBrace)) && self.text(&t) == "unsafe" => {
+                self.bump();
+                StmtKind::Block(self.block()?)
+            }
             // `f($ { ... })`: the block as the only argument.
             TokKind::Ident if self.toks.get(self.pos + 1).is_some_and(|n| n.is(P::LParen)) && self.toks.get(self.pos + 2).is_some_and(|n| n.is(P::Dollar)) => self.block_arg_call(t)?,
             _ => self.expr_stmt()?,
