@@ -305,6 +305,7 @@ impl<'m> Parser<'_, 'm> {
             TokKind::P(P::QuestionDot) => ("?.", "safe navigation", "shader values are never null: read the field with `.`"),
             TokKind::P(P::QuestionBracket) => ("?[", "a safe index", "index with `[]`; the targets clamp indices to the bounds"),
             TokKind::P(P::At | P::AtAt) => ("@", "a lambda or function address", "call a function by name"),
+            TokKind::P(P::Dollar) => ("$", "a block", "blocks are host code; a shader takes one only in `unroll() $ { for ... }`, a statement of its own"),
             TokKind::Ident if matches!(next, Some(TokKind::Ident | TokKind::P(P::LParen))) && matches!(self.text(t), "is" | "as") => {
                 if self.text(t) == "is" { ("is", "a type or variant test", "shaders have no variants: use an enumeration and `==`") } else { ("as", "a variant cast", "shaders have no variants: use an enumeration and `==`") }
             }
