@@ -72,15 +72,7 @@ impl<'m> Parser<'_, 'm> {
             return self.body();
         }
         let kind = match t.kind {
-            TokKind::Kw(Kw::Return) => {
-                self.bump();
-                let p = self.raw_peek();
-                if ends_stmt(&p) || p.is_kw(Kw::If) || p.is_kw(Kw::Else) {
-                    StmtKind::Return(None)
-                } else {
-                    StmtKind::Return(Some(self.expr()?))
-                }
-            }
+            TokKind::Kw(Kw::Return) => self.return_stmt()?,
             TokKind::Kw(Kw::Break) => {
                 self.bump();
                 StmtKind::Break
@@ -97,6 +89,18 @@ impl<'m> Parser<'_, 'm> {
         };
         let stmt = Stmt { kind, span: t.span.to(self.last) };
         Ok(Block { span: stmt.span, stmts: vec![stmt] })
+    }
+
+    /// `return [value]`: no value before the end of the statement, a
+    /// postfix `if` or a one-line `if`'s `else`.
+    fn return_stmt(&mut self) -> PResult<StmtKind> {
+        self.bump(); // `return`
+        let p = self.raw_peek();
+        if ends_stmt(&p) || p.is_kw(Kw::If) || p.is_kw(Kw::Else) {
+            Ok(StmtKind::Return(None))
+        } else {
+            Ok(StmtKind::Return(Some(self.expr()?)))
+        }
     }
 
     #[cold]
@@ -122,15 +126,7 @@ impl<'m> Parser<'_, 'm> {
                 StmtKind::While { cond, body }
             }
             TokKind::Kw(Kw::For) => self.for_stmt()?,
-            TokKind::Kw(Kw::Return) => {
-                self.bump();
-                let p = self.raw_peek();
-                if ends_stmt(&p) || p.is_kw(Kw::If) {
-                    StmtKind::Return(None)
-                } else {
-                    StmtKind::Return(Some(self.expr()?))
-                }
-            }
+            TokKind::Kw(Kw::Return) => self.return_stmt()?,
             TokKind::Kw(Kw::Break) => {
                 self.bump();
                 StmtKind::Break
