@@ -1168,6 +1168,7 @@ mod tests {
             samplers: vec![],
             storage_buffers: None,
             storage_images: None,
+            required_limits: None,
         };
         assert_eq!(host_type(&r, "float").unwrap(), HostType::Scalar("f32"));
         assert_eq!(host_type(&r, "uint3").unwrap(), HostType::Vector("u32", 3));

@@ -206,6 +206,18 @@ impl Build {
         self
     }
 
+    /// A daslang tree or install, for `require` (`--daslang-root DIR`).
+    pub fn daslang_root(mut self, dir: impl AsRef<Path>) -> Self {
+        self.options.daslang_root = Some(dir.as_ref().to_path_buf());
+        self
+    }
+
+    /// Where `require PREFIX/NAME` finds `NAME.das` (`--module PREFIX=DIR`).
+    pub fn module(mut self, prefix: &str, dir: impl AsRef<Path>) -> Self {
+        self.options.modules.push((prefix.to_string(), dir.as_ref().to_path_buf()));
+        self
+    }
+
     /// Clip-space conventions of the WGSL/SPIR-V outputs (default portable).
     pub fn conventions(mut self, c: Conventions) -> Self {
         self.options.conventions = c;
@@ -221,6 +233,13 @@ impl Build {
     /// Compile for devices with `n` of `limit` (`--limit NAME=N`).
     pub fn limit(mut self, limit: crate::Limit, n: u64) -> Self {
         self.options.limits.push((limit, n));
+        self
+    }
+
+    /// Make going over any guaranteed device minimum an error, not only over
+    /// what devices in use report (`--strict-limits`).
+    pub fn strict_limits(mut self, strict: bool) -> Self {
+        self.options.strict_limits = strict;
         self
     }
 

@@ -95,8 +95,17 @@ impl Key {
         }
         field(&mut h, format!("{:?}", opts.conventions).as_bytes());
         field(&mut h, opts.gl_uniforms.as_str().as_bytes());
-        field(&mut h, format!("{:?}", opts.limits).as_bytes());
+        field(&mut h, format!("{:?} strict {}", opts.limits, opts.strict_limits).as_bytes());
         field(&mut h, extra.as_bytes());
+        // Where `require` looks decides which files the tokens come from.
+        field(&mut h, b"modules");
+        for d in opts.daslib.iter().chain(&opts.daslang_root) {
+            field(&mut h, d.as_os_str().as_encoded_bytes());
+        }
+        for (prefix, dir) in &opts.modules {
+            field(&mut h, prefix.as_bytes());
+            field(&mut h, dir.as_os_str().as_encoded_bytes());
+        }
         field(&mut h, b"tokens");
         hash_tokens(&mut h, pre.tokens(), pre.sources());
         Key(h.finalize().into())

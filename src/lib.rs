@@ -70,12 +70,24 @@ pub struct Options {
     /// `--limit NAME=N`: compile for devices with more of a resource than
     /// the targets' minimums (`emit::limits`).
     pub limits: Vec<(Limit, u64)>,
+    /// `--strict-limits`: going over any guaranteed minimum is an error, not
+    /// only over what devices in use report (a warning by default;
+    /// docs/targets.md, "Device limits").
+    pub strict_limits: bool,
     /// Allow `#include` to reach files outside the input's directory and the
     /// include directories.
     pub allow_outside_includes: bool,
     /// `--daslib DIR`: daslang's `daslib` directory, where `require
     /// daslib/NAME` finds `NAME.das`.
     pub daslib: Option<PathBuf>,
+    /// `--daslang-root DIR`: a daslang tree or install, for `require`:
+    /// `DIR/daslib`, the prefixes its `modules/*/.das_module` files
+    /// register and its folders named after a prefix (docs/language.md,
+    /// "Modules").
+    pub daslang_root: Option<PathBuf>,
+    /// `--module PREFIX=DIR`: `require PREFIX/NAME` finds `DIR/NAME.das`
+    /// (before the daslang tree's registrations).
+    pub modules: Vec<(String, PathBuf)>,
     /// The name the outputs record for the input (the manifest's `source`,
     /// the bindings' header); `None`: the name diagnostics show, the path
     /// as given. The CLI and [`build`] set a name that does not depend on
@@ -333,6 +345,8 @@ fn parse_options(opts: &Options) -> syntax::ParseOptions {
         entries: opts.entries.clone(),
         allow_outside_includes: opts.allow_outside_includes,
         daslib: opts.daslib.iter().cloned().collect(),
+        daslang_root: opts.daslang_root.clone(),
+        module_dirs: opts.modules.clone(),
     }
 }
 
@@ -379,11 +393,12 @@ fn finish(pre: Preprocessed, opts: &Options) -> Compilation {
             }
         };
         let mut over = Vec::new();
-        emit::limits::check(&lowered, &targets, &opts.limits, &mut over);
-        if !over.is_empty() {
-            for d in over {
-                diags.push(d);
-            }
+        emit::limits::check(&lowered, &targets, &opts.limits, opts.strict_limits, &mut over);
+        let refused = over.iter().any(|d| d.is_error());
+        for d in over {
+            diags.push(d);
+        }
+        if refused {
             return None;
         }
         let root_name = &sources.file(root).name;

@@ -166,6 +166,9 @@ struct ReflectArgs {
 }
 
 #[derive(Args, Debug)]
+// `--module NAME` names the bindings' module here: the module prefixes
+// (`--module PREFIX=DIR` elsewhere) are `--module-prefix`.
+#[command(mut_arg("modules", |a| a.long("module-prefix")))]
 struct BindgenArgs {
     #[arg(value_name = "FILE")]
     file: PathBuf,
@@ -206,12 +209,24 @@ struct CommonArgs {
     /// names and minimums.
     #[arg(long = "limit", value_name = "NAME=N", value_parser = parse_limit)]
     limits: Vec<(umbrac::Limit, u64)>,
+    /// Refuse a program over any guaranteed minimum; by default, going over a
+    /// guarantee that every device in use exceeds is a warning.
+    #[arg(long)]
+    strict_limits: bool,
     /// Let #include reach files outside the input's directory and the -I directories.
     #[arg(long)]
     allow_outside_includes: bool,
     /// daslang's `daslib` directory, for `require daslib/NAME`.
     #[arg(long, value_name = "DIR")]
     daslib: Option<PathBuf>,
+    /// A daslang tree or install, for `require`: its `daslib/`, the prefixes
+    /// its `modules/*/.das_module` files register, its prefix-named folders.
+    #[arg(long, value_name = "DIR", value_parser = umbrac::syntax::modules::parse_daslang_root)]
+    daslang_root: Option<PathBuf>,
+    /// Where `require PREFIX/NAME` finds `NAME.das` (repeatable), e.g.
+    /// `geometry=modules/dasGlsl/glsl`.
+    #[arg(long = "module", value_name = "PREFIX=DIR", value_parser = umbrac::syntax::modules::parse_module_arg)]
+    modules: Vec<(String, PathBuf)>,
     /// How diagnostics are printed.
     #[arg(long, value_enum, default_value_t = MessageFormat::Human)]
     message_format: MessageFormat,
@@ -292,8 +307,11 @@ impl CommonArgs {
                 GlUniformsArg::Blocks => umbrac::GlUniforms::Blocks,
             },
             limits: self.limits.clone(),
+            strict_limits: self.strict_limits,
             allow_outside_includes: self.allow_outside_includes,
             daslib: self.daslib.clone(),
+            daslang_root: self.daslang_root.clone(),
+            modules: self.modules.clone(),
             source_name: None,
         }
     }

@@ -1,20 +1,25 @@
-//! The minimum limits every device of a target guarantees, and what each
-//! entry point (and program) uses of them, counted before anything is
-//! written: a program that goes over one fails to link, or to make a
-//! pipeline, on some device, so it is a compile error that names the
-//! resource, the count and the limit. `--limit NAME=N` compiles for a
-//! stated higher limit.
+//! The limits of each target's devices, and what each entry point (and
+//! program) uses of them, counted before anything is written. Two numbers
+//! per limit: the specification's guaranteed minimum, and, where the
+//! devices still in use report more, the least they report (`Reported`,
+//! each with its source in docs/targets.md, "Device limits"). Over what
+//! devices report, a program fails to link or to make a pipeline: an error
+//! naming the resource, the count and the limit. Over the guarantee only, a
+//! warning naming the guarantee and who cannot run it; `--strict-limits`
+//! (`Options::strict_limits`) makes it an error. `--limit NAME=N` compiles
+//! for a stated limit instead of both.
 //!
-//! Minimums (the GL 3.3 core and GLES 3.0 specifications' implementation
-//! dependent values; WebGL2 guarantees GLES 3.0's; wgpu's `Limits::default()`,
-//! WebGPU's defaults):
+//! Guaranteed minimums (the GL 3.3 core and GLES 3.0 specifications'
+//! implementation dependent values; WebGL2 guarantees GLES 3.0's; wgpu's
+//! `Limits::default()`, WebGPU's defaults, which a device created with
+//! defaults enforces, so they are errors):
 //!
 //! | resource (`--limit` name)        | GL 3.3 | GLES 3.0 / WebGL2 | wgpu |
 //! |----------------------------------|--------|-------------------|------|
 //! | `vertex-attributes`              | 16     | 16                | 16   |
 //! | `varyings` (vectors)             | 15     | 15                | 16   |
-//! | `uniform-vectors` vertex         | 256    | 256               | -    |
-//! | `uniform-vectors` fragment       | 256    | 224               | -    |
+//! | `uniform-vectors` vertex         | 256 (1024 reported) | 256  | -    |
+//! | `uniform-vectors` fragment       | 256 (1024 reported) | 224  | -    |
 //! | `uniform-blocks` per stage       | 12     | 12                | -    |
 //! | `combined-uniform-blocks`        | 24     | 24                | -    |
 //! | `uniform-block-size` (bytes)     | 16384  | 16384             | -    |
@@ -273,6 +278,46 @@ impl Family {
     }
 }
 
+/// Where the devices of a family still in use all report more than the
+/// guarantee: the least they report, and who, for messages (sources in
+/// docs/targets.md, "Device limits").
+#[derive(Clone, Copy)]
+struct Reported {
+    n: u64,
+    /// "the N that ..." in an error over it.
+    who: &'static str,
+    /// What a warning over the guarantee says of the devices it excludes.
+    excluded: &'static str,
+}
+
+impl Family {
+    /// What the devices in use report, where it is more than the guarantee
+    /// (`None`: the guarantee is what some device in use has).
+    fn reported(self, limit: Limit, stage: naga::ShaderStage) -> Option<Reported> {
+        match (self, limit, stage) {
+            // NVIDIA (down to its 340 legacy driver) and Apple's macOS driver
+            // report 4096 components a stage, Mesa 16384; none reports 1024.
+            (Family::Gl330 | Family::Gl430, Limit::UniformVectors, naga::ShaderStage::Vertex | naga::ShaderStage::Fragment) => Some(Reported {
+                n: 1024,
+                who: "GL 3.3 drivers in use report (4096 components on NVIDIA and Apple's macOS driver, 16384 on Mesa)",
+                excluded: "only a GL driver that reports the bare minimum of 1024 components cannot run it; NVIDIA and Apple's macOS driver report 4096, Mesa 16384",
+            }),
+            _ => None,
+        }
+    }
+
+    /// Why a guarantee is also the error, where a device in use has only it.
+    fn hard_note(self, limit: Limit, stage: naga::ShaderStage) -> Option<&'static str> {
+        match (self, limit, stage) {
+            (Family::Es300 | Family::Es310, Limit::UniformVectors, naga::ShaderStage::Vertex) => {
+                Some("Qualcomm Adreno GPUs report exactly 256 (GLES and WebGL2 on Android): the program fails to link there")
+            }
+            (Family::Wgpu, ..) => Some("a WebGPU device created with default limits refuses the pipeline; compiled with `--limit`, the manifest's `required_limits` says what the host must request"),
+            _ => None,
+        }
+    }
+}
+
 /// What one entry point (or program) uses of a resource: the count, and
 /// (when `items` is kept) the declaration of what it uses, in order, with
 /// the running count: the item past the limit is where the error points.
@@ -311,8 +356,9 @@ impl<'a> Use<'a> {
 
 /// Checks every entry point and program of `lowered` against the limits
 /// of each requested target (or the stated `raised` ones), pushing an
-/// error for each limit gone over.
-pub fn check<'a>(lowered: &'a Lowered, targets: &[Target], raised: &[(Limit, u64)], diags: &mut Vec<Diagnostic>) {
+/// error for each limit gone over that devices report, and a warning (an
+/// error if `strict`) for each guarantee gone over within that.
+pub fn check<'a>(lowered: &'a Lowered, targets: &[Target], raised: &[(Limit, u64)], strict: bool, diags: &mut Vec<Diagnostic>) {
     let mut families = Vec::new();
     for t in targets {
         let f = match t {
@@ -334,18 +380,40 @@ pub fn check<'a>(lowered: &'a Lowered, targets: &[Target], raised: &[(Limit, u64
         // `itemised` counts again, keeping the items, for the error.
         let mut report = |limit: Limit, stage: naga::ShaderStage, whose: &dyn Fn() -> String, used: &Use, itemised: &dyn Fn() -> Use<'a>| {
             let Some((minimum, api)) = family.minimum(limit, stage) else { return };
-            let allowed = raised.iter().rev().find(|(l, _)| *l == limit).map_or(minimum, |&(_, n)| n);
-            if used.count <= allowed {
+            let stated = raised.iter().rev().find(|(l, _)| *l == limit).map(|&(_, n)| n);
+            // A stated limit replaces both numbers; strict keeps the guarantee.
+            let reported = family.reported(limit, stage).filter(|r| stated.is_none() && !strict && r.n > minimum);
+            let guaranteed = stated.unwrap_or(minimum);
+            if used.count <= guaranteed {
                 return;
             }
+            let error = reported.is_none_or(|r| used.count > r.n);
+            let allowed = match reported {
+                Some(r) if error => r.n,
+                _ => guaranteed,
+            };
             let used = itemised();
             let Some(&(_, span, name)) = used.items.iter().flatten().find(|(total, ..)| *total > allowed) else { return };
-            let stated = if allowed == minimum { format!("the {minimum} that {} ({api})", family.promise()) } else { format!("the stated limit of {allowed}") };
-            let mut d = Diagnostic::error(format!("{} uses {} {} in {}, over {stated}", whose(), used.count, limit.what(), family.target()), span)
-                .with_label(format!("`{name}` goes over the limit"));
+            let over = match (stated, reported) {
+                (Some(n), _) => format!("the stated limit of {n}"),
+                (None, Some(r)) if error => format!("the {} that {}", r.n, r.who),
+                _ => format!("the {minimum} that {} ({api})", family.promise()),
+            };
+            let message = format!("{} uses {} {} in {}, over {over}", whose(), used.count, limit.what(), family.target());
+            let mut d = match error {
+                true => Diagnostic::error(message, span).with_label(format!("`{name}` goes over the limit")),
+                false => Diagnostic::warning(message, span).with_label(format!("`{name}` goes past the guarantee")),
+            };
             if used.count > used.sum {
                 // Fewer are used than the limit: a location is past it.
                 d = d.with_note(format!("locations count from 0: with {allowed}, the last is {}", allowed.saturating_sub(1)));
+            }
+            if let Some(r) = reported.filter(|_| !error) {
+                d = d.with_note(r.excluded).with_note("`--strict-limits` makes this an error");
+            } else if let Some(r) = family.reported(limit, stage).filter(|_| strict && stated.is_none()) {
+                d = d.with_note(format!("an error because of `--strict-limits`: without it, a warning up to the {} that {}", r.n, r.who));
+            } else if let Some(why) = family.hard_note(limit, stage).filter(|_| stated.is_none()) {
+                d = d.with_note(why);
             }
             diags.push(d.with_note(format!("to compile for devices with more, state their limit: `--limit {}=N`", limit.name())));
         };
@@ -383,6 +451,43 @@ pub fn check<'a>(lowered: &'a Lowered, targets: &[Target], raised: &[(Limit, u64
             }
         }
     }
+}
+
+/// What the WGSL/SPIR-V program needs above WebGPU's default limits, by
+/// their `requiredLimits` names (`maxUniformBuffersPerShaderStage`), the
+/// most any entry point needs; `None` when the defaults hold it. Only a
+/// program compiled with `--limit` gets here needing more: the manifest
+/// says what a host must request, as a default device refuses it.
+pub fn webgpu_requirements(lowered: &Lowered) -> Option<std::collections::BTreeMap<String, u64>> {
+    let mut needs = std::collections::BTreeMap::new();
+    for ep in &lowered.interface.entry_points {
+        for (limit, used) in entry_uses(lowered, ep, Family::Wgpu, false) {
+            let Some((minimum, api)) = Family::Wgpu.minimum(limit, ep.stage) else { continue };
+            if used.count > minimum {
+                let n = needs.entry(camel_case(api)).or_insert(0);
+                *n = used.count.max(*n);
+            }
+        }
+    }
+    (!needs.is_empty()).then_some(needs)
+}
+
+/// wgpu's `Limits` field name as WebGPU spells it: `max_bind_groups` ->
+/// `maxBindGroups`.
+fn camel_case(snake: &str) -> String {
+    let mut out = String::with_capacity(snake.len());
+    let mut upper = false;
+    for c in snake.chars() {
+        match c {
+            '_' => upper = true,
+            c if upper => {
+                out.push(c.to_ascii_uppercase());
+                upper = false;
+            }
+            c => out.push(c),
+        }
+    }
+    out
 }
 
 fn stage_name(stage: naga::ShaderStage) -> &'static str {
@@ -528,6 +633,12 @@ fn buffer_bytes(module: &naga::Module, ty: naga::Handle<naga::Type>) -> u64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn webgpu_names() {
+        assert_eq!(camel_case("max_uniform_buffers_per_shader_stage"), "maxUniformBuffersPerShaderStage");
+        assert_eq!(camel_case("max_compute_workgroup_size_x"), "maxComputeWorkgroupSizeX");
+    }
 
     #[test]
     fn limit_names_round_trip() {

@@ -553,6 +553,7 @@ pub fn build(
         samplers,
         storage_buffers: (!storage_buffers.is_empty()).then_some(storage_buffers),
         storage_images: (!storage_images.is_empty()).then_some(storage_images),
+        required_limits: if targets.iter().any(|t| matches!(t, Target::Wgsl | Target::Spirv)) { super::limits::webgpu_requirements(lowered) } else { None },
     })
 }
 

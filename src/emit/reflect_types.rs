@@ -62,6 +62,12 @@ pub struct Reflection {
     /// Storage images (left out when there are none).
     #[cfg_attr(feature = "deserialize", serde(default))]
     pub storage_images: Option<Vec<StorageImage>>,
+    /// The WebGPU limits (by their `requiredLimits` names) the WGSL/SPIR-V
+    /// program needs above WebGPU's defaults, with the value to request:
+    /// only with `--limit` (left out when it needs none; docs/targets.md,
+    /// "Device limits").
+    #[cfg_attr(feature = "deserialize", serde(default))]
+    pub required_limits: Option<std::collections::BTreeMap<String, u64>>,
 }
 
 /// One program: a vertex and a fragment entry point, by name.
@@ -328,6 +334,7 @@ serialize_struct!(Reflection {
     "samplers": samplers,
     "storage_buffers": storage_buffers?,
     "storage_images": storage_images?,
+    "required_limits": required_limits?,
 });
 
 serialize_struct!(ProgramLink {

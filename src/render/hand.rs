@@ -233,6 +233,7 @@ pub fn reflection() -> Reflection {
         uniform_buffers,
         uniforms,
         structs: vec![],
+        required_limits: None,
         samplers,
         storage_buffers: None,
         storage_images: None,

@@ -51,6 +51,8 @@ pub struct Program {
     /// Required modules that were not found, for the checker's errors
     /// about names nothing defines.
     pub modules_not_found: Vec<MissingModule>,
+    /// Names daslang's builtin-declaring modules declare.
+    pub daslang_builtins: Vec<DaslangBuiltin>,
 }
 
 #[derive(Clone, Debug)]
@@ -333,6 +335,18 @@ pub enum ExprKind {
     Half(f64),
     /// `reinterpret<T>(x)`: `x`'s bits as a `T` of the same size.
     Reinterpret(Ident, Box<Expr>),
+}
+
+/// A name one of daslang's builtin-declaring modules declares
+/// (`syntax::modules::BUILTIN_DECLARING`): umbrac's builtin of that name
+/// is meant, and one umbrac lacks is refused by name.
+#[derive(Clone, Debug)]
+pub struct DaslangBuiltin {
+    pub name: String,
+    /// `shader_lingua_franca`, ...
+    pub module: String,
+    /// The declaration's name.
+    pub span: Span,
 }
 
 /// A required module that was not found, for the checker's errors about

@@ -17,6 +17,7 @@
 pub mod ast;
 pub mod items;
 pub mod lexer;
+mod module_roots;
 pub mod modules;
 pub mod parser;
 pub mod preprocess;
@@ -40,6 +41,10 @@ pub struct ParseOptions {
     /// `--daslib DIR`: daslang's `daslib` directory, for `require daslib/...`
     /// (a list, so that it is empty when not given).
     pub daslib: Vec<PathBuf>,
+    /// `--daslang-root DIR`: a daslang tree or install (`syntax::module_roots`).
+    pub daslang_root: Option<PathBuf>,
+    /// `--module PREFIX=DIR`.
+    pub module_dirs: Vec<(String, PathBuf)>,
 }
 
 /// Reads a source file as UTF-8 text (at most [`MAX_FILE_SIZE`] bytes).
@@ -167,6 +172,8 @@ pub struct Unit {
     pub tokens: Vec<token::Token>,
     pub items: Vec<items::RawItem>,
     pub modules_not_found: Vec<modules::MissingModule>,
+    /// Names daslang's builtin-declaring modules declare.
+    pub daslang_builtins: Vec<modules::DaslangBuiltin>,
     /// Paths `#include`s and `require`s looked at and found no file at:
     /// one appearing there would change the unit (a rerun's check,
     /// [`crate::rerun`]).
@@ -178,8 +185,8 @@ pub struct Unit {
 pub fn preprocess_unit(map: &mut SourceMap, root: FileId, opts: &ParseOptions, diags: &mut Diagnostics) -> Unit {
     let (mut tokens, mut probed) = preprocess::preprocess_probing(map, root, opts, diags);
     let mut items = items::split(&tokens, map);
-    let modules_not_found = modules::load(map, root, &mut tokens, &mut items, opts, diags, &mut probed);
-    Unit { tokens, items, modules_not_found, probed }
+    let loaded = modules::load(map, root, &mut tokens, &mut items, opts, diags, &mut probed);
+    Unit { tokens, items, modules_not_found: loaded.missing, daslang_builtins: loaded.builtins, probed }
 }
 
 /// The rest of [`parse`] after [`preprocess_unit`]: keeps what shaders
@@ -188,10 +195,10 @@ pub fn preprocess_unit(map: &mut SourceMap, root: FileId, opts: &ParseOptions, d
 pub fn parse_unit(map: &SourceMap, root: FileId, unit: Unit, opts: &ParseOptions, diags: &mut Diagnostics) -> ast::Program {
     let base = map.file(root).base;
     let root_span = Span::new(base, base);
-    let Unit { tokens: toks, items: raw, modules_not_found, .. } = unit;
+    let Unit { tokens: toks, items: raw, modules_not_found, daslang_builtins, .. } = unit;
     let selected = items::select(&raw, &toks, map, &opts.entries, root_span, diags);
     let texts = token::Texts::new(map);
-    let mut program = ast::Program { items: Vec::with_capacity(selected.len()), modules_not_found };
+    let mut program = ast::Program { items: Vec::with_capacity(selected.len()), modules_not_found, daslang_builtins };
     for i in selected {
         let item = &raw[i];
         // Lexing errors count only inside items that are parsed.

@@ -1,5 +1,5 @@
 //! daslang modules: `require NAME`, `require dir/name`, `require daslib/x`,
-//! `require ./file.das`.
+//! `require PREFIX/x`, `require ./file.das`, `require ../dir/file`.
 //!
 //! A required module that is a file is read, preprocessed and split into
 //! top-level items like the input, and its items join the input's: a
@@ -9,25 +9,35 @@
 //! `require`s are followed only once something in it is reached. Entry
 //! points are the input's: a module's `[vertex_program]`s are its own.
 //!
-//! Where a module is looked for: `NAME.das` beside the requiring file, then
-//! in each `-I` directory; `daslib/NAME` in the `--daslib` directory;
-//! `./x.das` and `../x.das` beside the requiring file, `%/x.das` in the
-//! daslang root (the `--daslib` directory's parent). daslang's builtin
-//! modules (`math`, `strings`, ...) are no files: umbrac's builtins are
-//! `math`'s shader part, and the rest is host code.
+//! Where a module is looked for, in daslang's order ([`candidates`]):
+//! daslang's builtin modules (`math`, `strings`, ...) are no files;
+//! `./x` and `../x` are relative to the requiring file and `%/x` to the
+//! daslang root; `daslib/x` is in the daslib root; `PREFIX/x` goes through
+//! `--module`s and a daslang tree's registrations and prefix folders
+//! (`module_roots`); then `x.das` beside the requiring file and in each
+//! `-I` directory.
+//!
+//! daslang's builtin-declaring modules ([`BUILTIN_DECLARING`]:
+//! `shader_lingua_franca`, `glsl_common`, `spirv_builtins`, known by their
+//! `module` line) are not user code: the names they declare are recorded
+//! for the checker (umbrac's builtin of that name is meant, and one umbrac
+//! lacks is refused by name) and their items never join the input's.
 //!
 //! A module that cannot be found is not an error by itself: daslang files
-//! require host libraries (`glfw/glfw_boost`, `opengl/opengl_boost`) that
+//! require host libraries (`glfw/glfw_boost`, `live/live_gc`) that
 //! shaders never use. It is one when a shader uses a name nothing defines:
 //! the checker's error shows each module that was not found, at its
-//! `require`, with where it was looked for. A file path (`./x.das`) or a
-//! `daslib/` module with `--daslib` given that is missing is an error at
-//! once, as is a module that exists but cannot be read.
+//! `require`, with where it was looked for. A relative path, a `daslib/`
+//! module with a daslib root given, or a name under a prefix umbrac knows
+//! that is missing is an error at once, as is a module that exists but
+//! cannot be read.
 
+use std::collections::VecDeque;
 use std::ops::Range;
 use std::path::{Path, PathBuf};
 
-pub use super::ast::MissingModule;
+pub use super::ast::{DaslangBuiltin, MissingModule};
+use super::module_roots::Roots;
 use super::items::{self, ItemKind, RawItem};
 use super::token::{TokKind, Token, P};
 use super::ParseOptions;
@@ -40,7 +50,7 @@ pub const MAX_MODULE_DEPTH: usize = 64;
 pub const MAX_MODULES: usize = 1024;
 
 /// daslang's builtin (C++) modules: no files to read.
-const BUILTIN_MODULES: &[&str] = &["builtin", "math", "strings", "fio", "rtti", "ast", "debugapi", "jobque", "network", "uriparser", "$"];
+const BUILTIN_MODULES: &[&str] = &["builtin", "math", "strings", "fio", "rtti", "ast", "debugapi", "jobque", "network", "uriparser", "glfw", "opengl", "stbimage", "$"];
 
 /// The first path segments of daslang's host-side module packs (windows,
 /// GL calls, live reload, ...), which no shader reaches: not worth a hint
@@ -104,23 +114,71 @@ fn parent_dir(p: &Path) -> PathBuf {
     }
 }
 
-/// Where a module name may be: the files to try, in order, and what to do
-/// when none exists.
-fn candidates(name: &str, dir: &Path, opts: &ParseOptions) -> (Vec<PathBuf>, &'static str) {
-    let file_form = (name.starts_with("./") || name.starts_with("../") || name.starts_with("%/")) && name.ends_with(".das");
-    if file_form {
-        return match name.strip_prefix("%/") {
-            Some(rest) => (opts.daslib.iter().map(|d| parent_dir(d).join(rest)).collect(), "`%/` is the daslang root: pass `--daslib DIR` (its `daslib` directory)"),
-            None => (vec![dir.join(name)], "check the path: it is relative to the requiring file"),
-        };
+/// Where a module name may be.
+struct Candidates {
+    /// The files to try, in order.
+    files: Vec<PathBuf>,
+    /// What to do when none exists.
+    help: &'static str,
+    /// A missing file is an error at once: a file path, or a name under a
+    /// prefix umbrac knows (`daslib/` with a daslib directory, a
+    /// `--module`, a prefix of the daslang tree).
+    explicit: bool,
+    /// `./x`, `../x`: relative to the requiring file, followed wherever it
+    /// leads, as daslang follows it.
+    relative: bool,
+}
+
+/// With `.das` added unless it ends so.
+fn das_file(name: &str) -> String {
+    if name.ends_with(".das") {
+        name.to_string()
+    } else {
+        format!("{name}.das")
     }
-    if let Some(rest) = name.strip_prefix("daslib/") {
-        return (opts.daslib.iter().map(|d| d.join(format!("{rest}.das"))).collect(), "pass `--daslib DIR` with daslang's `daslib` directory");
+}
+
+/// Where a module name may be, in daslang's order: a relative path from
+/// the requiring file; `daslib/` in the daslib root; a prefix's `--module`,
+/// registrations and folders; then the requiring file's folder and the
+/// `-I` directories. daslang separates a name's parts with `/` or `.`.
+fn candidates(name: &str, dir: &Path, roots: &Roots, opts: &ParseOptions) -> Candidates {
+    if name.starts_with("./") || name.starts_with("../") {
+        return Candidates { files: vec![dir.join(das_file(name))], help: "check the path: it is relative to the requiring file", explicit: true, relative: true };
     }
-    let file = format!("{name}.das");
-    let mut out = vec![dir.join(&file)];
-    out.extend(opts.include_dirs.iter().map(|d| d.join(&file)));
-    (out, "add the directory holding it with `-I DIR`")
+    if let Some(rest) = name.strip_prefix("%/") {
+        let help = "`%/` is the daslang root: pass `--daslang-root DIR`";
+        return Candidates { files: roots.root().map(|r| r.join(das_file(rest))).into_iter().collect(), help, explicit: true, relative: false };
+    }
+    // `a.b` is `a/b`; a name with a `..` part or a `.das` file is a path.
+    let name = if name.ends_with(".das") || name.contains("..") { name.to_string() } else { name.replace('.', "/") };
+    let beside = |files: &mut Vec<PathBuf>| {
+        let file = das_file(&name);
+        files.push(dir.join(&file));
+        files.extend(opts.include_dirs.iter().map(|d| d.join(&file)));
+    };
+    let Some((prefix, rest)) = name.split_once('/') else {
+        let mut files = Vec::new();
+        beside(&mut files);
+        return Candidates { files, help: "add the directory holding it with `-I DIR`", explicit: false, relative: false };
+    };
+    let found = roots.lookup(prefix, rest);
+    let mut files = found.files;
+    let help = if prefix == "daslib" {
+        if found.known_prefix {
+            "check the module's name and the `--daslang-root` or `--daslib` directory"
+        } else {
+            "pass `--daslang-root DIR` (a daslang tree or install) or `--daslib DIR`"
+        }
+    } else if found.known_prefix {
+        "check the module's name and where its prefix points (`--module PREFIX=DIR`, `--daslang-root DIR`)"
+    } else {
+        "pass `--daslang-root DIR`, state its prefix with `--module PREFIX=DIR`, or add the directory holding it with `-I DIR`"
+    };
+    if prefix != "daslib" {
+        beside(&mut files);
+    }
+    Candidates { files, help, explicit: found.known_prefix, relative: false }
 }
 
 /// Whether a missing module named so can hold shader code (else it is a
@@ -128,6 +186,84 @@ fn candidates(name: &str, dir: &Path, opts: &ParseOptions) -> (Vec<PathBuf>, &'s
 fn may_hold_shader_code(name: &str) -> bool {
     let head = name.split('/').next().unwrap_or(name);
     !BUILTIN_MODULES.contains(&name) && (!name.contains('/') || !HOST_PACKS.contains(&head))
+}
+
+/// daslang's modules that declare its shader builtins, by their `module`
+/// line (as dasGlsl recognises them, by module name): read as declarations
+/// of builtins, never as user code. Their bodies are CPU stand-ins that
+/// daslang's emitters never translate.
+pub const BUILTIN_DECLARING: &[&str] = &["shader_lingua_franca", "glsl_common", "spirv_builtins"];
+
+/// The name of a file's `module NAME` line, if it has one.
+fn module_name<'a>(toks: &[Token], items: &[RawItem], map: &'a SourceMap) -> Option<&'a str> {
+    items.iter().filter(|i| i.kind == ItemKind::Other).find_map(|i| {
+        let first = toks.get(i.body.start)?;
+        let name = toks.get(i.body.start + 1)?;
+        (first.kind == TokKind::Ident && map.slice(first.span) == "module" && name.kind == TokKind::Ident).then(|| map.slice(name.span))
+    })
+}
+
+/// Reads a `--module PREFIX=DIR` argument: PREFIX is a module prefix
+/// (`[A-Za-z0-9_]+`, what `require PREFIX/NAME` starts with), DIR is not
+/// empty.
+pub fn parse_module_arg(s: &str) -> Result<(String, PathBuf), String> {
+    let bad = || format!("`{s}` is not PREFIX=DIR (e.g. `--module geometry=modules/dasGlsl/glsl`)");
+    let (prefix, dir) = s.split_once('=').ok_or_else(bad)?;
+    if prefix.is_empty() || !prefix.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') || dir.is_empty() {
+        return Err(bad());
+    }
+    if prefix == "daslib" {
+        return Err("`daslib` is daslang's standard library: give its directory with `--daslang-root` or `--daslib`".into());
+    }
+    Ok((prefix.to_string(), PathBuf::from(dir)))
+}
+
+/// Reads a `--daslang-root DIR` argument: a directory (a daslang tree or
+/// install, holding `daslib/` and `modules/`).
+pub fn parse_daslang_root(s: &str) -> Result<PathBuf, String> {
+    let dir = PathBuf::from(s);
+    if !dir.is_dir() {
+        return Err(format!("`{s}` is not a directory (want a daslang tree or install, holding `daslib/` and `modules/`)"));
+    }
+    if !dir.join("daslib").is_dir() && !dir.join("modules").is_dir() {
+        return Err(format!("`{s}` holds neither `daslib/` nor `modules/`: it is not a daslang tree or install"));
+    }
+    Ok(dir)
+}
+
+/// Appends a module's tokens to `toks` and its items to `raw`. A
+/// builtin-declaring module ([`BUILTIN_DECLARING`]) gives its names to
+/// `builtins` and only its `require`s to `raw` (items never parsed); then
+/// this returns true.
+fn join_items(module_toks: Vec<Token>, map: &SourceMap, toks: &mut Vec<Token>, raw: &mut Vec<RawItem>, builtins: &mut Vec<DaslangBuiltin>) -> bool {
+    let base = toks.len();
+    let split = items::split(&module_toks, map);
+    let declares = module_name(&module_toks, &split, map).filter(|n| BUILTIN_DECLARING.contains(n)).map(str::to_string);
+    for mut item in split {
+        if let Some(module) = &declares {
+            for k in item.names() {
+                let t = &module_toks[k];
+                builtins.push(DaslangBuiltin { name: map.slice(t.span).to_string(), module: module.clone(), span: t.span });
+            }
+            if item.kind != ItemKind::Other {
+                continue;
+            }
+        }
+        let shift = |r: &mut Range<usize>| *r = r.start + base..r.end + base;
+        shift(&mut item.annots);
+        shift(&mut item.body);
+        shift(&mut item.names);
+        for k in &mut item.block_names {
+            *k += base;
+        }
+        // A module's entry points are its own; its shader globals
+        // count only where a shader reaches them by name.
+        item.entry = false;
+        item.from_module = true;
+        raw.push(item);
+    }
+    toks.extend(module_toks);
+    declares.is_some()
 }
 
 /// One module file read.
@@ -139,46 +275,66 @@ struct Module {
     expanded: bool,
 }
 
+/// What [`load`] found besides items.
+#[derive(Default)]
+pub(super) struct Loaded {
+    pub missing: Vec<MissingModule>,
+    /// Names daslang's builtin-declaring modules declare.
+    pub builtins: Vec<DaslangBuiltin>,
+}
+
 /// Reads the modules the program's `require`s name as far as shaders reach
 /// into them: appends their tokens to `toks` and their items to `raw`
-/// (marked `from_module`), and returns the modules not found.
+/// (marked `from_module`), and returns the modules not found and the
+/// names daslang's builtin-declaring modules declare.
 ///
 /// `probed` gets every path a `require` looked at and found no module file
 /// at, before the one it took (or at all).
-pub(super) fn load(map: &mut SourceMap, root: FileId, toks: &mut Vec<Token>, raw: &mut Vec<RawItem>, opts: &ParseOptions, diags: &mut Diagnostics, probed: &mut Vec<PathBuf>) -> Vec<MissingModule> {
-    let mut missing: Vec<MissingModule> = Vec::new();
+pub(super) fn load(map: &mut SourceMap, root: FileId, toks: &mut Vec<Token>, raw: &mut Vec<RawItem>, opts: &ParseOptions, diags: &mut Diagnostics, probed: &mut Vec<PathBuf>) -> Loaded {
+    let mut out = Loaded::default();
     let mut modules: Vec<Module> = Vec::new();
     let mut seen: Vec<PathBuf> = Vec::new();
     // The input's requires, then those of each module once it is reached.
-    let mut pending: Vec<(usize, usize)> = (0..raw.len()).map(|i| (i, 0)).collect();
+    let mut pending: VecDeque<(usize, usize)> = (0..raw.len()).map(|i| (i, 0)).collect();
     let root_dir = map.file(root).path.as_deref().map(parent_dir).unwrap_or_else(|| PathBuf::from("."));
+    let mut roots: Option<Roots> = None;
     let mut allowed: Option<Vec<PathBuf>> = None;
     loop {
-        for (i, depth) in std::mem::take(&mut pending) {
+        while let Some((i, depth)) = pending.pop_front() {
             let Some(req) = require_of(toks, &raw[i], map) else { continue };
             // daslang's builtin modules come first, whatever files exist.
             if BUILTIN_MODULES.contains(&req.name.as_str()) {
                 continue;
             }
+            let roots = roots.get_or_insert_with(|| {
+                let mut r = Roots::new(opts);
+                for (path, text) in std::mem::take(&mut r.descriptors) {
+                    map.add(path.display().to_string(), Some(path), text, None);
+                }
+                r
+            });
             let requiring_dir = map.file_of(req.span.start).and_then(|f| map.file(f).path.as_deref().map(parent_dir)).unwrap_or_else(|| root_dir.clone());
-            let (cands, help) = candidates(&req.name, &requiring_dir, opts);
-            let taken = cands.iter().position(|p| p.is_file());
-            probed.extend(cands[..taken.unwrap_or(cands.len())].iter().cloned());
-            let Some(path) = taken.map(|i| cands[i].clone()) else {
-                if let Some(dir) = cands.iter().find(|p| p.is_dir()) {
+            let cands = candidates(&req.name, &requiring_dir, roots, opts);
+            let taken = cands.files.iter().position(|p| p.is_file());
+            probed.extend(cands.files[..taken.unwrap_or(cands.files.len())].iter().cloned());
+            let Some(path) = taken.map(|i| cands.files[i].clone()) else {
+                if let Some(dir) = cands.files.iter().find(|p| p.is_dir()) {
                     diags.push(Diagnostic::error(format!("`{}` is a directory, not a module file", dir.display()), req.span).with_label("required here"));
                     continue;
                 }
-                let explicit = (req.name.starts_with("./") || req.name.starts_with("../") || req.name.starts_with("%/")) || (req.name.starts_with("daslib/") && !opts.daslib.is_empty());
-                if explicit {
+                if cands.explicit {
                     let mut d = Diagnostic::error(format!("cannot find module `{}`", req.name), req.span).with_label("not found");
-                    for c in &cands {
+                    for c in &cands.files {
                         d = d.with_note(format!("searched `{}`", c.display()));
                     }
-                    let help = if req.name.starts_with("daslib/") { "check the module's name and the `--daslib` directory" } else { help };
-                    diags.push(d.with_note(format!("help: {help}")));
-                } else if may_hold_shader_code(&req.name) && !missing.iter().any(|m| m.name == req.name) {
-                    missing.push(MissingModule { name: req.name, span: req.span, searched: cands, help });
+                    let registered = req.name.split_once('/').map(|(p, _)| roots.registered_under(p)).unwrap_or_default();
+                    if !registered.is_empty() {
+                        let prefix = req.name.split_once('/').map_or("", |p| p.0);
+                        d = d.with_note(format!("the daslang tree registers `{prefix}/` for: {}", registered.join(", ")));
+                    }
+                    diags.push(d.with_note(format!("help: {}", cands.help)));
+                } else if may_hold_shader_code(&req.name) && !out.missing.iter().any(|m| m.name == req.name) {
+                    out.missing.push(MissingModule { name: req.name, span: req.span, searched: cands.files, help: cands.help });
                 }
                 continue;
             };
@@ -197,10 +353,10 @@ pub(super) fn load(map: &mut SourceMap, root: FileId, toks: &mut Vec<Token>, raw
                 continue; // one module, however often required
             }
             let allowed = allowed.get_or_insert_with(|| {
-                std::iter::once(&root_dir).chain(&opts.include_dirs).chain(&opts.daslib).filter_map(|d| std::fs::canonicalize(d).ok()).collect()
+                std::iter::once(&root_dir).chain(&opts.include_dirs).chain(roots.dirs()).filter_map(|d| std::fs::canonicalize(d).ok()).collect()
             });
-            if !opts.allow_outside_includes && !allowed.iter().any(|a| canon.starts_with(a)) {
-                let d = Diagnostic::error(format!("`require {}` reaches outside the input's directory and the include and daslib directories", req.name), req.span)
+            if !opts.allow_outside_includes && !cands.relative && !allowed.iter().any(|a| canon.starts_with(a)) {
+                let d = Diagnostic::error(format!("`require {}` reaches outside the input's directory and the include, module and daslang directories", req.name), req.span)
                     .with_label("outside the allowed directories")
                     .with_note(format!("it resolves to `{}`", canon.display()))
                     .with_note("help: add its directory with `-I DIR`, or pass `--allow-outside-includes` to permit it");
@@ -222,24 +378,14 @@ pub(super) fn load(map: &mut SourceMap, root: FileId, toks: &mut Vec<Token>, raw
             };
             let id = map.add(path.display().to_string(), Some(path.clone()), text, Some(req.site));
             let module_toks = super::preprocess::preprocess(map, id, opts, diags);
-            let base = toks.len();
             let first_item = raw.len();
-            for mut item in items::split(&module_toks, map) {
-                let shift = |r: &mut Range<usize>| *r = r.start + base..r.end + base;
-                shift(&mut item.annots);
-                shift(&mut item.body);
-                shift(&mut item.names);
-                for k in &mut item.block_names {
-                    *k += base;
-                }
-                // A module's entry points are its own; its shader globals
-                // count only where a shader reaches them by name.
-                item.entry = false;
-                item.from_module = true;
-                raw.push(item);
+            let declares_builtins = join_items(module_toks, map, toks, raw, &mut out.builtins);
+            if declares_builtins {
+                // Its own requires (the lingua franca) are followed now.
+                pending.extend((first_item..raw.len()).map(|i| (i, depth + 1)));
+            } else {
+                modules.push(Module { items: first_item..raw.len(), depth: depth + 1, expanded: false });
             }
-            toks.extend(module_toks);
-            modules.push(Module { items: first_item..raw.len(), depth: depth + 1, expanded: false });
         }
         if modules.iter().all(|m| m.expanded) {
             break;
@@ -256,7 +402,7 @@ pub(super) fn load(map: &mut SourceMap, root: FileId, toks: &mut Vec<Token>, raw
             break;
         }
     }
-    missing
+    out
 }
 
 #[cfg(test)]
@@ -281,14 +427,30 @@ mod tests {
 
     #[test]
     fn where_modules_are_looked_for() {
-        let opts = ParseOptions { include_dirs: vec![PathBuf::from("inc")], daslib: vec![PathBuf::from("das/daslib")], ..Default::default() };
+        let opts = ParseOptions { include_dirs: vec![PathBuf::from("inc")], daslib: vec![PathBuf::from("das/daslib")], module_dirs: vec![("pack".into(), PathBuf::from("p"))], ..Default::default() };
+        let roots = Roots::new(&opts);
         let dir = Path::new("src");
-        assert_eq!(candidates("shaderlib/noise", dir, &opts).0, [PathBuf::from("src/shaderlib/noise.das"), PathBuf::from("inc/shaderlib/noise.das")]);
-        assert_eq!(candidates("daslib/math_boost", dir, &opts).0, [PathBuf::from("das/daslib/math_boost.das")]);
-        assert_eq!(candidates("./x.das", dir, &opts).0, [PathBuf::from("src/./x.das")]);
-        assert_eq!(candidates("%/modules/x.das", dir, &opts).0, [PathBuf::from("das/modules/x.das")]);
-        assert!(candidates("daslib/math_boost", dir, &ParseOptions::default()).0.is_empty());
-        assert!(!may_hold_shader_code("glfw/glfw_boost") && !may_hold_shader_code("math"));
-        assert!(may_hold_shader_code("shaderlib/noise") && may_hold_shader_code("daslib/math_boost") && may_hold_shader_code("glfw"));
+        let files = |name: &str| candidates(name, dir, &roots, &opts).files;
+        assert_eq!(files("shaderlib/noise"), [PathBuf::from("src/shaderlib/noise.das"), PathBuf::from("inc/shaderlib/noise.das")]);
+        assert_eq!(files("shaderlib.noise"), files("shaderlib/noise"));
+        assert_eq!(files("daslib/math_boost"), [PathBuf::from("das/daslib/math_boost.das")]);
+        assert_eq!(files("./x.das"), [PathBuf::from("src/./x.das")]);
+        assert_eq!(files("../lib/x"), [PathBuf::from("src/../lib/x.das")]);
+        assert_eq!(files("%/modules/x.das"), [PathBuf::from("das/modules/x.das")]);
+        assert_eq!(files("pack/x")[0], PathBuf::from("p/x.das"));
+        assert!(candidates("pack/x", dir, &roots, &opts).explicit && !candidates("other/x", dir, &roots, &opts).explicit);
+        assert!(candidates("../x", dir, &roots, &opts).relative && !candidates("shaderlib/noise", dir, &roots, &opts).relative);
+        let bare = ParseOptions::default();
+        assert!(candidates("daslib/math_boost", dir, &Roots::new(&bare), &bare).files.is_empty());
+        assert!(!may_hold_shader_code("glfw/glfw_boost") && !may_hold_shader_code("math") && !may_hold_shader_code("glfw"));
+        assert!(may_hold_shader_code("shaderlib/noise") && may_hold_shader_code("daslib/math_boost"));
+    }
+
+    #[test]
+    fn module_arguments() {
+        assert_eq!(parse_module_arg("geometry=a/b"), Ok(("geometry".to_string(), PathBuf::from("a/b"))));
+        for bad in ["geometry", "=a", "geometry=", "a/b=c", "daslib=x"] {
+            assert!(parse_module_arg(bad).is_err(), "{bad}");
+        }
     }
 }

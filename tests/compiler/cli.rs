@@ -362,3 +362,32 @@ fn compile_a_directory() {
     assert_eq!(code(&o), 1, "{}", stderr(&o));
     assert!(stderr(&o).contains("is an output of both"), "{}", stderr(&o));
 }
+
+/// A program over a guarantee that every device in use exceeds compiles
+/// with a located warning (on stderr, or a JSON line on stdout) and exit
+/// status 0, every time (a cache never hides it); with `--strict-limits`
+/// it is an error, exit 1, nothing written.
+#[test]
+fn a_device_limit_warning_is_shown_and_fails_only_when_strict() {
+    let d = tempfile::tempdir().unwrap();
+    std::fs::copy(repo().join("tests/support/skinning_palette.das"), d.path().join("skin.das")).unwrap();
+    let message = "vertex entry point `skin_vs` uses 268 uniform vectors in GLSL 330, over the 256 that GL 3.3 core guarantees";
+    for _ in 0..2 {
+        let o = umbrac(&["compile", "skin.das", "--target", "glsl330", "-o", "out"], d.path());
+        assert_eq!(code(&o), 0, "{}", stderr(&o));
+        assert!(stderr(&o).contains(&format!("warning: {message}")) && stderr(&o).contains("skin.das:9:14"), "{}", stderr(&o));
+    }
+    assert!(d.path().join("out/skin_vs.330.vert").exists());
+    let o = umbrac(&["compile", "skin.das", "--target", "glsl330", "-o", "json", "--message-format", "json"], d.path());
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    let lines: Vec<serde_json::Value> = stdout(&o).lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    assert_eq!(lines.len(), 1, "{}", stdout(&o));
+    assert_eq!(lines[0]["severity"], "warning");
+    assert!(lines[0]["message"].as_str().unwrap().starts_with(message), "{}", lines[0]);
+    assert_eq!((lines[0]["location"]["line"].as_u64(), lines[0]["location"]["column"].as_u64()), (Some(9), Some(14)));
+    assert!(d.path().join("json/skin_vs.330.vert").exists());
+    let o = umbrac(&["compile", "skin.das", "--target", "glsl330", "--strict-limits", "-o", "strict"], d.path());
+    assert_eq!(code(&o), 1, "{}", stderr(&o));
+    assert!(stderr(&o).contains(&format!("error: {message}")), "{}", stderr(&o));
+    assert!(!d.path().join("strict").exists() || snapshot(&d.path().join("strict")).is_empty(), "a refused compile writes nothing");
+}

@@ -185,3 +185,135 @@ fn a_location_past_the_limit_is_over_it_however_few_are_used() {
         assert!(compile(last, &[t], &[]).result.is_some(), "{t:?}");
     }
 }
+
+/// A vertex program with a 64-joint skinning palette: 268 uniform vectors,
+/// over the 256 GL 3.3 and GLES 3.0 guarantee.
+const SKINNING: &str = include_str!("../support/skinning_palette.das");
+
+fn warnings(c: &Compilation) -> Vec<&umbrac::Diagnostic> {
+    c.diagnostics.iter().filter(|d| d.severity == umbrac::Severity::Warning).collect()
+}
+
+#[test]
+fn a_skinning_palette_over_the_gl_guarantee_is_a_warning_unless_strict() {
+    // GL 3.3 drivers in use all report at least 1024 vectors: a located
+    // warning naming the guarantee, and the outputs.
+    let c = compile(SKINNING, &[Target::Glsl330], &[]);
+    assert!(c.result.is_some() && errors(&c).is_empty(), "{}", c.render_diagnostics());
+    let w = warnings(&c);
+    assert_eq!(w.len(), 1, "{}", c.render_diagnostics());
+    assert!(w[0].message.starts_with("vertex entry point `skin_vs` uses 268 uniform vectors in GLSL 330, over the 256 that GL 3.3 core guarantees"), "{}", w[0].message);
+    let span = w[0].span.expect("located");
+    assert_eq!(&SKINNING[span.start as usize..span.end as usize], "u_view_proj", "the first uniform past 256");
+    assert!(w[0].notes.iter().any(|n| n.contains("1024 components cannot run it")), "{:?}", w[0].notes);
+    assert!(w[0].notes.iter().any(|n| n.contains("--strict-limits")), "{:?}", w[0].notes);
+    // Strict: the same count, an error, nothing compiled.
+    let strict = Options { targets: vec![Target::Glsl330], strict_limits: true, ..Options::default() };
+    let c = compile_source("limits.das", SKINNING, &strict);
+    let e = errors(&c);
+    assert!(c.result.is_none() && e.len() == 1 && warnings(&c).is_empty(), "{}", c.render_diagnostics());
+    assert!(e[0].starts_with("vertex entry point `skin_vs` uses 268 uniform vectors in GLSL 330, over the 256 that GL 3.3 core guarantees (GL_MAX_VERTEX_UNIFORM_COMPONENTS / 4)"), "{e:?}");
+    assert!(c.diagnostics[0].notes.iter().any(|n| n.contains("because of `--strict-limits`")), "{:?}", c.diagnostics[0].notes);
+    // A stated limit replaces both: no warning, strict or not.
+    for strict_limits in [false, true] {
+        let stated = Options { targets: vec![Target::Glsl330], limits: vec![(Limit::UniformVectors, 268)], strict_limits, ..Options::default() };
+        let c = compile_source("limits.das", SKINNING, &stated);
+        assert!(c.result.is_some() && c.diagnostics.is_empty(), "strict {strict_limits}: {}", c.render_diagnostics());
+    }
+    // WGSL/SPIR-V hold the loose uniforms in a buffer: nothing to say.
+    let c = compile(SKINNING, &[Target::Wgsl, Target::Spirv], &[]);
+    assert!(c.result.is_some() && c.diagnostics.is_empty(), "{}", c.render_diagnostics());
+}
+
+#[test]
+fn the_skinning_palette_is_refused_on_gles_where_adreno_reports_only_256() {
+    // GLES 3.0 / WebGL2: Adreno GPUs report exactly the guarantee, so it
+    // stays an error, with or without strict.
+    for strict_limits in [false, true] {
+        for targets in [vec![Target::Gles300], vec![]] {
+            let opts = Options { targets: targets.clone(), strict_limits, ..Options::default() };
+            let c = compile_source("limits.das", SKINNING, &opts);
+            // (By default GLSL 330 is also requested: a warning there, an
+            // error too when strict.)
+            let e: Vec<String> = errors(&c).into_iter().filter(|m| m.contains("GLSL ES 3.00")).collect();
+            assert!(c.result.is_none() && e.len() == 1, "{targets:?} strict {strict_limits}: {}", c.render_diagnostics());
+            assert!(e[0].contains("uses 268 uniform vectors in GLSL ES 3.00, over the 256 that GLES 3.0 and WebGL2 guarantee (GL_MAX_VERTEX_UNIFORM_VECTORS)"), "{e:?}");
+            let d = c.diagnostics.iter().find(|d| d.is_error() && d.message.contains("GLSL ES 3.00")).unwrap();
+            assert!(d.notes.iter().any(|n| n.contains("Adreno")), "{:?}", d.notes);
+        }
+    }
+    let c = compile(SKINNING, &[Target::Gles300], &[(Limit::UniformVectors, 1024)]);
+    assert!(c.result.is_some() && c.diagnostics.is_empty(), "{}", c.render_diagnostics());
+}
+
+#[test]
+fn over_what_gl_drivers_report_is_an_error_by_default() {
+    // 1031 vectors in a vertex and in a fragment program: over the 1024
+    // the GL 3.3 drivers in use report, an error at the uniform past it.
+    let decls = "var @uniform u_big : float4[1030]\nvar @uniform u_i : int";
+    let vs = format!("{decls}\n[vertex_program]\ndef vs {{\n    gl_Position = u_big[u_i]\n}}\n");
+    let fs = frag(decls, "    s += u_big[u_i].x");
+    for (src, stage) in [(vs.as_str(), "vertex entry point `vs`"), (fs.as_str(), "fragment entry point `fs`")] {
+        for t in [Target::Glsl330, Target::Glsl430] {
+            let c = compile(src, &[t], &[]);
+            let e = errors(&c);
+            let name = if t == Target::Glsl330 { "GLSL 330" } else { "GLSL 430" };
+            assert!(c.result.is_none() && e.len() == 1 && warnings(&c).is_empty(), "{t:?}: {}", c.render_diagnostics());
+            assert!(e[0].starts_with(&format!("{stage} uses 1031 uniform vectors in {name}, over the 1024 that GL 3.3 drivers in use report")), "{e:?}");
+            let span = c.diagnostics[0].span.expect("located");
+            assert_eq!(&src[span.start as usize..span.end as usize], "u_big", "{t:?}");
+            assert!(c.diagnostics[0].notes.iter().any(|n| n.contains("--limit uniform-vectors=N")), "{:?}", c.diagnostics[0].notes);
+        }
+        assert!(compile(src, &[Target::Glsl330], &[(Limit::UniformVectors, 1031)]).result.is_some());
+    }
+}
+
+#[test]
+fn hard_limits_stay_errors_without_strict() {
+    // Limits some device in use has only the guarantee of: errors by
+    // default, the same as strict, with no warning before them.
+    let src = struct_uniforms(13);
+    for strict_limits in [false, true] {
+        for t in each_target() {
+            let opts = Options { targets: vec![t], strict_limits, ..Options::default() };
+            let c = compile_source("limits.das", &src, &opts);
+            assert!(c.result.is_none() && errors(&c).len() == 1 && warnings(&c).is_empty(), "{t:?}: {}", c.render_diagnostics());
+        }
+    }
+    // WebGPU's defaults are what a default device enforces: the note says
+    // the host must ask for more.
+    let c = compile(&src, &[Target::Wgsl], &[]);
+    assert!(c.diagnostics[0].notes.iter().any(|n| n.contains("`required_limits`")), "{:?}", c.diagnostics[0].notes);
+}
+
+#[test]
+fn the_manifest_lists_the_webgpu_limits_a_stated_program_needs() {
+    // 13 uniform buffers: WebGPU's default device has 12. Stated, it
+    // compiles, and the manifest says what the host must request.
+    let src = struct_uniforms(13);
+    let c = compile(&src, &[Target::Wgsl, Target::Spirv], &[(Limit::UniformBuffers, 16)]);
+    let r = &c.result.as_ref().expect("compiles for the stated limit").reflection;
+    let needs = r.required_limits.as_ref().expect("required_limits");
+    assert_eq!(needs.iter().map(|(k, v)| (k.as_str(), *v)).collect::<Vec<_>>(), [("maxUniformBuffersPerShaderStage", 13)]);
+    let json = c.result.as_ref().unwrap().artifact("limits.reflect.json").unwrap().text().into_owned();
+    assert!(json.contains("\"required_limits\": {\n    \"maxUniformBuffersPerShaderStage\": 13\n  }"), "{json}");
+    // Within the defaults, or with no WebGPU target, the field is left out.
+    for (src, targets) in [(struct_uniforms(12), &[Target::Wgsl][..]), (src.clone(), &[Target::Glsl330][..])] {
+        let limits = [(Limit::UniformBlocks, 16)];
+        let c = compile(&src, targets, &limits);
+        let compiled = c.result.as_ref().unwrap_or_else(|| panic!("{}", c.render_diagnostics()));
+        assert!(compiled.reflection.required_limits.is_none(), "{targets:?}");
+        assert!(!compiled.artifact("limits.reflect.json").unwrap().text().contains("required_limits"), "{targets:?}");
+    }
+}
+
+#[test]
+fn strict_limits_are_part_of_the_cache_key() {
+    let d = tempfile::tempdir().unwrap();
+    let path = d.path().join("skin.das");
+    std::fs::write(&path, SKINNING).unwrap();
+    let pre = umbrac::preprocess_file(&path, &Options::default());
+    let plain = umbrac::cache::Key::of(&pre, &Options::default(), "");
+    let strict = umbrac::cache::Key::of(&pre, &Options { strict_limits: true, ..Options::default() }, "");
+    assert!(plain != strict, "a strict compile must not be served a lenient one's outputs");
+}

@@ -38,6 +38,7 @@ mod language_f;
 mod hostile_inputs;
 mod limits;
 mod lowering;
+mod modules;
 #[cfg(feature = "deserialize")]
 mod programs;
 mod proptest_programs;

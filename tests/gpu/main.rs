@@ -15,6 +15,8 @@ mod support;
 mod compute;
 #[cfg(feature = "gl")]
 mod consumers;
+#[cfg(feature = "gl")]
+mod device_limits;
 #[cfg(feature = "render")]
 mod differential;
 #[cfg(feature = "render")]

@@ -829,6 +829,10 @@ impl<'a, 'd> Checker<'a, 'd> {
                 if let Some(&eid) = self.enums.get(id.name.as_str()) {
                     return Ty::Enum(eid);
                 }
+                if let Some(d) = self.unsupported_daslang_builtin(&id.name, id.span) {
+                    self.diags.push(d);
+                    return Ty::Error;
+                }
                 let candidates: Vec<&str> = self.structs.keys().chain(self.enums.keys()).copied().chain(TYPE_NAMES.iter().copied()).collect();
                 let mut d = Diagnostic::error(format!("unknown type `{}`", id.name), id.span).with_label("not a type");
                 if let Some(s) = suggest(&id.name, candidates.iter().copied()) {

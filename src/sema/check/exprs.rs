@@ -321,6 +321,10 @@ impl<'a, 'd> Checker<'a, 'd> {
         if let Some(e) = self.builtin_constant(id) {
             return e;
         }
+        if let Some(d) = self.unsupported_daslang_builtin(&id.name, span) {
+            self.diags.push(d);
+            return err_expr(span);
+        }
         let mut d = Diagnostic::error(format!("unknown name `{}`", id.name), span).with_label("not found in this scope");
         let mut candidates: Vec<&str> = cx.scopes.visible.keys().copied().collect();
         candidates.extend(self.globals.keys().copied());
@@ -496,6 +500,11 @@ impl<'a, 'd> Checker<'a, 'd> {
             Ok(None) if builtins::UNSUPPORTED.iter().any(|(n, _)| *n == name) => {
                 let why = builtins::UNSUPPORTED.iter().find(|(n, _)| *n == name).map(|(_, w)| *w).unwrap_or_default();
                 let d = Diagnostic::error(format!("`{name}` is not available in umbrac shaders"), callee.span).with_note(format!("help: {why}"));
+                self.diags.push(d);
+                err_expr(span)
+            }
+            Ok(None) if self.ast.daslang_builtins.iter().any(|b| b.name == name) => {
+                let d = self.unsupported_daslang_builtin(name, callee.span).expect("matched");
                 self.diags.push(d);
                 err_expr(span)
             }

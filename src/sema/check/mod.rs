@@ -330,6 +330,19 @@ impl<'a, 'd> Checker<'a, 'd> {
 }
 
 impl Checker<'_, '_> {
+    /// The error for a name one of daslang's builtin-declaring modules
+    /// declares and umbrac does not implement (`syntax::modules`), if
+    /// `name` is one: refused by name, never compiled from its CPU body.
+    fn unsupported_daslang_builtin(&self, name: &str, span: Span) -> Option<Diagnostic> {
+        let b = self.ast.daslang_builtins.iter().find(|b| b.name == name)?;
+        let targets: Vec<&str> = self.targets.iter().map(|t| t.name()).collect();
+        let d = Diagnostic::error(format!("`{name}` (a builtin of daslang's `{}`) is not supported by umbrac on {}", b.module, targets.join(", ")), span)
+            .with_label("not supported")
+            .with_secondary(b.span, "daslang declares it here")
+            .with_note("help: umbrac compiles the builtins it implements under their daslang names, and refuses the others rather than translate their CPU stand-ins; write it from supported builtins");
+        Some(d)
+    }
+
     /// An error about a name nothing defines, with each required module
     /// that was not found, which might have defined it.
     fn with_missing_modules(&self, mut d: Diagnostic) -> Diagnostic {

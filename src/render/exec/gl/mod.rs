@@ -201,6 +201,58 @@ impl GlExecutor {
         format!("{}, {}", self.renderer, self.version)
     }
 
+    /// The driver's limits that umbrac's device limits stand for
+    /// (`emit::limits`), by their GL names, as this context reports them.
+    pub fn reported_limits(&self) -> Result<Vec<(&'static str, i32)>, ExecError> {
+        let es = matches!(self.consumer, Consumer::Gles300 | Consumer::Gles310);
+        let mut names = vec![
+            ("GL_MAX_VERTEX_ATTRIBS", glow::MAX_VERTEX_ATTRIBS),
+            ("GL_MAX_VERTEX_UNIFORM_COMPONENTS", glow::MAX_VERTEX_UNIFORM_COMPONENTS),
+            ("GL_MAX_FRAGMENT_UNIFORM_COMPONENTS", glow::MAX_FRAGMENT_UNIFORM_COMPONENTS),
+            ("GL_MAX_VARYING_COMPONENTS", glow::MAX_VARYING_COMPONENTS),
+            ("GL_MAX_VERTEX_UNIFORM_BLOCKS", glow::MAX_VERTEX_UNIFORM_BLOCKS),
+            ("GL_MAX_FRAGMENT_UNIFORM_BLOCKS", glow::MAX_FRAGMENT_UNIFORM_BLOCKS),
+            ("GL_MAX_COMBINED_UNIFORM_BLOCKS", glow::MAX_COMBINED_UNIFORM_BLOCKS),
+            ("GL_MAX_UNIFORM_BLOCK_SIZE", glow::MAX_UNIFORM_BLOCK_SIZE),
+            ("GL_MAX_VERTEX_TEXTURE_IMAGE_UNITS", glow::MAX_VERTEX_TEXTURE_IMAGE_UNITS),
+            ("GL_MAX_TEXTURE_IMAGE_UNITS", glow::MAX_TEXTURE_IMAGE_UNITS),
+            ("GL_MAX_COMBINED_TEXTURE_IMAGE_UNITS", glow::MAX_COMBINED_TEXTURE_IMAGE_UNITS),
+            ("GL_MAX_DRAW_BUFFERS", glow::MAX_DRAW_BUFFERS),
+        ];
+        if es {
+            // GLES states uniforms and varyings in vectors too.
+            names.extend([
+                ("GL_MAX_VERTEX_UNIFORM_VECTORS", glow::MAX_VERTEX_UNIFORM_VECTORS),
+                ("GL_MAX_FRAGMENT_UNIFORM_VECTORS", glow::MAX_FRAGMENT_UNIFORM_VECTORS),
+                ("GL_MAX_VARYING_VECTORS", glow::MAX_VARYING_VECTORS),
+            ]);
+        }
+        let gl = self.ctx.current()?;
+        // SAFETY: plain queries on the current context.
+        let values = names.into_iter().map(|(name, pname)| (name, unsafe { gl.get_parameter_i32(pname) })).collect();
+        self.ctx.check("querying limits")?;
+        Ok(values)
+    }
+
+    /// Compiles and links a vertex and a fragment shader (file name, text),
+    /// nothing more: whether the driver takes the pair within its limits.
+    pub fn link(&self, vertex: (&str, &str), fragment: (&str, &str)) -> Result<(), ExecError> {
+        let vs = self.compile(glow::VERTEX_SHADER, vertex.0, vertex.1)?;
+        let fs = self.compile(glow::FRAGMENT_SHADER, fragment.0, fragment.1)?;
+        let gl = self.ctx.current()?;
+        // SAFETY: a program object on the current context.
+        unsafe {
+            let program = Obj::new(&self.ctx, gl.create_program().map_err(ExecError::Api)?);
+            gl.attach_shader(program.raw(), vs.raw());
+            gl.attach_shader(program.raw(), fs.raw());
+            gl.link_program(program.raw());
+            if !gl.get_program_link_status(program.raw()) {
+                return Err(ExecError::Link { pass: format!("{} + {}", vertex.0, fragment.0), log: gl.get_program_info_log(program.raw()) });
+            }
+        }
+        self.ctx.check("linking")
+    }
+
     fn target(&self) -> Target {
         match self.consumer {
             Consumer::Gl330 => Target::Glsl330,
