@@ -109,7 +109,7 @@ impl ModuleBuilder<'_> {
                     }
                     GlobalSlot::Sampler { first, count: count.unwrap_or(1) }
                 }
-                GlobalKind::Storage { access } => {
+                GlobalKind::Storage { access, unit } => {
                     let sema::Bind { group, binding } = g.bind.expect("a used resource is bound");
                     let atomic: Vec<u32> = self.p.atomics.iter().filter(|(a, _)| *a == gid).filter_map(|(_, m)| *m).collect();
                     let ty = match g.ty {
@@ -119,7 +119,6 @@ impl ModuleBuilder<'_> {
                     let h = self.add_global(g.name.clone(), naga::AddressSpace::Storage { access: access.naga() }, with_binding.then_some(naga::ResourceBinding { group, binding }), ty, None, span);
                     if describe {
                         let dsl_type = self.show_ty(&g.ty);
-                        let unit = self.p.globals[..gid].iter().filter(|o| o.bind.is_some() && matches!(o.kind, GlobalKind::Storage { .. })).count() as u32;
                         self.resources.push(Resource {
                             name: g.name.clone(),
                             span: g.span,
@@ -129,13 +128,13 @@ impl ModuleBuilder<'_> {
                             group,
                             binding,
                             sampler_binding: None,
-                            texture_unit: Some(unit),
+                            texture_unit: Some(*unit),
                             default: None,
                         });
                     }
                     GlobalSlot::Var(h)
                 }
-                GlobalKind::Image { format, access } => {
+                GlobalKind::Image { format, access, unit } => {
                     let sema::Bind { group, binding } = g.bind.expect("a used resource is bound");
                     let sema::Ty::Image(kind) = g.ty else { unreachable!("sema gives an image global an image type") };
                     let (dim, arrayed) = match kind.dim {
@@ -146,7 +145,6 @@ impl ModuleBuilder<'_> {
                     let ty = self.add_type(None, TypeInner::Image { dim, arrayed, class: naga::ImageClass::Storage { format: format.naga(), access: access.naga() } });
                     let h = self.add_global(g.name.clone(), naga::AddressSpace::Handle, with_binding.then_some(naga::ResourceBinding { group, binding }), ty, None, span);
                     if describe {
-                        let unit = self.p.globals[..gid].iter().filter(|o| o.bind.is_some() && matches!(o.kind, GlobalKind::Image { .. })).count() as u32;
                         self.resources.push(Resource {
                             name: g.name.clone(),
                             span: g.span,
@@ -156,7 +154,7 @@ impl ModuleBuilder<'_> {
                             group,
                             binding,
                             sampler_binding: None,
-                            texture_unit: Some(unit),
+                            texture_unit: Some(*unit),
                             default: None,
                         });
                     }

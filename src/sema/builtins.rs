@@ -394,6 +394,28 @@ pub const UNSUPPORTED: &[(&str, &str)] = &[
     ("rotate", "daslang's `float3x4` is not umbrac's (docs/language.md); multiply by a `float3x3` instead"),
     ("identity", "assign `identity4x4()` (or `identity3x3()`) instead"),
     ("identity3x4", "daslang's `float3x4` is not umbrac's (docs/language.md); use `identity4x4()` or `float3x4(1.0)`"),
+    // daslang host constructs its GLSL generator refuses by name
+    // (glsl_internal.das): refused here by name too, never "unknown".
+    ("memzero", "daslang's shader emitters refuse it too: a shader has no memory to clear; assign the zero value (`x = T()`) or declare `var x : T`, which starts at zero"),
+    ("assert", "daslang's shader emitters refuse it too: a shader cannot stop or report; test the condition and write a result the host can see"),
+    ("verify", "daslang's shader emitters refuse it too: a shader cannot stop or report; test the condition and write a result the host can see"),
+    ("static_assert", "daslang's shader emitters refuse it too: check the constant on the host"),
+    ("debug", "daslang's shader emitters refuse it too: a shader has no console; write the value to an output or a storage buffer"),
+    ("print", "a shader has no console; write the value to an output or a storage buffer"),
+    ("invoke", "daslang's shader emitters refuse it too: blocks and lambdas are host code; call a function"),
+    ("typeinfo", "daslang's shader emitters refuse it too: reflection is host code"),
+    ("erase", "daslang's shader emitters refuse it too: dynamic arrays and tables are host code; shaders have fixed arrays (`T[N]`)"),
+    ("insert", "daslang's shader emitters refuse it too: dynamic arrays and tables are host code; shaders have fixed arrays (`T[N]`)"),
+    ("find", "daslang's shader emitters refuse it too: dynamic arrays and tables are host code; shaders have fixed arrays (`T[N]`)"),
+    ("key_exists", "daslang's shader emitters refuse it too: dynamic arrays and tables are host code; shaders have fixed arrays (`T[N]`)"),
+    ("keys", "daslang's shader emitters refuse it too: dynamic arrays and tables are host code; shaders have fixed arrays (`T[N]`)"),
+    ("values", "daslang's shader emitters refuse it too: dynamic arrays and tables are host code; shaders have fixed arrays (`T[N]`)"),
+    ("push", "daslang's shader emitters refuse it too: dynamic arrays and tables are host code; shaders have fixed arrays (`T[N]`)"),
+    ("push_clone", "daslang's shader emitters refuse it too: dynamic arrays and tables are host code; shaders have fixed arrays (`T[N]`)"),
+    ("emplace", "daslang's shader emitters refuse it too: dynamic arrays and tables are host code; shaders have fixed arrays (`T[N]`)"),
+    ("resize", "daslang's shader emitters refuse it too: dynamic arrays and tables are host code; shaders have fixed arrays (`T[N]`)"),
+    ("reserve", "daslang's shader emitters refuse it too: dynamic arrays and tables are host code; shaders have fixed arrays (`T[N]`)"),
+    ("clear", "daslang's shader emitters refuse it too: dynamic arrays and tables are host code; shaders have fixed arrays (`T[N]`)"),
 ];
 
 /// Every builtin function name, for "did you mean" suggestions.

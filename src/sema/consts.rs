@@ -81,6 +81,7 @@ fn eval(e: &Expr, env: &dyn ConstEnv, depth: usize) -> Result<(ConstValue, Ty), 
         ExprKind::Float(v) => Ok((ConstValue::Float(*v as f32 as f64), FLOAT)),
         ExprKind::Bool(b) => Ok((ConstValue::Bool(*b), BOOL)),
         ExprKind::Half(v) => Ok((ConstValue::Float(*v), super::types::HALF)),
+        ExprKind::Reinterpret(..) => Err(not_const(e, "`reinterpret`")),
         ExprKind::Paren(x) => eval(x, env, d),
         ExprKind::Name(id) => env.lookup(&id.name).ok_or_else(|| not_const(e, &format!("`{}`", id.name))),
         ExprKind::Unary(op, x) => {

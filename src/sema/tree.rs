@@ -207,9 +207,11 @@ pub enum GlobalKind {
     Builtin(BuiltinVar),
     /// `@ssbo`: a storage buffer (`ty` is a struct, std430; its last
     /// member may be a run-time-sized array), read-write or `@readonly`.
-    Storage { access: super::types::Access },
-    /// A storage image (`ty` is `Ty::Image`) with its `@format` and access.
-    Image { format: super::types::ImageFormat, access: super::types::Access },
+    /// `unit`: its GL binding point (`@stage = N`, or numbered).
+    Storage { access: super::types::Access, unit: u32 },
+    /// A storage image (`ty` is `Ty::Image`) with its `@format`, access
+    /// and GL image unit (`@stage = N`, or numbered).
+    Image { format: super::types::ImageFormat, access: super::types::Access, unit: u32 },
     /// `@groupshared`: workgroup memory, shared by the invocations of one
     /// workgroup of a compute entry point (zero at the start of each).
     Workgroup,

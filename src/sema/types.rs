@@ -498,6 +498,20 @@ pub fn unsupported_type(name: &str) -> Option<(String, &'static str)> {
         Some(k) => (&name[..k], &name[k..]),
         None => (name, ""),
     };
+    // daslang's 8- and 16-lane forms (`byte8`, `half8`, `float8`): CPU
+    // only, as its shader emitters say; `int8`/`uint8` are 8-bit scalars.
+    let lanes: u32 = digits.parse().unwrap_or(0);
+    let wide = match base {
+        "float" | "half" | "bool" | "short" | "ushort" | "byte" | "ubyte" => lanes > 4,
+        "int" | "uint" => lanes > 4 && lanes != 8 && lanes != 16 && lanes != 64,
+        _ => false,
+    };
+    if wide {
+        return Some((
+            format!("`{name}`: vectors of {lanes} components are CPU-only in daslang, not a shader type"),
+            "shader vectors have at most 4 components (daslang's shader emitters refuse its 8- and 16-lane forms): split it into 4-component vectors",
+        ));
+    }
     let bits = match (base, digits) {
         ("int" | "uint", "8" | "16" | "64") => digits,
         ("byte" | "ubyte" | "char" | "uchar", "" | "2" | "3" | "4") => "8",

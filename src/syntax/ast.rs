@@ -106,14 +106,16 @@ pub enum QualifierKind {
     InOut,
     /// `@location = N`, or bare `@location` (`None`: the compiler assigns it).
     Location(Option<i64>),
-    /// `@stage = N`: the texture unit of a sampler; bare `@stage` (`None`):
-    /// the compiler assigns it, per program.
+    /// `@stage = N`: the GL unit of a sampler (texture unit), storage
+    /// image (image unit) or `@ssbo` (binding point); bare `@stage`
+    /// (`None`): the compiler assigns it.
     Stage(Option<i64>),
     /// `@set = N`: the bind group of a uniform or sampler on WGSL/SPIR-V.
     Set(i64),
     /// `@binding = N`: its binding in that group.
     Binding(i64),
-    /// `@format = NAME`: a storage image's texel format (`rgba8`, `r32f`).
+    /// `@format = NAME` or `@format = "NAME"`: a storage image's texel
+    /// format (`rgba8`, `r32f`); bare `@format` is `rgba8`, as in dasGlsl.
     Format(Ident),
     /// Any other `@name [= value]`; semantic analysis reports it.
     Other(String),
@@ -245,6 +247,9 @@ pub enum StmtKind {
     Break,
     Continue,
     Block(Block),
+    /// `f(args) $ { ... }` (or `f(args) <| $ { ... }`, `f($ { ... })`): a
+    /// call with daslang's block argument; in a shader only `unroll`.
+    CallBlock { callee: Ident, args: Vec<Expr>, body: Block },
 }
 
 #[derive(Clone, Debug)]
@@ -328,6 +333,8 @@ pub enum ExprKind {
     /// A `half` literal (`1.5h`): its value, rounded once from the decimal
     /// to the nearest binary16 value (held exactly in the `f64`).
     Half(f64),
+    /// `reinterpret<T>(x)`: `x`'s bits as a `T` of the same size.
+    Reinterpret(Ident, Box<Expr>),
 }
 
 /// A name one of daslang's builtin-declaring modules declares

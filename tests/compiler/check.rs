@@ -194,3 +194,23 @@ fn bindgen_describes_compute_programs() {
         assert!(o.status.success(), "the bindings of {name} do not compile:\n{}", text(&o.stderr));
     }
 }
+
+/// daslang code says `require daslib/unroll` before `unroll() $ { ... }`:
+/// with daslang's own daslib, the module's `unroll` (a function taking a
+/// block) does not stand in the way of the loop.
+#[test]
+fn unroll_with_daslang_own_daslib() {
+    let daslib = crate::support::repo().join("../shared/reference/daslang/daslib");
+    if !daslib.join("unroll.das").is_file() {
+        crate::support::skip(format!("{} is not here", daslib.display()));
+        return;
+    }
+    let src = std::fs::read_to_string(crate::support::repo().join("shaders/compute/dialect_taps.das")).unwrap().replace("options gen2\n", "options gen2\nrequire daslib/unroll\n");
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("taps.das");
+    std::fs::write(&path, src).unwrap();
+    let opts = umbrac::Options { daslib: Some(daslib), ..Default::default() };
+    let c = umbrac::compile_file(&path, &opts);
+    assert!(!c.has_errors(), "{}", c.render_diagnostics());
+    assert!(c.files_read().iter().any(|p| p.ends_with("unroll.das")), "daslib/unroll was read");
+}

@@ -112,6 +112,7 @@ fn snippets() -> BTreeMap<&'static str, String> {
     add("uniform-defaults", frag("struct G {\n    lift : float3\n    gamma : float\n}\nvar @uniform u_k : float = 0.5\nvar @uniform u_g : G = G(float3(0.1), 2.2)", "    f_color = float4(u_g.lift * u_k, u_g.gamma)"));
     add("bind-groups", frag("var @uniform @set = 1 @binding = 2 u_a : float4\nvar @uniform @set = 1 t : sampler2D\nvar @uniform u_b : float4", "    f_color = u_a + u_b + texture(t, float2(0.5))"));
     add("push-constant", frag("var @push_constant pc_tint : float4", "    f_color = pc_tint"));
+    gl_dialect(&mut add);
     compute(&mut add);
     functions_and_data(&mut add);
     for (id, src) in snippets_language_l() {
@@ -132,7 +133,24 @@ fn compute(add: &mut impl FnMut(&'static str, String)) {
     add("groupshared", format!("{buf}var @ssbo b : Buf\nvar @groupshared tile : float[64]\n[compute_program(local_size_x = 64)]\ndef cs {{\n    let l = gl_LocalInvocationIndex\n    tile[l] = b.data[gl_GlobalInvocationID.x]\n    barrier()\n    memoryBarrierShared()\n    groupMemoryBarrier()\n    b.data[gl_GlobalInvocationID.x] = tile[63u - l]\n}}\n"));
     add("atomics", "struct H {\n    total : uint\n    low : int\n    bins : uint[]\n}\nvar @ssbo h : H\nvar @groupshared n : uint\n[compute_program(local_size_x = 64)]\ndef cs {\n    let i = gl_GlobalInvocationID.x\n    atomicAdd(h.bins[i % 16u], 1u)\n    atomicMin(h.low, int(i))\n    let old = atomicCompSwap(h.total, 0u, 1u)\n    atomicExchange(n, old)\n    atomicOr(n, atomicXor(h.total, atomicAnd(n, 3u)))\n    atomicMax(h.total, n)\n}\n".to_string());
     add("storage-images", "var @writeonly @format = rgba8 dst : image2D\nvar @readonly @format = rgba16f src : image3D\nvar @format = r32ui counts : uimage2D\nvar @readonly @format = r32f layers : image2DArray\n[compute_program(local_size_x = 8, local_size_y = 8)]\ndef cs {\n    let p = int2(gl_GlobalInvocationID.xy)\n    let c = imageLoad(counts, p)\n    imageStore(counts, p, c + uint4(1u))\n    let l = imageLoad(layers, int3(p, 1))\n    imageStore(dst, p % imageSize(dst), imageLoad(src, int3(p, 0)) + l)\n}\n".to_string());
+    add("storage-units", "struct B {\n    data : uint[]\n}\nvar @uniform@format@stage@writeonly c_dst : image2D\nvar @readonly @format = \"r32f\" @stage = 2 c_src : image2D\nvar @ssbo @stage = 3 buf : B\n[compute_program(local_size_x = 8, local_size_y = 8)]\ndef cs {\n    let p = int2(gl_GlobalInvocationID.xy)\n    buf.data[0] = uint(p.x)\n    imageStore(c_dst, p, imageLoad(c_src, p))\n}\n".to_string());
+    add("read-write-image-any-format", "var @uniform@format c_img : image2D\n[compute_program(local_size_x = 8, local_size_y = 8)]\ndef cs {\n    let p = int2(gl_GlobalInvocationID.xy)\n    imageStore(c_img, p, imageLoad(c_img, p) * 0.5)\n}\n".to_string());
     add("barrier-uniformity", format!("{buf}var @ssbo b : Buf\n[compute_program(local_size_x = 64)]\ndef cs {{\n    if (b.data[gl_GlobalInvocationID.x] > 0.0) {{\n        barrier()\n    }}\n}}\n"));
+}
+
+/// daslang's GL dialect as it spells it (issue 35): one-line bodies,
+/// `unroll`, `reinterpret`, the CPU-only names, `@stage`/`@format` on
+/// storage resources.
+fn gl_dialect(add: &mut impl FnMut(&'static str, String)) {
+    add("one-line-bodies", frag("var @uniform u_i : int\ndef pick(x : int) : float {\n    if (x < 0) return 0.0\n    elif (x == 0) return 0.5\n    return 1.0\n}", "    var s = 0.0\n    var k = 0\n    if (u_i > 2) s = 1.0 else s = 2.0\n    while (k < u_i) k++\n    for (i in range(4)) s += float(i)\n    for (i in range(8)) {\n        if (i > u_i) break\n        if (i == 1) continue\n        s += 1.0\n    }\n    f_color = float4(s + float(k) + pick(u_i))"));
+    add("unroll", frag("let N = 3\nvar @uniform u_w : float4[4]", "    var s = float4(0.0)\n    unroll() $ {\n        for (i in range(N)) {\n            s += u_w[i]\n        }\n    }\n    unroll($ {\n        for (i in range(1, 4)) {\n            s *= u_w[i]\n        }\n    })\n    f_color = s"));
+    add("unroll-not-constant", frag("var @uniform u_n : int", "    var s = 0.0\n    unroll() $ {\n        for (i in range(u_n)) {\n            s += 1.0\n        }\n    }\n    f_color = float4(s)"));
+    add("call-with-block", frag("", "    var s = 0.0\n    invoke() $ {\n        s = 1.0\n    }\n    f_color = float4(s)"));
+    add("reinterpret", frag("var @uniform u_x : float2", "    let u = unsafe(reinterpret<uint2>(u_x))\n    let i = reinterpret<int>(u_x.y)\n    f_color = float4(reinterpret<float2>(u ^ uint2(1u)), unsafe(reinterpret<float>(i)), 1.0)"));
+    add("reinterpret-other-sizes", frag("var @uniform u_x : float2", "    f_color = float4(reinterpret<uint>(u_x))"));
+    add("cpu-only-lattice", frag("", "    let b = byte8(1)\n    var h : half8\n    f_color = float4(1.0)"));
+    add("cpu-only-calls", frag("", "    var v = float4(1.0)\n    memzero(v)\n    f_color = v"));
+    add("host-expressions", frag("", "    var a = 1.0\n    let b = cast<int> a\n    f_color = float4(a ?? 2.0)"));
 }
 
 fn functions_and_data(add: &mut impl FnMut(&'static str, String)) {

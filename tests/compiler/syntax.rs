@@ -260,6 +260,54 @@ fn crlf_bom_tabs_and_nul() {
 
 // ---------------------------------------------------------------- parser
 
+/// daslang's gen2 one-line bodies: one expression, assignment, `return`,
+/// `break` or `continue` on the line of `if (...)`, `elif (...)`, `else`,
+/// `while (...)` and `for (...)`; an `else` on the next line belongs to
+/// the one-line `if`.
+#[test]
+fn one_line_bodies() {
+    let body = "if (a) return\nif (b) x = 1\nelif (c) x += 2\nelse x = 3\nwhile (x < 4) x++\nfor (i in range(4)) s += i\nif (d) f(x) else return";
+    let p = parse_str(&fs(body));
+    assert!(p.diags.is_empty(), "{}", p.rendered());
+    let f = p.function("main_fs");
+    assert_eq!(f.body.stmts.len(), 5);
+    let StmtKind::If { then, elifs, otherwise: Some(otherwise), .. } = &f.body.stmts[1].kind else { panic!("{:?}", f.body.stmts[1].kind) };
+    assert!(matches!(then.stmts[..], [ast::Stmt { kind: StmtKind::Assign { .. }, .. }]));
+    assert_eq!(elifs.len(), 1);
+    assert!(matches!(otherwise.stmts[..], [ast::Stmt { kind: StmtKind::Assign { .. }, .. }]));
+    assert!(matches!(&f.body.stmts[2].kind, StmtKind::While { body, .. } if body.stmts.len() == 1));
+    assert!(matches!(&f.body.stmts[3].kind, StmtKind::For { body, .. } if body.stmts.len() == 1));
+    // A declaration or a compound statement needs braces; so does a body on the next line.
+    assert_eq!(parse_str(&fs("if (a) let y = 1")).locs(), ["test.das:4:8: keyword 'let' cannot stand alone as a one-line body"]);
+    assert_eq!(parse_str(&fs("while (a) if (b) break")).locs(), ["test.das:4:11: keyword 'if' cannot stand alone as a one-line body"]);
+    assert!(parse_str(&fs("if (a)\n    return")).locs()[0].starts_with("test.das:5:5: expected '{'"));
+}
+
+/// Calls with daslang's block argument (`f() $ { }`, `f() <| $ { }`,
+/// `f($ { })`): parsed for every name; the checker takes only `unroll`.
+#[test]
+fn calls_with_a_block() {
+    let body = "unroll() $ {\nfor (i in range(4)) {\ns += i\n}\n}\nunroll() <| $ {\nfor (i in range(2)) {\n}\n}\nunroll($ {\nlet k = 1\n})\nother(1, 2) $ {\n}";
+    let p = parse_str(&fs(body));
+    assert!(p.diags.is_empty(), "{}", p.rendered());
+    let f = p.function("main_fs");
+    let calls: Vec<(&str, usize, usize)> = f
+        .body
+        .stmts
+        .iter()
+        .map(|s| match &s.kind {
+            StmtKind::CallBlock { callee, args, body } => (callee.name.as_str(), args.len(), body.stmts.len()),
+            k => panic!("{k:?}"),
+        })
+        .collect();
+    assert_eq!(calls, [("unroll", 0, 1), ("unroll", 0, 1), ("unroll", 0, 1), ("other", 2, 0)]);
+    assert_eq!(parse_str(&fs("x $ {\n}")).locs(), ["test.das:4:3: a block argument follows a call: `f() $ { ... }`"]);
+    // `unsafe { ... }` is its statements.
+    let p = parse_str(&fs("unsafe {\nlet b = reinterpret<uint>(1.0)\n}"));
+    assert!(p.diags.is_empty(), "{}", p.rendered());
+    assert!(matches!(&p.function("main_fs").body.stmts[0].kind, StmtKind::Block(b) if b.stmts.len() == 1));
+}
+
 #[test]
 fn statements_and_expressions() {
     let body = "var a, b : float3\nlet c : float = 1.0; let d = 2\nvar e = fixed_array<float>(1.0, 2.0)\nvar f = [1, 2,\n3]\n\
@@ -285,6 +333,7 @@ fn statements_and_expressions() {
             StmtKind::Continue => "continue",
             StmtKind::Block(_) => "block",
             StmtKind::With { .. } => "with",
+            StmtKind::CallBlock { .. } => "call-block",
         })
         .collect();
     assert_eq!(kinds, ["local", "local", "local", "local", "local", "assign", "if", "while", "for", "block", "assign", "expr"]);
@@ -308,7 +357,7 @@ fn parser_error_messages_and_locations() {
         ("let a = 1 +", "test.das:5:1: expected an expression, found '}'"),
         ("let a = 1\n* 2", "test.das:5:1: unexpected '*'"),
         ("let x = 1.0d", "test.das:4:9: double-precision literal `1.0d` is not supported in shader code"),
-        ("if (true) return", "test.das:4:11: expected '{', found keyword 'return'"),
+        ("if (true)\n    return", "test.das:5:5: expected '{', found keyword 'return'"),
         ("let a = 1 2", "test.das:4:11: expected newline or ';' after the statement, found number '2'"),
         ("let a = b)", "test.das:4:10: expected newline or ';' after the statement, found ')'"),
         ("let a = [1, 2", "test.das:5:1: expected ',' or ']', found '}'"),

@@ -182,6 +182,59 @@ fn histogram_matches_the_cpu() {
     }
 }
 
+/// `shaders/compute/dialect_taps.das`, daslang's own spelling (stacked
+/// annotations, `@stage` units, `unroll`, one-line `if`s, `reinterpret`),
+/// against the CPU: the bit patterns exactly, the image's bytes within 1.
+#[test]
+fn gl_dialect_matches_the_cpu() {
+    let (w, h) = (29u32, 19u32);
+    let (gain, weights) = (1.25f32, [0.1f32, 0.2, 0.3, 0.15]);
+    let mut taps: Vec<u8> = [gain].iter().chain(&weights).flat_map(|f| f.to_le_bytes()).collect();
+    taps.extend(bytes(&vec![0; (w * h) as usize]));
+    let plan = ComputePlan {
+        name: "gl dialect".into(),
+        entry: "dialect_cs".into(),
+        workgroups: [w.div_ceil(8), h.div_ceil(8), 1],
+        buffers: vec![BufferInput { name: "taps".into(), bytes: taps }],
+        images: vec![ImageInput { name: "c_destTex".into(), width: w, height: h, layers: 1, texels: None }],
+        readback: vec!["taps".into(), "c_destTex".into()],
+    };
+    // The manifest has the units as written or assigned.
+    let m = compiled("dialect_taps").reflection;
+    let (buffers, images) = (m.storage_buffers.expect("a storage buffer"), m.storage_images.expect("a storage image"));
+    assert_eq!(buffers[0].glsl_binding, 1, "`@stage = 1` is the buffer's binding point");
+    assert_eq!((images[0].image_unit, images[0].format.as_str()), (0, "rgba8"), "a bare `@stage` gets the first free image unit, a bare `@format` is rgba8");
+    let ran = run_everywhere("dialect_taps", &plan);
+    let unorm = |v: f32| (v.clamp(0.0, 1.0) * 255.0).round() as i32;
+    for (consumer, r) in &ran {
+        let got = words(&r.resources["taps"]);
+        let img = &r.resources["c_destTex"];
+        for y in 0..h {
+            for x in 0..w {
+                let mut s = 0.0f32;
+                let mut n = 0i32;
+                for (i, wt) in weights.iter().enumerate() {
+                    if (x >> i) & 1 == 1 {
+                        s += wt;
+                    }
+                    if (y >> i) & 1 == 1 {
+                        n += 1 << i;
+                    }
+                }
+                let at = (y * w + x) as usize;
+                assert_eq!(got[5 + at], (n as f32).to_bits(), "{}: bits of texel ({x}, {y})", consumer.name());
+                let want = [unorm(s * gain), unorm((y % 3) as f32 / 2.0), unorm(0.25), 255];
+                for c in 0..4 {
+                    let d = (img[at * 4 + c] as i32 - want[c]).abs();
+                    assert!(d <= 1, "{}: texel ({x}, {y}) channel {c} is {}, the CPU computes {}", consumer.name(), img[at * 4 + c], want[c]);
+                }
+            }
+        }
+        assert_eq!(&got[..5], &words(&[gain].iter().chain(&weights).flat_map(|f| f.to_le_bytes()).collect::<Vec<u8>>())[..], "{}: the inputs are untouched", consumer.name());
+        eprintln!("gl dialect on {}: {} texels as the CPU computes them", consumer.name(), w * h);
+    }
+}
+
 #[test]
 fn a_plan_that_does_not_fit_names_what_is_wrong() {
     let c = compiled("histogram");

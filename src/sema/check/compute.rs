@@ -294,7 +294,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                         .with_secondary(g.span, "declared here");
                     self.diags.push(d);
                 }
-                GlobalKind::Storage { access: Access::ReadWrite } | GlobalKind::Image { access: Access::ReadWrite | Access::Write, .. } if stage == naga::ShaderStage::Vertex => {
+                GlobalKind::Storage { access: Access::ReadWrite, .. } | GlobalKind::Image { access: Access::ReadWrite | Access::Write, .. } if stage == naga::ShaderStage::Vertex => {
                     let d = Diagnostic::error(format!("vertex entry point `{name}` uses `{gname}`, which it could write"), span)
                         .with_secondary(g.span, "declared here")
                         .with_note("WebGPU has no writable storage in vertex programs: declare it `@readonly`, or write it from a fragment or compute program");

@@ -437,8 +437,14 @@ impl<'a, 'd> Checker<'a, 'd> {
                     };
                     GlobalKind::Sampler { kind, texture_unit: unit, count }
                 }
-                ("uniform", Ty::Image(k)) => self.image_kind(*k, format, access, location.map(|l| l.1).or(stage.map(|s| s.1)), gty.span),
-                ("ssbo", _) => self.storage_kind(&ty, access, location.map(|l| l.1).or(stage.map(|s| s.1)), gty.span),
+                ("uniform", Ty::Image(k)) => {
+                    let unit = self.storage_unit(location.map(|l| l.1), stage, "storage images");
+                    self.image_kind(*k, format, access, unit, gty.span)
+                }
+                ("ssbo", _) => {
+                    let unit = self.storage_unit(location.map(|l| l.1), stage, "`@ssbo` buffers");
+                    self.storage_kind(&ty, access, unit, gty.span)
+                }
                 ("groupshared", _) => {
                     if let Some(span) = location.map(|l| l.1).or(stage.map(|s| s.1)) {
                         self.diags.push(Diagnostic::error("`@groupshared` variables take no `@location` or `@stage`", span));
@@ -467,7 +473,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                         _ => IoKind::InOut,
                     };
                     if let Some((_, span)) = stage {
-                        self.diags.push(Diagnostic::error("`@stage` applies only to samplers", span));
+                        self.diags.push(Diagnostic::error("`@stage` applies only to samplers, storage images and `@ssbo` buffers", span));
                     }
                     let ok = matches!(ty, Ty::Scalar(s) | Ty::Vector(s, _) if s != Scalar::Bool) || ty.is_error();
                     if matches!(ty, Ty::Scalar(Scalar::Half) | Ty::Vector(Scalar::Half, _)) {
@@ -507,18 +513,37 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
     }
 
-    /// A storage image: `@format` given and matching the type's texels;
-    /// read-write only for the single-channel 32-bit formats.
-    fn image_kind(&mut self, k: ImageKind, format: Option<(ImageFormat, Span)>, access: Option<(Access, Span)>, misplaced: Option<Span>, ty_span: Span) -> GlobalKind {
-        if let Some(span) = misplaced {
-            self.diags.push(Diagnostic::error("storage images take no `@location` or `@stage`; use `@binding = N`", span));
+    /// The GL unit of a storage image (image unit) or buffer (binding
+    /// point), as dasGlsl reads `@stage = N`: the number written (0 until
+    /// numbered when bare or absent, `programs::number_storage_units`).
+    fn storage_unit(&mut self, location: Option<Span>, stage: Option<(Option<i64>, Span)>, what: &str) -> u32 {
+        if let Some(span) = location {
+            self.diags.push(Diagnostic::error(format!("{what} take no `@location`; `@stage = N` is their GL unit"), span));
         }
+        match stage {
+            Some((Some(s), span)) if !(0..32).contains(&s) => {
+                self.diags.push(Diagnostic::error(format!("GL unit {s} is out of range (0..=31)"), span));
+                0
+            }
+            Some((Some(s), span)) => {
+                self.unit_spans.insert(self.out.globals.len(), span);
+                s as u32
+            }
+            _ => 0,
+        }
+    }
+
+    /// A storage image: `@format` given and matching the type's texels.
+    /// Read-write unless `@readonly`/`@writeonly`, as in dasGlsl; the
+    /// targets that lack read-write access to its format are refused
+    /// (`targets::read_write_image_used`).
+    fn image_kind(&mut self, k: ImageKind, format: Option<(ImageFormat, Span)>, access: Option<(Access, Span)>, unit: u32, ty_span: Span) -> GlobalKind {
         let access_given = access.map(|a| a.0);
         let Some((format, format_span)) = format else {
             let d = Diagnostic::error(format!("storage image `{}` needs a texel format: `@format = F`", k.name()), ty_span)
-                .with_note(format!("help: for example `@format = {}`", match k.scalar { Scalar::Uint => "r32ui", Scalar::Int => "r32i", _ => "rgba8" }));
+                .with_note(format!("help: for example `@format = {}` (a bare `@format` is `rgba8`, as in daslang)", match k.scalar { Scalar::Uint => "r32ui", Scalar::Int => "r32i", _ => "rgba8" }));
             self.diags.push(d);
-            return GlobalKind::Image { format: ImageFormat::R32f, access: access_given.unwrap_or(Access::ReadWrite) };
+            return GlobalKind::Image { format: ImageFormat::R32f, access: access_given.unwrap_or(Access::ReadWrite), unit };
         };
         if format.scalar() != k.scalar {
             let want = match format.scalar() { Scalar::Uint => "uimage", Scalar::Int => "iimage", _ => "image" };
@@ -529,19 +554,14 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
         let access = access_given.unwrap_or(Access::ReadWrite);
         if access == Access::ReadWrite && !format.allows_read_write() {
-            let d = Diagnostic::error(format!("a read-write storage image must be `r32f`, `r32ui` or `r32i`, not `{}`", format.name()), format_span)
-                .with_note("help: add `@readonly` or `@writeonly` (GLSL ES 3.10 and WebGPU allow read-write access only to single-channel 32-bit formats)");
-            self.diags.push(d);
+            self.read_write_image_used(format.name(), format_span);
         }
-        GlobalKind::Image { format, access }
+        GlobalKind::Image { format, access, unit }
     }
 
     /// A storage buffer: a struct of host-shareable members (std430), read
     /// by every stage, written only where `@readonly` is not given.
-    fn storage_kind(&mut self, ty: &Ty, access: Option<(Access, Span)>, misplaced: Option<Span>, ty_span: Span) -> GlobalKind {
-        if let Some(span) = misplaced {
-            self.diags.push(Diagnostic::error("`@ssbo` buffers take no `@location` or `@stage`; use `@binding = N`", span));
-        }
+    fn storage_kind(&mut self, ty: &Ty, access: Option<(Access, Span)>, unit: u32, ty_span: Span) -> GlobalKind {
         if let Some((Access::Write, span)) = access {
             self.diags.push(Diagnostic::error("`@writeonly` applies only to storage images; a storage buffer is read-write, or `@readonly`", span));
         }
@@ -558,7 +578,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                 self.diags.push(d);
             }
         }
-        GlobalKind::Storage { access: if matches!(access, Some((Access::Read, _))) { Access::Read } else { Access::ReadWrite } }
+        GlobalKind::Storage { access: if matches!(access, Some((Access::Read, _))) { Access::Read } else { Access::ReadWrite }, unit }
     }
 
     /// Why `ty` cannot be stored in a storage buffer (std430, shared with

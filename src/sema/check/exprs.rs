@@ -150,6 +150,13 @@ impl<'a, 'd> Checker<'a, 'd> {
                 let ty = a.ty.clone();
                 mk(ExprKind::Select { cond: Box::new(c), accept: Box::new(a), reject: Box::new(b) }, ty)
             }
+            // `unsafe(x)`: daslang's permission for `reinterpret`; x itself.
+            ast::ExprKind::Call { callee, args } if callee.name == "unsafe" && args.len() == 1 && !self.funcs.contains_key("unsafe") => {
+                let mut x = self.check_expr(cx, &args[0]);
+                x.span = span;
+                x
+            }
+            ast::ExprKind::Reinterpret(to, value) => self.check_reinterpret(cx, to, value, span),
             ast::ExprKind::Call { callee, args } => self.check_call(cx, callee, args, span),
             ast::ExprKind::Field(base, name) => {
                 if let ast::ExprKind::Name(ty) = &base.kind {
@@ -519,6 +526,43 @@ impl<'a, 'd> Checker<'a, 'd> {
                 let what = if sigs.iter().all(|s| s.matches(", ").count() + 1 != xs.len()) { "wrong number of arguments" } else { "type mismatch" };
                 let mut d = Diagnostic::error(format!("{what}: no overload of `{name}` takes ({})", given.join(", ")), span);
                 d = d.with_note(format!("expected one of:\n  {}", sigs.join("\n  ")));
+                self.diags.push(d);
+                err_expr(span)
+            }
+        }
+    }
+
+    /// `reinterpret<T>(x)`: the bits of a 32-bit scalar or vector as
+    /// another of the same width (naga's bit cast); nothing else.
+    fn check_reinterpret(&mut self, cx: &mut FnCtx<'a>, to: &'a ast::Ident, value: &'a ast::Expr, span: Span) -> Expr {
+        let x = self.check_expr(cx, value);
+        let target = Ty::from_builtin_name(&to.name);
+        if target.is_none() {
+            if let Some((msg, help)) = crate::sema::types::unsupported_type(&to.name) {
+                self.diags.push(Diagnostic::error(msg, to.span).with_label("a type no target has").with_note(format!("help: {help}")));
+                return err_expr(span);
+            }
+        }
+        let target = target.unwrap_or(Ty::Void);
+        if x.ty.is_error() {
+            return err_expr(span);
+        }
+        let bits32 = |t: &Ty| match t {
+            Ty::Scalar(s @ (Scalar::Float | Scalar::Int | Scalar::Uint)) => Some((*s, 1)),
+            Ty::Vector(s @ (Scalar::Float | Scalar::Int | Scalar::Uint), n) => Some((*s, *n)),
+            _ => None,
+        };
+        match (bits32(&target), bits32(&x.ty)) {
+            (Some((s, n)), Some((_, m))) if n == m => {
+                if x.ty == target {
+                    return Expr { span, ..x };
+                }
+                Expr { kind: ExprKind::Builtin(Builtin::Bitcast(s), vec![x]), ty: target, span }
+            }
+            _ => {
+                let d = Diagnostic::error(format!("`reinterpret<{}>` of `{}`: a bit cast is only between 32-bit scalars or vectors of as many components (`int`, `uint`, `float`, `int2`, ...)", to.name, self.show(&x.ty)), span)
+                    .with_label("not a bit cast every target has")
+                    .with_note("naga, WGSL and GLSL reinterpret only same-size 32-bit numbers (`bitcast`, `floatBitsToUint`)");
                 self.diags.push(d);
                 err_expr(span)
             }

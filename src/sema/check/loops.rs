@@ -90,6 +90,61 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
     }
 
+    /// `f() $ { ... }`: in a shader only daslang's `unroll() $ { for (i in
+    /// range(N)) { ... } }`, which is that loop (an unrolling hint the
+    /// targets' compilers may take). As daslang's `unroll` macro requires:
+    /// one `for` over a `range` with compile-time bounds, and (the body is
+    /// copied once per step, with no loop left) no `break`/`continue` of it.
+    pub(super) fn check_call_block(&mut self, cx: &mut FnCtx<'a>, callee: &'a ast::Ident, args: &'a [ast::Expr], body: &'a ast::Block, span: Span, out: &mut Vec<Stmt>) {
+        let name = callee.name.as_str();
+        // `unroll` is daslang's macro (daslib/unroll), which `require
+        // daslib/unroll` also declares as a function taking a block.
+        if name != "unroll" {
+            let d = Diagnostic::error(format!("`{name}` with a block argument is not supported in shader code"), callee.span)
+                .with_label("called with a block (`$ { ... }`)")
+                .with_note("daslang's blocks are host code; in a shader only `unroll() $ { for (...) { ... } }` takes one");
+            self.diags.push(d);
+            return;
+        }
+        if let Some(a) = args.first() {
+            let d = Diagnostic::error("`unroll` takes only its block: `unroll() $ { for (i in range(N)) { ... } }`", a.span);
+            self.diags.push(d);
+            return;
+        }
+        let one_range_loop = match body.stmts.as_slice() {
+            [ast::Stmt { kind: ast::StmtKind::For { vars, iters, body: loop_body }, span: loop_span }] if vars.len() == 1 && iters.len() == 1 => match &iters[0].kind {
+                ast::ExprKind::Call { callee, args } if callee.name == "range" => Some((vars, iters, loop_body, *loop_span, args)),
+                _ => None,
+            },
+            _ => None,
+        };
+        let Some((vars, iters, loop_body, loop_span, bounds)) = one_range_loop else {
+            let d = Diagnostic::error("`unroll` takes one `for` loop over a `range`: `unroll() $ { for (i in range(N)) { ... } }`", body.span)
+                .with_label("not a single `for (i in range(...))` loop")
+                .with_note("daslang's `unroll` macro copies the body of that one loop once per step");
+            self.diags.push(d);
+            return;
+        };
+        for b in bounds {
+            if let Some(Err(_)) = self.fold(b, None, b.span) {
+                let d = Diagnostic::error("`unroll` needs the loop's bounds at compile time", b.span)
+                    .with_label("not a constant")
+                    .with_note("daslang's `unroll` copies the body once per step, so it must know the steps: use literals or top-level `let` constants");
+                self.diags.push(d);
+                return;
+            }
+        }
+        if let Some((kw, at)) = loop_exit(&loop_body.stmts) {
+            let d = Diagnostic::error(format!("`{kw}` in an unrolled loop"), at)
+                .with_label(format!("would `{kw}` out of `unroll`'s copies"))
+                .with_note("daslang's `unroll` copies the body once per step and leaves no loop, so this would leave an enclosing loop instead: use a plain `for`, or an `if` around the rest of the body");
+            self.diags.push(d);
+            return;
+        }
+        let _ = span;
+        self.check_for(cx, vars, iters, loop_body, loop_span, out);
+    }
+
     /// `for (a, b in x, y) body`: each variable takes the elements of its
     /// source (`range(...)` or a fixed array) in step; the loop stops at
     /// the end of the shortest.
@@ -283,4 +338,18 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
         None
     }
+}
+
+/// The first `break` or `continue` in `stmts` that belongs to their loop
+/// (not to a loop inside them).
+fn loop_exit(stmts: &[ast::Stmt]) -> Option<(&'static str, Span)> {
+    stmts.iter().find_map(|s| match &s.kind {
+        ast::StmtKind::Break => Some(("break", s.span)),
+        ast::StmtKind::Continue => Some(("continue", s.span)),
+        ast::StmtKind::If { then, elifs, otherwise, .. } => loop_exit(&then.stmts)
+            .or_else(|| elifs.iter().find_map(|(_, b)| loop_exit(&b.stmts)))
+            .or_else(|| otherwise.as_ref().and_then(|b| loop_exit(&b.stmts))),
+        ast::StmtKind::Block(b) | ast::StmtKind::With { body: b, .. } | ast::StmtKind::CallBlock { body: b, .. } => loop_exit(&b.stmts),
+        _ => None,
+    })
 }

@@ -82,6 +82,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         self.number_locations(&group);
         self.number_texture_units(&links);
         self.assign_bindings();
+        self.number_storage_units();
         self.out.links = links;
     }
 
@@ -209,6 +210,59 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
             if let Some(binding) = placed[h] {
                 self.out.globals[g].bind = Some(Bind { group: holders[h].group, binding });
+            }
+        }
+    }
+
+    /// The GL units of the storage buffers (binding points) and storage
+    /// images (image units) entry points use: `@stage = N` as written
+    /// (dasGlsl's `layout(binding = N)`); the others numbered from 0 in
+    /// declaration order, per kind, past every unit written in the file.
+    /// Two written on one unit in one entry point are an error.
+    fn number_storage_units(&mut self) {
+        fn unit_of(k: &mut GlobalKind, image: bool) -> Option<&mut u32> {
+            match k {
+                GlobalKind::Storage { unit, .. } if !image => Some(unit),
+                GlobalKind::Image { unit, .. } if image => Some(unit),
+                _ => None,
+            }
+        }
+        for image in [false, true] {
+            let mut written = FxHashSet::default();
+            for (g, global) in self.out.globals.iter_mut().enumerate() {
+                if let Some(u) = unit_of(&mut global.kind, image).filter(|_| self.unit_spans.contains_key(&g)) {
+                    written.insert(*u);
+                }
+            }
+            let mut next = 0u32;
+            for (g, global) in self.out.globals.iter_mut().enumerate() {
+                let used = global.bind.is_some();
+                let Some(u) = unit_of(&mut global.kind, image) else { continue };
+                if !used || self.unit_spans.contains_key(&g) {
+                    continue;
+                }
+                while written.contains(&next) {
+                    next += 1;
+                }
+                *u = next;
+                next += 1;
+            }
+            let what = if image { "image unit" } else { "storage buffer binding point" };
+            for e in 0..self.out.entry_points.len() {
+                let mut uses: Vec<GlobalId> = self.out.entry_points[e].func.uses.keys().copied().filter(|g| self.unit_spans.contains_key(g)).collect();
+                uses.sort_unstable();
+                let mut seen: FxHashMap<u32, GlobalId> = FxHashMap::default();
+                for g in uses {
+                    let Some(u) = unit_of(&mut self.out.globals[g].kind, image).map(|u| *u) else { continue };
+                    if let Some(prev) = seen.insert(u, g) {
+                        let (a, b) = (&self.out.globals[prev].name, &self.out.globals[g].name);
+                        let d = Diagnostic::error(format!("{what} {u} is used twice in {} entry point `{}`", stage_name(self.out.entry_points[e].stage), self.out.entry_points[e].name), self.unit_spans[&g])
+                            .with_label(format!("`{b}` is on {what} {u}"))
+                            .with_secondary(self.unit_spans[&prev], format!("`{a}` is on it too"))
+                            .with_note("give one of them another `@stage = N`, or none to have one assigned");
+                        self.diags.push(d);
+                    }
+                }
             }
         }
     }

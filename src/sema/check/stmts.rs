@@ -385,6 +385,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                 out.push(Stmt::While { cond: c, body, span: s.span });
             }
             ast::StmtKind::For { vars, iters, body } => self.check_for(cx, vars, iters, body, s.span, out),
+            ast::StmtKind::CallBlock { callee, args, body } => self.check_call_block(cx, callee, args, body, s.span, out),
             ast::StmtKind::With { subject, body } => self.check_with(cx, subject, body, s.span, out),
             ast::StmtKind::Return(value) => {
                 let v = value.as_ref().map(|e| self.check_expr(cx, e));
@@ -577,7 +578,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                 let g = &self.out.globals[*id];
                 let why = match g.kind {
                     GlobalKind::Uniform { .. } | GlobalKind::Sampler { .. } => Some("it is a uniform, set by the host"),
-                    GlobalKind::Storage { access: crate::sema::types::Access::Read } => Some("it is a `@readonly` storage buffer"),
+                    GlobalKind::Storage { access: crate::sema::types::Access::Read, .. } => Some("it is a `@readonly` storage buffer"),
                     GlobalKind::Image { .. } => Some("a storage image is written with `imageStore(image, coord, value)`"),
                     GlobalKind::Io { kind: IoKind::In, .. } => Some("it is an `@in` input"),
                     GlobalKind::Builtin(b) if !b.is_output() => Some("it is a builtin input"),
@@ -658,7 +659,7 @@ fn count_locals(stmts: &[ast::Stmt]) -> usize {
             // The loop variables and up to two hidden locals per source.
             ast::StmtKind::For { body, vars, iters } => vars.len() + 2 * iters.len() + count_locals(&body.stmts),
             ast::StmtKind::With { body, .. } => 2 + count_locals(&body.stmts),
-            ast::StmtKind::Block(b) => count_locals(&b.stmts),
+            ast::StmtKind::Block(b) | ast::StmtKind::CallBlock { body: b, .. } => 2 + count_locals(&b.stmts),
             _ => 0,
         })
         .sum()

@@ -50,4 +50,24 @@ impl<'a, 'd> Checker<'a, 'd> {
             .with_note("help: compile for `--target glsl430` / `--target gles310` (GL 4.3, GLES 3.1), `wgsl` or `spirv`, or leave `--target` out to get every target that runs it");
         self.diags.push(d);
     }
+
+    /// A read-write storage image of `format` (neither `@readonly` nor
+    /// `@writeonly`, dasGlsl's default) at `span`: GLSL 430 and SPIR-V
+    /// have it for every format; GLSL ES 3.10 and WGSL only for `r32f`,
+    /// `r32ui` and `r32i`. Refused for those, never made one-way.
+    pub(super) fn read_write_image_used(&mut self, format: &str, span: Span) {
+        let lacking: Vec<&str> = match self.targets_defaulted {
+            true => vec![Target::Gles310.name(), Target::Wgsl.name()],
+            false => self.targets.iter().filter(|t| matches!(t, Target::Gles310 | Target::Wgsl)).map(|t| t.name()).collect(),
+        };
+        if lacking.is_empty() {
+            return;
+        }
+        let (which, s) = if lacking.len() == 1 { (lacking[0].to_string(), "") } else { (lacking.join(" and "), "s") };
+        let d = Diagnostic::error(format!("a read-write `{format}` storage image is not supported by the {which} target{s}"), span)
+            .with_label("read-write: neither `@readonly` nor `@writeonly`")
+            .with_note("GLSL ES 3.10 and WebGPU read and write one storage image only in `r32f`, `r32ui` or `r32i`; GLSL 4.30 and SPIR-V in every format")
+            .with_note("help: add `@writeonly` or `@readonly` if the shader only writes or reads it, or compile for `--target glsl430 --target spirv` only");
+        self.diags.push(d);
+    }
 }

@@ -205,7 +205,7 @@ impl Walk<'_, '_> {
             ExprKind::Local(l) => t.get(*l).copied().unwrap_or(false).then_some("a local variable that holds a per-invocation value"),
             ExprKind::Global(g) => match &self.p.globals[*g].kind {
                 GlobalKind::Builtin(BuiltinVar::LocalInvocationId | BuiltinVar::LocalInvocationIndex | BuiltinVar::GlobalInvocationId) => Some("the invocation's own ID"),
-                GlobalKind::Storage { access: Access::ReadWrite } => Some("a storage buffer other invocations may write"),
+                GlobalKind::Storage { access: Access::ReadWrite, .. } => Some("a storage buffer other invocations may write"),
                 GlobalKind::Workgroup => Some("workgroup memory other invocations may write"),
                 _ => None,
             },

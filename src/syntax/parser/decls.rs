@@ -265,10 +265,18 @@ impl<'m> Parser<'_, 'm> {
         let value = if self.peek().is(P::Eq) {
             self.bump();
             let v = self.peek();
-            if name == "format" && v.kind == TokKind::Ident {
+            // `@format = r32f` or, as dasGlsl reads its string argument,
+            // `@format = "r32f"`.
+            if name == "format" && matches!(v.kind, TokKind::Ident | TokKind::Str) {
                 self.bump();
-                let id = Ident { name: self.texts.name(v.span), span: v.span };
+                let inner = if v.kind == TokKind::Str { Span::new(v.span.start + 1, v.span.end.saturating_sub(1).max(v.span.start + 1)) } else { v.span };
+                let id = Ident { name: self.texts.name(inner), span: v.span };
                 return Ok(Qualifier { kind: QualifierKind::Format(id), span: at.span.to(v.span) });
+            }
+            if name == "format" {
+                let msg = format!("expected a format name after `@format =`, found {}", self.describe(&v));
+                self.err(v, msg, "expected a name such as `rgba8` or `\"r32f\"`");
+                return Err(());
             }
             if v.kind != TokKind::Int {
                 if matches!(name, "location" | "stage" | "set" | "binding") {
@@ -300,6 +308,8 @@ impl<'m> Parser<'_, 'm> {
             "inout" => QualifierKind::InOut,
             "location" => QualifierKind::Location(value),
             "stage" => QualifierKind::Stage(value),
+            // Bare `@format`: dasGlsl's default, rgba8.
+            "format" if value.is_none() => QualifierKind::Format(Ident { name: "rgba8".into(), span: t.span }),
             "set" | "binding" => match value {
                 Some(v) if name == "set" => QualifierKind::Set(v),
                 Some(v) => QualifierKind::Binding(v),

@@ -96,6 +96,8 @@ impl<'m> Parser<'_, 'm> {
             let t = self.peek();
             let forward = match t.kind {
                 TokKind::P(P::RPipe) => true,
+                // `f() <| $ { ... }`: a block argument, the statement's.
+                TokKind::P(P::LPipe) if self.toks.get(self.pos + 1).is_some_and(|n| n.is(P::Dollar)) => return Ok(e),
                 TokKind::P(P::LPipe) => false,
                 _ => return Ok(e),
             };
@@ -274,6 +276,10 @@ impl<'m> Parser<'_, 'm> {
                 self.bump();
                 Ok(Expr { kind: ExprKind::Bool(t.is_kw(Kw::True)), span: t.span })
             }
+            TokKind::Ident if self.host_construct(&t).is_some() => {
+                self.refuse_host_construct(t);
+                Err(())
+            }
             TokKind::Ident => self.name_or_call(t),
             TokKind::P(P::LParen) => self.paren(t),
             TokKind::P(P::LBracket) => {
@@ -288,9 +294,52 @@ impl<'m> Parser<'_, 'm> {
         }
     }
 
+    /// daslang host constructs its shader emitters refuse (glsl_internal.das),
+    /// at `t`: what each is and what to write instead. A word counts only
+    /// where no shader code could continue with it (`cast<`, `new T`).
+    pub(super) fn host_construct(&self, t: &Token) -> Option<(&'static str, &'static str, &'static str)> {
+        let next = self.toks.get(self.pos + 1).map(|n| n.kind);
+        let word_then = |what| t.kind == TokKind::Ident && matches!(next, Some(TokKind::Ident | TokKind::P(P::Lt | P::LBrace))) && self.text(t) == what;
+        Some(match t.kind {
+            TokKind::P(P::QuestionQuestion) => ("??", "null coalescing", "shader values are never null: test a condition with `?:`"),
+            TokKind::P(P::QuestionDot) => ("?.", "safe navigation", "shader values are never null: read the field with `.`"),
+            TokKind::P(P::QuestionBracket) => ("?[", "a safe index", "index with `[]`; the targets clamp indices to the bounds"),
+            TokKind::P(P::At | P::AtAt) => ("@", "a lambda or function address", "call a function by name"),
+            TokKind::P(P::Dollar) => ("$", "a block", "blocks are host code; a shader takes one only in `unroll() $ { for ... }`, a statement of its own"),
+            TokKind::Ident if matches!(next, Some(TokKind::Ident | TokKind::P(P::LParen))) && matches!(self.text(t), "is" | "as") => {
+                if self.text(t) == "is" { ("is", "a type or variant test", "shaders have no variants: use an enumeration and `==`") } else { ("as", "a variant cast", "shaders have no variants: use an enumeration and `==`") }
+            }
+            _ if word_then("cast") || word_then("upcast") => ("cast", "daslang's type cast", "convert with a constructor: `int(x)`, `float3(v)`; `reinterpret<T>(x)` for the bits"),
+            _ if word_then("new") => ("new", "heap allocation", "shaders have no heap: use a local `var`"),
+            _ if word_then("delete") => ("delete", "freeing memory", "shaders have no heap"),
+            _ if word_then("typeinfo") => ("typeinfo", "reflection", "reflection is host code: pass the value in"),
+            _ if word_then("yield") => ("yield", "a generator", "shaders have no generators: return a value"),
+            _ if word_then("try") => ("try", "`try`/`recover`", "shaders have no exceptions"),
+            _ if word_then("goto") || word_then("label") => ("goto", "`goto`/`label`", "use `if`, `break` and `continue`"),
+            _ => return None,
+        })
+    }
+
+    /// Reports a [`Self::host_construct`] at `t`; whether `t` is one.
+    #[cold]
+    #[inline(never)]
+    pub(super) fn refuse_host_construct(&mut self, t: Token) -> bool {
+        let Some((text, what, help)) = self.host_construct(&t) else { return false };
+        let text = if t.kind == TokKind::Ident { self.text(&t) } else { text };
+        let d = Diagnostic::error(format!("`{text}` ({what}) is not supported in shader code"), t.span)
+            .with_label(format!("daslang's {what}"))
+            .with_note("daslang's shader emitters refuse it too: it is host code")
+            .with_note(format!("help: {help}"));
+        self.push(d);
+        true
+    }
+
     #[cold]
     #[inline(never)]
     pub(super) fn error_primary(&mut self, t: Token) {
+        if self.refuse_host_construct(t) {
+            return;
+        }
         match t.kind {
             TokKind::Str | TokKind::Char => {
                 let msg = format!("{}s are not supported in shader code", self.describe(&t));
@@ -334,12 +383,31 @@ impl<'m> Parser<'_, 'm> {
         if next.is(P::LParen) && name.name == "fixed_array" {
             return self.untyped_fixed_array(t, next);
         }
+        if next.is(P::Lt) && name.name == "reinterpret" {
+            return self.reinterpret(t);
+        }
         if next.is(P::LParen) {
             self.bump();
             let (args, end) = self.call_args(next)?;
             return Ok(Expr { kind: ExprKind::Call { callee: name, args }, span: t.span.to(end.span) });
         }
         Ok(Expr { kind: ExprKind::Name(name), span: t.span })
+    }
+
+    /// `reinterpret<T>(x)`: a type name between the angle brackets, one
+    /// value in the parentheses.
+    #[inline(never)]
+    pub(super) fn reinterpret(&mut self, t: Token) -> PResult<Expr> {
+        self.bump(); // `<`
+        let ty = self.ident("a type name")?;
+        self.expect(P::Gt)?;
+        let po = self.peek();
+        if !po.is(P::LParen) {
+            self.error_expected(po, "'('");
+            return Err(());
+        }
+        let (value, end) = self.bracketed(po, P::RParen)?;
+        Ok(Expr { kind: ExprKind::Reinterpret(ty, Box::new(value)), span: t.span.to(end.span) })
     }
 
     /// `fixed_array(a, b)`: the element type is the values'.

@@ -25,7 +25,11 @@ impl<'m> Parser<'_, 'm> {
                 stmts.push(p.stmt()?);
                 Ok(())
             },
-            |p, t| p.error_expected(t, "newline or ';' after the statement"),
+            |p, t| {
+                if !p.refuse_host_construct(t) {
+                    p.error_expected(t, "newline or ';' after the statement")
+                }
+            },
         );
         self.nl_skip = nl0;
         self.open = open0;
@@ -59,6 +63,56 @@ impl<'m> Parser<'_, 'm> {
         self.block()
     }
 
+    /// The body of `if`/`elif`/`else`/`while`/`for`: a block, or (gen2's
+    /// one-liner) one simple statement on the same line:
+    /// `if (c) return x`, `else x = 1`, `while (c) i++`.
+    pub(super) fn body_or_line(&mut self) -> PResult<Block> {
+        let t = self.raw_peek();
+        if matches!(t.kind, TokKind::Newline | TokKind::P(P::LBrace) | TokKind::Eof) {
+            return self.body();
+        }
+        let kind = match t.kind {
+            TokKind::Kw(Kw::Return) => self.return_stmt()?,
+            TokKind::Kw(Kw::Break) => {
+                self.bump();
+                StmtKind::Break
+            }
+            TokKind::Kw(Kw::Continue) => {
+                self.bump();
+                StmtKind::Continue
+            }
+            TokKind::Kw(Kw::Let | Kw::Var | Kw::If | Kw::Elif | Kw::Else | Kw::While | Kw::For) => {
+                self.error_one_liner(t);
+                return Err(());
+            }
+            _ => self.expr_stmt()?,
+        };
+        let stmt = Stmt { kind, span: t.span.to(self.last) };
+        Ok(Block { span: stmt.span, stmts: vec![stmt] })
+    }
+
+    /// `return [value]`: no value before the end of the statement, a
+    /// postfix `if` or a one-line `if`'s `else`.
+    fn return_stmt(&mut self) -> PResult<StmtKind> {
+        self.bump(); // `return`
+        let p = self.raw_peek();
+        if ends_stmt(&p) || p.is_kw(Kw::If) || p.is_kw(Kw::Else) {
+            Ok(StmtKind::Return(None))
+        } else {
+            Ok(StmtKind::Return(Some(self.expr()?)))
+        }
+    }
+
+    #[cold]
+    #[inline(never)]
+    fn error_one_liner(&mut self, t: Token) {
+        let msg = format!("{} cannot stand alone as a one-line body", self.describe(&t));
+        let d = Diagnostic::error(msg, t.span)
+            .with_label("enclose it in `{ }`")
+            .with_note("a body without braces is one expression, assignment, `return`, `break` or `continue` on the same line (daslang's gen2 one-liner)");
+        self.push(d);
+    }
+
     #[inline(always)]
     pub(super) fn stmt(&mut self) -> PResult<Stmt> {
         let t = self.peek();
@@ -68,19 +122,11 @@ impl<'m> Parser<'_, 'm> {
             TokKind::Kw(Kw::While) => {
                 self.bump();
                 let cond = self.expr()?;
-                let body = self.body()?;
+                let body = self.body_or_line()?;
                 StmtKind::While { cond, body }
             }
             TokKind::Kw(Kw::For) => self.for_stmt()?,
-            TokKind::Kw(Kw::Return) => {
-                self.bump();
-                let p = self.raw_peek();
-                if ends_stmt(&p) || p.is_kw(Kw::If) {
-                    StmtKind::Return(None)
-                } else {
-                    StmtKind::Return(Some(self.expr()?))
-                }
-            }
+            TokKind::Kw(Kw::Return) => self.return_stmt()?,
             TokKind::Kw(Kw::Break) => {
                 self.bump();
                 StmtKind::Break
@@ -99,6 +145,14 @@ impl<'m> Parser<'_, 'm> {
                 return Err(());
             }
             TokKind::Ident if t.span.end - t.span.start == 4 && self.toks.get(self.pos + 1).is_some_and(|n| n.is(P::LParen)) && self.text(&t) == "with" => self.with_stmt()?,
+            // `unsafe { ... }`: daslang's permission (for `reinterpret`);
+            // the statements themselves.
+            TokKind::Ident if self.toks.get(self.pos + 1).is_some_and(|n| n.is(P::LBrace)) && self.text(&t) == "unsafe" => {
+                self.bump();
+                StmtKind::Block(self.block()?)
+            }
+            // `f($ { ... })`: the block as the only argument.
+            TokKind::Ident if self.toks.get(self.pos + 1).is_some_and(|n| n.is(P::LParen)) && self.toks.get(self.pos + 2).is_some_and(|n| n.is(P::Dollar)) => self.block_arg_call(t)?,
             _ => self.expr_stmt()?,
         };
         if self.raw_peek().is_kw(Kw::If) {
@@ -146,8 +200,35 @@ impl<'m> Parser<'_, 'm> {
         Ok(StmtKind::With { subject, body })
     }
 
+    /// `f($ { ... })`.
+    #[inline(never)]
+    fn block_arg_call(&mut self, name: Token) -> PResult<StmtKind> {
+        self.bump(); // the name
+        let open = self.bump(); // `(`
+        self.bump(); // `$`
+        let body = self.body()?;
+        self.expect_close(P::RParen, open, "")?;
+        Ok(StmtKind::CallBlock { callee: Ident { name: self.texts.name(name.span), span: name.span }, args: Vec::new(), body })
+    }
+
     pub(super) fn expr_stmt(&mut self) -> PResult<StmtKind> {
         let target = self.expr()?;
+        // `f(args) $ { ... }` or `f(args) <| $ { ... }`: daslang's block
+        // argument, passed last.
+        let next = self.raw_peek();
+        let piped = next.is(P::LPipe) && self.toks.get(self.pos + 1).is_some_and(|n| n.is(P::Dollar));
+        if next.is(P::Dollar) || piped {
+            let ExprKind::Call { callee, args } = target.kind else {
+                self.error_msg(next, "a block argument follows a call: `f() $ { ... }`", "after something that is not a call");
+                return Err(());
+            };
+            self.bump();
+            if piped {
+                self.bump();
+            }
+            let body = self.body()?;
+            return Ok(StmtKind::CallBlock { callee, args, body });
+        }
         let op_tok = self.peek();
         if let Some(op) = assign_op(&op_tok) {
             self.bump();
@@ -201,7 +282,7 @@ impl<'m> Parser<'_, 'm> {
     pub(super) fn if_stmt(&mut self) -> PResult<StmtKind> {
         self.bump(); // `if`
         let cond = self.expr()?;
-        let then = self.body()?;
+        let then = self.body_or_line()?;
         // Later stages nest each `elif` inside the previous one's `else`.
         let depth = self.depth;
         let r = self.elifs(cond, then);
@@ -222,17 +303,17 @@ impl<'m> Parser<'_, 'm> {
             if t.is_kw(Kw::Elif) {
                 self.bump();
                 let c = self.expr()?;
-                let b = self.body()?;
+                let b = self.body_or_line()?;
                 elifs.push((c, b));
             } else if t.is_kw(Kw::Else) {
                 self.bump();
                 if self.peek().is_kw(Kw::If) {
                     self.bump();
                     let c = self.expr()?;
-                    let b = self.body()?;
+                    let b = self.body_or_line()?;
                     elifs.push((c, b));
                 } else {
-                    otherwise = Some(self.body()?);
+                    otherwise = Some(self.body_or_line()?);
                     break;
                 }
             } else {
@@ -269,7 +350,7 @@ impl<'m> Parser<'_, 'm> {
             self.nl_skip -= 1;
             self.open -= 1;
         }
-        let body = self.body()?;
+        let body = self.body_or_line()?;
         Ok(StmtKind::For { vars, iters, body })
     }
 }
