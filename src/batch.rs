@@ -199,9 +199,9 @@ pub enum Origin {
 pub struct Outcome {
     /// The outputs (with the `derive`d ones), if it compiled without errors.
     pub artifacts: Option<Vec<Artifact>>,
-    /// The SHA-256 of each artifact's contents, in order (empty without
-    /// artifacts): from the cache entry on a hit, made beside the compile
-    /// otherwise.
+    /// The hash of each artifact's contents, in order (empty without
+    /// artifacts, and when nothing needs them: see [`compile_cached`]):
+    /// from the cache entry on a hit, made beside the compile otherwise.
     pub hashes: Vec<Key>,
     /// The compilation of a unit compiled here that failed or said
     /// something (warnings), or the failed preprocessing (or panic) of any
@@ -256,6 +256,10 @@ pub type Ready<'a> = dyn Fn(usize, &[Artifact]) + Sync + 'a;
 pub struct Hooks<'a> {
     pub derive: Option<&'a Derive<'a>>,
     pub ready: Option<&'a Ready<'a>>,
+    /// Hash every output ([`Outcome::hashes`]) even without a cache
+    /// (`variants.json` records them). With a cache they are always made:
+    /// its entries hold them.
+    pub output_hashes: bool,
 }
 
 /// Compiles every unit on at most `workers` threads, with a cache: each
@@ -263,9 +267,14 @@ pub struct Hooks<'a> {
 /// the same key are compiled once; a key found in `cache` is not compiled
 /// at all; what was compiled without any diagnostic is stored. Results come
 /// back in the units' order. A panic anywhere is an internal-error
-/// diagnostic of that unit only.
+/// diagnostic of that unit only. Nothing is hashed that nothing uses: a
+/// single unit without a cache has no key, and outputs are hashed only
+/// for a cache or [`Hooks::output_hashes`].
 pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>, hooks: Hooks<'_>) -> (Vec<Outcome>, Stats) {
-    let Hooks { derive, ready } = hooks;
+    let Hooks { derive, ready, output_hashes } = hooks;
+    // A key finds the cache entry, and units that share one compile.
+    let keyed = cache.is_some() || units.len() > 1;
+    let hash_outputs = cache.is_some() || output_hashes;
     enum Pre {
         Failed(Box<Compilation>),
         Hit(crate::cache::Entry),
@@ -281,15 +290,15 @@ pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>,
             if pre.has_errors() {
                 return (Pre::Failed(Box::new(pre.compile(&u.opts))), read, None);
             }
-            let key = Key::of(&pre, &u.opts, &u.extra);
-            match cache.and_then(|c| c.get_entry(&key)) {
+            let key = keyed.then(|| Key::of(&pre, &u.opts, &u.extra));
+            match cache.zip(key.as_ref()).and_then(|(c, key)| c.get_entry(key)) {
                 Some(entry) => {
                     if let Some(r) = ready {
                         r(i, &entry.artifacts);
                     }
-                    (Pre::Hit(entry), read, Some(key))
+                    (Pre::Hit(entry), read, key)
                 }
-                None => (Pre::Miss(Box::new(pre)), read, Some(key)),
+                None => (Pre::Miss(Box::new(pre)), read, key),
             }
         },
         |i, msg| (Pre::Failed(Box::new(panicked_in(units[i].path, &msg))), Default::default(), None),
@@ -391,7 +400,7 @@ pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>,
                         }
                     }
                 }
-                let hashes = artifacts.as_deref().map(crate::cache::hashes_of).unwrap_or_default();
+                let hashes = artifacts.as_deref().filter(|_| hash_outputs).map(crate::cache::hashes_of).unwrap_or_default();
                 // A compile that said nothing has nothing more to report: its
                 // tree (the lowered modules) is freed here, on this worker,
                 // not all at once at the end of the batch.
@@ -559,7 +568,7 @@ mod tests {
             Ok(vec![])
         };
         for workers in [1, 3] {
-            let (out, stats) = compile_cached(&units, workers, Some(&cache), Hooks { derive: Some(&derive), ready: None });
+            let (out, stats) = compile_cached(&units, workers, Some(&cache), Hooks { derive: Some(&derive), ready: None, output_hashes: false });
             assert_eq!(out[2].origin, Origin::SameAs(0));
             assert!(!out[0].failed() && !out[1].failed() && !out[2].failed());
             assert!(out[3].failed());
@@ -588,7 +597,7 @@ mod tests {
                     panic!("ready blew up");
                 }
             };
-            let (out, stats) = compile_cached(&units, workers, Some(cache), Hooks { derive: None, ready: Some(&ready) });
+            let (out, stats) = compile_cached(&units, workers, Some(cache), Hooks { derive: None, ready: Some(&ready), output_hashes: false });
             let mut seen: Vec<usize> = seen.into_inner().unwrap().into_iter().map(|(i, n)| {
                 assert_eq!(n, 2, "the WGSL and the manifest");
                 i
