@@ -236,6 +236,10 @@ pub struct Stats {
     pub stored: usize,
     /// The first error writing the cache (the batch goes on without it).
     pub store_error: Option<String>,
+    /// Every file the batch read, with the hash of the bytes it read, where
+    /// the cache's manifest ([`crate::cache::direct`]) has them (else
+    /// empty): a run record need not read and hash them again.
+    pub read_hashes: Vec<(PathBuf, Key)>,
 }
 
 /// Outputs a caller adds to a unit's compiled outputs, cached with them
@@ -275,6 +279,15 @@ pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>,
     // A key finds the cache entry, and units that share one compile.
     let keyed = cache.is_some() || units.len() > 1;
     let hash_outputs = cache.is_some() || output_hashes;
+    // With a cache, what the last batch of these units read and keyed
+    // them to ([`crate::cache::direct`]): if it still holds, their entries
+    // are found without preprocessing; if not, it is recorded afresh.
+    let direct = cache.map(|c| {
+        let batch_key = crate::cache::direct::batch_key(units.iter().map(|u| (u.path, format!("{:?}", u.opts), u.extra.as_str())));
+        let held = crate::cache::direct::Manifest::load(c, &batch_key, units.len());
+        let recorder = held.is_none().then(crate::cache::direct::Recorder::default);
+        (c, batch_key, held, recorder)
+    });
     enum Pre {
         Failed(Box<Compilation>),
         Hit(crate::cache::Entry),
@@ -285,12 +298,28 @@ pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>,
         workers,
         |i| {
             let u = &units[i];
+            if let Some((c, _, Some(held), _)) = &direct {
+                let unit = &held.units[i];
+                if let Some(entry) = c.get_entry(&unit.key) {
+                    if let Some(r) = ready {
+                        r(i, &entry.artifacts);
+                    }
+                    return (Pre::Hit(entry), (unit.files_read.clone(), unit.probed.clone()), Some(unit.key));
+                }
+            }
             let pre = crate::preprocess_file(u.path, &u.opts);
             let read = (pre.files_read(), pre.probed().to_vec());
+            let recorder = direct.as_ref().and_then(|d| d.3.as_ref());
             if pre.has_errors() {
+                if let Some(r) = recorder {
+                    r.spoil();
+                }
                 return (Pre::Failed(Box::new(pre.compile(&u.opts))), read, None);
             }
             let key = keyed.then(|| Key::of(&pre, &u.opts, &u.extra));
+            if let (Some(r), Some(key)) = (recorder, key) {
+                r.unit(i, key, &pre);
+            }
             match cache.zip(key.as_ref()).and_then(|(c, key)| c.get_entry(key)) {
                 Some(entry) => {
                     if let Some(r) = ready {
@@ -303,12 +332,24 @@ pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>,
         },
         |i, msg| (Pre::Failed(Box::new(panicked_in(units[i].path, &msg))), Default::default(), None),
     );
+    // The files read, hashed once: for the caller's run record too.
+    let mut read_hashes = Vec::new();
+    match direct {
+        Some((_, _, Some(held), _)) => read_hashes = held.files,
+        Some((c, batch_key, None, Some(recorder))) => {
+            if let Some(m) = recorder.finish(units.len()) {
+                m.save(c, &batch_key);
+                read_hashes = m.files().to_vec();
+            }
+        }
+        _ => {}
+    }
 
     // Each key's first unit is compiled (or was a hit); later ones share it.
     let mut first_of: std::collections::HashMap<Key, usize> = Default::default();
     let mut outcomes: Vec<Option<Outcome>> = Vec::with_capacity(units.len());
     let mut to_compile: Vec<(usize, Box<Preprocessed>)> = Vec::new();
-    let mut stats = Stats::default();
+    let mut stats = Stats { read_hashes, ..Default::default() };
     for (i, (pre, (files_read, probed), key)) in first.into_iter().enumerate() {
         if let Some(&j) = key.as_ref().and_then(|k| first_of.get(k)) {
             stats.shared += 1;

@@ -45,6 +45,8 @@ use std::path::{Path, PathBuf};
 use std::time::{Duration, SystemTime};
 
 use crate::sealed::{Reader, TEMP_PREFIX};
+
+pub mod direct;
 use crate::syntax::token::{TokKind, Token};
 use crate::{Artifact, Options, Preprocessed, Target};
 
@@ -354,11 +356,11 @@ impl Cache {
                 entries.push((modified, m.len(), path));
             }
         }
-        // Stamps and run records (`output::stamps`, `rerun`) unused for a
-        // month: the output directories and commands they describe are
-        // likely gone.
+        // Stamps, run records and manifests (`output::stamps`, `rerun`,
+        // `direct`) unused for a month: the output directories and
+        // commands they describe are likely gone.
         let month_ago = SystemTime::now() - Duration::from_secs(30 * 24 * 3600);
-        for sub in ["stamps", "runs"] {
+        for sub in ["stamps", "runs", "direct"] {
             for path in read_dir_paths(&self.dir.join(sub)) {
                 if std::fs::metadata(&path).and_then(|m| m.modified()).is_ok_and(|t| t < month_ago) {
                     let _ = std::fs::remove_file(&path);

@@ -262,7 +262,6 @@ impl Batch {
     /// Every file any job read, sorted, without repeats, without `./`
     /// steps (an include next to a root given as a bare name is `./x`).
     pub fn files_read(&self) -> Vec<PathBuf> {
-        let tidy = |p: &Path| -> PathBuf { p.components().filter(|c| !matches!(c, std::path::Component::CurDir)).collect() };
         // Variants read the same files: each distinct path is tidied once.
         let mut seen: std::collections::HashSet<&Path> = self.outcomes.iter().flat_map(|o| o.files_read.iter().map(PathBuf::as_path)).collect();
         seen.extend(self.inputs.iter().map(|i| i.path.as_path()));
@@ -270,6 +269,19 @@ impl Batch {
         all.sort();
         all.dedup();
         all
+    }
+}
+
+/// A path without `./` steps, as [`Batch::files_read`] names files.
+fn tidy(p: &Path) -> PathBuf {
+    p.components().filter(|c| !matches!(c, std::path::Component::CurDir)).collect()
+}
+
+impl Batch {
+    /// The hash of each file read that the batch hashed already
+    /// ([`Stats::read_hashes`]), by the name [`Batch::files_read`] gives it.
+    pub fn read_hashes(&self) -> std::collections::HashMap<PathBuf, crate::cache::Key> {
+        self.stats.read_hashes.iter().map(|(p, h)| (tidy(p), *h)).collect()
     }
 }
 

@@ -714,10 +714,13 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
     }
     // What the next run needs to see that it would change nothing.
     if let (0, Some(c), Some(key)) = (code, &cache, &run_key) {
+        // Each file's hash as the batch made it from the bytes it read
+        // (each byte hashed once); the rest (the variant spec) read now.
+        let known = batch.read_hashes();
         let mut files = Vec::new();
         for f in inputs_read.iter() {
-            match std::fs::read(f) {
-                Ok(bytes) => files.push((f.clone(), umbrac::cache::Key::of_bytes(&bytes))),
+            match known.get(f).copied().map(Ok).unwrap_or_else(|| std::fs::read(f).map(|b| umbrac::cache::Key::of_bytes(&b))) {
+                Ok(hash) => files.push((f.clone(), hash)),
                 Err(_) => return (code, watched),
             }
         }
