@@ -53,9 +53,13 @@ pub struct Held {
 pub struct Manifest {
     /// Every distinct file read, with the hash of its bytes.
     files: Vec<(PathBuf, Key)>,
-    /// Per unit, in the batch's order: its key, and indices into `files`.
-    units: Vec<(Key, Vec<u32>, Vec<PathBuf>)>,
+    /// Per unit, in the batch's order.
+    units: Vec<Recorded>,
 }
+
+/// A unit in a manifest: its key, the indices of the files it read in
+/// [`Manifest`]'s files, the paths it probed.
+type Recorded = (Key, Vec<u32>, Vec<PathBuf>);
 
 /// The key of a batch's configuration: every unit's path, options and
 /// extra, after umbrac's build and the working directory (relative paths,
@@ -94,7 +98,9 @@ impl Manifest {
             return None;
         }
         for (path, hash) in &m.files {
-            if Key::of_bytes(&std::fs::read(path).ok()?) != *hash {
+            // A path that is no longer a regular file (a FIFO would block
+            // the read) is preprocessed, which says what it is.
+            if !std::fs::metadata(path).ok()?.is_file() || Key::of_bytes(&std::fs::read(path).ok()?) != *hash {
                 return None;
             }
         }
@@ -129,7 +135,7 @@ impl Manifest {
 pub struct Recorder {
     /// Per path: its index in the manifest's files, its text and hash.
     seen: Mutex<FxHashMap<PathBuf, (u32, String, Key)>>,
-    units: Mutex<FxHashMap<usize, (Key, Vec<u32>, Vec<PathBuf>)>>,
+    units: Mutex<FxHashMap<usize, Recorded>>,
     spoiled: AtomicBool,
 }
 
@@ -265,6 +271,20 @@ mod tests {
         assert!(Manifest::load(&cache, &key, 2).is_none());
         std::fs::remove_file(&probe).unwrap();
         assert!(Manifest::load(&cache, &key, 2).is_some());
+
+        // A FIFO where a file was: no manifest, and no read that waits
+        // for a writer.
+        #[cfg(target_os = "linux")]
+        {
+            std::fs::remove_file(&inc).unwrap();
+            let c = std::ffi::CString::new(inc.to_str().unwrap()).unwrap();
+            // SAFETY: a valid NUL-terminated path; mkfifo only creates a file.
+            assert_eq!(unsafe { libc::mkfifo(c.as_ptr(), 0o600) }, 0);
+            assert!(Manifest::load(&cache, &key, 2).is_none());
+            std::fs::remove_file(&inc).unwrap();
+            std::fs::write(&inc, "var b = 2\n").unwrap();
+            assert!(Manifest::load(&cache, &key, 2).is_some());
+        }
 
         // Damage is no manifest.
         let path = Manifest::path(&cache, &key);
