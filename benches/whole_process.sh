@@ -13,12 +13,13 @@
 #
 #     benches/whole_process.sh [INPUT.das] [ROUNDS]
 #
+# UMBRAC_BIN=PATH measures another build (an older one, to compare).
 # WHOLE_PROCESS_ANNOTATE=1 also prints the top functions (inclusive) of
 # each umbrac case, from the same callgrind runs.
 set -euo pipefail
 input="${1:-../shared/reference/08_shadow.das}"
 rounds="${2:-20}"
-bin=target/release/umbrac
+bin="${UMBRAC_BIN:-target/release/umbrac}"
 naga="${NAGA:-naga}"
 wgsl=benches/shadow_equivalent.wgsl
 [ -x "$bin" ] || cargo build --release --bin umbrac
@@ -26,7 +27,7 @@ command -v valgrind >/dev/null || { echo "needs valgrind" >&2; exit 1; }
 command -v "$naga" >/dev/null || { echo "needs the naga CLI (NAGA=...)" >&2; exit 1; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-exec python3 - "$bin" "$input" "$naga" "$wgsl" "$work" "$rounds" "${WHOLE_PROCESS_ANNOTATE:-0}" <<'PY'
+python3 - "$bin" "$input" "$naga" "$wgsl" "$work" "$rounds" "${WHOLE_PROCESS_ANNOTATE:-0}" <<'PY'
 import os, re, resource, statistics, subprocess, sys, time
 
 binary, source, naga, wgsl, work, rounds, annotate = sys.argv[1:]
