@@ -23,6 +23,15 @@ fn main() {
     }
     naga_lock_entries().hash(&mut h);
     println!("cargo:rustc-env=UMBRAC_BUILD_ID={:016x}", h.finish());
+    // The `umbrac` executable is linked at a fixed address on x86-64 GNU/Linux
+    // (`-no-pie`): a position-independent one had 18,000 relocations for
+    // the dynamic loader to apply at every start, a sixth of a cache hit's
+    // instructions (docs/performance.md, "Whole process"). Only this
+    // package's binaries: a crate that builds with umbrac links as it did.
+    let var = |n: &str| std::env::var(n).unwrap_or_default();
+    if var("CARGO_CFG_TARGET_ARCH") == "x86_64" && var("CARGO_CFG_TARGET_OS") == "linux" && var("CARGO_CFG_TARGET_ENV") == "gnu" {
+        println!("cargo:rustc-link-arg-bins=-no-pie");
+    }
     println!("cargo:rerun-if-changed=src");
     println!("cargo:rerun-if-changed=Cargo.toml");
 }

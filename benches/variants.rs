@@ -310,7 +310,9 @@ fn in_process_umbrac(variants: &[umbrac::variants::Variant], rounds: usize, targ
                 })
                 .collect();
             let t0 = Instant::now();
-            let (outcomes, _) = umbrac::batch::compile_cached(&units, w, None, Default::default());
+            // Outputs hashed, as `--variants` has them hashed for variants.json.
+            let hooks = umbrac::batch::Hooks { output_hashes: true, ..Default::default() };
+            let (outcomes, _) = umbrac::batch::compile_cached(&units, w, None, hooks);
             times[k].push(t0.elapsed().as_secs_f64() * 1e3);
             assert!(outcomes.iter().all(|o| !o.failed()));
         }

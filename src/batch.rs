@@ -199,9 +199,9 @@ pub enum Origin {
 pub struct Outcome {
     /// The outputs (with the `derive`d ones), if it compiled without errors.
     pub artifacts: Option<Vec<Artifact>>,
-    /// The SHA-256 of each artifact's contents, in order (empty without
-    /// artifacts): from the cache entry on a hit, made beside the compile
-    /// otherwise.
+    /// The hash of each artifact's contents, in order (empty without
+    /// artifacts, and when nothing needs them: see [`compile_cached`]):
+    /// from the cache entry on a hit, made beside the compile otherwise.
     pub hashes: Vec<Key>,
     /// The compilation of a unit compiled here that failed or said
     /// something (warnings), or the failed preprocessing (or panic) of any
@@ -236,6 +236,10 @@ pub struct Stats {
     pub stored: usize,
     /// The first error writing the cache (the batch goes on without it).
     pub store_error: Option<String>,
+    /// Every file the batch read, with the hash of the bytes it read, where
+    /// the cache's manifest ([`crate::cache::direct`]) has them (else
+    /// empty): a run record need not read and hash them again.
+    pub read_hashes: Vec<(PathBuf, Key)>,
 }
 
 /// Outputs a caller adds to a unit's compiled outputs, cached with them
@@ -256,6 +260,10 @@ pub type Ready<'a> = dyn Fn(usize, &[Artifact]) + Sync + 'a;
 pub struct Hooks<'a> {
     pub derive: Option<&'a Derive<'a>>,
     pub ready: Option<&'a Ready<'a>>,
+    /// Hash every output ([`Outcome::hashes`]) even without a cache
+    /// (`variants.json` records them). With a cache they are always made:
+    /// its entries hold them.
+    pub output_hashes: bool,
 }
 
 /// Compiles every unit on at most `workers` threads, with a cache: each
@@ -263,9 +271,23 @@ pub struct Hooks<'a> {
 /// the same key are compiled once; a key found in `cache` is not compiled
 /// at all; what was compiled without any diagnostic is stored. Results come
 /// back in the units' order. A panic anywhere is an internal-error
-/// diagnostic of that unit only.
+/// diagnostic of that unit only. Nothing is hashed that nothing uses: a
+/// single unit without a cache has no key, and outputs are hashed only
+/// for a cache or [`Hooks::output_hashes`].
 pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>, hooks: Hooks<'_>) -> (Vec<Outcome>, Stats) {
-    let Hooks { derive, ready } = hooks;
+    let Hooks { derive, ready, output_hashes } = hooks;
+    // A key finds the cache entry, and units that share one compile.
+    let keyed = cache.is_some() || units.len() > 1;
+    let hash_outputs = cache.is_some() || output_hashes;
+    // With a cache, what the last batch of these units read and keyed
+    // them to ([`crate::cache::direct`]): if it still holds, their entries
+    // are found without preprocessing; if not, it is recorded afresh.
+    let direct = cache.map(|c| {
+        let batch_key = crate::cache::direct::batch_key(units.iter().map(|u| (u.path, format!("{:?}", u.opts), u.extra.as_str())));
+        let held = crate::cache::direct::Manifest::load(c, &batch_key, units.len());
+        let recorder = held.is_none().then(crate::cache::direct::Recorder::default);
+        (c, batch_key, held, recorder)
+    });
     enum Pre {
         Failed(Box<Compilation>),
         Hit(crate::cache::Entry),
@@ -276,30 +298,58 @@ pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>,
         workers,
         |i| {
             let u = &units[i];
+            if let Some((c, _, Some(held), _)) = &direct {
+                let unit = &held.units[i];
+                if let Some(entry) = c.get_entry(&unit.key) {
+                    if let Some(r) = ready {
+                        r(i, &entry.artifacts);
+                    }
+                    return (Pre::Hit(entry), (unit.files_read.clone(), unit.probed.clone()), Some(unit.key));
+                }
+            }
             let pre = crate::preprocess_file(u.path, &u.opts);
             let read = (pre.files_read(), pre.probed().to_vec());
+            let recorder = direct.as_ref().and_then(|d| d.3.as_ref());
             if pre.has_errors() {
+                if let Some(r) = recorder {
+                    r.spoil();
+                }
                 return (Pre::Failed(Box::new(pre.compile(&u.opts))), read, None);
             }
-            let key = Key::of(&pre, &u.opts, &u.extra);
-            match cache.and_then(|c| c.get_entry(&key)) {
+            let key = keyed.then(|| Key::of(&pre, &u.opts, &u.extra));
+            if let (Some(r), Some(key)) = (recorder, key) {
+                r.unit(i, key, &pre);
+            }
+            match cache.zip(key.as_ref()).and_then(|(c, key)| c.get_entry(key)) {
                 Some(entry) => {
                     if let Some(r) = ready {
                         r(i, &entry.artifacts);
                     }
-                    (Pre::Hit(entry), read, Some(key))
+                    (Pre::Hit(entry), read, key)
                 }
-                None => (Pre::Miss(Box::new(pre)), read, Some(key)),
+                None => (Pre::Miss(Box::new(pre)), read, key),
             }
         },
         |i, msg| (Pre::Failed(Box::new(panicked_in(units[i].path, &msg))), Default::default(), None),
     );
+    // The files read, hashed once: for the caller's run record too.
+    let mut read_hashes = Vec::new();
+    match direct {
+        Some((_, _, Some(held), _)) => read_hashes = held.files,
+        Some((c, batch_key, None, Some(recorder))) => {
+            if let Some(m) = recorder.finish(units.len()) {
+                m.save(c, &batch_key);
+                read_hashes = m.files().to_vec();
+            }
+        }
+        _ => {}
+    }
 
     // Each key's first unit is compiled (or was a hit); later ones share it.
     let mut first_of: std::collections::HashMap<Key, usize> = Default::default();
     let mut outcomes: Vec<Option<Outcome>> = Vec::with_capacity(units.len());
     let mut to_compile: Vec<(usize, Box<Preprocessed>)> = Vec::new();
-    let mut stats = Stats::default();
+    let mut stats = Stats { read_hashes, ..Default::default() };
     for (i, (pre, (files_read, probed), key)) in first.into_iter().enumerate() {
         if let Some(&j) = key.as_ref().and_then(|k| first_of.get(k)) {
             stats.shared += 1;
@@ -391,7 +441,7 @@ pub fn compile_cached(units: &[Unit<'_>], workers: usize, cache: Option<&Cache>,
                         }
                     }
                 }
-                let hashes = artifacts.as_deref().map(crate::cache::hashes_of).unwrap_or_default();
+                let hashes = artifacts.as_deref().filter(|_| hash_outputs).map(crate::cache::hashes_of).unwrap_or_default();
                 // A compile that said nothing has nothing more to report: its
                 // tree (the lowered modules) is freed here, on this worker,
                 // not all at once at the end of the batch.
@@ -559,7 +609,7 @@ mod tests {
             Ok(vec![])
         };
         for workers in [1, 3] {
-            let (out, stats) = compile_cached(&units, workers, Some(&cache), Hooks { derive: Some(&derive), ready: None });
+            let (out, stats) = compile_cached(&units, workers, Some(&cache), Hooks { derive: Some(&derive), ready: None, output_hashes: false });
             assert_eq!(out[2].origin, Origin::SameAs(0));
             assert!(!out[0].failed() && !out[1].failed() && !out[2].failed());
             assert!(out[3].failed());
@@ -588,7 +638,7 @@ mod tests {
                     panic!("ready blew up");
                 }
             };
-            let (out, stats) = compile_cached(&units, workers, Some(cache), Hooks { derive: None, ready: Some(&ready) });
+            let (out, stats) = compile_cached(&units, workers, Some(cache), Hooks { derive: None, ready: Some(&ready), output_hashes: false });
             let mut seen: Vec<usize> = seen.into_inner().unwrap().into_iter().map(|(i, n)| {
                 assert_eq!(n, 2, "the WGSL and the manifest");
                 i

@@ -1,6 +1,6 @@
 //! A content-addressed cache of compiled outputs.
 //!
-//! The [`Key`] of a compilation is a SHA-256 over everything its outputs
+//! The [`Key`] of a compilation is a BLAKE3 hash of everything its outputs
 //! depend on: the preprocessed token stream of the whole translation unit
 //! (every file read, after `#include`, `#ifdef` and `#define`, so the `-D`
 //! definitions and the include directories are in it through what they
@@ -10,14 +10,21 @@
 //! Comments and whitespace are not tokens, so editing only them is a hit;
 //! two define sets that preprocess to the same text share one entry.
 //!
-//! An entry is one file, `DIR/v3/AB/ABCDEF...`: a header (magic, the key,
+//! An entry is one file, `DIR/v4/AB/ABCDEF...`: a header (magic, the key,
 //! the body's length, a CRC-32 of the body) and the artifacts, each with
-//! the SHA-256 of its contents, which is what `variants.json` records of
-//! each output: a hit hashes no output. The CRC-32 (crc32fast, SIMD) is
+//! the BLAKE3 hash of its contents, which is what `variants.json` records
+//! of each output: a hit hashes no output. The CRC-32 (crc32fast, SIMD) is
 //! there to catch damage, not forgery: it detects every truncation (with
 //! the length), every burst of up to 32 flipped bits and all but 2^-32 of
 //! other corruption, at a small part of the cost of hashing each output
-//! again with SHA-256 on every hit. An entry is written to a temporary
+//! again on every hit.
+//!
+//! BLAKE3, not SHA-256 (which layouts up to `v3` used): a content-addressed
+//! cache wants a cryptographic hash, and BLAKE3 is one at several times
+//! fewer instructions a byte (its SIMD code is chosen at run time). SHA-256
+//! in portable code was a third of a whole compile (docs/performance.md,
+//! "Whole process"). Nothing is hashed that no cache, run record or
+//! `variants.json` will use: `--no-cache` on one file hashes nothing. An entry is written to a temporary
 //! beside it (`.tmp-*` in its own `AB/` directory, so that stores on
 //! several threads do not all create files in one directory) and renamed
 //! into place, so a reader sees a whole entry or none; two processes that
@@ -37,9 +44,9 @@ use std::fmt;
 use std::path::{Path, PathBuf};
 use std::time::{Duration, SystemTime};
 
-use sha2::{Digest, Sha256};
-
 use crate::sealed::{Reader, TEMP_PREFIX};
+
+pub mod direct;
 use crate::syntax::token::{TokKind, Token};
 use crate::{Artifact, Options, Preprocessed, Target};
 
@@ -49,8 +56,8 @@ pub const DEFAULT_MAX_BYTES: u64 = 256 << 20;
 
 /// Entry layout version; a change makes every old entry a miss (and
 /// removes it on the first read).
-const MAGIC: &[u8; 8] = b"UMBRAC\x03\x00";
-const LAYOUT_DIR: &str = "v3";
+const MAGIC: &[u8; 8] = b"UMBRAC\x04\x00";
+const LAYOUT_DIR: &str = "v4";
 const HEADER_LEN: usize = 8 + 32 + 8 + 4;
 
 
@@ -67,7 +74,7 @@ pub fn compiler_id() -> &'static str {
     COMPILER_ID
 }
 
-/// A SHA-256 content hash.
+/// A BLAKE3 content hash (256 bits).
 #[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct Key(pub [u8; 32]);
 
@@ -76,9 +83,9 @@ impl Key {
     /// that hold more than the compiler's outputs (`umbrac::build` adds its
     /// bindings module and names the generator's options in it).
     pub fn of(pre: &Preprocessed, opts: &Options, extra: &str) -> Key {
-        let mut h = Sha256::new();
-        let field = |h: &mut Sha256, bytes: &[u8]| {
-            h.update((bytes.len() as u64).to_le_bytes());
+        let mut h = blake3::Hasher::new();
+        let field = |h: &mut blake3::Hasher, bytes: &[u8]| {
+            h.update(&(bytes.len() as u64).to_le_bytes());
             h.update(bytes);
         };
         field(&mut h, b"umbrac compile key 1");
@@ -108,12 +115,12 @@ impl Key {
         }
         field(&mut h, b"tokens");
         hash_tokens(&mut h, pre.tokens(), pre.sources());
-        Key(h.finalize().into())
+        Key(*h.finalize().as_bytes())
     }
 
-    /// The SHA-256 of some bytes (output hashes in `variants.json`).
+    /// The hash of some bytes (output hashes in `variants.json`).
     pub fn of_bytes(bytes: &[u8]) -> Key {
-        Key(Sha256::digest(bytes).into())
+        Key(*blake3::hash(bytes).as_bytes())
     }
 
     pub fn hex(&self) -> String {
@@ -127,12 +134,12 @@ impl Key {
     }
 }
 
-/// The SHA-256 of each artifact's contents, in order.
+/// The hash of each artifact's contents, in order.
 pub fn hashes_of(artifacts: &[Artifact]) -> Vec<Key> {
     artifacts.iter().map(|a| Key::of_bytes(&a.contents)).collect()
 }
 
-/// What an entry holds: artifacts and the SHA-256 of each one's contents.
+/// What an entry holds: artifacts and the hash of each one's contents.
 #[derive(Clone, Debug)]
 pub struct Entry {
     pub artifacts: Vec<Artifact>,
@@ -148,15 +155,30 @@ impl fmt::Debug for Key {
 /// Feeds each token's kind and text. The kind is given as a number so that
 /// a text that lexes differently in another context (a macro's value)
 /// still hashes as what it is.
-fn hash_tokens(h: &mut Sha256, toks: &[Token], map: &crate::SourceMap) {
+fn hash_tokens(h: &mut blake3::Hasher, toks: &[Token], map: &crate::SourceMap) {
+    // Each token's text straight from its file's bytes: the tokens of a
+    // run mostly come from one file, which is found again only when a
+    // token lies outside it (`SourceMap::slice` located every token, a
+    // third of the key's instructions).
+    let files: Vec<(u32, &[u8])> = map.files().map(|(_, f)| (f.base, f.text.as_bytes())).collect();
+    let mut cur: (u32, &[u8]) = files.first().copied().unwrap_or((0, &[]));
     let mut buf = Vec::with_capacity(64 * 1024);
     // Line breaks before the first token (a comment at the top of the file)
     // end no statement. Runs of them are one token already.
     let first = toks.iter().position(|t| t.kind != TokKind::Newline).unwrap_or(toks.len());
     for t in &toks[first..] {
-        let text = map.slice(t.span).as_bytes();
-        buf.extend_from_slice(&kind_code(t.kind).to_le_bytes());
-        buf.extend_from_slice(&(text.len() as u32).to_le_bytes());
+        let (start, end) = (t.span.start, t.span.end.max(t.span.start));
+        if start < cur.0 || start - cur.0 > cur.1.len() as u32 {
+            let at = files.partition_point(|f| f.0 <= start);
+            cur = at.checked_sub(1).map_or((0, &[]), |i| files[i]);
+        }
+        // As `SourceMap::slice`: clipped to the file, empty outside any.
+        let bytes = cur.1;
+        let from = ((start - cur.0) as usize).min(bytes.len());
+        let text = &bytes[from..((end - cur.0) as usize).clamp(from, bytes.len())];
+        let code = kind_code(t.kind).to_le_bytes();
+        let len = (text.len() as u32).to_le_bytes();
+        buf.extend_from_slice(&[code[0], code[1], len[0], len[1], len[2], len[3]]);
         buf.extend_from_slice(text);
         if buf.len() >= 60 * 1024 {
             h.update(&buf);
@@ -187,7 +209,7 @@ pub struct Cache {
     dir: PathBuf,
     max_bytes: u64,
     /// Directories this process already made or found (the tag, each
-    /// `v3/AB/`): a batch storing 256 entries makes each once instead of
+    /// `v4/AB/`): a batch storing 256 entries makes each once instead of
     /// trying it 256 times.
     made: std::sync::Arc<Made>,
 }
@@ -195,7 +217,7 @@ pub struct Cache {
 #[derive(Debug, Default)]
 struct Made {
     tagged: std::sync::atomic::AtomicBool,
-    /// One bit per first key byte: `v3/AB/` exists.
+    /// One bit per first key byte: `v4/AB/` exists.
     fanout: [std::sync::atomic::AtomicU64; 4],
 }
 
@@ -343,18 +365,18 @@ impl Cache {
                 entries.push((modified, m.len(), path));
             }
         }
-        // Stamps and run records (`output::stamps`, `rerun`) unused for a
-        // month: the output directories and commands they describe are
-        // likely gone.
+        // Stamps, run records and manifests (`output::stamps`, `rerun`,
+        // `direct`) unused for a month: the output directories and
+        // commands they describe are likely gone.
         let month_ago = SystemTime::now() - Duration::from_secs(30 * 24 * 3600);
-        for sub in ["stamps", "runs"] {
+        for sub in ["stamps", "runs", "direct"] {
             for path in read_dir_paths(&self.dir.join(sub)) {
                 if std::fs::metadata(&path).and_then(|m| m.modified()).is_ok_and(|t| t < month_ago) {
                     let _ = std::fs::remove_file(&path);
                 }
             }
         }
-        // What earlier layouts left (`v2/`, its `tmp/`): never read again.
+        // What earlier layouts left (`v3/`, `v2/`, its `tmp/`): never read again.
         for old in read_dir_paths(&self.dir) {
             let name = old.file_name().map(|n| n.to_string_lossy().into_owned()).unwrap_or_default();
             let earlier_layout = name == "tmp" || (name.len() > 1 && name.starts_with('v') && name[1..].bytes().all(|b| b.is_ascii_digit()) && name != LAYOUT_DIR);
@@ -514,6 +536,35 @@ mod tests {
     }
 
     #[test]
+    fn hashes_are_blake3() {
+        // `variants.json` names the algorithm (`blake3:`): its values must
+        // be BLAKE3's, on every machine (the reference's test vectors).
+        assert_eq!(Key::of_bytes(b"").hex(), "af1349b9f5f9a1a6a0404dea36dcc9499bcb25c9adc112b7cc9a93cae41f3262");
+        assert_eq!(Key::of_bytes(b"abc").hex(), "6437b3ac38465133ffb63b75273a8db548c558465d79db03fd359c6cd5bd9d85");
+    }
+
+    #[test]
+    fn keys_follow_every_files_tokens_and_not_their_comments() {
+        // Tokens from two files (an include and the file around it): the
+        // key sees each one's text wherever it lies.
+        let d = tempfile::tempdir().unwrap();
+        let key_with = |inc: &str, main: &str| {
+            std::fs::write(d.path().join("inc.das"), inc).unwrap();
+            std::fs::write(d.path().join("main.das"), main).unwrap();
+            let opts = Options::default();
+            let pre = crate::preprocess_file(&d.path().join("main.das"), &opts);
+            assert!(!pre.has_errors());
+            Key::of(&pre, &opts, "")
+        };
+        let main = "var a = 1\n#include \"inc.das\"\nvar c = 3\n";
+        let k = key_with("var b = 2\n", main);
+        assert_eq!(k, key_with("// a comment\nvar  b = 2 // another\n", main), "comments and spaces are no tokens");
+        assert_ne!(k, key_with("var b = 5\n", main), "a token of the include changed");
+        assert_ne!(k, key_with("var b = 2\n", &main.replace('3', "4")), "a token after the include changed");
+        assert_ne!(k, key_with("var b = 2\n", &main.replace("var a", "var x")), "the file's first token changed");
+    }
+
+    #[test]
     fn stores_and_reads_back() {
         let d = tempfile::tempdir().unwrap();
         let c = Cache::new(d.path(), DEFAULT_MAX_BYTES);
@@ -530,7 +581,7 @@ mod tests {
 
     #[test]
     fn a_cache_deleted_while_in_use_is_made_again() {
-        // Each `v3/AB/` is made once per process; the cache's directory
+        // Each `v4/AB/` is made once per process; the cache's directory
         // going away must not make later stores fail.
         let d = tempfile::tempdir().unwrap();
         let dir = d.path().join("cache");

@@ -121,7 +121,7 @@ impl Batch {
                 r(j, &rel_dirs[j], arts);
             }
         };
-        let hooks = batch::Hooks { derive: None, ready: ready.is_some().then_some(&report as &batch::Ready) };
+        let hooks = batch::Hooks { derive: None, ready: ready.is_some().then_some(&report as &batch::Ready), output_hashes: !variants.is_empty() };
         let (outcomes, stats) = batch::compile_cached(&units, settings.workers, settings.cache, hooks);
         drop(units);
         Batch { inputs, variants, jobs, outcomes, stats }
@@ -197,8 +197,8 @@ impl Batch {
         ds
     }
 
-    /// `variants.json`: each variant's defines, directory and the SHA-256
-    /// of every output, paths relative to the output directory. Sorted
+    /// `variants.json`: each variant's defines, directory and the BLAKE3
+    /// hash of every output, paths relative to the output directory. Sorted
     /// (variants in spec order), so it is byte-identical across runs.
     pub fn variants_json(&self) -> String {
         // Written directly in serde_json's pretty layout (two-space
@@ -211,7 +211,8 @@ impl Batch {
             }
         }
         let mut out: Vec<u8> = Vec::with_capacity(1024 + 800 * self.jobs.len());
-        out.extend_from_slice(b"{\n  \"format\": 1,\n  \"variants\": [");
+        // Format 2: BLAKE3 hashes (`blake3:`); 1 had SHA-256 ones.
+        out.extend_from_slice(b"{\n  \"format\": 2,\n  \"variants\": [");
         for (vi, v) in self.variants.iter().enumerate() {
             let mut outputs: BTreeMap<String, &crate::cache::Key> = BTreeMap::new();
             let mut same_as = None;
@@ -243,7 +244,7 @@ impl Batch {
             json_string(&mut out, &v.name);
             out.extend_from_slice(b",\n      \"outputs\": ");
             inner_object(&mut out, outputs, |out, hash| {
-                out.extend_from_slice(b"\"sha256:");
+                out.extend_from_slice(b"\"blake3:");
                 out.extend_from_slice(hash.hex().as_bytes());
                 out.push(b'"');
             });
@@ -261,7 +262,6 @@ impl Batch {
     /// Every file any job read, sorted, without repeats, without `./`
     /// steps (an include next to a root given as a bare name is `./x`).
     pub fn files_read(&self) -> Vec<PathBuf> {
-        let tidy = |p: &Path| -> PathBuf { p.components().filter(|c| !matches!(c, std::path::Component::CurDir)).collect() };
         // Variants read the same files: each distinct path is tidied once.
         let mut seen: std::collections::HashSet<&Path> = self.outcomes.iter().flat_map(|o| o.files_read.iter().map(PathBuf::as_path)).collect();
         seen.extend(self.inputs.iter().map(|i| i.path.as_path()));
@@ -269,6 +269,19 @@ impl Batch {
         all.sort();
         all.dedup();
         all
+    }
+}
+
+/// A path without `./` steps, as [`Batch::files_read`] names files.
+fn tidy(p: &Path) -> PathBuf {
+    p.components().filter(|c| !matches!(c, std::path::Component::CurDir)).collect()
+}
+
+impl Batch {
+    /// The hash of each file read that the batch hashed already
+    /// ([`Stats::read_hashes`]), by the name [`Batch::files_read`] gives it.
+    pub fn read_hashes(&self) -> std::collections::HashMap<PathBuf, crate::cache::Key> {
+        self.stats.read_hashes.iter().map(|(p, h)| (tidy(p), *h)).collect()
     }
 }
 

@@ -515,11 +515,16 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
     // A rerun that would change nothing ends here (src/rerun.rs), before
     // the variant spec is even expanded: its bytes are among the files
     // the record holds the hash of.
-    let run_key = (!to_stdout).then(|| run_key(args, &inputs, &opts, &dir));
+    // Without a cache there is no record to read or write: nothing hashed.
+    let run_key = (!to_stdout && cache.is_some()).then(|| run_key(args, &inputs, &opts, &dir));
     if let (Some(c), Some(key)) = (&cache, &run_key) {
         if let Some(rec) = umbrac::rerun::Record::load(c, key) {
             let stamps = umbrac::output::stamps::Stamps::load(c.dir(), &dir);
-            if rec.still_holds(&stamps, args.batch.workers()) {
+            let holds = rec.still_holds(&stamps, args.batch.workers());
+            // The outputs it had to read are stamped: the next rerun
+            // reads none (and a full run below, none of those).
+            stamps.save();
+            if holds {
                 watched.files.extend(rec.files.iter().map(|(p, _)| p.clone()));
                 if args.batch.verbose {
                     let [jobs, compiled, cached, shared] = rec.counts;
@@ -536,7 +541,7 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
                 }
                 // The process ends next (see the end of a full run).
                 if !args.watch {
-                    std::mem::forget((rec, stamps));
+                    std::mem::forget(rec);
                 }
                 return (0, watched);
             }
@@ -699,12 +704,13 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
         return (code, watched);
     }
     if let (Some(manifest), 0) = (&manifest, code) {
-        let hash = [umbrac::cache::Key::of_bytes(&manifest.contents)];
-        let known = umbrac::output::Known { hashes: &hash, stamps: &stamps };
-        match umbrac::jobs::write_outputs(&dir, std::slice::from_ref(manifest), newest_input, Some(&known)) {
+        // Its hash is for the stamps and the run record: only with a cache.
+        let hash: Vec<umbrac::cache::Key> = cache.iter().map(|_| umbrac::cache::Key::of_bytes(&manifest.contents)).collect();
+        let known = cache.as_ref().map(|_| umbrac::output::Known { hashes: &hash, stamps: &stamps });
+        match umbrac::jobs::write_outputs(&dir, std::slice::from_ref(manifest), newest_input, known.as_ref()) {
             Ok(()) => {
                 written.push((dir.join(&manifest.file_name), Path::new("")));
-                written_hashes.push((dir.join(&manifest.file_name), hash[0]));
+                written_hashes.extend(hash.first().map(|h| (dir.join(&manifest.file_name), *h)));
             }
             Err(e) => {
                 reporter.plain(&Diagnostic::error_nowhere(e.to_string()));
@@ -726,10 +732,13 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
     }
     // What the next run needs to see that it would change nothing.
     if let (0, Some(c), Some(key)) = (code, &cache, &run_key) {
+        // Each file's hash as the batch made it from the bytes it read
+        // (each byte hashed once); the rest (the variant spec) read now.
+        let known = batch.read_hashes();
         let mut files = Vec::new();
         for f in inputs_read.iter() {
-            match std::fs::read(f) {
-                Ok(bytes) => files.push((f.clone(), umbrac::cache::Key::of_bytes(&bytes))),
+            match known.get(f).copied().map(Ok).unwrap_or_else(|| std::fs::read(f).map(|b| umbrac::cache::Key::of_bytes(&b))) {
+                Ok(hash) => files.push((f.clone(), hash)),
                 Err(_) => return (code, watched),
             }
         }

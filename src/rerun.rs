@@ -5,21 +5,24 @@
 //! every output as it was. After a command succeeds, a [`Record`] keeps
 //! what it depended on and what it left:
 //!
-//! - the SHA-256 of every file it read (sources, includes, modules, the
+//! - the hash of every file it read (sources, includes, modules, the
 //!   variant spec);
 //! - every path an `#include` or `require` looked at and found no file at
 //!   ([`crate::syntax::Unit::probed`]): a file appearing there would change
 //!   what is read;
-//! - the SHA-256 of every output, and the depfile's text.
+//! - the hash of every output, and the depfile's text.
 //!
 //! It is stored in the cache directory (`runs/`), under a key made of the
 //! command's whole configuration (umbrac's build, the inputs, the variants,
 //! every option, the output directory and depfile). The next run with the
 //! same key checks the record: every file read must hash as before,
-//! nothing may have appeared where nothing was, and every output must be
-//! known by a trusted stamp ([`crate::output::stamps`]) to still hold its
-//! recorded bytes, and be newer than every file read (or make would rerun
-//! the command). If all of that holds the command has nothing to do but
+//! nothing may have appeared where nothing was, and every output must
+//! still hold its recorded bytes, and be newer than every file read (or
+//! make would rerun the command). An output a trusted stamp
+//! ([`crate::output::stamps`]) vouches for is not read; one it does not
+//! (the first rerun after the outputs were written) is read, hashed and
+//! stamped, so the first rerun already has nothing else to do, and the
+//! next ones read no output at all. If all of that holds the command has nothing to do but
 //! rewrite the depfile (ninja deletes it once read): nothing is
 //! preprocessed or read from the cache. If anything differs, the command
 //! runs as usual, so a record can only ever save work, never change a
@@ -29,10 +32,11 @@ use std::path::{Path, PathBuf};
 use std::time::SystemTime;
 
 use crate::cache::{Cache, Key};
-use crate::output::stamps::{FileState, Stamps};
+use crate::output::stamps::{now_ns, FileState, Stamps};
 use crate::sealed::{self, Reader};
 
-const MAGIC: &[u8; 8] = b"UMBRUN01";
+/// `02`: BLAKE3 hashes (`01` held SHA-256 ones).
+const MAGIC: &[u8; 8] = b"UMBRUN02";
 
 /// What one successful command depended on and left (see the module docs).
 #[derive(Clone, Debug, Default, PartialEq, Eq)]
@@ -77,10 +81,20 @@ impl Record {
     }
 
     /// Whether a rerun would change nothing (see the module docs), the
-    /// outputs checked on up to `workers` threads.
+    /// outputs checked on up to `workers` threads. Outputs read to see that
+    /// are stamped in `stamps` (the caller saves them).
     pub fn still_holds(&self, stamps: &Stamps, workers: usize) -> bool {
+        // When the outputs' states are read: before any of them is (an
+        // earlier time only makes a stamp less trusted), and once, not
+        // once per output (2,000 clock reads for 256 variants).
+        let taken = now_ns();
         let mut newest = SystemTime::UNIX_EPOCH;
         for (path, hash) in &self.files {
+            // Not a regular file any more (a FIFO would block the read):
+            // the command runs, and says what it is.
+            if !std::fs::metadata(path).is_ok_and(|m| m.is_file()) {
+                return false;
+            }
             let Ok(bytes) = std::fs::read(path) else { return false };
             if Key::of_bytes(&bytes) != *hash {
                 return false;
@@ -95,17 +109,33 @@ impl Record {
         }
         let chunk = self.outputs.len().div_ceil(workers.max(1)).max(64);
         let chunks: Vec<&[(PathBuf, Key)]> = self.outputs.chunks(chunk).collect();
-        let held = crate::batch::parallel_map(chunks.len(), workers, |c| chunks[c].iter().all(|(p, h)| output_holds(p, h, stamps, newest)), |_, _| false);
+        let held = crate::batch::parallel_map(chunks.len(), workers, |c| chunks[c].iter().all(|(p, h)| output_holds(p, h, stamps, newest, taken)), |_, _| false);
         held.into_iter().all(|h| h)
     }
 }
 
-/// Whether the output at `path` holds bytes with hash `hash` by a trusted
-/// stamp, and is newer than `newest`.
-fn output_holds(path: &Path, hash: &Key, stamps: &Stamps, newest: SystemTime) -> bool {
+/// Whether the output at `path` is newer than `newest` and holds bytes
+/// with hash `hash`: by a trusted stamp, or else read (and then stamped as
+/// of `taken`, a time before its state is read: as in
+/// `output::write_outputs_known`, the clock, then the state, then the
+/// bytes, so a change after the state was read shows in it).
+fn output_holds(path: &Path, hash: &Key, stamps: &Stamps, newest: SystemTime, taken: i128) -> bool {
     let Ok(m) = std::fs::symlink_metadata(path) else { return false };
-    let newer = m.modified().is_ok_and(|t| t > newest);
-    newer && m.is_file() && FileState::of(&m).is_some_and(|s| stamps.hash_of(path, &s) == Some(*hash))
+    if !m.is_file() || !m.modified().is_ok_and(|t| t > newest) {
+        return false;
+    }
+    let state = FileState::of(&m);
+    if state.is_some_and(|s| stamps.hash_of(path, &s) == Some(*hash)) {
+        return true;
+    }
+    let Ok(bytes) = std::fs::read(path) else { return false };
+    if Key::of_bytes(&bytes) != *hash {
+        return false;
+    }
+    if let Some(s) = state {
+        stamps.record(path, s, *hash, taken);
+    }
+    true
 }
 
 fn encode(r: &Record) -> Vec<u8> {
@@ -203,7 +233,23 @@ mod tests {
         std::fs::remove_file(&probed).unwrap();
         let out = d.path().join("a.wgsl");
         let with_output = Record { outputs: vec![(out.clone(), Key::of_bytes(b"w"))], ..rec };
+        // Times set, not left to the clock: the output must be newer than
+        // the input, which a coarse clock could make a tie.
+        let input_time = std::fs::metadata(&src).unwrap().modified().unwrap();
+        let set_time = |t| std::fs::File::options().write(true).open(&out).unwrap().set_modified(t).unwrap();
+        std::fs::write(&out, "x").unwrap();
+        set_time(input_time + std::time::Duration::from_secs(1));
+        assert!(!with_output.still_holds(&stamps, 2), "an output that holds other bytes");
         std::fs::write(&out, "w").unwrap();
-        assert!(!with_output.still_holds(&stamps, 2), "an output no stamp vouches for");
+        set_time(input_time);
+        assert!(!with_output.still_holds(&stamps, 2), "an output not newer than an input");
+        set_time(input_time + std::time::Duration::from_secs(1));
+        // No stamp vouches for it: it is read, found to hold its bytes,
+        // and stamped (a stamp taken now of a file changed now is not
+        // trusted, so only its recording is checked here).
+        let stamps = Stamps::load(&d.path().join("cache"), d.path());
+        assert!(with_output.still_holds(&stamps, 2), "an output read and found to hold its bytes");
+        stamps.save();
+        assert!(d.path().join("cache/stamps").read_dir().unwrap().next().is_some(), "the output read was stamped");
     }
 }

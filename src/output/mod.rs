@@ -93,7 +93,7 @@ pub enum Unchanged {
     Leave,
 }
 
-/// What a caller already knows of the artifacts it writes: the SHA-256 of
+/// What a caller already knows of the artifacts it writes: the hash of
 /// each one's contents (in order), and the [`stamps::Stamps`] of the
 /// files already there, so that a file known to hold those bytes is not
 /// read back.

@@ -3,7 +3,7 @@
 //! A warm run's outputs are almost always the files the previous run left,
 //! and reading every one back to see that (2,049 files for 256 variants)
 //! was most of such a run. A [`Stamps`] file remembers, for each output it
-//! has seen, the SHA-256 of its contents together with what the file
+//! has seen, the hash of its contents together with what the file
 //! system says of the file: size, inode, modification and status-change
 //! times. Any write, rename or `touch` changes the status-change time
 //! (ctime), which no program can set back, so a file whose size, inode and
@@ -42,7 +42,8 @@ pub const MARGIN: Duration = Duration::from_millis(20);
 /// file systems): their clocks tick by one or two seconds.
 const COARSE_MARGIN: Duration = Duration::from_secs(3);
 
-const MAGIC: &[u8; 8] = b"UMBSTMP2";
+/// `3`: BLAKE3 hashes (`2` held SHA-256 ones).
+const MAGIC: &[u8; 8] = b"UMBSTMP3";
 
 /// What the file system says of a file, as far as a stamp compares it.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
