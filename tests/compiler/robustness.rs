@@ -565,3 +565,16 @@ fn returns_under_nested_ifs_take_linear_time() {
         }
     }
 }
+
+/// An entry point annotation written over several lines (`[`,
+/// `fragment_program`, `]`) was not seen, and the entry point was silently
+/// left out; a stray character between the annotation and `def` is a
+/// located error (tests/bad_inputs/items_annotation_then_*.das).
+#[test]
+fn annotations_over_several_lines_name_entry_points() {
+    let src = "var @out f_color : float4\nvar @in a : float4\n[\n    vertex_program\n]\ndef vs {\n    gl_Position = a\n}\n[\nfragment_program(\n    name = \"shade\"\n)\n]\ndef fs {\n    f_color = float4(1.0)\n}\n";
+    let c = compile_source("multiline.das", src, &Options::default());
+    assert!(!c.has_errors(), "{}", c.render_diagnostics());
+    let names: Vec<&str> = c.result.as_ref().unwrap().reflection.entry_points.iter().map(|e| e.name.as_str()).collect();
+    assert_eq!(names, ["vs", "shade"]);
+}
