@@ -255,3 +255,26 @@ fn helpers_that_discard_still_return_and_locals_keep_clear_of_naga_names() {
     let wgsl = c.artifact("discarding.wgsl").unwrap().text().into_owned();
     assert!(wgsl.contains("return x"), "the `return` after `discard()` was dropped:\n{wgsl}");
 }
+
+/// The largest constant index into a run-time-sized array, `int`'s; one
+/// above (2^31) was written, and glslang ("index out of range") and tint
+/// (not an `i32`) refused it (tests/bad_inputs/sema_runtime_index_too_large.das).
+#[test]
+fn the_largest_constant_index_into_a_runtime_array_fits() {
+    let src = "struct Values {\n    count : uint\n    data : uint[]\n}\nvar @ssbo output : Values\n[compute_program(local_size_x = 1)]\ndef cs {\n    output.data[2147483647] = 1u\n    output.data[int(2147483647u)] = 2u\n}\n";
+    accepted_everywhere("runtime_index", src);
+}
+
+/// `half` used only inside expressions (a conversion) gave WGSL without
+/// `enable f16` and SPIR-V with 16-bit capabilities but no extension: tint,
+/// naga and spirv-val refused them. `half(65504.0)`, its largest value, fits.
+#[test]
+fn half_used_only_in_expressions_is_announced() {
+    let src = "var @uniform u : float\nvar @out f_color : float4\n[fragment_program]\ndef fs {\n    f_color = float4(u) * float4(float(half(u) * half(2.0)), float(half(65504.0)), 1.0, 1.0)\n}\n";
+    let c = compile_source("half_expr.das", src, &Options { targets: vec![umbrac::Target::Wgsl, umbrac::Target::Spirv], ..Options::default() });
+    let compiled = c.result.unwrap_or_else(|| panic!("does not compile:\n{}", umbrac_diags(&c.diagnostics, &c.sources)));
+    assert!(compiled.artifact("half_expr.wgsl").unwrap().text().contains("enable f16;"));
+    let dir = tempfile::tempdir().unwrap();
+    support::write_all(dir.path(), &compiled.artifacts);
+    support::validate_dir(dir.path(), &compiled.reflection);
+}
