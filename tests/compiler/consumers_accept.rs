@@ -1,7 +1,8 @@
 //! Programs umbrac accepts whose outputs a consumer once refused: each is
 //! compiled for every target, and every output goes through the consumers'
 //! own checks: naga's WGSL front end reading the WGSL text back (what wgpu
-//! runs), glslangValidator on each GLSL file and linked pair, spirv-val.
+//! runs), glslangValidator on each GLSL file and linked pair, spirv-val,
+//! tint (what Chrome runs).
 
 use crate::support;
 
