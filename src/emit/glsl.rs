@@ -187,6 +187,10 @@ pub fn write_entry(lowered: &Lowered, ep: &EntryInterface, profile: Profile) -> 
 /// so that both stages of a program, and every profile, agree.
 pub struct VaryingNames<'a> {
     names: Vec<(&'a str, String)>,
+    /// The plain uniforms naga's namer would rename in some GL module
+    /// (`a_`, `in_a` beside the input holder `in_a`), with the name every
+    /// stage gives them. Nearly always empty.
+    uniforms: Vec<(&'a str, String)>,
 }
 
 impl<'a> VaryingNames<'a> {
@@ -203,7 +207,35 @@ impl<'a> VaryingNames<'a> {
                 names.push((&var.name, glsl_names::glsl_name(&var.name, |n| labels.taken(n))));
             }
         }
-        VaryingNames { names }
+        VaryingNames { names, uniforms: renamed_uniforms(lowered) }
+    }
+
+    /// The compile's GLSL name of plain uniform `source`, where naga would
+    /// rename it.
+    fn uniform(&self, source: &str) -> Option<&str> {
+        self.uniforms.iter().find(|(n, _)| *n == source).map(|(_, g)| g.as_str())
+    }
+
+    /// For the plain uniforms of `module` that [`VaryingNames::uniform`]
+    /// names, a placeholder naga keeps: unique in the module, a letter last.
+    fn placeholders(&self, module: &naga::Module, uniforms: &[(naga::Handle<naga::GlobalVariable>, String)]) -> Vec<(naga::Handle<naga::GlobalVariable>, String)> {
+        let mine: Vec<_> = uniforms.iter().filter(|(_, s)| self.uniform(s).is_some()).collect();
+        if mine.is_empty() {
+            return Vec::new();
+        }
+        let mut names = rustc_hash::FxHashSet::default();
+        glsl_names::module_names(module, |n| {
+            names.insert(n.to_string());
+        });
+        mine.into_iter()
+            .map(|(h, _)| {
+                let mut p = format!("umbrac_uniform_{}_x", h.index());
+                while names.contains(&p) {
+                    p.push('x');
+                }
+                (*h, p)
+            })
+            .collect()
     }
 
     fn get(&self, source: &str) -> Option<&str> {
@@ -265,6 +297,20 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
         (&bound, map, renamed)
     } else {
         (em.module, Default::default(), Vec::new())
+    };
+    // Plain uniforms whose names naga's namer could change are written
+    // under placeholders it keeps, then given their compile's names below.
+    let placeholders = em.varyings.placeholders(em.module, em.uniforms);
+    let placed;
+    let module = if placeholders.is_empty() {
+        module
+    } else {
+        let mut m = module.clone();
+        for (h, p) in &placeholders {
+            m.global_variables[*h].name = Some(p.clone());
+        }
+        placed = m;
+        &placed
     };
     let module_info = em.info;
     let (mut out, info) = guard(format_args!("the {} writer for entry point `{}`", profile.label(), ep.name), || {
@@ -335,7 +381,21 @@ pub fn write_entry_from(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface
 
     // Plain uniforms: `T name = zero;` becomes `uniform T name;`.
     for (handle, source) in em.uniforms {
-        let naga_name = em.module.global_variables[*handle].name.as_deref().unwrap_or(source);
+        let placeholder = placeholders.iter().find(|(h, _)| h == handle).map(|(_, p)| p.as_str());
+        let naga_name = placeholder.or(em.module.global_variables[*handle].name.as_deref()).unwrap_or(source);
+        if let (Some(p), Some(name)) = (placeholder, em.varyings.uniform(source)) {
+            // Named for the whole compile, so every stage agrees.
+            let (line, at) = global_declaration(&out, p).ok_or_else(|| bug(format!("cannot find the declaration of uniform `{source}`")))?;
+            let decl = &out[line.clone()];
+            let at = at - line.start;
+            let after = &decl[at + p.len()..];
+            let dims = &after[..after.find([' ', ';']).unwrap_or(after.len())];
+            let new = ["uniform ", &decl[..at], p, dims, ";"].concat();
+            out.replace_range(line, &new);
+            text::replace_idents(&mut out, &[(p, name)]);
+            names.uniforms.insert(source.clone(), name.to_string());
+            continue;
+        }
         // Declared under its name, or with naga's `_` after a final digit.
         let underscored;
         let found = match global_declaration(&out, naga_name) {
@@ -518,6 +578,38 @@ fn with_gl_bindings(lowered: &Lowered, em: &EntryModule, ep: &EntryInterface) ->
         }
     }
     Ok((module, map, renamed))
+}
+
+/// The plain uniforms of a compile whose names naga's namer would change
+/// in some GL module, each with a name that no GL text of the compile can
+/// hold otherwise (chosen against every module's names but theirs, so the
+/// stages agree), nor another of them.
+fn renamed_uniforms(lowered: &Lowered) -> Vec<(&str, String)> {
+    let gls = || lowered.interface.entry_points.iter().filter_map(|ep| lowered.gl.get(ep.index)).filter(|gl| !gl.uniforms.is_empty());
+    let mut renamed: Vec<&str> = Vec::new();
+    for gl in gls() {
+        let mut bases: rustc_hash::FxHashMap<std::borrow::Cow<'_, str>, u32> = rustc_hash::FxHashMap::default();
+        glsl_names::module_names(&gl.module, |n| *bases.entry(glsl_names::namer_base(n)).or_default() += 1);
+        for (h, source) in &gl.uniforms {
+            let name = gl.module.global_variables[*h].name.as_deref().unwrap_or(source);
+            if !glsl_names::namer_keeps(name, &bases) && !renamed.contains(&source.as_str()) {
+                renamed.push(source);
+            }
+        }
+    }
+    if renamed.is_empty() {
+        return Vec::new();
+    }
+    let mut labels = glsl_names::NamerLabels::default();
+    for gl in gls() {
+        labels.add_module_without(&gl.module, |n| renamed.contains(&n));
+    }
+    let mut chosen: Vec<(&str, String)> = Vec::new();
+    for source in renamed {
+        let name = glsl_names::glsl_name(source, |n| labels.taken(n) || chosen.iter().any(|(_, c)| c == n));
+        chosen.push((source, name));
+    }
+    chosen
 }
 
 /// The GLSL block name of uniform buffer `name` (the struct uniform's, or

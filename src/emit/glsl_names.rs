@@ -87,8 +87,10 @@ pub fn glsl_name(source: &str, taken: impl Fn(&str) -> bool) -> String {
 /// tries begins with.
 fn glsl_base(source: &str) -> std::borrow::Cow<'_, str> {
     // The checker keeps `gl_` names for builtins; a source name never
-    // starts so, but the rule must end for any name.
-    if source.starts_with("gl_") {
+    // starts so, but the rule must end for any name. Every name tried for
+    // a source name starting as the writer's own (`_group_0_binding_1_fs`,
+    // `const_float`) is one of those: it would never end.
+    if ["gl_", "_group_", "_immediates_binding_", "const_"].iter().any(|p| source.starts_with(p)) {
         ["u", source].concat().into()
     } else {
         source.into()
@@ -135,6 +137,12 @@ impl<'a> NamerLabels<'a> {
 
     /// Adds the names of `module`.
     pub fn add_module(&mut self, module: &'a naga::Module) {
+        self.add_module_without(module, |_| false);
+    }
+
+    /// Adds the names of `module` but those of its globals `skip` says
+    /// (uniforms written under placeholders, named afterwards).
+    pub fn add_module_without(&mut self, module: &'a naga::Module, skip: impl Fn(&str) -> bool) {
         let functions = || module.functions.iter().map(|(_, f)| f).chain(module.entry_points.iter().map(|e| &e.function));
         let initials = self.initials.as_deref();
         // Filtered, a module keeps a few; otherwise one per name.
@@ -168,7 +176,7 @@ impl<'a> NamerLabels<'a> {
         module.types.iter().filter_map(|(_, t)| t.name.as_deref()).for_each(&mut add);
         module.constants.iter().filter_map(|(_, c)| c.name.as_deref()).for_each(&mut add);
         module.overrides.iter().filter_map(|(_, o)| o.name.as_deref()).for_each(&mut add);
-        module.global_variables.iter().filter_map(|(_, g)| g.name.as_deref()).for_each(&mut add);
+        module.global_variables.iter().filter_map(|(_, g)| g.name.as_deref()).filter(|n| !skip(n)).for_each(&mut add);
         module.entry_points.iter().for_each(|e| add(&e.name));
         let mut loops = 0;
         for f in functions() {
@@ -208,6 +216,31 @@ impl<'a> NamerLabels<'a> {
     }
 }
 
+/// Every name of `module` naga's namer names something by (struct
+/// members aside), repeats included.
+pub fn module_names<'m>(module: &'m naga::Module, mut each: impl FnMut(&'m str)) {
+    module.types.iter().filter_map(|(_, t)| t.name.as_deref()).for_each(&mut each);
+    module.constants.iter().filter_map(|(_, c)| c.name.as_deref()).for_each(&mut each);
+    module.overrides.iter().filter_map(|(_, o)| o.name.as_deref()).for_each(&mut each);
+    module.global_variables.iter().filter_map(|(_, g)| g.name.as_deref()).for_each(&mut each);
+    module.entry_points.iter().for_each(|e| each(&e.name));
+    for f in module.functions.iter().map(|(_, f)| f).chain(module.entry_points.iter().map(|e| &e.function)) {
+        f.name.as_deref().into_iter().for_each(&mut each);
+        f.arguments.iter().filter_map(|a| a.name.as_deref()).for_each(&mut each);
+        f.local_variables.iter().filter_map(|(_, l)| l.name.as_deref()).for_each(&mut each);
+        f.named_expressions.values().for_each(|n| each(n));
+    }
+}
+
+/// Whether naga's GLSL writer writes the global named `name` of a module
+/// under that very name: the namer keeps it (nothing to drop or escape,
+/// a letter last so no `_` is added, not reserved) and no other name of
+/// the module has the same base (`bases`: each base's count, the global's
+/// own included).
+pub fn namer_keeps(name: &str, bases: &rustc_hash::FxHashMap<std::borrow::Cow<'_, str>, u32>) -> bool {
+    namer_base(name) == name && name.as_bytes().last().is_some_and(|c| c.is_ascii_alphabetic()) && !is_reserved(name) && bases.get(name).copied() == Some(1)
+}
+
 /// The loops in `block`, however nested.
 fn count_loops(block: &naga::Block) -> u32 {
     use naga::Statement as S;
@@ -228,7 +261,7 @@ fn count_loops(block: &naga::Block) -> u32 {
 /// `_` written `uXXXX_`, runs of `_` made one, `unnamed` for nothing left,
 /// and `gen_` before a prefix GLSL reserves (`gl_`, `_group`,
 /// `_immediates_binding_`).
-fn namer_base(name: &str) -> std::borrow::Cow<'_, str> {
+pub fn namer_base(name: &str) -> std::borrow::Cow<'_, str> {
     use std::borrow::Cow;
     // Nearly every name is kept as it is: one pass over its bytes says so.
     let b = name.as_bytes();
@@ -415,6 +448,11 @@ mod tests {
         // `glsl_name` ends: every taken set is finite.
         assert_eq!(glsl_name("loop_init", |n| l.taken(n)), "loop_init_1");
         assert_eq!(glsl_name("world", |n| l.taken(n)), "world_2");
+        // Names starting as the writer's own, every numbering of which it
+        // makes up too, end as well.
+        for (source, got) in [("_group_x", "u_group_x"), ("_group_0_binding_1_fs", "u_group_0_binding_1_fs"), ("const_a", "uconst_a"), ("_immediates_binding_a", "u_immediates_binding_a")] {
+            assert_eq!(glsl_name(source, |n| l.taken(n)), got);
+        }
         assert_eq!(namer_base("3x__y:z"), "x_y_z");
     }
 }

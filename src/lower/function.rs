@@ -159,14 +159,14 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
             false => value_ty,
         };
         let idx = self.func.arguments.len() as u32;
-        self.func.arguments.push(naga::FunctionArgument { name: Some(l.name.as_str().to_owned()), ty, binding: None });
+        self.func.arguments.push(naga::FunctionArgument { name: Some(local_name(l.name.as_str())), ty, binding: None });
         let h = self.append_plain(E::FunctionArgument(idx), l.span);
         self.locals[i] = match (l.by_ref, l.mutable) {
             (true, _) => LocalSlot::Ptr(h),
             (false, false) => LocalSlot::Value(h),
             (false, true) => {
                 // A mutable copy: the argument is its initial value.
-                let var = self.func.local_variables.append(naga::LocalVariable { name: Some(l.name.as_str().to_owned()), ty: value_ty, init: None }, span(l.span));
+                let var = self.func.local_variables.append(naga::LocalVariable { name: Some(local_name(l.name.as_str())), ty: value_ty, init: None }, span(l.span));
                 let ptr = self.append_plain(E::LocalVariable(var), l.span);
                 self.push(prologue, Statement::Store { pointer: ptr, value: h }, l.span);
                 LocalSlot::Var(var)
@@ -285,13 +285,41 @@ impl<'m, 'p> FnBuilder<'m, 'p> {
     }
 }
 
-/// The statements of a block up to its first `return`, `break`, `continue`
-/// or `discard()`: what follows is never run, and is not lowered. (Code
-/// after an entry point's `return` made naga's GLSL writer declare its
-/// `_tmp_return` twice in one scope, which glslang refuses.)
+/// The statements of a block up to its first `return`, `break` or
+/// `continue`: what follows is never run, and is not lowered. (Code after
+/// an entry point's `return` made naga's GLSL writer declare its
+/// `_tmp_return` twice in one scope, which glslang refuses.) What follows
+/// a `discard()` is kept: WGSL's `discard` does not end the function (the
+/// invocation goes on as a helper), so a `return v` after it is what makes
+/// the function return a value for tint and glslang.
 pub(super) fn live(stmts: &[Stmt]) -> &[Stmt] {
-    match stmts.iter().position(|s| matches!(s, Stmt::Return(..) | Stmt::Break(_) | Stmt::Continue(_) | Stmt::Discard(_))) {
+    match stmts.iter().position(|s| matches!(s, Stmt::Return(..) | Stmt::Break(_) | Stmt::Continue(_))) {
         Some(i) => &stmts[..=i],
         None => stmts,
+    }
+}
+
+/// Whether control can reach the end of `block` without a `return`, as
+/// WGSL's behaviour analysis sees it (a `discard` does not end a path):
+/// a function with a result must not, for tint and glslang.
+pub(super) fn falls_through(block: &Block) -> bool {
+    match block.last() {
+        Some(Statement::Return { .. }) => false,
+        Some(Statement::Block(b)) => falls_through(b),
+        Some(Statement::If { accept, reject, .. }) => falls_through(accept) || falls_through(reject),
+        _ => true,
+    }
+}
+
+/// The IR name of a parameter or local: its source name, with `l` in front
+/// of one that starts as the names naga's writers make up for themselves
+/// (`_tmp_return`, `_e12`, `_group_0_binding_1_fs`, `const_...`,
+/// `naga_modf`), which their namers do not keep clear of (glslang: a local
+/// `_tmp_return` is a redefinition). Locals are named in no interface.
+pub(super) fn local_name(name: &str) -> String {
+    if name.starts_with('_') || name.starts_with("const_") || name.starts_with("naga_") {
+        ["l", name].concat()
+    } else {
+        name.to_owned()
     }
 }

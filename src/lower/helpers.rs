@@ -50,8 +50,15 @@ pub(super) fn lower_helper<'p>(m: &mut ModuleBuilder<'p>, f: &'p sema::Function,
     }
     b.stmts_into(&f.body, &mut body);
     let ret = (f.ret != Ty::Void).then(|| naga::FunctionResult { ty: b.m.ty(&f.ret), binding: None });
-    if ret.is_none() {
-        naga::proc::ensure_block_returns(&mut body);
+    match &ret {
+        None => naga::proc::ensure_block_returns(&mut body),
+        // The checker let only paths that end in `discard()` lack a
+        // `return`: they return a zero value, never used.
+        Some(r) if super::function::falls_through(&body) => {
+            let zero = b.append_plain(naga::Expression::ZeroValue(r.ty), f.span);
+            body.push(naga::Statement::Return { value: Some(zero) }, f.span.into());
+        }
+        Some(_) => {}
     }
     let func = b.finish(body, ret);
     m.module.functions.append(func, f.span.into())
@@ -127,7 +134,7 @@ impl FnBuilder<'_, '_> {
                 // callee's own copy, nothing to write back.
                 let value = self.expr(a, block);
                 let ty = self.m.ty(&a.ty);
-                let tmp = self.func.local_variables.append(naga::LocalVariable { name: Some(f.locals[i].name.as_str().to_owned()), ty, init: None }, a.span.into());
+                let tmp = self.func.local_variables.append(naga::LocalVariable { name: Some(super::function::local_name(f.locals[i].name.as_str())), ty, init: None }, a.span.into());
                 let tmp_ptr = self.append_plain(E::LocalVariable(tmp), a.span);
                 self.push(block, naga::Statement::Store { pointer: tmp_ptr, value }, a.span);
                 values.push(tmp_ptr);
@@ -157,7 +164,7 @@ impl FnBuilder<'_, '_> {
                     }
                 };
                 let ty = self.m.ty(&a.ty);
-                let tmp = self.func.local_variables.append(naga::LocalVariable { name: Some(f.locals[i].name.as_str().to_owned()), ty, init: None }, a.span.into());
+                let tmp = self.func.local_variables.append(naga::LocalVariable { name: Some(super::function::local_name(f.locals[i].name.as_str())), ty, init: None }, a.span.into());
                 let tmp_ptr = self.append_plain(E::LocalVariable(tmp), a.span);
                 self.push(block, naga::Statement::Store { pointer: tmp_ptr, value }, a.span);
                 write_back.push((tmp, place));

@@ -80,13 +80,31 @@ pub fn lower_gpu(program: &sema::Program, conventions: Conventions) -> Result<(n
 }
 
 fn gpu(program: &sema::Program, conventions: Conventions, reach: &Reach) -> Result<(naga::Module, naga::valid::ModuleInfo, Interface), Diagnostic> {
-    let (gpu, mut interface, _) = build(program, Flavor::Gpu(conventions), GlUniforms::default(), None, reach)?;
+    let (mut gpu, mut interface, _) = build(program, Flavor::Gpu(conventions), GlUniforms::default(), None, reach)?;
+    declare_f16_if_used(&mut gpu);
     #[cfg(debug_assertions)]
     let gpu = fault::inject(gpu);
     let flavor = Flavor::Gpu(conventions);
     let gpu_info = validate::validate(&gpu, flavor)?;
     interface.conventions = conventions;
     Ok((gpu, gpu_info, interface))
+}
+
+/// Declares the `f16` type where `half` is used only inside expressions (a
+/// conversion, a literal): naga's writers announce `f16` (WGSL's
+/// `enable f16`, SPIR-V's 16-bit storage extension) from the module's
+/// types, and without it tint, naga and spirv-val refuse the output.
+fn declare_f16_if_used(module: &mut naga::Module) {
+    use naga::{Expression as E, Scalar, TypeInner};
+    if module.types.iter().any(|(_, t)| t.inner.scalar() == Some(Scalar::F16)) {
+        return;
+    }
+    let half = |e: &E| matches!(e, E::As { kind: naga::ScalarKind::Float, convert: Some(2), .. } | E::Literal(naga::Literal::F16(_)));
+    let functions = module.functions.iter().map(|(_, f)| f).chain(module.entry_points.iter().map(|e| &e.function));
+    let used = module.global_expressions.iter().any(|(_, e)| half(e)) || functions.into_iter().any(|f| f.expressions.iter().any(|(_, e)| half(e)));
+    if used {
+        module.types.insert(naga::Type { name: None, inner: TypeInner::Scalar(Scalar::F16) }, naga::Span::UNDEFINED);
+    }
 }
 
 /// The validated GL module of entry point `index` alone.

@@ -14,7 +14,7 @@ impl FnBuilder<'_, '_> {
                 let l = &self.sema_locals[*local];
                 if l.mutable {
                     let ty = self.m.ty(&l.ty);
-                    let var = self.func.local_variables.append(naga::LocalVariable { name: Some(l.name.as_str().to_owned()), ty, init: None }, span(l.span));
+                    let var = self.func.local_variables.append(naga::LocalVariable { name: Some(super::function::local_name(l.name.as_str())), ty, init: None }, span(l.span));
                     self.locals[*local] = LocalSlot::Var(var);
                     let ptr = self.append_plain(E::LocalVariable(var), *sp);
                     let value = match init {
@@ -25,7 +25,7 @@ impl FnBuilder<'_, '_> {
                 } else if let Some(e) = init {
                     let h = self.expr(e, block);
                     if self.is_emitted(h) {
-                        self.func.named_expressions.entry(h).or_insert_with(|| l.name.as_str().to_owned());
+                        self.func.named_expressions.entry(h).or_insert_with(|| super::function::local_name(l.name.as_str()));
                     }
                     self.locals[*local] = LocalSlot::Value(h);
                 }
@@ -71,7 +71,7 @@ impl FnBuilder<'_, '_> {
             Stmt::For { var, start, end, body, span: sp } => {
                 let l = &self.sema_locals[*var];
                 let ty = self.m.ty(&l.ty);
-                let v = self.func.local_variables.append(naga::LocalVariable { name: Some(l.name.as_str().to_owned()), ty, init: None }, span(l.span));
+                let v = self.func.local_variables.append(naga::LocalVariable { name: Some(super::function::local_name(l.name.as_str())), ty, init: None }, span(l.span));
                 self.locals[*var] = LocalSlot::Var(v);
                 let ptr = self.append_plain(E::LocalVariable(v), *sp);
                 let s0 = self.expr(start, block);

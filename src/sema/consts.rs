@@ -445,6 +445,15 @@ pub type Undefined = String;
 /// so the call is left to the targets; `Err`: the call is undefined for
 /// these arguments.
 pub fn eval_builtin(b: super::builtins::Builtin, args: &[(&ConstValue, &Ty)], ret: &Ty) -> Result<Option<ConstValue>, Undefined> {
+    let value = builtin_value(b, args, ret)?;
+    // A finite value may still be reached through steps WGSL computes in
+    // `float` past its range (matrices included).
+    let vals: arrayvec::ArrayVec<&ConstValue, 4> = args.iter().take(4).map(|a| a.0).collect();
+    super::fold::wgsl_steps(super::builtins::name_of(b), b, &vals)?;
+    Ok(value)
+}
+
+fn builtin_value(b: super::builtins::Builtin, args: &[(&ConstValue, &Ty)], ret: &Ty) -> Result<Option<ConstValue>, Undefined> {
     use super::builtins::Builtin as B;
     use naga::MathFunction as M;
     let name = super::builtins::name_of(b);

@@ -46,10 +46,84 @@ pub fn call(name: &str, args: &[(ConstValue, Ty)]) -> Option<Folded> {
     };
     let vals: Vec<&ConstValue> = args.iter().map(|a| &a.0).collect();
     let tys: Vec<&Ty> = args.iter().map(|a| &a.1).collect();
-    let value = eval(name, b, &vals, &tys, &ret);
+    let value = eval(name, b, &vals, &tys, &ret).and_then(|v| wgsl_steps(name, b, &vals).map(|()| v));
     // A `half` result: each component rounded (once more) to binary16.
     let value = if ret.has_half(&[]) { value.and_then(|v| to_half(name, &v)) } else { value };
     Some(value.map(|v| (v, ret)))
+}
+
+/// Whether `x`, computed as an `f32` operation, overflows.
+fn past_f32(x: f64) -> bool {
+    !(x as f32).is_finite()
+}
+
+/// The first of the products and partial sums of `a . b` past f32's range.
+fn dot_steps(a: &[f64], b: &[f64]) -> Option<f64> {
+    let mut sum = 0.0;
+    for (x, y) in a.iter().zip(b) {
+        let p = x * y;
+        sum += p;
+        if past_f32(p) {
+            return Some(p);
+        }
+        if past_f32(sum) {
+            return Some(sum);
+        }
+    }
+    None
+}
+
+/// The first component of `hi - lo` past f32's range.
+pub fn difference_past_f32(lo: &ConstValue, hi: &ConstValue) -> Option<f64> {
+    let (lo, hi) = (floats(lo), floats(hi));
+    (0..lo.len().max(hi.len())).map(|i| hi[i.min(hi.len() - 1)] - lo[i.min(lo.len() - 1)]).find(|d| past_f32(*d))
+}
+
+/// The first product or sum of a cofactor expansion of the determinant
+/// past f32's range.
+fn determinant_steps(m: &[Vec<f64>]) -> Option<f64> {
+    if m.len() == 1 {
+        return None;
+    }
+    let mut sum = 0.0;
+    for row in 0..m.len() {
+        let minor: Vec<Vec<f64>> = m[1..].iter().map(|c| c.iter().enumerate().filter(|(r, _)| *r != row).map(|(_, x)| *x).collect()).collect();
+        if let Some(x) = determinant_steps(&minor) {
+            return Some(x);
+        }
+        let p = m[0][row] * determinant(&minor);
+        sum += p;
+        if past_f32(p) || past_f32(sum) {
+            return Some(if past_f32(p) { p } else { sum });
+        }
+    }
+    None
+}
+
+/// Refuses a call whose value is finite but which WGSL evaluates (as a
+/// constant expression, in `f32`) through a step past f32's range: tint
+/// rejects the shader (`dot` inside `normalize(float3(3e38, 3e38, 0.0))`,
+/// `edge1 - edge0` of `smoothstep(-3e38, 3e38, x)`, the products of
+/// `determinant(float2x2(1e20))`).
+pub(super) fn wgsl_steps(name: &str, b: Builtin, v: &[&ConstValue]) -> Result<(), String> {
+    let diffs = |a: &ConstValue, c: &ConstValue| floats(a).iter().zip(floats(c)).map(|(x, y)| x - y).collect::<Vec<f64>>();
+    let step = match b {
+        Builtin::Math(Mf::Dot) => dot_steps(&floats(v[0]), &floats(v[1])),
+        Builtin::Math(Mf::Length | Mf::Normalize) | Builtin::LengthSq | Builtin::InvLength | Builtin::InvLengthSq => dot_steps(&floats(v[0]), &floats(v[0])),
+        Builtin::Math(Mf::Distance) | Builtin::DistanceSq | Builtin::InvDistance | Builtin::InvDistanceSq => {
+            let d = diffs(v[0], v[1]);
+            d.iter().copied().find(|x| past_f32(*x)).or_else(|| dot_steps(&d, &d))
+        }
+        Builtin::Math(Mf::Reflect | Mf::Refract) => dot_steps(&floats(v[1]), &floats(v[0])),
+        Builtin::Math(Mf::FaceForward) => dot_steps(&floats(v[2]), &floats(v[1])),
+        Builtin::Math(Mf::Determinant) | Builtin::Inverse => determinant_steps(&columns(v[0])),
+        Builtin::Math(Mf::SmoothStep) => difference_past_f32(v[0], v[1]),
+        _ => None,
+    };
+    match step {
+        Some(x) => Err(format!("`{name}` computes {x:e} on the way to its value, past the range of `float` (WGSL evaluates a constant call step by step in `float` and rejects it)")),
+        None => Ok(()),
+    }
 }
 
 fn to_half(name: &str, v: &ConstValue) -> Result<ConstValue, String> {

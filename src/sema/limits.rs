@@ -2,8 +2,10 @@
 //! recurses over the checked program) stays within a bounded stack and
 //! every target's fixed tables fit (docs/robustness.md).
 
-/// Largest `T[N]` accepted.
-pub const MAX_ARRAY_LEN: u64 = 65_536;
+/// Largest `T[N]` accepted: the most elements Chrome's WGSL compiler
+/// (tint) takes in an array type (its count must be under 65536; the WGSL
+/// specification leaves the bound to implementations).
+pub const MAX_ARRAY_LEN: u64 = 65_535;
 /// Highest `@location` accepted (exclusive): a bound on the checker's
 /// tables. What devices guarantee (16 attributes, 15 or 16 varyings) is
 /// checked per target by `emit::limits`, which `--limit` can raise.

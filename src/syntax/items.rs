@@ -237,8 +237,18 @@ pub fn split(toks: &[Token], map: &SourceMap) -> Vec<RawItem> {
         if i >= n {
             break;
         }
+        // `[` `fragment_program` `]` may be written over several lines.
+        let after_open = |a: usize| toks[..a].iter().rev().find(|t| t.kind != TokKind::Newline).is_some_and(|t| matches!(t.kind, TokKind::P(P::LBracket | P::Comma)));
+        let entry = annots.clone().any(|a| {
+            toks[a].kind == TokKind::Ident && after_open(a) && matches!(texts.get(toks[a].span), "vertex_program" | "fragment_program" | "compute_program")
+        });
         let kind = match toks[i].kind {
             TokKind::Kw(Kw::Def) => ItemKind::Def,
+            // Whatever follows an entry point annotation is parsed as the
+            // function it must be: a stray character before `def` (a
+            // non-breaking space, a NUL, a BOM) is then a located error, not
+            // host code that silently drops the entry point.
+            _ if entry => ItemKind::Def,
             TokKind::Kw(Kw::Struct) => ItemKind::Struct,
             TokKind::Kw(Kw::Class) => ItemKind::Class,
             TokKind::Kw(Kw::Var) => ItemKind::Var,
@@ -263,14 +273,7 @@ pub fn split(toks: &[Token], map: &SourceMap) -> Vec<RawItem> {
                 if k < end && toks[k].kind == TokKind::Ident {
                     item.names = k..k + 1;
                 }
-                if kind == ItemKind::Def {
-                    item.entry = item.annots.clone().any(|a| {
-                        toks[a].kind == TokKind::Ident
-                            && a > 0
-                            && matches!(toks[a - 1].kind, TokKind::P(P::LBracket | P::Comma))
-                            && matches!(texts.get(toks[a].span), "vertex_program" | "fragment_program" | "compute_program")
-                    });
-                }
+                item.entry = kind == ItemKind::Def && entry;
             }
             ItemKind::Var | ItemKind::Let => {
                 loop {

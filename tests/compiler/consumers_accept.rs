@@ -1,7 +1,8 @@
 //! Programs umbrac accepts whose outputs a consumer once refused: each is
 //! compiled for every target, and every output goes through the consumers'
 //! own checks: naga's WGSL front end reading the WGSL text back (what wgpu
-//! runs), glslangValidator on each GLSL file and linked pair, spirv-val.
+//! runs), glslangValidator on each GLSL file and linked pair, spirv-val,
+//! tint (what Chrome runs).
 
 use crate::support;
 
@@ -111,11 +112,16 @@ fn the_deepest_accepted_programs_fit_every_consumer() {
     let bodies = [
         format!("    a = {}a{}", "(".repeat(n), ")".repeat(n)),
         format!("    a = a{}", " + a".repeat(n)),
-        format!("    a = {}a", "- ".repeat(n)),
+        // A unary operator is two levels (tint: `-(` counts twice).
+        format!("    a = {}a", "- ".repeat(n / 2)),
+        format!("    a = {}a", "-sin(".repeat(n / 3)) + &")".repeat(n / 3),
         format!("    a = {}a", "a > 0.0 ? a : ".repeat(n / 2)),
         format!("    a = {}a{}", "sin(".repeat(n), ")".repeat(n)),
         format!("    v = v{}", ".wzyx".repeat(n)),
-        format!("    if (a > 0.0) {{\n        a = 1.0\n    }}{}", " elif (a > 1.0) {\n        a = 2.0\n    }".repeat(n)),
+        // WGSL allows 127 levels of statements; an `elif` is two.
+        format!("    if (a > 0.0) {{\n        a = 1.0\n    }}{}", " elif (a > 1.0) {\n        a = 2.0\n    }".repeat(61)),
+        format!("{}    a += 1.0\n{}", "if (a > 0.0) {\n".repeat(62), "}\n".repeat(62)),
+        format!("{}    a += 1.0\n{}", "while (a < 0.0) {\n".repeat(61), "}\n".repeat(61)),
         format!("{}    a = {}a{}\n{}", "if (a > 0.0) {\n".repeat(60), "(".repeat(50), ")".repeat(50), "}\n".repeat(60)),
         format!("{}    a += float(i)\n{}", "for (i in range(3)) {\n".repeat(60), "}\n".repeat(60)),
     ];
@@ -130,4 +136,146 @@ fn the_deepest_accepted_programs_fit_every_consumer() {
 fn packing_builtins_read_back() {
     let src = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/shaders/features/packing.das")).unwrap();
     accepted_everywhere("packing", &src);
+}
+
+/// Loose uniforms whose names naga's GLSL namer changes (a final `_`, a
+/// double `_`, a name an input holder or a stand-in already has, one
+/// starting as naga's own) were "cannot find the declaration of uniform"
+/// internal errors. Each gets one GLSL name in both stages, the one the
+/// manifest records, and both files declare it.
+#[test]
+fn uniforms_naga_would_rename_get_one_name_in_every_stage() {
+    for name in ["a_", "x_", "__x", "fs_out", "vs_out", "in_a", "out_f_color", "gen_gl_Position", "u1", "_group_q", "const_k", "input"] {
+        let src = format!(
+            "var @uniform {name} : float4\nvar @in a : float4\nvar @out f_color : float4\n[vertex_program]\ndef vs {{\n    gl_Position = a * {name}\n}}\n[fragment_program]\ndef fs {{\n    f_color = {name}\n}}\n"
+        );
+        let c = accepted_everywhere("renamed", &src);
+        let u = c.reflection.uniforms.iter().find(|u| u.name == name).unwrap_or_else(|| panic!("{name} is not in the manifest"));
+        let glsl = u.glsl_name.as_deref().unwrap_or_else(|| panic!("{name} has no GLSL name"));
+        for file in ["vs.330.vert", "fs.330.frag", "vs.300es.vert", "fs.300es.frag"] {
+            let text = c.artifact(file).unwrap().text().into_owned();
+            assert!(text.contains(&format!("uniform vec4 {glsl};")), "{name}: {file} does not declare `{glsl}`:\n{text}");
+        }
+    }
+}
+
+/// A stage input or output named as naga's GLSL writer names its own
+/// globals (`_group_0_binding_1_fs`) made the search for a free GLSL name
+/// run forever, whatever the targets.
+#[test]
+fn varyings_named_as_naga_names_its_own_end() {
+    for name in ["_group_x", "_group_0_binding_0_vs", "const_v", "_immediates_binding_v"] {
+        let src = format!(
+            "var @in {name} : float4\nvar @inout v_{name} : float4\nvar @out f_color : float4\n[vertex_program]\ndef vs {{\n    gl_Position = {name}\n    v_{name} = {name}\n}}\n[fragment_program]\ndef fs {{\n    f_color = v_{name}\n}}\n"
+        );
+        accepted_everywhere("group_names", &src);
+    }
+}
+
+/// A vertex and a compute entry point without a fragment one were linked
+/// as a program ("does not link a vertex and a fragment entry point"): a
+/// compute entry point is a program alone, next to any vertex/fragment.
+#[test]
+fn compute_entry_points_are_never_linked_with_a_vertex_one() {
+    let vc = "var @in a : float4\n[vertex_program]\ndef vs {\n    gl_Position = a\n}\n[compute_program(local_size_x = 1)]\ndef cs {\n    let x = 1\n}\n";
+    let c = accepted_everywhere("vertex_compute", vc);
+    assert!(c.reflection.programs.is_empty(), "{:?}", c.reflection.programs.len());
+    let vfc = "var @in a : float4\nvar @out f_color : float4\n[vertex_program]\ndef vs {\n    gl_Position = a\n}\n[fragment_program]\ndef fs {\n    f_color = float4(1.0)\n}\n[compute_program(local_size_x = 1)]\ndef cs {\n    let x = 1\n}\n";
+    let c = accepted_everywhere("vertex_fragment_compute", vfc);
+    let pairs: Vec<(&str, &str)> = c.reflection.programs.iter().map(|p| (p.vertex.as_str(), p.fragment.as_str())).collect();
+    assert_eq!(pairs, [("vs", "fs")]);
+}
+
+/// FLT_MAX, which naga writes as a decimal above FLT_MAX (tint: "cannot be
+/// represented as 'f32'"), and the largest finite values near it.
+#[test]
+fn the_largest_floats_are_written_within_range() {
+    let src = "var @uniform u : float\nvar @out f_color : float4\n[fragment_program]\ndef fs {\n    f_color = float4(u * 3.4028235e38, u * -3.4028235e38, u * 3.4028233e38, min(u, 340282346638528859811704183484516925440.0))\n}\n";
+    let c = accepted_everywhere("flt_max", src);
+    let wgsl = c.artifact("flt_max.wgsl").unwrap().text().into_owned();
+    assert!(wgsl.contains("0x1.fffffep+127f"), "{wgsl}");
+}
+
+/// naga's WGSL writer renamed entry points (`vs1` to `vs1_`, `x__y` to
+/// `x_y`, `p_` to `p`) while the SPIR-V, the GLSL file names and the
+/// manifest kept the source name: a WebGPU host asking for the manifest's
+/// name found nothing. Every output now names them as the source does.
+#[test]
+fn entry_points_keep_their_names_in_every_output() {
+    let src = "var @in a : float4\nvar @out f_color : float4\n[vertex_program]\ndef vs1 {\n    gl_Position = a\n}\n[fragment_program]\ndef x__y {\n    f_color = float4(1.0)\n}\n[fragment_program]\ndef p_ {\n    f_color = float4(0.5)\n}\n";
+    let c = accepted_everywhere("entry_names", src);
+    let wgsl = c.artifact("entry_names.wgsl").unwrap().text().into_owned();
+    let spv = &c.artifact("entry_names.spv").unwrap().contents;
+    let words: Vec<u32> = spv.chunks_exact(4).map(|b| u32::from_le_bytes(b.try_into().unwrap())).collect();
+    // OpEntryPoint (15): model, id, then the name, NUL-terminated.
+    let mut spv_names = Vec::new();
+    let mut at = 5;
+    while at < words.len() {
+        let (count, op) = ((words[at] >> 16) as usize, words[at] & 0xffff);
+        if op == 15 {
+            let bytes: Vec<u8> = words[at + 3..at + count].iter().flat_map(|w| w.to_le_bytes()).collect();
+            spv_names.push(String::from_utf8_lossy(&bytes[..bytes.iter().position(|&b| b == 0).unwrap()]).into_owned());
+        }
+        at += count.max(1);
+    }
+    let from_wgsl = naga::front::wgsl::parse_str(&wgsl).unwrap();
+    for ep in &c.reflection.entry_points {
+        assert!(from_wgsl.entry_points.iter().any(|e| e.name == ep.name), "the WGSL has no entry point `{}`:\n{wgsl}", ep.name);
+        assert!(spv_names.contains(&ep.name), "the SPIR-V has no entry point `{}`: {spv_names:?}", ep.name);
+    }
+    assert_eq!(c.reflection.entry_points.len(), 3);
+}
+
+/// The longest array (tint refuses a count of 65536: "must be less than
+/// 65536") and 255 parameters, WGSL's and SPIR-V's most, in every output.
+#[test]
+fn the_longest_array_and_the_most_parameters_fit_every_target() {
+    let max = umbrac::sema::MAX_ARRAY_LEN;
+    let src = format!("var @uniform u : float\nvar @out f_color : float4\n[fragment_program]\ndef fs {{\n    var t : float[{max}]\n    t[3] = u\n    f_color = float4(t[3])\n}}\n");
+    accepted_everywhere("long_array", &src);
+    let params: Vec<String> = (0..255).map(|i| format!("p{i} : float")).collect();
+    let args: Vec<String> = (0..255).map(|i| format!("u * {i}.0")).collect();
+    let src = format!("var @uniform u : float\nvar @out f_color : float4\ndef h({}) : float {{\n    return p0 + p254\n}}\n[fragment_program]\ndef fs {{\n    f_color = float4(h({}))\n}}\n", params.join("; "), args.join(", "));
+    accepted_everywhere("many_params", &src);
+}
+
+/// `discard()` then `return v` in a helper: the return was dropped as
+/// dead code, and glslang and tint refuse a function that does not return
+/// a value (WGSL's `discard` does not end the invocation). A helper whose
+/// paths all end in `discard()` returns a zero value. Locals named as
+/// naga's own (`_tmp_return`: glslang saw a redefinition) are renamed.
+#[test]
+fn helpers_that_discard_still_return_and_locals_keep_clear_of_naga_names() {
+    let src = "var @uniform u : float\nvar @out f_color : float4\n\
+        def g(x : float) : float {\n    if (x > 0.0) {\n        discard()\n        return x\n    } else {\n        discard()\n    }\n}\n\
+        def k(x : float) : float {\n    discard()\n}\n\
+        def h(_tmp_return : float) : float {\n    let _e1 = _tmp_return * 2.0\n    var const_float = _e1\n    return const_float\n}\n\
+        [vertex_program]\ndef vs {\n    var _tmp_return = float4(u)\n    gl_Position = _tmp_return\n    return\n}\n\
+        [fragment_program]\ndef fs {\n    var _tmp_return = float4(g(u) + k(u) + h(u))\n    f_color = _tmp_return\n    return\n}\n";
+    let c = accepted_everywhere("discarding", src);
+    let wgsl = c.artifact("discarding.wgsl").unwrap().text().into_owned();
+    assert!(wgsl.contains("return x"), "the `return` after `discard()` was dropped:\n{wgsl}");
+}
+
+/// The largest constant index into a run-time-sized array, `int`'s; one
+/// above (2^31) was written, and glslang ("index out of range") and tint
+/// (not an `i32`) refused it (tests/bad_inputs/sema_runtime_index_too_large.das).
+#[test]
+fn the_largest_constant_index_into_a_runtime_array_fits() {
+    let src = "struct Values {\n    count : uint\n    data : uint[]\n}\nvar @ssbo output : Values\n[compute_program(local_size_x = 1)]\ndef cs {\n    output.data[2147483647] = 1u\n    output.data[int(2147483647u)] = 2u\n}\n";
+    accepted_everywhere("runtime_index", src);
+}
+
+/// `half` used only inside expressions (a conversion) gave WGSL without
+/// `enable f16` and SPIR-V with 16-bit capabilities but no extension: tint,
+/// naga and spirv-val refused them. `half(65504.0)`, its largest value, fits.
+#[test]
+fn half_used_only_in_expressions_is_announced() {
+    let src = "var @uniform u : float\nvar @out f_color : float4\n[fragment_program]\ndef fs {\n    f_color = float4(u) * float4(float(half(u) * half(2.0)), float(half(65504.0)), 1.0, 1.0)\n}\n";
+    let c = compile_source("half_expr.das", src, &Options { targets: vec![umbrac::Target::Wgsl, umbrac::Target::Spirv], ..Options::default() });
+    let compiled = c.result.unwrap_or_else(|| panic!("does not compile:\n{}", umbrac_diags(&c.diagnostics, &c.sources)));
+    assert!(compiled.artifact("half_expr.wgsl").unwrap().text().contains("enable f16;"));
+    let dir = tempfile::tempdir().unwrap();
+    support::write_all(dir.path(), &compiled.artifacts);
+    support::validate_dir(dir.path(), &compiled.reflection);
 }

@@ -161,11 +161,15 @@ fn deepest_accepted_expressions_compile() {
     let n = 120;
     assert_compiles(&compile_small_stack(fs(&format!("    a = {}a{}", "(".repeat(n), ")".repeat(n)))));
     assert_compiles(&compile_small_stack(fs(&format!("    a = a{}", " + a".repeat(n)))));
-    assert_compiles(&compile_small_stack(fs(&format!("    a = {}a", "- ".repeat(n)))));
+    // A unary operator counts two levels (its operand is written in
+    // parentheses): 60 of them, not 120.
+    assert_compiles(&compile_small_stack(fs(&format!("    a = {}a", "- ".repeat(n / 2)))));
+    assert!(compile_small_stack(fs(&format!("    a = {}a", "- ".repeat(65)))).has_errors(), "65 unary operators are 130 levels");
     assert_compiles(&compile_small_stack(fs(&format!("    a = {}a", "a > 0.0 ? a : ".repeat(n / 2)))));
     assert_compiles(&compile_small_stack(fs(&format!("    a = {}a{}", "sin(".repeat(n), ")".repeat(n)))));
     assert_compiles(&compile_small_stack(fs(&format!("    v = v{}", ".wzyx".repeat(n)))));
-    assert_compiles(&compile_small_stack(fs(&format!("    if a > 0.0 {{\n        a = 1.0\n    }}{}", " elif a > 1.0 {\n        a = 2.0\n    }".repeat(n)))));
+    // WGSL nests each `elif` two levels deeper (tests/bad_inputs/limit_wgsl_nesting_elif.das).
+    assert_compiles(&compile_small_stack(fs(&format!("    if a > 0.0 {{\n        a = 1.0\n    }}{}", " elif a > 1.0 {\n        a = 2.0\n    }".repeat(n / 2)))));
 }
 
 #[test]

@@ -2,7 +2,7 @@
 //! dependencies are linked once: front end, checker, emitters, golden
 //! outputs, the command line, limits and bad inputs. Nothing here needs a
 //! GPU or a browser (that is tests/gpu/); the validator tests need
-//! glslangValidator and spirv-val (missing: skipped, or failed with
+//! glslangValidator, spirv-val and tint (missing: skipped, or failed with
 //! `CI=true`, through `support`).
 //!
 //!     cargo test --test compiler            # this binary

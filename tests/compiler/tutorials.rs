@@ -1,7 +1,8 @@
 //! daslang's own OpenGL tutorials (`../shared/reference/daslang-tutorials/`),
 //! compiled verbatim, host code and all, to every target; every output is
 //! validated (naga inside the compiler; glslangValidator on each GLSL file
-//! and each program's vertex/fragment pair linked, per profile; spirv-val).
+//! and each program's vertex/fragment pair linked, per profile; spirv-val;
+//! tint).
 //! Skipped only when the reference folder is not there.
 
 use std::path::PathBuf;

@@ -1,6 +1,6 @@
 //! Every emitted output passes the independent validators: glslangValidator
 //! on each GLSL file (both profiles) and on each linkable vertex+fragment
-//! pair, spirv-val on each SPIR-V module. Runs on the golden outputs (which
+//! pair, spirv-val on each SPIR-V module, tint on each WGSL module. Runs on the golden outputs (which
 //! tests/compiler/golden.rs proves are exactly what the compiler emits) and on the
 //! tutorial compiled verbatim.
 

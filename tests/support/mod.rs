@@ -11,7 +11,8 @@
 //! - [`fake_lowered`]: a `Lowered` built from WGSL, shaped like the real
 //!   lowering's output, so emitter tests do not depend on the front end.
 //! - Validator runners: `glslangValidator` (each GLSL file, and each
-//!   vertex+fragment pair linked) and `spirv-val`.
+//!   vertex+fragment pair linked), `spirv-val` and `tint` (the WGSL
+//!   compiler inside Chrome, stricter than naga on WGSL's limits).
 //!
 //! Nothing here changes the process's environment (another test thread may
 //! be reading it): what the GPU stack wants set comes from
@@ -262,6 +263,22 @@ pub fn spirv_val(path: &Path) -> Result<(), String> {
     run(Command::new("spirv-val").args(["--target-env", "vulkan1.0"]).arg(path))
 }
 
+/// Whether `tint` can run (it has no `--version`: `--help` exits 1 but
+/// proves it starts); when it cannot, [`skip`].
+pub fn require_tint() -> bool {
+    if Command::new("tint").arg("--help").output().is_ok() {
+        return true;
+    }
+    skip("`tint` cannot be run (build Dawn's tint and put it on PATH, /usr/local/bin/tint)");
+    false
+}
+
+/// `tint --format wgsl -o /dev/null FILE`: what Chrome's WebGPU does with
+/// the WGSL.
+pub fn tint(path: &Path) -> Result<(), String> {
+    run(Command::new("tint").args(["--format", "wgsl", "-o", "/dev/null"]).arg(path))
+}
+
 /// Writes artifacts into `dir` (plainly; atomicity is tested elsewhere).
 pub fn write_all(dir: &Path, artifacts: &[Artifact]) -> Vec<PathBuf> {
     artifacts
@@ -281,7 +298,7 @@ pub fn link_pairs(r: &Reflection) -> Vec<(String, String)> {
 
 /// Runs every validator on outputs written to `dir`: glslangValidator on
 /// each GLSL file and on each linkable pair per profile, spirv-val on each
-/// .spv. Returns the number of validator runs (0 when tools are missing
+/// .spv, tint on each .wgsl. Returns the number of validator runs (0 when tools are missing
 /// outside CI).
 pub fn validate_dir(dir: &Path, r: &Reflection) -> usize {
     let mut runs = 0;
@@ -310,6 +327,14 @@ pub fn validate_dir(dir: &Path, r: &Reflection) -> usize {
         for f in files.iter().filter(|p| p.extension().and_then(|e| e.to_str()) == Some("spv")) {
             runs += 1;
             if let Err(e) = spirv_val(f) {
+                failures.push(e);
+            }
+        }
+    }
+    if require_tint() {
+        for f in files.iter().filter(|p| p.extension().and_then(|e| e.to_str()) == Some("wgsl")) {
+            runs += 1;
+            if let Err(e) = tint(f) {
                 failures.push(e);
             }
         }

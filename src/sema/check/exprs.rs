@@ -182,8 +182,11 @@ impl<'a, 'd> Checker<'a, 'd> {
                     Ty::Vector(s, n) => (Ty::Scalar(*s), *n as u32),
                     Ty::Matrix(c, r) => (Ty::Vector(Scalar::Float, *r), *c as u32),
                     Ty::Array(elem, n) => ((**elem).clone(), *n),
-                    // Bounds come from the buffer bound; every target clamps.
-                    Ty::RuntimeArray(elem) => ((**elem).clone(), u32::MAX),
+                    // Bounds come from the buffer bound; every target
+                    // clamps. A constant index must still be an `int`
+                    // (GLSL indexes with one; naga writes it as WGSL's
+                    // `i32`): at most 2^31 - 1.
+                    Ty::RuntimeArray(elem) => ((**elem).clone(), MAX_RUNTIME_INDEX + 1),
                     other => {
                         let d = Diagnostic::error(format!("`{}` cannot be indexed", self.show(other)), b.span);
                         self.diags.push(d);
@@ -208,7 +211,12 @@ impl<'a, 'd> Checker<'a, 'd> {
                 };
                 if let Some(k) = constant_index {
                     if k < 0 || k as u64 >= len as u64 {
-                        let d = Diagnostic::error(format!("index {k} is out of bounds for `{}` (length {len})", self.show(&b.ty)), i.span);
+                        let d = if matches!(b.ty, Ty::RuntimeArray(_)) {
+                            Diagnostic::error(format!("constant index {k} into run-time-sized `{}` is not in 0 to {MAX_RUNTIME_INDEX}", self.show(&b.ty)), i.span)
+                                .with_note("GLSL indexes arrays with an `int`, and WGSL (as written) with an `i32`")
+                        } else {
+                            Diagnostic::error(format!("index {k} is out of bounds for `{}` (length {len})", self.show(&b.ty)), i.span)
+                        };
                         self.diags.push(d);
                         return err_expr(span);
                     }
@@ -921,3 +929,6 @@ pub(super) fn parse_swizzle(s: &str, width: u8) -> Result<Components, String> {
     }
     Ok(comps)
 }
+
+/// The largest constant index into a run-time-sized array: `int`'s.
+pub(super) const MAX_RUNTIME_INDEX: u32 = i32::MAX as u32;

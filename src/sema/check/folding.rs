@@ -198,6 +198,14 @@ impl<'p> Folder<'p, '_> {
                         return None;
                     }
                 }
+                // WGSL computes `edge1 - edge0` of a `smoothstep` whose
+                // edges are constant, whatever `x`, and rejects an overflow.
+                if let (Builtin::Math(naga::MathFunction::SmoothStep), [Some(lo), Some(hi), _]) = (b, &vals[..]) {
+                    if let Some(d) = super::super::fold::difference_past_f32(lo, hi) {
+                        self.error(format!("`smoothstep`'s edge1 - edge0 is {d:e}, past the range of `float` (WGSL computes it from constant edges and rejects it)"), e.span);
+                        return None;
+                    }
+                }
                 // Most calls have a run-time argument: done, with nothing
                 // more allocated.
                 if vals.iter().any(Option::is_none) || b.is_texture() {
@@ -232,6 +240,20 @@ impl<'p> Folder<'p, '_> {
                     }
                 }
                 let vals = vals?;
+                // A conversion to `half` of a constant past its range: WGSL
+                // evaluates it and rejects the shader.
+                if matches!(e.ty, Ty::Scalar(Scalar::Half) | Ty::Vector(Scalar::Half, _)) {
+                    if let Some(x) = vals.iter().flat_map(|(v, _)| scalars(v)).find_map(|c| match *c {
+                        // WGSL: outside [-65504, 65504], not rounded into it.
+                        ConstValue::Float(x) if x.abs() > 65504.0 => Some(x),
+                        ConstValue::Int(k) if k.abs() > 65504 => Some(k as f64),
+                        ConstValue::Uint(k) if k > 65504 => Some(k as f64),
+                        _ => None,
+                    }) {
+                        self.error(format!("{x} is past the range of `half` (largest 65504): WGSL rejects its conversion in a constant"), e.span);
+                        return None;
+                    }
+                }
                 match &e.ty {
                     Ty::Struct(_) | Ty::Array(..) => Some(Cow::Owned(ConstValue::Composite(vals.into_iter().map(|v| v.0).collect()))),
                     ty => consts::construct(ty, vals).map(Cow::Owned),
@@ -262,6 +284,12 @@ impl<'p> Folder<'p, '_> {
                     Ty::Vector(_, n) => *n as i64,
                     Ty::Matrix(c, _) => *c as i64,
                     Ty::Array(_, n) => *n as i64,
+                    Ty::RuntimeArray(_) => {
+                        if !(0..=i32::MAX as i64).contains(&k) {
+                            self.error(format!("constant index {k} into a run-time-sized array is not in 0 to {} (GLSL indexes arrays with an `int`, and WGSL as written with an `i32`)", i32::MAX), i.span);
+                        }
+                        return None;
+                    }
                     _ => return None,
                 };
                 if !(0..len).contains(&k) {

@@ -46,6 +46,8 @@ impl<'a, 'd> Checker<'a, 'd> {
     pub(super) fn link_programs(&mut self) {
         let n = self.out.entry_points.len();
         let is_vertex = |e: usize, eps: &[EntryPoint]| eps[e].stage == naga::ShaderStage::Vertex;
+        // A compute entry point is never linked: it is a program alone.
+        let is_fragment = |e: usize, eps: &[EntryPoint]| eps[e].stage == naga::ShaderStage::Fragment;
         let varyings = |ep: &EntryPoint, globals: &[Global]| -> Vec<GlobalId> {
             ep.func.uses.keys().copied().filter(|&g| matches!(globals[g].kind, GlobalKind::Io { kind: IoKind::InOut, .. })).collect()
         };
@@ -63,7 +65,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         let mut linked = vec![false; n];
         let eps = &self.out.entry_points;
         for v in (0..n).filter(|&e| is_vertex(e, eps)) {
-            for f in (0..n).filter(|&e| !is_vertex(e, eps)) {
+            for f in (0..n).filter(|&e| is_fragment(e, eps)) {
                 if shared[v].iter().any(|g| shared[f].contains(g)) {
                     links.push(Link { vertex: v, fragment: f });
                     linked[v] = true;
@@ -74,7 +76,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
         }
         for v in (0..n).filter(|&e| is_vertex(e, eps) && !linked[e]) {
-            for f in (0..n).filter(|&e| !is_vertex(e, eps) && !linked[e]) {
+            for f in (0..n).filter(|&e| is_fragment(e, eps) && !linked[e]) {
                 links.push(Link { vertex: v, fragment: f });
             }
         }

@@ -48,8 +48,8 @@ impl<'a, 'd> Checker<'a, 'd> {
                 }
             }
         }
-        if let (naga::ShaderStage::Vertex, Some((span, what))) = (stage, func.fragment_only) {
-            let d = Diagnostic::error(format!("{what} is only available in fragment entry points, and `{name}` is a vertex entry point"), span);
+        if let (false, Some((span, what))) = (stage == naga::ShaderStage::Fragment, func.fragment_only) {
+            let d = Diagnostic::error(format!("{what} is only available in fragment entry points, and `{name}` is a {} entry point", stage_name(stage)), span);
             self.diags.push(d);
         }
     }
@@ -168,12 +168,21 @@ impl<'a, 'd> Checker<'a, 'd> {
         // No declared result: the first `return` says what it is.
         cx.infer_ret = entry.is_none() && decl.ret.is_none();
         cx.entry = entry.is_some();
+        // Samplers are not parameters in the outputs (each helper is copied
+        // per sampler); WGSL and SPIR-V take at most 255 of the others.
+        let mut passed = 0;
         for (i, p) in decl.params.iter().enumerate() {
             let ty = match params {
                 Some(ps) => ps[i].clone(),
                 None => self.resolve_type(&p.ty),
             };
             self.check_param(p, &ty);
+            passed += usize::from(!ty.is_sampler_like());
+            if passed == MAX_PARAMETERS + 1 {
+                let d = Diagnostic::error(format!("function `{}` has more than {MAX_PARAMETERS} parameters", decl.name.name), p.span)
+                    .with_note("WGSL and SPIR-V allow at most 255 parameters per function (samplers aside); pass a struct or an array");
+                self.diags.push(d);
+            }
             // daslang passes structs and arrays by reference: a `var` one is
             // the caller's variable, as `var p : T&` is.
             let by_ref = p.mutable && (p.by_ref || matches!(ty, Ty::Struct(_) | Ty::Array(..)));
@@ -616,11 +625,13 @@ pub(super) fn stage_name(s: naga::ShaderStage) -> &'static str {
 }
 
 /// Whether every path through `stmts` ends in `return` (or `discard`).
+/// Each branch is looked at once: asking twice per `if` was exponential in
+/// the nesting depth.
 pub(super) fn always_returns(stmts: &[Stmt]) -> bool {
     match stmts.last() {
         Some(Stmt::Return(..)) | Some(Stmt::Discard(_)) => true,
         Some(Stmt::If { then, otherwise, cond, .. }) => {
-            (always_returns(then) && always_returns(otherwise)) || (matches!(cond.kind, ExprKind::Bool(true)) && always_returns(then))
+            always_returns(then) && (matches!(cond.kind, ExprKind::Bool(true)) || always_returns(otherwise))
         }
         _ => false,
     }
@@ -665,6 +676,11 @@ fn count_locals(stmts: &[ast::Stmt]) -> usize {
         .sum()
 }
 
+/// The most parameters a helper may pass (the WGSL specification's limit,
+/// and the SPIR-V specification's "function parameters per function
+/// declaration").
+pub const MAX_PARAMETERS: usize = 255;
+
 /// The longest entry point name: `NAME.300es.frag` (or `.310es.comp`)
 /// must fit the 255 bytes most file systems allow a file name.
 pub const MAX_ENTRY_NAME_LEN: usize = 255 - ".300es.frag".len();
@@ -689,7 +705,7 @@ fn entry_name_problem(name: &str) -> Option<String> {
     // naga's ~400 words was 3,000 instructions each).
     static WGSL: std::sync::OnceLock<rustc_hash::FxHashSet<&'static str>> = std::sync::OnceLock::new();
     let wgsl = WGSL.get_or_init(|| naga::keywords::wgsl::RESERVED.iter().chain(naga::keywords::wgsl::BUILTIN_IDENTIFIERS).copied().collect());
-    if wgsl.contains(name) || name.starts_with("__") {
+    if wgsl.contains(name) || name.starts_with("__") || name == "_" {
         return Some("is reserved in WGSL; choose another".into());
     }
     None

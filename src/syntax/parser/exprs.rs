@@ -66,9 +66,16 @@ impl<'m> Parser<'_, 'm> {
             TokKind::P(P::MinusMinus) => UnaryOp::PreDec,
             _ => return self.postfix(),
         };
+        // Two levels: every output writes the operand in parentheses
+        // (`-(-(a))`), and WGSL's parsers count both (tint: at most 127).
         self.enter(t)?;
+        if let Err(()) = self.enter(t) {
+            self.leave();
+            return Err(());
+        }
         self.bump();
         let r = self.unary();
+        self.leave();
         self.leave();
         let e = r?;
         Ok(Expr { span: t.span.to(e.span), kind: ExprKind::Unary(op, Box::new(e)) })
