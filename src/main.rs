@@ -730,8 +730,12 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
         }
         depfile_text = Some((depfile.clone(), text));
     }
-    // What the next run needs to see that it would change nothing.
-    if let (0, Some(c), Some(key)) = (code, &cache, &run_key) {
+    // What the next run needs to see that it would change nothing. A run
+    // in which a unit said something (a warning) records nothing: a rerun
+    // that did nothing would not say it again (the cache stores only
+    // compilations without a diagnostic, for the same reason).
+    let said_something = batch.outcomes.iter().any(|o| o.compilation.as_ref().is_some_and(|c| !c.diagnostics.is_empty()));
+    if let (0, false, Some(c), Some(key)) = (code, said_something, &cache, &run_key) {
         // Each file's hash as the batch made it from the bytes it read
         // (each byte hashed once); the rest (the variant spec) read now.
         let known = batch.read_hashes();
