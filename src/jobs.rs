@@ -355,3 +355,25 @@ pub fn write_outputs(dir: &Path, artifacts: &[Artifact], newest_input: Option<st
 pub fn newest_mtime(files: &[PathBuf]) -> Option<std::time::SystemTime> {
     files.iter().try_fold(std::time::UNIX_EPOCH, |newest, f| std::fs::metadata(f).and_then(|m| m.modified()).ok().map(|t| t.max(newest)))
 }
+
+/// The first output that would replace a file the compile read (an input
+/// or an include named like one of the outputs, in the output directory),
+/// with that file. The check compares canonical paths, so `-o .` and
+/// `-o ./self` meet `self/x.wgsl` however they are spelled; a directory
+/// that does not exist yet holds no input.
+pub fn output_replacing_input<'a>(writes: impl IntoIterator<Item = (&'a Path, &'a [Artifact])>, files_read: &[PathBuf]) -> Option<(PathBuf, PathBuf)> {
+    let read: std::collections::HashMap<PathBuf, &PathBuf> = files_read.iter().filter_map(|f| std::fs::canonicalize(f).ok().map(|c| (c, f))).collect();
+    if read.is_empty() {
+        return None;
+    }
+    let mut canonical_dirs: std::collections::HashMap<&Path, Option<PathBuf>> = Default::default();
+    for (dir, artifacts) in writes {
+        let Some(canonical) = canonical_dirs.entry(dir).or_insert_with(|| std::fs::canonicalize(dir).ok()) else { continue };
+        for a in artifacts {
+            if let Some(input) = read.get(&canonical.join(&a.file_name)) {
+                return Some((dir.join(&a.file_name), (*input).clone()));
+            }
+        }
+    }
+    None
+}

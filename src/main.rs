@@ -646,6 +646,20 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
         owner.extend(artifacts.iter().map(|a| (out_dir.join(&a.file_name), path.as_path())));
         to_write.push((j, out_dir));
     }
+    // An output never replaces a file the compile read (`x.wgsl` as the
+    // input of `-o` its own directory): the whole run is refused, nothing
+    // written.
+    if !to_stdout {
+        let writes = to_write.iter().filter_map(|(j, d)| batch.outcomes[*j].artifacts.as_deref().map(|a| (d.as_path(), a)));
+        if let Some((output, input)) = umbrac::jobs::output_replacing_input(writes, &files_read) {
+            reporter.plain(&Diagnostic::error_nowhere(format!(
+                "the output `{}` would replace `{}`, which this compile reads; nothing was written (choose another output directory)",
+                output.display(),
+                input.display()
+            )));
+            return (code.max(EXIT_ERROR), watched);
+        }
+    }
     let mut inputs_read = files_read;
     inputs_read.extend(args.variants.iter().cloned());
     let manifest = (!batch.variants.is_empty()).then(|| umbrac::jobs::variants_artifact(&batch));

@@ -391,3 +391,38 @@ fn a_device_limit_warning_is_shown_and_fails_only_when_strict() {
     assert!(stderr(&o).contains(&format!("error: {message}")), "{}", stderr(&o));
     assert!(!d.path().join("strict").exists() || snapshot(&d.path().join("strict")).is_empty(), "a refused compile writes nothing");
 }
+
+/// An input, or a file it includes, named like one of its own outputs in
+/// the output directory is never replaced by that output: the run is
+/// refused whole, exit 1, naming both, and nothing is written (issue 37:
+/// `umbrac compile self/x.wgsl -o self` replaced its source).
+#[test]
+fn an_output_never_replaces_a_file_the_compile_reads() {
+    let d = tempfile::tempdir().unwrap();
+    let source = std::fs::read(repo().join("shaders/shadow.das")).unwrap();
+    let own = d.path().join("self");
+    std::fs::create_dir(&own).unwrap();
+    std::fs::write(own.join("shadow.wgsl"), &source).unwrap();
+    for out in ["self", "./self/../self"] {
+        let o = umbrac(&["compile", "self/shadow.wgsl", "-o", out], d.path());
+        assert_eq!(code(&o), 1, "{}", stderr(&o));
+        assert!(stderr(&o).contains("would replace `self/shadow.wgsl`, which this compile reads; nothing was written"), "{}", stderr(&o));
+        assert_eq!(std::fs::read(own.join("shadow.wgsl")).unwrap(), source, "the source is intact");
+        let names: Vec<_> = std::fs::read_dir(&own).unwrap().map(|e| e.unwrap().file_name()).collect();
+        assert_eq!(names.len(), 1, "nothing else written: {names:?}");
+    }
+    // An included file named like an output of the program that includes it.
+    let inc = d.path().join("inc");
+    std::fs::create_dir(&inc).unwrap();
+    let body = "options gen2\nvar @out f_color : float4\n[fragment_program]\ndef fs {\n    f_color = float4(1.0)\n}\n";
+    std::fs::write(inc.join("fs.330.frag"), body).unwrap();
+    std::fs::write(inc.join("main.das"), "#include \"fs.330.frag\"\n").unwrap();
+    let o = umbrac(&["compile", "inc/main.das", "-o", "inc"], d.path());
+    assert_eq!(code(&o), 1, "{}", stderr(&o));
+    assert!(stderr(&o).contains("fs.330.frag"), "{}", stderr(&o));
+    assert_eq!(std::fs::read_to_string(inc.join("fs.330.frag")).unwrap(), body);
+    // Elsewhere the same inputs compile.
+    let o = umbrac(&["compile", "inc/main.das", "-o", "out"], d.path());
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    assert!(d.path().join("out/fs.330.frag").exists());
+}
