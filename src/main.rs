@@ -592,8 +592,9 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
             reporter.compilation(c);
         }
     }
-    // With variants a run is all or nothing, like one compile.
-    if !batch.variants.is_empty() && code != 0 {
+    // A run is all or nothing, like one compile: with one input failing,
+    // the others' outputs are not written either (README).
+    if code != 0 {
         return (code, watched);
     }
 
@@ -634,10 +635,9 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
         }
         if let Some((a, other)) = artifacts.iter().find_map(|a| owner.get(&out_dir.join(&a.file_name)).map(|o| (a, *o))) {
             reporter.plain(&Diagnostic::error_nowhere(format!(
-                "`{}` is an output of both `{}` and `{}`; nothing was written for `{}` (compile them into different directories)",
+                "`{}` is an output of both `{}` and `{}`; nothing was written (compile them into different directories)",
                 a.file_name,
                 other.display(),
-                path.display(),
                 path.display()
             )));
             code = code.max(EXIT_ERROR);
@@ -645,6 +645,9 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
         }
         owner.extend(artifacts.iter().map(|a| (out_dir.join(&a.file_name), path.as_path())));
         to_write.push((j, out_dir));
+    }
+    if code != 0 {
+        return (code, watched);
     }
     // An output never replaces a file the compile read (`x.wgsl` as the
     // input of `-o` its own directory): the whole run is refused, nothing

@@ -268,8 +268,9 @@ fn parallel_files_failed_one_writes_nothing() {
     let das = shadow_das();
     let o = umbrac(&["compile", das.to_str().unwrap(), "bad.das", "-o", "out", "--target", "wgsl"], d.path());
     assert_eq!(code(&o), 1, "{}", stderr(&o));
+    // All or nothing: the good file's outputs are not written either.
     let out = d.path().join("out");
-    assert!(out.join("shadow.wgsl").exists());
+    assert!(!out.join("shadow.wgsl").exists());
     assert!(!out.join("bad.wgsl").exists() && !out.join("bad.reflect.json").exists());
 }
 
@@ -352,7 +353,7 @@ fn compile_a_directory() {
     assert_eq!(code(&o), 2, "{}", stderr(&o));
     assert!(stderr(&o).contains("no `.das` files"), "{}", stderr(&o));
     // Two files with the same entry point names cannot share an output
-    // directory: the later one is refused by name and nothing of it is written.
+    // directory: the clash is named and nothing of either is written.
     let twins = tmp.path().join("twins");
     std::fs::create_dir(&twins).unwrap();
     std::fs::copy(repo().join("shaders/shadow.das"), twins.join("a.das")).unwrap();
@@ -361,6 +362,29 @@ fn compile_a_directory() {
     let o = umbrac(&["compile", twins.to_str().unwrap(), "-o", clash.to_str().unwrap()], tmp.path());
     assert_eq!(code(&o), 1, "{}", stderr(&o));
     assert!(stderr(&o).contains("is an output of both"), "{}", stderr(&o));
+    assert!(!clash.exists() || std::fs::read_dir(&clash).unwrap().next().is_none(), "nothing is written");
+}
+
+/// Several inputs where one fails: exit 1 and nothing is written, the good
+/// inputs' outputs included (a run is all or nothing, as the README says;
+/// issue 37 found the good files' outputs written).
+#[test]
+fn one_failing_input_writes_nothing_for_the_others() {
+    let d = tempfile::tempdir().unwrap();
+    let dir = d.path().join("many");
+    std::fs::create_dir(&dir).unwrap();
+    std::fs::copy(repo().join("shaders/shadow.das"), dir.join("good.das")).unwrap();
+    std::fs::write(dir.join("bad.das"), "options gen2\nvar @out f_color : float4\n[fragment_program]\ndef fs {\n    f_color = nope\n}\n").unwrap();
+    for args in [vec!["compile", "many", "-o", "out"], vec!["compile", "many/good.das", "many/bad.das", "-o", "out"]] {
+        let o = umbrac(&args, d.path());
+        assert_eq!(code(&o), 1, "{}", stderr(&o));
+        assert!(stderr(&o).contains("bad.das:5:"), "{}", stderr(&o));
+        assert!(!d.path().join("out").exists() || std::fs::read_dir(d.path().join("out")).unwrap().next().is_none(), "{args:?} wrote outputs");
+    }
+    // The good input alone compiles.
+    let o = umbrac(&["compile", "many/good.das", "-o", "out"], d.path());
+    assert_eq!(code(&o), 0, "{}", stderr(&o));
+    assert!(d.path().join("out/main_fs.330.frag").exists());
 }
 
 /// A program over a guarantee that every device in use exceeds compiles
