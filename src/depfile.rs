@@ -6,6 +6,68 @@
 
 use std::path::{Path, PathBuf};
 
+/// A path make cannot read back: a line break ends a rule, and no escape
+/// brings it back (the run is refused before anything is written).
+pub fn unwritable(paths: &[PathBuf]) -> Option<&Path> {
+    paths.iter().map(PathBuf::as_path).find(|p| p.to_string_lossy().contains(['\n', '\r']))
+}
+
+/// A depfile written before the outputs, under a temporary name beside
+/// where it goes, and renamed into place once they are: a depfile that
+/// cannot be written fails the run before any output changes, and a run
+/// that fails later leaves the old depfile (dropping it removes the
+/// temporary).
+pub struct Pending {
+    temp: PathBuf,
+    path: PathBuf,
+    /// The directories made for it (a depfile inside the output directory
+    /// of a first run), deepest first: removed again, when empty, if the
+    /// run fails.
+    made: Vec<PathBuf>,
+    done: bool,
+}
+
+impl Pending {
+    pub fn write(path: &Path, text: &[u8]) -> Result<Pending, String> {
+        let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+        let name = path.file_name().ok_or_else(|| format!("cannot write the depfile `{}`: not a file name", path.display()))?;
+        let temp = dir.join(format!(".{}.umbrac-{}.tmp", name.to_string_lossy(), std::process::id()));
+        let made: Vec<PathBuf> = dir.ancestors().take_while(|d| !d.as_os_str().is_empty() && !d.exists()).map(Path::to_path_buf).collect();
+        let mut pending = Pending { temp, path: path.to_path_buf(), made, done: false };
+        let written = std::fs::create_dir_all(dir).and_then(|()| std::fs::write(&pending.temp, text));
+        if let Err(e) = written {
+            pending.remove();
+            return Err(format!("cannot write the depfile `{}`: {e}; nothing was written", path.display()));
+        }
+        Ok(pending)
+    }
+
+    fn remove(&mut self) {
+        self.done = true;
+        let _ = std::fs::remove_file(&self.temp);
+        for d in &self.made {
+            let _ = std::fs::remove_dir(d);
+        }
+    }
+
+    /// Puts the depfile in place (the outputs are written).
+    pub fn commit(mut self) -> Result<(), String> {
+        self.done = true;
+        std::fs::rename(&self.temp, &self.path).map_err(|e| {
+            let _ = std::fs::remove_file(&self.temp);
+            format!("cannot write the depfile `{}`: {e}", self.path.display())
+        })
+    }
+}
+
+impl Drop for Pending {
+    fn drop(&mut self) {
+        if !self.done {
+            self.remove();
+        }
+    }
+}
+
 /// The depfile text. Paths are written as given; each list is sorted and
 /// without repeats, so the text does not depend on the order of the jobs.
 pub fn render(targets: &[PathBuf], prerequisites: &[PathBuf]) -> String {

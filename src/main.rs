@@ -666,6 +666,26 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
     let mut inputs_read = files_read;
     inputs_read.extend(args.variants.iter().cloned());
     let manifest = (!batch.variants.is_empty()).then(|| umbrac::jobs::variants_artifact(&batch));
+    // Like `gcc -MD`: a depfile only for a build that succeeded. It is
+    // written before the outputs and renamed into place after them, so a
+    // depfile that cannot be written changes nothing.
+    let mut pending_depfile = None;
+    if let Some(depfile) = &args.depfile {
+        let mut targets: Vec<PathBuf> = to_write.iter().flat_map(|(j, d)| batch.outcomes[*j].artifacts.iter().flatten().map(move |a| d.join(&a.file_name))).collect();
+        targets.extend(manifest.iter().map(|m| dir.join(&m.file_name)));
+        if let Some(p) = umbrac::depfile::unwritable(&targets).or_else(|| umbrac::depfile::unwritable(&inputs_read)) {
+            reporter.plain(&Diagnostic::error_nowhere(format!("`{}` has a line break in its name, which a depfile cannot hold; nothing was written", p.display())));
+            return (EXIT_ERROR, watched);
+        }
+        let text = umbrac::depfile::render(&targets, &inputs_read).into_bytes();
+        match umbrac::depfile::Pending::write(depfile, &text) {
+            Ok(p) => pending_depfile = Some((p, depfile.clone(), text)),
+            Err(e) => {
+                reporter.plain(&Diagnostic::error_nowhere(e));
+                return (EXIT_ERROR, watched);
+            }
+        }
+    }
     // The staged directories are published; which of `to_write` they hold.
     let published: Vec<bool> = match stage.take() {
         Some(s) if code == 0 => publish_stage(s, &batch, &to_write, &dir),
@@ -736,16 +756,17 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
         }
     }
     stamps.save();
-    // Like `gcc -MD`: a depfile only for a build that succeeded.
+    // The depfile goes into place once every output is written (dropped
+    // otherwise: its temporary is removed and the old one stays).
     let mut depfile_text = None;
-    if let (Some(depfile), 0) = (&args.depfile, code) {
-        let targets: Vec<PathBuf> = written.iter().map(|(p, _)| p.clone()).collect();
-        let text = umbrac::depfile::render(&targets, &inputs_read).into_bytes();
-        if let Err(e) = write_file(depfile, text.clone()) {
-            reporter.plain(&Diagnostic::error_nowhere(e));
-            code = code.max(EXIT_ERROR);
+    if let (Some((pending, depfile, text)), 0) = (pending_depfile, code) {
+        match pending.commit() {
+            Ok(()) => depfile_text = Some((depfile, text)),
+            Err(e) => {
+                reporter.plain(&Diagnostic::error_nowhere(e));
+                code = code.max(EXIT_ERROR);
+            }
         }
-        depfile_text = Some((depfile.clone(), text));
     }
     // What the next run needs to see that it would change nothing. A run
     // in which a unit said something (a warning) records nothing: a rerun

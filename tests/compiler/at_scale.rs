@@ -575,3 +575,36 @@ fn outputs_are_readable_by_all_whatever_the_umask() {
         assert_eq!(mode & 0o777, 0o644, "umask {umask}");
     }
 }
+
+/// A depfile that cannot be written fails the run before any output
+/// changes; a file name with a line break (which make cannot read back)
+/// is refused before anything is written (issue 37: the outputs were
+/// already new, and the depfile malformed).
+#[test]
+fn a_depfile_that_cannot_be_written_changes_nothing() {
+    let p = Project::new();
+    p.write("main.das", &format!("let SCALE = 2.0\n{PROGRAM}"));
+    let o = p.run(&["compile", "main.das", "-o", "out", "--target", "wgsl", "--no-cache"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let before = std::fs::read(p.path("out/main.wgsl")).unwrap();
+    p.write("main.das", &format!("let SCALE = 3.0\n{PROGRAM}"));
+    p.write("blocker", "a file, not a directory\n");
+    let o = p.run(&["compile", "main.das", "-o", "out", "--target", "wgsl", "--no-cache", "--depfile", "blocker/main.d"]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(stderr(&o).contains("cannot write the depfile `blocker/main.d`"), "{}", stderr(&o));
+    assert_eq!(std::fs::read(p.path("out/main.wgsl")).unwrap(), before, "the outputs are unchanged");
+    // A failing compile leaves no temporary and no directory made for the depfile.
+    p.write("bad.das", "options gen2\nvar @out f_color : float4\n[fragment_program]\ndef fs {\n    f_color = nope\n}\n");
+    let o = p.run(&["compile", "bad.das", "-o", "bout", "--no-cache", "--depfile", "deps/sub/bad.d"]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(!p.path("deps").exists() && !p.path("bout").exists());
+    // A line break in a file name.
+    p.write("new\nline.das", &format!("let SCALE = 2.0\n{PROGRAM}"));
+    let o = p.run(&["compile", "new\nline.das", "-o", "nl", "--target", "wgsl", "--no-cache", "--depfile", "nl.d"]);
+    assert_eq!(o.status.code(), Some(1), "{}", stderr(&o));
+    assert!(stderr(&o).contains("has a line break in its name, which a depfile cannot hold"), "{}", stderr(&o));
+    assert!(!p.path("nl").exists() && !p.path("nl.d").exists());
+    // Without a depfile the same name compiles.
+    let o = p.run(&["compile", "new\nline.das", "-o", "nl", "--target", "wgsl", "--no-cache"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+}
