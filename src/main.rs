@@ -721,14 +721,12 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
             |_, msg| Err(format!("writing panicked: {msg}")),
         )
     };
-    let mut written: Vec<(PathBuf, &Path)> = Vec::new();
     let mut written_hashes: Vec<(PathBuf, umbrac::cache::Key)> = Vec::new();
     for ((j, out_dir), result) in to_write.iter().zip(results) {
         let path = &batch.inputs[batch.jobs[*j].input].path;
         match result {
             Ok(()) => {
                 let o = &batch.outcomes[*j];
-                written.extend(o.artifacts.iter().flatten().map(|a| (out_dir.join(&a.file_name), path.as_path())));
                 written_hashes.extend(o.artifacts.iter().flatten().zip(&o.hashes).map(|(a, h)| (out_dir.join(&a.file_name), *h)));
             }
             Err(e) => {
@@ -746,7 +744,6 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
         let known = cache.as_ref().map(|_| umbrac::output::Known { hashes: &hash, stamps: &stamps });
         match umbrac::jobs::write_outputs(&dir, std::slice::from_ref(manifest), newest_input, known.as_ref()) {
             Ok(()) => {
-                written.push((dir.join(&manifest.file_name), Path::new("")));
                 written_hashes.extend(hash.first().map(|h| (dir.join(&manifest.file_name), *h)));
             }
             Err(e) => {
