@@ -93,7 +93,7 @@ impl WgpuExecutor {
             return self.dispatch_with(&m.clone(), plan, fit);
         }
         let module = match code {
-            ShaderCode::Wgsl(text) => device.create_shader_module(wgpu::ShaderModuleDescriptor { label: Some(&set.label), source: wgpu::ShaderSource::Wgsl(text.as_str().into()) }),
+            ShaderCode::Wgsl(text) => device.create_shader_module(wgpu::ShaderModuleDescriptor { label: Some(&set.label), source: wgpu::ShaderSource::Wgsl(crate::emit::wgsl::for_naga(text)) }),
             // SAFETY: a SPIR-V module umbrac emitted and naga validated
             // (the contract of `--via spirv`).
             ShaderCode::Spirv(words) => unsafe {
