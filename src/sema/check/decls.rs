@@ -1041,6 +1041,11 @@ impl ConstEnv for ConstEnvAdapter<'_, '_, '_> {
     fn enum_value(&self, ty: &str, member: &str) -> Option<(ConstValue, Ty)> {
         self.c.enum_const(ty, member)
     }
+
+    fn why_not_const(&self, name: &str) -> Option<String> {
+        let spec = self.c.ast.items.iter().any(|i| matches!(i, ast::Item::Global(g) if g.name.name == name && g.qualifiers.iter().any(|q| matches!(q.kind, ast::QualifierKind::ConstantId(_)))));
+        spec.then(|| format!("`{name}` is a specialization constant (`@constant_id`), whose value the host sets when it creates the pipeline: WGSL takes an `override` in no array size here and in no `const`, and SPIR-V and GLSL hold only its default, so it is refused on every target (use it in the shader's code, or a `let` constant where a constant is needed)"))
+    }
 }
 
 /// What `half` cannot be, with what to do instead.

@@ -43,7 +43,10 @@ impl<'a, 'd> Checker<'a, 'd> {
             if let GlobalKind::Builtin(b) = g.kind {
                 if !b.available_in(stage) {
                     let d = Diagnostic::error(format!("`{}` is not available in {} entry point `{name}`", b.name(), stage_name(stage)), span)
-                        .with_note(format!("`{}` belongs to the {} stage", b.name(), stage_name(b.stage())));
+                        .with_note(match b.available_in(naga::ShaderStage::Fragment) && b.available_in(naga::ShaderStage::Compute) {
+                            true => format!("`{}` belongs to the compute and fragment stages", b.name()),
+                            false => format!("`{}` belongs to the {} stage", b.name(), stage_name(b.stage())),
+                        });
                     self.diags.push(d);
                 }
             }
