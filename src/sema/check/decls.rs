@@ -384,7 +384,8 @@ impl<'a, 'd> Checker<'a, 'd> {
                     self.diags.push(d);
                 }
             } else if let Some(init) = &g.init {
-                let d = Diagnostic::error("only `@uniform` values and `@constant_id` constants can have an initial value", init.span)
+                // (and `@constant_id` constants, whose value is their default)
+                let d = Diagnostic::error("only `@uniform` values can have an initial value", init.span)
                     .with_note("a uniform's initial value is the default the host sets; inputs and outputs have none");
                 self.diags.push(d);
             }

@@ -160,6 +160,12 @@ impl WgpuExecutor {
         (&self.device, &self.queue)
     }
 
+    /// Whether this device has subgroup operations (`Features::SUBGROUP`,
+    /// requested where the adapter has it).
+    pub fn supports_subgroups(&self) -> bool {
+        self.device.features().contains(wgpu::Features::SUBGROUP)
+    }
+
     /// Whether this device takes SPIR-V unchanged.
     pub fn supports_passthrough(&self) -> bool {
         self.device.features().contains(wgpu::Features::PASSTHROUGH_SHADERS)
