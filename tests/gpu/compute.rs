@@ -87,6 +87,7 @@ fn image_fill_matches_the_cpu() {
         buffers: vec![],
         images: vec![ImageInput { name: "out_image".into(), width: w, height: h, layers: 1, texels: None }],
         readback: vec!["out_image".into()],
+        constants: vec![],
     };
     let ran = run_everywhere("image_fill", &plan);
     let unorm = |v: f32| (v.clamp(0.0, 1.0) * 255.0).round() as i32;
@@ -131,6 +132,7 @@ fn prefix_sum_matches_the_cpu() {
         ],
         images: vec![],
         readback: vec!["output".into(), "totals".into()],
+        constants: vec![],
     };
     // Inclusive scans of each block, and each block's sum.
     let mut want = vec![0u32; n];
@@ -167,6 +169,7 @@ fn histogram_matches_the_cpu() {
         ],
         images: vec![],
         readback: vec!["histogram".into()],
+        constants: vec![],
     };
     let mut bins = vec![0u32; BINS];
     for v in &samples {
@@ -198,6 +201,7 @@ fn gl_dialect_matches_the_cpu() {
         buffers: vec![BufferInput { name: "taps".into(), bytes: taps }],
         images: vec![ImageInput { name: "c_destTex".into(), width: w, height: h, layers: 1, texels: None }],
         readback: vec!["taps".into(), "c_destTex".into()],
+        constants: vec![],
     };
     // The manifest has the units as written or assigned.
     let m = compiled("dialect_taps").reflection;
@@ -246,6 +250,7 @@ fn a_plan_that_does_not_fit_names_what_is_wrong() {
         buffers: vec![BufferInput { name: "samples".into(), bytes: vec![0; 6] }],
         images: vec![],
         readback: vec![],
+        constants: vec![],
     };
     let e = umbrac::render::bind::compute::fit(&set.label, set.manifest().unwrap(), &plan).unwrap_err().to_string();
     assert!(e.contains("storage buffer `samples` is given 6 bytes; its layout takes 4 bytes and a whole number (at least one) of 4-byte elements"), "{e}");
@@ -305,6 +310,7 @@ fn depth_bounds_match_the_cpu() {
         buffers: vec![BufferInput { name: "view".into(), bytes: view_bytes }, BufferInput { name: "bounds".into(), bytes: start }],
         images: vec![ImageInput { name: "depth".into(), width: w, height: h, layers: 1, texels: Some(depth.iter().flat_map(|d| d.to_le_bytes()).collect()) }],
         readback: vec!["bounds".into()],
+        constants: vec![],
     };
     let ran = run_everywhere("depth_bounds", &plan);
     for (consumer, r) in &ran {
@@ -349,6 +355,7 @@ fn specialization_constant_atomics_and_subgroups_match_the_cpu() {
         ],
         images: vec![],
         readback: vec!["totals".into()],
+        constants: vec![],
     };
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("shaders/compute/spec_reduce.das");
     let plain = umbrac::compile_file(&path, &umbrac::Options::default());
@@ -405,5 +412,19 @@ fn specialization_constant_atomics_and_subgroups_match_the_cpu() {
             false => assert_eq!(t[2], invocations, "{}: one add per invocation", consumer.name()),
         }
         eprintln!("spec_reduce on {}: matches the CPU (subgroups: {sub}, {} atomic adds)", consumer.name(), t[2]);
+        // Another value of SCALE: WGSL's override takes it when the
+        // pipeline is made; the consumers of the other targets, which hold
+        // the default, refuse to pretend.
+        let other = ComputePlan { constants: vec![(0, 5.0)], ..plan.clone() };
+        match (consumer, consumers::run_compute(consumer, &set, &other)) {
+            (Consumer::VulkanWgsl, Ok((r, _))) => {
+                let t = words(&r.resources["totals"]);
+                let sum5 = data.iter().fold(0u32, |s, v| s.wrapping_add(v.wrapping_mul(5)));
+                assert_eq!((t[0], t[1]), (sum5, data.iter().max().unwrap() * 5), "{}: SCALE = 5 set as a pipeline constant", consumer.name());
+            }
+            (Consumer::VulkanWgsl, Err(e)) => panic!("spec_reduce on vulkan-wgsl with SCALE = 5: {e}"),
+            (_, Err(ExecError::Unsupported(_))) => {}
+            (_, other) => panic!("spec_reduce on {}: a plan setting a specialization constant was not refused: {:?}", consumer.name(), other.map(|_| ())),
+        }
     }
 }
