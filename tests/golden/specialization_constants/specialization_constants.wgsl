@@ -58,11 +58,11 @@ fn spec_fs(@location(0) v_uv_1: vec2<f32>) -> spec_fs_out {
             i = (_e20 + 1i);
         }
     }
-    let _e27 = c;
-    c = (_e27 / vec4(f32(max(TAPS, 1u))));
-    let _e34 = c;
-    let _e36 = c;
-    f_color = select(_e36, (vec4(1f) - _e34), INVERT);
-    let _e38 = f_color;
-    return spec_fs_out(_e38);
+    let _e26 = c;
+    c = (_e26 / vec4(f32(max(TAPS, 1u))));
+    let _e33 = c;
+    let _e35 = c;
+    f_color = select(_e35, (vec4(1f) - _e33), INVERT);
+    let _e37 = f_color;
+    return spec_fs_out(_e37);
 }
