@@ -1174,6 +1174,8 @@ mod tests {
             storage_buffers: None,
             storage_images: None,
             required_limits: None,
+            requires: None,
+            specialization_constants: None,
         };
         assert_eq!(host_type(&r, "float").unwrap(), HostType::Scalar("f32"));
         assert_eq!(host_type(&r, "uint3").unwrap(), HostType::Vector("u32", 3));

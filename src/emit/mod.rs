@@ -37,10 +37,11 @@ use crate::target::{Artifact, Target};
 /// `STEM.reflect.json`); `source_name` is recorded in the manifest. An empty
 /// `targets` means every target that can run the program (`Target::defaults`).
 pub fn emit(lowered: &Lowered, stem: &str, source_name: &str, targets: &[Target]) -> Result<(Vec<Artifact>, Reflection), Diagnostic> {
-    // A program with compute, storage buffers or images takes its GLSL
-    // names from GLSL 430, which has them.
+    // A program with compute, storage buffers, images or subgroups takes
+    // its GLSL names from GLSL 430, which has them.
     let needs_430 = lowered.interface.entry_points.iter().any(|e| e.stage == naga::ShaderStage::Compute)
-        || lowered.interface.resources.iter().any(|r| matches!(r.kind, crate::lower::ResourceKind::Storage { .. } | crate::lower::ResourceKind::Image { .. }));
+        || lowered.interface.resources.iter().any(|r| matches!(r.kind, crate::lower::ResourceKind::Storage { .. } | crate::lower::ResourceKind::Image { .. }))
+        || wgsl::uses_subgroups(&lowered.gpu);
     let mut targets: Vec<Target> = if targets.is_empty() { Target::defaults(needs_430).to_vec() } else { targets.to_vec() };
     targets.sort();
     targets.dedup();

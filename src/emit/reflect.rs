@@ -22,7 +22,7 @@ use naga::{ArraySize, Handle, Module, ScalarKind, ShaderStage, Type, TypeInner, 
 
 use super::glsl::{self, EntryNames};
 use super::glsl_names::digit;
-use super::reflect_types::{EntryPoint, Io, Member, ProgramLink, Reflection, Sampler, StorageBuffer, StorageImage, StructLayout, Uniform, UniformBuffer, REFLECTION_FORMAT};
+use super::reflect_types::{EntryPoint, Io, Member, ProgramLink, Reflection, Requirements, Sampler, SpecConstant, StorageBuffer, StorageImage, StructLayout, Uniform, UniformBuffer, REFLECTION_FORMAT};
 use crate::diag::Diagnostic;
 use crate::lower::{EntryInterface, GlUniforms, IoVar, Lowered, ResourceKind};
 use crate::sema::{ConstValue, SamplerKind, Ty};
@@ -572,7 +572,64 @@ pub fn build(
         storage_buffers: (!storage_buffers.is_empty()).then_some(storage_buffers),
         storage_images: (!storage_images.is_empty()).then_some(storage_images),
         required_limits: if targets.iter().any(|t| matches!(t, Target::Wgsl | Target::Spirv)) { super::limits::webgpu_requirements(lowered) } else { None },
+        requires: requirements(module),
+        specialization_constants: spec_constants(module),
     })
+}
+
+/// What the GPU module needs a host to enable, if anything.
+fn requirements(module: &naga::Module) -> Option<Requirements> {
+    use naga::BuiltIn as B;
+    let mut r = Requirements::default();
+    let reads = |b: B| module.entry_points.iter().any(|ep| ep.function.arguments.iter().any(|a| a.binding == Some(naga::Binding::BuiltIn(b))));
+    let subgroups = super::wgsl::uses_subgroups(module);
+    if subgroups {
+        r.wgpu_features.push("SUBGROUP".into());
+        r.wgsl_enable.push("subgroups".into());
+        r.vulkan.push("subgroupSupportedOperations (basic, vote, arithmetic, ballot, shuffle, shuffle_relative as used) in compute and fragment stages".into());
+    }
+    if reads(B::PrimitiveIndex) {
+        r.wgpu_features.push("PRIMITIVE_INDEX".into());
+        r.wgsl_enable.push("primitive_index".into());
+        r.vulkan.push("geometryShader (PrimitiveId in fragment shaders)".into());
+    }
+    if reads(B::DrawIndex) {
+        r.vulkan.push("shaderDrawParameters".into());
+    }
+    if r == Requirements::default() {
+        return None;
+    }
+    r.spirv_version = if subgroups { "1.3" } else { "1.0" }.into();
+    Some(r)
+}
+
+/// The module's overrides, with their defaults.
+fn spec_constants(module: &naga::Module) -> Option<Vec<SpecConstant>> {
+    let list: Vec<SpecConstant> = module
+        .overrides
+        .iter()
+        .filter_map(|(_, o)| {
+            let naga::Expression::Literal(l) = module.global_expressions[o.init?] else { return None };
+            let (ty, default, default_bits) = match l {
+                naga::Literal::Bool(b) => ("bool", f64::from(u8::from(b)), u32::from(b)),
+                naga::Literal::I32(v) => ("int", f64::from(v), v as u32),
+                naga::Literal::U32(v) => ("uint", f64::from(v), v),
+                naga::Literal::F32(v) => ("float", f64::from(v), v.to_bits()),
+                _ => return None,
+            };
+            Some(SpecConstant {
+                name: o.name.clone().unwrap_or_default(),
+                id: u32::from(o.id?),
+                ty: ty.into(),
+                default,
+                default_bits,
+                wgsl: "override".into(),
+                spirv: "default".into(),
+                glsl: "default".into(),
+            })
+        })
+        .collect();
+    (!list.is_empty()).then_some(list)
 }
 
 /// `STEM.wgsl` and `STEM.spv`.

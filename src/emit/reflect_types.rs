@@ -68,6 +68,58 @@ pub struct Reflection {
     /// "Device limits").
     #[cfg_attr(feature = "deserialize", serde(default))]
     pub required_limits: Option<std::collections::BTreeMap<String, u64>>,
+    /// What a host must enable for the program's subgroups, `gl_DrawID`
+    /// or `gl_PrimitiveID` (left out when it needs nothing).
+    #[cfg_attr(feature = "deserialize", serde(default))]
+    pub requires: Option<Requirements>,
+    /// The `@constant_id` specialization constants (left out when none).
+    #[cfg_attr(feature = "deserialize", serde(default))]
+    pub specialization_constants: Option<Vec<SpecConstant>>,
+}
+
+/// Device features a program needs beyond a target's baseline.
+#[derive(Clone, Debug, PartialEq, Default)]
+#[cfg_attr(feature = "deserialize", derive(serde::Deserialize))]
+pub struct Requirements {
+    /// wgpu `Features` by their Rust names (`SUBGROUP`, `PRIMITIVE_INDEX`).
+    pub wgpu_features: Vec<String>,
+    /// The WGSL `enable` directives the WGSL starts with (`subgroups`,
+    /// `primitive_index`); naga 30 does not know `enable subgroups;` and a
+    /// wgpu host drops that line (docs/targets.md).
+    pub wgsl_enable: Vec<String>,
+    /// The SPIR-V version written: `"1.0"`, or `"1.3"` (Vulkan 1.1) with
+    /// subgroups.
+    pub spirv_version: String,
+    /// Vulkan features the SPIR-V needs (`subgroupSupportedOperations`
+    /// bits by name, `shaderDrawParameters`).
+    pub vulkan: Vec<String>,
+}
+
+/// One specialization constant: WGSL `override` with `@id(id)`, SPIR-V
+/// and GLSL hold its default (docs/targets.md, "Specialization
+/// constants").
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "deserialize", derive(serde::Deserialize))]
+pub struct SpecConstant {
+    pub name: String,
+    /// Its `@constant_id`: WGSL's `@id`, the key of wgpu's
+    /// `PipelineCompilationOptions::constants`.
+    pub id: u32,
+    /// `bool`, `int`, `uint` or `float`.
+    #[cfg_attr(feature = "deserialize", serde(rename = "type"))]
+    pub ty: String,
+    /// The default as a number (a bool is 0 or 1: wgpu's constants are
+    /// `f64`s).
+    pub default: f64,
+    /// The default's 32 bits (a Vulkan `VkSpecializationInfo` word).
+    pub default_bits: u32,
+    /// What each target holds: `"override"` (WGSL: the host may set it),
+    /// `"default"` (SPIR-V, GLSL: the default, fixed at compile time; in
+    /// GLSL the line `const T NAME = default;`, which a GL host may edit
+    /// before compiling).
+    pub wgsl: String,
+    pub spirv: String,
+    pub glsl: String,
 }
 
 /// One program: a vertex and a fragment entry point, by name.
@@ -345,6 +397,26 @@ serialize_struct!(Reflection {
     "storage_buffers": storage_buffers?,
     "storage_images": storage_images?,
     "required_limits": required_limits?,
+    "requires": requires?,
+    "specialization_constants": specialization_constants?,
+});
+
+serialize_struct!(Requirements {
+    "wgpu_features": wgpu_features,
+    "wgsl_enable": wgsl_enable,
+    "spirv_version": spirv_version,
+    "vulkan": vulkan,
+});
+
+serialize_struct!(SpecConstant {
+    "name": name,
+    "id": id,
+    "type": ty,
+    "default": default,
+    "default_bits": default_bits,
+    "wgsl": wgsl,
+    "spirv": spirv,
+    "glsl": glsl,
 });
 
 serialize_struct!(ProgramLink {

@@ -24,7 +24,9 @@ use crate::lower::Lowered;
 ///   requires of texel fetches). Out-of-range access is undefined behaviour
 ///   in Vulkan without robustness features, and these are the cheapest
 ///   policies that make every target read the same defined value.
-/// - SPIR-V 1.0, so any Vulkan 1.0 driver takes it.
+/// - SPIR-V 1.0, so any Vulkan 1.0 driver takes it; 1.3 (Vulkan 1.1)
+///   where the module uses subgroups, whose GroupNonUniform instructions
+///   need it (the manifest's `requires`).
 pub fn options(module: &naga::Module) -> Options<'static> {
     let binding_map = module
         .global_variables
@@ -34,7 +36,7 @@ pub fn options(module: &naga::Module) -> Options<'static> {
         .collect();
     Options {
         binding_map,
-        lang_version: (1, 0),
+        lang_version: if super::wgsl::uses_subgroups(module) { (1, 3) } else { (1, 0) },
         flags: WriterFlags::DEBUG,
         fake_missing_bindings: false,
         bounds_check_policies: BoundsCheckPolicies {
@@ -67,7 +69,14 @@ pub fn write(lowered: &Lowered) -> Result<Vec<u32>, Diagnostic> {
             None => naga::back::spv::Writer::new(&options),
         }
         .map_err(|e| e.to_string())?;
-        writer.write(&lowered.gpu, &lowered.gpu_info, None, &options.debug_info, &mut words).map_err(|e| e.to_string())?;
+        // naga 30's SPIR-V writer has no specialization constants: each
+        // override is its default here (docs/targets.md, "Specialization
+        // constants"; the manifest says so).
+        let (module, info) = match lowered.gpu.overrides.is_empty() {
+            true => (std::borrow::Cow::Borrowed(&lowered.gpu), std::borrow::Cow::Borrowed(&lowered.gpu_info)),
+            false => naga::back::pipeline_constants::process_overrides(&lowered.gpu, &lowered.gpu_info, None, &Default::default()).map_err(|e| e.to_string())?,
+        };
+        writer.write(&module, &info, None, &options.debug_info, &mut words).map_err(|e| e.to_string())?;
         WRITER.set(Some(writer));
         Ok(words)
     })

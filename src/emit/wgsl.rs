@@ -20,6 +20,14 @@ pub fn write(lowered: &Lowered) -> Result<String, Diagnostic> {
     // `naga::back::wgsl::write_string` does to an empty string): no copy of
     // the whole text to put them in front.
     let mut out = diagnostic_directives(&lowered.gpu);
+    // naga's writer writes no `enable subgroups;`, which WGSL requires
+    // (naga 30's own front end does not know it: wgpu hosts drop that
+    // line, docs/targets.md). Subgroup operations act on the active lanes
+    // wherever they are, as in SPIR-V and GLSL, so WGSL's subgroup
+    // uniformity rule is off.
+    if uses_subgroups(&lowered.gpu) {
+        out.insert_str(0, SUBGROUP_DIRECTIVES);
+    }
     if !out.is_empty() {
         out.push('\n');
     }
@@ -92,6 +100,30 @@ fn exact_flt_max(out: &mut String) {
 /// `diagnostic(SEVERITY, RULE);` for each module-level filter, outermost
 /// first; where a rule appears more than once, the innermost (the one naga
 /// applies) wins.
+/// What a WGSL module with subgroups starts with.
+pub const SUBGROUP_DIRECTIVES: &str = "enable subgroups;\ndiagnostic(off, subgroup_uniformity);\n";
+
+/// The WGSL text as naga 30 (wgpu 30) reads it: without `enable
+/// subgroups;`, an extension its front end does not know yet (it has
+/// subgroups without it).
+pub fn for_naga(wgsl: &str) -> std::borrow::Cow<'_, str> {
+    match wgsl.strip_prefix("enable subgroups;\n") {
+        Some(rest) => rest.into(),
+        None => wgsl.into(),
+    }
+}
+
+/// Whether a module has a subgroup operation or reads a subgroup input
+/// (WGSL's `enable subgroups`, wgpu's `Features::SUBGROUP`).
+pub fn uses_subgroups(module: &naga::Module) -> bool {
+    use naga::BuiltIn as B;
+    let op = |f: &naga::Function| f.expressions.iter().any(|(_, e)| matches!(e, naga::Expression::SubgroupOperationResult { .. } | naga::Expression::SubgroupBallotResult));
+    let input = |f: &naga::Function| {
+        f.arguments.iter().any(|a| matches!(a.binding, Some(naga::Binding::BuiltIn(B::SubgroupSize | B::SubgroupInvocationId | B::NumSubgroups | B::SubgroupId))))
+    };
+    module.functions.iter().any(|(_, f)| op(f)) || module.entry_points.iter().any(|ep| op(&ep.function) || input(&ep.function))
+}
+
 pub fn diagnostic_directives(module: &naga::Module) -> String {
     let mut chain = Vec::new();
     let mut cur = module.diagnostic_filter_leaf;

@@ -1,12 +1,12 @@
 //! The compute builtins: barriers, atomics on `@ssbo` members and
 //! `@groupshared` variables, storage image loads, stores and sizes, and
-//! the length of a run-time-sized array.
+//! the length of a run-time-sized array; subgroup operations.
 
 use naga::{Block, Expression as E, Handle, Statement};
 
 use super::function::FnBuilder;
 use super::module::GlobalSlot;
-use crate::sema::builtins::{AtomicOp, Builtin};
+use crate::sema::builtins::{AtomicOp, Builtin, Gather, SubgroupFn};
 use crate::sema::types::ImageDim;
 use crate::sema::{Expr, ExprKind, Scalar, Ty};
 use crate::source::Span;
@@ -94,8 +94,57 @@ impl FnBuilder<'_, '_> {
                 let p = self.pointer(&args[0], block).expect("sema takes the length of a buffer's member only");
                 self.append(E::ArrayLength(p), s)
             }
+            Builtin::NonUniform => self.expr(&args[0], block),
+            Builtin::Subgroup(f) => self.subgroup(f, args, ret, s, block),
             _ => return None,
         })
+    }
+
+    /// A subgroup operation: a statement whose result the call is.
+    fn subgroup(&mut self, f: SubgroupFn, args: &[Expr], ret: &Ty, s: Span, block: &mut Block) -> Handle<E> {
+        use naga::{CollectiveOperation as C, SubgroupOperation as O};
+        match f {
+            SubgroupFn::Ballot => {
+                let predicate = Some(self.expr(&args[0], block));
+                let result = self.append_plain(E::SubgroupBallotResult, s);
+                self.push(block, Statement::SubgroupBallot { result, predicate }, s);
+                result
+            }
+            // naga has no elect: the lowest active lane is the one whose
+            // exclusive count of active lanes below it is 0.
+            SubgroupFn::Elect => {
+                let one = self.literal(naga::Literal::U32(1), s);
+                let ty = self.m.ty(&Ty::Scalar(Scalar::Uint));
+                let result = self.append_plain(E::SubgroupOperationResult { ty }, s);
+                self.push(block, Statement::SubgroupCollectiveOperation { op: O::Add, collective_op: C::ExclusiveScan, argument: one, result }, s);
+                let zero = self.literal(naga::Literal::U32(0), s);
+                self.append(E::Binary { op: naga::BinaryOperator::Equal, left: result, right: zero }, s)
+            }
+            SubgroupFn::Collective(collective_op, op) => {
+                let argument = self.expr(&args[0], block);
+                let ty = self.m.ty(ret);
+                let result = self.append_plain(E::SubgroupOperationResult { ty }, s);
+                self.push(block, Statement::SubgroupCollectiveOperation { op, collective_op, argument, result }, s);
+                result
+            }
+            SubgroupFn::Gather(g) => {
+                let argument = self.expr(&args[0], block);
+                let index = args.get(1).map(|a| self.expr(a, block));
+                let mode = match (g, index) {
+                    (Gather::BroadcastFirst, _) => naga::GatherMode::BroadcastFirst,
+                    (Gather::Broadcast, Some(i)) => naga::GatherMode::Broadcast(i),
+                    (Gather::Shuffle, Some(i)) => naga::GatherMode::Shuffle(i),
+                    (Gather::ShuffleXor, Some(i)) => naga::GatherMode::ShuffleXor(i),
+                    (Gather::ShuffleUp, Some(i)) => naga::GatherMode::ShuffleUp(i),
+                    (Gather::ShuffleDown, Some(i)) => naga::GatherMode::ShuffleDown(i),
+                    (_, None) => unreachable!("sema checks the lane argument"),
+                };
+                let ty = self.m.ty(ret);
+                let result = self.append_plain(E::SubgroupOperationResult { ty }, s);
+                self.push(block, Statement::SubgroupGather { mode, argument, result }, s);
+                result
+            }
+        }
     }
 
     /// The image global a storage image argument names, and its shape.

@@ -200,6 +200,12 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
                         BuiltinVar::LocalInvocationIndex => (naga::Binding::BuiltIn(naga::BuiltIn::LocalInvocationIndex), ty, false),
                         BuiltinVar::WorkGroupId => (naga::Binding::BuiltIn(naga::BuiltIn::WorkGroupId), ty, false),
                         BuiltinVar::NumWorkGroups => (naga::Binding::BuiltIn(naga::BuiltIn::NumWorkGroups), ty, false),
+                        BuiltinVar::DrawId => (naga::Binding::BuiltIn(naga::BuiltIn::DrawIndex), u32_ty, true),
+                        BuiltinVar::PrimitiveId => (naga::Binding::BuiltIn(naga::BuiltIn::PrimitiveIndex), u32_ty, true),
+                        BuiltinVar::SubgroupSize => (naga::Binding::BuiltIn(naga::BuiltIn::SubgroupSize), ty, false),
+                        BuiltinVar::SubgroupInvocationId => (naga::Binding::BuiltIn(naga::BuiltIn::SubgroupInvocationId), ty, false),
+                        BuiltinVar::NumSubgroups => (naga::Binding::BuiltIn(naga::BuiltIn::NumSubgroups), ty, false),
+                        BuiltinVar::SubgroupId => (naga::Binding::BuiltIn(naga::BuiltIn::SubgroupId), ty, false),
                         _ => continue,
                     }
                 }

@@ -61,7 +61,7 @@ impl FnBuilder<'_, '_> {
             Some(_) => None,
             None => match self.m.globals[g] {
                 GlobalSlot::Var(h) => Some(self.append_plain(E::GlobalVariable(h), s)),
-                GlobalSlot::Sampler { .. } | GlobalSlot::Image(_) | GlobalSlot::Packed { .. } | GlobalSlot::Absent => None,
+                GlobalSlot::Sampler { .. } | GlobalSlot::Image(_) | GlobalSlot::Packed { .. } | GlobalSlot::Override(_) | GlobalSlot::Const(_) | GlobalSlot::Absent => None,
             },
         }
     }
@@ -72,6 +72,14 @@ impl FnBuilder<'_, '_> {
         if let ExprKind::Global(g) = e.kind {
             if let Some(LocalSlot::Value(h)) = self.global_slot(g) {
                 return h;
+            }
+        }
+        // A specialization constant.
+        if let ExprKind::Global(g) = e.kind {
+            match self.m.globals[g] {
+                GlobalSlot::Override(h) => return self.append_plain(E::Override(h), s),
+                GlobalSlot::Const(h) => return self.append_plain(E::Constant(h), s),
+                _ => {}
             }
         }
         // A loose uniform, or a part of one, in a uniform buffer.

@@ -77,6 +77,8 @@ enum PlainKey {
     /// A literal: its kind and its bits (`-0.0` and `0.0` differ).
     Literal(u8, u64),
     Constant(Handle<naga::Constant>),
+    /// A specialization constant of the GPU module.
+    Override(Handle<naga::Override>),
     Global(Handle<naga::GlobalVariable>),
     Local(Handle<naga::LocalVariable>),
     Zero(Handle<naga::Type>),
@@ -101,6 +103,7 @@ impl PlainKey {
                 L::I16(v) => PlainKey::Literal(11, v as u16 as u64),
             },
             E::Constant(h) => PlainKey::Constant(h),
+            E::Override(h) => PlainKey::Override(h),
             E::GlobalVariable(h) => PlainKey::Global(h),
             E::LocalVariable(h) => PlainKey::Local(h),
             E::ZeroValue(h) => PlainKey::Zero(h),

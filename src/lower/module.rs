@@ -22,6 +22,10 @@ pub(super) enum GlobalSlot {
     /// A loose uniform: member `member` of uniform buffer `buffer`
     /// (`lower::uniforms`).
     Packed { buffer: Handle<naga::GlobalVariable>, member: u32 },
+    /// A specialization constant: an override (GPU module) or a constant
+    /// (GL module).
+    Override(Handle<naga::Override>),
+    Const(Handle<naga::Constant>),
     /// Not declared: the module is built for one entry point, which does not
     /// use this global, or it is an input or output that every entry point
     /// using it holds itself (see `ModuleBuilder::declare_globals`).

@@ -17,7 +17,18 @@ fn validator(flavor: Flavor) -> Validator {
         Flavor::Gl => (ValidationFlags::all() - ValidationFlags::BINDINGS, naga::back::glsl::supported_capabilities()),
         // `packHalf2x16` needs SHADER_FLOAT16_IN_FLOAT32 (WebGPU has it
         // everywhere), `half` needs SHADER_FLOAT16 (WebGPU's `shader-f16`).
-        Flavor::Gpu(_) => (ValidationFlags::all(), Capabilities::default() | Capabilities::SHADER_FLOAT16_IN_FLOAT32 | Capabilities::SHADER_FLOAT16),
+        // Subgroups, `gl_DrawID` and `gl_PrimitiveID`: sema refuses them
+        // for the targets that lack them.
+        Flavor::Gpu(_) => (
+            ValidationFlags::all(),
+            Capabilities::default()
+                | Capabilities::SHADER_FLOAT16_IN_FLOAT32
+                | Capabilities::SHADER_FLOAT16
+                | Capabilities::SUBGROUP
+                | Capabilities::SUBGROUP_BARRIER
+                | Capabilities::PRIMITIVE_INDEX
+                | Capabilities::DRAW_INDEX,
+        ),
     };
     Validator::new(flags, caps)
 }

@@ -236,6 +236,8 @@ pub fn reflection() -> Reflection {
         uniforms,
         structs: vec![],
         required_limits: None,
+        requires: None,
+        specialization_constants: None,
         samplers,
         storage_buffers: None,
         storage_images: None,

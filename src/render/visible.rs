@@ -94,6 +94,7 @@ pub fn compute_plan(params: &FrameParams, depths: &[f32]) -> ComputePlan {
         buffers: vec![BufferInput { name: "view".into(), bytes: view }, BufferInput { name: "bounds".into(), bytes: start }],
         images: vec![ImageInput { name: "depth".into(), width: w, height: h, layers: 1, texels: Some(texels) }],
         readback: vec!["bounds".into()],
+        constants: vec![],
     }
 }
 

@@ -110,6 +110,37 @@ pub enum Builtin {
     /// `length(buf.data)` of a run-time-sized array: its element count
     /// (`uint`; GLSL's `.length()` is an `int`, converted).
     ArrayLength,
+    /// A subgroup operation (dasSpirv's names; sema/check/subgroup.rs).
+    Subgroup(SubgroupFn),
+    /// `nonuniformEXT(i)`: marks an index as varying across a subgroup; the
+    /// index as it is (umbrac has no descriptor arrays to index with it).
+    NonUniform,
+}
+
+/// The subgroup operations, as naga's IR has them.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SubgroupFn {
+    /// `subgroupElect()`: true on one active lane.
+    Elect,
+    /// `subgroupBallot(p)`: a `uint4` of one bit per lane where `p` holds.
+    Ballot,
+    /// A reduction or scan: `subgroupAdd`, `subgroupAll`,
+    /// `subgroupInclusiveMul`, ...
+    Collective(naga::CollectiveOperation, naga::SubgroupOperation),
+    /// `subgroupBroadcastFirst(v)`, `subgroupBroadcast(v, lane)`,
+    /// `subgroupShuffle*(v, n)`.
+    Gather(Gather),
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Gather {
+    BroadcastFirst,
+    /// The lane is a constant (SPIR-V before 1.5 and WGSL require one).
+    Broadcast,
+    Shuffle,
+    ShuffleXor,
+    ShuffleUp,
+    ShuffleDown,
 }
 
 /// The atomic read-modify-write functions (GLSL's names).

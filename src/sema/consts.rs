@@ -21,6 +21,10 @@ pub trait ConstEnv {
     fn enum_value(&self, _ty: &str, _member: &str) -> Option<(ConstValue, Ty)> {
         None
     }
+    /// Why a name is not a constant, where there is more to say.
+    fn why_not_const(&self, _name: &str) -> Option<String> {
+        None
+    }
 }
 
 /// Every name an expression mentions (so the constants it uses can be
@@ -83,7 +87,13 @@ fn eval(e: &Expr, env: &dyn ConstEnv, depth: usize) -> Result<(ConstValue, Ty), 
         ExprKind::Half(v) => Ok((ConstValue::Float(*v), super::types::HALF)),
         ExprKind::Reinterpret(..) => Err(not_const(e, "`reinterpret`")),
         ExprKind::Paren(x) => eval(x, env, d),
-        ExprKind::Name(id) => env.lookup(&id.name).ok_or_else(|| not_const(e, &format!("`{}`", id.name))),
+        ExprKind::Name(id) => env.lookup(&id.name).ok_or_else(|| {
+            let d = not_const(e, &format!("`{}`", id.name));
+            match env.why_not_const(&id.name) {
+                Some(why) => d.with_note(why),
+                None => d,
+            }
+        }),
         ExprKind::Unary(op, x) => {
             if let (UnaryOp::Neg, ExprKind::Int(2147483648, IntSuffix::None)) = (op, &x.kind) {
                 return Ok((ConstValue::Int(i32::MIN as i64), INT));

@@ -91,6 +91,17 @@ pub enum BuiltinVar {
     /// `gl_WorkGroupSize`: the entry point's `local_size_*`, a constant
     /// there (no target reads it from the device).
     WorkGroupSize,
+    /// dasSpirv's `gl_DrawID` (vertex, `int`): the draw's index in a
+    /// multi-draw; not every target has it (sema/check/targets.rs).
+    DrawId,
+    /// `gl_PrimitiveID` (fragment, `int`).
+    PrimitiveId,
+    /// The subgroup inputs (`uint`): size and lane in compute and fragment
+    /// entry points, the subgroup count and index in compute ones.
+    SubgroupSize,
+    SubgroupInvocationId,
+    NumSubgroups,
+    SubgroupId,
 }
 
 impl BuiltinVar {
@@ -110,6 +121,12 @@ impl BuiltinVar {
             BuiltinVar::WorkGroupId => "gl_WorkGroupID",
             BuiltinVar::NumWorkGroups => "gl_NumWorkGroups",
             BuiltinVar::WorkGroupSize => "gl_WorkGroupSize",
+            BuiltinVar::DrawId => "gl_DrawID",
+            BuiltinVar::PrimitiveId => "gl_PrimitiveID",
+            BuiltinVar::SubgroupSize => "gl_SubgroupSize",
+            BuiltinVar::SubgroupInvocationId => "gl_SubgroupInvocationID",
+            BuiltinVar::NumSubgroups => "gl_NumSubgroups",
+            BuiltinVar::SubgroupId => "gl_SubgroupID",
         }
     }
 
@@ -129,11 +146,23 @@ impl BuiltinVar {
             "gl_WorkGroupID" => BuiltinVar::WorkGroupId,
             "gl_NumWorkGroups" => BuiltinVar::NumWorkGroups,
             "gl_WorkGroupSize" => BuiltinVar::WorkGroupSize,
+            "gl_DrawID" => BuiltinVar::DrawId,
+            "gl_PrimitiveID" => BuiltinVar::PrimitiveId,
+            "gl_SubgroupSize" => BuiltinVar::SubgroupSize,
+            "gl_SubgroupInvocationID" => BuiltinVar::SubgroupInvocationId,
+            "gl_NumSubgroups" => BuiltinVar::NumSubgroups,
+            "gl_SubgroupID" => BuiltinVar::SubgroupId,
             _ => return None,
         })
     }
 
-    pub const NAMES: [&'static str; 16] = [
+    pub const NAMES: [&'static str; 22] = [
+        "gl_DrawID",
+        "gl_PrimitiveID",
+        "gl_SubgroupSize",
+        "gl_SubgroupInvocationID",
+        "gl_NumSubgroups",
+        "gl_SubgroupID",
         "gl_GlobalInvocationID",
         "gl_LocalInvocationID",
         "gl_LocalInvocationIndex",
@@ -159,8 +188,8 @@ impl BuiltinVar {
             BuiltinVar::PointSize | BuiltinVar::FragDepth => FLOAT,
             BuiltinVar::FrontFacing => BOOL,
             BuiltinVar::PointCoord => Ty::Vector(Scalar::Float, 2),
-            BuiltinVar::VertexId | BuiltinVar::InstanceId => INT,
-            BuiltinVar::LocalInvocationIndex => UINT,
+            BuiltinVar::VertexId | BuiltinVar::InstanceId | BuiltinVar::DrawId | BuiltinVar::PrimitiveId => INT,
+            BuiltinVar::LocalInvocationIndex | BuiltinVar::SubgroupSize | BuiltinVar::SubgroupInvocationId | BuiltinVar::NumSubgroups | BuiltinVar::SubgroupId => UINT,
             _ => Ty::Vector(Scalar::Uint, 3),
         }
     }
@@ -170,13 +199,28 @@ impl BuiltinVar {
         matches!(self, BuiltinVar::Position | BuiltinVar::PointSize | BuiltinVar::FragDepth)
     }
 
-    /// The stage it belongs to.
+    /// The stage it belongs to (the first of its stages).
     pub fn stage(self) -> naga::ShaderStage {
         match self {
-            BuiltinVar::Position | BuiltinVar::PointSize | BuiltinVar::VertexId | BuiltinVar::InstanceId => naga::ShaderStage::Vertex,
-            BuiltinVar::FragDepth | BuiltinVar::FragCoord | BuiltinVar::FrontFacing | BuiltinVar::PointCoord => naga::ShaderStage::Fragment,
+            BuiltinVar::Position | BuiltinVar::PointSize | BuiltinVar::VertexId | BuiltinVar::InstanceId | BuiltinVar::DrawId => naga::ShaderStage::Vertex,
+            BuiltinVar::FragDepth | BuiltinVar::FragCoord | BuiltinVar::FrontFacing | BuiltinVar::PointCoord | BuiltinVar::PrimitiveId => naga::ShaderStage::Fragment,
             _ => naga::ShaderStage::Compute,
         }
+    }
+
+    /// Whether an entry point of `stage` may read or write it: the
+    /// subgroup size and lane exist in fragment entry points too (WGSL
+    /// has no subgroups in vertex ones).
+    pub fn available_in(self, stage: naga::ShaderStage) -> bool {
+        match self {
+            BuiltinVar::SubgroupSize | BuiltinVar::SubgroupInvocationId => matches!(stage, naga::ShaderStage::Compute | naga::ShaderStage::Fragment),
+            _ => self.stage() == stage,
+        }
+    }
+
+    /// A subgroup input (targets without subgroups refuse it).
+    pub fn is_subgroup(self) -> bool {
+        matches!(self, BuiltinVar::SubgroupSize | BuiltinVar::SubgroupInvocationId | BuiltinVar::NumSubgroups | BuiltinVar::SubgroupId)
     }
 }
 
@@ -215,6 +259,11 @@ pub enum GlobalKind {
     /// `@groupshared`: workgroup memory, shared by the invocations of one
     /// workgroup of a compute entry point (zero at the start of each).
     Workgroup,
+    /// `@constant_id = N`: a specialization constant (a `bool`, `int`,
+    /// `uint` or `float` the host may set when it creates the pipeline),
+    /// with its default. WGSL `override`; the default on SPIR-V and GLSL
+    /// (docs/targets.md, "Specialization constants").
+    SpecConstant { id: u32, default: ConstValue },
     /// A module variable (`var angle = 0.0`, no qualifier) a shader reaches:
     /// private to each invocation, starting from `init` (zero when `None`).
     Private { init: Option<ConstValue> },
@@ -289,6 +338,8 @@ pub struct Function {
     pub uses: std::collections::BTreeMap<GlobalId, Span>,
     /// A `discard()` or derivative reached from this function (fragment only).
     pub fragment_only: Option<(Span, &'static str)>,
+    /// A subgroup operation reached from this function (not in vertex).
+    pub subgroup_op: Option<Span>,
     /// Implicit-LOD sampling (`texture`, `textureCompare`, `textureProj`)
     /// reached from this function: lowered with level 0 when a vertex entry
     /// point reaches it.

@@ -117,6 +117,8 @@ pub enum QualifierKind {
     /// `@format = NAME` or `@format = "NAME"`: a storage image's texel
     /// format (`rgba8`, `r32f`); bare `@format` is `rgba8`, as in dasGlsl.
     Format(Ident),
+    /// `@constant_id = N`: a specialization constant's id (dasSpirv).
+    ConstantId(i64),
     /// Any other `@name [= value]`; semantic analysis reports it.
     Other(String),
 }

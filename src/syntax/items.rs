@@ -282,7 +282,7 @@ pub fn split(toks: &[Token], map: &SourceMap) -> Vec<RawItem> {
                     } else if k + 1 < end && toks[k].is(P::At) {
                         let q = &toks[k + 1];
                         if q.kind == TokKind::Kw(Kw::In)
-                            || (q.kind == TokKind::Ident && matches!(texts.get(q.span), "uniform" | "out" | "inout" | "ssbo" | "push_constant" | "groupshared"))
+                            || (q.kind == TokKind::Ident && matches!(texts.get(q.span), "uniform" | "out" | "inout" | "ssbo" | "push_constant" | "groupshared" | "constant_id"))
                         {
                             item.shader_global = kind == ItemKind::Var;
                         }

@@ -384,11 +384,16 @@ fn outputs_are_byte_identical_across_jobs_and_working_directories() {
     let b = t.path().join("b");
     let elsewhere = t.path().join("elsewhere");
     std::fs::create_dir_all(&elsewhere).unwrap();
-    // shaders/wgsl_spirv/ holds programs only those two targets accept:
-    // the rest is compiled from a copy without it, that directory apart.
+    // shaders/wgsl_spirv/ holds programs only those two targets accept,
+    // shaders/spirv/ ones only SPIR-V accepts: the rest is compiled from a
+    // copy without them, those directories apart.
     let copy = t.path().join("src");
-    copy_tree(&root.join("shaders"), &copy.join("shaders"), &|p| p.file_name().is_some_and(|n| n == "wgsl_spirv"));
-    let sets: [(std::path::PathBuf, &str, &[&str]); 2] = [(copy.clone(), "shaders", &[]), (root.clone(), "shaders/wgsl_spirv", &["--target", "wgsl", "--target", "spirv"])];
+    copy_tree(&root.join("shaders"), &copy.join("shaders"), &|p| p.file_name().is_some_and(|n| n == "wgsl_spirv" || n == "spirv"));
+    let sets: [(std::path::PathBuf, &str, &[&str]); 3] = [
+        (copy.clone(), "shaders", &[]),
+        (root.clone(), "shaders/wgsl_spirv", &["--target", "wgsl", "--target", "spirv"]),
+        (root.clone(), "shaders/spirv", &["--target", "spirv"]),
+    ];
     for (base, input, targets) in &sets {
         let abs = base.join(input);
         for (inp, out, jobs, cwd) in [(input.to_string(), a.to_string_lossy().into_owned(), "1", base.clone()), (abs.to_string_lossy().into_owned(), "../b".to_string(), "2", elsewhere.clone())] {

@@ -135,6 +135,7 @@ fn compute(add: &mut impl FnMut(&'static str, String)) {
     add("storage-images", "var @writeonly @format = rgba8 dst : image2D\nvar @readonly @format = rgba16f src : image3D\nvar @format = r32ui counts : uimage2D\nvar @readonly @format = r32f layers : image2DArray\n[compute_program(local_size_x = 8, local_size_y = 8)]\ndef cs {\n    let p = int2(gl_GlobalInvocationID.xy)\n    let c = imageLoad(counts, p)\n    imageStore(counts, p, c + uint4(1u))\n    let l = imageLoad(layers, int3(p, 1))\n    imageStore(dst, p % imageSize(dst), imageLoad(src, int3(p, 0)) + l)\n}\n".to_string());
     add("storage-units", "struct B {\n    data : uint[]\n}\nvar @uniform@format@stage@writeonly c_dst : image2D\nvar @readonly @format = \"r32f\" @stage = 2 c_src : image2D\nvar @ssbo @stage = 3 buf : B\n[compute_program(local_size_x = 8, local_size_y = 8)]\ndef cs {\n    let p = int2(gl_GlobalInvocationID.xy)\n    buf.data[0] = uint(p.x)\n    imageStore(c_dst, p, imageLoad(c_src, p))\n}\n".to_string());
     add("read-write-image-any-format", "var @uniform@format c_img : image2D\n[compute_program(local_size_x = 8, local_size_y = 8)]\ndef cs {\n    let p = int2(gl_GlobalInvocationID.xy)\n    imageStore(c_img, p, imageLoad(c_img, p) * 0.5)\n}\n".to_string());
+    dasspirv_builtins(add);
     add("barrier-uniformity", format!("{buf}var @ssbo b : Buf\n[compute_program(local_size_x = 64)]\ndef cs {{\n    if (b.data[gl_GlobalInvocationID.x] > 0.0) {{\n        barrier()\n    }}\n}}\n"));
 }
 
@@ -216,9 +217,32 @@ fn snippets_language_l() -> Vec<(&'static str, String)> {
     ]
 }
 
+/// dasSpirv's builtins and specialization constants (issue 36): in the
+/// table with the `glsl430` and `gles310` columns.
+fn dasspirv_builtins(add: &mut impl FnMut(&'static str, String)) {
+    let buf = "struct Buf {\n    data : float[]\n}\nvar @ssbo b : Buf\n";
+    add("subgroups", format!("{buf}[compute_program(local_size_x = 64)]\ndef cs {{\n    let i = gl_GlobalInvocationID.x\n    let v = b.data[i]\n    var r = subgroupAdd(v) + subgroupMul(v) + subgroupMin(v) + subgroupMax(v) + subgroupInclusiveAdd(v) + subgroupExclusiveMul(v)\n    r += subgroupBroadcastFirst(v) + subgroupBroadcast(v, 1u) + subgroupShuffle(v, gl_SubgroupInvocationID ^ 1u) + subgroupShuffleXor(v, 2u) + subgroupShuffleUp(v, 1u) + subgroupShuffleDown(v, 1u)\n    let bits = subgroupAnd(uint(v)) | subgroupOr(1u) ^ uint(subgroupXor(int2(2)).x)\n    let ballot = subgroupBallot(v > 0.0)\n    if (subgroupElect() && subgroupAll(v >= 0.0) || subgroupAny(v < 0.0)) {{\n        r += float(bits + ballot.x + gl_SubgroupSize + gl_NumSubgroups + gl_SubgroupID)\n    }}\n    b.data[i] = r\n}}\n"));
+    add("subgroups-fragment", frag("", "    f_color = float4(subgroupAdd(gl_FragCoord.x), float(gl_SubgroupSize), float(gl_SubgroupInvocationID), 1.0)"));
+    add("subgroups-vertex", vert("", "    let k = subgroupAdd(1.0)"));
+    add("subgroup-clustered", format!("{buf}[compute_program(local_size_x = 64)]\ndef cs {{\n    b.data[0] = subgroupClusteredAdd(b.data[0], 4u)\n}}\n"));
+    add("draw-id", vert("var @inout v_k : float", "    v_k = float(gl_DrawID)"));
+    add("primitive-id", frag("", "    f_color = float4(float(gl_PrimitiveID), 0.0, 0.0, 1.0)"));
+    add("nonuniform-ext", frag("var @uniform u_k : float4[4]\nvar @uniform u_i : int", "    f_color = u_k[nonuniformEXT(u_i) & 3]"));
+    add("float-atomics", format!("{buf}[compute_program(local_size_x = 64)]\ndef cs {{\n    atomicAdd(b.data[0], 1.0)\n}}\n"));
+    add("specialization-constants", frag("var @constant_id = 0 STEPS : uint = 4\nvar @constant_id = 1 GAIN : float = 0.5\nvar @constant_id = 2 INVERT : bool = false\nvar @constant_id = 7 BIAS : int = -1", "    var s = 0.0\n    for (i in range(int(STEPS))) {\n        s += GAIN\n    }\n    s += float(BIAS)\n    f_color = float4(INVERT ? 1.0 - s : s)"));
+    add("specialization-constant-sized-array", frag("var @constant_id = 0 N : int = 4", "    var a : float[N]\n    f_color = float4(a[0])"));
+}
+
 /// Extra properties of some outputs: (snippet, target, file suffix, text
 /// that must or must not appear).
 const NEEDLES: &[(&str, Target, &str, &str, bool)] = &[
+    ("subgroups", Target::Wgsl, ".wgsl", "enable subgroups;\ndiagnostic(off, subgroup_uniformity);", true),
+    ("subgroups", Target::Glsl430, ".430.comp", "#extension GL_KHR_shader_subgroup_arithmetic : require", true),
+    ("subgroups", Target::Glsl430, ".430.comp", "subgroupExclusiveAdd(1u)", true),
+    ("primitive-id", Target::Wgsl, ".wgsl", "enable primitive_index;", true),
+    ("specialization-constants", Target::Wgsl, ".wgsl", "@id(1) override GAIN: f32 = 0.5f;", true),
+    ("specialization-constants", Target::Glsl330, ".330.frag", "const float GAIN = 0.5;", true),
+    ("nonuniform-ext", Target::Glsl330, ".330.frag", "u_k[(_e3 & 3)]", true),
     ("ternary-vector-int-bool", Target::Glsl330, ".330.frag", "mix(", false),
     ("ternary-vector-int-bool", Target::Gles300, ".300es.frag", "mix(", false),
     ("ternary-vector-float", Target::Glsl330, ".330.frag", "mix(", true),

@@ -33,7 +33,7 @@ fn every_program_matches_its_golden_outputs() {
 
 /// The options a program under shaders/ asks for on its first line,
 /// `// umbrac: --target wgsl --target spirv` (a program with a construct
-/// only some targets have: shaders/wgsl_spirv/), or `// umbrac:
+/// only some targets have: shaders/wgsl_spirv/, shaders/spirv/), or `// umbrac:
 /// --gl-uniforms blocks`; default: all targets, plain GL uniforms.
 fn options_of(path: &Path) -> umbrac::Options {
     let text = std::fs::read_to_string(path).unwrap_or_default();

@@ -87,6 +87,7 @@ fn image_fill_matches_the_cpu() {
         buffers: vec![],
         images: vec![ImageInput { name: "out_image".into(), width: w, height: h, layers: 1, texels: None }],
         readback: vec!["out_image".into()],
+        constants: vec![],
     };
     let ran = run_everywhere("image_fill", &plan);
     let unorm = |v: f32| (v.clamp(0.0, 1.0) * 255.0).round() as i32;
@@ -131,6 +132,7 @@ fn prefix_sum_matches_the_cpu() {
         ],
         images: vec![],
         readback: vec!["output".into(), "totals".into()],
+        constants: vec![],
     };
     // Inclusive scans of each block, and each block's sum.
     let mut want = vec![0u32; n];
@@ -167,6 +169,7 @@ fn histogram_matches_the_cpu() {
         ],
         images: vec![],
         readback: vec!["histogram".into()],
+        constants: vec![],
     };
     let mut bins = vec![0u32; BINS];
     for v in &samples {
@@ -198,6 +201,7 @@ fn gl_dialect_matches_the_cpu() {
         buffers: vec![BufferInput { name: "taps".into(), bytes: taps }],
         images: vec![ImageInput { name: "c_destTex".into(), width: w, height: h, layers: 1, texels: None }],
         readback: vec!["taps".into(), "c_destTex".into()],
+        constants: vec![],
     };
     // The manifest has the units as written or assigned.
     let m = compiled("dialect_taps").reflection;
@@ -246,6 +250,7 @@ fn a_plan_that_does_not_fit_names_what_is_wrong() {
         buffers: vec![BufferInput { name: "samples".into(), bytes: vec![0; 6] }],
         images: vec![],
         readback: vec![],
+        constants: vec![],
     };
     let e = umbrac::render::bind::compute::fit(&set.label, set.manifest().unwrap(), &plan).unwrap_err().to_string();
     assert!(e.contains("storage buffer `samples` is given 6 bytes; its layout takes 4 bytes and a whole number (at least one) of 4-byte elements"), "{e}");
@@ -305,6 +310,7 @@ fn depth_bounds_match_the_cpu() {
         buffers: vec![BufferInput { name: "view".into(), bytes: view_bytes }, BufferInput { name: "bounds".into(), bytes: start }],
         images: vec![ImageInput { name: "depth".into(), width: w, height: h, layers: 1, texels: Some(depth.iter().flat_map(|d| d.to_le_bytes()).collect()) }],
         readback: vec!["bounds".into()],
+        constants: vec![],
     };
     let ran = run_everywhere("depth_bounds", &plan);
     for (consumer, r) in &ran {
@@ -316,5 +322,109 @@ fn depth_bounds_match_the_cpu() {
             assert!((glo - lo[c]).abs() <= tol && (ghi - hi[c]).abs() <= tol, "{}: axis {c}: [{glo}, {ghi}], the CPU computes [{}, {}]", consumer.name(), lo[c], hi[c]);
         }
         eprintln!("depth bounds on {}: lo {:?} hi {:?} over {count} pixels", consumer.name(), (0..3).map(|c| unkey(b[c] as i32)).collect::<Vec<_>>(), (0..3).map(|c| unkey(b[3 + c] as i32)).collect::<Vec<_>>());
+    }
+}
+
+/// Whether `consumer`'s device has subgroup operations (wgpu's
+/// `Features::SUBGROUP`, GL's GL_KHR_shader_subgroup; GL ES 3.1 never).
+fn has_subgroups(consumer: Consumer) -> bool {
+    match consumer {
+        Consumer::VulkanWgsl | Consumer::VulkanSpirv => support::gpu::vulkan().is_some_and(|v| v.supports_subgroups()),
+        Consumer::Gl430 => support::gpu::gl(consumer).is_some_and(|g| g.supports_subgroups().unwrap_or(false)),
+        _ => false,
+    }
+}
+
+/// `shaders/compute/spec_reduce.das`: a sum and a maximum of values scaled
+/// by a specialization constant, through atomics; with `-D SUBGROUPS`
+/// (compiled for glsl430, wgsl and spirv) each subgroup reduces first and
+/// one lane per subgroup adds. Each consumer with subgroups runs that
+/// form, the others the plain one, and both must match the CPU exactly;
+/// the count of atomic adds shows which form ran (fewer with subgroups).
+#[test]
+fn specialization_constant_atomics_and_subgroups_match_the_cpu() {
+    let n = 3000usize;
+    let data = values(n, 7, 1 << 16);
+    let plan = ComputePlan {
+        name: "spec_reduce".into(),
+        entry: "reduce_cs".into(),
+        workgroups: [n.div_ceil(64) as u32, 1, 1],
+        buffers: vec![
+            BufferInput { name: "input".into(), bytes: bytes(&[&[n as u32][..], &data].concat()) },
+            BufferInput { name: "totals".into(), bytes: bytes(&[0, 0, 0]) },
+        ],
+        images: vec![],
+        readback: vec!["totals".into()],
+        constants: vec![],
+    };
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("shaders/compute/spec_reduce.das");
+    let plain = umbrac::compile_file(&path, &umbrac::Options::default());
+    let with_subgroups = umbrac::Options {
+        defines: vec![("SUBGROUPS".into(), None)],
+        targets: vec![Target::Glsl430, Target::Wgsl, Target::Spirv],
+        ..Default::default()
+    };
+    let subgroups = umbrac::compile_file(&path, &with_subgroups);
+    for c in [&plain, &subgroups] {
+        assert!(!c.has_errors(), "spec_reduce does not compile:\n{}", c.render_diagnostics());
+    }
+    // The CPU's answer, from the default the manifest reports.
+    let spec = plain.result.as_ref().unwrap().reflection.specialization_constants.clone().expect("spec_reduce has a specialization constant");
+    assert_eq!((spec[0].name.as_str(), spec[0].id, spec[0].ty.as_str()), ("SCALE", 0, "uint"));
+    let scale = spec[0].default_bits;
+    let sum = data.iter().fold(0u32, |s, v| s.wrapping_add(v.wrapping_mul(scale)));
+    let largest = data.iter().max().unwrap() * scale;
+    let invocations = (n.div_ceil(64) * 64) as u32;
+    for consumer in Consumer::COMPUTE {
+        let ok = match consumer {
+            Consumer::VulkanWgsl | Consumer::VulkanSpirv => support::gpu::vulkan().is_some(),
+            _ => support::gpu::gl(consumer).is_some(),
+        };
+        if !ok {
+            continue;
+        }
+        if consumer == Consumer::VulkanSpirv && !support::gpu::vulkan().is_some_and(|v| v.supports_passthrough()) {
+            support::skip("spec_reduce: the Vulkan device takes no SPIR-V unchanged".to_string());
+            continue;
+        }
+        let sub = has_subgroups(consumer);
+        if !sub {
+            eprintln!("spec_reduce on {}: the device has no subgroup operations; running the form without them", consumer.name());
+        }
+        let c = if sub { &subgroups } else { &plain };
+        let target = consumer.target().expect("a compute consumer has a target");
+        let set = ShaderSet::from_compiled("spec_reduce", c.result.as_ref().unwrap(), target).unwrap_or_else(|e| panic!("{e}"));
+        let r = match consumers::run_compute(consumer, &set, &plan) {
+            Ok((r, _)) => r,
+            Err(e @ ExecError::Unavailable { .. }) => {
+                support::skip(format!("spec_reduce on {}: {e}", consumer.name()));
+                continue;
+            }
+            Err(e) => panic!("spec_reduce on {} ({}, subgroups: {sub}): {e}", consumer.name(), target.name()),
+        };
+        let t = words(&r.resources["totals"]);
+        assert_eq!(t[0], sum, "{}: the sum differs from the CPU's", consumer.name());
+        assert_eq!(t[1], largest, "{}: the largest value differs from the CPU's", consumer.name());
+        match sub {
+            // One add per subgroup: at most one per invocation, at least
+            // one per workgroup.
+            true => assert!(t[2] < invocations && t[2] >= invocations / 64, "{}: {} subgroup adds for {invocations} invocations", consumer.name(), t[2]),
+            false => assert_eq!(t[2], invocations, "{}: one add per invocation", consumer.name()),
+        }
+        eprintln!("spec_reduce on {}: matches the CPU (subgroups: {sub}, {} atomic adds)", consumer.name(), t[2]);
+        // Another value of SCALE: WGSL's override takes it when the
+        // pipeline is made; the consumers of the other targets, which hold
+        // the default, refuse to pretend.
+        let other = ComputePlan { constants: vec![(0, 5.0)], ..plan.clone() };
+        match (consumer, consumers::run_compute(consumer, &set, &other)) {
+            (Consumer::VulkanWgsl, Ok((r, _))) => {
+                let t = words(&r.resources["totals"]);
+                let sum5 = data.iter().fold(0u32, |s, v| s.wrapping_add(v.wrapping_mul(5)));
+                assert_eq!((t[0], t[1]), (sum5, data.iter().max().unwrap() * 5), "{}: SCALE = 5 set as a pipeline constant", consumer.name());
+            }
+            (Consumer::VulkanWgsl, Err(e)) => panic!("spec_reduce on vulkan-wgsl with SCALE = 5: {e}"),
+            (_, Err(ExecError::Unsupported(_))) => {}
+            (_, other) => panic!("spec_reduce on {}: a plan setting a specialization constant was not refused: {:?}", consumer.name(), other.map(|_| ())),
+        }
     }
 }

@@ -258,9 +258,15 @@ pub fn glslang_link(vert: &Path, frag: &Path) -> Result<(), String> {
     run(Command::new("glslangValidator").arg("-l").arg(vert).arg(frag))
 }
 
-/// `spirv-val --target-env vulkan1.0 FILE`.
+/// `spirv-val --target-env vulkan1.0 FILE` (vulkan1.1 for a SPIR-V 1.3 module).
 pub fn spirv_val(path: &Path) -> Result<(), String> {
-    run(Command::new("spirv-val").args(["--target-env", "vulkan1.0"]).arg(path))
+    // The version word: 1.3 modules (subgroups) are Vulkan 1.1's.
+    let words = std::fs::read(path).unwrap_or_default();
+    let env = match words.get(4..8) {
+        Some(v) if u32::from_le_bytes([v[0], v[1], v[2], v[3]]) >= 0x0001_0300 => "vulkan1.1",
+        _ => "vulkan1.0",
+    };
+    run(Command::new("spirv-val").args(["--target-env", env]).arg(path))
 }
 
 /// Whether `tint` can run (it has no `--version`: `--help` exits 1 but

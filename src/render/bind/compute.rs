@@ -61,6 +61,11 @@ pub fn fit(program: &str, r: &Reflection, plan: &ComputePlan) -> Result<ComputeF
         problems.push(e);
     }
     let err = |problems: Vec<String>| InterfaceError { program: program.to_string(), scene: plan.name.clone(), problems };
+    for (id, _) in &plan.constants {
+        if !r.specialization_constants.iter().flatten().any(|c| c.id == *id) {
+            problems.push(format!("it has no specialization constant with `@constant_id = {id}`"));
+        }
+    }
     let Some(ep) = r.entry_points.iter().find(|e| e.name == plan.entry) else {
         problems.push(format!("it has no entry point `{}`", plan.entry));
         return Err(err(problems));

@@ -36,6 +36,10 @@ pub struct ComputePlan {
     pub images: Vec<ImageInput>,
     /// The buffers and images whose contents come back, by name.
     pub readback: Vec<String>,
+    /// Specialization constants set by `@constant_id` (the others keep
+    /// their defaults). Only WGSL has them (`override`): the other
+    /// consumers refuse a plan that sets any (docs/targets.md).
+    pub constants: Vec<(u32, f64)>,
 }
 
 impl ComputePlan {

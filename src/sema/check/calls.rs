@@ -199,6 +199,9 @@ impl<'a, 'd> Checker<'a, 'd> {
         if let Some(fo) = f.fragment_only {
             cx.fragment_only.get_or_insert((span, fo.1));
         }
+        if let Some(s) = f.subgroup_op {
+            cx.subgroup_op.get_or_insert(s);
+        }
         cx.implicit_lod |= f.implicit_lod;
         cx.callees.insert(fid);
         Ok(Expr { kind: ExprKind::Call(fid, xs), ty: f.ret.clone(), span })

@@ -123,6 +123,18 @@ impl<'a, 'd> Checker<'a, 'd> {
                     return err_expr(span);
                 }
                 let target = &xs[0];
+                if target.ty == FLOAT {
+                    // dasSpirv takes a float `atomicAdd` (SPV_EXT_shader_atomic_float_add)
+                    // and refuses the other float atomics.
+                    let d = match op {
+                        AtomicOp::Add => Diagnostic::error("a `float` `atomicAdd` is not supported by the glsl330, gles300, glsl430, gles310, wgsl and spirv targets", target.span)
+                            .with_note("WGSL and GLSL have integer atomics only, and naga's SPIR-V writer has no float atomic add (dasSpirv's OpAtomicFAddEXT, SPV_EXT_shader_atomic_float_add)"),
+                        _ => Diagnostic::error(format!("`{name}` on a `float` is not supported by any target"), target.span)
+                            .with_note("daslang refuses it too: only `atomicAdd` has a float form (and umbrac refuses that one)"),
+                    };
+                    self.diags.push(d.with_note("help: accumulate in a `uint` or `int` (e.g. fixed point: `atomicAdd(sum, uint(x * 1024.0))`)"));
+                    return err_expr(span);
+                }
                 let Some(at) = self.atomic_place(target) else {
                     let d = Diagnostic::error(format!("`{name}` needs an `int` or `uint` in a `@ssbo` buffer or a `@groupshared` variable"), target.span)
                         .with_label(format!("this is `{}`", self.show(&target.ty)))

@@ -299,6 +299,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             // `@readonly` / `@writeonly`, `@format = F` (storage buffers and images).
             let mut access: Option<(Access, Span)> = None;
             let mut format: Option<(ImageFormat, Span)> = None;
+            let mut constant_id: Option<(i64, Span)> = None;
             for q in &g.qualifiers {
                 let c = match &q.kind {
                     ast::QualifierKind::Uniform => Some("uniform"),
@@ -328,6 +329,10 @@ impl<'a, 'd> Checker<'a, 'd> {
                     ast::QualifierKind::Other(name) if name == "push_constant" => Some("uniform"),
                     ast::QualifierKind::Other(name) if name == "ssbo" => Some("ssbo"),
                     ast::QualifierKind::Other(name) if name == "groupshared" => Some("groupshared"),
+                    ast::QualifierKind::ConstantId(n) => {
+                        constant_id = Some((*n, q.span));
+                        Some("constant_id")
+                    }
                     ast::QualifierKind::Other(name) if name == "readonly" || name == "writeonly" => {
                         let a = if name == "readonly" { Access::Read } else { Access::Write };
                         if let Some((prev, prev_span)) = access.filter(|p| p.0 != a) {
@@ -373,12 +378,13 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
             // A uniform's initial value is the host's default; other
             // shader globals have none.
-            if let (Some(init), Some(("uniform", _))) = (&g.init, class) {
+            if let (Some(init), Some(("uniform" | "constant_id", _))) = (&g.init, class) {
                 if ty.is_sampler_like() {
                     let d = Diagnostic::error("samplers cannot have an initial value", init.span).with_note("the host binds a texture to each sampler");
                     self.diags.push(d);
                 }
             } else if let Some(init) = &g.init {
+                // (and `@constant_id` constants, whose value is their default)
                 let d = Diagnostic::error("only `@uniform` values can have an initial value", init.span)
                     .with_note("a uniform's initial value is the default the host sets; inputs and outputs have none");
                 self.diags.push(d);
@@ -445,6 +451,13 @@ impl<'a, 'd> Checker<'a, 'd> {
                     let unit = self.storage_unit(location.map(|l| l.1), stage, "`@ssbo` buffers");
                     self.storage_kind(&ty, access, unit, gty.span)
                 }
+                ("constant_id", _) => match self.spec_constant(g, &ty, constant_id, gty.span) {
+                    Some(kind) => kind,
+                    None => {
+                        self.declare_failed(g);
+                        continue;
+                    }
+                },
                 ("groupshared", _) => {
                     if let Some(span) = location.map(|l| l.1).or(stage.map(|s| s.1)) {
                         self.diags.push(Diagnostic::error("`@groupshared` variables take no `@location` or `@stage`", span));
@@ -692,6 +705,53 @@ impl<'a, 'd> Checker<'a, 'd> {
                 None
             }
         }
+    }
+
+    /// A specialization constant (`var @constant_id = N name : T = default`),
+    /// as dasSpirv takes them: a 32-bit scalar with a constant default,
+    /// ids unique and (WGSL's `@id`) below 65536.
+    fn spec_constant(&mut self, g: &'a ast::GlobalVar, ty: &Ty, id: Option<(i64, Span)>, ty_span: Span) -> Option<GlobalKind> {
+        let (id, id_span) = id?;
+        if !matches!(ty, Ty::Scalar(Scalar::Bool | Scalar::Int | Scalar::Uint | Scalar::Float)) {
+            if !ty.is_error() {
+                let d = Diagnostic::error(format!("a specialization constant must be a `bool`, `int`, `uint` or `float`, not `{}`", self.show(ty)), ty_span);
+                self.diags.push(d);
+            }
+            return None;
+        }
+        if !(0..65536).contains(&id) {
+            let d = Diagnostic::error(format!("`@constant_id = {id}` is out of range (0..=65535)"), id_span).with_note("WGSL's `@id` of an `override` is below 65536");
+            self.diags.push(d);
+            return None;
+        }
+        let id = id as u32;
+        let clash = self.out.globals.iter().find(|o| matches!(o.kind, GlobalKind::SpecConstant { id: other, .. } if other == id));
+        if let Some(other) = clash {
+            let d = Diagnostic::error(format!("`@constant_id = {id}` is already the id of `{}`", other.name), id_span).with_secondary(other.span, "declared here");
+            self.diags.push(d);
+            return None;
+        }
+        let Some(init) = &g.init else {
+            let d = Diagnostic::error(format!("specialization constant `{}` needs a default value", g.name.name), g.name.span)
+                .with_note(format!("help: `var @constant_id = {id} {} : {} = ...`", g.name.name, self.show(ty)));
+            self.diags.push(d);
+            return None;
+        };
+        let default = match self.fold(init, None, init.span)? {
+            Ok((v, vt)) if vt == *ty => v,
+            // An `int` literal default of a `uint` constant (`= 64`).
+            Ok((ConstValue::Int(v), Ty::Scalar(Scalar::Int))) if *ty == UINT && v >= 0 => ConstValue::Uint(v as u64),
+            Ok((_, vt)) => {
+                let d = Diagnostic::error(format!("specialization constant `{}` is `{}` but its default value is `{}`", g.name.name, self.show(ty), self.show(&vt)), init.span);
+                self.diags.push(d);
+                return None;
+            }
+            Err(d) => {
+                self.diags.push(d.with_note("the default value of a specialization constant must be a compile-time constant"));
+                return None;
+            }
+        };
+        Some(GlobalKind::SpecConstant { id, default })
     }
 
     /// Declares `g` with no type after an error: its uses report nothing more.
@@ -981,6 +1041,11 @@ impl ConstEnv for ConstEnvAdapter<'_, '_, '_> {
 
     fn enum_value(&self, ty: &str, member: &str) -> Option<(ConstValue, Ty)> {
         self.c.enum_const(ty, member)
+    }
+
+    fn why_not_const(&self, name: &str) -> Option<String> {
+        let spec = self.c.ast.items.iter().any(|i| matches!(i, ast::Item::Global(g) if g.name.name == name && g.qualifiers.iter().any(|q| matches!(q.kind, ast::QualifierKind::ConstantId(_)))));
+        spec.then(|| format!("`{name}` is a specialization constant (`@constant_id`), whose value the host sets when it creates the pipeline: WGSL takes an `override` in no array size here and in no `const`, and SPIR-V and GLSL hold only its default, so it is refused on every target (use it in the shader's code, or a `let` constant where a constant is needed)"))
     }
 }
 

@@ -306,6 +306,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                 self.out.globals.len() - 1
             });
             cx.uses.entry(g).or_insert(span);
+            self.builtin_var_used(b, span);
             return Expr { kind: ExprKind::Global(g), ty: b.ty(), span };
         }
         if self.funcs.contains_key(id.name.as_str()) || builtins::is_builtin(&id.name) {
@@ -473,6 +474,14 @@ impl<'a, 'd> Checker<'a, 'd> {
         }
         if let Some(b) = super::compute::compute_builtin(name) {
             return self.check_compute_call(cx, b, name, xs, span);
+        }
+        if let Some(b) = super::subgroup::subgroup_builtin(name) {
+            return self.check_subgroup_call(cx, b, name, xs, span);
+        }
+        if let Some((_, why)) = super::subgroup::UNSUPPORTED_SUBGROUP.iter().find(|(n, _)| *n == name) {
+            let d = Diagnostic::error(format!("`{name}` is not supported by umbrac on any target"), span).with_note(why.to_string());
+            self.diags.push(d);
+            return err_expr(span);
         }
         match builtins::resolve(name, xs.iter().map(|x| &x.ty)) {
             Ok(Some((b, ret))) => {

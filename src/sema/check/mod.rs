@@ -23,6 +23,7 @@ mod loops;
 mod math;
 mod programs;
 mod stmts;
+mod subgroup;
 mod targets;
 mod uniformity;
 
@@ -123,6 +124,8 @@ struct FnCtx<'a> {
     loop_depth: usize,
     uses: BTreeMap<GlobalId, Span>,
     fragment_only: Option<(Span, &'static str)>,
+    /// A subgroup operation reached (none in vertex entry points).
+    subgroup_op: Option<Span>,
     implicit_lod: bool,
     callees: std::collections::BTreeSet<FuncId>,
     depth: usize,
@@ -146,6 +149,7 @@ impl<'a> FnCtx<'a> {
             loop_depth: 0,
             uses: BTreeMap::new(),
             fragment_only: None,
+            subgroup_op: None,
             implicit_lod: false,
             callees: Default::default(),
             depth,
@@ -239,6 +243,9 @@ struct Checker<'a, 'd> {
     saw_barrier: bool,
     /// `half` was refused already (reported once, at its first use).
     half_refused: bool,
+    /// Constructs already refused for the targets lacking them (one error
+    /// each, at the first use): `targets::lacking_targets_used`.
+    refused_constructs: std::collections::BTreeSet<&'static str>,
     /// Compute constructs were refused already (once, at the first).
     compute_refused: bool,
     /// The `local_size_*` of the compute entry point being checked
@@ -304,6 +311,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             compute_refused: false,
             entry_workgroup_size: [0; 3],
             half_refused: false,
+            refused_constructs: Default::default(),
         }
     }
 

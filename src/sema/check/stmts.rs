@@ -41,12 +41,20 @@ impl<'a, 'd> Checker<'a, 'd> {
         for (&gid, &span) in &func.uses {
             let g = &self.out.globals[gid];
             if let GlobalKind::Builtin(b) = g.kind {
-                if b.stage() != stage {
+                if !b.available_in(stage) {
                     let d = Diagnostic::error(format!("`{}` is not available in {} entry point `{name}`", b.name(), stage_name(stage)), span)
-                        .with_note(format!("`{}` belongs to the {} stage", b.name(), stage_name(b.stage())));
+                        .with_note(match b.available_in(naga::ShaderStage::Fragment) && b.available_in(naga::ShaderStage::Compute) {
+                            true => format!("`{}` belongs to the compute and fragment stages", b.name()),
+                            false => format!("`{}` belongs to the {} stage", b.name(), stage_name(b.stage())),
+                        });
                     self.diags.push(d);
                 }
             }
+        }
+        if let (naga::ShaderStage::Vertex, Some(span)) = (stage, func.subgroup_op) {
+            let d = Diagnostic::error(format!("subgroup operations are not available in vertex entry point `{name}`"), span)
+                .with_note("WebGPU and Vulkan 1.1's guaranteed subgroup stages are compute and fragment");
+            self.diags.push(d);
         }
         if let (false, Some((span, what))) = (stage == naga::ShaderStage::Fragment, func.fragment_only) {
             let d = Diagnostic::error(format!("{what} is only available in fragment entry points, and `{name}` is a {} entry point", stage_name(stage)), span);
@@ -218,6 +226,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             span: decl.span,
             uses: cx.uses,
             fragment_only: cx.fragment_only,
+            subgroup_op: cx.subgroup_op,
             implicit_lod: cx.implicit_lod,
             callees: cx.callees,
             ref_writes: cx.ref_writes,
@@ -591,6 +600,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                     GlobalKind::Image { .. } => Some("a storage image is written with `imageStore(image, coord, value)`"),
                     GlobalKind::Io { kind: IoKind::In, .. } => Some("it is an `@in` input"),
                     GlobalKind::Builtin(b) if !b.is_output() => Some("it is a builtin input"),
+                    GlobalKind::SpecConstant { .. } => Some("it is a specialization constant, set by the host when it creates the pipeline"),
                     _ => None,
                 };
                 match why {

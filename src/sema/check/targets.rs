@@ -70,4 +70,78 @@ impl<'a, 'd> Checker<'a, 'd> {
             .with_note("help: add `@writeonly` or `@readonly` if the shader only writes or reads it, or compile for `--target glsl430 --target spirv` only");
         self.diags.push(d);
     }
+
+    /// A construct (`what`, e.g. "`gl_DrawID`") that the targets `lacks`
+    /// selects do not have, used at `span`: refused once, at its first
+    /// use, naming the requested targets that lack it (with no target
+    /// named, the default targets that do).
+    pub(super) fn lacking_targets_used(&mut self, key: &'static str, what: &str, span: Span, lacks: fn(Target) -> bool, why: &str, help: &str) {
+        if self.refused_constructs.contains(key) {
+            return;
+        }
+        let lacking: Vec<&str> = match self.targets_defaulted {
+            true => {
+                let mut d: Vec<&str> = Vec::new();
+                for t in Target::defaults(false).into_iter().chain(Target::defaults(true)).filter(|t| lacks(*t)) {
+                    if !d.contains(&t.name()) {
+                        d.push(t.name());
+                    }
+                }
+                d
+            }
+            false => self.targets.iter().filter(|t| lacks(**t)).map(|t| t.name()).collect(),
+        };
+        if lacking.is_empty() {
+            return;
+        }
+        self.refused_constructs.insert(key);
+        let (which, s) = match lacking.split_last() {
+            Some((last, [])) => (last.to_string(), ""),
+            Some((last, rest)) => (format!("{} and {last}", rest.join(", ")), "s"),
+            None => unreachable!("not empty"),
+        };
+        let d = Diagnostic::error(format!("{what} is not supported by the {which} target{s}"), span).with_note(why.to_string()).with_note(format!("help: {help}"));
+        self.diags.push(d);
+    }
+
+    /// A subgroup operation or input (`what`) at `span`: WGSL (`enable
+    /// subgroups`), SPIR-V (GroupNonUniform) and GLSL 430
+    /// (`GL_KHR_shader_subgroup_*`) have them; GLSL 330 and the GLSL ES
+    /// targets do not.
+    pub(super) fn subgroup_used(&mut self, what: &str, span: Span) {
+        self.lacking_targets_used(
+            "subgroups",
+            what,
+            span,
+            |t| matches!(t, Target::Glsl330 | Target::Gles300 | Target::Gles310),
+            "subgroup operations need Vulkan 1.1 / SPIR-V GroupNonUniform, WebGPU's `subgroups` feature or GLSL 4.30 with GL_KHR_shader_subgroup; OpenGL 3.3 and OpenGL ES have none",
+            "compile for `--target glsl430 --target wgsl --target spirv` only",
+        );
+    }
+
+    /// A builtin input only some targets have (`gl_DrawID`,
+    /// `gl_PrimitiveID`, the subgroup inputs) at `span`.
+    pub(super) fn builtin_var_used(&mut self, b: crate::sema::tree::BuiltinVar, span: Span) {
+        use crate::sema::tree::BuiltinVar as V;
+        match b {
+            V::DrawId => self.lacking_targets_used(
+                "gl_DrawID",
+                "`gl_DrawID`",
+                span,
+                |t| t != Target::Spirv,
+                "the draw index of a multi-draw is SPIR-V's DrawIndex (Vulkan 1.1's shaderDrawParameters); WebGPU has none, GLSL has it only from 4.60 (`gl_DrawIDARB` under GL_ARB_shader_draw_parameters before), OpenGL ES not at all",
+                "compile for `--target spirv` only, or pass the draw's index in a uniform",
+            ),
+            V::PrimitiveId => self.lacking_targets_used(
+                "gl_PrimitiveID",
+                "`gl_PrimitiveID`",
+                span,
+                |t| matches!(t, Target::Gles300 | Target::Gles310),
+                "OpenGL ES has `gl_PrimitiveID` in fragment shaders only from ES 3.2; GLSL 3.30 and 4.30, SPIR-V and WGSL (`enable primitive_index`) have it",
+                "compile for `--target glsl330 --target glsl430 --target wgsl --target spirv` only",
+            ),
+            b if b.is_subgroup() => self.subgroup_used(&format!("`{}`", b.name()), span),
+            _ => {}
+        }
+    }
 }

@@ -279,7 +279,7 @@ impl<'m> Parser<'_, 'm> {
                 return Err(());
             }
             if v.kind != TokKind::Int {
-                if matches!(name, "location" | "stage" | "set" | "binding") {
+                if matches!(name, "location" | "stage" | "set" | "binding" | "constant_id") {
                     let msg = format!("expected an integer after `@{name} =`, found {}", self.describe(&v));
                     self.err(v, msg, "expected an integer");
                     return Err(());
@@ -310,6 +310,14 @@ impl<'m> Parser<'_, 'm> {
             "stage" => QualifierKind::Stage(value),
             // Bare `@format`: dasGlsl's default, rgba8.
             "format" if value.is_none() => QualifierKind::Format(Ident { name: "rgba8".into(), span: t.span }),
+            "constant_id" => match value {
+                Some(v) => QualifierKind::ConstantId(v),
+                None => {
+                    let msg = "`@constant_id` needs a number: `@constant_id = N`".to_string();
+                    self.err(Token::new(TokKind::Ident, span), msg, "no value");
+                    return Err(());
+                }
+            },
             "set" | "binding" => match value {
                 Some(v) if name == "set" => QualifierKind::Set(v),
                 Some(v) => QualifierKind::Binding(v),

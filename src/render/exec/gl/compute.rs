@@ -47,6 +47,13 @@ impl GlExecutor {
         if set.target != self.target() {
             return Err(ExecError::Unsupported(format!("{}: {} runs {} files, not {}", set.label, self.consumer.name(), self.target().name(), set.target.name())));
         }
+        if !plan.constants.is_empty() {
+            return Err(ExecError::Unsupported(format!(
+                "{}: GLSL has no specialization constants (the file holds each one's default as `const T NAME = default;`): {} cannot set them",
+                set.label,
+                self.consumer.name()
+            )));
+        }
         let r = set.manifest().map_err(ExecError::Program)?;
         let fit = compute::fit(&set.label, r, plan)?;
         let (file, text) = set.glsl(&fit.entry).map_err(ExecError::Program)?;

@@ -202,6 +202,13 @@ impl GlExecutor {
         format!("{}, {}", self.renderer, self.version)
     }
 
+    /// Whether the context has GL_KHR_shader_subgroup (what the GLSL 430
+    /// files of a program with subgroup operations require).
+    pub fn supports_subgroups(&self) -> Result<bool, ExecError> {
+        let gl = self.ctx.current()?;
+        Ok(gl.supported_extensions().contains("GL_KHR_shader_subgroup"))
+    }
+
     /// The driver's limits that umbrac's device limits stand for
     /// (`emit::limits`), by their GL names, as this context reports them.
     pub fn reported_limits(&self) -> Result<Vec<(&'static str, i32)>, ExecError> {

@@ -73,6 +73,12 @@ impl WgpuExecutor {
     }
 
     fn dispatch(&self, set: &ShaderSet, code: &ShaderCode, plan: &ComputePlan, fit: &ComputeFit) -> Result<ComputeReadback, ExecError> {
+        if !plan.constants.is_empty() && !matches!(code, ShaderCode::Wgsl(_)) {
+            return Err(ExecError::Unsupported(format!(
+                "{}: umbrac's SPIR-V holds each specialization constant's default (naga writes no OpSpecConstant): only the WGSL's overrides can be set",
+                set.label
+            )));
+        }
         let device = &self.device;
         let [x, y, z] = fit.workgroup_size;
         // Modules and pipelines are kept for the device's life: lavapipe lost
@@ -93,7 +99,7 @@ impl WgpuExecutor {
             return self.dispatch_with(&m.clone(), plan, fit);
         }
         let module = match code {
-            ShaderCode::Wgsl(text) => device.create_shader_module(wgpu::ShaderModuleDescriptor { label: Some(&set.label), source: wgpu::ShaderSource::Wgsl(text.as_str().into()) }),
+            ShaderCode::Wgsl(text) => device.create_shader_module(wgpu::ShaderModuleDescriptor { label: Some(&set.label), source: wgpu::ShaderSource::Wgsl(crate::emit::wgsl::for_naga(text)) }),
             // SAFETY: a SPIR-V module umbrac emitted and naga validated
             // (the contract of `--via spirv`).
             ShaderCode::Spirv(words) => unsafe {
@@ -185,7 +191,10 @@ impl WgpuExecutor {
         }
         // The pipeline, made once per module and layout and kept with the
         // module (see `dispatch`).
-        let pipeline_key = format!("{:p} {} {layouts:?}", module as *const wgpu::ShaderModule, fit.entry);
+        let pipeline_key = format!("{:p} {} {layouts:?} {:?}", module as *const wgpu::ShaderModule, fit.entry, plan.constants);
+        // WGSL overrides by id (`@id(N)`), as wgpu keys them.
+        let constant_ids: Vec<String> = plan.constants.iter().map(|(id, _)| id.to_string()).collect();
+        let constants: Vec<(&str, f64)> = constant_ids.iter().zip(&plan.constants).map(|(k, (_, v))| (k.as_str(), *v)).collect();
         let cached = self.compute_pipelines.lock().unwrap_or_else(|p| p.into_inner()).get(&pipeline_key).cloned();
         let made = match cached {
             Some(m) => m,
@@ -202,7 +211,7 @@ impl WgpuExecutor {
                     layout: Some(&pipeline_layout),
                     module,
                     entry_point: Some(&fit.entry),
-                    compilation_options: Default::default(),
+                    compilation_options: wgpu::PipelineCompilationOptions { constants: &constants, ..Default::default() },
                     cache: None,
                 });
                 let m = Arc::new((pipeline, group_layouts));

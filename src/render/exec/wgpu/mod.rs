@@ -130,9 +130,10 @@ impl WgpuExecutor {
         });
         let adapter = adapters.remove(0);
         let info = adapter.get_info();
-        // SHADER_F16: programs with `half` (WGSL `f16`), where the device has it.
-        let required_features =
-            adapter.features() & (wgpu::Features::PASSTHROUGH_SHADERS | wgpu::Features::ADDRESS_MODE_CLAMP_TO_BORDER | wgpu::Features::SHADER_F16);
+        // SHADER_F16: programs with `half` (WGSL `f16`), SUBGROUP: programs
+        // with subgroup operations, where the device has them.
+        let required_features = adapter.features()
+            & (wgpu::Features::PASSTHROUGH_SHADERS | wgpu::Features::ADDRESS_MODE_CLAMP_TO_BORDER | wgpu::Features::SHADER_F16 | wgpu::Features::SUBGROUP);
         let (device, queue) = pollster::block_on(adapter.request_device(&wgpu::DeviceDescriptor {
             label: Some("umbrac render"),
             required_features,
@@ -157,6 +158,12 @@ impl WgpuExecutor {
     /// The device and queue (tests ask them for features).
     pub fn device(&self) -> (&wgpu::Device, &wgpu::Queue) {
         (&self.device, &self.queue)
+    }
+
+    /// Whether this device has subgroup operations (`Features::SUBGROUP`,
+    /// requested where the adapter has it).
+    pub fn supports_subgroups(&self) -> bool {
+        self.device.features().contains(wgpu::Features::SUBGROUP)
     }
 
     /// Whether this device takes SPIR-V unchanged.
@@ -391,7 +398,7 @@ impl Executor for WgpuExecutor {
                     .map(|(i, code)| match code {
                         ShaderCode::Wgsl(text) => Ok(self.device.create_shader_module(wgpu::ShaderModuleDescriptor {
                             label: Some(&set.label),
-                            source: wgpu::ShaderSource::Wgsl(text.as_str().into()),
+                            source: wgpu::ShaderSource::Wgsl(crate::emit::wgsl::for_naga(text)),
                         })),
                         ShaderCode::Spirv(words) => {
                             let entry_points: Vec<wgpu::PassthroughShaderEntryPoint> = r
