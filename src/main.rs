@@ -558,7 +558,9 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
             }
         },
     };
-    let settings = umbrac::jobs::Settings { options: &opts, workers: args.batch.workers(), cache: cache.as_ref() };
+    // One job needs no count of the machine's cores (cgroup files read).
+    let workers = if inputs.len() == 1 && variants.is_empty() { 1 } else { args.batch.workers() };
+    let settings = umbrac::jobs::Settings { options: &opts, workers, cache: cache.as_ref(), process_ends: !args.watch };
     // Variants whose directories do not exist yet: each job's outputs go
     // to a stage as soon as it compiles, and a rename per directory
     // publishes them (src/output/staged.rs).
@@ -893,7 +895,7 @@ fn check(args: &CheckArgs) -> u8 {
         Err(e) => return usage_error(&e),
     };
     let cache = args.batch.cache();
-    let settings = umbrac::jobs::Settings { options: &opts, workers: args.batch.workers(), cache: cache.as_ref() };
+    let settings = umbrac::jobs::Settings { options: &opts, workers: args.batch.workers(), cache: cache.as_ref(), process_ends: false };
     let batch = umbrac::jobs::Batch::compile(inputs, Vec::new(), &settings, None);
     let mut reporter = Reporter::new(args.common.message_format);
     let _trimming = report_stats(&args.batch, &batch, cache.as_ref(), &mut reporter);
@@ -929,7 +931,7 @@ fn reflect(args: &ReflectArgs) -> u8 {
 fn compile_check(args: &CompileArgs, targets: Vec<Target>, inputs: Vec<umbrac::jobs::Input>) -> u8 {
     let opts = args.common.options(targets);
     let cache = args.batch.cache();
-    let settings = umbrac::jobs::Settings { options: &opts, workers: args.batch.workers(), cache: cache.as_ref() };
+    let settings = umbrac::jobs::Settings { options: &opts, workers: args.batch.workers(), cache: cache.as_ref(), process_ends: false };
     let batch = umbrac::jobs::Batch::compile(inputs, Vec::new(), &settings, None);
     let mut reporter = Reporter::new(args.common.message_format);
     let _trimming = report_stats(&args.batch, &batch, cache.as_ref(), &mut reporter);
