@@ -48,6 +48,24 @@ struct Cli {
     command: Command,
 }
 
+/// `umbrac compile ...` as `Cli` parses it, without building the other
+/// subcommands' arguments (`render`'s are many): building the whole
+/// command tree was a twentieth of a first compile's instructions
+/// (docs/performance.md, "Whole process"). Its name, version, about and
+/// the subcommand's doc are `Cli`'s, so help and errors read the same.
+#[derive(Parser, Debug)]
+#[command(name = "umbrac", version, about = "Compiles daslang shaders to GLSL 330, GLSL ES 3.00, WGSL and SPIR-V")]
+struct CompileCli {
+    #[command(subcommand)]
+    command: CompileCommand,
+}
+
+#[derive(Subcommand, Debug)]
+enum CompileCommand {
+    /// Compile shader files and write the outputs.
+    Compile(CompileArgs),
+}
+
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Compile shader files and write the outputs.
@@ -318,6 +336,10 @@ impl CommonArgs {
 }
 
 fn main() -> ExitCode {
+    if std::env::args_os().nth(1).is_some_and(|a| a == "compile") {
+        let CompileCli { command: CompileCommand::Compile(args) } = CompileCli::parse();
+        return ExitCode::from(compile(&args));
+    }
     let cli = Cli::parse(); // bad usage: clap prints it and exits with 2
     let code = match cli.command {
         Command::Compile(args) => compile(&args),
