@@ -362,9 +362,9 @@ impl Build {
             None => Some(crate::cache::Cache::new(out_root.with_file_name("umbrac-cache"), crate::cache::DEFAULT_MAX_BYTES)),
         };
         let derive_ref: Option<&crate::batch::Derive> = if self.no_bindings { None } else { Some(&derive) };
-        let (outcomes, stats) = crate::batch::compile_cached(&units, crate::batch::default_workers(), cache.as_ref(), crate::batch::Hooks { derive: derive_ref, ready: None, output_hashes: false });
+        let (outcomes, stats) = crate::batch::compile_cached(&units, crate::batch::default_workers(), cache.as_ref(), crate::batch::Hooks { derive: derive_ref, ready: None, output_hashes: false, process_ends: false });
         if stats.stored > 0 {
-            if let Some(c) = &cache {
+            if let Some(c) = cache.as_ref().filter(|c| c.may_need_trim()) {
                 c.trim();
             }
         }

@@ -34,7 +34,9 @@
 //! and reported as a miss, never served. A hit refreshes the entry's
 //! modification time when it is over a minute old (so a warm run right
 //! after another writes nothing to the cache); [`Cache::trim`] keeps the
-//! total size under the bound by removing the entries used longest ago.
+//! total size under the bound by removing the entries used longest ago
+//! (not needed, and skipped, in a cache that did not exist before this
+//! run and holds less than the bound: [`Cache::may_need_trim`]).
 //!
 //! Only successful compilations with no diagnostic at all are stored, so a
 //! hit never hides a warning. Failing to read or write the cache never
@@ -47,7 +49,7 @@ use std::time::{Duration, SystemTime};
 use crate::sealed::{Reader, TEMP_PREFIX};
 
 pub mod direct;
-use crate::syntax::token::{TokKind, Token};
+use crate::syntax::token::{Kw, TokKind, Token, P};
 use crate::{Artifact, Options, Preprocessed, Target};
 
 /// The default bound on a cache's size: 256 MiB (the 256 variants of
@@ -88,7 +90,7 @@ impl Key {
             h.update(&(bytes.len() as u64).to_le_bytes());
             h.update(bytes);
         };
-        field(&mut h, b"umbrac compile key 1");
+        field(&mut h, b"umbrac compile key 2");
         field(&mut h, COMPILER_ID.as_bytes());
         let root_name = pre.root_name();
         field(&mut h, opts.source_name.as_deref().unwrap_or(root_name).as_bytes());
@@ -152,9 +154,14 @@ impl fmt::Debug for Key {
     }
 }
 
-/// Feeds each token's kind and text. The kind is given as a number so that
-/// a text that lexes differently in another context (a macro's value)
-/// still hashes as what it is.
+/// Feeds each token's kind, and the text of those whose kind does not
+/// fix it. The kind is given as a number so that a text that lexes
+/// differently in another context (a macro's value) still hashes as what
+/// it is. A keyword or a punctuation token has one spelling (the lexer
+/// makes each from exactly its text), so its kind is all of it: a byte.
+/// Other tokens add their length (LEB128) and text. This stream is about
+/// half the bytes of one with a fixed-size length for every token, and
+/// so half the hashing (docs/performance.md, "Whole process").
 fn hash_tokens(h: &mut blake3::Hasher, toks: &[Token], map: &crate::SourceMap) {
     // Each token's text straight from its file's bytes: the tokens of a
     // run mostly come from one file, which is found again only when a
@@ -167,6 +174,11 @@ fn hash_tokens(h: &mut blake3::Hasher, toks: &[Token], map: &crate::SourceMap) {
     // end no statement. Runs of them are one token already.
     let first = toks.iter().position(|t| t.kind != TokKind::Newline).unwrap_or(toks.len());
     for t in &toks[first..] {
+        let code = kind_code(t.kind);
+        buf.push(code);
+        if code >= FIXED_TEXT {
+            continue;
+        }
         let (start, end) = (t.span.start, t.span.end.max(t.span.start));
         if start < cur.0 || start - cur.0 > cur.1.len() as u32 {
             let at = files.partition_point(|f| f.0 <= start);
@@ -176,9 +188,12 @@ fn hash_tokens(h: &mut blake3::Hasher, toks: &[Token], map: &crate::SourceMap) {
         let bytes = cur.1;
         let from = ((start - cur.0) as usize).min(bytes.len());
         let text = &bytes[from..((end - cur.0) as usize).clamp(from, bytes.len())];
-        let code = kind_code(t.kind).to_le_bytes();
-        let len = (text.len() as u32).to_le_bytes();
-        buf.extend_from_slice(&[code[0], code[1], len[0], len[1], len[2], len[3]]);
+        let mut len = text.len();
+        while len >= 0x80 {
+            buf.push(0x80 | (len & 0x7f) as u8);
+            len >>= 7;
+        }
+        buf.push(len as u8);
         buf.extend_from_slice(text);
         if buf.len() >= 60 * 1024 {
             h.update(&buf);
@@ -188,7 +203,14 @@ fn hash_tokens(h: &mut blake3::Hasher, toks: &[Token], map: &crate::SourceMap) {
     h.update(&buf);
 }
 
-fn kind_code(k: TokKind) -> u16 {
+/// Kind codes from here up are keywords and punctuation, whose text the
+/// kind fixes.
+const FIXED_TEXT: u8 = 0x40;
+
+fn kind_code(k: TokKind) -> u8 {
+    // Checked at compile time: the keywords' codes stay below the
+    // punctuation's, and the last punctuation's fits a byte.
+    const _: () = assert!(FIXED_TEXT as usize + (Kw::False as usize) < 0x60 && 0x60 + P::Tilde as usize <= 0xff);
     match k {
         TokKind::Ident => 1,
         TokKind::Int => 2,
@@ -197,9 +219,9 @@ fn kind_code(k: TokKind) -> u16 {
         TokKind::Char => 5,
         TokKind::Newline => 6,
         TokKind::Eof => 7,
-        TokKind::Kw(kw) => 0x100 + kw as u16,
-        TokKind::P(p) => 0x200 + p as u16,
-        TokKind::Error(e) => 0x300 + e as u16,
+        TokKind::Error(e) => 0x10 + e as u8,
+        TokKind::Kw(kw) => FIXED_TEXT + kw as u8,
+        TokKind::P(p) => 0x60 + p as u8,
     }
 }
 
@@ -216,6 +238,13 @@ pub struct Cache {
 
 #[derive(Debug, Default)]
 struct Made {
+    /// The cache directory did not exist when this `Cache` was made: all
+    /// it holds was stored through it (or by processes that trim for
+    /// themselves), so it needs no walk to be trimmed until `stored`
+    /// passes the bound.
+    fresh: bool,
+    /// Bytes of entries stored through this `Cache`.
+    stored: std::sync::atomic::AtomicU64,
     tagged: std::sync::atomic::AtomicBool,
     /// One bit per first key byte: `v4/AB/` exists.
     fanout: [std::sync::atomic::AtomicU64; 4],
@@ -242,7 +271,9 @@ impl Cache {
     /// A cache in `dir` (created on the first store) holding at most
     /// `max_bytes` after each [`Cache::trim`].
     pub fn new(dir: impl Into<PathBuf>, max_bytes: u64) -> Cache {
-        Cache { dir: dir.into(), max_bytes, made: Default::default() }
+        let dir = dir.into();
+        let fresh = std::fs::symlink_metadata(&dir).is_err_and(|e| e.kind() == std::io::ErrorKind::NotFound);
+        Cache { dir, max_bytes, made: std::sync::Arc::new(Made { fresh, ..Default::default() }) }
     }
 
     /// The CLI's default directory: `$UMBRAC_CACHE_DIR`, else
@@ -325,7 +356,16 @@ impl Cache {
                 crate::sealed::write_atomically_in(parent, &path, &bytes)
             }
             r => r,
-        }
+        }?;
+        self.made.stored.fetch_add(bytes.len() as u64, std::sync::atomic::Ordering::Relaxed);
+        Ok(())
+    }
+
+    /// Whether [`Cache::trim`] could remove anything: not while the cache
+    /// was new to this `Cache` and holds less than its bound of what was
+    /// stored through it (a first compile then walks no directory).
+    pub fn may_need_trim(&self) -> bool {
+        !self.made.fresh || self.made.stored.load(std::sync::atomic::Ordering::Relaxed) > self.max_bytes
     }
 
     /// Marks the directory as a cache for backup tools (`CACHEDIR.TAG`),
@@ -413,6 +453,9 @@ impl Cache {
     /// its records): the walk over every entry is then off the run's
     /// critical path. If no thread can be started, trims here.
     pub fn trim_in_background(&self) -> Trimming {
+        if !self.may_need_trim() {
+            return Trimming(None);
+        }
         let c = self.clone();
         match std::thread::Builder::new().name("umbrac-trim".into()).spawn(move || c.trim()) {
             Ok(h) => Trimming(Some(h)),
@@ -640,6 +683,19 @@ mod tests {
         assert!(t.bytes <= 31_500);
         let left: Vec<u8> = (0..5).filter(|&n| c.path_of(&key(n)).exists()).collect();
         assert_eq!(left, [0, 3, 4], "the oldest, 1 and 2, go first");
+    }
+
+    #[test]
+    fn a_new_cache_needs_no_trim_until_its_stores_pass_the_bound() {
+        let d = tempfile::tempdir().unwrap();
+        let c = Cache::new(d.path().join("new"), 25_000);
+        c.put(&key(1), &[art("a", &"x".repeat(10_000))]).unwrap();
+        assert!(!c.may_need_trim(), "all it holds was stored through it, under the bound");
+        c.put(&key(2), &[art("a", &"y".repeat(10_000))]).unwrap();
+        c.put(&key(3), &[art("a", &"z".repeat(10_000))]).unwrap();
+        assert!(c.may_need_trim(), "stored past the bound");
+        // One that existed may hold anything: always walked.
+        assert!(Cache::new(d.path().join("new"), 25_000).may_need_trim());
     }
 
     #[test]

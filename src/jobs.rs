@@ -83,6 +83,8 @@ pub struct Settings<'a> {
     pub options: &'a Options,
     pub workers: usize,
     pub cache: Option<&'a Cache>,
+    /// See [`batch::Hooks::process_ends`].
+    pub process_ends: bool,
 }
 
 impl Batch {
@@ -121,7 +123,7 @@ impl Batch {
                 r(j, &rel_dirs[j], arts);
             }
         };
-        let hooks = batch::Hooks { derive: None, ready: ready.is_some().then_some(&report as &batch::Ready), output_hashes: !variants.is_empty() };
+        let hooks = batch::Hooks { derive: None, ready: ready.is_some().then_some(&report as &batch::Ready), output_hashes: !variants.is_empty(), process_ends: settings.process_ends };
         let (outcomes, stats) = batch::compile_cached(&units, settings.workers, settings.cache, hooks);
         drop(units);
         Batch { inputs, variants, jobs, outcomes, stats }

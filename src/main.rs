@@ -48,6 +48,24 @@ struct Cli {
     command: Command,
 }
 
+/// `umbrac compile ...` as `Cli` parses it, without building the other
+/// subcommands' arguments (`render`'s are many): building the whole
+/// command tree was a twentieth of a first compile's instructions
+/// (docs/performance.md, "Whole process"). Its name, version, about and
+/// the subcommand's doc are `Cli`'s, so help and errors read the same.
+#[derive(Parser, Debug)]
+#[command(name = "umbrac", version, about = "Compiles daslang shaders to GLSL 330, GLSL ES 3.00, WGSL and SPIR-V")]
+struct CompileCli {
+    #[command(subcommand)]
+    command: CompileCommand,
+}
+
+#[derive(Subcommand, Debug)]
+enum CompileCommand {
+    /// Compile shader files and write the outputs.
+    Compile(CompileArgs),
+}
+
 #[derive(Subcommand, Debug)]
 enum Command {
     /// Compile shader files and write the outputs.
@@ -318,6 +336,10 @@ impl CommonArgs {
 }
 
 fn main() -> ExitCode {
+    if std::env::args_os().nth(1).is_some_and(|a| a == "compile") {
+        let CompileCli { command: CompileCommand::Compile(args) } = CompileCli::parse();
+        return ExitCode::from(compile(&args));
+    }
     let cli = Cli::parse(); // bad usage: clap prints it and exits with 2
     let code = match cli.command {
         Command::Compile(args) => compile(&args),
@@ -558,7 +580,9 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
             }
         },
     };
-    let settings = umbrac::jobs::Settings { options: &opts, workers: args.batch.workers(), cache: cache.as_ref() };
+    // One job needs no count of the machine's cores (cgroup files read).
+    let workers = if inputs.len() == 1 && variants.is_empty() { 1 } else { args.batch.workers() };
+    let settings = umbrac::jobs::Settings { options: &opts, workers, cache: cache.as_ref(), process_ends: !args.watch };
     // Variants whose directories do not exist yet: each job's outputs go
     // to a stage as soon as it compiles, and a rename per directory
     // publishes them (src/output/staged.rs).
@@ -893,7 +917,7 @@ fn check(args: &CheckArgs) -> u8 {
         Err(e) => return usage_error(&e),
     };
     let cache = args.batch.cache();
-    let settings = umbrac::jobs::Settings { options: &opts, workers: args.batch.workers(), cache: cache.as_ref() };
+    let settings = umbrac::jobs::Settings { options: &opts, workers: args.batch.workers(), cache: cache.as_ref(), process_ends: false };
     let batch = umbrac::jobs::Batch::compile(inputs, Vec::new(), &settings, None);
     let mut reporter = Reporter::new(args.common.message_format);
     let _trimming = report_stats(&args.batch, &batch, cache.as_ref(), &mut reporter);
@@ -929,7 +953,7 @@ fn reflect(args: &ReflectArgs) -> u8 {
 fn compile_check(args: &CompileArgs, targets: Vec<Target>, inputs: Vec<umbrac::jobs::Input>) -> u8 {
     let opts = args.common.options(targets);
     let cache = args.batch.cache();
-    let settings = umbrac::jobs::Settings { options: &opts, workers: args.batch.workers(), cache: cache.as_ref() };
+    let settings = umbrac::jobs::Settings { options: &opts, workers: args.batch.workers(), cache: cache.as_ref(), process_ends: false };
     let batch = umbrac::jobs::Batch::compile(inputs, Vec::new(), &settings, None);
     let mut reporter = Reporter::new(args.common.message_format);
     let _trimming = report_stats(&args.batch, &batch, cache.as_ref(), &mut reporter);

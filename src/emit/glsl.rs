@@ -588,11 +588,9 @@ fn renamed_uniforms(lowered: &Lowered) -> Vec<(&str, String)> {
     let gls = || lowered.interface.entry_points.iter().filter_map(|ep| lowered.gl.get(ep.index)).filter(|gl| !gl.uniforms.is_empty());
     let mut renamed: Vec<&str> = Vec::new();
     for gl in gls() {
-        let mut bases: rustc_hash::FxHashMap<std::borrow::Cow<'_, str>, u32> = rustc_hash::FxHashMap::default();
-        glsl_names::module_names(&gl.module, |n| *bases.entry(glsl_names::namer_base(n)).or_default() += 1);
-        for (h, source) in &gl.uniforms {
-            let name = gl.module.global_variables[*h].name.as_deref().unwrap_or(source);
-            if !glsl_names::namer_keeps(name, &bases) && !renamed.contains(&source.as_str()) {
+        let names: Vec<&str> = gl.uniforms.iter().map(|(h, source)| gl.module.global_variables[*h].name.as_deref().unwrap_or(source)).collect();
+        for ((_, source), kept) in gl.uniforms.iter().zip(glsl_names::namer_keeps(&gl.module, &names)) {
+            if !kept && !renamed.contains(&source.as_str()) {
                 renamed.push(source);
             }
         }

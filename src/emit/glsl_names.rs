@@ -232,13 +232,29 @@ pub fn module_names<'m>(module: &'m naga::Module, mut each: impl FnMut(&'m str))
     }
 }
 
-/// Whether naga's GLSL writer writes the global named `name` of a module
-/// under that very name: the namer keeps it (nothing to drop or escape,
-/// a letter last so no `_` is added, not reserved) and no other name of
-/// the module has the same base (`bases`: each base's count, the global's
-/// own included).
-pub fn namer_keeps(name: &str, bases: &rustc_hash::FxHashMap<std::borrow::Cow<'_, str>, u32>) -> bool {
-    namer_base(name) == name && name.as_bytes().last().is_some_and(|c| c.is_ascii_alphabetic()) && !is_reserved(name) && bases.get(name).copied() == Some(1)
+/// For each of `globals` (names of globals of `module`), whether naga's
+/// GLSL writer writes it under that very name: the namer keeps it
+/// (nothing to drop or escape, a letter last so no `_` is added, not
+/// reserved) and no other name of the module has the same base. Only
+/// names whose base is one of those globals' are counted (the globals
+/// are a few, the module's names many: no map of every base).
+pub fn namer_keeps(module: &naga::Module, globals: &[&str]) -> Vec<bool> {
+    let mut keeps: Vec<bool> = globals.iter().map(|&n| namer_base(n) == n && n.as_bytes().last().is_some_and(|c| c.is_ascii_alphabetic()) && !is_reserved(n)).collect();
+    if keeps.iter().any(|&k| k) {
+        let mut counts = vec![0u32; globals.len()];
+        module_names(module, |n| {
+            let base = namer_base(n);
+            for (i, g) in globals.iter().enumerate() {
+                if keeps[i] && base == *g {
+                    counts[i] += 1;
+                }
+            }
+        });
+        for (k, c) in keeps.iter_mut().zip(counts) {
+            *k &= c == 1;
+        }
+    }
+    keeps
 }
 
 /// The loops in `block`, however nested.

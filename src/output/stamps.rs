@@ -138,10 +138,15 @@ impl Stamps {
         }
     }
 
-    /// Forgets the file at `path` (it was just replaced).
+    /// Forgets the file at `path` (it was just replaced). A path with no
+    /// stamp has nothing to forget: a run into a new directory records
+    /// nothing here.
     pub fn forget(&self, path: &Path) {
+        let key = path.as_os_str();
         if let Ok(mut new) = self.new.lock() {
-            new.insert(path.as_os_str().to_owned(), None);
+            if self.old.contains_key(key) || new.contains_key(key) {
+                new.insert(key.to_owned(), None);
+            }
         }
     }
 
