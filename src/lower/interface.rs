@@ -163,6 +163,8 @@ pub struct EntryInterface {
     pub workgroup: Vec<(String, Span)>,
     /// The entry point's stage annotation (`[compute_program(...)]`).
     pub span: Span,
+    /// The dialect it is written in (its conventions, its varyings' GL names).
+    pub dialect: crate::syntax::ast::Dialect,
 }
 
 #[derive(Clone, Debug, Default)]

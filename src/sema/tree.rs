@@ -322,6 +322,9 @@ pub struct EntryPoint {
     /// Its stage annotation (`[compute_program(...)]`), where limits on the
     /// workgroup point.
     pub annotation: Span,
+    /// The dialect its stage annotation names: Vulkan-dialect entry points
+    /// link stage I/O by location and are written in Vulkan conventions.
+    pub dialect: crate::syntax::ast::Dialect,
 }
 
 impl EntryPoint {

@@ -107,6 +107,10 @@ impl<'a, 'd> Checker<'a, 'd> {
                     if is_entry(f).is_some() || !(self.funcs.contains_key(name) || self.structs.contains_key(name)) {
                         self.check_unique(&mut seen, &f.name);
                     }
+                    if let Some((a, ast::StageAnnotation { stage: None, .. })) = f.stage_annotation() {
+                        self.uncompiled_stage(a);
+                        continue;
+                    }
                     match is_entry(f) {
                         Some(stage) => {
                             let returns = f.ret.as_ref().is_some_and(|t| !matches!(&t.kind, ast::TypeExprKind::Named(id) if id.name == "void"));

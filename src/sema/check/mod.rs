@@ -247,12 +247,7 @@ struct Checker<'a, 'd> {
 }
 
 fn is_entry(f: &ast::FunctionDecl) -> Option<naga::ShaderStage> {
-    f.annotations.iter().find_map(|a| match a.name.name.as_str() {
-        "vertex_program" => Some(naga::ShaderStage::Vertex),
-        "fragment_program" => Some(naga::ShaderStage::Fragment),
-        "compute_program" => Some(naga::ShaderStage::Compute),
-        _ => None,
-    })
+    f.stage_annotation().and_then(|(_, s)| s.stage)
 }
 
 fn entry_name(f: &ast::FunctionDecl) -> String {

@@ -31,8 +31,8 @@ impl<'a, 'd> Checker<'a, 'd> {
             let Some(func) = self.check_function(decl, Some(stage), None) else { continue };
             self.check_stage_rules(&name, stage, &func);
             self.check_compute_rules(decl, &name, stage, &func);
-            let annotation = decl.annotations.iter().find(|a| matches!(a.name.name.as_str(), "vertex_program" | "fragment_program" | "compute_program")).map_or(decl.name.span, |a| a.span);
-            self.out.entry_points.push(EntryPoint { name, stage, func, locations: Vec::new(), workgroup_size, annotation });
+            let (annotation, dialect) = decl.stage_annotation().map_or((decl.name.span, ast::Dialect::Gl), |(a, s)| (a.span, s.dialect));
+            self.out.entry_points.push(EntryPoint { name, stage, func, locations: Vec::new(), workgroup_size, annotation, dialect });
         }
     }
 
