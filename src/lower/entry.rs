@@ -139,9 +139,9 @@ pub(super) enum ClipAdapt {
     VulkanToGl,
 }
 
-fn interpolation(ty: &Ty) -> (Option<naga::Interpolation>, Option<naga::Sampling>) {
+fn interpolation(ty: &Ty, flat: bool) -> (Option<naga::Interpolation>, Option<naga::Sampling>) {
     match ty.scalar() {
-        Some(Scalar::Float) => (Some(naga::Interpolation::Perspective), Some(naga::Sampling::Center)),
+        Some(Scalar::Float) if !flat => (Some(naga::Interpolation::Perspective), Some(naga::Sampling::Center)),
         _ => (Some(naga::Interpolation::Flat), None),
     }
 }
@@ -203,7 +203,7 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
             let (binding, arg_ty, to_int) = match g.kind {
                 GlobalKind::Io { .. } => {
                     let l = ep.location(gid);
-                    let interp = if stage == Fragment { interpolation(&g.ty) } else { (None, None) };
+                    let interp = if stage == Fragment { interpolation(&g.ty, p.flat.contains(&gid)) } else { (None, None) };
                     if describe {
                         let dsl_type = m.show_ty(&g.ty);
                         iface.inputs.push(IoVar { name: g.name.clone(), location: l, explicit_location: matches!(g.kind, GlobalKind::Io { location: Some(_), .. }), span: g.span, ty, dsl_type, interpolation: interp.0 });
@@ -249,7 +249,7 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
                             .with_note("`@out` and `@inout` variables written by one vertex entry point share the output locations"));
                     }
                     seen_out.push((l, g.span));
-                    let interp = if stage == Vertex { interpolation(&g.ty) } else { (None, None) };
+                    let interp = if stage == Vertex { interpolation(&g.ty, p.flat.contains(&gid)) } else { (None, None) };
                     if describe {
                         let dsl_type = m.show_ty(&g.ty);
                         iface.outputs.push(IoVar { name: g.name.clone(), location: l, explicit_location: matches!(g.kind, GlobalKind::Io { location: Some(_), .. }), span: g.span, ty, dsl_type, interpolation: interp.0 });

@@ -83,7 +83,10 @@ impl ModuleBuilder<'_> {
                             None => g.name.clone(),
                         };
                         let sampler_name = [&gname, "_sampler"].concat();
-                        let (tb, sb) = (binding + 2 * i, binding + 2 * i + 1);
+                        let (tb, sb) = match self.p.vulkan {
+                            true => (binding, binding + sema::VULKAN_SAMPLER_OFFSET),
+                            false => (binding + 2 * i, binding + 2 * i + 1),
+                        };
                         let image = self.add_global(gname, naga::AddressSpace::Handle, with_binding.then_some(naga::ResourceBinding { group, binding: tb }), image_ty, None, span);
                         let sampler = self.add_global(sampler_name, naga::AddressSpace::Handle, with_binding.then_some(naga::ResourceBinding { group, binding: sb }), sampler_ty, None, span);
                         self.sampler_elems.push((image, sampler));

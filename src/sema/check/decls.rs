@@ -303,6 +303,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             // `@readonly` / `@writeonly`, `@format = F` (storage buffers and images).
             let mut access: Option<(Access, Span)> = None;
             let mut format: Option<(ImageFormat, Span)> = None;
+            let mut flat: Option<Span> = None;
             for q in &g.qualifiers {
                 let c = match &q.kind {
                     ast::QualifierKind::Uniform => Some("uniform"),
@@ -331,6 +332,11 @@ impl<'a, 'd> Checker<'a, 'd> {
                     // a uniform on every target (docs/language.md).
                     ast::QualifierKind::Other(name) if name == "push_constant" => Some("uniform"),
                     ast::QualifierKind::Other(name) if name == "ssbo" => Some("ssbo"),
+                    // dasSpirv's `@flat`: no interpolation (ints are flat anyway).
+                    ast::QualifierKind::Other(name) if name == "flat" => {
+                        flat = Some(q.span);
+                        None
+                    }
                     ast::QualifierKind::Other(name) if name == "groupshared" => Some("groupshared"),
                     ast::QualifierKind::Other(name) if name == "readonly" || name == "writeonly" => {
                         let a = if name == "readonly" { Access::Read } else { Access::Write };
@@ -360,7 +366,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                     }
                     ast::QualifierKind::Other(name) => {
                         let d = Diagnostic::error(format!("unknown annotation `@{name}`"), q.span)
-                            .with_note("shader globals take @uniform, @in, @out, @inout, @push_constant, @ssbo, @groupshared, @readonly, @writeonly, @format = F, @location = N, @stage = N, @set = N and @binding = N");
+                            .with_note("shader globals take @uniform, @in, @out, @inout, @flat, @push_constant, @ssbo, @groupshared, @readonly, @writeonly, @format = F, @location = N, @stage = N, @set = N and @binding = N");
                         self.diags.push(d);
                         refused = true;
                         None
@@ -387,8 +393,11 @@ impl<'a, 'd> Checker<'a, 'd> {
                     .with_note("a uniform's initial value is the default the host sets; inputs and outputs have none");
                 self.diags.push(d);
             }
-            // A storage image needs no `@uniform` (it is one in GLSL).
-            let class = class.or_else(|| matches!(ty, Ty::Image(_)).then_some(("uniform", g.name.span)));
+            // A storage image needs no `@uniform` (it is one in GLSL); in the
+            // Vulkan dialect a sampler at a `@set`/`@binding` needs none either
+            // (dasSpirv reads it as a descriptor).
+            let bound = bind.0.is_some() || bind.1.is_some();
+            let class = class.or_else(|| (matches!(ty, Ty::Image(_)) || (self.vulkan && bound && ty.is_sampler_like())).then_some(("uniform", g.name.span)));
             if !(matches!(class, Some(("ssbo", _))) || matches!(ty, Ty::Image(_))) {
                 if let Some((_, span)) = access {
                     self.diags.push(Diagnostic::error("`@readonly` and `@writeonly` apply only to `@ssbo` buffers and storage images", span));
@@ -419,6 +428,9 @@ impl<'a, 'd> Checker<'a, 'd> {
                         _ => (SamplerKind::Sampler2D, None),
                     };
                     let n = count.unwrap_or(1);
+                    if let (true, Some(_)) = (self.vulkan, count) {
+                        self.descriptor_array_used(gty.span);
+                    }
                     if let Some((_, span)) = location {
                         self.diags.push(Diagnostic::error("`@location` does not apply to samplers; use `@stage = N` for the texture unit", span));
                     }
@@ -442,6 +454,8 @@ impl<'a, 'd> Checker<'a, 'd> {
                     GlobalKind::Sampler { kind, texture_unit: unit, count }
                 }
                 ("uniform", Ty::Image(k)) => {
+                    // dasSpirv's default format is rgba8, as dasGlsl's bare `@format`.
+                    let format = format.or_else(|| self.vulkan.then(|| ImageFormat::from_name("rgba8").map(|f| (f, gty.span))).flatten());
                     let unit = self.storage_unit(location.map(|l| l.1), stage, "storage images");
                     self.image_kind(*k, format, access, unit, gty.span)
                 }
@@ -501,6 +515,13 @@ impl<'a, 'd> Checker<'a, 'd> {
                     GlobalKind::Io { kind: io, location: loc }
                 }
             };
+            if let Some(span) = flat {
+                if matches!(kind, GlobalKind::Io { .. }) {
+                    self.out.flat.insert(self.out.globals.len());
+                } else {
+                    self.diags.push(Diagnostic::error("`@flat` applies only to `@in` and `@out` variables", span));
+                }
+            }
             self.written_bind(&kind, bind);
             self.globals.insert(&g.name.name, self.out.globals.len());
             self.out.globals.push(Global { name: g.name.name.as_str().to_string(), ty, kind, span: g.name.span, bind: None });
@@ -570,7 +591,8 @@ impl<'a, 'd> Checker<'a, 'd> {
             self.diags.push(Diagnostic::error("`@writeonly` applies only to storage images; a storage buffer is read-write, or `@readonly`", span));
         }
         match ty {
-            Ty::Struct(_) => {
+            // dasSpirv's `@ssbo x : array<T>`: the buffer is the array.
+            Ty::Struct(_) | Ty::RuntimeArray(_) => {
                 if let Some(msg) = self.storage_type_problem(ty) {
                     self.diags.push(Diagnostic::error(msg, ty_span));
                 }
@@ -617,7 +639,9 @@ impl<'a, 'd> Checker<'a, 'd> {
         // Bounds of the checker's tables; wgpu's default of 4 bind groups
         // is checked per target (`emit::limits`); 1000 bindings per group.
         let set = checked(set, "set", crate::sema::limits::MAX_SETS);
-        let binding = checked(binding, "binding", 1000);
+        // The Vulkan dialect keeps binding + VULKAN_SAMPLER_OFFSET free
+        // for the sampler halves of its combined image-samplers.
+        let binding = checked(binding, "binding", if self.vulkan { crate::sema::tree::VULKAN_SAMPLER_OFFSET as i64 } else { 1000 });
         if let Some((b, _)) = binding {
             self.out.written_bindings.insert(self.out.globals.len(), b);
         }

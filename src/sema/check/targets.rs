@@ -63,6 +63,15 @@ impl<'a, 'd> Checker<'a, 'd> {
         self.diags.push(d);
     }
 
+    /// An array of samplers in the Vulkan dialect: one descriptor array
+    /// (one binding, N elements), which umbrac does not build.
+    pub(super) fn descriptor_array_used(&mut self, span: Span) {
+        let targets: Vec<&str> = self.targets.iter().map(|t| t.name()).collect();
+        let d = Diagnostic::error(format!("an array of samplers in the Vulkan dialect (a descriptor array at one binding) is not supported by umbrac on {}", targets.join(", ")), span)
+            .with_note("bind each sampler at its own `@binding`");
+        self.diags.push(d);
+    }
+
     /// A read-write storage image of `format` (neither `@readonly` nor
     /// `@writeonly`, dasGlsl's default) at `span`: GLSL 430 and SPIR-V
     /// have it for every format; GLSL ES 3.10 and WGSL only for `r32f`,
