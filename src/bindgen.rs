@@ -1117,7 +1117,7 @@ mod tests {
 
     /// A loose buffer of these members.
     fn block(name: &str, ty: &str, size: u32, members: Vec<Member>) -> crate::emit::reflect_types::UniformBuffer {
-        crate::emit::reflect_types::UniformBuffer { name: name.into(), ty: ty.into(), loose: true, size, group: 0, binding: 9, glsl_block: None, glsl_binding: None, members }
+        crate::emit::reflect_types::UniformBuffer { name: name.into(), ty: ty.into(), loose: true, size, group: 0, binding: 9, glsl_block: None, glsl_binding: None, members, push_constant: None }
     }
 
     /// Layouts the checker never lets through still follow the manifest's

@@ -170,6 +170,9 @@ pub struct EntryInterface {
 #[derive(Clone, Debug, Default)]
 pub struct Interface {
     pub conventions: Conventions,
+    /// The names of the `@push_constant` globals: uniform buffers, marked
+    /// in the manifest.
+    pub push_constants: Vec<String>,
     pub gl_uniforms: GlUniforms,
     pub resources: Vec<Resource>,
     /// The loose uniforms any entry point reads, in declaration order.

@@ -162,6 +162,7 @@ fn build(
     };
     let interface = Interface {
         conventions: Conventions::default(),
+        push_constants: p.push_constants.iter().map(|&g| p.globals[g].name.clone()).collect(),
         gl_uniforms,
         resources: std::mem::take(&mut m.resources),
         loose: std::mem::take(&mut m.loose),

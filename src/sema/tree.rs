@@ -36,6 +36,9 @@ pub struct Program {
     /// (`Some(member)`). Lowering gives them atomic types, which plain
     /// reads and writes of them load and store.
     pub atomics: std::collections::BTreeSet<(GlobalId, Option<u32>)>,
+    /// The `@push_constant` globals (uniform buffers on every target; the
+    /// manifest marks them).
+    pub push_constants: std::collections::BTreeSet<GlobalId>,
     /// The `@flat` interface globals (no interpolation).
     pub flat: std::collections::BTreeSet<GlobalId>,
     /// The program has Vulkan-dialect entry points: its resources follow

@@ -177,6 +177,7 @@ fn interface_of(m: &naga::Module, info: &naga::valid::ModuleInfo) -> Interface {
             workgroup_size: ep.workgroup_size,
             workgroup: vec![],
             span: Default::default(),
+            dialect: Default::default(),
         };
         let visit = |name: Option<&String>, ty, binding: Option<&naga::Binding>, output: bool, e: &mut EntryInterface| match binding {
             Some(naga::Binding::Location { location, interpolation, .. }) => {

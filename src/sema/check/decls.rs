@@ -304,6 +304,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             let mut access: Option<(Access, Span)> = None;
             let mut format: Option<(ImageFormat, Span)> = None;
             let mut flat: Option<Span> = None;
+            let push_constant = g.qualifiers.iter().any(|q| matches!(&q.kind, ast::QualifierKind::Other(n) if n == "push_constant"));
             for q in &g.qualifiers {
                 let c = match &q.kind {
                     ast::QualifierKind::Uniform => Some("uniform"),
@@ -362,6 +363,16 @@ impl<'a, 'd> Checker<'a, 'd> {
                                 refused = true;
                             }
                         }
+                        None
+                    }
+                    // dasSpirv's payloads of the stages umbrac does not compile.
+                    ast::QualifierKind::Other(name) if matches!(name.as_str(), "task_payload" | "ray_payload" | "incoming_ray_payload" | "hit_attribute" | "callable_data" | "incoming_callable_data") => {
+                        let targets: Vec<&str> = self.targets.iter().map(|t| t.name()).collect();
+                        let stages = if name == "task_payload" { "task and mesh shaders" } else { "ray-tracing shaders" };
+                        let d = Diagnostic::error(format!("`@{name}` (of {stages}) is not supported by umbrac on {}", targets.join(", ")), q.span)
+                            .with_note("umbrac compiles the vertex, fragment and compute stages of the Vulkan dialect");
+                        self.diags.push(d);
+                        refused = true;
                         None
                     }
                     ast::QualifierKind::Other(name) => {
@@ -521,6 +532,9 @@ impl<'a, 'd> Checker<'a, 'd> {
                 } else {
                     self.diags.push(Diagnostic::error("`@flat` applies only to `@in` and `@out` variables", span));
                 }
+            }
+            if push_constant {
+                self.out.push_constants.insert(self.out.globals.len());
             }
             self.written_bind(&kind, bind);
             self.globals.insert(&g.name.name, self.out.globals.len());

@@ -139,10 +139,14 @@ impl<'a, 'd> Checker<'a, 'd> {
                 }
             }
         }
+        // A fragment entry point fed by a stage already refused (a mesh
+        // shader) would be reported twice over.
+        let errors = if self.diags.has_errors() { Vec::new() } else { errors };
         for (f, (v, g, o)) in errors {
             let (fe, ve) = (&self.out.entry_points[f], &self.out.entry_points[v]);
             let gi = &self.out.globals[g];
-            let l = fe.location(g);
+            // Locations are numbered after linking: the one written.
+            let GlobalKind::Io { location: Some(l), .. } = gi.kind else { continue };
             let span = self.location_spans.get(&g).copied().unwrap_or(gi.span);
             let interp = |g: GlobalId| if self.out.flat.contains(&g) { "flat" } else { "interpolated" };
             let d = match o {
