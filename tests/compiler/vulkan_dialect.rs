@@ -152,3 +152,91 @@ fn dasvulkan_tutorials_compile_where_they_stand_or_are_refused_by_name() {
     assert!(failures.is_empty(), "{}", failures.join("\n\n"));
     eprintln!("{compiled_n} of {} shader files compile, {runs} validator runs", FILES.len());
 }
+
+/// A file with both dialects: each links by its own rule and never with
+/// the other's entry points, and each vertex entry point gets its own
+/// dialect's clip-space adaptation.
+const MIXED: &str = "var @in @location = 0 a_pos : float3
+var @inout v_uv : float2
+var @out g_color : float4
+[vertex_program]
+def gl_vs {
+    v_uv = a_pos.xy
+    gl_Position = float4(a_pos, 1.0)
+}
+[fragment_program]
+def gl_fs {
+    g_color = float4(v_uv, 0.0, 1.0)
+}
+var @out @location = 0 vk_uv_out : float2
+[vertex_shader]
+def vk_vs {
+    vk_uv_out = a_pos.xy
+    gl_Position = float4(a_pos, 1.0)
+}
+var @in @location = 0 vk_uv_in : float2
+var @out @location = 0 vk_color : float4
+[fragment_shader]
+def vk_fs {
+    vk_color = float4(vk_uv_in, 0.0, 1.0)
+}
+";
+
+fn text(c: &umbrac::Compiled, file: &str) -> String {
+    c.artifact(file).unwrap_or_else(|| panic!("no {file}")).text().into_owned()
+}
+
+#[test]
+fn both_dialects_in_one_file_link_by_their_own_rules_and_adapt_by_their_own_conventions() {
+    let c = umbrac::compile_source("mixed.das", MIXED, &Options::default());
+    let out = c.result.as_ref().unwrap_or_else(|| panic!("{}", c.render_diagnostics()));
+    let mut pairs = support::link_pairs(&out.reflection);
+    pairs.sort();
+    assert_eq!(pairs, [("gl_vs".to_string(), "gl_fs".to_string()), ("vk_vs".into(), "vk_fs".into())]);
+    // GL dialect: GLSL as written; WGSL y flipped and z remapped.
+    let gl_vs = text(out, "gl_vs.330.vert");
+    assert!(!gl_vs.contains("* 2.0) -"), "{gl_vs}");
+    assert!(gl_vs.contains("out vec2 v_uv;"), "{gl_vs}");
+    // Vulkan dialect: GLSL z' = 2z - w, y kept; the varying named by location.
+    let vk_vs = text(out, "vk_vs.330.vert");
+    assert!(vk_vs.contains("* 2.0) - ") && !vk_vs.contains("-(_e"), "{vk_vs}");
+    assert!(vk_vs.contains("out vec2 vk_location0;") && text(out, "vk_fs.330.frag").contains("in vec2 vk_location0;"));
+    let wgsl = text(out, "mixed.wgsl");
+    let ret = |name: &str| wgsl.split(&format!("fn {name}(")).nth(1).and_then(|b| b.split("return ").nth(1)).map(|r| r.lines().next().unwrap().to_string()).unwrap();
+    assert!(ret("gl_vs").contains("-(") && ret("gl_vs").contains("0.5f"), "{}", ret("gl_vs"));
+    assert!(ret("vk_vs").contains("-(") && !ret("vk_vs").contains("0.5f"), "{}", ret("vk_vs"));
+    let ep = |n: &str| out.reflection.entry_points.iter().find(|e| e.name == n).unwrap();
+    assert_eq!(ep("gl_vs").dialect, None);
+    assert_eq!(ep("vk_fs").dialect.as_deref(), Some("vulkan"));
+    let clip = ep("vk_vs").clip_space.clone().unwrap();
+    assert_eq!(clip["glsl330"], "z' = 2z - w");
+    assert_eq!(clip["wgsl"], "y' = -y");
+    let dir = tempfile::tempdir().unwrap();
+    support::write_all(dir.path(), &out.artifacts);
+    support::validate_dir(dir.path(), &out.reflection);
+
+    // Native conventions adapt neither dialect on any target.
+    let native = umbrac::compile_source("mixed.das", MIXED, &Options { conventions: umbrac::Conventions::Native, ..Default::default() });
+    let native = native.result.unwrap();
+    assert!(!text(&native, "vk_vs.330.vert").contains("* 2.0) - "));
+    let wgsl = text(&native, "mixed.wgsl");
+    assert!(!wgsl.contains("-(_e"), "{wgsl}");
+    assert_eq!(native.reflection.entry_points.iter().find(|e| e.name == "vk_vs").unwrap().clip_space.as_ref().unwrap()["spirv"], "none");
+}
+
+/// A push constant is a uniform buffer the manifest marks, and a combined
+/// image-sampler's halves are at B and B + 100 in the GPU module.
+#[test]
+fn push_constants_and_samplers_are_where_the_manifest_says() {
+    let src = "struct P {\n    k : float4\n}\nvar @push_constant pc : P\nvar @set = 1 @binding = 3 tex : sampler2D\nvar @out @location = 0 o : float4\n[fragment_shader]\ndef fs {\n    o = texture(tex, float2(0.5)) * pc.k\n}\n";
+    let c = umbrac::compile_source("pc.das", src, &Options::default());
+    let out = c.result.as_ref().unwrap_or_else(|| panic!("{}", c.render_diagnostics()));
+    let pc = out.reflection.uniform_buffers.iter().find(|u| u.name == "pc").unwrap();
+    assert_eq!(pc.push_constant, Some(true));
+    assert_eq!(pc.glsl_block.as_deref(), Some("pc_ubo"));
+    let wgsl = text(out, "pc.wgsl");
+    assert!(wgsl.contains(&format!("@group({}) @binding({}) \nvar<uniform> pc", pc.group, pc.binding)), "{wgsl}");
+    let s = &out.reflection.samplers[0];
+    assert_eq!((s.group, s.texture_binding, s.sampler_binding), (1, 3, 103));
+    assert!(wgsl.contains("@group(1) @binding(103) \nvar tex_sampler"), "{wgsl}");
+}
