@@ -32,7 +32,23 @@ impl<'a, 'd> Checker<'a, 'd> {
             self.check_stage_rules(&name, stage, &func);
             self.check_compute_rules(decl, &name, stage, &func);
             let (annotation, dialect) = decl.stage_annotation().map_or((decl.name.span, ast::Dialect::Gl), |(a, s)| (a.span, s.dialect));
+            if dialect == ast::Dialect::Vulkan {
+                self.check_vulkan_locations(&name, &func);
+            }
             self.out.entry_points.push(EntryPoint { name, stage, func, locations: Vec::new(), workgroup_size, annotation, dialect });
+        }
+    }
+
+    /// The Vulkan dialect matches stage I/O by location, so (as dasSpirv)
+    /// every `@in`/`@out` a Vulkan-dialect entry point uses gives one.
+    fn check_vulkan_locations(&mut self, name: &str, func: &Function) {
+        let mut unlocated: Vec<(GlobalId, Span)> = func.uses.iter().map(|(&g, &s)| (g, s)).filter(|&(g, _)| matches!(self.out.globals[g].kind, GlobalKind::Io { location: None, .. })).collect();
+        unlocated.sort_unstable();
+        for (g, _) in unlocated {
+            let global = &self.out.globals[g];
+            let d = Diagnostic::error(format!("`{}` needs `@location = N`: Vulkan-dialect entry point `{name}` uses it", global.name), global.span)
+                .with_note("in the Vulkan dialect stage inputs and outputs are matched by location, as dasSpirv requires");
+            self.diags.push(d);
         }
     }
 
