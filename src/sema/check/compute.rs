@@ -262,6 +262,8 @@ impl<'a, 'd> Checker<'a, 'd> {
         };
         match &base.kind {
             ExprKind::Global(g) if matches!(self.out.globals[*g].kind, GlobalKind::Workgroup) => Some((*g, None)),
+            // dasSpirv's `@ssbo x : array<uint>`: the buffer is the array.
+            ExprKind::Global(g) if matches!(self.out.globals[*g].kind, GlobalKind::Storage { .. }) && matches!(base.ty, Ty::RuntimeArray(_)) => Some((*g, None)),
             ExprKind::Field(root, m) => match &root.kind {
                 ExprKind::Global(g) if matches!(self.out.globals[*g].kind, GlobalKind::Storage { .. }) => Some((*g, Some(*m))),
                 _ => None,

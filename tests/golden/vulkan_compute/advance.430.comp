@@ -15,6 +15,8 @@ layout(std430, binding = 0) buffer particles_ssbo { Particle particles[]; };
 
 layout(binding = 0,rgba8) writeonly uniform image2D heat;
 
+layout(std430, binding = 1) buffer moving_ssbo { uint moving[]; };
+
 layout(std140) uniform step_ubo {
     float dt;
     uint count;
@@ -37,8 +39,13 @@ void main() {
     p.pos = (_e16 + (_e12 * _e14));
     Particle _e19 = p;
     particles[i] = _e19;
-    vec4 _e28 = p.pos;
-    imageStore(heat, ivec2(int((i % 64u)), int((i / 64u))), vec4(_e28.xyz, 1.0));
+    vec4 _e21 = p.vel;
+    vec4 _e23 = p.vel;
+    if ((dot(_e21, _e23) > 0.0)) {
+        uint _e30 = atomicAdd(moving[0], 1u);
+    }
+    vec4 _e39 = p.pos;
+    imageStore(heat, ivec2(int((i % 64u)), int((i / 64u))), vec4(_e39.xyz, 1.0));
     return;
 }
 
