@@ -49,6 +49,14 @@ impl<'a, 'd> Checker<'a, 'd> {
                 "local_size_y" => 1,
                 "local_size_z" => 2,
                 "version" | "name" => continue,
+                // dasSpirv's specialization-constant workgroup sizes.
+                id @ ("local_size_x_id" | "local_size_y_id" | "local_size_z_id") => {
+                    let targets: Vec<&str> = self.targets.iter().map(|t| t.name()).collect();
+                    let d = Diagnostic::error(format!("`{id}` (a workgroup size set by a specialization constant) is not supported by umbrac on {}", targets.join(", ")), arg.name.span)
+                        .with_note("give the size as `local_size_x = N`");
+                    self.diags.push(d);
+                    continue;
+                }
                 other => {
                     let mut d = Diagnostic::error(format!("unknown `{annot}` argument `{other}`"), arg.name.span)
                         .with_note(format!("`[{annot}(local_size_x = X, local_size_y = Y, local_size_z = Z)]` (each 1 when left out)"));
