@@ -1,6 +1,7 @@
 //! Issue 36: daslang's Vulkan dialect (dasSpirv's stages, resources at
 //! `@set`/`@binding`, `@push_constant`, stage I/O by `@location`, Vulkan
-//! conventions). dasVulkan's 15 tutorials (17 shader files) are compiled
+//! conventions). dasVulkan's 15 tutorials (17 shader files, two of them
+//! in `02_mandelbrot/window/`) are compiled
 //! where they stand, with the daslang tree as `--daslang-root`, to every
 //! target that can express them; every output is validated (naga inside
 //! the compiler, glslangValidator per file and per linked vertex/fragment
@@ -41,6 +42,8 @@ const FILES: &[(&str, Expect)] = &[
     // A read-write image (no `@readonly`/`@writeonly`, as dasSpirv writes
     // it): GLSL ES 3.10 and WGSL have those only for r32 formats.
     ("02_mandelbrot/mandelbrot_tut_shaders.das", Expect::Compiles { targets: STORAGE_IMAGE_TARGETS, programs: 0 }),
+    ("02_mandelbrot/window/mandelbrot_view_shaders.das", Expect::Compiles { targets: &[], programs: 1 }),
+    ("02_mandelbrot/window/mandelbrot_zoom_shaders.das", Expect::Compiles { targets: STORAGE_IMAGE_TARGETS, programs: 0 }),
     ("03_sdf/sdf_tut_shaders.das", Expect::Compiles { targets: STORAGE_IMAGE_TARGETS, programs: 0 }),
     ("04_cube/cube_tut_shaders.das", Expect::Compiles { targets: &[], programs: 1 }),
     ("05_instancing/instancing_tut_shaders.das", Expect::Compiles { targets: &[], programs: 1 }),
@@ -86,15 +89,19 @@ const FILES: &[(&str, Expect)] = &[
     ),
 ];
 
-/// Every shader file of dasVulkan's tutorials is in `FILES`.
+/// Every shader file of dasVulkan's tutorials (`*_shaders.das`, in
+/// subfolders too), relative to the tutorials folder: each must be in
+/// `FILES`.
 fn shader_files(tree: &std::path::Path) -> Vec<String> {
-    let dir = tree.join("modules/dasVulkan/tutorials");
+    let root = tree.join("modules/dasVulkan/tutorials");
     let mut out = Vec::new();
-    for t in std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()).filter(|p| p.is_dir()) {
-        for f in std::fs::read_dir(&t).unwrap().map(|e| e.unwrap().path()) {
-            let name = f.file_name().unwrap().to_string_lossy().into_owned();
-            if name.ends_with("_shaders.das") {
-                out.push(format!("{}/{name}", t.file_name().unwrap().to_string_lossy()));
+    let mut dirs = vec![root.clone()];
+    while let Some(dir) = dirs.pop() {
+        for p in std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()) {
+            if p.is_dir() {
+                dirs.push(p);
+            } else if p.file_name().unwrap().to_string_lossy().ends_with("_shaders.das") {
+                out.push(p.strip_prefix(&root).unwrap().to_string_lossy().replace('\\', "/"));
             }
         }
     }
@@ -109,6 +116,7 @@ fn dasvulkan_tutorials_compile_where_they_stand_or_are_refused_by_name() {
     listed.sort();
     let found = shader_files(&tree);
     // 15 tutorials, 17 files: the list names those that exist.
+    assert_eq!(found.len(), 17, "dasVulkan's tutorials have 17 shader files: {found:?}");
     assert!(found.iter().all(|f| listed.contains(f)), "shader files not in FILES: {found:?}");
     let mut failures = Vec::new();
     let (mut compiled_n, mut runs) = (0, 0);
