@@ -692,6 +692,10 @@ fn write_uniforms(w: &mut Writer, r: &Reflection, g: &Gen) {
         w.line(&format!("pub const BINDING: u32 = {};", b.binding));
         w.line("/// Buffer size in bytes.");
         w.line(&format!("pub const SIZE: u64 = {};", b.size));
+        if b.push_constant == Some(true) {
+            w.line("/// A `@push_constant`: write the bytes a Vulkan host would push into this buffer (docs/targets.md).");
+            w.line("pub const PUSH_CONSTANT: bool = true;");
+        }
         w.line("/// The buffer's std140 block in GLSL (glGetUniformBlockIndex + glUniformBlockBinding), if GLSL");
         w.line("/// declares one (a loose buffer only with `--gl-uniforms blocks`).");
         match &b.glsl_block {

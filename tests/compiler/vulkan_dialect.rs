@@ -244,6 +244,9 @@ fn push_constants_and_samplers_are_where_the_manifest_says() {
     assert_eq!(pc.glsl_block.as_deref(), Some("pc_ubo"));
     let wgsl = text(out, "pc.wgsl");
     assert!(wgsl.contains(&format!("@group({}) @binding({}) \nvar<uniform> pc", pc.group, pc.binding)), "{wgsl}");
+    let bindings = umbrac::bindgen::generate(out, &Default::default()).unwrap();
+    let pc_module = bindings.split("pub mod pc {").nth(1).expect("a module for the push constant");
+    assert!(pc_module.split("pub mod ").next().unwrap().contains("pub const PUSH_CONSTANT: bool = true;"), "{bindings}");
     let s = &out.reflection.samplers[0];
     assert_eq!((s.group, s.texture_binding, s.sampler_binding), (1, 3, 103));
     assert!(wgsl.contains("@group(1) @binding(103) \nvar tex_sampler"), "{wgsl}");
