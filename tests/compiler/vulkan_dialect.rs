@@ -237,12 +237,12 @@ fn both_dialects_in_one_file_link_by_their_own_rules_and_adapt_by_their_own_conv
 #[test]
 fn push_constants_and_samplers_are_where_the_manifest_says() {
     let src = "struct P {\n    k : float4\n}\nvar @push_constant pc : P\nvar @set = 1 @binding = 3 tex : sampler2D\nvar @out @location = 0 o : float4\n[fragment_shader]\ndef fs {\n    o = texture(tex, float2(0.5)) * pc.k\n}\n";
-    let c = umbrac::compile_source("pc.das", src, &Options::default());
+    let c = umbrac::compile_source("push.das", src, &Options::default());
     let out = c.result.as_ref().unwrap_or_else(|| panic!("{}", c.render_diagnostics()));
     let pc = out.reflection.uniform_buffers.iter().find(|u| u.name == "pc").unwrap();
     assert_eq!(pc.push_constant, Some(true));
     assert_eq!(pc.glsl_block.as_deref(), Some("pc_ubo"));
-    let wgsl = text(out, "pc.wgsl");
+    let wgsl = text(out, "push.wgsl");
     assert!(wgsl.contains(&format!("@group({}) @binding({}) \nvar<uniform> pc", pc.group, pc.binding)), "{wgsl}");
     let bindings = umbrac::bindgen::generate(out, &Default::default()).unwrap();
     let pc_module = bindings.split("pub mod pc {").nth(1).expect("a module for the push constant");
