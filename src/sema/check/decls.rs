@@ -605,7 +605,11 @@ impl<'a, 'd> Checker<'a, 'd> {
             self.diags.push(Diagnostic::error("`@writeonly` applies only to storage images; a storage buffer is read-write, or `@readonly`", span));
         }
         match ty {
-            // dasSpirv's `@ssbo x : array<T>`: the buffer is the array.
+            // dasSpirv's `@ssbo x : array<T>`: the buffer is the array, of
+            // plain values of one size.
+            Ty::RuntimeArray(e) if !e.is_error() && (!e.is_value() || self.is_unsized(e)) => {
+                self.diags.push(Diagnostic::error(format!("the elements of an `@ssbo` array must be plain values of one size, not `{}`", self.show(e)), ty_span));
+            }
             Ty::Struct(_) | Ty::RuntimeArray(_) => {
                 if let Some(msg) = self.storage_type_problem(ty) {
                     self.diags.push(Diagnostic::error(msg, ty_span));

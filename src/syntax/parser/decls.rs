@@ -474,7 +474,11 @@ impl<'m> Parser<'_, 'm> {
         // dasSpirv's `array<T>`: a run-time-sized array, as `T[]`.
         if self.peek().is(P::Lt) && self.text(&t) == "array" {
             self.bump();
-            let elem = self.ty()?;
+            // Nested `array<array<...>>` counts towards the nesting limit.
+            self.enter(t)?;
+            let elem = self.ty();
+            self.leave();
+            let elem = elem?;
             let close = self.expect(P::Gt)?;
             ty = TypeExpr { span: t.span.to(close.span), kind: TypeExprKind::RuntimeArray(Box::new(elem)) };
         }
