@@ -692,6 +692,10 @@ fn write_uniforms(w: &mut Writer, r: &Reflection, g: &Gen) {
         w.line(&format!("pub const BINDING: u32 = {};", b.binding));
         w.line("/// Buffer size in bytes.");
         w.line(&format!("pub const SIZE: u64 = {};", b.size));
+        if b.push_constant == Some(true) {
+            w.line("/// A `@push_constant`: write the bytes a Vulkan host would push into this buffer (docs/targets.md).");
+            w.line("pub const PUSH_CONSTANT: bool = true;");
+        }
         w.line("/// The buffer's std140 block in GLSL (glGetUniformBlockIndex + glUniformBlockBinding), if GLSL");
         w.line("/// declares one (a loose buffer only with `--gl-uniforms blocks`).");
         match &b.glsl_block {
@@ -1117,7 +1121,7 @@ mod tests {
 
     /// A loose buffer of these members.
     fn block(name: &str, ty: &str, size: u32, members: Vec<Member>) -> crate::emit::reflect_types::UniformBuffer {
-        crate::emit::reflect_types::UniformBuffer { name: name.into(), ty: ty.into(), loose: true, size, group: 0, binding: 9, glsl_block: None, glsl_binding: None, members }
+        crate::emit::reflect_types::UniformBuffer { name: name.into(), ty: ty.into(), loose: true, size, group: 0, binding: 9, glsl_block: None, glsl_binding: None, members, push_constant: None }
     }
 
     /// Layouts the checker never lets through still follow the manifest's

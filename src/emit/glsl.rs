@@ -185,6 +185,12 @@ pub fn write_entry(lowered: &Lowered, ep: &EntryInterface, profile: Profile) -> 
 /// compile, by source name: chosen once against what naga can call
 /// anything in the GL modules that have them ([`glsl_names::NamerLabels`]),
 /// so that both stages of a program, and every profile, agree.
+/// The GLSL name of the Vulkan-dialect varying at `location` (before
+/// `glsl_names` renames it where the program already has that name).
+pub fn vulkan_varying_name(location: u32) -> String {
+    format!("vk_location{location}")
+}
+
 pub struct VaryingNames<'a> {
     names: Vec<(&'a str, String)>,
     /// The plain uniforms naga's namer would rename in some GL module
@@ -202,6 +208,22 @@ impl<'a> VaryingNames<'a> {
             labels.add_module(&gl.module);
         }
         let mut names: Vec<(&str, String)> = Vec::new();
+        // The Vulkan dialect links varyings by location, under two source
+        // names: GL links by name, so both sides take one made of the
+        // location (`vk_location1`), which either side can derive.
+        for ep in with_io().filter(|ep| ep.dialect == crate::syntax::ast::Dialect::Vulkan) {
+            let varyings = match ep.stage {
+                naga::ShaderStage::Vertex => &ep.outputs,
+                naga::ShaderStage::Fragment => &ep.inputs,
+                _ => continue,
+            };
+            for var in varyings {
+                if names.iter().any(|(n, _)| *n == var.name) {
+                    continue;
+                }
+                names.push((&var.name, glsl_names::glsl_name(&vulkan_varying_name(var.location), |n| labels.taken(n))));
+            }
+        }
         for var in vars() {
             if !names.iter().any(|(n, _)| *n == var.name) {
                 names.push((&var.name, glsl_names::glsl_name(&var.name, |n| labels.taken(n))));

@@ -24,7 +24,7 @@ use super::glsl::{self, EntryNames};
 use super::glsl_names::digit;
 use super::reflect_types::{EntryPoint, Io, Member, ProgramLink, Reflection, Requirements, Sampler, SpecConstant, StorageBuffer, StorageImage, StructLayout, Uniform, UniformBuffer, REFLECTION_FORMAT};
 use crate::diag::Diagnostic;
-use crate::lower::{EntryInterface, GlUniforms, IoVar, Lowered, ResourceKind};
+use crate::lower::{EntryInterface, GlUniforms, Interface, IoVar, Lowered, ResourceKind};
 use crate::sema::{ConstValue, SamplerKind, Ty};
 use crate::target::Target;
 
@@ -472,6 +472,7 @@ pub fn build(
                     glsl_binding: glsl_block.as_ref().and_then(|_| iface.gl_block_points.get(ri).copied().flatten()),
                     glsl_block,
                     members,
+                    push_constant: iface.push_constants.contains(&r.name).then_some(true),
                 });
             }
             ResourceKind::Sampler(kind) => {
@@ -711,6 +712,7 @@ fn entry_point(
         }
     }
     let uniforms = ep.loose.iter().filter_map(|&u| iface.loose.get(u)).map(|u| u.name.clone()).collect();
+    let clip_space = vulkan_clip_space(ep, iface, &files);
     Ok(EntryPoint {
         name: ep.name.clone(),
         stage: stage_name(ep.stage).into(),
@@ -724,13 +726,35 @@ fn entry_point(
         workgroup_size: (ep.stage == ShaderStage::Compute).then_some(ep.workgroup_size),
         storage_buffers: (!storage_buffers.is_empty()).then_some(storage_buffers),
         storage_images: (!storage_images.is_empty()).then_some(storage_images),
+        dialect: (ep.dialect == crate::syntax::ast::Dialect::Vulkan).then(|| "vulkan".to_string()),
+        clip_space,
     })
+}
+
+/// What each target does to a Vulkan-dialect vertex entry point's
+/// `gl_Position` (`lower::entry`'s adaptation), by the target names of
+/// `files`.
+fn vulkan_clip_space(ep: &EntryInterface, iface: &Interface, files: &std::collections::BTreeMap<String, String>) -> Option<std::collections::BTreeMap<String, String>> {
+    if ep.dialect != crate::syntax::ast::Dialect::Vulkan || ep.stage != ShaderStage::Vertex {
+        return None;
+    }
+    let portable = iface.conventions == crate::lower::Conventions::Portable;
+    let what = |t: &str| match (portable, t) {
+        (false, _) => "none",
+        (true, "wgsl" | "spirv") => "y' = -y",
+        (true, _) => "z' = 2z - w",
+    };
+    Some(files.keys().map(|t| (t.clone(), what(t).to_string())).collect())
 }
 
 /// The members of a storage buffer's struct at their std430 offsets (naga's
 /// natural layout, WGSL's storage rules, is std430's), the size before a
 /// run-time-sized array, and that array's stride.
 fn storage_members(module: &Module, ty: naga::Handle<naga::Type>) -> (Vec<Member>, u32, Option<u32>) {
+    // dasSpirv's `@ssbo x : array<T>`: the buffer is the run-time array.
+    if let naga::TypeInner::Array { size: ArraySize::Dynamic, stride, .. } = module.types[ty].inner {
+        return (Vec::new(), 0, Some(stride));
+    }
     let naga::TypeInner::Struct { members, span } = &module.types[ty].inner else { return (Vec::new(), 0, None) };
     let mut out = Vec::with_capacity(members.len());
     let mut runtime = None;

@@ -162,6 +162,15 @@ pub struct EntryPoint {
     /// Names of the storage images (`StorageImage::name`) it uses, where any.
     #[cfg_attr(feature = "deserialize", serde(default))]
     pub storage_images: Option<Vec<String>>,
+    /// `"vulkan"` for an entry point of daslang's Vulkan dialect (absent
+    /// for the GL dialect): stage I/O by location, Vulkan conventions.
+    #[cfg_attr(feature = "deserialize", serde(default))]
+    pub dialect: Option<String>,
+    /// A Vulkan-dialect vertex entry point: the clip-space adaptation each
+    /// target's output applies to `gl_Position` (`"none"`,
+    /// `"z' = 2z - w"`, `"y' = -y"`; docs/targets.md).
+    #[cfg_attr(feature = "deserialize", serde(default))]
+    pub clip_space: Option<std::collections::BTreeMap<String, String>>,
 }
 
 /// An `@ssbo` storage buffer: std430 (WGSL's storage layout, the same).
@@ -268,6 +277,11 @@ pub struct UniformBuffer {
     pub glsl_binding: Option<u32>,
     /// Members with byte offsets.
     pub members: Vec<Member>,
+    /// `true` for a `@push_constant` (absent otherwise): a uniform buffer
+    /// at its `group`/`binding` on WGSL/SPIR-V, the `glsl_block` on GL
+    /// (docs/targets.md, "Push constants").
+    #[cfg_attr(feature = "deserialize", serde(default))]
+    pub push_constant: Option<bool>,
 }
 
 /// A loose uniform: a member of its group's uniform buffer, a plain
@@ -437,6 +451,8 @@ serialize_struct!(EntryPoint {
     "workgroup_size": workgroup_size?,
     "storage_buffers": storage_buffers?,
     "storage_images": storage_images?,
+    "dialect": dialect?,
+    "clip_space": clip_space?,
 });
 
 serialize_struct!(StorageBuffer {
@@ -486,6 +502,7 @@ serialize_struct!(UniformBuffer {
     "glsl_block": glsl_block?,
     "glsl_binding": glsl_binding?,
     "members": members,
+    "push_constant": push_constant?,
 });
 
 serialize_struct!(Uniform {

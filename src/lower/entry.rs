@@ -13,6 +13,7 @@ use super::reach::{is_stage_input, is_stage_output};
 use crate::diag::Diagnostic;
 use crate::sema::{self, BuiltinVar, GlobalKind, Scalar, Ty};
 use crate::source::Span;
+use crate::syntax::ast::Dialect;
 
 impl FnBuilder<'_, '_> {
     /// Entry prologue: input `gid` arrives as argument `index` (builtin
@@ -75,8 +76,13 @@ impl FnBuilder<'_, '_> {
             return;
         };
         let members: Vec<_> = outs.members.clone();
-        let stage = outs.stage;
-        let adapt = self.m.flavor == Flavor::Gpu(Conventions::Portable) && stage == naga::ShaderStage::Vertex;
+        let adapt = match (outs.stage, outs.dialect, self.m.flavor) {
+            (naga::ShaderStage::Vertex, _, _) if self.m.conventions == Conventions::Native => None,
+            (naga::ShaderStage::Vertex, Dialect::Gl, Flavor::Gpu(_)) => Some(ClipAdapt::GlToGpu),
+            (naga::ShaderStage::Vertex, Dialect::Vulkan, Flavor::Gpu(_)) => Some(ClipAdapt::VulkanToGpu),
+            (naga::ShaderStage::Vertex, Dialect::Vulkan, Flavor::Gl) => Some(ClipAdapt::VulkanToGl),
+            _ => None,
+        };
         let mut comps = Vec::with_capacity(members.len());
         for (g, builtin, ty) in members {
             let mut v = match g {
@@ -86,8 +92,8 @@ impl FnBuilder<'_, '_> {
                 }
                 None => self.append_plain(E::ZeroValue(ty), s),
             };
-            if adapt && builtin == Some(BuiltinVar::Position) {
-                v = self.adapt_clip_space(v, s);
+            if let (Some(how), Some(BuiltinVar::Position)) = (adapt, builtin) {
+                v = self.adapt_clip_space(v, how, s);
             }
             comps.push(v);
         }
@@ -95,24 +101,47 @@ impl FnBuilder<'_, '_> {
         self.push(block, Statement::Return { value: Some(value) }, s);
     }
 
-    /// GL clip space to WebGPU/Vulkan: z' = (z + w) / 2, y' = -y.
-    pub(super) fn adapt_clip_space(&mut self, p: Handle<E>, s: Span) -> Handle<E> {
+    /// The clip-space adaptation `how` (docs/targets.md): GL clip space to
+    /// WebGPU: z' = (z + w) / 2, y' = -y; Vulkan clip space to WebGPU
+    /// (wgpu drives Vulkan with a flipped viewport): y' = -y; Vulkan clip
+    /// space to GL: z' = 2z - w (row 0 is NDC y = -1 in both).
+    pub(super) fn adapt_clip_space(&mut self, p: Handle<E>, how: ClipAdapt, s: Span) -> Handle<E> {
         let x = self.append(E::AccessIndex { base: p, index: 0 }, s);
-        let y = self.append(E::AccessIndex { base: p, index: 1 }, s);
-        let z = self.append(E::AccessIndex { base: p, index: 2 }, s);
+        let mut y = self.append(E::AccessIndex { base: p, index: 1 }, s);
+        let mut z = self.append(E::AccessIndex { base: p, index: 2 }, s);
         let w = self.append(E::AccessIndex { base: p, index: 3 }, s);
-        let ny = self.append(E::Unary { op: naga::UnaryOperator::Negate, expr: y }, s);
-        let zw = self.append(E::Binary { op: naga::BinaryOperator::Add, left: z, right: w }, s);
-        let half = self.append_plain(E::Literal(naga::Literal::F32(0.5)), s);
-        let nz = self.append(E::Binary { op: naga::BinaryOperator::Multiply, left: zw, right: half }, s);
+        if how != ClipAdapt::VulkanToGl {
+            y = self.append(E::Unary { op: naga::UnaryOperator::Negate, expr: y }, s);
+        }
+        match how {
+            ClipAdapt::GlToGpu => {
+                let zw = self.append(E::Binary { op: naga::BinaryOperator::Add, left: z, right: w }, s);
+                let half = self.append_plain(E::Literal(naga::Literal::F32(0.5)), s);
+                z = self.append(E::Binary { op: naga::BinaryOperator::Multiply, left: zw, right: half }, s);
+            }
+            ClipAdapt::VulkanToGl => {
+                let two = self.append_plain(E::Literal(naga::Literal::F32(2.0)), s);
+                let z2 = self.append(E::Binary { op: naga::BinaryOperator::Multiply, left: z, right: two }, s);
+                z = self.append(E::Binary { op: naga::BinaryOperator::Subtract, left: z2, right: w }, s);
+            }
+            ClipAdapt::VulkanToGpu => {}
+        }
         let ty = self.m.ty(&Ty::Vector(Scalar::Float, 4));
-        self.append(E::Compose { ty, components: vec![x, ny, nz, w] }, s)
+        self.append(E::Compose { ty, components: vec![x, y, z, w] }, s)
     }
 }
 
-fn interpolation(ty: &Ty) -> (Option<naga::Interpolation>, Option<naga::Sampling>) {
+/// Which clip-space adaptation a vertex entry point's position gets.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(super) enum ClipAdapt {
+    GlToGpu,
+    VulkanToGpu,
+    VulkanToGl,
+}
+
+fn interpolation(ty: &Ty, flat: bool) -> (Option<naga::Interpolation>, Option<naga::Sampling>) {
     match ty.scalar() {
-        Some(Scalar::Float) => (Some(naga::Interpolation::Perspective), Some(naga::Sampling::Center)),
+        Some(Scalar::Float) if !flat => (Some(naga::Interpolation::Perspective), Some(naga::Sampling::Center)),
         _ => (Some(naga::Interpolation::Flat), None),
     }
 }
@@ -127,7 +156,7 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
     use naga::ShaderStage::{Fragment, Vertex};
     let p = m.p;
     let stage = ep.stage;
-    let mut iface = EntryInterface { name: ep.name.clone(), stage, index, inputs: Vec::new(), outputs: Vec::new(), builtins: Vec::new(), resources: Vec::new(), loose: Vec::new(), workgroup_size: ep.workgroup_size, workgroup: Vec::new(), span: ep.annotation };
+    let mut iface = EntryInterface { name: ep.name.clone(), stage, index, inputs: Vec::new(), outputs: Vec::new(), builtins: Vec::new(), resources: Vec::new(), loose: Vec::new(), workgroup_size: ep.workgroup_size, workgroup: Vec::new(), span: ep.annotation, dialect: ep.dialect };
     // Only the GPU module's interface is kept (`lower_gl_entry` drops its
     // own): a GL module leaves the lists empty.
     let describe = m.flavor != Flavor::Gl;
@@ -174,7 +203,7 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
             let (binding, arg_ty, to_int) = match g.kind {
                 GlobalKind::Io { .. } => {
                     let l = ep.location(gid);
-                    let interp = if stage == Fragment { interpolation(&g.ty) } else { (None, None) };
+                    let interp = if stage == Fragment { interpolation(&g.ty, p.flat.contains(&gid)) } else { (None, None) };
                     if describe {
                         let dsl_type = m.show_ty(&g.ty);
                         iface.inputs.push(IoVar { name: g.name.clone(), location: l, explicit_location: matches!(g.kind, GlobalKind::Io { location: Some(_), .. }), span: g.span, ty, dsl_type, interpolation: interp.0 });
@@ -226,7 +255,7 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
                             .with_note("`@out` and `@inout` variables written by one vertex entry point share the output locations"));
                     }
                     seen_out.push((l, g.span));
-                    let interp = if stage == Vertex { interpolation(&g.ty) } else { (None, None) };
+                    let interp = if stage == Vertex { interpolation(&g.ty, p.flat.contains(&gid)) } else { (None, None) };
                     if describe {
                         let dsl_type = m.show_ty(&g.ty);
                         iface.outputs.push(IoVar { name: g.name.clone(), location: l, explicit_location: matches!(g.kind, GlobalKind::Io { location: Some(_), .. }), span: g.span, ty, dsl_type, interpolation: interp.0 });
@@ -253,7 +282,7 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
     iface.outputs.sort_by_key(|v| v.location);
     let members = outs.iter().map(|o| (o.0, o.1, o.2)).collect();
     let result_ty = (!outs.is_empty()).then(|| m.struct_type([&ep.name, "_out"].concat(), outs.into_iter().map(|o| (o.4, o.2, Some(o.3))).collect()));
-    let kind = FnKind::Entry(EntryOutputs { result_ty, members, stage });
+    let kind = FnKind::Entry(EntryOutputs { result_ty, members, stage, dialect: ep.dialect });
     let mut b = FnBuilder::new(m, &ep.name, &ep.func.locals, kind);
     b.vertex_lod = stage == Vertex;
     // The prologue's stores, then the statements.

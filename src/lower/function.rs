@@ -45,6 +45,7 @@ pub(super) struct EntryOutputs {
     /// ignores it): zero.
     pub(super) members: Vec<(Option<sema::GlobalId>, Option<BuiltinVar>, Handle<naga::Type>)>,
     pub(super) stage: naga::ShaderStage,
+    pub(super) dialect: crate::syntax::ast::Dialect,
 }
 
 pub(super) struct FnBuilder<'m, 'p> {

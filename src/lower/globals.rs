@@ -83,7 +83,10 @@ impl ModuleBuilder<'_> {
                             None => g.name.clone(),
                         };
                         let sampler_name = [&gname, "_sampler"].concat();
-                        let (tb, sb) = (binding + 2 * i, binding + 2 * i + 1);
+                        let (tb, sb) = match self.p.vulkan {
+                            true => (binding, binding + sema::VULKAN_SAMPLER_OFFSET),
+                            false => (binding + 2 * i, binding + 2 * i + 1),
+                        };
                         let image = self.add_global(gname, naga::AddressSpace::Handle, with_binding.then_some(naga::ResourceBinding { group, binding: tb }), image_ty, None, span);
                         let sampler = self.add_global(sampler_name, naga::AddressSpace::Handle, with_binding.then_some(naga::ResourceBinding { group, binding: sb }), sampler_ty, None, span);
                         self.sampler_elems.push((image, sampler));
@@ -114,6 +117,8 @@ impl ModuleBuilder<'_> {
                     let atomic: Vec<u32> = self.p.atomics.iter().filter(|(a, _)| *a == gid).filter_map(|(_, m)| *m).collect();
                     let ty = match g.ty {
                         sema::Ty::Struct(sid) => self.types.storage_struct_type(&mut self.module, self.p, sid, &atomic),
+                        // A bare run-time array (`array<uint>`) atomics operate on.
+                        _ if self.p.atomics.contains(&(gid, None)) => self.types.atomic_type(&mut self.module, self.p, &g.ty),
                         _ => self.ty(&g.ty),
                     };
                     let h = self.add_global(g.name.clone(), naga::AddressSpace::Storage { access: access.naga() }, with_binding.then_some(naga::ResourceBinding { group, binding }), ty, None, span);

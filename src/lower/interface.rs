@@ -163,11 +163,16 @@ pub struct EntryInterface {
     pub workgroup: Vec<(String, Span)>,
     /// The entry point's stage annotation (`[compute_program(...)]`).
     pub span: Span,
+    /// The dialect it is written in (its conventions, its varyings' GL names).
+    pub dialect: crate::syntax::ast::Dialect,
 }
 
 #[derive(Clone, Debug, Default)]
 pub struct Interface {
     pub conventions: Conventions,
+    /// The names of the `@push_constant` globals: uniform buffers, marked
+    /// in the manifest.
+    pub push_constants: Vec<String>,
     pub gl_uniforms: GlUniforms,
     pub resources: Vec<Resource>,
     /// The loose uniforms any entry point reads, in declaration order.

@@ -70,7 +70,7 @@ pub fn lower(program: &sema::Program, options: impl Into<LowerOptions>) -> Resul
     let (gpu, gpu_info, mut interface) = gpu(program, options.conventions, &reach)?;
     interface.gl_uniforms = options.gl_uniforms;
     interface.gl_block_points = uniforms::gl_block_points(program, &interface.resources, options.gl_uniforms);
-    let gl = (0..program.entry_points.len()).map(|i| gl_entry(program, i, options.gl_uniforms, &reach)).collect::<Result<_, _>>()?;
+    let gl = (0..program.entry_points.len()).map(|i| gl_entry(program, i, options.conventions, options.gl_uniforms, &reach)).collect::<Result<_, _>>()?;
     Ok(Lowered { gl, gpu, gpu_info, interface })
 }
 
@@ -80,7 +80,7 @@ pub fn lower_gpu(program: &sema::Program, conventions: Conventions) -> Result<(n
 }
 
 fn gpu(program: &sema::Program, conventions: Conventions, reach: &Reach) -> Result<(naga::Module, naga::valid::ModuleInfo, Interface), Diagnostic> {
-    let (mut gpu, mut interface, _) = build(program, Flavor::Gpu(conventions), GlUniforms::default(), None, reach)?;
+    let (mut gpu, mut interface, _) = build(program, Flavor::Gpu(conventions), conventions, GlUniforms::default(), None, reach)?;
     declare_f16_if_used(&mut gpu);
     #[cfg(debug_assertions)]
     let gpu = fault::inject(gpu);
@@ -107,14 +107,15 @@ fn declare_f16_if_used(module: &mut naga::Module) {
     }
 }
 
-/// The validated GL module of entry point `index` alone.
-pub fn lower_gl_entry(program: &sema::Program, index: usize, gl_uniforms: GlUniforms) -> Result<GlEntry, Diagnostic> {
-    gl_entry(program, index, gl_uniforms, &Reach::of(program))
+/// The validated GL module of entry point `index` alone (`conventions`:
+/// whether a Vulkan-dialect vertex entry point's depth is adapted).
+pub fn lower_gl_entry(program: &sema::Program, index: usize, conventions: Conventions, gl_uniforms: GlUniforms) -> Result<GlEntry, Diagnostic> {
+    gl_entry(program, index, conventions, gl_uniforms, &Reach::of(program))
 }
 
 /// [`lower_gl_entry`] with the program's reach already computed.
-fn gl_entry(program: &sema::Program, index: usize, gl_uniforms: GlUniforms, reach: &Reach) -> Result<GlEntry, Diagnostic> {
-    let (module, _, uniforms) = build(program, Flavor::Gl, gl_uniforms, Some(index), reach)?;
+fn gl_entry(program: &sema::Program, index: usize, conventions: Conventions, gl_uniforms: GlUniforms, reach: &Reach) -> Result<GlEntry, Diagnostic> {
+    let (module, _, uniforms) = build(program, Flavor::Gl, conventions, gl_uniforms, Some(index), reach)?;
     let info = validate::validate(&module, Flavor::Gl)?;
     Ok(GlEntry { module, info, uniforms })
 }
@@ -126,11 +127,12 @@ fn gl_entry(program: &sema::Program, index: usize, gl_uniforms: GlUniforms, reac
 fn build(
     p: &sema::Program,
     flavor: Flavor,
+    conventions: Conventions,
     gl_uniforms: GlUniforms,
     only: Option<usize>,
     reach: &Reach,
 ) -> Result<(naga::Module, Interface, Vec<(naga::Handle<naga::GlobalVariable>, String)>), Diagnostic> {
-    let mut m = ModuleBuilder::new(p, flavor, gl_uniforms);
+    let mut m = ModuleBuilder::new(p, flavor, conventions, gl_uniforms);
     m.allow_nonuniform_derivatives();
     let io = EntryIo::of(p, only, reach);
     let only_ep = only.map(|i| &p.entry_points[i]);
@@ -160,6 +162,7 @@ fn build(
     };
     let interface = Interface {
         conventions: Conventions::default(),
+        push_constants: p.push_constants.iter().map(|&g| p.globals[g].name.clone()).collect(),
         gl_uniforms,
         resources: std::mem::take(&mut m.resources),
         loose: std::mem::take(&mut m.loose),

@@ -36,6 +36,9 @@ pub(super) struct ModuleBuilder<'p> {
     pub(super) p: &'p sema::Program,
     pub(super) module: Module,
     pub(super) flavor: Flavor,
+    /// Portable or native: which clip-space adaptation vertex entry points
+    /// get (in the GL modules too, for Vulkan-dialect code).
+    pub(super) conventions: super::interface::Conventions,
     pub(super) types: TypeTable,
     pub(super) globals: Vec<GlobalSlot>,
     /// Per sema constant, once declared (all up front for a whole-program
@@ -92,11 +95,12 @@ pub(super) struct Specialised {
 }
 
 impl<'p> ModuleBuilder<'p> {
-    pub(super) fn new(p: &'p sema::Program, flavor: Flavor, gl_uniforms: GlUniforms) -> Self {
+    pub(super) fn new(p: &'p sema::Program, flavor: Flavor, conventions: super::interface::Conventions, gl_uniforms: GlUniforms) -> Self {
         ModuleBuilder {
             p,
             module: Module::default(),
             flavor,
+            conventions,
             types: TypeTable::for_flavor(flavor),
             globals: Vec::with_capacity(p.globals.len()),
             consts: vec![None; p.consts.len()],

@@ -130,6 +130,7 @@ pub fn reflection() -> Reflection {
         glsl_block: None,
         glsl_binding: None,
         members,
+        push_constant: None,
     }];
     let uniforms: Vec<Uniform> = UNIFORMS
         .iter()
@@ -178,6 +179,8 @@ pub fn reflection() -> Reflection {
             workgroup_size: None,
             storage_buffers: None,
             storage_images: None,
+            dialect: None,
+            clip_space: None,
         },
         EntryPoint {
             name: "shadow_fs".into(),
@@ -192,6 +195,8 @@ pub fn reflection() -> Reflection {
             workgroup_size: None,
             storage_buffers: None,
             storage_images: None,
+            dialect: None,
+            clip_space: None,
         },
         EntryPoint {
             name: "main_vs".into(),
@@ -206,6 +211,8 @@ pub fn reflection() -> Reflection {
             workgroup_size: None,
             storage_buffers: None,
             storage_images: None,
+            dialect: None,
+            clip_space: None,
         },
         EntryPoint {
             name: "main_fs".into(),
@@ -220,6 +227,8 @@ pub fn reflection() -> Reflection {
             workgroup_size: None,
             storage_buffers: None,
             storage_images: None,
+            dialect: None,
+            clip_space: None,
         },
     ];
     Reflection {

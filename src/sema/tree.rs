@@ -13,6 +13,12 @@ pub type ConstId = usize;
 pub type FuncId = usize;
 pub type LocalId = usize;
 
+/// In the Vulkan dialect a `sampler2D` at `@binding = B` is one combined
+/// image-sampler; naga has none, so the GPU module (WGSL, SPIR-V) binds its
+/// texture at B and its sampler at B + this, in the same group
+/// (docs/targets.md). Bindings written in that dialect stay below it.
+pub const VULKAN_SAMPLER_OFFSET: u32 = 100;
+
 #[derive(Debug, Default)]
 pub struct Program {
     pub structs: Vec<StructDef>,
@@ -30,6 +36,15 @@ pub struct Program {
     /// (`Some(member)`). Lowering gives them atomic types, which plain
     /// reads and writes of them load and store.
     pub atomics: std::collections::BTreeSet<(GlobalId, Option<u32>)>,
+    /// The `@push_constant` globals (uniform buffers on every target; the
+    /// manifest marks them).
+    pub push_constants: std::collections::BTreeSet<GlobalId>,
+    /// The `@flat` interface globals (no interpolation).
+    pub flat: std::collections::BTreeSet<GlobalId>,
+    /// The program has Vulkan-dialect entry points: its resources follow
+    /// dasSpirv's rules (a sampler's sampler half at
+    /// `binding + VULKAN_SAMPLER_OFFSET`, storage images rgba8 by default).
+    pub vulkan: bool,
     /// The `@binding = N` written on a global, where one is.
     pub written_bindings: std::collections::BTreeMap<GlobalId, u32>,
 }
@@ -373,6 +388,9 @@ pub struct EntryPoint {
     /// Its stage annotation (`[compute_program(...)]`), where limits on the
     /// workgroup point.
     pub annotation: Span,
+    /// The dialect its stage annotation names: Vulkan-dialect entry points
+    /// link stage I/O by location and are written in Vulkan conventions.
+    pub dialect: crate::syntax::ast::Dialect,
 }
 
 impl EntryPoint {

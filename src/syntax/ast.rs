@@ -72,6 +72,65 @@ pub struct Annotation {
     pub span: Span,
 }
 
+/// Which of daslang's two shader dialects an entry point is written in:
+/// the GL one (`[vertex_program]`, GL conventions, varyings by name) or
+/// dasSpirv's Vulkan one (`[vertex_shader]`, `[vulkan_vertex_shader]`,
+/// Vulkan conventions, stage I/O by `@location`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
+pub enum Dialect {
+    #[default]
+    Gl,
+    Vulkan,
+}
+
+/// What a stage annotation names: the stage (`None` for a stage of the
+/// Vulkan dialect umbrac does not compile: mesh, task, ray tracing) and
+/// the dialect.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct StageAnnotation {
+    pub stage: Option<naga::ShaderStage>,
+    pub dialect: Dialect,
+}
+
+/// The stages of dasSpirv/dasVulkan umbrac recognises but does not compile,
+/// with the name of the stage (for the refusal).
+pub const UNCOMPILED_STAGES: &[(&str, &str)] = &[
+    ("mesh_shader", "mesh"),
+    ("task_shader", "task"),
+    ("vulkan_mesh_shader", "mesh"),
+    ("vulkan_task_shader", "task"),
+    ("vulkan_raygen_shader", "ray generation"),
+    ("vulkan_miss_shader", "miss"),
+    ("vulkan_closest_hit_shader", "closest-hit"),
+    ("vulkan_any_hit_shader", "any-hit"),
+    ("vulkan_intersection_shader", "intersection"),
+    ("vulkan_callable_shader", "callable"),
+];
+
+/// The one table of stage annotations: every place that asks "is this an
+/// entry point, of which stage and dialect" asks here.
+pub fn stage_annotation(name: &str) -> Option<StageAnnotation> {
+    use naga::ShaderStage as S;
+    let (stage, dialect) = match name {
+        "vertex_program" => (Some(S::Vertex), Dialect::Gl),
+        "fragment_program" => (Some(S::Fragment), Dialect::Gl),
+        "compute_program" => (Some(S::Compute), Dialect::Gl),
+        "vertex_shader" | "vulkan_vertex_shader" => (Some(S::Vertex), Dialect::Vulkan),
+        "fragment_shader" | "vulkan_fragment_shader" => (Some(S::Fragment), Dialect::Vulkan),
+        "compute_shader" | "vulkan_compute_shader" => (Some(S::Compute), Dialect::Vulkan),
+        _ if UNCOMPILED_STAGES.iter().any(|&(a, _)| a == name) => (None, Dialect::Vulkan),
+        _ => return None,
+    };
+    Some(StageAnnotation { stage, dialect })
+}
+
+impl FunctionDecl {
+    /// The entry point annotation, if any, and what it names.
+    pub fn stage_annotation(&self) -> Option<(&Annotation, StageAnnotation)> {
+        self.annotations.iter().find_map(|a| stage_annotation(&a.name.name).map(|s| (a, s)))
+    }
+}
+
 #[derive(Clone, Debug)]
 pub struct AnnotationArg {
     pub name: Ident,

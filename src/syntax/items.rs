@@ -3,8 +3,8 @@
 //! The token stream of a whole daslang file is cut into top-level items by
 //! balanced `()[]{}` without parsing them. Then the shader part is picked:
 //! every global `var` with a shader qualifier (`@uniform`, `@in`, `@out`,
-//! `@inout`, ...), every `def` annotated `[vertex_program]`,
-//! `[fragment_program]` or `[compute_program]` (filtered by the requested
+//! `@inout`, ...), every `def` with a stage annotation (`[vertex_program]`,
+//! `[vulkan_vertex_shader]`, ...: `ast::stage_annotation`; filtered by the requested
 //! entries), and the
 //! `let` constants, functions and structs those reach by name. Nothing else
 //! is parsed, so host code can hold anything.
@@ -240,7 +240,7 @@ pub fn split(toks: &[Token], map: &SourceMap) -> Vec<RawItem> {
         // `[` `fragment_program` `]` may be written over several lines.
         let after_open = |a: usize| toks[..a].iter().rev().find(|t| t.kind != TokKind::Newline).is_some_and(|t| matches!(t.kind, TokKind::P(P::LBracket | P::Comma)));
         let entry = annots.clone().any(|a| {
-            toks[a].kind == TokKind::Ident && after_open(a) && matches!(texts.get(toks[a].span), "vertex_program" | "fragment_program" | "compute_program")
+            toks[a].kind == TokKind::Ident && after_open(a) && super::ast::stage_annotation(texts.get(toks[a].span)).is_some()
         });
         let kind = match toks[i].kind {
             TokKind::Kw(Kw::Def) => ItemKind::Def,
@@ -481,7 +481,8 @@ pub fn select(
             diags.push(
                 Diagnostic::error("no entry points: no function is annotated `[vertex_program]` or `[fragment_program]`", root_span)
                     .with_label("in this file")
-                    .with_note("help: annotate a shader function, e.g. `[vertex_program]` on the line before `def main_vs {`"),
+                    .with_note("help: annotate a shader function, e.g. `[vertex_program]` on the line before `def main_vs {`")
+                    .with_note("the Vulkan dialect's stages are `[vertex_shader]`, `[fragment_shader]`, `[compute_shader]` and their `[vulkan_*_shader]` forms"),
             );
         }
         return Vec::new();

@@ -113,6 +113,7 @@ fn snippets() -> BTreeMap<&'static str, String> {
     add("bind-groups", frag("var @uniform @set = 1 @binding = 2 u_a : float4\nvar @uniform @set = 1 t : sampler2D\nvar @uniform u_b : float4", "    f_color = u_a + u_b + texture(t, float2(0.5))"));
     add("push-constant", frag("var @push_constant pc_tint : float4", "    f_color = pc_tint"));
     gl_dialect(&mut add);
+    vulkan_dialect(&mut add);
     compute(&mut add);
     functions_and_data(&mut add);
     for (id, src) in snippets_language_l() {
@@ -152,6 +153,25 @@ fn gl_dialect(add: &mut impl FnMut(&'static str, String)) {
     add("cpu-only-lattice", frag("", "    let b = byte8(1)\n    var h : half8\n    f_color = float4(1.0)"));
     add("cpu-only-calls", frag("", "    var v = float4(1.0)\n    memzero(v)\n    f_color = v"));
     add("host-expressions", frag("", "    var a = 1.0\n    let b = cast<int> a\n    f_color = float4(a ?? 2.0)"));
+}
+
+/// daslang's Vulkan dialect (issue 36): its stages, resources at
+/// `@set`/`@binding`, push constants, stage I/O by location, `@flat`; the
+/// stages umbrac does not compile, refused. Rows of the compute table's
+/// shape (six targets).
+fn vulkan_dialect(add: &mut impl FnMut(&'static str, String)) {
+    let pair = |vs_decls: &str, vs_body: &str, fs_decls: &str, fs_body: &str| {
+        format!("{vs_decls}\n[vulkan_vertex_shader(name=\"v\")]\ndef vs {{\n{vs_body}\n    gl_Position = float4(0.0, 0.0, 0.0, 1.0)\n}}\n{fs_decls}\nvar @out @location = 0 o_color : float4\n[fragment_shader]\ndef fs {{\n{fs_body}\n}}\n")
+    };
+    add("vulkan-stages", pair("var @in @location = 0 a_pos : float3\nvar @out @location = 1 v_n : float3", "    v_n = a_pos", "var @in @location = 1 f_n : float3", "    o_color = float4(f_n, 1.0)"));
+    add("vulkan-flat", pair("var @out @flat @location = 0 v_w : float\nvar @out @location = 1 v_id : int", "    v_w = 1.0\n    v_id = gl_VertexIndex", "var @in @flat @location = 0 f_w : float\nvar @in @location = 1 f_id : int", "    o_color = float4(f_w, float(f_id), 0.0, 1.0)"));
+    add("vulkan-location-mismatch", pair("var @out @location = 0 v_n : float3", "    v_n = float3(1.0)", "var @in @location = 0 f_n : float2", "    o_color = float4(f_n, 0.0, 1.0)"));
+    add("vulkan-resources", pair("struct Cam {\n    vp : float4x4\n}\nvar @uniform @set = 0 @binding = 0 cam : Cam", "    let p = cam.vp * float4(1.0)\n    v_p = p.x", "var @set = 0 @binding = 1 tex : sampler2D\nvar @uniform @set = 1 @binding = 0 depth : sampler2DShadow\nvar @in @location = 0 f_p : float", "    o_color = texture(tex, float2(f_p)) * textureCompare(depth, float2(0.5), f_p)").replace("[vulkan_vertex_shader", "var @out @location = 0 v_p : float\n[vulkan_vertex_shader"));
+    add("vulkan-push-constant", pair("struct Push {\n    model : float4x4\n    tint : float4\n}\nvar @push_constant pc : Push\nvar @out @location = 0 v_c : float4", "    v_c = pc.model * pc.tint", "var @in @location = 0 f_c : float4", "    o_color = f_c * pc.tint"));
+    add("vulkan-compute", "struct P {\n    pos : float4\n}\nvar @ssbo @set = 0 @binding = 0 ps : array<P>\nvar @writeonly @set = 0 @binding = 1 img : image2D\nvar @ssbo @set = 0 @binding = 2 n : array<uint>\n[vulkan_compute_shader(local_size_x=64)]\ndef cs {\n    let i = gl_GlobalInvocationID.x\n    ps[i].pos += float4(1.0)\n    atomicAdd(n[0], 1u)\n    imageStore(img, int2(int(i), 0), ps[i].pos)\n}\n".to_string());
+    add("vulkan-descriptor-array", pair("", "", "var @set = 0 @binding = 0 ts : sampler2D[4]", "    o_color = texture(ts[1], float2(0.5))"));
+    add("vulkan-mesh-task-stages", "[vulkan_mesh_shader(local_size_x=1, max_vertices=3, max_primitives=1)]\ndef ms {\n    SetMeshOutputsEXT(3u, 1u)\n}\n".to_string());
+    add("vulkan-ray-tracing-stages", "[vulkan_raygen_shader(name=\"rgen\")]\ndef rgen {\n    let g = gl_LaunchIDEXT\n}\n".to_string());
 }
 
 fn functions_and_data(add: &mut impl FnMut(&'static str, String)) {

@@ -49,3 +49,4 @@ mod syntax;
 mod tutorials;
 #[cfg(feature = "deserialize")]
 mod validate;
+mod vulkan_dialect;

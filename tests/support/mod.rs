@@ -177,6 +177,7 @@ fn interface_of(m: &naga::Module, info: &naga::valid::ModuleInfo) -> Interface {
             workgroup_size: ep.workgroup_size,
             workgroup: vec![],
             span: Default::default(),
+            dialect: Default::default(),
         };
         let visit = |name: Option<&String>, ty, binding: Option<&naga::Binding>, output: bool, e: &mut EntryInterface| match binding {
             Some(naga::Binding::Location { location, interpolation, .. }) => {
@@ -216,7 +217,7 @@ fn interface_of(m: &naga::Module, info: &naga::valid::ModuleInfo) -> Interface {
         entry_points.push(e);
     }
     let links = umbrac_links(&entry_points);
-    Interface { conventions: Conventions::Portable, gl_uniforms: Default::default(), resources, entry_points, links, gl_block_points: Vec::new(), loose: Vec::new() }
+    Interface { conventions: Conventions::Portable, push_constants: Vec::new(), gl_uniforms: Default::default(), resources, entry_points, links, gl_block_points: Vec::new(), loose: Vec::new() }
 }
 
 /// The repository root.

@@ -40,7 +40,8 @@ impl<'a, 'd> Checker<'a, 'd> {
     /// is accepted and has no effect: each target has its own.
     pub(super) fn workgroup_size(&mut self, decl: &'a ast::FunctionDecl) -> [u32; 3] {
         let mut size = [1u32; 3];
-        let Some(a) = decl.annotations.iter().find(|a| a.name.name == "compute_program") else { return size };
+        let Some((a, sa)) = decl.stage_annotation().filter(|(_, s)| s.stage == Some(naga::ShaderStage::Compute)) else { return size };
+        let annot = a.name.name.as_str();
         let mut given = false;
         for arg in &a.args {
             let axis = match arg.name.name.as_str() {
@@ -48,9 +49,17 @@ impl<'a, 'd> Checker<'a, 'd> {
                 "local_size_y" => 1,
                 "local_size_z" => 2,
                 "version" | "name" => continue,
+                // dasSpirv's specialization-constant workgroup sizes.
+                id @ ("local_size_x_id" | "local_size_y_id" | "local_size_z_id") => {
+                    let targets: Vec<&str> = self.targets.iter().map(|t| t.name()).collect();
+                    let d = Diagnostic::error(format!("`{id}` (a workgroup size set by a specialization constant) is not supported by umbrac on {}", targets.join(", ")), arg.name.span)
+                        .with_note("give the size as `local_size_x = N`");
+                    self.diags.push(d);
+                    continue;
+                }
                 other => {
-                    let mut d = Diagnostic::error(format!("unknown `compute_program` argument `{other}`"), arg.name.span)
-                        .with_note("`[compute_program(local_size_x = X, local_size_y = Y, local_size_z = Z)]` (each 1 when left out)");
+                    let mut d = Diagnostic::error(format!("unknown `{annot}` argument `{other}`"), arg.name.span)
+                        .with_note(format!("`[{annot}(local_size_x = X, local_size_y = Y, local_size_z = Z)]` (each 1 when left out)"));
                     if let Some(s) = suggest(other, ["local_size_x", "local_size_y", "local_size_z", "version", "name"]) {
                         d = d.with_note(format!("help: did you mean `{s}`?"));
                     }
@@ -75,7 +84,8 @@ impl<'a, 'd> Checker<'a, 'd> {
                 None => {}
             }
         }
-        if !given {
+        // dasSpirv's `[compute_shader]` takes 1 for every axis left out.
+        if !given && sa.dialect == ast::Dialect::Gl {
             let d = Diagnostic::error(format!("compute program `{}` needs a workgroup size", decl.name.name), a.span)
                 .with_note("help: `[compute_program(local_size_x = 64)]` (local_size_y and local_size_z are 1 when left out)");
             self.diags.push(d);
@@ -272,6 +282,8 @@ impl<'a, 'd> Checker<'a, 'd> {
         };
         match &base.kind {
             ExprKind::Global(g) if matches!(self.out.globals[*g].kind, GlobalKind::Workgroup) => Some((*g, None)),
+            // dasSpirv's `@ssbo x : array<uint>`: the buffer is the array.
+            ExprKind::Global(g) if matches!(self.out.globals[*g].kind, GlobalKind::Storage { .. }) && matches!(base.ty, Ty::RuntimeArray(_)) => Some((*g, None)),
             ExprKind::Field(root, m) => match &root.kind {
                 ExprKind::Global(g) if matches!(self.out.globals[*g].kind, GlobalKind::Storage { .. }) => Some((*g, Some(*m))),
                 _ => None,
@@ -287,7 +299,7 @@ impl<'a, 'd> Checker<'a, 'd> {
     pub(super) fn check_compute_rules(&mut self, decl: &'a ast::FunctionDecl, name: &str, stage: naga::ShaderStage, func: &Function) {
         use crate::sema::types::Access;
         if stage == naga::ShaderStage::Compute {
-            let at = decl.annotations.iter().find(|a| a.name.name == "compute_program").map_or(decl.name.span, |a| a.span);
+            let at = decl.stage_annotation().map_or(decl.name.span, |(a, _)| a.span);
             self.compute_used(at, &format!("compute program `{name}`"));
         }
         for (&gid, &span) in &func.uses {

@@ -107,6 +107,10 @@ impl<'a, 'd> Checker<'a, 'd> {
                     if is_entry(f).is_some() || !(self.funcs.contains_key(name) || self.structs.contains_key(name)) {
                         self.check_unique(&mut seen, &f.name);
                     }
+                    if let Some((a, ast::StageAnnotation { stage: None, .. })) = f.stage_annotation() {
+                        self.uncompiled_stage(a);
+                        continue;
+                    }
                     match is_entry(f) {
                         Some(stage) => {
                             let returns = f.ret.as_ref().is_some_and(|t| !matches!(&t.kind, ast::TypeExprKind::Named(id) if id.name == "void"));
@@ -300,6 +304,8 @@ impl<'a, 'd> Checker<'a, 'd> {
             let mut access: Option<(Access, Span)> = None;
             let mut format: Option<(ImageFormat, Span)> = None;
             let mut constant_id: Option<(i64, Span)> = None;
+            let mut flat: Option<Span> = None;
+            let push_constant = g.qualifiers.iter().any(|q| matches!(&q.kind, ast::QualifierKind::Other(n) if n == "push_constant"));
             for q in &g.qualifiers {
                 let c = match &q.kind {
                     ast::QualifierKind::Uniform => Some("uniform"),
@@ -328,6 +334,11 @@ impl<'a, 'd> Checker<'a, 'd> {
                     // a uniform on every target (docs/language.md).
                     ast::QualifierKind::Other(name) if name == "push_constant" => Some("uniform"),
                     ast::QualifierKind::Other(name) if name == "ssbo" => Some("ssbo"),
+                    // dasSpirv's `@flat`: no interpolation (ints are flat anyway).
+                    ast::QualifierKind::Other(name) if name == "flat" => {
+                        flat = Some(q.span);
+                        None
+                    }
                     ast::QualifierKind::Other(name) if name == "groupshared" => Some("groupshared"),
                     ast::QualifierKind::ConstantId(n) => {
                         constant_id = Some((*n, q.span));
@@ -359,9 +370,19 @@ impl<'a, 'd> Checker<'a, 'd> {
                         }
                         None
                     }
+                    // dasSpirv's payloads of the stages umbrac does not compile.
+                    ast::QualifierKind::Other(name) if matches!(name.as_str(), "task_payload" | "ray_payload" | "incoming_ray_payload" | "hit_attribute" | "callable_data" | "incoming_callable_data") => {
+                        let targets: Vec<&str> = self.targets.iter().map(|t| t.name()).collect();
+                        let stages = if name == "task_payload" { "task and mesh shaders" } else { "ray-tracing shaders" };
+                        let d = Diagnostic::error(format!("`@{name}` (of {stages}) is not supported by umbrac on {}", targets.join(", ")), q.span)
+                            .with_note("umbrac compiles the vertex, fragment and compute stages of the Vulkan dialect");
+                        self.diags.push(d);
+                        refused = true;
+                        None
+                    }
                     ast::QualifierKind::Other(name) => {
                         let d = Diagnostic::error(format!("unknown annotation `@{name}`"), q.span)
-                            .with_note("shader globals take @uniform, @in, @out, @inout, @push_constant, @ssbo, @groupshared, @readonly, @writeonly, @format = F, @location = N, @stage = N, @set = N and @binding = N");
+                            .with_note("shader globals take @uniform, @in, @out, @inout, @flat, @push_constant, @ssbo, @groupshared, @readonly, @writeonly, @format = F, @location = N, @stage = N, @set = N and @binding = N");
                         self.diags.push(d);
                         refused = true;
                         None
@@ -389,8 +410,11 @@ impl<'a, 'd> Checker<'a, 'd> {
                     .with_note("a uniform's initial value is the default the host sets; inputs and outputs have none");
                 self.diags.push(d);
             }
-            // A storage image needs no `@uniform` (it is one in GLSL).
-            let class = class.or_else(|| matches!(ty, Ty::Image(_)).then_some(("uniform", g.name.span)));
+            // A storage image needs no `@uniform` (it is one in GLSL); in the
+            // Vulkan dialect a sampler at a `@set`/`@binding` needs none either
+            // (dasSpirv reads it as a descriptor).
+            let bound = bind.0.is_some() || bind.1.is_some();
+            let class = class.or_else(|| (matches!(ty, Ty::Image(_)) || (self.vulkan && bound && ty.is_sampler_like())).then_some(("uniform", g.name.span)));
             if !(matches!(class, Some(("ssbo", _))) || matches!(ty, Ty::Image(_))) {
                 if let Some((_, span)) = access {
                     self.diags.push(Diagnostic::error("`@readonly` and `@writeonly` apply only to `@ssbo` buffers and storage images", span));
@@ -421,6 +445,9 @@ impl<'a, 'd> Checker<'a, 'd> {
                         _ => (SamplerKind::Sampler2D, None),
                     };
                     let n = count.unwrap_or(1);
+                    if let (true, Some(_)) = (self.vulkan, count) {
+                        self.descriptor_array_used(gty.span);
+                    }
                     if let Some((_, span)) = location {
                         self.diags.push(Diagnostic::error("`@location` does not apply to samplers; use `@stage = N` for the texture unit", span));
                     }
@@ -444,6 +471,8 @@ impl<'a, 'd> Checker<'a, 'd> {
                     GlobalKind::Sampler { kind, texture_unit: unit, count }
                 }
                 ("uniform", Ty::Image(k)) => {
+                    // dasSpirv's default format is rgba8, as dasGlsl's bare `@format`.
+                    let format = format.or_else(|| self.vulkan.then(|| ImageFormat::from_name("rgba8").map(|f| (f, gty.span))).flatten());
                     let unit = self.storage_unit(location.map(|l| l.1), stage, "storage images");
                     self.image_kind(*k, format, access, unit, gty.span)
                 }
@@ -510,6 +539,16 @@ impl<'a, 'd> Checker<'a, 'd> {
                     GlobalKind::Io { kind: io, location: loc }
                 }
             };
+            if let Some(span) = flat {
+                if matches!(kind, GlobalKind::Io { .. }) {
+                    self.out.flat.insert(self.out.globals.len());
+                } else {
+                    self.diags.push(Diagnostic::error("`@flat` applies only to `@in` and `@out` variables", span));
+                }
+            }
+            if push_constant {
+                self.out.push_constants.insert(self.out.globals.len());
+            }
             self.written_bind(&kind, bind);
             self.globals.insert(&g.name.name, self.out.globals.len());
             self.out.globals.push(Global { name: g.name.name.as_str().to_string(), ty, kind, span: g.name.span, bind: None });
@@ -579,7 +618,12 @@ impl<'a, 'd> Checker<'a, 'd> {
             self.diags.push(Diagnostic::error("`@writeonly` applies only to storage images; a storage buffer is read-write, or `@readonly`", span));
         }
         match ty {
-            Ty::Struct(_) => {
+            // dasSpirv's `@ssbo x : array<T>`: the buffer is the array, of
+            // plain values of one size.
+            Ty::RuntimeArray(e) if !e.is_error() && (!e.is_value() || self.is_unsized(e)) => {
+                self.diags.push(Diagnostic::error(format!("the elements of an `@ssbo` array must be plain values of one size, not `{}`", self.show(e)), ty_span));
+            }
+            Ty::Struct(_) | Ty::RuntimeArray(_) => {
                 if let Some(msg) = self.storage_type_problem(ty) {
                     self.diags.push(Diagnostic::error(msg, ty_span));
                 }
@@ -626,7 +670,9 @@ impl<'a, 'd> Checker<'a, 'd> {
         // Bounds of the checker's tables; wgpu's default of 4 bind groups
         // is checked per target (`emit::limits`); 1000 bindings per group.
         let set = checked(set, "set", crate::sema::limits::MAX_SETS);
-        let binding = checked(binding, "binding", 1000);
+        // The Vulkan dialect keeps binding + VULKAN_SAMPLER_OFFSET free
+        // for the sampler halves of its combined image-samplers.
+        let binding = checked(binding, "binding", if self.vulkan { crate::sema::tree::VULKAN_SAMPLER_OFFSET as i64 } else { 1000 });
         if let Some((b, _)) = binding {
             self.out.written_bindings.insert(self.out.globals.len(), b);
         }

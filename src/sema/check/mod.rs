@@ -51,6 +51,8 @@ pub fn check_for_targets(program: &ast::Program, targets: &[crate::target::Targe
     let mut c = Checker::new(program, diags);
     c.targets = if targets.is_empty() { crate::target::Target::ALL.to_vec() } else { targets.to_vec() };
     c.targets_defaulted = targets.is_empty();
+    c.vulkan = program.items.iter().any(|i| matches!(i, ast::Item::Function(f) if f.stage_annotation().is_some_and(|(_, s)| s.dialect == ast::Dialect::Vulkan)));
+    c.out.vulkan = c.vulkan;
     c.declare();
     c.check_entry_points();
     folding::check_program(&c.out, c.diags);
@@ -248,18 +250,15 @@ struct Checker<'a, 'd> {
     refused_constructs: std::collections::BTreeSet<&'static str>,
     /// Compute constructs were refused already (once, at the first).
     compute_refused: bool,
+    /// The program has Vulkan-dialect entry points (`Program::vulkan`).
+    vulkan: bool,
     /// The `local_size_*` of the compute entry point being checked
     /// (`gl_WorkGroupSize` there); `[0; 3]` elsewhere.
     entry_workgroup_size: [u32; 3],
 }
 
 fn is_entry(f: &ast::FunctionDecl) -> Option<naga::ShaderStage> {
-    f.annotations.iter().find_map(|a| match a.name.name.as_str() {
-        "vertex_program" => Some(naga::ShaderStage::Vertex),
-        "fragment_program" => Some(naga::ShaderStage::Fragment),
-        "compute_program" => Some(naga::ShaderStage::Compute),
-        _ => None,
-    })
+    f.stage_annotation().and_then(|(_, s)| s.stage)
 }
 
 fn entry_name(f: &ast::FunctionDecl) -> String {
@@ -307,6 +306,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             spare_scopes: Vec::new(),
             targets: crate::target::Target::ALL.to_vec(),
             targets_defaulted: true,
+            vulkan: false,
             saw_barrier: false,
             compute_refused: false,
             entry_workgroup_size: [0; 3],

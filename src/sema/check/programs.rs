@@ -61,11 +61,13 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
             e
         }
-        let mut links = Vec::new();
+        let mut links = self.link_by_location();
         let mut linked = vec![false; n];
         let eps = &self.out.entry_points;
-        for v in (0..n).filter(|&e| is_vertex(e, eps)) {
-            for f in (0..n).filter(|&e| is_fragment(e, eps)) {
+        // The GL dialect's rules, among its own entry points.
+        let gl = |e: usize, eps: &[EntryPoint]| eps[e].dialect == ast::Dialect::Gl;
+        for v in (0..n).filter(|&e| is_vertex(e, eps) && gl(e, eps)) {
+            for f in (0..n).filter(|&e| is_fragment(e, eps) && gl(e, eps)) {
                 if shared[v].iter().any(|g| shared[f].contains(g)) {
                     links.push(Link { vertex: v, fragment: f });
                     linked[v] = true;
@@ -75,17 +77,93 @@ impl<'a, 'd> Checker<'a, 'd> {
                 }
             }
         }
-        for v in (0..n).filter(|&e| is_vertex(e, eps) && !linked[e]) {
-            for f in (0..n).filter(|&e| is_fragment(e, eps) && !linked[e]) {
+        for v in (0..n).filter(|&e| is_vertex(e, eps) && gl(e, eps) && !linked[e]) {
+            for f in (0..n).filter(|&e| is_fragment(e, eps) && gl(e, eps) && !linked[e]) {
                 links.push(Link { vertex: v, fragment: f });
             }
         }
         let group: Vec<usize> = (0..n).map(|e| root(&mut parent, e)).collect();
         self.number_locations(&group);
         self.number_texture_units(&links);
-        self.assign_bindings();
+        self.assign_bindings(&links);
         self.number_storage_units();
         self.out.links = links;
+    }
+
+    /// The Vulkan dialect's programs: a vertex and a fragment entry point
+    /// link when each input the fragment one reads has an output of the
+    /// vertex one at its location, of its type and interpolation (dasSpirv
+    /// matches stage I/O by location). A fragment entry point that reads
+    /// inputs and links with none, though the file has vertex ones, is an
+    /// error at its first input that no vertex entry point matches.
+    fn link_by_location(&mut self) -> Vec<Link> {
+        let eps = &self.out.entry_points;
+        let vulkan = |e: &EntryPoint, stage| e.dialect == ast::Dialect::Vulkan && e.stage == stage;
+        // (location, global) of an entry point's `@in`s or `@out`s.
+        let io = |ep: &EntryPoint, want: IoKind| -> Vec<(u32, GlobalId)> {
+            let mut v: Vec<(u32, GlobalId)> = ep.func.uses.keys().copied().filter_map(|g| match self.out.globals[g].kind {
+                GlobalKind::Io { kind, location } if kind == want => Some((location.unwrap_or(0), g)),
+                _ => None,
+            }).collect();
+            v.sort_unstable();
+            v
+        };
+        let same = |a: GlobalId, b: GlobalId| {
+            let (ga, gb) = (&self.out.globals[a], &self.out.globals[b]);
+            ga.ty == gb.ty && self.out.flat.contains(&a) == self.out.flat.contains(&b)
+        };
+        let vertices: Vec<(usize, Vec<(u32, GlobalId)>)> =
+            eps.iter().enumerate().filter(|(_, e)| vulkan(e, naga::ShaderStage::Vertex)).map(|(i, e)| (i, io(e, IoKind::Out))).collect();
+        let mut links = Vec::new();
+        let mut errors = Vec::new();
+        for (f, ep) in eps.iter().enumerate().filter(|(_, e)| vulkan(e, naga::ShaderStage::Fragment)) {
+            let ins = io(ep, IoKind::In);
+            // Per vertex entry point: the first input it does not match.
+            let mut best: Option<(usize, GlobalId, Option<GlobalId>)> = None;
+            for (v, outs) in &vertices {
+                let miss = ins.iter().find_map(|&(l, g)| match outs.iter().find(|o| o.0 == l) {
+                    Some(&(_, o)) if same(g, o) => None,
+                    Some(&(_, o)) => Some((g, Some(o))),
+                    None => Some((g, None)),
+                });
+                match miss {
+                    None => links.push(Link { vertex: *v, fragment: f }),
+                    // Prefer a vertex entry point that has the location.
+                    Some((g, o)) if best.is_none_or(|b| b.2.is_none() && o.is_some()) => best = Some((*v, g, o)),
+                    Some(_) => {}
+                }
+            }
+            if links.iter().all(|l| l.fragment != f) {
+                if let Some(b) = best {
+                    errors.push((f, b));
+                }
+            }
+        }
+        // A fragment entry point fed by a stage already refused (a mesh
+        // shader) would be reported twice over.
+        let errors = if self.diags.has_errors() { Vec::new() } else { errors };
+        for (f, (v, g, o)) in errors {
+            let (fe, ve) = (&self.out.entry_points[f], &self.out.entry_points[v]);
+            let gi = &self.out.globals[g];
+            // Locations are numbered after linking: the one written.
+            let GlobalKind::Io { location: Some(l), .. } = gi.kind else { continue };
+            let span = self.location_spans.get(&g).copied().unwrap_or(gi.span);
+            let interp = |g: GlobalId| if self.out.flat.contains(&g) { "flat" } else { "interpolated" };
+            let d = match o {
+                Some(o) => {
+                    let go = &self.out.globals[o];
+                    let what = if gi.ty != go.ty { format!("`{}` here, `{}` there", self.show(&gi.ty), self.show(&go.ty)) } else { format!("{} here, {} there", interp(g), interp(o)) };
+                    Diagnostic::error(format!("location {l} does not match between vertex entry point `{}` and fragment entry point `{}`: {what}", ve.name, fe.name), span)
+                        .with_label(format!("`{}` reads location {l}", gi.name))
+                        .with_secondary(self.location_spans.get(&o).copied().unwrap_or(go.span), format!("`{}` writes it", go.name))
+                }
+                None => Diagnostic::error(format!("no vertex entry point writes location {l}, which fragment entry point `{}` reads", fe.name), span)
+                    .with_label(format!("`{}` reads location {l}", gi.name))
+                    .with_note(format!("e.g. `{}` writes no `@out @location = {l}`", ve.name)),
+            };
+            self.diags.push(d.with_note("in the Vulkan dialect a vertex `@out` and a fragment `@in` at one location are one varying: the same type, both `@flat` or neither"));
+        }
+        links
     }
 
     /// The WGSL/SPIR-V group and binding of every uniform and sampler an
@@ -96,7 +174,12 @@ impl<'a, 'd> Checker<'a, 'd> {
     /// of them are bound at: a `@binding = N` on any of them places the
     /// buffer. The GPU module holds every entry point, so bindings are
     /// unique across the file.
-    fn assign_bindings(&mut self) {
+    ///
+    /// In the Vulkan dialect each pipeline has its own layout, so bindings
+    /// are unique per program (a linked pair, or an entry point alone),
+    /// not across the file: two passes may bind different resources at
+    /// one binding (WGSL and SPIR-V check bindings per entry point).
+    fn assign_bindings(&mut self, links: &[Link]) {
         // Per global in declaration (id) order: the holder it is bound
         // with, `UNUSED` where no entry point uses it (a table, not a set).
         const UNUSED: usize = usize::MAX;
@@ -116,6 +199,26 @@ impl<'a, 'd> Checker<'a, 'd> {
             written: Option<(u32, Span, GlobalId)>,
         }
         let mut holders: Vec<Holder> = Vec::new();
+        // The programs whose bindings must differ: one for the whole file
+        // in the GL dialect; in the Vulkan one, each link and each entry
+        // point in none, as the globals they use.
+        let programs: Vec<Vec<GlobalId>> = if self.out.vulkan {
+            let eps = &self.out.entry_points;
+            let mut in_link = vec![false; eps.len()];
+            let mut ps: Vec<Vec<GlobalId>> = Vec::new();
+            for l in links {
+                in_link[l.vertex] = true;
+                in_link[l.fragment] = true;
+                ps.push(eps[l.vertex].func.uses.keys().chain(eps[l.fragment].func.uses.keys()).copied().collect());
+            }
+            for (e, ep) in eps.iter().enumerate().filter(|(e, _)| !in_link[*e]) {
+                let _ = e;
+                ps.push(ep.func.uses.keys().copied().collect());
+            }
+            ps
+        } else {
+            Vec::new()
+        };
         let mut buffer_of_group: BTreeMap<u32, usize> = BTreeMap::new();
         for g in 0..holder_of.len() {
             if holder_of[g] == UNUSED {
@@ -124,6 +227,9 @@ impl<'a, 'd> Checker<'a, 'd> {
             let global = &self.out.globals[g];
             let slots = match global.kind {
                 GlobalKind::Uniform { .. } | GlobalKind::Storage { .. } | GlobalKind::Image { .. } => 1u32,
+                // The Vulkan dialect's sampler half lies past every binding
+                // it writes (`VULKAN_SAMPLER_OFFSET`): one slot here.
+                GlobalKind::Sampler { count: None, .. } if self.out.vulkan => 1,
                 GlobalKind::Sampler { count, .. } => 2 * count.unwrap_or(1),
                 _ => {
                     holder_of[g] = UNUSED;
@@ -159,13 +265,27 @@ impl<'a, 'd> Checker<'a, 'd> {
                 _ => {}
             }
         }
-        // (group, binding) -> the holder there.
-        let mut taken: BTreeMap<(u32, u32), usize> = BTreeMap::new();
+        // The programs each holder is in (all in program 0 in the GL dialect).
+        let mut progs_of: Vec<Vec<usize>> = vec![Vec::new(); holders.len()];
+        if programs.is_empty() {
+            progs_of.iter_mut().for_each(|p| p.push(0));
+        } else {
+            for (pi, uses) in programs.iter().enumerate() {
+                for &g in uses {
+                    if holder_of[g] < USED && progs_of[holder_of[g]].last() != Some(&pi) {
+                        progs_of[holder_of[g]].push(pi);
+                    }
+                }
+            }
+        }
+        // (program, group, binding) -> the holder there.
+        let mut taken: BTreeMap<(usize, u32, u32), usize> = BTreeMap::new();
         let mut placed: Vec<Option<u32>> = vec![None; holders.len()];
         for (i, h) in holders.iter().enumerate() {
             let Some((first, span, g)) = h.written else { continue };
             let (group, n) = (h.group, h.slots);
-            if let Some((at, prev)) = (first..first + n).find_map(|b| taken.get(&(group, b)).map(|&p| (b, p))) {
+            let clash = progs_of[i].iter().find_map(|&p| (first..first + n).find_map(|b| taken.get(&(p, group, b)).map(|&q| (b, q))));
+            if let Some((at, prev)) = clash {
                 let prev_g = holders[prev].written.map_or(holders[prev].first, |w| w.2);
                 let (a, b) = (&self.out.globals[prev_g].name, &self.out.globals[g].name);
                 let mut d = Diagnostic::error(format!("`{a}` and `{b}` are both bound in group {group} at binding {at}"), span)
@@ -177,8 +297,10 @@ impl<'a, 'd> Checker<'a, 'd> {
                 self.diags.push(d);
                 continue;
             }
-            for b in first..first + n {
-                taken.insert((group, b), i);
+            for &p in &progs_of[i] {
+                for b in first..first + n {
+                    taken.insert((p, group, b), i);
+                }
             }
             placed[i] = Some(first);
         }
@@ -195,14 +317,18 @@ impl<'a, 'd> Checker<'a, 'd> {
             if no_room.get(&group).is_some_and(|&m| n >= m) {
                 continue;
             }
-            let free = |b: u32| (b..b + n).all(|k| !taken.contains_key(&(group, k)));
-            let Some(first) = (0..1000u32.saturating_sub(n - 1)).find(|&b| free(b)) else {
-                self.diags.push(Diagnostic::error(format!("no {n} free bindings left in group {group} (at most 1000)"), self.out.globals[h.first].span));
+            let progs = &progs_of[i];
+            let free = |b: u32| progs.iter().all(|&p| (b..b + n).all(|k| !taken.contains_key(&(p, group, k))));
+            let most = if self.out.vulkan { VULKAN_SAMPLER_OFFSET } else { 1000 };
+            let Some(first) = (0..most.saturating_sub(n - 1)).find(|&b| free(b)) else {
+                self.diags.push(Diagnostic::error(format!("no {n} free bindings left in group {group} (at most {most})"), self.out.globals[h.first].span));
                 no_room.insert(group, n);
                 continue;
             };
-            for b in first..first + n {
-                taken.insert((group, b), i);
+            for &p in progs {
+                for b in first..first + n {
+                    taken.insert((p, group, b), i);
+                }
             }
             placed[i] = Some(first);
         }

@@ -31,8 +31,47 @@ impl<'a, 'd> Checker<'a, 'd> {
             let Some(func) = self.check_function(decl, Some(stage), None) else { continue };
             self.check_stage_rules(&name, stage, &func);
             self.check_compute_rules(decl, &name, stage, &func);
-            let annotation = decl.annotations.iter().find(|a| matches!(a.name.name.as_str(), "vertex_program" | "fragment_program" | "compute_program")).map_or(decl.name.span, |a| a.span);
-            self.out.entry_points.push(EntryPoint { name, stage, func, locations: Vec::new(), workgroup_size, annotation });
+            let (annotation, dialect) = decl.stage_annotation().map_or((decl.name.span, ast::Dialect::Gl), |(a, s)| (a.span, s.dialect));
+            if dialect == ast::Dialect::Vulkan {
+                self.check_vulkan_locations(&name, &func);
+                self.check_vulkan_stage_args(decl, stage);
+            }
+            self.out.entry_points.push(EntryPoint { name, stage, func, locations: Vec::new(), workgroup_size, annotation, dialect });
+        }
+    }
+
+    /// The Vulkan dialect matches stage I/O by location, so (as dasSpirv)
+    /// every `@in`/`@out` a Vulkan-dialect entry point uses gives one.
+    fn check_vulkan_locations(&mut self, name: &str, func: &Function) {
+        let mut unlocated: Vec<(GlobalId, Span)> = func.uses.iter().map(|(&g, &s)| (g, s)).filter(|&(g, _)| matches!(self.out.globals[g].kind, GlobalKind::Io { location: None, .. })).collect();
+        unlocated.sort_unstable();
+        for (g, _) in unlocated {
+            let global = &self.out.globals[g];
+            let d = Diagnostic::error(format!("`{}` needs `@location = N`: Vulkan-dialect entry point `{name}` uses it", global.name), global.span)
+                .with_note("in the Vulkan dialect stage inputs and outputs are matched by location, as dasSpirv requires");
+            self.diags.push(d);
+        }
+    }
+
+    /// The arguments of a Vulkan-dialect vertex or fragment annotation (a
+    /// compute one's are read with its workgroup size): `name`; what
+    /// dasSpirv has beyond it is refused by name, never ignored.
+    fn check_vulkan_stage_args(&mut self, decl: &ast::FunctionDecl, stage: naga::ShaderStage) {
+        let Some((a, _)) = decl.stage_annotation().filter(|_| stage != naga::ShaderStage::Compute) else { return };
+        for arg in a.args.iter().filter(|arg| arg.name.name != "name") {
+            let arg_name = arg.name.name.as_str();
+            let d = if arg_name == "early_fragment_tests" {
+                let targets: Vec<&str> = self.targets.iter().map(|t| t.name()).collect();
+                Diagnostic::error(format!("`early_fragment_tests` is not supported by umbrac on {}", targets.join(", ")), arg.name.span)
+                    .with_note("GLSL 3.30 and ES 3.00 have no early fragment tests, and umbrac does not write them elsewhere")
+            } else {
+                let mut d = Diagnostic::error(format!("unknown `{}` argument `{arg_name}`", a.name.name), arg.name.span).with_note(format!("`[{}(name = \"...\")]`", a.name.name));
+                if let Some(s) = suggest(arg_name, ["name", "early_fragment_tests"]) {
+                    d = d.with_note(format!("help: did you mean `{s}`?"));
+                }
+                d
+            };
+            self.diags.push(d);
         }
     }
 

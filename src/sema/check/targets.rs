@@ -51,6 +51,27 @@ impl<'a, 'd> Checker<'a, 'd> {
         self.diags.push(d);
     }
 
+    /// A stage of dasSpirv's Vulkan dialect umbrac does not compile (mesh,
+    /// task, ray tracing), annotated at `a`: refused by name for every
+    /// target requested, never skipped.
+    pub(super) fn uncompiled_stage(&mut self, a: &ast::Annotation) {
+        let what = ast::UNCOMPILED_STAGES.iter().find(|&&(n, _)| n == a.name.name.as_str()).map_or("this", |&(_, w)| w);
+        let targets: Vec<&str> = self.targets.iter().map(|t| t.name()).collect();
+        let d = Diagnostic::error(format!("the {what} stage (`[{}]`) is not supported by umbrac on {}", a.name.name, targets.join(", ")), a.span)
+            .with_note("GLSL 3.30, ES 3.00, GLSL 4.30 and ES 3.10 have no such stage; naga 30 can write it to SPIR-V (and mesh/task to WGSL), but umbrac does not lower it yet")
+            .with_note("the vertex, fragment and compute stages of the Vulkan dialect are supported");
+        self.diags.push(d);
+    }
+
+    /// An array of samplers in the Vulkan dialect: one descriptor array
+    /// (one binding, N elements), which umbrac does not build.
+    pub(super) fn descriptor_array_used(&mut self, span: Span) {
+        let targets: Vec<&str> = self.targets.iter().map(|t| t.name()).collect();
+        let d = Diagnostic::error(format!("an array of samplers in the Vulkan dialect (a descriptor array at one binding) is not supported by umbrac on {}", targets.join(", ")), span)
+            .with_note("bind each sampler at its own `@binding`");
+        self.diags.push(d);
+    }
+
     /// A read-write storage image of `format` (neither `@readonly` nor
     /// `@writeonly`, dasGlsl's default) at `span`: GLSL 430 and SPIR-V
     /// have it for every format; GLSL ES 3.10 and WGSL only for `r32f`,

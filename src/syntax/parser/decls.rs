@@ -478,7 +478,18 @@ impl<'m> Parser<'_, 'm> {
             return Err(());
         }
         self.bump();
-        let ty = TypeExpr { kind: TypeExprKind::Named(Ident { name: self.texts.name(t.span), span: t.span }), span: t.span };
+        let mut ty = TypeExpr { kind: TypeExprKind::Named(Ident { name: self.texts.name(t.span), span: t.span }), span: t.span };
+        // dasSpirv's `array<T>`: a run-time-sized array, as `T[]`.
+        if self.peek().is(P::Lt) && self.text(&t) == "array" {
+            self.bump();
+            // Nested `array<array<...>>` counts towards the nesting limit.
+            self.enter(t)?;
+            let elem = self.ty();
+            self.leave();
+            let elem = elem?;
+            let close = self.expect(P::Gt)?;
+            ty = TypeExpr { span: t.span.to(close.span), kind: TypeExprKind::RuntimeArray(Box::new(elem)) };
+        }
         let depth = self.depth;
         let r = self.array_suffixes(ty);
         self.depth = depth;

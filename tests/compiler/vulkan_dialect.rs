@@ -1,0 +1,253 @@
+//! Issue 36: daslang's Vulkan dialect (dasSpirv's stages, resources at
+//! `@set`/`@binding`, `@push_constant`, stage I/O by `@location`, Vulkan
+//! conventions). dasVulkan's 15 tutorials (17 shader files, two of them
+//! in `02_mandelbrot/window/`) are compiled
+//! where they stand, with the daslang tree as `--daslang-root`, to every
+//! target that can express them; every output is validated (naga inside
+//! the compiler, glslangValidator per file and per linked vertex/fragment
+//! pair, spirv-val, tint). The files that need what umbrac does not have
+//! are expected refusals, each named with the errors it gives, so that a
+//! change either way fails here. Skipped without `../shared/reference`
+//! (failed with `CI=true`).
+
+use std::path::PathBuf;
+
+use crate::support;
+use umbrac::{Options, Target};
+
+fn daslang_tree() -> Option<PathBuf> {
+    let dir = support::repo().join("../shared/reference/daslang");
+    if dir.join("modules/dasVulkan/tutorials").is_dir() {
+        Some(dir)
+    } else {
+        support::skip(format!("no daslang tree with dasVulkan's tutorials at {}", dir.display()));
+        None
+    }
+}
+
+/// What each shader file is expected to do.
+enum Expect {
+    /// Compiles for `targets` (empty: umbrac's defaults) and validates;
+    /// `programs` vertex/fragment pairs are linked.
+    Compiles { targets: &'static [Target], programs: usize },
+    /// Refused: these errors (each a substring of one error message, all
+    /// located in the file) are among those it gives.
+    Refused(&'static [&'static str]),
+}
+
+const STORAGE_IMAGE_TARGETS: &[Target] = &[Target::Glsl430, Target::Spirv];
+
+const FILES: &[(&str, Expect)] = &[
+    ("01_triangle/triangle_tut_shaders.das", Expect::Compiles { targets: &[], programs: 1 }),
+    // A read-write image (no `@readonly`/`@writeonly`, as dasSpirv writes
+    // it): GLSL ES 3.10 and WGSL have those only for r32 formats.
+    ("02_mandelbrot/mandelbrot_tut_shaders.das", Expect::Compiles { targets: STORAGE_IMAGE_TARGETS, programs: 0 }),
+    ("02_mandelbrot/window/mandelbrot_view_shaders.das", Expect::Compiles { targets: &[], programs: 1 }),
+    ("02_mandelbrot/window/mandelbrot_zoom_shaders.das", Expect::Compiles { targets: STORAGE_IMAGE_TARGETS, programs: 0 }),
+    ("03_sdf/sdf_tut_shaders.das", Expect::Compiles { targets: STORAGE_IMAGE_TARGETS, programs: 0 }),
+    ("04_cube/cube_tut_shaders.das", Expect::Compiles { targets: &[], programs: 1 }),
+    ("05_instancing/instancing_tut_shaders.das", Expect::Compiles { targets: &[], programs: 1 }),
+    ("06_skybox/skybox_tut_shaders.das", Expect::Compiles { targets: &[], programs: 3 }),
+    ("07_particles/particles_tut_shaders.das", Expect::Compiles { targets: &[], programs: 1 }),
+    ("08_shadow/shadow_tut_shaders.das", Expect::Compiles { targets: &[], programs: 1 }),
+    ("09_msaa/msaa_tut_shaders.das", Expect::Compiles { targets: &[], programs: 1 }),
+    // The SSAO and lighting passes draw one full-screen triangle each, with
+    // one varying: either vertex entry point feeds either fragment one.
+    ("10_deferred/deferred_tut_shaders.das", Expect::Compiles { targets: &[], programs: 5 }),
+    ("11_hdr/hdr_tut_shaders.das", Expect::Compiles { targets: &[], programs: 5 }),
+    (
+        "12_gpu_driven/gpu_driven_tut_shaders.das",
+        Expect::Refused(&[
+            "`gl_DrawID` (a builtin of daslang's `spirv_builtins`) is not supported by umbrac on",
+            "`nonuniformEXT` (a builtin of daslang's `spirv_builtins`) is not supported by umbrac on",
+            "an array of samplers in the Vulkan dialect (a descriptor array at one binding) is not supported by umbrac on",
+        ]),
+    ),
+    (
+        "13_mesh/mesh_tut_shaders.das",
+        Expect::Refused(&[
+            "the task stage (`[vulkan_task_shader]`) is not supported by umbrac on glsl330, gles300, glsl430, gles310, wgsl, spirv",
+            "the mesh stage (`[vulkan_mesh_shader]`) is not supported by umbrac on glsl330, gles300, glsl430, gles310, wgsl, spirv",
+            "`@task_payload` (of task and mesh shaders) is not supported by umbrac on",
+        ]),
+    ),
+    (
+        "14_teapot/teapot_tut_shaders.das",
+        Expect::Refused(&[
+            "the task stage (`[vulkan_task_shader]`) is not supported by umbrac on",
+            "the mesh stage (`[vulkan_mesh_shader]`) is not supported by umbrac on",
+        ]),
+    ),
+    (
+        "15_raytracing/raytracing_tut_shaders.das",
+        Expect::Refused(&[
+            "the ray generation stage (`[vulkan_raygen_shader]`) is not supported by umbrac on",
+            "the miss stage (`[vulkan_miss_shader]`) is not supported by umbrac on",
+            "the closest-hit stage (`[vulkan_closest_hit_shader]`) is not supported by umbrac on",
+            "`@ray_payload` (of ray-tracing shaders) is not supported by umbrac on",
+        ]),
+    ),
+];
+
+/// Every shader file of dasVulkan's tutorials (`*_shaders.das`, in
+/// subfolders too), relative to the tutorials folder: each must be in
+/// `FILES`.
+fn shader_files(tree: &std::path::Path) -> Vec<String> {
+    let root = tree.join("modules/dasVulkan/tutorials");
+    let mut out = Vec::new();
+    let mut dirs = vec![root.clone()];
+    while let Some(dir) = dirs.pop() {
+        for p in std::fs::read_dir(&dir).unwrap().map(|e| e.unwrap().path()) {
+            if p.is_dir() {
+                dirs.push(p);
+            } else if p.file_name().unwrap().to_string_lossy().ends_with("_shaders.das") {
+                out.push(p.strip_prefix(&root).unwrap().to_string_lossy().replace('\\', "/"));
+            }
+        }
+    }
+    out.sort();
+    out
+}
+
+#[test]
+fn dasvulkan_tutorials_compile_where_they_stand_or_are_refused_by_name() {
+    let Some(tree) = daslang_tree() else { return };
+    let mut listed: Vec<String> = FILES.iter().map(|f| f.0.to_string()).collect();
+    listed.sort();
+    let found = shader_files(&tree);
+    // 15 tutorials, 17 files: the list names those that exist.
+    assert_eq!(found.len(), 17, "dasVulkan's tutorials have 17 shader files: {found:?}");
+    assert!(found.iter().all(|f| listed.contains(f)), "shader files not in FILES: {found:?}");
+    let mut failures = Vec::new();
+    let (mut compiled_n, mut runs) = (0, 0);
+    for (file, expect) in FILES {
+        let path = tree.join("modules/dasVulkan/tutorials").join(file);
+        if !path.is_file() {
+            failures.push(format!("{file}: not in the daslang tree"));
+            continue;
+        }
+        let targets = match expect {
+            Expect::Compiles { targets, .. } => targets.to_vec(),
+            Expect::Refused(_) => Vec::new(),
+        };
+        let c = umbrac::compile_file(&path, &Options { daslang_root: Some(tree.clone()), targets, ..Default::default() });
+        match (expect, c.result.as_ref().filter(|_| !c.has_errors())) {
+            (Expect::Compiles { programs, .. }, Some(out)) => {
+                compiled_n += 1;
+                if out.reflection.programs.len() != *programs {
+                    failures.push(format!("{file}: {} programs linked, expected {programs}: {:?}", out.reflection.programs.len(), support::link_pairs(&out.reflection)));
+                }
+                let dir = tempfile::tempdir().unwrap();
+                support::write_all(dir.path(), &out.artifacts);
+                runs += support::validate_dir(dir.path(), &out.reflection);
+            }
+            (Expect::Compiles { .. }, None) => failures.push(format!("{file} does not compile:\n{}", c.render_diagnostics())),
+            (Expect::Refused(_), Some(_)) => failures.push(format!("{file} compiles, but is expected to be refused")),
+            (Expect::Refused(wanted), None) => {
+                let rendered = c.render_diagnostics();
+                for w in *wanted {
+                    if !c.diagnostics.iter().any(|d| d.message.contains(w)) {
+                        failures.push(format!("{file}: no error says {w:?}:\n{rendered}"));
+                    }
+                }
+                let stem = file.rsplit('/').next().unwrap();
+                if !rendered.contains(&format!("{stem}:")) || rendered.contains("no entry points") {
+                    failures.push(format!("{file}: the errors are not located in the file:\n{rendered}"));
+                }
+            }
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n\n"));
+    eprintln!("{compiled_n} of {} shader files compile, {runs} validator runs", FILES.len());
+}
+
+/// A file with both dialects: each links by its own rule and never with
+/// the other's entry points, and each vertex entry point gets its own
+/// dialect's clip-space adaptation.
+const MIXED: &str = "var @in @location = 0 a_pos : float3
+var @inout v_uv : float2
+var @out g_color : float4
+[vertex_program]
+def gl_vs {
+    v_uv = a_pos.xy
+    gl_Position = float4(a_pos, 1.0)
+}
+[fragment_program]
+def gl_fs {
+    g_color = float4(v_uv, 0.0, 1.0)
+}
+var @out @location = 0 vk_uv_out : float2
+[vertex_shader]
+def vk_vs {
+    vk_uv_out = a_pos.xy
+    gl_Position = float4(a_pos, 1.0)
+}
+var @in @location = 0 vk_uv_in : float2
+var @out @location = 0 vk_color : float4
+[fragment_shader]
+def vk_fs {
+    vk_color = float4(vk_uv_in, 0.0, 1.0)
+}
+";
+
+fn text(c: &umbrac::Compiled, file: &str) -> String {
+    c.artifact(file).unwrap_or_else(|| panic!("no {file}")).text().into_owned()
+}
+
+#[test]
+fn both_dialects_in_one_file_link_by_their_own_rules_and_adapt_by_their_own_conventions() {
+    let c = umbrac::compile_source("mixed.das", MIXED, &Options::default());
+    let out = c.result.as_ref().unwrap_or_else(|| panic!("{}", c.render_diagnostics()));
+    let mut pairs = support::link_pairs(&out.reflection);
+    pairs.sort();
+    assert_eq!(pairs, [("gl_vs".to_string(), "gl_fs".to_string()), ("vk_vs".into(), "vk_fs".into())]);
+    // GL dialect: GLSL as written; WGSL y flipped and z remapped.
+    let gl_vs = text(out, "gl_vs.330.vert");
+    assert!(!gl_vs.contains("* 2.0) -"), "{gl_vs}");
+    assert!(gl_vs.contains("out vec2 v_uv;"), "{gl_vs}");
+    // Vulkan dialect: GLSL z' = 2z - w, y kept; the varying named by location.
+    let vk_vs = text(out, "vk_vs.330.vert");
+    assert!(vk_vs.contains("* 2.0) - ") && !vk_vs.contains("-(_e"), "{vk_vs}");
+    assert!(vk_vs.contains("out vec2 vk_location0;") && text(out, "vk_fs.330.frag").contains("in vec2 vk_location0;"));
+    let wgsl = text(out, "mixed.wgsl");
+    let ret = |name: &str| wgsl.split(&format!("fn {name}(")).nth(1).and_then(|b| b.split("return ").nth(1)).map(|r| r.lines().next().unwrap().to_string()).unwrap();
+    assert!(ret("gl_vs").contains("-(") && ret("gl_vs").contains("0.5f"), "{}", ret("gl_vs"));
+    assert!(ret("vk_vs").contains("-(") && !ret("vk_vs").contains("0.5f"), "{}", ret("vk_vs"));
+    let ep = |n: &str| out.reflection.entry_points.iter().find(|e| e.name == n).unwrap();
+    assert_eq!(ep("gl_vs").dialect, None);
+    assert_eq!(ep("vk_fs").dialect.as_deref(), Some("vulkan"));
+    let clip = ep("vk_vs").clip_space.clone().unwrap();
+    assert_eq!(clip["glsl330"], "z' = 2z - w");
+    assert_eq!(clip["wgsl"], "y' = -y");
+    let dir = tempfile::tempdir().unwrap();
+    support::write_all(dir.path(), &out.artifacts);
+    support::validate_dir(dir.path(), &out.reflection);
+
+    // Native conventions adapt neither dialect on any target.
+    let native = umbrac::compile_source("mixed.das", MIXED, &Options { conventions: umbrac::Conventions::Native, ..Default::default() });
+    let native = native.result.unwrap();
+    assert!(!text(&native, "vk_vs.330.vert").contains("* 2.0) - "));
+    let wgsl = text(&native, "mixed.wgsl");
+    assert!(!wgsl.contains("-(_e"), "{wgsl}");
+    assert_eq!(native.reflection.entry_points.iter().find(|e| e.name == "vk_vs").unwrap().clip_space.as_ref().unwrap()["spirv"], "none");
+}
+
+/// A push constant is a uniform buffer the manifest marks, and a combined
+/// image-sampler's halves are at B and B + 100 in the GPU module.
+#[test]
+fn push_constants_and_samplers_are_where_the_manifest_says() {
+    let src = "struct P {\n    k : float4\n}\nvar @push_constant pc : P\nvar @set = 1 @binding = 3 tex : sampler2D\nvar @out @location = 0 o : float4\n[fragment_shader]\ndef fs {\n    o = texture(tex, float2(0.5)) * pc.k\n}\n";
+    let c = umbrac::compile_source("push.das", src, &Options::default());
+    let out = c.result.as_ref().unwrap_or_else(|| panic!("{}", c.render_diagnostics()));
+    let pc = out.reflection.uniform_buffers.iter().find(|u| u.name == "pc").unwrap();
+    assert_eq!(pc.push_constant, Some(true));
+    assert_eq!(pc.glsl_block.as_deref(), Some("pc_ubo"));
+    let wgsl = text(out, "push.wgsl");
+    assert!(wgsl.contains(&format!("@group({}) @binding({}) \nvar<uniform> pc", pc.group, pc.binding)), "{wgsl}");
+    let bindings = umbrac::bindgen::generate(out, &Default::default()).unwrap();
+    let pc_module = bindings.split("pub mod pc {").nth(1).expect("a module for the push constant");
+    assert!(pc_module.split("pub mod ").next().unwrap().contains("pub const PUSH_CONSTANT: bool = true;"), "{bindings}");
+    let s = &out.reflection.samplers[0];
+    assert_eq!((s.group, s.texture_binding, s.sampler_binding), (1, 3, 103));
+    assert!(wgsl.contains("@group(1) @binding(103) \nvar tex_sampler"), "{wgsl}");
+}
