@@ -59,9 +59,9 @@ def _common_args(ctx):
     for t in ctx.attr.targets:
         args += ["--target", t]
     for d in ctx.attr.include_dirs:
-        # Relative to the package, as the files are.
-        base = ctx.label.workspace_root + "/" + ctx.label.package if ctx.label.workspace_root else ctx.label.package
-        args += ["-I", (base + "/" + d) if base else d]
+        # Relative to the package, as the files are (execroot paths).
+        parts = [p for p in [ctx.label.workspace_root, ctx.label.package, d] if p]
+        args += ["-I", "/".join(parts)]
     for k, v in sorted(ctx.attr.defines.items()):
         args += ["-D", k + "=" + v if v else k]
     return args
