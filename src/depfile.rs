@@ -68,11 +68,13 @@ impl Drop for Pending {
     }
 }
 
-/// The depfile text. Paths are written as given; each list is sorted and
-/// without repeats, so the text does not depend on the order of the jobs.
-pub fn render(targets: &[PathBuf], prerequisites: &[PathBuf]) -> String {
+/// The depfile text. Paths are normalised (`stable`); each list is sorted
+/// and without repeats, so the text does not depend on the order of the
+/// jobs. With `base` (the working directory, when the inputs were named
+/// relative to it) an absolute path under it is written relative.
+pub fn render(targets: &[PathBuf], prerequisites: &[PathBuf], base: Option<&Path>) -> String {
     let sorted = |v: &[PathBuf]| {
-        let mut v: Vec<String> = v.iter().map(|p| escape(p)).collect();
+        let mut v: Vec<String> = v.iter().map(|p| escape(&stable(p, base))).collect();
         v.sort();
         v.dedup();
         v
@@ -92,6 +94,31 @@ pub fn render(targets: &[PathBuf], prerequisites: &[PathBuf]) -> String {
         out.push_str(":\n");
     }
     out
+}
+
+/// `p` without `.` and `..` components (`inc/lib/../palette.das` is
+/// `inc/palette.das`: Bazel, ninja and make compare paths by their text),
+/// unless a `..` crosses a symbolic link and the short path names another
+/// file; relative to `base` when under it.
+fn stable(p: &Path, base: Option<&Path>) -> PathBuf {
+    let mut short = crate::syntax::normalize(p);
+    if short != p && !same_file(&short, p) {
+        short = p.to_path_buf();
+    }
+    match base.and_then(|b| short.strip_prefix(crate::syntax::normalize(b)).ok()) {
+        Some(rel) if !rel.as_os_str().is_empty() => rel.to_path_buf(),
+        _ => short,
+    }
+}
+
+/// Whether two paths reach one file; two that do not exist yet (outputs)
+/// are taken as the same when neither has a `..` to cross a link by.
+fn same_file(a: &Path, b: &Path) -> bool {
+    match (std::fs::canonicalize(a), std::fs::canonicalize(b)) {
+        (Ok(x), Ok(y)) => x == y,
+        (Err(_), Err(_)) => !b.components().any(|c| c == std::path::Component::ParentDir),
+        _ => false,
+    }
 }
 
 /// A path as make reads it: spaces, `#`, `:` and `\` before them escaped
@@ -125,8 +152,19 @@ mod tests {
 
     #[test]
     fn one_rule_sorted_with_phony_prerequisites() {
-        let t = render(&["out/b.wgsl".into(), "out/a.spv".into()], &["x.das".into(), "inc/c.das".into(), "x.das".into()]);
+        let t = render(&["out/b.wgsl".into(), "./out/a.spv".into()], &["x.das".into(), "inc/c.das".into(), "x.das".into()], None);
         assert_eq!(t, "out/a.spv \\\nout/b.wgsl: \\\n  inc/c.das \\\n  x.das\n\ninc/c.das:\n\nx.das:\n");
+    }
+
+    #[test]
+    fn paths_are_normalised_and_made_relative_to_the_base() {
+        let base = std::env::temp_dir();
+        let abs = base.join("umbrac-no-such-dir/o.wgsl");
+        let t = render(&[abs.clone(), "/elsewhere/./p.wgsl".into()], &[], Some(&base));
+        assert_eq!(t, "/elsewhere/p.wgsl \\\numbrac-no-such-dir/o.wgsl:\n", "{t}");
+        // An output path with `..` that exists nowhere yet is kept as given.
+        let t = render(&["a/../b.wgsl".into()], &[], None);
+        assert_eq!(t, "a/../b.wgsl:\n");
     }
 
     #[test]

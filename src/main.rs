@@ -72,6 +72,9 @@ enum Command {
     Compile(CompileArgs),
     /// Compile for every target and report diagnostics; write nothing.
     Check(CheckArgs),
+    /// Print the files `compile` with the same arguments would write, one
+    /// per line, and write nothing (what a build system declares).
+    Outputs(CompileArgs),
     /// Print the reflection manifest of a shader file.
     Reflect(ReflectArgs),
     /// Write the Rust bindings module of a shader file (what umbrac::build generates).
@@ -109,6 +112,9 @@ struct CompileArgs {
     /// a failed compile leaves the last good outputs.
     #[arg(long)]
     watch: bool,
+    /// `umbrac outputs`: list what would be written instead of writing.
+    #[arg(skip)]
+    list_outputs: bool,
     #[command(flatten)]
     batch: BatchArgs,
     #[command(flatten)]
@@ -343,6 +349,7 @@ fn main() -> ExitCode {
     let cli = Cli::parse(); // bad usage: clap prints it and exits with 2
     let code = match cli.command {
         Command::Compile(args) => compile(&args),
+        Command::Outputs(args) => compile(&CompileArgs { list_outputs: true, ..args }),
         Command::Check(args) => check(&args),
         Command::Reflect(args) => reflect(&args),
         Command::Bindgen(args) => bindgen(&args),
@@ -493,6 +500,9 @@ fn compile(args: &CompileArgs) -> u8 {
     if args.check && (args.variants.is_some() || args.depfile.is_some() || args.watch) {
         return usage_error("`--check` writes nothing: it does not take --variants, --depfile or --watch");
     }
+    if args.list_outputs && (to_stdout || args.check || args.depfile.is_some() || args.watch) {
+        return usage_error("`umbrac outputs` lists files: it does not take `-o -`, --check, --depfile or --watch");
+    }
     if to_stdout && (args.variants.is_some() || args.depfile.is_some()) {
         return usage_error("`-o -` prints one output; --variants and --depfile need an output directory");
     }
@@ -538,7 +548,7 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
     // the variant spec is even expanded: its bytes are among the files
     // the record holds the hash of.
     // Without a cache there is no record to read or write: nothing hashed.
-    let run_key = (!to_stdout && cache.is_some()).then(|| run_key(args, &inputs, &opts, &dir));
+    let run_key = (!to_stdout && !args.list_outputs && cache.is_some()).then(|| run_key(args, &inputs, &opts, &dir));
     if let (Some(c), Some(key)) = (&cache, &run_key) {
         if let Some(rec) = umbrac::rerun::Record::load(c, key) {
             let stamps = umbrac::output::stamps::Stamps::load(c.dir(), &dir);
@@ -586,7 +596,7 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
     // Variants whose directories do not exist yet: each job's outputs go
     // to a stage as soon as it compiles, and a rename per directory
     // publishes them (src/output/staged.rs).
-    let mut stage = (!to_stdout && !variants.is_empty()).then(|| umbrac::output::staged::Staged::begin(&dir)).flatten();
+    let mut stage = (!to_stdout && !args.list_outputs && !variants.is_empty()).then(|| umbrac::output::staged::Staged::begin(&dir)).flatten();
     let to_stage = |_job: usize, rel: &Path, artifacts: &[umbrac::Artifact]| {
         if let Some(s) = stage.as_ref().filter(|s| s.takes(rel)) {
             // A failed write spoils the stage; everything is then written
@@ -693,15 +703,31 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
     // Like `gcc -MD`: a depfile only for a build that succeeded. It is
     // written before the outputs and renamed into place after them, so a
     // depfile that cannot be written changes nothing.
-    let mut pending_depfile = None;
-    if let Some(depfile) = &args.depfile {
+    // Every file the run writes: the depfile's targets, and what
+    // `umbrac outputs` prints.
+    let written = || {
         let mut targets: Vec<PathBuf> = to_write.iter().flat_map(|(j, d)| batch.outcomes[*j].artifacts.iter().flatten().map(move |a| d.join(&a.file_name))).collect();
         targets.extend(manifest.iter().map(|m| dir.join(&m.file_name)));
+        targets
+    };
+    if args.list_outputs {
+        let mut names: Vec<String> = written().iter().map(|p| umbrac::syntax::normalize(p).display().to_string()).collect();
+        names.sort();
+        names.push(String::new());
+        if let Err(e) = write_stdout(names.join("\n").as_bytes()) {
+            reporter.plain(&e);
+            return (EXIT_ERROR, watched);
+        }
+        return (0, watched);
+    }
+    let mut pending_depfile = None;
+    if let Some(depfile) = &args.depfile {
+        let targets = written();
         if let Some(p) = umbrac::depfile::unwritable(&targets).or_else(|| umbrac::depfile::unwritable(&inputs_read)) {
             reporter.plain(&Diagnostic::error_nowhere(format!("`{}` has a line break in its name, which a depfile cannot hold; nothing was written", p.display())));
             return (EXIT_ERROR, watched);
         }
-        let text = umbrac::depfile::render(&targets, &inputs_read).into_bytes();
+        let text = umbrac::depfile::render(&targets, &inputs_read, relative_base(&args.files).as_deref()).into_bytes();
         match umbrac::depfile::Pending::write(depfile, &text) {
             Ok(p) => pending_depfile = Some((p, depfile.clone(), text)),
             Err(e) => {
@@ -1032,4 +1058,10 @@ fn bindgen(args: &BindgenArgs) -> u8 {
             }
         }
     }
+}
+
+/// The working directory, when every input was named relative to it: the
+/// depfile's paths are then relative too (docs/build.md, "Depfiles").
+fn relative_base(files: &[PathBuf]) -> Option<PathBuf> {
+    files.iter().all(|f| f.is_relative()).then(std::env::current_dir).and_then(Result::ok)
 }

@@ -15,6 +15,7 @@
 //! - [`parser`]: recursive descent over one selected item
 
 pub mod ast;
+mod boundary;
 pub mod items;
 pub mod lexer;
 mod module_roots;
@@ -28,6 +29,7 @@ use std::path::{Path, PathBuf};
 use crate::diag::{Diagnostic, Diagnostics};
 use crate::source::{FileId, SourceMap, Span};
 
+pub use boundary::normalize;
 pub use parser::{MAX_DEPTH, MAX_IDENT_LEN};
 pub use preprocess::{MAX_FILE_SIZE, MAX_INCLUDE_DEPTH};
 

@@ -298,7 +298,7 @@ pub(super) fn load(map: &mut SourceMap, root: FileId, toks: &mut Vec<Token>, raw
     let mut pending: VecDeque<(usize, usize)> = (0..raw.len()).map(|i| (i, 0)).collect();
     let root_dir = map.file(root).path.as_deref().map(parent_dir).unwrap_or_else(|| PathBuf::from("."));
     let mut roots: Option<Roots> = None;
-    let mut allowed: Option<Vec<PathBuf>> = None;
+    let mut allowed: Option<super::boundary::Boundary> = None;
     loop {
         while let Some((i, depth)) = pending.pop_front() {
             let Some(req) = require_of(toks, &raw[i], map) else { continue };
@@ -353,9 +353,9 @@ pub(super) fn load(map: &mut SourceMap, root: FileId, toks: &mut Vec<Token>, raw
                 continue; // one module, however often required
             }
             let allowed = allowed.get_or_insert_with(|| {
-                std::iter::once(&root_dir).chain(&opts.include_dirs).chain(roots.dirs()).filter_map(|d| std::fs::canonicalize(d).ok()).collect()
+                super::boundary::Boundary::new(std::iter::once(&root_dir).chain(&opts.include_dirs).chain(roots.dirs()))
             });
-            if !opts.allow_outside_includes && !cands.relative && !allowed.iter().any(|a| canon.starts_with(a)) {
+            if !opts.allow_outside_includes && !cands.relative && !allowed.contains(&path, &canon) {
                 let d = Diagnostic::error(format!("`require {}` reaches outside the input's directory and the include, module and daslang directories", req.name), req.span)
                     .with_label("outside the allowed directories")
                     .with_note(format!("it resolves to `{}`", canon.display()))

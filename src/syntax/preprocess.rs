@@ -72,7 +72,7 @@ struct Pp<'a> {
     /// Canonical directories includes may come from. This and the root's
     /// entry in `stack` are made on the first `#include` (they cost file
     /// system calls, and most programs include nothing).
-    allowed: Option<Vec<PathBuf>>,
+    allowed: Option<super::boundary::Boundary>,
     total_size: usize,
     includes: usize,
     overflowed: bool,
@@ -417,12 +417,7 @@ impl Pp<'_> {
         if self.allowed.is_none() {
             let root = self.map.file(self.root);
             let root_dir = root.path.as_deref().map(parent_dir).unwrap_or_else(|| PathBuf::from("."));
-            let mut allowed = Vec::new();
-            for d in std::iter::once(&root_dir).chain(self.opts.include_dirs.iter()) {
-                if let Ok(c) = std::fs::canonicalize(d) {
-                    allowed.push(c);
-                }
-            }
+            let allowed = super::boundary::Boundary::new(std::iter::once(&root_dir).chain(self.opts.include_dirs.iter()));
             if let Some(c) = root.path.as_deref().and_then(|p| std::fs::canonicalize(p).ok()) {
                 self.stack.insert(0, (c, root.name.clone()));
             }
@@ -521,15 +516,15 @@ impl Pp<'_> {
             }
         };
         self.init_include_roots();
-        let allowed = self.allowed.as_deref().unwrap_or_default();
-        if !self.opts.allow_outside_includes && !allowed.iter().any(|a| canon.starts_with(a)) {
+        let allowed = self.allowed.as_ref().map(|b| (b.contains(&path, &canon), b.dirs()));
+        if let Some((false, dirs)) = allowed.filter(|_| !self.opts.allow_outside_includes) {
             let mut d = Diagnostic::error(
                 format!("`#include \"{name}\"` reaches outside the input's directory and the include directories"),
                 target.span,
             )
             .with_label("outside the allowed directories")
             .with_note(format!("it resolves to `{}`", canon.display()));
-            for a in allowed {
+            for a in dirs {
                 d = d.with_note(format!("allowed: `{}`", a.display()));
             }
             d = d.with_note("help: add its directory with `-I DIR`, or pass `--allow-outside-includes` to permit it");

@@ -51,6 +51,10 @@ fn usage_errors_exit_2() {
         &["compile", "a.das", "-o", "-"],
         &["frobnicate"],
         &["reflect"],
+        &["outputs"],
+        &["outputs", "a.das", "-o", "-"],
+        &["outputs", "a.das", "--depfile", "a.d"],
+        &["outputs", "a.das", "--watch"],
     ] {
         let o = umbrac(args, d.path());
         assert_eq!(code(&o), 2, "{args:?}: {}", stderr(&o));

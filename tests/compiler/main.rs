@@ -44,6 +44,8 @@ mod programs;
 mod proptest_programs;
 #[cfg(feature = "cli")]
 mod robustness;
+#[cfg(all(feature = "cli", unix))]
+mod sandbox;
 mod syntax;
 #[cfg(feature = "deserialize")]
 mod tutorials;

@@ -215,18 +215,28 @@ fn dotdot_escapes_are_refused_with_the_chain() {
     assert_eq!(chain, ["a.das:1", "main.das:1"]);
 }
 
+/// The directory the user named is the boundary (a sandbox of symlinks
+/// must work, tests/compiler/sandbox.rs): a link placed inside it is
+/// followed, but a `..` through a link that leads elsewhere is judged by
+/// where it really leads.
 #[cfg(unix)]
 #[test]
 fn symlinks_that_escape_or_loop_are_refused() {
     let d = Dir::new();
     let secret = d.write("secret.das", "let K = 1.0\n");
+    d.write("elsewhere/deep/x.das", "");
     std::fs::create_dir_all(d.path("proj")).unwrap();
     std::os::unix::fs::symlink(&secret, d.path("proj/link.das")).unwrap();
     let root = d.write("proj/main.das", &with_include("link.das"));
     let c = compile_file(&root, &Options::default());
+    assert!(!c.has_errors(), "a link inside the named directory: {}", c.render_diagnostics());
+    std::os::unix::fs::symlink(d.path("elsewhere/deep"), d.path("proj/deep")).unwrap();
+    let root = d.write("proj/main.das", &with_include("deep/../secret.das"));
+    std::fs::write(d.path("elsewhere/secret.das"), "let K = 1.0\n").unwrap();
+    let c = compile_file(&root, &Options::default());
     assert_eq!(locs(&c).len(), 1, "{:?}", locs(&c));
     assert!(locs(&c)[0].contains("reaches outside"), "{:?}", locs(&c));
-    assert!(c.diagnostics[0].notes.iter().any(|n| n.contains("secret.das")), "the note shows where it resolves");
+    assert!(c.diagnostics[0].notes.iter().any(|n| n.contains("elsewhere/secret.das")), "the note shows where it resolves");
 
     // A loop of symlinks, included from a nested include: the error is at
     // the inner directive and the chain leads back to main.das.
