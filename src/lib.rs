@@ -383,7 +383,7 @@ fn finish(pre: Preprocessed, opts: &Options) -> Compilation {
     // it, so the next stage's allocations reuse its memory, still in cache.
     drop(program);
     let result = checked.filter(|_| !diags.has_errors()).and_then(|checked| {
-        let lowered = lower::lower(&checked, lower::LowerOptions { conventions: opts.conventions, gl_uniforms: opts.gl_uniforms });
+        let lowered = lower::lower(&checked, lower::LowerOptions { conventions: opts.conventions, gl_uniforms: opts.gl_uniforms, spirv: targets.contains(&Target::Spirv) });
         drop(checked);
         let lowered = match lowered {
             Ok(l) => l,

@@ -22,6 +22,7 @@ pub mod limits;
 pub mod reflect;
 pub mod reflect_types;
 pub mod spirv;
+pub mod spirv_spec;
 pub mod wgsl;
 
 use std::panic::{catch_unwind, AssertUnwindSafe};

@@ -625,7 +625,7 @@ fn spec_constants(module: &naga::Module) -> Option<Vec<SpecConstant>> {
                 default,
                 default_bits,
                 wgsl: "override".into(),
-                spirv: "default".into(),
+                spirv: "spec_constant".into(),
                 glsl: "default".into(),
             })
         })

@@ -96,8 +96,8 @@ pub struct Requirements {
 }
 
 /// One specialization constant: WGSL `override` with `@id(id)`, SPIR-V
-/// and GLSL hold its default (docs/targets.md, "Specialization
-/// constants").
+/// `OpSpecConstant` with `SpecId id`, GLSL holds its default
+/// (docs/targets.md, "Specialization constants").
 #[derive(Clone, Debug, PartialEq)]
 #[cfg_attr(feature = "deserialize", derive(serde::Deserialize))]
 pub struct SpecConstant {
@@ -113,10 +113,11 @@ pub struct SpecConstant {
     pub default: f64,
     /// The default's 32 bits (a Vulkan `VkSpecializationInfo` word).
     pub default_bits: u32,
-    /// What each target holds: `"override"` (WGSL: the host may set it),
-    /// `"default"` (SPIR-V, GLSL: the default, fixed at compile time; in
-    /// GLSL the line `const T NAME = default;`, which a GL host may edit
-    /// before compiling).
+    /// What each target holds: `"override"` (WGSL) and `"spec_constant"`
+    /// (SPIR-V: `OpSpecConstant`, `SpecId id`), which the host may set;
+    /// `"default"` (GLSL: the default, fixed at compile time, the line
+    /// `const T NAME = default;`, which a GL host may edit before
+    /// compiling).
     pub wgsl: String,
     pub spirv: String,
     pub glsl: String,

@@ -69,14 +69,21 @@ pub fn write(lowered: &Lowered) -> Result<Vec<u32>, Diagnostic> {
             None => naga::back::spv::Writer::new(&options),
         }
         .map_err(|e| e.to_string())?;
-        // naga 30's SPIR-V writer has no specialization constants: each
-        // override is its default here (docs/targets.md, "Specialization
-        // constants"; the manifest says so).
-        let (module, info) = match lowered.gpu.overrides.is_empty() {
-            true => (std::borrow::Cow::Borrowed(&lowered.gpu), std::borrow::Cow::Borrowed(&lowered.gpu_info)),
-            false => naga::back::pipeline_constants::process_overrides(&lowered.gpu, &lowered.gpu_info, None, &Default::default()).map_err(|e| e.to_string())?,
+        // naga 30's SPIR-V writer has no overrides: a program with
+        // specialization constants is written from the module that holds
+        // each in a private variable, whose initializer then becomes an
+        // `OpSpecConstant` (`spirv_spec`; docs/targets.md, "Specialization
+        // constants").
+        let (module, info) = match (&lowered.spirv, lowered.gpu.overrides.is_empty()) {
+            (_, true) => (&lowered.gpu, &lowered.gpu_info),
+            (Some((m, i)), false) => (m, i),
+            (None, false) => return Err("no SPIR-V module for the specialization constants (lowered without SPIR-V)".to_string()),
         };
-        writer.write(&module, &info, None, &options.debug_info, &mut words).map_err(|e| e.to_string())?;
+        writer.write(module, info, None, &options.debug_info, &mut words).map_err(|e| e.to_string())?;
+        if !lowered.gpu.overrides.is_empty() {
+            let constants: Vec<(&str, u32)> = lowered.gpu.overrides.iter().filter_map(|(_, o)| Some((o.name.as_deref()?, u32::from(o.id?)))).collect();
+            words = super::spirv_spec::specialize(&words, &constants)?;
+        }
         WRITER.set(Some(writer));
         Ok(words)
     })

@@ -183,14 +183,17 @@ impl ModuleBuilder<'_> {
                     let h = self.add_global(name, naga::AddressSpace::Private, None, ty, None, span);
                     GlobalSlot::Var(h)
                 }
-                // A WGSL `override` in the GPU module (the SPIR-V writer
-                // takes its default, `emit::spirv`); a named constant of its
-                // default in a GL module, `const T NAME = default;`.
+                // A WGSL `override` in the GPU module; in the SPIR-V one a
+                // `Private` variable of its default, read by loads naga
+                // cannot fold, whose initializer `emit::spirv` makes an
+                // `OpSpecConstant`; a named constant of its default in a GL
+                // module, `const T NAME = default;`.
                 GlobalKind::SpecConstant { id, default } => {
                     let ty = self.ty(&g.ty);
                     let init = self.const_expr(default, &g.ty);
                     match self.flavor {
                         Flavor::Gl => GlobalSlot::Const(self.module.constants.append(naga::Constant { name: Some(g.name.clone()), ty, init }, span)),
+                        Flavor::Gpu(_) if self.spec_private => GlobalSlot::Var(self.add_global(g.name.clone(), naga::AddressSpace::Private, None, ty, Some(init), span)),
                         Flavor::Gpu(_) => {
                             let id = Some(*id as u16);
                             GlobalSlot::Override(self.module.overrides.append(naga::Override { name: Some(g.name.clone()), id, ty, init: Some(init) }, span))

@@ -49,10 +49,20 @@ impl GlUniforms {
 }
 
 /// How lowering builds the modules.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct LowerOptions {
     pub conventions: Conventions,
     pub gl_uniforms: GlUniforms,
+    /// Whether SPIR-V will be written: a program with specialization
+    /// constants then gets [`Lowered::spirv`] (true by default; the
+    /// driver clears it when SPIR-V is not a target).
+    pub spirv: bool,
+}
+
+impl Default for LowerOptions {
+    fn default() -> Self {
+        LowerOptions { conventions: Conventions::default(), gl_uniforms: GlUniforms::default(), spirv: true }
+    }
 }
 
 impl From<Conventions> for LowerOptions {
@@ -205,6 +215,13 @@ pub struct Lowered {
     pub gl: Vec<GlEntry>,
     pub gpu: naga::Module,
     pub gpu_info: naga::valid::ModuleInfo,
+    /// The GPU module for the SPIR-V writer where it differs from `gpu`:
+    /// a program with specialization constants holds each in a `Private`
+    /// variable of its default that nothing writes, which `emit::spirv`
+    /// makes an `OpSpecConstant` (naga 30's SPIR-V writer has no
+    /// overrides). `None` without specialization constants, or when
+    /// SPIR-V is not a target.
+    pub spirv: Option<(naga::Module, naga::valid::ModuleInfo)>,
     pub interface: Interface,
 }
 

@@ -67,20 +67,27 @@ pub fn lower(program: &sema::Program, options: impl Into<LowerOptions>) -> Resul
     let options = options.into();
     // Call-graph reach, once for all the modules.
     let reach = Reach::of(program);
-    let (gpu, gpu_info, mut interface) = gpu(program, options.conventions, &reach)?;
+    let (gpu, gpu_info, mut interface) = gpu(program, options.conventions, &reach, false)?;
+    // Lowered again only for a program with specialization constants.
+    let spirv = match options.spirv && !gpu.overrides.is_empty() {
+        true => self::gpu(program, options.conventions, &reach, true).map(|(m, i, _)| Some((m, i)))?,
+        false => None,
+    };
     interface.gl_uniforms = options.gl_uniforms;
     interface.gl_block_points = uniforms::gl_block_points(program, &interface.resources, options.gl_uniforms);
     let gl = (0..program.entry_points.len()).map(|i| gl_entry(program, i, options.conventions, options.gl_uniforms, &reach)).collect::<Result<_, _>>()?;
-    Ok(Lowered { gl, gpu, gpu_info, interface })
+    Ok(Lowered { gl, gpu, gpu_info, spirv, interface })
 }
 
 /// The validated GPU module of the whole program, and its interface.
 pub fn lower_gpu(program: &sema::Program, conventions: Conventions) -> Result<(naga::Module, naga::valid::ModuleInfo, Interface), Diagnostic> {
-    gpu(program, conventions, &Reach::of(program))
+    gpu(program, conventions, &Reach::of(program), false)
 }
 
-fn gpu(program: &sema::Program, conventions: Conventions, reach: &Reach) -> Result<(naga::Module, naga::valid::ModuleInfo, Interface), Diagnostic> {
-    let (mut gpu, mut interface, _) = build(program, Flavor::Gpu(conventions), conventions, GlUniforms::default(), None, reach)?;
+/// The GPU module; `spec_private`: specialization constants as `Private`
+/// variables of their defaults (for SPIR-V) instead of overrides.
+fn gpu(program: &sema::Program, conventions: Conventions, reach: &Reach, spec_private: bool) -> Result<(naga::Module, naga::valid::ModuleInfo, Interface), Diagnostic> {
+    let (mut gpu, mut interface, _) = build(program, Flavor::Gpu(conventions), conventions, GlUniforms::default(), None, reach, spec_private)?;
     declare_f16_if_used(&mut gpu);
     #[cfg(debug_assertions)]
     let gpu = fault::inject(gpu);
@@ -115,7 +122,7 @@ pub fn lower_gl_entry(program: &sema::Program, index: usize, conventions: Conven
 
 /// [`lower_gl_entry`] with the program's reach already computed.
 fn gl_entry(program: &sema::Program, index: usize, conventions: Conventions, gl_uniforms: GlUniforms, reach: &Reach) -> Result<GlEntry, Diagnostic> {
-    let (module, _, uniforms) = build(program, Flavor::Gl, conventions, gl_uniforms, Some(index), reach)?;
+    let (module, _, uniforms) = build(program, Flavor::Gl, conventions, gl_uniforms, Some(index), reach, false)?;
     let info = validate::validate(&module, Flavor::Gl)?;
     Ok(GlEntry { module, info, uniforms })
 }
@@ -131,8 +138,10 @@ fn build(
     gl_uniforms: GlUniforms,
     only: Option<usize>,
     reach: &Reach,
+    spec_private: bool,
 ) -> Result<(naga::Module, Interface, Vec<(naga::Handle<naga::GlobalVariable>, String)>), Diagnostic> {
     let mut m = ModuleBuilder::new(p, flavor, conventions, gl_uniforms);
+    m.spec_private = spec_private;
     m.allow_nonuniform_derivatives();
     let io = EntryIo::of(p, only, reach);
     let only_ep = only.map(|i| &p.entry_points[i]);

@@ -76,6 +76,9 @@ pub(super) struct ModuleBuilder<'p> {
     /// A GL module's private globals that stand for plain uniforms
     /// (`GlEntry::uniforms`).
     pub(super) plain_uniforms: Vec<(Handle<naga::GlobalVariable>, String)>,
+    /// Specialization constants as `Private` variables of their defaults
+    /// (the SPIR-V module, `Lowered::spirv`), not overrides.
+    pub(super) spec_private: bool,
 }
 
 /// One sampler: element `elem` of sampler global `global` (0 for a single
@@ -118,6 +121,7 @@ impl<'p> ModuleBuilder<'p> {
             loose: Vec::new(),
             loose_of: vec![None; p.globals.len()],
             plain_uniforms: Vec::new(),
+            spec_private: false,
         }
     }
 

@@ -276,8 +276,8 @@ pub enum GlobalKind {
     Workgroup,
     /// `@constant_id = N`: a specialization constant (a `bool`, `int`,
     /// `uint` or `float` the host may set when it creates the pipeline),
-    /// with its default. WGSL `override`; the default on SPIR-V and GLSL
-    /// (docs/targets.md, "Specialization constants").
+    /// with its default. WGSL `override`, SPIR-V `OpSpecConstant`; the
+    /// default on GLSL (docs/targets.md, "Specialization constants").
     SpecConstant { id: u32, default: ConstValue },
     /// A module variable (`var angle = 0.0`, no qualifier) a shader reaches:
     /// private to each invocation, starting from `init` (zero when `None`).

@@ -57,3 +57,64 @@ fn tutorial_compiles_verbatim_and_validates() {
         assert!(!vs.contains(name), "shadow_vs declares {name}:\n{vs}");
     }
 }
+
+/// `@constant_id` constants are `OpSpecConstant`s decorated `SpecId N` in
+/// the SPIR-V, with the manifest's defaults, initialising the private
+/// variable of the same name that the code loads (issue 36); spirv-val
+/// accepts the module, also the SPIR-V 1.3 one with subgroups.
+#[test]
+fn specialization_constants_are_spec_constants_in_the_spirv() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let spirv_only = |defines: Vec<(String, Option<String>)>| umbrac::Options { targets: vec![umbrac::Target::Spirv], defines, ..Default::default() };
+    let cases = [
+        ("shaders/features/specialization_constants.das", spirv_only(vec![])),
+        ("shaders/compute/spec_reduce.das", spirv_only(vec![("SUBGROUPS".into(), None)])),
+    ];
+    for (file, opts) in &cases {
+        let c = umbrac::compile_file(&root.join(file), opts);
+        let compiled = c.result.as_ref().unwrap_or_else(|| panic!("{file}:\n{}", c.render_diagnostics()));
+        let spec = compiled.reflection.specialization_constants.clone().expect("specialization constants in the manifest");
+        let spv = compiled.artifacts.iter().find(|a| a.file_name.ends_with(".spv")).expect("a SPIR-V module");
+        let words: Vec<u32> = spv.contents.chunks_exact(4).map(|b| u32::from_le_bytes([b[0], b[1], b[2], b[3]])).collect();
+        // The words: (opcode, operands) of each instruction.
+        let mut insts = Vec::new();
+        let mut at = 5;
+        while at < words.len() {
+            let n = (words[at] >> 16) as usize;
+            insts.push((words[at] & 0xffff, &words[at + 1..at + n]));
+            at += n;
+        }
+        for s in &spec {
+            assert_eq!(s.spirv, "spec_constant", "{file}: {}", s.name);
+            // OpDecorate %id SpecId N, once.
+            let ids: Vec<u32> = insts.iter().filter(|(op, o)| *op == 71 && o[1] == 1 && o[2] == s.id).map(|(_, o)| o[0]).collect();
+            let [id] = ids[..] else { panic!("{file}: {} ids decorated SpecId {}", ids.len(), s.id) };
+            // Its definition: OpSpecConstant with the default's bits, or
+            // OpSpecConstantTrue/False.
+            let def = insts.iter().find(|(op, o)| matches!(op, 48..=50) && o[1] == id).unwrap_or_else(|| panic!("{file}: no spec constant %{id} for {}", s.name));
+            match s.ty.as_str() {
+                "bool" => assert_eq!(def.0, if s.default_bits == 1 { 48 } else { 49 }, "{file}: {}", s.name),
+                _ => assert_eq!((def.0, def.1[2]), (50, s.default_bits), "{file}: {}", s.name),
+            }
+            // A private variable (storage class 6) it initialises.
+            assert!(insts.iter().any(|(op, o)| *op == 59 && o.len() == 4 && o[2] == 6 && o[3] == id), "{file}: no variable initialised with {}", s.name);
+        }
+        let dir = tempfile::tempdir().unwrap();
+        let paths = support::write_all(dir.path(), &compiled.artifacts);
+        let spv_path = paths.iter().find(|p| p.extension().is_some_and(|e| e == "spv")).unwrap();
+        if support::require_tool("spirv-val") {
+            support::spirv_val(spv_path).unwrap_or_else(|e| panic!("{file}: {e}"));
+        }
+        if support::require_tool("spirv-dis") {
+            let out = std::process::Command::new("spirv-dis").arg(spv_path).output().expect("spirv-dis runs");
+            let text = String::from_utf8_lossy(&out.stdout);
+            for s in &spec {
+                assert!(text.contains(&format!(" SpecId {}\n", s.id)), "{file}: no SpecId {}:\n{text}", s.id);
+            }
+            assert!(text.contains("OpSpecConstant"), "{file}:\n{text}");
+        }
+    }
+    // Without SPIR-V among the targets, the program is lowered once.
+    let c = umbrac::compile_file(&root.join(cases[0].0), &umbrac::Options { targets: vec![umbrac::Target::Wgsl], ..Default::default() });
+    assert!(c.result.as_ref().expect("compiles for WGSL").lowered.spirv.is_none());
+}

@@ -52,7 +52,7 @@ pub fn fake_lowered(src: &str) -> Lowered {
     }
     let gl = (0..gpu.entry_points.len()).map(|i| gl_entry(&gl, i, src)).collect();
     let interface = interface_of(&gpu, &gpu_info);
-    Lowered { gl, gpu, gpu_info, interface }
+    Lowered { gl, gpu, gpu_info, spirv: None, interface }
 }
 
 /// `gl` reduced to entry point `index` and what it reaches, as the lowering

@@ -37,8 +37,9 @@ pub struct ComputePlan {
     /// The buffers and images whose contents come back, by name.
     pub readback: Vec<String>,
     /// Specialization constants set by `@constant_id` (the others keep
-    /// their defaults). Only WGSL has them (`override`): the other
-    /// consumers refuse a plan that sets any (docs/targets.md).
+    /// their defaults): WGSL's overrides and SPIR-V's `OpSpecConstant`s.
+    /// GLSL holds the defaults: the GL consumers refuse a plan that sets
+    /// any (docs/targets.md).
     pub constants: Vec<(u32, f64)>,
 }
 

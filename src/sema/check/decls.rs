@@ -1091,7 +1091,7 @@ impl ConstEnv for ConstEnvAdapter<'_, '_, '_> {
 
     fn why_not_const(&self, name: &str) -> Option<String> {
         let spec = self.c.ast.items.iter().any(|i| matches!(i, ast::Item::Global(g) if g.name.name == name && g.qualifiers.iter().any(|q| matches!(q.kind, ast::QualifierKind::ConstantId(_)))));
-        spec.then(|| format!("`{name}` is a specialization constant (`@constant_id`), whose value the host sets when it creates the pipeline: WGSL takes an `override` in no array size here and in no `const`, and SPIR-V and GLSL hold only its default, so it is refused on every target (use it in the shader's code, or a `let` constant where a constant is needed)"))
+        spec.then(|| format!("`{name}` is a specialization constant (`@constant_id`), whose value the host sets when it creates the pipeline: WGSL takes an `override` in no array size here and in no `const`, and GLSL holds only its default, so it is refused on every target (use it in the shader's code, or a `let` constant where a constant is needed)"))
     }
 }
 

@@ -73,24 +73,24 @@ impl WgpuExecutor {
     }
 
     fn dispatch(&self, set: &ShaderSet, code: &ShaderCode, plan: &ComputePlan, fit: &ComputeFit) -> Result<ComputeReadback, ExecError> {
-        if !plan.constants.is_empty() && !matches!(code, ShaderCode::Wgsl(_)) {
-            return Err(ExecError::Unsupported(format!(
-                "{}: umbrac's SPIR-V holds each specialization constant's default (naga writes no OpSpecConstant): only the WGSL's overrides can be set",
-                set.label
-            )));
-        }
         let device = &self.device;
         let [x, y, z] = fit.workgroup_size;
         // Modules and pipelines are kept for the device's life: lavapipe lost
         // a second dispatch's image writes (or crashed) when the compute
         // pipeline of a SPIR-V module handed to it unchanged was made afresh
         // (`image_writes_survive_alternating_programs`).
+        // wgpu 30 hands a passthrough module to Vulkan without its
+        // pipeline constants (wgpu-hal makes no `VkSpecializationInfo`):
+        // SPIR-V whose specialization constants the plan sets goes through
+        // wgpu's naga front end instead, which reads each `OpSpecConstant`
+        // with `SpecId N` as the override `@id(N)` that takes them.
+        let specialized = !plan.constants.is_empty();
         let key = {
             use std::hash::{Hash, Hasher};
             let mut h = std::collections::hash_map::DefaultHasher::new();
             match code {
                 ShaderCode::Wgsl(text) => text.hash(&mut h),
-                ShaderCode::Spirv(words) => words.hash(&mut h),
+                ShaderCode::Spirv(words) => (words, specialized).hash(&mut h),
                 ShaderCode::Glsl { text, .. } => text.hash(&mut h),
             }
             (h.finish(), fit.entry.clone())
@@ -100,6 +100,7 @@ impl WgpuExecutor {
         }
         let module = match code {
             ShaderCode::Wgsl(text) => device.create_shader_module(wgpu::ShaderModuleDescriptor { label: Some(&set.label), source: wgpu::ShaderSource::Wgsl(crate::emit::wgsl::for_naga(text)) }),
+            ShaderCode::Spirv(words) if specialized => device.create_shader_module(wgpu::ShaderModuleDescriptor { label: Some(&set.label), source: wgpu::ShaderSource::SpirV(words.as_slice().into()) }),
             // SAFETY: a SPIR-V module umbrac emitted and naga validated
             // (the contract of `--via spirv`).
             ShaderCode::Spirv(words) => unsafe {
@@ -192,7 +193,8 @@ impl WgpuExecutor {
         // The pipeline, made once per module and layout and kept with the
         // module (see `dispatch`).
         let pipeline_key = format!("{:p} {} {layouts:?} {:?}", module as *const wgpu::ShaderModule, fit.entry, plan.constants);
-        // WGSL overrides by id (`@id(N)`), as wgpu keys them.
+        // Overrides by id (WGSL's `@id(N)`, SPIR-V's `SpecId N`), as wgpu
+        // keys them.
         let constant_ids: Vec<String> = plan.constants.iter().map(|(id, _)| id.to_string()).collect();
         let constants: Vec<(&str, f64)> = constant_ids.iter().zip(&plan.constants).map(|(k, (_, v))| (k.as_str(), *v)).collect();
         let cached = self.compute_pipelines.lock().unwrap_or_else(|p| p.into_inner()).get(&pipeline_key).cloned();
