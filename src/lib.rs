@@ -28,6 +28,7 @@ pub mod golden;
 pub mod lower;
 pub mod output;
 pub mod rerun;
+pub mod run;
 mod sealed;
 pub mod sema;
 pub mod source;
