@@ -1,0 +1,693 @@
+//! The compiler as a service for editors: a workspace of files in which
+//! open documents stand for the files on disk (also where they are
+//! `#include`d or `require`d), compilations of any file in it, and queries
+//! over the last good analysis of each: what is at a position, where it is
+//! declared, who uses it, which symbols a file declares.
+//!
+//! `umbrac lsp` (`crate::lsp`) speaks the protocol over this; the queries
+//! work on byte offsets into files, the protocol's UTF-16 positions are
+//! converted by [`position_to_offset`] and [`offset_to_position`].
+
+use std::collections::HashMap;
+use std::path::{Path, PathBuf};
+use std::sync::Arc;
+
+use crate::diag::{Diagnostic, Severity};
+use crate::sema::builtins::name_of;
+use crate::sema::tree::{self, ExprKind, GlobalKind, Stmt};
+use crate::sema::types::{Ty, TyDisplay};
+use crate::source::{SourceMap, Span};
+use crate::syntax::overlay;
+use crate::{Compilation, Options};
+
+/// An open document.
+#[derive(Clone, Debug)]
+struct Document {
+    text: String,
+    version: i32,
+}
+
+/// Open documents over the disk, the options files compile with, and the
+/// last good analysis of every file checked.
+#[derive(Default)]
+pub struct Workspace {
+    options: Options,
+    docs: HashMap<PathBuf, Document>,
+    analyses: HashMap<PathBuf, Arc<Index>>,
+}
+
+/// A diagnostic placed in the file that was checked: one in an included
+/// or required file sits at the `#include`/`require` line that brought it
+/// in, its message naming the file.
+#[derive(Clone, Debug, PartialEq)]
+pub struct FileDiagnostic {
+    pub severity: Severity,
+    /// Byte range in the checked file.
+    pub start: usize,
+    pub end: usize,
+    /// The message, its label, notes and help, as the CLI prints them.
+    pub message: String,
+    /// Other places the diagnostic points at (path, byte range, message).
+    pub related: Vec<(PathBuf, usize, usize, String)>,
+}
+
+/// What a check of one file found.
+#[derive(Debug)]
+pub struct Checked {
+    /// The document version the check compiled (`None` for a file not open).
+    pub version: Option<i32>,
+    pub diagnostics: Vec<FileDiagnostic>,
+    /// Every file the compilation read (the root, includes, modules).
+    pub files_read: Vec<PathBuf>,
+}
+
+impl Workspace {
+    pub fn new(options: Options) -> Self {
+        Workspace { options, ..Default::default() }
+    }
+
+    pub fn options(&self) -> &Options {
+        &self.options
+    }
+
+    /// New options; every analysis is dropped (it was made with others).
+    pub fn set_options(&mut self, options: Options) {
+        self.options = options;
+        self.analyses.clear();
+    }
+
+    /// Opens a document or replaces its text.
+    pub fn set_document(&mut self, path: &Path, text: String, version: i32) {
+        self.docs.insert(overlay::normalize(path), Document { text, version });
+    }
+
+    /// Closes a document: the file on disk counts again.
+    pub fn close_document(&mut self, path: &Path) {
+        self.docs.remove(&overlay::normalize(path));
+    }
+
+    /// The open document's version.
+    pub fn version(&self, path: &Path) -> Option<i32> {
+        self.docs.get(&overlay::normalize(path)).map(|d| d.version)
+    }
+
+    /// The text a compilation would read for `path` now.
+    pub fn text(&self, path: &Path) -> Option<String> {
+        match self.docs.get(&overlay::normalize(path)) {
+            Some(d) => Some(d.text.clone()),
+            None => std::fs::read_to_string(path).ok(),
+        }
+    }
+
+    /// The open documents, by normalized path.
+    pub fn documents(&self) -> impl Iterator<Item = &Path> {
+        self.docs.keys().map(PathBuf::as_path)
+    }
+
+    /// Compiles `path` with the open documents standing for their files,
+    /// keeping the analysis when the program checked. Never panics: a
+    /// compiler panic is an internal-error diagnostic.
+    pub fn check(&mut self, path: &Path) -> Checked {
+        let path = overlay::normalize(path);
+        let version = self.version(&path);
+        let (diagnostics, files_read, index) = self.compile(&path);
+        if let Some(index) = index {
+            self.analyses.insert(path, Arc::new(index));
+        }
+        Checked { version, diagnostics, files_read }
+    }
+
+    /// The last good analysis of `path` as a root, or of a root that read it.
+    pub fn index(&self, path: &Path) -> Option<Arc<Index>> {
+        let path = overlay::normalize(path);
+        if let Some(i) = self.analyses.get(&path) {
+            return Some(i.clone());
+        }
+        self.analyses.values().find(|i| i.file(&path).is_some()).cloned()
+    }
+
+    /// Forgets a file's analysis (it was deleted).
+    pub fn forget(&mut self, path: &Path) {
+        self.analyses.remove(&overlay::normalize(path));
+    }
+
+    /// Compiles on a compiler thread (the checked program stays there: it
+    /// is not `Send`): the placed diagnostics, the files read, the index.
+    fn compile(&self, path: &Path) -> (Vec<FileDiagnostic>, Vec<PathBuf>, Option<Index>) {
+        let texts: overlay::Texts = Arc::new(self.docs.iter().map(|(p, d)| (p.clone(), d.text.clone())).collect());
+        let opts = &self.options;
+        let failed = |msg: &str| (place_diagnostics(&crate::panicked(msg), path), Vec::new(), None);
+        let run = || {
+            let job = || {
+                let (c, program) = overlay::with(texts, || crate::analyze_file(path, opts));
+                let diagnostics = place_diagnostics(&c, path);
+                let files_read = c.files_read();
+                (diagnostics, files_read, program.map(|p| Index::new(&p, c)))
+            };
+            std::panic::catch_unwind(std::panic::AssertUnwindSafe(job)).unwrap_or_else(|payload| {
+                failed(&format!("the compiler panicked while compiling `{}`: {}", path.display(), crate::diag::panic_message(&*payload)))
+            })
+        };
+        std::thread::scope(|s| match crate::spawn_compiler_thread(s, run) {
+            Ok(h) => h.join().unwrap_or_else(|_| failed("the compilation thread failed")),
+            Err(e) => failed(&format!("cannot start a compilation thread: {e}")),
+        })
+    }
+}
+
+/// How the front end's refusal of a file without entry points begins
+/// (`syntax::items::select`; `host_code_says_nothing` in tests/compiler/lsp.rs
+/// fails if it changes).
+const NO_ENTRY_POINTS: &str = "no entry points:";
+
+/// Places each diagnostic of a compilation of `root` in `root`.
+fn place_diagnostics(c: &Compilation, root: &Path) -> Vec<FileDiagnostic> {
+    let map = &c.sources;
+    let in_root = |span: Span| map.locate(span).filter(|(id, _)| map.file(*id).path.as_deref().map(overlay::normalize).as_deref() == Some(root));
+    // A file without entry points (host code, an include, a module) is no
+    // program: the CLI refuses it as an input, an editor says nothing.
+    let not_a_program = |d: &&Diagnostic| d.message.starts_with(NO_ENTRY_POINTS);
+    let mut out: Vec<FileDiagnostic> = c.diagnostics.iter().filter(|d| !not_a_program(d)).map(|d| place(d, map, &in_root)).collect();
+    if c.suppressed_errors > 0 {
+        out.push(FileDiagnostic { severity: Severity::Error, start: 0, end: 0, message: format!("{} more errors not shown", c.suppressed_errors), related: Vec::new() });
+    }
+    out
+}
+
+fn place(d: &Diagnostic, map: &SourceMap, in_root: &dyn Fn(Span) -> Option<(usize, std::ops::Range<usize>)>) -> FileDiagnostic {
+    let mut message = d.message.clone();
+    if let Some(label) = Some(&d.label).filter(|l| !l.is_empty()) {
+        message.push_str(&format!(" ({label})"));
+    }
+    for n in &d.notes {
+        message.push('\n');
+        message.push_str(n);
+    }
+    let related = d
+        .secondary
+        .iter()
+        .filter_map(|(s, m)| {
+            let (id, r) = map.locate(*s)?;
+            Some((map.file(id).path.clone().map(|p| overlay::normalize(&p))?, r.start, r.end, m.clone()))
+        })
+        .collect();
+    let mut fd = FileDiagnostic { severity: d.severity, start: 0, end: 0, message, related };
+    let Some(span) = d.span else { return fd };
+    if let Some((_, r)) = in_root(span) {
+        fd.start = r.start;
+        fd.end = r.end;
+        return fd;
+    }
+    // In an included or required file: at the outermost site in the root.
+    if let Some(site) = map.include_chain(span).into_iter().rev().find_map(|s| in_root(s)) {
+        let (_, line, col) = map.line_col(span).unwrap_or_default();
+        let name = map.file_of(span.start).map(|id| map.file(id).name.clone()).unwrap_or_default();
+        fd.message = format!("{name}:{line}:{col}: {}", fd.message);
+        fd.start = site.1.start;
+        fd.end = site.1.end;
+    }
+    fd
+}
+
+/// What a name or expression refers to.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum Symbol {
+    Global(usize),
+    Const(usize),
+    Function(usize),
+    EntryPoint(usize),
+    Struct(usize),
+    Field(usize, u32),
+    /// A local of a function (`Function` index, or entry point index + the
+    /// function count) by its id.
+    Local(usize, usize),
+}
+
+/// A place in the sources an [`Index`] holds.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Location {
+    pub path: PathBuf,
+    /// Byte range in that file.
+    pub start: usize,
+    pub end: usize,
+}
+
+/// The kind of a declaration, for document symbols.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SymbolKind {
+    EntryPoint,
+    Function,
+    Global,
+    Constant,
+    Struct,
+}
+
+/// A declaration a file holds.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct DocumentSymbol {
+    pub name: String,
+    pub kind: SymbolKind,
+    /// Its type, or its stage for an entry point.
+    pub detail: String,
+    /// The declaration's name.
+    pub start: usize,
+    pub end: usize,
+}
+
+/// An expression's span and what to say about it.
+#[derive(Clone, Debug)]
+struct Occurrence {
+    span: Span,
+    ty: String,
+    symbol: Option<Symbol>,
+    /// A builtin call's name and signature.
+    builtin: Option<String>,
+}
+
+/// The answers of one good analysis: kept with the sources it was made
+/// from, so that its byte offsets stay meaningful until the next one.
+pub struct Index {
+    sources: SourceMap,
+    /// Every expression, sorted by start.
+    occurrences: Vec<Occurrence>,
+    /// Declarations: name span, name, kind, type or stage.
+    decls: HashMap<Symbol, (Span, String, String)>,
+    /// The reflection manifest, when the compilation emitted one.
+    manifest: Option<serde_json::Value>,
+}
+
+/// What a hover shows.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Hover {
+    /// Markdown.
+    pub text: String,
+    /// The byte range it is about.
+    pub start: usize,
+    pub end: usize,
+}
+
+impl Index {
+    fn new(p: &tree::Program, compilation: Compilation) -> Index {
+        let structs = p.struct_names();
+        let enums = p.enum_names();
+        let show = |ty: &Ty| TyDisplay { ty, struct_names: &structs, enum_names: &enums }.to_string();
+        let sources = compilation.sources;
+        let mut decls = HashMap::new();
+        for (i, g) in p.globals.iter().enumerate() {
+            if !matches!(g.kind, GlobalKind::Builtin(_)) {
+                decls.insert(Symbol::Global(i), (g.span, g.name.clone(), show(&g.ty)));
+            }
+        }
+        for (i, c) in p.consts.iter().enumerate() {
+            decls.insert(Symbol::Const(i), (c.span, c.name.clone(), show(&c.ty)));
+        }
+        for (i, s) in p.structs.iter().enumerate() {
+            decls.insert(Symbol::Struct(i), (name_within(&sources, s.span, &s.name), s.name.clone(), "struct".into()));
+            for (k, (name, ty, span)) in s.fields.iter().enumerate() {
+                decls.insert(Symbol::Field(i, k as u32), (*span, name.clone(), show(ty)));
+            }
+        }
+        let nf = p.functions.len();
+        let mut w = Walker { occurrences: Vec::new(), show: &show, func: 0 };
+        for (i, f) in p.functions.iter().enumerate() {
+            decls.insert(Symbol::Function(i), (name_within(&sources, f.span, &f.name), f.name.clone(), format!("def {}(...) : {}", f.name, show(&f.ret))));
+            w.function(i, f, &mut decls);
+        }
+        for (i, e) in p.entry_points.iter().enumerate() {
+            let stage = format!("{:?} entry point", e.stage).to_lowercase();
+            decls.insert(Symbol::EntryPoint(i), (name_within(&sources, e.func.span, &e.name), e.name.clone(), stage));
+            w.function(nf + i, &e.func, &mut decls);
+        }
+        let mut occurrences = w.occurrences;
+        occurrences.sort_by_key(|o| (o.span.start, std::cmp::Reverse(o.span.end)));
+        let manifest = compilation
+            .result
+            .as_ref()
+            .and_then(|r| r.artifacts.iter().find(|a| a.target.is_none()))
+            .and_then(|a| serde_json::from_slice(&a.contents).ok());
+        Index { sources, occurrences, decls, manifest }
+    }
+
+    /// The id and text of a file this analysis read.
+    fn file(&self, path: &Path) -> Option<(usize, &str)> {
+        self.sources.files().find(|(_, f)| f.path.as_deref().map(overlay::normalize).as_deref() == Some(path)).map(|(id, f)| (id, f.text.as_str()))
+    }
+
+    /// The text of `path` as this analysis read it (offsets are into it).
+    pub fn text(&self, path: &Path) -> Option<&str> {
+        self.file(&overlay::normalize(path)).map(|(_, t)| t)
+    }
+
+    fn global_offset(&self, path: &Path, offset: usize) -> Option<u32> {
+        let (id, text) = self.file(&overlay::normalize(path))?;
+        Some(self.sources.file(id).base + offset.min(text.len()) as u32)
+    }
+
+    fn location(&self, span: Span) -> Option<Location> {
+        let (id, r) = self.sources.locate(span)?;
+        Some(Location { path: overlay::normalize(self.sources.file(id).path.as_deref()?), start: r.start, end: r.end })
+    }
+
+    /// The innermost expression or declaration name at a byte offset.
+    fn at(&self, path: &Path, offset: usize) -> Option<(Span, Option<Symbol>, Option<&Occurrence>)> {
+        let at = self.global_offset(path, offset)?;
+        let covers = |s: &Span| s.start <= at && at <= s.end && s.end > s.start;
+        let occ = self.occurrences.iter().filter(|o| covers(&o.span)).min_by_key(|o| o.span.end - o.span.start);
+        let decl = self.decls.iter().filter(|(_, (s, _, _))| covers(s)).min_by_key(|(_, (s, _, _))| s.end - s.start);
+        match (occ, decl) {
+            (_, Some((sym, (span, _, _)))) => Some((*span, Some(*sym), None)),
+            (Some(o), None) => Some((o.span, o.symbol, Some(o))),
+            (None, None) => None,
+        }
+    }
+
+    /// What is at a byte offset of `path`: the type of a name or
+    /// expression, a builtin's signature, a declaration's `//!` comment,
+    /// and for a global what the manifest says of it.
+    pub fn hover(&self, path: &Path, offset: usize) -> Option<Hover> {
+        let (span, symbol, occ) = self.at(path, offset)?;
+        let mut parts = Vec::new();
+        if let Some(b) = occ.and_then(|o| o.builtin.as_ref()) {
+            parts.push(format!("```das\n{b}\n```\nbuiltin"));
+        } else if let Some((dspan, name, detail)) = symbol.and_then(|s| self.decls.get(&s)) {
+            let what = match symbol {
+                Some(Symbol::Struct(_)) => format!("struct {name}"),
+                Some(Symbol::Function(_)) => detail.clone(),
+                Some(Symbol::EntryPoint(_)) => format!("{name}: {detail}"),
+                _ => format!("{name} : {detail}"),
+            };
+            parts.push(format!("```das\n{what}\n```"));
+            if let Some(doc) = self.doc_comment(*dspan) {
+                parts.push(doc);
+            }
+            if let (Some(Symbol::Global(_)), Some(m)) = (symbol, &self.manifest) {
+                let mut found = Vec::new();
+                manifest_entries(m, name, &mut found);
+                if !found.is_empty() {
+                    parts.push(format!("manifest:\n```json\n{}\n```", found.join("\n")));
+                }
+            }
+        } else if let Some(o) = occ {
+            parts.push(format!("```das\n{}\n```", o.ty));
+        }
+        let (_, r) = self.sources.locate(span)?;
+        Some(Hover { text: parts.join("\n\n"), start: r.start, end: r.end })
+    }
+
+    /// The `//!` lines right above a declaration.
+    fn doc_comment(&self, span: Span) -> Option<String> {
+        let (id, r) = self.sources.locate(span)?;
+        let text = &self.sources.file(id).text;
+        let line_start = text[..r.start].rfind('\n').map_or(0, |i| i + 1);
+        let mut lines: Vec<&str> = Vec::new();
+        for line in text[..line_start].lines().rev() {
+            match line.trim_start().strip_prefix("//!") {
+                Some(doc) => lines.push(doc.strip_prefix(' ').unwrap_or(doc)),
+                None => break,
+            }
+        }
+        lines.reverse();
+        (!lines.is_empty()).then(|| lines.join("\n"))
+    }
+
+    /// Where the name at a byte offset is declared.
+    pub fn definition(&self, path: &Path, offset: usize) -> Option<Location> {
+        let (_, symbol, _) = self.at(path, offset)?;
+        self.location(self.decls.get(&symbol?)?.0)
+    }
+
+    /// Every use of the name at a byte offset (and its declaration, first,
+    /// when `with_declaration`), in every file the analysis read.
+    pub fn references(&self, path: &Path, offset: usize, with_declaration: bool) -> Vec<Location> {
+        let Some((_, Some(symbol), _)) = self.at(path, offset) else { return Vec::new() };
+        let mut out = Vec::new();
+        if with_declaration {
+            out.extend(self.decls.get(&symbol).and_then(|d| self.location(d.0)));
+        }
+        let uses = self.occurrences.iter().filter(|o| o.symbol == Some(symbol)).filter_map(|o| self.location(o.span));
+        for l in uses {
+            if !out.contains(&l) {
+                out.push(l);
+            }
+        }
+        out
+    }
+
+    /// The declarations in `path`, in file order.
+    pub fn symbols(&self, path: &Path) -> Vec<DocumentSymbol> {
+        let path = overlay::normalize(path);
+        let mut out: Vec<DocumentSymbol> = Vec::new();
+        for (sym, (span, name, detail)) in &self.decls {
+            let kind = match sym {
+                Symbol::Global(_) => SymbolKind::Global,
+                Symbol::Const(_) => SymbolKind::Constant,
+                Symbol::Function(_) => SymbolKind::Function,
+                Symbol::EntryPoint(_) => SymbolKind::EntryPoint,
+                Symbol::Struct(_) => SymbolKind::Struct,
+                Symbol::Field(..) | Symbol::Local(..) => continue,
+            };
+            if let Some(l) = self.location(*span).filter(|l| l.path == path) {
+                out.push(DocumentSymbol { name: name.clone(), kind, detail: detail.clone(), start: l.start, end: l.end });
+            }
+        }
+        out.sort_by_key(|s| s.start);
+        out
+    }
+}
+
+/// The objects of a manifest whose `name` is `name`, as compact JSON.
+fn manifest_entries(v: &serde_json::Value, name: &str, out: &mut Vec<String>) {
+    match v {
+        serde_json::Value::Object(m) => {
+            if m.get("name").and_then(|n| n.as_str()) == Some(name) {
+                out.extend(serde_json::to_string(v).ok());
+                return;
+            }
+            m.values().for_each(|x| manifest_entries(x, name, out));
+        }
+        serde_json::Value::Array(a) => a.iter().for_each(|x| manifest_entries(x, name, out)),
+        _ => {}
+    }
+}
+
+/// The span of the first whole-word `name` inside `span` (a function's
+/// span covers its whole declaration); `span` itself if there is none.
+fn name_within(sources: &SourceMap, span: Span, name: &str) -> Span {
+    let text = sources.slice(span);
+    let word = |c: char| c.is_ascii_alphanumeric() || c == '_';
+    let mut from = 0;
+    while let Some(i) = text.get(from..).and_then(|t| t.find(name)).map(|i| i + from) {
+        let before = text[..i].chars().next_back().is_some_and(word);
+        let after = text[i + name.len()..].chars().next().is_some_and(word);
+        if !before && !after {
+            let start = span.start + i as u32;
+            return Span::new(start, start + name.len() as u32);
+        }
+        from = i + name.len();
+    }
+    span
+}
+
+/// Collects every expression of the checked functions.
+struct Walker<'a> {
+    occurrences: Vec<Occurrence>,
+    show: &'a dyn Fn(&Ty) -> String,
+    func: usize,
+}
+
+impl Walker<'_> {
+    fn function(&mut self, key: usize, f: &tree::Function, decls: &mut HashMap<Symbol, (Span, String, String)>) {
+        self.func = key;
+        for (id, l) in f.locals.iter().enumerate() {
+            decls.insert(Symbol::Local(key, id), (l.span, l.name.as_str().to_string(), (self.show)(&l.ty)));
+        }
+        self.stmts(&f.body);
+    }
+
+    fn stmts(&mut self, body: &[Stmt]) {
+        for s in body {
+            match s {
+                Stmt::Local { init, .. } => init.iter().for_each(|e| self.expr(e)),
+                Stmt::Assign { target, value, .. } => {
+                    self.expr(target);
+                    self.expr(value);
+                }
+                Stmt::Expr(e) => self.expr(e),
+                Stmt::If { cond, then, otherwise, .. } => {
+                    self.expr(cond);
+                    self.stmts(then);
+                    self.stmts(otherwise);
+                }
+                Stmt::While { cond, body, .. } => {
+                    self.expr(cond);
+                    self.stmts(body);
+                }
+                Stmt::For { start, end, body, .. } => {
+                    self.expr(start);
+                    self.expr(end);
+                    self.stmts(body);
+                }
+                Stmt::Return(e, _) => e.iter().for_each(|e| self.expr(e)),
+                Stmt::Break(_) | Stmt::Continue(_) | Stmt::Discard(_) => {}
+            }
+        }
+    }
+
+    fn expr(&mut self, e: &tree::Expr) {
+        let mut builtin = None;
+        let symbol = match &e.kind {
+            ExprKind::Local(id) => Some(Symbol::Local(self.func, *id)),
+            ExprKind::Global(g) => Some(Symbol::Global(*g)),
+            ExprKind::Const(c) => Some(Symbol::Const(*c)),
+            ExprKind::Call(f, _) => Some(Symbol::Function(*f)),
+            ExprKind::Field(base, k) => match base.ty {
+                Ty::Struct(s) => Some(Symbol::Field(s, *k)),
+                _ => None,
+            },
+            ExprKind::Builtin(b, args) => {
+                let params: Vec<String> = args.iter().map(|a| (self.show)(&a.ty)).collect();
+                builtin = Some(format!("{}({}) : {}", name_of(*b), params.join(", "), (self.show)(&e.ty)));
+                None
+            }
+            _ => None,
+        };
+        if !e.span.is_empty() {
+            self.occurrences.push(Occurrence { span: e.span, ty: (self.show)(&e.ty), symbol, builtin });
+        }
+        match &e.kind {
+            ExprKind::Unary(_, x) | ExprKind::Swizzle(x, _) | ExprKind::Field(x, _) => self.expr(x),
+            ExprKind::Binary(_, pair) => {
+                self.expr(&pair.0);
+                self.expr(&pair.1);
+            }
+            ExprKind::Select { cond, accept, reject } => {
+                self.expr(cond);
+                self.expr(accept);
+                self.expr(reject);
+            }
+            ExprKind::Call(_, args) | ExprKind::Builtin(_, args) | ExprKind::Construct(args) => args.iter().for_each(|a| self.expr(a)),
+            ExprKind::Index(a, b) => {
+                self.expr(a);
+                self.expr(b);
+            }
+            _ => {}
+        }
+    }
+}
+
+/// The byte offset of an LSP position (line, UTF-16 column) in `text`:
+/// a column past the line's end is its end, a line past the last is the
+/// text's end, a column inside a surrogate pair is the character's start.
+pub fn position_to_offset(text: &str, line: u32, character: u32) -> usize {
+    let mut start = 0;
+    for _ in 0..line {
+        match text[start..].find('\n') {
+            Some(i) => start += i + 1,
+            None => return text.len(),
+        }
+    }
+    let line_text = text[start..].split('\n').next().unwrap_or("");
+    let mut units = 0u32;
+    for (i, c) in line_text.char_indices() {
+        units += c.len_utf16() as u32;
+        if units > character {
+            return start + i;
+        }
+    }
+    start + line_text.trim_end_matches('\r').len()
+}
+
+/// The LSP position (line, UTF-16 column) of a byte offset in `text`
+/// (clamped to the text, and to a character boundary).
+pub fn offset_to_position(text: &str, offset: usize) -> (u32, u32) {
+    let mut offset = offset.min(text.len());
+    while !text.is_char_boundary(offset) {
+        offset -= 1;
+    }
+    let before = &text[..offset];
+    let line = before.matches('\n').count() as u32;
+    let line_start = before.rfind('\n').map_or(0, |i| i + 1);
+    let character = before[line_start..].chars().map(|c| c.len_utf16() as u32).sum();
+    (line, character)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const MAIN: &str = "//! The light's colour.\nvar @uniform light : float3\nvar @out f_color : float4\n\ndef shade(c : float3) : float3 {\n    return c * light\n}\n\n[vertex_program]\ndef vs {\n    gl_Position = float4(shade(light), 1.0)\n}\n\n[fragment_program]\ndef fs {\n    let k = length(light)\n    f_color = float4(float3(k), 1.0)\n}\n";
+
+    fn dir_with(files: &[(&str, &str)]) -> tempfile::TempDir {
+        let d = tempfile::tempdir().unwrap();
+        for (name, text) in files {
+            std::fs::write(d.path().join(name), text).unwrap();
+        }
+        d
+    }
+
+    #[test]
+    fn positions_convert_in_utf16_and_clamp() {
+        let text = "a\u{1F600}b\nxy";
+        assert_eq!(position_to_offset(text, 0, 0), 0);
+        assert_eq!(position_to_offset(text, 0, 1), 1);
+        // Inside the surrogate pair: the character's start.
+        assert_eq!(position_to_offset(text, 0, 2), 1);
+        assert_eq!(position_to_offset(text, 0, 3), 5);
+        assert_eq!(position_to_offset(text, 0, 99), 6);
+        assert_eq!(position_to_offset(text, 1, 1), 8);
+        assert_eq!(position_to_offset(text, 7, 0), text.len());
+        assert_eq!(offset_to_position(text, 5), (0, 3));
+        assert_eq!(offset_to_position(text, 2), (0, 1));
+        assert_eq!(offset_to_position(text, 99), (1, 2));
+    }
+
+    #[test]
+    fn an_open_document_stands_for_its_file_also_when_included() {
+        let d = dir_with(&[("main.das", "#include \"inc.das\"\n"), ("inc.das", MAIN)]);
+        let main = d.path().join("main.das");
+        let mut ws = Workspace::new(Options::default());
+        let ok = ws.check(&main);
+        assert!(ok.diagnostics.is_empty(), "{:?}", ok.diagnostics);
+        // An unsaved error in the included file shows at the #include line.
+        ws.set_document(&d.path().join("inc.das"), MAIN.replace("c * light", "c * nothing"), 3);
+        let bad = ws.check(&main);
+        assert_eq!(bad.diagnostics.len(), 1, "{:?}", bad.diagnostics);
+        let diag = &bad.diagnostics[0];
+        assert_eq!(&"#include \"inc.das\"\n"[diag.start..diag.end], "#include \"inc.das\"", "{diag:?}");
+        assert!(diag.message.contains("nothing") && diag.message.contains("inc.das:6:"), "{}", diag.message);
+        // The last good analysis is kept.
+        assert!(ws.index(&main).is_some());
+        ws.close_document(&d.path().join("inc.das"));
+        assert!(ws.check(&main).diagnostics.is_empty());
+    }
+
+    #[test]
+    fn hover_definition_references_and_symbols() {
+        let d = dir_with(&[("m.das", MAIN)]);
+        let path = d.path().join("m.das");
+        let mut ws = Workspace::new(Options::default());
+        assert!(ws.check(&path).diagnostics.is_empty());
+        let index = ws.index(&path).unwrap();
+        let use_at = MAIN.find("c * light").unwrap() + 4;
+        let h = index.hover(&path, use_at).unwrap();
+        assert!(h.text.contains("light : float3") && h.text.contains("The light's colour.") && h.text.contains("manifest"), "{}", h.text);
+        let decl = index.definition(&path, use_at).unwrap();
+        assert_eq!(&MAIN[decl.start..decl.end], "light");
+        assert_eq!(decl.start, MAIN.find("light :").unwrap());
+        let refs = index.references(&path, use_at, true);
+        assert_eq!(refs.len(), 4, "{refs:?}");
+        let b = index.hover(&path, MAIN.find("length").unwrap() + 1).unwrap();
+        assert!(b.text.contains("length(float3) : float"), "{}", b.text);
+        let k = index.hover(&path, MAIN.find("float3(k)").unwrap() + 7).unwrap();
+        assert!(k.text.contains("k : float"), "{}", k.text);
+        let f = index.definition(&path, MAIN.find("shade(light)").unwrap()).unwrap();
+        assert_eq!(f.start, MAIN.find("shade(c").unwrap());
+        let names: Vec<_> = index.symbols(&path).into_iter().map(|s| (s.name, s.kind)).collect();
+        assert_eq!(
+            names,
+            [("light".into(), SymbolKind::Global), ("f_color".into(), SymbolKind::Global), ("shade".into(), SymbolKind::Function), ("vs".into(), SymbolKind::EntryPoint), ("fs".into(), SymbolKind::EntryPoint)]
+        );
+        // Past the end: nothing, no panic.
+        assert!(index.hover(&path, 1 << 20).is_none());
+    }
+}
