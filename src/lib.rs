@@ -41,6 +41,8 @@ pub mod watch;
 
 #[cfg(feature = "render")]
 pub mod render;
+#[cfg(feature = "lsp")]
+pub mod lsp;
 
 use std::path::{Path, PathBuf};
 

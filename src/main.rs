@@ -9,6 +9,7 @@
 //! umbrac check FILE|DIR...  (compile for every target, write nothing)
 //! umbrac reflect FILE       (print the reflection manifest)
 //! umbrac bindgen FILE [-o bindings.rs] [--module NAME] [--no-bytemuck]
+//! umbrac lsp               (a language server on stdin/stdout)
 //! umbrac render ...         (feature `render`)
 //! ```
 //!
@@ -75,6 +76,8 @@ enum Command {
     /// Render the shadow scene from compiled shaders.
     #[cfg(feature = "render")]
     Render(cli::render::RenderArgs),
+    /// Serve the Language Server Protocol over stdin/stdout (docs/editor.md).
+    Lsp,
 }
 
 #[derive(Args, Debug)]
@@ -342,6 +345,13 @@ fn main() -> ExitCode {
         Command::Check(args) => check(&args),
         Command::Reflect(args) => reflect(&args),
         Command::Bindgen(args) => bindgen(&args),
+        Command::Lsp => match umbrac::lsp::run_stdio() {
+            Ok(()) => 0,
+            Err(e) => {
+                eprintln!("error: umbrac lsp: {e}");
+                EXIT_ERROR
+            }
+        },
         #[cfg(feature = "render")]
         Command::Render(args) => {
             // A headless run has no login session's runtime directory; the

@@ -1,0 +1,401 @@
+//! `umbrac lsp`: a Language Server Protocol server over stdio for `.das`
+//! shader files (feature `lsp`), built on rust-analyzer's `lsp-server`
+//! and `lsp-types`, with no async runtime: one thread answers messages in
+//! order, and compiles through [`crate::workspace`].
+//!
+//! Diagnostics are the compiler's own (one source of truth with the CLI).
+//! Edits are coalesced: a document is checked once no message is waiting,
+//! so a result is never published over a newer version. A panic while
+//! answering a request answers it with an error; the server goes on.
+
+use std::collections::{HashMap, HashSet};
+use std::error::Error;
+use std::path::{Path, PathBuf};
+
+use crossbeam_channel::TryRecvError;
+use lsp_server::{Connection, ErrorCode, Message, Notification, Request, Response};
+use lsp_types as lt;
+
+use crate::diag::Severity;
+use crate::workspace::{self, Workspace};
+use crate::{Options, Target};
+
+type Result<T> = std::result::Result<T, Box<dyn Error + Send + Sync>>;
+
+/// Serves over stdin/stdout until the client says `exit`.
+pub fn run_stdio() -> Result<()> {
+    let (connection, io) = Connection::stdio();
+    serve(connection)?;
+    io.join()?;
+    Ok(())
+}
+
+/// What the server announces.
+fn capabilities() -> lt::ServerCapabilities {
+    lt::ServerCapabilities {
+        text_document_sync: Some(lt::TextDocumentSyncCapability::Kind(lt::TextDocumentSyncKind::FULL)),
+        hover_provider: Some(lt::HoverProviderCapability::Simple(true)),
+        definition_provider: Some(lt::OneOf::Left(true)),
+        references_provider: Some(lt::OneOf::Left(true)),
+        document_symbol_provider: Some(lt::OneOf::Left(true)),
+        position_encoding: Some(lt::PositionEncodingKind::UTF16),
+        ..Default::default()
+    }
+}
+
+/// Runs the protocol on a connection (stdio, or in memory in tests):
+/// the initialize handshake, then messages until `shutdown` and `exit`.
+pub fn serve(connection: Connection) -> Result<()> {
+    let caps = serde_json::to_value(capabilities())?;
+    let params = connection.initialize(caps)?;
+    let init: lt::InitializeParams = serde_json::from_value(params).unwrap_or_default();
+    let (options, problems) = options_from(init.initialization_options.as_ref());
+    let mut server = Server { connection: &connection, ws: Workspace::new(options), dirty: HashSet::new(), reads: HashMap::new() };
+    for p in problems {
+        server.show_message(lt::MessageType::WARNING, format!("umbrac: {p}"));
+    }
+    server.main_loop()
+}
+
+struct Server<'a> {
+    connection: &'a Connection,
+    ws: Workspace,
+    /// Open documents to check once no message waits.
+    dirty: HashSet<PathBuf>,
+    /// The files each open document's last check read.
+    reads: HashMap<PathBuf, Vec<PathBuf>>,
+}
+
+impl Server<'_> {
+    fn main_loop(&mut self) -> Result<()> {
+        loop {
+            let msg = if self.dirty.is_empty() {
+                match self.connection.receiver.recv() {
+                    Ok(m) => m,
+                    Err(_) => return Ok(()),
+                }
+            } else {
+                match self.connection.receiver.try_recv() {
+                    Ok(m) => m,
+                    Err(TryRecvError::Empty) => {
+                        self.check_dirty()?;
+                        continue;
+                    }
+                    Err(TryRecvError::Disconnected) => return Ok(()),
+                }
+            };
+            match msg {
+                Message::Request(req) => {
+                    if self.connection.handle_shutdown(&req)? {
+                        return Ok(());
+                    }
+                    // Queries answer from the last analysis: bring it up to date.
+                    self.check_dirty()?;
+                    let resp = self.answer(req);
+                    self.connection.sender.send(Message::Response(resp))?;
+                }
+                Message::Notification(n) => self.notification(n),
+                Message::Response(_) => {}
+            }
+        }
+    }
+
+    /// Answers one request; a panic is an error response.
+    fn answer(&mut self, req: Request) -> Response {
+        let id = req.id.clone();
+        let method = req.method.clone();
+        let ws = &self.ws;
+        match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| dispatch(ws, req))) {
+            Ok(Ok(Some(value))) => Response { id, result: Some(value), error: None },
+            Ok(Ok(None)) => Response { id, result: Some(serde_json::Value::Null), error: None },
+            Ok(Err((code, msg))) => Response::new_err(id, code as i32, msg),
+            Err(payload) => Response::new_err(id, ErrorCode::InternalError as i32, format!("umbrac panicked answering `{method}`: {}", crate::diag::panic_message(&*payload))),
+        }
+    }
+
+    fn notification(&mut self, n: Notification) {
+        use lt::notification::*;
+        let path_of_doc = |uri: &lt::Uri| path_of(uri);
+        match n.method.as_str() {
+            DidOpenTextDocument::METHOD => {
+                if let Ok(p) = serde_json::from_value::<lt::DidOpenTextDocumentParams>(n.params) {
+                    if let Some(path) = path_of_doc(&p.text_document.uri) {
+                        self.ws.set_document(&path, p.text_document.text, p.text_document.version);
+                        self.changed(&path);
+                    }
+                }
+            }
+            DidChangeTextDocument::METHOD => {
+                if let Ok(p) = serde_json::from_value::<lt::DidChangeTextDocumentParams>(n.params) {
+                    // Full sync: the last change holds the whole text.
+                    if let (Some(path), Some(change)) = (path_of_doc(&p.text_document.uri), p.content_changes.into_iter().last()) {
+                        self.ws.set_document(&path, change.text, p.text_document.version);
+                        self.changed(&path);
+                    }
+                }
+            }
+            DidCloseTextDocument::METHOD => {
+                if let Ok(p) = serde_json::from_value::<lt::DidCloseTextDocumentParams>(n.params) {
+                    if let Some(path) = path_of_doc(&p.text_document.uri) {
+                        self.ws.close_document(&path);
+                        self.ws.forget(&path);
+                        let path = crate::syntax::overlay::normalize(&path);
+                        self.dirty.remove(&path);
+                        self.reads.remove(&path);
+                        // Its diagnostics go with it; the disk counts again for the others.
+                        self.publish(&path, None, Vec::new());
+                        self.changed(&path);
+                    }
+                }
+            }
+            DidSaveTextDocument::METHOD | DidChangeWatchedFiles::METHOD => {
+                let docs: Vec<PathBuf> = self.ws.documents().map(Path::to_path_buf).collect();
+                self.dirty.extend(docs);
+            }
+            _ => {}
+        }
+    }
+
+    /// `path` changed: it and every open document that read it are checked again.
+    fn changed(&mut self, path: &Path) {
+        let path = crate::syntax::overlay::normalize(path);
+        if self.ws.version(&path).is_some() {
+            self.dirty.insert(path.clone());
+        }
+        for (doc, read) in &self.reads {
+            if read.iter().any(|r| crate::syntax::overlay::normalize(r) == path) {
+                self.dirty.insert(doc.clone());
+            }
+        }
+    }
+
+    fn check_dirty(&mut self) -> Result<()> {
+        let mut dirty: Vec<PathBuf> = self.dirty.drain().collect();
+        dirty.sort();
+        for path in dirty {
+            let Some(text) = self.ws.text(&path) else { continue };
+            let checked = self.ws.check(&path);
+            self.reads.insert(path.clone(), checked.files_read.clone());
+            let diags = checked.diagnostics.iter().map(|d| to_lsp_diagnostic(d, &text, &self.ws)).collect();
+            self.publish(&path, checked.version, diags);
+        }
+        Ok(())
+    }
+
+    fn publish(&self, path: &Path, version: Option<i32>, diagnostics: Vec<lt::Diagnostic>) {
+        let Some(uri) = uri_of(path) else { return };
+        let params = lt::PublishDiagnosticsParams { uri, diagnostics, version };
+        let n = Notification::new(<lt::notification::PublishDiagnostics as lt::notification::Notification>::METHOD.to_string(), params);
+        let _ = self.connection.sender.send(Message::Notification(n));
+    }
+
+    fn show_message(&self, typ: lt::MessageType, message: String) {
+        let n = Notification::new(<lt::notification::ShowMessage as lt::notification::Notification>::METHOD.to_string(), lt::ShowMessageParams { typ, message });
+        let _ = self.connection.sender.send(Message::Notification(n));
+    }
+}
+
+type Answer = std::result::Result<Option<serde_json::Value>, (ErrorCode, String)>;
+
+fn bad_params(e: impl std::fmt::Display) -> (ErrorCode, String) {
+    (ErrorCode::InvalidParams, e.to_string())
+}
+
+/// The answer to one request, from the last analyses.
+fn dispatch(ws: &Workspace, req: Request) -> Answer {
+    use lt::request::*;
+    let json = |v: serde_json::Value| Ok(Some(v));
+    match req.method.as_str() {
+        HoverRequest::METHOD => {
+            let p: lt::HoverParams = serde_json::from_value(req.params).map_err(bad_params)?;
+            let Some((path, index, offset)) = locate(ws, &p.text_document_position_params) else { return Ok(None) };
+            let Some(h) = index.hover(&path, offset) else { return Ok(None) };
+            let text = index.text(&path).unwrap_or("");
+            let hover = lt::Hover {
+                contents: lt::HoverContents::Markup(lt::MarkupContent { kind: lt::MarkupKind::Markdown, value: h.text }),
+                range: Some(range(text, h.start, h.end)),
+            };
+            json(serde_json::to_value(hover).map_err(bad_params)?)
+        }
+        GotoDefinition::METHOD => {
+            let p: lt::GotoDefinitionParams = serde_json::from_value(req.params).map_err(bad_params)?;
+            let Some((path, index, offset)) = locate(ws, &p.text_document_position_params) else { return Ok(None) };
+            let Some(loc) = index.definition(&path, offset).and_then(|l| location(&index, &l)) else { return Ok(None) };
+            json(serde_json::to_value(lt::GotoDefinitionResponse::Scalar(loc)).map_err(bad_params)?)
+        }
+        References::METHOD => {
+            let p: lt::ReferenceParams = serde_json::from_value(req.params).map_err(bad_params)?;
+            let Some((path, index, offset)) = locate(ws, &p.text_document_position) else { return Ok(None) };
+            let locs: Vec<lt::Location> = index.references(&path, offset, p.context.include_declaration).iter().filter_map(|l| location(&index, l)).collect();
+            json(serde_json::to_value(locs).map_err(bad_params)?)
+        }
+        DocumentSymbolRequest::METHOD => {
+            let p: lt::DocumentSymbolParams = serde_json::from_value(req.params).map_err(bad_params)?;
+            let Some(path) = path_of(&p.text_document.uri) else { return Ok(None) };
+            let Some(index) = ws.index(&path) else { return json(serde_json::json!([])) };
+            let text = index.text(&path).unwrap_or("");
+            #[allow(deprecated)] // `deprecated` is a field the type requires
+            let symbols: Vec<lt::DocumentSymbol> = index
+                .symbols(&path)
+                .into_iter()
+                .map(|s| lt::DocumentSymbol {
+                    name: s.name,
+                    detail: Some(s.detail),
+                    kind: match s.kind {
+                        workspace::SymbolKind::EntryPoint => lt::SymbolKind::EVENT,
+                        workspace::SymbolKind::Function => lt::SymbolKind::FUNCTION,
+                        workspace::SymbolKind::Global => lt::SymbolKind::VARIABLE,
+                        workspace::SymbolKind::Constant => lt::SymbolKind::CONSTANT,
+                        workspace::SymbolKind::Struct => lt::SymbolKind::STRUCT,
+                    },
+                    tags: None,
+                    deprecated: None,
+                    range: range(text, s.start, s.end),
+                    selection_range: range(text, s.start, s.end),
+                    children: None,
+                })
+                .collect();
+            json(serde_json::to_value(lt::DocumentSymbolResponse::Nested(symbols)).map_err(bad_params)?)
+        }
+        other => Err((ErrorCode::MethodNotFound, format!("umbrac does not answer `{other}`"))),
+    }
+}
+
+/// The file, its last analysis and the byte offset a position names.
+fn locate(ws: &Workspace, p: &lt::TextDocumentPositionParams) -> Option<(PathBuf, std::sync::Arc<workspace::Index>, usize)> {
+    let path = path_of(&p.text_document.uri)?;
+    let index = ws.index(&path)?;
+    let offset = workspace::position_to_offset(index.text(&path)?, p.position.line, p.position.character);
+    Some((path, index, offset))
+}
+
+fn range(text: &str, start: usize, end: usize) -> lt::Range {
+    let pos = |o| {
+        let (line, character) = workspace::offset_to_position(text, o);
+        lt::Position { line, character }
+    };
+    lt::Range { start: pos(start), end: pos(end) }
+}
+
+fn location(index: &workspace::Index, l: &workspace::Location) -> Option<lt::Location> {
+    Some(lt::Location { uri: uri_of(&l.path)?, range: range(index.text(&l.path)?, l.start, l.end) })
+}
+
+fn to_lsp_diagnostic(d: &workspace::FileDiagnostic, text: &str, ws: &Workspace) -> lt::Diagnostic {
+    let related: Vec<lt::DiagnosticRelatedInformation> = d
+        .related
+        .iter()
+        .filter_map(|(path, s, e, msg)| {
+            let t = ws.text(path)?;
+            Some(lt::DiagnosticRelatedInformation { location: lt::Location { uri: uri_of(path)?, range: range(&t, *s, *e) }, message: msg.clone() })
+        })
+        .collect();
+    lt::Diagnostic {
+        range: range(text, d.start, d.end),
+        severity: Some(match d.severity {
+            Severity::Warning => lt::DiagnosticSeverity::WARNING,
+            Severity::Error | Severity::Bug => lt::DiagnosticSeverity::ERROR,
+        }),
+        source: Some("umbrac".into()),
+        message: d.message.clone(),
+        related_information: (!related.is_empty()).then_some(related),
+        ..Default::default()
+    }
+}
+
+/// Options from `initializationOptions`:
+/// `{"targets": ["wgsl", ...], "includeDirs": [...], "daslangRoot": "...",
+/// "daslib": "...", "defines": ["NAME", "NAME=VALUE"] | {"NAME": "VALUE"}}`,
+/// and what in them was not understood.
+pub fn options_from(v: Option<&serde_json::Value>) -> (Options, Vec<String>) {
+    let mut opts = Options::default();
+    let mut problems = Vec::new();
+    let Some(v) = v.and_then(|v| v.as_object()) else { return (opts, problems) };
+    let strings = |key: &str| -> Vec<String> { v.get(key).and_then(|x| x.as_array()).into_iter().flatten().filter_map(|s| s.as_str().map(String::from)).collect() };
+    for t in strings("targets") {
+        match Target::from_name(&t) {
+            Some(t) => opts.targets.push(t),
+            None => problems.push(format!("unknown target `{t}` in initializationOptions.targets")),
+        }
+    }
+    opts.include_dirs = strings("includeDirs").into_iter().map(PathBuf::from).collect();
+    opts.daslang_root = v.get("daslangRoot").and_then(|x| x.as_str()).map(PathBuf::from);
+    opts.daslib = v.get("daslib").and_then(|x| x.as_str()).map(PathBuf::from);
+    match v.get("defines") {
+        Some(serde_json::Value::Object(m)) => {
+            opts.defines = m.iter().map(|(k, val)| (k.clone(), val.as_str().map(String::from).or_else(|| (!val.is_null()).then(|| val.to_string())))).collect();
+        }
+        Some(serde_json::Value::Array(_)) => {
+            opts.defines = strings("defines")
+                .into_iter()
+                .map(|d| match d.split_once('=') {
+                    Some((n, v)) => (n.to_string(), Some(v.to_string())),
+                    None => (d, None),
+                })
+                .collect();
+        }
+        Some(_) => problems.push("initializationOptions.defines is neither a list nor an object".into()),
+        None => {}
+    }
+    (opts, problems)
+}
+
+/// The path of a `file:` URI (percent-decoded); `None` for other schemes.
+pub fn path_of(uri: &lt::Uri) -> Option<PathBuf> {
+    let rest = uri.as_str().strip_prefix("file://")?;
+    let bytes = rest.as_bytes();
+    let mut out = Vec::with_capacity(bytes.len());
+    let mut i = 0;
+    while i < bytes.len() {
+        if bytes[i] == b'%' && i + 2 < bytes.len() {
+            if let Ok(b) = u8::from_str_radix(std::str::from_utf8(&bytes[i + 1..i + 3]).ok()?, 16) {
+                out.push(b);
+                i += 3;
+                continue;
+            }
+        }
+        out.push(bytes[i]);
+        i += 1;
+    }
+    let s = String::from_utf8(out).ok()?;
+    // `file://host/path`: only the local host.
+    let s = if s.starts_with('/') { s } else { s.strip_prefix("localhost")?.to_string() };
+    Some(PathBuf::from(s))
+}
+
+/// The `file:` URI of an absolute path.
+pub fn uri_of(path: &Path) -> Option<lt::Uri> {
+    let mut s = String::from("file://");
+    for b in path.to_str()?.bytes() {
+        if b.is_ascii_alphanumeric() || b"/-._~".contains(&b) {
+            s.push(b as char);
+        } else {
+            s.push_str(&format!("%{b:02X}"));
+        }
+    }
+    s.parse().ok()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn uris_and_paths_round_trip() {
+        let p = Path::new("/tmp/a b/ü#.das");
+        let u = uri_of(p).unwrap();
+        assert_eq!(u.as_str(), "file:///tmp/a%20b/%C3%BC%23.das");
+        assert_eq!(path_of(&u).unwrap(), p);
+        assert_eq!(path_of(&"untitled:x".parse().unwrap()), None);
+    }
+
+    #[test]
+    fn options_read_and_complain() {
+        let v = serde_json::json!({"targets": ["wgsl", "dx12"], "includeDirs": ["inc"], "defines": ["A", "B=2"]});
+        let (o, problems) = options_from(Some(&v));
+        assert_eq!(o.targets, [Target::Wgsl]);
+        assert_eq!(o.include_dirs, [PathBuf::from("inc")]);
+        assert_eq!(o.defines, [("A".to_string(), None), ("B".to_string(), Some("2".to_string()))]);
+        assert_eq!(problems.len(), 1, "{problems:?}");
+    }
+}
