@@ -38,6 +38,8 @@ fn capabilities() -> lt::ServerCapabilities {
         definition_provider: Some(lt::OneOf::Left(true)),
         references_provider: Some(lt::OneOf::Left(true)),
         document_symbol_provider: Some(lt::OneOf::Left(true)),
+        rename_provider: Some(lt::OneOf::Left(true)),
+        completion_provider: Some(lt::CompletionOptions { trigger_characters: Some(vec![".".into()]), ..Default::default() }),
         position_encoding: Some(lt::PositionEncodingKind::UTF16),
         ..Default::default()
     }
@@ -256,6 +258,48 @@ fn dispatch(ws: &Workspace, req: Request) -> Answer {
                 })
                 .collect();
             json(serde_json::to_value(lt::DocumentSymbolResponse::Nested(symbols)).map_err(bad_params)?)
+        }
+        Rename::METHOD => {
+            let p: lt::RenameParams = serde_json::from_value(req.params).map_err(bad_params)?;
+            let refused = |msg: String| (ErrorCode::RequestFailed, format!("cannot rename: {msg}"));
+            let Some((path, index, offset)) = locate(ws, &p.text_document_position) else { return Err(refused("the file has not been checked".into())) };
+            let locs = index.rename(&path, offset, &p.new_name).map_err(refused)?;
+            let mut changes: HashMap<lt::Uri, Vec<lt::TextEdit>> = HashMap::new();
+            for l in &locs {
+                // Edits are made against the text that was analysed.
+                if ws.text(&l.path).as_deref() != index.text(&l.path) {
+                    return Err(refused(format!("`{}` changed since it last compiled without errors", l.path.display())));
+                }
+                let loc = location(&index, l).ok_or_else(|| refused(format!("`{}` has no URI", l.path.display())))?;
+                changes.entry(loc.uri).or_default().push(lt::TextEdit { range: loc.range, new_text: p.new_name.clone() });
+            }
+            json(serde_json::to_value(lt::WorkspaceEdit { changes: Some(changes), ..Default::default() }).map_err(bad_params)?)
+        }
+        Completion::METHOD => {
+            let p: lt::CompletionParams = serde_json::from_value(req.params).map_err(bad_params)?;
+            let tdp = &p.text_document_position;
+            let Some(path) = path_of(&tdp.text_document.uri) else { return Ok(None) };
+            let (Some(index), Some(text)) = (ws.index(&path), ws.text(&path)) else { return Ok(None) };
+            let offset = workspace::position_to_offset(&text, tdp.position.line, tdp.position.character);
+            let items: Vec<lt::CompletionItem> = index
+                .completions(&path, &text, offset)
+                .into_iter()
+                .map(|c| lt::CompletionItem {
+                    label: c.label,
+                    detail: Some(c.detail),
+                    kind: Some(match c.kind {
+                        workspace::CompletionKind::Local => lt::CompletionItemKind::VARIABLE,
+                        workspace::CompletionKind::Global => lt::CompletionItemKind::VARIABLE,
+                        workspace::CompletionKind::Constant => lt::CompletionItemKind::CONSTANT,
+                        workspace::CompletionKind::Function => lt::CompletionItemKind::FUNCTION,
+                        workspace::CompletionKind::Struct => lt::CompletionItemKind::STRUCT,
+                        workspace::CompletionKind::Field => lt::CompletionItemKind::FIELD,
+                        workspace::CompletionKind::Builtin => lt::CompletionItemKind::FUNCTION,
+                    }),
+                    ..Default::default()
+                })
+                .collect();
+            json(serde_json::to_value(lt::CompletionResponse::Array(items)).map_err(bad_params)?)
         }
         other => Err((ErrorCode::MethodNotFound, format!("umbrac does not answer `{other}`"))),
     }

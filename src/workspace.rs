@@ -199,7 +199,7 @@ fn place(d: &Diagnostic, map: &SourceMap, in_root: &dyn Fn(Span) -> Option<(usiz
         return fd;
     }
     // In an included or required file: at the outermost site in the root.
-    if let Some(site) = map.include_chain(span).into_iter().rev().find_map(|s| in_root(s)) {
+    if let Some(site) = map.include_chain(span).into_iter().rev().find_map(in_root) {
         let (_, line, col) = map.line_col(span).unwrap_or_default();
         let name = map.file_of(span.start).map(|id| map.file(id).name.clone()).unwrap_or_default();
         fd.message = format!("{name}:{line}:{col}: {}", fd.message);
@@ -272,8 +272,49 @@ pub struct Index {
     occurrences: Vec<Occurrence>,
     /// Declarations: name span, name, kind, type or stage.
     decls: HashMap<Symbol, (Span, String, String)>,
+    /// What `.` completes on a declaration's value.
+    shapes: HashMap<Symbol, Shape>,
+    /// Each function's span and key (`Symbol::Local`'s first field).
+    functions: Vec<(Span, usize)>,
+    /// Field names of each struct.
+    fields: Vec<Vec<(String, String)>>,
     /// The reflection manifest, when the compilation emitted one.
     manifest: Option<serde_json::Value>,
+}
+
+/// What follows a `.` on a value.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Shape {
+    Struct(usize),
+    Vector(u8),
+}
+
+fn shape_of(ty: &Ty) -> Option<Shape> {
+    match ty {
+        Ty::Struct(s) => Some(Shape::Struct(*s)),
+        Ty::Vector(_, n) => Some(Shape::Vector(*n)),
+        _ => None,
+    }
+}
+
+/// A completion item.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Completion {
+    pub label: String,
+    pub kind: CompletionKind,
+    /// Its type or signature.
+    pub detail: String,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum CompletionKind {
+    Local,
+    Global,
+    Constant,
+    Function,
+    Struct,
+    Field,
+    Builtin,
 }
 
 /// What a hover shows.
@@ -293,14 +334,18 @@ impl Index {
         let show = |ty: &Ty| TyDisplay { ty, struct_names: &structs, enum_names: &enums }.to_string();
         let sources = compilation.sources;
         let mut decls = HashMap::new();
+        let mut shapes = HashMap::new();
         for (i, g) in p.globals.iter().enumerate() {
             if !matches!(g.kind, GlobalKind::Builtin(_)) {
                 decls.insert(Symbol::Global(i), (g.span, g.name.clone(), show(&g.ty)));
+                shapes.extend(shape_of(&g.ty).map(|s| (Symbol::Global(i), s)));
             }
         }
         for (i, c) in p.consts.iter().enumerate() {
             decls.insert(Symbol::Const(i), (c.span, c.name.clone(), show(&c.ty)));
+            shapes.extend(shape_of(&c.ty).map(|s| (Symbol::Const(i), s)));
         }
+        let fields: Vec<Vec<(String, String)>> = p.structs.iter().map(|s| s.fields.iter().map(|(n, t, _)| (n.clone(), show(t))).collect()).collect();
         for (i, s) in p.structs.iter().enumerate() {
             decls.insert(Symbol::Struct(i), (name_within(&sources, s.span, &s.name), s.name.clone(), "struct".into()));
             for (k, (name, ty, span)) in s.fields.iter().enumerate() {
@@ -309,6 +354,14 @@ impl Index {
         }
         let nf = p.functions.len();
         let mut w = Walker { occurrences: Vec::new(), show: &show, func: 0 };
+        let mut functions = Vec::new();
+        let funcs = p.functions.iter().enumerate().chain(p.entry_points.iter().enumerate().map(|(i, e)| (nf + i, &e.func)));
+        for (key, f) in funcs {
+            functions.push((f.span, key));
+            for (id, l) in f.locals.iter().enumerate() {
+                shapes.extend(shape_of(&l.ty).map(|s| (Symbol::Local(key, id), s)));
+            }
+        }
         for (i, f) in p.functions.iter().enumerate() {
             decls.insert(Symbol::Function(i), (name_within(&sources, f.span, &f.name), f.name.clone(), format!("def {}(...) : {}", f.name, show(&f.ret))));
             w.function(i, f, &mut decls);
@@ -325,7 +378,7 @@ impl Index {
             .as_ref()
             .and_then(|r| r.artifacts.iter().find(|a| a.target.is_none()))
             .and_then(|a| serde_json::from_slice(&a.contents).ok());
-        Index { sources, occurrences, decls, manifest }
+        Index { sources, occurrences, decls, shapes, functions, fields, manifest }
     }
 
     /// The id and text of a file this analysis read.
@@ -451,6 +504,123 @@ impl Index {
             }
         }
         out.sort_by_key(|s| s.start);
+        out
+    }
+
+    /// The exact span of the name `name` in a use of it: the use itself,
+    /// the field after the last `.`, or the callee of a call.
+    fn name_in(&self, span: Span, name: &str, symbol: Symbol) -> Option<Span> {
+        let text = self.sources.slice(span);
+        if text == name {
+            return Some(span);
+        }
+        let at = match symbol {
+            Symbol::Field(..) => text.rfind(name)?,
+            _ => {
+                let s = name_within(&self.sources, span, name);
+                return (s != span).then_some(s);
+            }
+        };
+        Some(Span::new(span.start + at as u32, span.start + (at + name.len()) as u32))
+    }
+
+    /// The edits that rename the name at a byte offset to `new_name`,
+    /// in every file the analysis read; an error says why it cannot be.
+    pub fn rename(&self, path: &Path, offset: usize, new_name: &str) -> Result<Vec<Location>, String> {
+        let Some((_, Some(symbol), _)) = self.at(path, offset) else { return Err("there is no name declared in this program here".into()) };
+        let (decl, old, _) = self.decls.get(&symbol).ok_or("this name is not declared in this program")?;
+        let ident = new_name.chars().next().is_some_and(|c| c.is_ascii_alphabetic() || c == '_') && new_name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_');
+        if !ident {
+            return Err(format!("`{new_name}` is not a name"));
+        }
+        if crate::syntax::token::Kw::from_name(new_name).is_some() {
+            return Err(format!("`{new_name}` is a daslang keyword"));
+        }
+        if crate::sema::builtins::is_builtin(new_name) {
+            return Err(format!("`{new_name}` is a builtin function"));
+        }
+        if crate::emit::glsl_names::is_reserved(new_name) || new_name.starts_with("gl_") {
+            return Err(format!("`{new_name}` is reserved in GLSL"));
+        }
+        if naga::keywords::wgsl::RESERVED.contains(&new_name) {
+            return Err(format!("`{new_name}` is reserved in WGSL"));
+        }
+        // A name it would collide with or shadow: fields of the same
+        // struct, locals of the same function, any top-level name.
+        let clash = self.decls.iter().find(|(other, (_, name, _))| {
+            name == new_name
+                && match (symbol, **other) {
+                    (Symbol::Field(s, _), Symbol::Field(t, _)) => s == t,
+                    (Symbol::Field(..), _) | (_, Symbol::Field(..)) => false,
+                    (Symbol::Local(f, _), Symbol::Local(g, _)) => f == g,
+                    (_, Symbol::Local(..)) => true,
+                    _ => true,
+                }
+        });
+        if let Some((_, (span, _, _))) = clash {
+            let (id, line, col) = self.sources.line_col(*span).unwrap_or_default();
+            return Err(format!("`{new_name}` is already declared at {}:{line}:{col}", self.sources.file(id).name));
+        }
+        let mut spans = vec![*decl];
+        for o in self.occurrences.iter().filter(|o| o.symbol == Some(symbol)) {
+            spans.push(self.name_in(o.span, old, symbol).ok_or_else(|| format!("cannot find `{old}` in one of its uses"))?);
+        }
+        spans.sort();
+        spans.dedup();
+        spans.into_iter().map(|s| self.location(s).ok_or_else(|| format!("a use of `{old}` is in no file on disk"))).collect()
+    }
+
+    /// What may be written at a byte offset of `text` (the document now;
+    /// the analysis may be older): after `name.`, its fields or swizzle
+    /// components; otherwise the names in scope and the builtins.
+    pub fn completions(&self, path: &Path, text: &str, offset: usize) -> Vec<Completion> {
+        let mut offset = offset.min(text.len());
+        while !text.is_char_boundary(offset) {
+            offset -= 1;
+        }
+        let word = |c: char| c.is_ascii_alphanumeric() || c == '_';
+        let before = &text[..offset];
+        let start = before.trim_end_matches(word).len();
+        let at = self.global_offset(path, start).unwrap_or(u32::MAX);
+        let func = self.functions.iter().filter(|(s, _)| s.start <= at && at <= s.end).min_by_key(|(s, _)| s.end - s.start).map(|(_, k)| *k);
+        if let Some(dotted) = before[..start].strip_suffix('.') {
+            let name = &dotted[dotted.trim_end_matches(word).len()..];
+            let visible = |sym: &Symbol| match sym {
+                Symbol::Local(f, _) => Some(*f) == func,
+                Symbol::Field(..) => false,
+                _ => true,
+            };
+            let shape = self
+                .decls
+                .iter()
+                .filter(|(sym, (_, n, _))| n == name && visible(sym))
+                .min_by_key(|(sym, _)| !matches!(sym, Symbol::Local(..)))
+                .and_then(|(sym, _)| self.shapes.get(sym));
+            return match shape {
+                Some(Shape::Struct(s)) => self.fields[*s].iter().map(|(n, t)| Completion { label: n.clone(), kind: CompletionKind::Field, detail: t.clone() }).collect(),
+                Some(Shape::Vector(n)) => ["xyzw", "rgba"]
+                    .iter()
+                    .flat_map(|set| set.chars().take(*n as usize))
+                    .map(|c| Completion { label: c.to_string(), kind: CompletionKind::Field, detail: "component".into() })
+                    .collect(),
+                None => Vec::new(),
+            };
+        }
+        let mut out: Vec<Completion> = Vec::new();
+        for (sym, (_, name, detail)) in &self.decls {
+            let kind = match sym {
+                Symbol::Local(f, _) if Some(*f) == func => CompletionKind::Local,
+                Symbol::Local(..) | Symbol::Field(..) | Symbol::EntryPoint(_) => continue,
+                Symbol::Global(_) => CompletionKind::Global,
+                Symbol::Const(_) => CompletionKind::Constant,
+                Symbol::Function(_) => CompletionKind::Function,
+                Symbol::Struct(_) => CompletionKind::Struct,
+            };
+            out.push(Completion { label: name.clone(), kind, detail: detail.clone() });
+        }
+        out.extend(crate::sema::builtins::all_names().map(|n| Completion { label: n.to_string(), kind: CompletionKind::Builtin, detail: "builtin".into() }));
+        out.sort_by(|a, b| (a.kind as u8, &a.label).cmp(&(b.kind as u8, &b.label)));
+        out.dedup_by(|a, b| a.label == b.label);
         out
     }
 }
@@ -687,6 +857,28 @@ mod tests {
             names,
             [("light".into(), SymbolKind::Global), ("f_color".into(), SymbolKind::Global), ("shade".into(), SymbolKind::Function), ("vs".into(), SymbolKind::EntryPoint), ("fs".into(), SymbolKind::EntryPoint)]
         );
+        // Rename: every use, refused on a clash or a reserved name.
+        let edits = index.rename(&path, use_at, "sun").unwrap();
+        assert_eq!(edits.len(), 4, "{edits:?}");
+        assert!(edits.iter().all(|e| &MAIN[e.start..e.end] == "light"), "{edits:?}");
+        let shade = index.rename(&path, MAIN.find("shade(light)").unwrap() + 1, "tone").unwrap();
+        assert!(shade.len() == 2 && shade.iter().all(|e| &MAIN[e.start..e.end] == "shade"), "{shade:?}");
+        assert!(index.rename(&path, use_at, "f_color").unwrap_err().contains("already declared"));
+        assert!(index.rename(&path, use_at, "sample").unwrap_err().contains("reserved in GLSL"));
+        assert!(index.rename(&path, use_at, "fn").unwrap_err().contains("WGSL"));
+        assert!(index.rename(&path, use_at, "length").unwrap_err().contains("builtin"));
+        assert!(index.rename(&path, use_at, "2x").is_err());
+        // Completion: names in scope and builtins; components after `.`.
+        let in_fs = MAIN.find("f_color = float4").unwrap();
+        let labels: Vec<String> = index.completions(&path, MAIN, in_fs).into_iter().map(|c| c.label).collect();
+        for want in ["k", "light", "shade", "length", "f_color"] {
+            assert!(labels.iter().any(|l| l == want), "{want} in {labels:?}");
+        }
+        assert!(!labels.iter().any(|l| l == "c"), "a local of another function: {labels:?}");
+        let typed = MAIN.replace("f_color = float4(float3(k), 1.0)", "f_color = float4(light.");
+        let dot = typed.find("light.").unwrap() + 6;
+        let comps: Vec<String> = index.completions(&path, &typed, dot).into_iter().map(|c| c.label).collect();
+        assert_eq!(comps, ["x", "y", "z", "r", "g", "b"]);
         // Past the end: nothing, no panic.
         assert!(index.hover(&path, 1 << 20).is_none());
     }

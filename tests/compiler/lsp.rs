@@ -201,6 +201,56 @@ fn hover_definition_references_and_symbols() {
 }
 
 #[test]
+fn rename_across_an_include_and_its_refusals() {
+    let main = "#include \"inc.das\"\n\n[fragment_program]\ndef fs2 {\n    f_color = float4(shade(light), 1.0)\n}\n";
+    let inc = SHADER.replace("[fragment_program]\ndef fs {\n    let k = length(light)\n    f_color = float4(float3(k), 1.0)\n}\n", "");
+    let (_d, root) = temp_with(&[("main.das", main), ("inc.das", &inc)]);
+    let (mu, iu) = (uri(&root.join("main.das")), uri(&root.join("inc.das")));
+    let mut c = Client::start(Value::Null);
+    c.open(&mu, main, 1);
+    assert_eq!(c.diagnostics(&mu)["diagnostics"], json!([]));
+    let (line, col) = pos(main, "light)");
+    let edit = c.request("textDocument/rename", json!({"textDocument": {"uri": mu}, "position": {"line": line, "character": col}, "newName": "sun"}));
+    let changes = edit["changes"].as_object().unwrap();
+    assert_eq!(changes[&mu].as_array().unwrap().len(), 1, "{edit}");
+    assert_eq!(changes[&iu].as_array().unwrap().len(), 3, "the declaration and two uses: {edit}");
+    for (u, text) in [(&mu, main), (&iu, inc.as_str())] {
+        for e in changes[u].as_array().unwrap() {
+            let (l, ch) = (e["range"]["start"]["line"].as_u64().unwrap() as usize, e["range"]["start"]["character"].as_u64().unwrap() as usize);
+            assert_eq!(&text.lines().nth(l).unwrap()[ch..ch + 5], "light", "{e}");
+        }
+    }
+    let refused = c.request_raw("textDocument/rename", json!({"textDocument": {"uri": mu}, "position": {"line": line, "character": col}, "newName": "f_color"}));
+    assert!(refused.error.unwrap().message.contains("already declared"));
+    let refused = c.request_raw("textDocument/rename", json!({"textDocument": {"uri": mu}, "position": {"line": line, "character": col}, "newName": "texture"}));
+    assert!(refused.error.is_some());
+    c.finish();
+}
+
+#[test]
+fn completion_in_scope_and_after_a_dot() {
+    let (_d, root) = temp_with(&[("a.das", SHADER)]);
+    let u = uri(&root.join("a.das"));
+    let mut c = Client::start(Value::Null);
+    c.open(&u, SHADER, 1);
+    c.diagnostics(&u);
+    let (line, col) = pos(SHADER, "f_color = float4(float3");
+    let all = c.request("textDocument/completion", Client::at(&u, line, col));
+    let labels: Vec<&str> = all.as_array().unwrap().iter().map(|i| i["label"].as_str().unwrap()).collect();
+    for want in ["k", "light", "shade", "f_color", "normalize"] {
+        assert!(labels.contains(&want), "{want}: {labels:?}");
+    }
+    // Half-typed: `light.` completes its components from the last good analysis.
+    let typed = SHADER.replace("f_color = float4(float3(k), 1.0)", "f_color = float4(light.");
+    c.change(&u, &typed, 2);
+    let (line, col) = pos(&typed, "light.\n");
+    let comps = c.request("textDocument/completion", Client::at(&u, line, col + 6));
+    let labels: Vec<&str> = comps.as_array().unwrap().iter().map(|i| i["label"].as_str().unwrap()).collect();
+    assert_eq!(labels, ["x", "y", "z", "r", "g", "b"], "{comps}");
+    c.finish();
+}
+
+#[test]
 fn bad_input_never_stops_the_server() {
     let (d, root) = temp_with(&[("a.das", SHADER)]);
     let path = root.join("a.das");
