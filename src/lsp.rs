@@ -39,6 +39,7 @@ fn capabilities() -> lt::ServerCapabilities {
         references_provider: Some(lt::OneOf::Left(true)),
         document_symbol_provider: Some(lt::OneOf::Left(true)),
         rename_provider: Some(lt::OneOf::Left(true)),
+        inlay_hint_provider: Some(lt::OneOf::Left(true)),
         completion_provider: Some(lt::CompletionOptions { trigger_characters: Some(vec![".".into()]), ..Default::default() }),
         position_encoding: Some(lt::PositionEncodingKind::UTF16),
         ..Default::default()
@@ -301,6 +302,31 @@ fn dispatch(ws: &Workspace, req: Request) -> Answer {
                 .collect();
             json(serde_json::to_value(lt::CompletionResponse::Array(items)).map_err(bad_params)?)
         }
+        InlayHintRequest::METHOD => {
+            let p: lt::InlayHintParams = serde_json::from_value(req.params).map_err(bad_params)?;
+            let Some(path) = path_of(&p.text_document.uri) else { return Ok(None) };
+            let Some(index) = ws.index(&path) else { return Ok(None) };
+            // Hints sit in the text that was analysed: none while it differs.
+            if ws.text(&path).as_deref() != index.text(&path) {
+                return json(serde_json::json!([]));
+            }
+            let text = index.text(&path).unwrap_or("");
+            let hints: Vec<lt::InlayHint> = index
+                .inlay_hints(&path)
+                .into_iter()
+                .map(|(at, label)| lt::InlayHint {
+                    position: range(text, at, at).start,
+                    label: lt::InlayHintLabel::String(label),
+                    kind: Some(lt::InlayHintKind::TYPE),
+                    text_edits: None,
+                    tooltip: None,
+                    padding_left: None,
+                    padding_right: None,
+                    data: None,
+                })
+                .collect();
+            json(serde_json::to_value(hints).map_err(bad_params)?)
+        }
         other => Err((ErrorCode::MethodNotFound, format!("umbrac does not answer `{other}`"))),
     }
 }
@@ -365,6 +391,9 @@ pub fn options_from(v: Option<&serde_json::Value>) -> (Options, Vec<String>) {
     opts.include_dirs = strings("includeDirs").into_iter().map(PathBuf::from).collect();
     opts.daslang_root = v.get("daslangRoot").and_then(|x| x.as_str()).map(PathBuf::from);
     opts.daslib = v.get("daslib").and_then(|x| x.as_str()).map(PathBuf::from);
+    if let Some(m) = v.get("modules").and_then(|x| x.as_object()) {
+        opts.modules = m.iter().filter_map(|(prefix, dir)| Some((prefix.clone(), PathBuf::from(dir.as_str()?)))).collect();
+    }
     match v.get("defines") {
         Some(serde_json::Value::Object(m)) => {
             opts.defines = m.iter().map(|(k, val)| (k.clone(), val.as_str().map(String::from).or_else(|| (!val.is_null()).then(|| val.to_string())))).collect();

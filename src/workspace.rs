@@ -507,6 +507,27 @@ impl Index {
         out
     }
 
+    /// Inlay hints for `path`: after each local whose type is inferred
+    /// (`let k = ...`), the byte offset of its name's end and `: TYPE`.
+    pub fn inlay_hints(&self, path: &Path) -> Vec<(usize, String)> {
+        let path = overlay::normalize(path);
+        let mut out: Vec<(usize, String)> = Vec::new();
+        for (sym, (span, name, ty)) in &self.decls {
+            // Locals the checker made up (no such name in the source) have none.
+            if !matches!(sym, Symbol::Local(..)) || self.sources.slice(*span) != name.as_str() {
+                continue;
+            }
+            let Some(l) = self.location(*span).filter(|l| l.path == path) else { continue };
+            let written = self.text(&path).is_some_and(|t| t[l.end..].trim_start_matches([' ', '\t']).starts_with(':'));
+            if !written {
+                out.push((l.end, format!(": {ty}")));
+            }
+        }
+        out.sort();
+        out.dedup();
+        out
+    }
+
     /// The exact span of the name `name` in a use of it: the use itself,
     /// the field after the last `.`, or the callee of a call.
     fn name_in(&self, span: Span, name: &str, symbol: Symbol) -> Option<Span> {
@@ -879,6 +900,9 @@ mod tests {
         let dot = typed.find("light.").unwrap() + 6;
         let comps: Vec<String> = index.completions(&path, &typed, dot).into_iter().map(|c| c.label).collect();
         assert_eq!(comps, ["x", "y", "z", "r", "g", "b"]);
+        // Inlay hints: `k`'s inferred type, not `c`'s written one.
+        let hints = index.inlay_hints(&path);
+        assert_eq!(hints, [(MAIN.find("k = length").unwrap() + 1, ": float".to_string())]);
         // Past the end: nothing, no panic.
         assert!(index.hover(&path, 1 << 20).is_none());
     }

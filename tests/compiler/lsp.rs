@@ -228,6 +228,25 @@ fn rename_across_an_include_and_its_refusals() {
 }
 
 #[test]
+fn definition_into_a_required_module_and_inlay_hints() {
+    let lib = "def tint(c : float3) : float3 {\n    return c * 0.5\n}\n";
+    let main = "require lib\n\nvar @out f_color : float4\n\n[fragment_program]\ndef fs {\n    let t = tint(float3(1.0))\n    f_color = float4(t, 1.0)\n}\n";
+    let (_d, root) = temp_with(&[("main.das", main), ("lib.das", lib)]);
+    let (mu, lu) = (uri(&root.join("main.das")), uri(&root.join("lib.das")));
+    let mut c = Client::start(Value::Null);
+    c.open(&mu, main, 1);
+    assert_eq!(c.diagnostics(&mu)["diagnostics"], json!([]));
+    let (line, col) = pos(main, "tint(");
+    let def = c.request("textDocument/definition", Client::at(&mu, line, col + 1));
+    assert_eq!(def["uri"], json!(lu), "{def}");
+    assert_eq!(def["range"]["start"], json!({"line": 0, "character": 4}), "{def}");
+    let hints = c.request("textDocument/inlayHint", json!({"textDocument": {"uri": mu}, "range": {"start": {"line": 0, "character": 0}, "end": {"line": 99, "character": 0}}}));
+    let (tl, tc) = pos(main, "t = tint");
+    assert_eq!(hints, json!([{"position": {"line": tl, "character": tc + 1}, "label": ": float3", "kind": 1}]), "{hints}");
+    c.finish();
+}
+
+#[test]
 fn completion_in_scope_and_after_a_dot() {
     let (_d, root) = temp_with(&[("a.das", SHADER)]);
     let u = uri(&root.join("a.das"));
