@@ -40,10 +40,36 @@ fn capabilities() -> lt::ServerCapabilities {
         document_symbol_provider: Some(lt::OneOf::Left(true)),
         rename_provider: Some(lt::OneOf::Left(true)),
         inlay_hint_provider: Some(lt::OneOf::Left(true)),
+        semantic_tokens_provider: Some(lt::SemanticTokensServerCapabilities::SemanticTokensOptions(lt::SemanticTokensOptions {
+            legend: lt::SemanticTokensLegend { token_types: TOKEN_TYPES.to_vec(), token_modifiers: TOKEN_MODIFIERS.to_vec() },
+            full: Some(lt::SemanticTokensFullOptions::Bool(true)),
+            ..Default::default()
+        })),
         completion_provider: Some(lt::CompletionOptions { trigger_characters: Some(vec![".".into()]), ..Default::default() }),
         position_encoding: Some(lt::PositionEncodingKind::UTF16),
         ..Default::default()
     }
+}
+
+/// The semantic token types, indexed by `token_type`.
+const TOKEN_TYPES: [lt::SemanticTokenType; 5] =
+    [lt::SemanticTokenType::VARIABLE, lt::SemanticTokenType::FUNCTION, lt::SemanticTokenType::STRUCT, lt::SemanticTokenType::PROPERTY, lt::SemanticTokenType::ENUM_MEMBER];
+/// Bits of `token_modifiers_bitset`: 1 declaration, 2 readonly, 4 defaultLibrary.
+const TOKEN_MODIFIERS: [lt::SemanticTokenModifier; 3] = [lt::SemanticTokenModifier::DECLARATION, lt::SemanticTokenModifier::READONLY, lt::SemanticTokenModifier::DEFAULT_LIBRARY];
+
+/// A token's type index and modifier bits.
+fn token_type(t: &workspace::SemanticToken) -> (u32, u32) {
+    use workspace::TokenKind as K;
+    let (ty, mods) = match t.kind {
+        K::Variable => (0, 0),
+        K::Constant => (0, 2),
+        K::Function => (1, 0),
+        K::Struct => (2, 0),
+        K::Field => (3, 0),
+        K::BuiltinVariable => (0, 4),
+        K::BuiltinFunction => (1, 4),
+    };
+    (ty, mods | u32::from(t.declaration))
 }
 
 /// Runs the protocol on a connection (stdio, or in memory in tests):
@@ -326,6 +352,30 @@ fn dispatch(ws: &Workspace, req: Request) -> Answer {
                 })
                 .collect();
             json(serde_json::to_value(hints).map_err(bad_params)?)
+        }
+        SemanticTokensFullRequest::METHOD => {
+            let p: lt::SemanticTokensParams = serde_json::from_value(req.params).map_err(bad_params)?;
+            let Some(path) = path_of(&p.text_document.uri) else { return Ok(None) };
+            let Some(index) = ws.index(&path) else { return Ok(None) };
+            // Positions are in the analysed text: nothing while the document differs.
+            if ws.text(&path).as_deref() != index.text(&path) {
+                return Ok(None);
+            }
+            let text = index.text(&path).unwrap_or("");
+            let mut data = Vec::new();
+            let (mut line, mut col) = (0, 0);
+            for t in index.semantic_tokens(&path) {
+                let (l, c) = workspace::offset_to_position(text, t.start);
+                let (el, ec) = workspace::offset_to_position(text, t.end);
+                if el != l {
+                    continue;
+                }
+                let (token_type, token_modifiers_bitset) = token_type(&t);
+                let delta_start = if l == line { c - col } else { c };
+                data.push(lt::SemanticToken { delta_line: l - line, delta_start, length: ec - c, token_type, token_modifiers_bitset });
+                (line, col) = (l, c);
+            }
+            json(serde_json::to_value(lt::SemanticTokens { result_id: None, data }).map_err(bad_params)?)
         }
         other => Err((ErrorCode::MethodNotFound, format!("umbrac does not answer `{other}`"))),
     }

@@ -297,6 +297,27 @@ fn shape_of(ty: &Ty) -> Option<Shape> {
     }
 }
 
+/// A name to highlight.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SemanticToken {
+    /// Byte range in the file.
+    pub start: usize,
+    pub end: usize,
+    pub kind: TokenKind,
+    pub declaration: bool,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TokenKind {
+    Variable,
+    Constant,
+    Function,
+    Struct,
+    Field,
+    BuiltinVariable,
+    BuiltinFunction,
+}
+
 /// A completion item.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Completion {
@@ -504,6 +525,60 @@ impl Index {
             }
         }
         out.sort_by_key(|s| s.start);
+        out
+    }
+
+    /// The names in `path` for semantic highlighting, in file order and
+    /// never overlapping: byte range, kind, and whether it is a declaration.
+    pub fn semantic_tokens(&self, path: &Path) -> Vec<SemanticToken> {
+        let path = overlay::normalize(path);
+        let mut out: Vec<SemanticToken> = Vec::new();
+        let kind_of = |sym: Symbol| match sym {
+            Symbol::Global(_) | Symbol::Local(..) => TokenKind::Variable,
+            Symbol::Const(_) => TokenKind::Constant,
+            Symbol::Function(_) | Symbol::EntryPoint(_) => TokenKind::Function,
+            Symbol::Struct(_) => TokenKind::Struct,
+            Symbol::Field(..) => TokenKind::Field,
+        };
+        let mut push = |span: Span, kind: TokenKind, declaration: bool| {
+            if let Some(l) = self.location(span).filter(|l| l.path == path && l.end > l.start) {
+                out.push(SemanticToken { start: l.start, end: l.end, kind, declaration });
+            }
+        };
+        for (sym, (span, name, _)) in &self.decls {
+            if self.sources.slice(*span) == name.as_str() {
+                push(*span, kind_of(*sym), true);
+            }
+        }
+        for o in &self.occurrences {
+            match (o.symbol, &o.builtin) {
+                (Some(sym), _) => match self.decls.get(&sym) {
+                    Some((_, name, _)) => {
+                        if let Some(span) = self.name_in(o.span, name, sym) {
+                            push(span, kind_of(sym), false);
+                        }
+                    }
+                    // A builtin variable (`gl_Position`).
+                    None => push(o.span, TokenKind::BuiltinVariable, false),
+                },
+                (None, Some(sig)) => {
+                    let name = sig.split('(').next().unwrap_or("");
+                    if self.sources.slice(o.span).starts_with(name) && !name.is_empty() {
+                        push(Span::new(o.span.start, o.span.start + name.len() as u32), TokenKind::BuiltinFunction, false);
+                    }
+                }
+                _ => {}
+            }
+        }
+        out.sort_by_key(|t| (t.start, t.end));
+        let mut last_end = 0;
+        out.retain(|t| {
+            let keep = t.start >= last_end;
+            if keep {
+                last_end = t.end;
+            }
+            keep
+        });
         out
     }
 
@@ -900,6 +975,14 @@ mod tests {
         let dot = typed.find("light.").unwrap() + 6;
         let comps: Vec<String> = index.completions(&path, &typed, dot).into_iter().map(|c| c.label).collect();
         assert_eq!(comps, ["x", "y", "z", "r", "g", "b"]);
+        // Semantic tokens: `light` declared, `length` a builtin, `gl_Position` too.
+        let tokens = index.semantic_tokens(&path);
+        let token_at = |at: usize| tokens.iter().find(|t| t.start == at).map(|t| (t.kind, t.declaration, &MAIN[t.start..t.end]));
+        assert_eq!(token_at(MAIN.find("light :").unwrap()), Some((TokenKind::Variable, true, "light")));
+        assert_eq!(token_at(MAIN.find("length").unwrap()), Some((TokenKind::BuiltinFunction, false, "length")));
+        assert_eq!(token_at(MAIN.find("gl_Position").unwrap()), Some((TokenKind::BuiltinVariable, false, "gl_Position")));
+        assert_eq!(token_at(MAIN.find("shade(light)").unwrap()), Some((TokenKind::Function, false, "shade")));
+        assert!(tokens.windows(2).all(|w| w[0].end <= w[1].start));
         // Inlay hints: `k`'s inferred type, not `c`'s written one.
         let hints = index.inlay_hints(&path);
         assert_eq!(hints, [(MAIN.find("k = length").unwrap() + 1, ": float".to_string())]);

@@ -197,6 +197,21 @@ fn hover_definition_references_and_symbols() {
     let syms = c.request("textDocument/documentSymbol", json!({"textDocument": {"uri": u}}));
     let names: Vec<&str> = syms.as_array().unwrap().iter().map(|s| s["name"].as_str().unwrap()).collect();
     assert_eq!(names, ["light", "f_color", "shade", "vs", "fs"], "{syms}");
+    // Semantic tokens, decoded: the first is `light`'s declaration.
+    let toks = c.request("textDocument/semanticTokens/full", json!({"textDocument": {"uri": u}}));
+    let data: Vec<u64> = toks["data"].as_array().unwrap().iter().map(|v| v.as_u64().unwrap()).collect();
+    assert_eq!(data.len() % 5, 0);
+    assert_eq!(&data[..5], &[dl as u64, dc as u64, 5, 0, 1], "{toks}");
+    let (mut line, mut col, mut builtins) = (0u64, 0u64, Vec::new());
+    for t in data.chunks(5) {
+        col = if t[0] == 0 { col + t[1] } else { t[1] };
+        line += t[0];
+        if t[4] & 4 != 0 {
+            let l = SHADER.lines().nth(line as usize).unwrap();
+            builtins.push(l[col as usize..(col + t[2]) as usize].to_string());
+        }
+    }
+    assert_eq!(builtins, ["gl_Position", "length"], "{toks}");
     c.finish();
 }
 
