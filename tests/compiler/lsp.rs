@@ -332,29 +332,23 @@ fn host_code_says_nothing() {
     c.finish();
 }
 
-/// Neovim's own LSP client drives `umbrac lsp` on daslang's first GL
-/// tutorial (tests/editor/nvim_lsp.lua): an error typed in shows at its
-/// line and column, undoing it clears it, a hover shows a uniform's type.
-#[test]
-fn neovim_sees_the_diagnostic_and_the_hover() {
-    let tutorial = support::repo().join("../shared/reference/daslang-tutorials/01_triangle.das");
-    let Ok(text) = std::fs::read_to_string(&tutorial) else {
-        return support::skip(format!("{} is not here", tutorial.display()));
-    };
+/// Runs Neovim headless with `script` (tests/editor/) on `file`; what it
+/// saw, as `key -> value`. `None`: no Neovim (skipped, failing under CI).
+fn neovim(script: &str, file: &Path) -> Option<std::collections::HashMap<String, String>> {
     if std::process::Command::new("nvim").arg("--version").output().is_err() {
-        return support::skip("`nvim` cannot be run (apt-get install neovim)");
+        support::skip("`nvim` cannot be run (apt-get install neovim)");
+        return None;
     }
-    let (_d, root) = temp_with(&[("01_triangle.das", &text)]);
-    let out = root.join("seen.txt");
-    let script = support::repo().join("tests/editor/nvim_lsp.lua");
+    let dir = file.parent().unwrap();
+    let out = dir.join("seen.txt");
     let mut child = std::process::Command::new("nvim")
         .args(["--headless", "-u", "NONE", "-i", "NONE", "-n", "-c"])
-        .arg(format!("luafile {}", script.display()))
+        .arg(format!("luafile {}", support::repo().join("tests/editor").join(script).display()))
         .env("UMBRAC", env!("CARGO_BIN_EXE_umbrac"))
-        .env("FILE", root.join("01_triangle.das"))
+        .env("FILE", file)
         .env("OUT", &out)
-        .env("XDG_STATE_HOME", &root)
-        .env("XDG_DATA_HOME", &root)
+        .env("XDG_STATE_HOME", dir)
+        .env("XDG_DATA_HOME", dir)
         .stdin(std::process::Stdio::null())
         .stdout(std::process::Stdio::null())
         .spawn()
@@ -368,12 +362,43 @@ fn neovim_sees_the_diagnostic_and_the_hover() {
         std::thread::sleep(Duration::from_millis(100));
     }
     let seen = std::fs::read_to_string(&out).expect("the script wrote what it saw");
-    let get = |k: &str| seen.lines().find_map(|l| l.strip_prefix(k).and_then(|r| r.strip_prefix('\t'))).unwrap_or_else(|| panic!("`{k}` in:\n{seen}"));
     assert!(!seen.contains("lua_error"), "{seen}");
-    assert_eq!(get("attached"), "true", "{seen}");
-    assert_eq!(get("diag_seen"), "true", "{seen}");
-    assert_eq!((get("diag_line"), get("diag_col")), (get("error_line"), get("error_col")), "{seen}");
-    assert!(get("diag_message").contains("v_colr"), "{seen}");
-    assert_eq!(get("cleared"), "true", "{seen}");
-    assert!(get("hover").contains("u_angle : float"), "{seen}");
+    Some(seen.lines().filter_map(|l| l.split_once('\t')).map(|(k, v)| (k.to_string(), v.replace("\\n", "\n"))).collect())
+}
+
+/// Neovim's own LSP client drives `umbrac lsp` on daslang's first GL
+/// tutorial (tests/editor/nvim_lsp.lua): an error typed in shows at its
+/// line and column, undoing it clears it, a hover shows a uniform's type.
+#[test]
+fn neovim_sees_the_diagnostic_and_the_hover() {
+    let tutorial = support::repo().join("../shared/reference/daslang-tutorials/01_triangle.das");
+    let Ok(text) = std::fs::read_to_string(&tutorial) else {
+        return support::skip(format!("{} is not here", tutorial.display()));
+    };
+    let (_d, root) = temp_with(&[("01_triangle.das", &text)]);
+    let Some(seen) = neovim("nvim_lsp.lua", &root.join("01_triangle.das")) else { return };
+    let get = |k: &str| seen.get(k).map(String::as_str).unwrap_or_else(|| panic!("`{k}` in {seen:?}"));
+    assert_eq!(get("attached"), "true", "{seen:?}");
+    assert_eq!(get("diag_seen"), "true", "{seen:?}");
+    assert_eq!((get("diag_line"), get("diag_col")), (get("error_line"), get("error_col")), "{seen:?}");
+    assert!(get("diag_message").contains("v_colr"), "{seen:?}");
+    assert_eq!(get("cleared"), "true", "{seen:?}");
+    assert!(get("hover").contains("u_angle : float"), "{seen:?}");
+}
+
+/// Neovim jumps into a required module, renames a function across the
+/// program and the module, and completes a struct's fields
+/// (tests/editor/nvim_lsp_project.lua).
+#[test]
+fn neovim_jumps_renames_across_files_and_completes_a_field() {
+    let lib = "def tint(c : float3) : float3 {\n    return c * 0.5\n}\n";
+    let main = "require lib\n\nstruct Material {\n    albedo : float3\n    rough : float\n}\n\nvar @out f_color : float4\n\n[fragment_program]\ndef fs {\n    var m : Material\n    m.albedo = float3(1.0)\n    m.rough = 0.5\n    f_color = float4(tint(m.albedo * m.rough), 1.0)\n}\n";
+    let (_d, root) = temp_with(&[("main.das", main), ("lib.das", lib)]);
+    let Some(seen) = neovim("nvim_lsp_project.lua", &root.join("main.das")) else { return };
+    let get = |k: &str| seen.get(k).map(String::as_str).unwrap_or_else(|| panic!("`{k}` in {seen:?}"));
+    assert_eq!(get("definition"), format!("{}:0:4", root.join("lib.das").display()), "{seen:?}");
+    assert_eq!(get("rename_error"), "none");
+    assert_eq!(get("main_after"), main.replace("tint(", "shade_it(").trim_end(), "{seen:?}");
+    assert_eq!(get("lib_after"), lib.replace("tint(", "shade_it(").trim_end(), "{seen:?}");
+    assert_eq!(get("completion"), "albedo,rough", "{seen:?}");
 }
