@@ -40,6 +40,8 @@ fn capabilities() -> lt::ServerCapabilities {
         document_symbol_provider: Some(lt::OneOf::Left(true)),
         rename_provider: Some(lt::OneOf::Left(true)),
         inlay_hint_provider: Some(lt::OneOf::Left(true)),
+        signature_help_provider: Some(lt::SignatureHelpOptions { trigger_characters: Some(vec!["(".into(), ",".into(), ";".into()]), ..Default::default() }),
+        code_action_provider: Some(lt::CodeActionProviderCapability::Simple(true)),
         semantic_tokens_provider: Some(lt::SemanticTokensServerCapabilities::SemanticTokensOptions(lt::SemanticTokensOptions {
             legend: lt::SemanticTokensLegend { token_types: TOKEN_TYPES.to_vec(), token_modifiers: TOKEN_MODIFIERS.to_vec() },
             full: Some(lt::SemanticTokensFullOptions::Bool(true)),
@@ -377,8 +379,57 @@ fn dispatch(ws: &Workspace, req: Request) -> Answer {
             }
             json(serde_json::to_value(lt::SemanticTokens { result_id: None, data }).map_err(bad_params)?)
         }
+        SignatureHelpRequest::METHOD => {
+            let p: lt::SignatureHelpParams = serde_json::from_value(req.params).map_err(bad_params)?;
+            let tdp = &p.text_document_position_params;
+            let Some(path) = path_of(&tdp.text_document.uri) else { return Ok(None) };
+            let (Some(index), Some(text)) = (ws.index(&path), ws.text(&path)) else { return Ok(None) };
+            let offset = workspace::position_to_offset(&text, tdp.position.line, tdp.position.character);
+            let Some((sigs, active)) = index.signature_help(&text, offset) else { return Ok(None) };
+            let signatures = sigs
+                .into_iter()
+                .map(|(label, params)| lt::SignatureInformation {
+                    label,
+                    documentation: None,
+                    parameters: Some(params.into_iter().map(|p| lt::ParameterInformation { label: lt::ParameterLabel::Simple(p), documentation: None }).collect()),
+                    active_parameter: None,
+                })
+                .collect();
+            json(serde_json::to_value(lt::SignatureHelp { signatures, active_signature: Some(0), active_parameter: Some(active as u32) }).map_err(bad_params)?)
+        }
+        CodeActionRequest::METHOD => {
+            let p: lt::CodeActionParams = serde_json::from_value(req.params).map_err(bad_params)?;
+            let Some(text) = path_of(&p.text_document.uri).and_then(|path| ws.text(&path)) else { return Ok(None) };
+            let mut actions = Vec::new();
+            for d in p.context.diagnostics.iter().filter(|d| d.source.as_deref() == Some("umbrac")) {
+                let Some(fix) = did_you_mean(&d.message) else { continue };
+                // Only where the diagnostic covers a name (not an `#include` line).
+                let (s, e) = (workspace::position_to_offset(&text, d.range.start.line, d.range.start.character), workspace::position_to_offset(&text, d.range.end.line, d.range.end.character));
+                let name = text.get(s..e).unwrap_or("");
+                if name.is_empty() || !name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_') {
+                    continue;
+                }
+                let edit = lt::TextEdit { range: d.range, new_text: fix.to_string() };
+                actions.push(lt::CodeActionOrCommand::CodeAction(lt::CodeAction {
+                    title: format!("Replace `{name}` with `{fix}`"),
+                    kind: Some(lt::CodeActionKind::QUICKFIX),
+                    diagnostics: Some(vec![d.clone()]),
+                    edit: Some(lt::WorkspaceEdit { changes: Some([(p.text_document.uri.clone(), vec![edit])].into_iter().collect()), ..Default::default() }),
+                    is_preferred: Some(true),
+                    ..Default::default()
+                }));
+            }
+            json(serde_json::to_value(actions).map_err(bad_params)?)
+        }
         other => Err((ErrorCode::MethodNotFound, format!("umbrac does not answer `{other}`"))),
     }
+}
+
+/// The name a diagnostic's "help: did you mean `NAME`?" suggests.
+fn did_you_mean(message: &str) -> Option<&str> {
+    let rest = &message[message.find("did you mean `")? + "did you mean `".len()..];
+    let name = &rest[..rest.find('`')?];
+    (!name.is_empty() && name.chars().all(|c| c.is_ascii_alphanumeric() || c == '_')).then_some(name)
 }
 
 /// The file, its last analysis and the byte offset a position names.

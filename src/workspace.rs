@@ -280,7 +280,14 @@ pub struct Index {
     fields: Vec<Vec<(String, String)>>,
     /// The reflection manifest, when the compilation emitted one.
     manifest: Option<serde_json::Value>,
+    /// The text outputs: entry point (`None`: the whole module), target, code.
+    emitted: Vec<(Option<String>, crate::Target, String)>,
+    /// Helper functions by name (overloads): label and parameter labels.
+    signatures: HashMap<String, Vec<(String, Vec<String>)>>,
 }
+
+/// Lines of an output a hover shows.
+const HOVER_CODE_LINES: usize = 40;
 
 /// What follows a `.` on a value.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -383,8 +390,12 @@ impl Index {
                 shapes.extend(shape_of(&l.ty).map(|s| (Symbol::Local(key, id), s)));
             }
         }
+        let mut signatures: HashMap<String, Vec<(String, Vec<String>)>> = HashMap::new();
         for (i, f) in p.functions.iter().enumerate() {
-            decls.insert(Symbol::Function(i), (name_within(&sources, f.span, &f.name), f.name.clone(), format!("def {}(...) : {}", f.name, show(&f.ret))));
+            let params: Vec<String> = f.locals[..f.params].iter().map(|l| format!("{} : {}", l.name.as_str(), show(&l.ty))).collect();
+            let label = format!("def {}({}) : {}", f.name, params.join("; "), show(&f.ret));
+            signatures.entry(f.name.clone()).or_default().push((label.clone(), params));
+            decls.insert(Symbol::Function(i), (name_within(&sources, f.span, &f.name), f.name.clone(), label));
             w.function(i, f, &mut decls);
         }
         for (i, e) in p.entry_points.iter().enumerate() {
@@ -399,7 +410,13 @@ impl Index {
             .as_ref()
             .and_then(|r| r.artifacts.iter().find(|a| a.target.is_none()))
             .and_then(|a| serde_json::from_slice(&a.contents).ok());
-        Index { sources, occurrences, decls, shapes, functions, fields, manifest }
+        let emitted = compilation
+            .result
+            .iter()
+            .flat_map(|r| &r.artifacts)
+            .filter_map(|a| Some((a.entry.clone(), a.target.filter(|t| *t != crate::Target::Spirv)?, String::from_utf8(a.contents.clone()).ok()?)))
+            .collect();
+        Index { sources, occurrences, decls, shapes, functions, fields, manifest, emitted, signatures }
     }
 
     /// The id and text of a file this analysis read.
@@ -453,6 +470,16 @@ impl Index {
             parts.push(format!("```das\n{what}\n```"));
             if let Some(doc) = self.doc_comment(*dspan) {
                 parts.push(doc);
+            }
+            if let Some(Symbol::EntryPoint(_)) = symbol {
+                for (entry, target, code) in &self.emitted {
+                    if entry.as_deref().is_none_or(|e| e == name) {
+                        let lines: Vec<&str> = code.lines().collect();
+                        let more = if lines.len() > HOVER_CODE_LINES { format!("\n... {} more lines", lines.len() - HOVER_CODE_LINES) } else { String::new() };
+                        let lang = if *target == crate::Target::Wgsl { "wgsl" } else { "glsl" };
+                        parts.push(format!("{}:\n```{lang}\n{}{more}\n```", target.name(), lines[..lines.len().min(HOVER_CODE_LINES)].join("\n")));
+                    }
+                }
             }
             if let (Some(Symbol::Global(_)), Some(m)) = (symbol, &self.manifest) {
                 let mut found = Vec::new();
@@ -580,6 +607,38 @@ impl Index {
             keep
         });
         out
+    }
+
+    /// The signatures of the helper function whose call the offset of
+    /// `text` is in, and which parameter it is at.
+    pub fn signature_help(&self, text: &str, offset: usize) -> Option<(Vec<(String, Vec<String>)>, usize)> {
+        let mut offset = offset.min(text.len());
+        while !text.is_char_boundary(offset) {
+            offset -= 1;
+        }
+        let bytes = text.as_bytes();
+        let (mut depth, mut commas) = (0usize, 0usize);
+        let mut i = offset;
+        // Back to the unmatched `(`, within a bounded stretch of the text.
+        let open = loop {
+            if i == 0 || offset - i > 4096 {
+                return None;
+            }
+            i -= 1;
+            match bytes[i] {
+                b')' | b']' => depth += 1,
+                b'(' | b'[' if depth > 0 => depth -= 1,
+                b'(' => break i,
+                b'[' => return None,
+                b',' | b';' if depth == 0 => commas += 1,
+                b'\n' if depth == 0 && offset - i > 1024 => return None,
+                _ => {}
+            }
+        };
+        let before = text[..open].trim_end();
+        let name = &before[before.trim_end_matches(|c: char| c.is_ascii_alphanumeric() || c == '_').len()..];
+        let sigs = self.signatures.get(name)?;
+        Some((sigs.clone(), commas))
     }
 
     /// Inlay hints for `path`: after each local whose type is inferred
@@ -983,6 +1042,12 @@ mod tests {
         assert_eq!(token_at(MAIN.find("gl_Position").unwrap()), Some((TokenKind::BuiltinVariable, false, "gl_Position")));
         assert_eq!(token_at(MAIN.find("shade(light)").unwrap()), Some((TokenKind::Function, false, "shade")));
         assert!(tokens.windows(2).all(|w| w[0].end <= w[1].start));
+        // Signature help inside `shade(`, and the emitted code on an entry point.
+        let (sigs, active) = index.signature_help(MAIN, MAIN.find("shade(light)").unwrap() + 6).unwrap();
+        assert_eq!((sigs[0].0.as_str(), active), ("def shade(c : float3) : float3", 0));
+        assert!(index.signature_help(MAIN, MAIN.find("light :").unwrap()).is_none());
+        let vs = index.hover(&path, MAIN.find("def vs").unwrap() + 4).unwrap();
+        assert!(vs.text.contains("glsl330:") && vs.text.contains("gl_Position") && vs.text.contains("wgsl:"), "{}", vs.text);
         // Inlay hints: `k`'s inferred type, not `c`'s written one.
         let hints = index.inlay_hints(&path);
         assert_eq!(hints, [(MAIN.find("k = length").unwrap() + 1, ": float".to_string())]);

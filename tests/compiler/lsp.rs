@@ -128,7 +128,7 @@ fn pos(text: &str, needle: &str) -> (u32, u32) {
 fn diagnostics_follow_the_edits_and_match_the_cli() {
     let (_d, root) = temp_with(&[("a.das", SHADER)]);
     let u = uri(&root.join("a.das"));
-    let c = Client::start(json!({"targets": ["wgsl"]}));
+    let mut c = Client::start(json!({"targets": ["wgsl"]}));
     c.open(&u, SHADER, 1);
     let ok = c.diagnostics(&u);
     assert_eq!(ok["diagnostics"], json!([]), "{ok}");
@@ -145,6 +145,10 @@ fn diagnostics_follow_the_edits_and_match_the_cli() {
     assert_eq!(diags[0]["range"]["end"], json!({"line": line, "character": col + 5}), "{d}");
     let cli = umbrac::compile_source("a.das", &bad, &umbrac::Options { targets: vec![umbrac::Target::Wgsl], ..Default::default() });
     assert!(diags[0]["message"].as_str().unwrap().starts_with(&cli.diagnostics[0].message), "{d}");
+    // The checker's "did you mean" is a quick fix.
+    let actions = c.request("textDocument/codeAction", json!({"textDocument": {"uri": u}, "range": diags[0]["range"], "context": {"diagnostics": [diags[0]]}}));
+    assert_eq!(actions[0]["edit"]["changes"][&u][0]["newText"], json!("light"), "{actions}");
+    assert_eq!(actions[0]["edit"]["changes"][&u][0]["range"], diags[0]["range"], "{actions}");
     // Rapid changes: only the newest version's result is published.
     c.change(&u, &bad, 3);
     c.change(&u, SHADER, 4);
@@ -212,6 +216,11 @@ fn hover_definition_references_and_symbols() {
         }
     }
     assert_eq!(builtins, ["gl_Position", "length"], "{toks}");
+    // Signature help inside `shade(`.
+    let (sl, sc) = pos(SHADER, "shade(light)");
+    let help = c.request("textDocument/signatureHelp", Client::at(&u, sl, sc + 6));
+    assert_eq!(help["signatures"][0]["label"], json!("def shade(c : float3) : float3"), "{help}");
+    assert_eq!(help["activeParameter"], json!(0));
     c.finish();
 }
 
