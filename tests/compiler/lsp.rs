@@ -315,6 +315,18 @@ fn bad_input_never_stops_the_server() {
         let r = c.request_raw("textDocument/definition", Client::at(&u, l, ch));
         assert!(r.error.is_none(), "{r:?}");
     }
+    // A 10 MB paste (host comments around the shader), and a position
+    // inside a UTF-16 surrogate pair.
+    let big = format!("// \u{1F600} pasted\n{}{SHADER}", "// host text pasted in\n".repeat((10 << 20) / 23 + 1));
+    assert!(big.len() > 10 << 20);
+    c.change(&u, &big, 3);
+    let d3 = c.diagnostics(&u);
+    assert_eq!((d3["version"].clone(), d3["diagnostics"].clone()), (json!(3), json!([])), "the paste checks");
+    let r = c.request_raw("textDocument/hover", Client::at(&u, 0, 4));
+    assert!(r.error.is_none(), "{r:?}");
+    let (hl, hc) = pos(&big, "light\n}");
+    let h = c.request("textDocument/hover", Client::at(&u, hl, hc));
+    assert!(h["contents"]["value"].as_str().unwrap().contains("light : float3"), "{h}");
     // Bad parameters and unknown methods are errors, not the end.
     assert!(c.request_raw("textDocument/hover", json!({"nonsense": true})).error.is_some());
     assert!(c.request_raw("umbrac/unknown", Value::Null).error.is_some());
