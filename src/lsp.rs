@@ -293,6 +293,8 @@ fn dispatch(ws: &Workspace, req: Request) -> Answer {
             let refused = |msg: String| (ErrorCode::RequestFailed, format!("cannot rename: {msg}"));
             let Some((path, index, offset)) = locate(ws, &p.text_document_position) else { return Err(refused("the file has not been checked".into())) };
             let locs = index.rename(&path, offset, &p.new_name).map_err(refused)?;
+            // `WorkspaceEdit::changes` is keyed by `Uri`, whose parse cache clippy calls mutable.
+            #[allow(clippy::mutable_key_type)]
             let mut changes: HashMap<lt::Uri, Vec<lt::TextEdit>> = HashMap::new();
             for l in &locs {
                 // Edits are made against the text that was analysed.

@@ -283,8 +283,11 @@ pub struct Index {
     /// The text outputs: entry point (`None`: the whole module), target, code.
     emitted: Vec<(Option<String>, crate::Target, String)>,
     /// Helper functions by name (overloads): label and parameter labels.
-    signatures: HashMap<String, Vec<(String, Vec<String>)>>,
+    signatures: HashMap<String, Vec<Signature>>,
 }
+
+/// A function's signature as shown, and its parameters'.
+pub type Signature = (String, Vec<String>);
 
 /// Lines of an output a hover shows.
 const HOVER_CODE_LINES: usize = 40;
@@ -390,7 +393,7 @@ impl Index {
                 shapes.extend(shape_of(&l.ty).map(|s| (Symbol::Local(key, id), s)));
             }
         }
-        let mut signatures: HashMap<String, Vec<(String, Vec<String>)>> = HashMap::new();
+        let mut signatures: HashMap<String, Vec<Signature>> = HashMap::new();
         for (i, f) in p.functions.iter().enumerate() {
             let params: Vec<String> = f.locals[..f.params].iter().map(|l| format!("{} : {}", l.name.as_str(), show(&l.ty))).collect();
             let label = format!("def {}({}) : {}", f.name, params.join("; "), show(&f.ret));
@@ -611,7 +614,7 @@ impl Index {
 
     /// The signatures of the helper function whose call the offset of
     /// `text` is in, and which parameter it is at.
-    pub fn signature_help(&self, text: &str, offset: usize) -> Option<(Vec<(String, Vec<String>)>, usize)> {
+    pub fn signature_help(&self, text: &str, offset: usize) -> Option<(Vec<Signature>, usize)> {
         let mut offset = offset.min(text.len());
         while !text.is_char_boundary(offset) {
             offset -= 1;
