@@ -81,7 +81,7 @@ pub fn serve(connection: Connection) -> Result<()> {
     let params = connection.initialize(caps)?;
     let init: lt::InitializeParams = serde_json::from_value(params).unwrap_or_default();
     let (options, problems) = options_from(init.initialization_options.as_ref());
-    let mut server = Server { connection: &connection, ws: Workspace::new(options), dirty: HashSet::new(), reads: HashMap::new() };
+    let mut server = Server { connection: &connection, ws: Workspace::new(options), dirty: HashSet::new(), reads: HashMap::new(), published: HashMap::new() };
     for p in problems {
         server.show_message(lt::MessageType::WARNING, format!("umbrac: {p}"));
     }
@@ -95,6 +95,17 @@ struct Server<'a> {
     dirty: HashSet<PathBuf>,
     /// The files each open document's last check read.
     reads: HashMap<PathBuf, Vec<PathBuf>>,
+    /// What was last published for each document: its own check's
+    /// diagnostics with its version, and by root, those of the programs
+    /// that include or require it, at their place in it.
+    published: HashMap<PathBuf, Published>,
+}
+
+#[derive(Default)]
+struct Published {
+    version: Option<i32>,
+    own: Vec<lt::Diagnostic>,
+    from_roots: HashMap<PathBuf, Vec<lt::Diagnostic>>,
 }
 
 impl Server<'_> {
@@ -125,7 +136,13 @@ impl Server<'_> {
                     let resp = self.answer(req);
                     self.connection.sender.send(Message::Response(resp))?;
                 }
-                Message::Notification(n) => self.notification(n),
+                Message::Notification(n) => {
+                    // A bug while taking a notification in costs that notification, not the server.
+                    let method = n.method.clone();
+                    if let Err(payload) = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| self.notification(n))) {
+                        self.show_message(lt::MessageType::ERROR, format!("umbrac panicked on `{method}`: {}", crate::diag::panic_message(&*payload)));
+                    }
+                }
                 Message::Response(_) => {}
             }
         }
@@ -173,6 +190,10 @@ impl Server<'_> {
                         let path = crate::syntax::overlay::normalize(&path);
                         self.dirty.remove(&path);
                         self.reads.remove(&path);
+                        self.published.remove(&path);
+                        for p in self.published.values_mut() {
+                            p.from_roots.remove(&path);
+                        }
                         // Its diagnostics go with it; the disk counts again for the others.
                         self.publish(&path, None, Vec::new());
                         self.changed(&path);
@@ -203,14 +224,63 @@ impl Server<'_> {
     fn check_dirty(&mut self) -> Result<()> {
         let mut dirty: Vec<PathBuf> = self.dirty.drain().collect();
         dirty.sort();
+        // Published once all are checked: a document is never shown what
+        // a program that includes it found in an older version of it.
+        let mut touched: Vec<PathBuf> = Vec::new();
         for path in dirty {
             let Some(text) = self.ws.text(&path) else { continue };
-            let checked = self.ws.check(&path);
+            let checked = match std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| self.ws.check(&path))) {
+                Ok(c) => c,
+                Err(payload) => {
+                    self.show_message(lt::MessageType::ERROR, format!("umbrac panicked checking `{}`: {}", path.display(), crate::diag::panic_message(&*payload)));
+                    continue;
+                }
+            };
             self.reads.insert(path.clone(), checked.files_read.clone());
-            let diags = checked.diagnostics.iter().map(|d| to_lsp_diagnostic(d, &text, &self.ws)).collect();
-            self.publish(&path, checked.version, diags);
+            let own = checked.diagnostics.iter().map(|d| to_lsp_diagnostic(d, &text, &self.ws)).collect();
+            // Diagnostics inside other open documents also show there.
+            let mut elsewhere: HashMap<PathBuf, Vec<lt::Diagnostic>> = HashMap::new();
+            for d in &checked.diagnostics {
+                let Some((file, start, end, message)) = &d.origin else { continue };
+                let Some(t) = self.ws.version(file).and_then(|_| self.ws.text(file)) else { continue };
+                let inner = workspace::FileDiagnostic { start: *start, end: *end, message: format!("{message}\n(in the program `{}`)", path.display()), origin: None, ..d.clone() };
+                elsewhere.entry(file.clone()).or_default().push(to_lsp_diagnostic(&inner, &t, &self.ws));
+            }
+            touched.push(path.clone());
+            for (file, p) in self.published.iter_mut() {
+                if p.from_roots.remove(&path).is_some() {
+                    touched.push(file.clone());
+                }
+            }
+            for (file, diags) in elsewhere {
+                self.published.entry(file.clone()).or_default().from_roots.insert(path.clone(), diags);
+                touched.push(file);
+            }
+            let entry = self.published.entry(path.clone()).or_default();
+            entry.own = own;
+            entry.version = checked.version;
+        }
+        touched.sort();
+        touched.dedup();
+        for file in touched {
+            self.republish(&file);
         }
         Ok(())
+    }
+
+    /// Publishes what is known of `path`: its own diagnostics and those
+    /// the programs including it found in it, each once.
+    fn republish(&self, path: &Path) {
+        let Some(p) = self.published.get(path) else { return };
+        let mut all = p.own.clone();
+        let mut roots: Vec<_> = p.from_roots.iter().collect();
+        roots.sort_by(|a, b| a.0.cmp(b.0));
+        for d in roots.into_iter().flat_map(|(_, v)| v) {
+            if !all.iter().any(|x| x.range == d.range && x.message.split('\n').next() == d.message.split('\n').next()) {
+                all.push(d.clone());
+            }
+        }
+        self.publish(path, self.ws.version(path).or(p.version), all);
     }
 
     fn publish(&self, path: &Path, version: Option<i32>, diagnostics: Vec<lt::Diagnostic>) {

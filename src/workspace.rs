@@ -49,6 +49,9 @@ pub struct FileDiagnostic {
     pub message: String,
     /// Other places the diagnostic points at (path, byte range, message).
     pub related: Vec<(PathBuf, usize, usize, String)>,
+    /// For one placed at an `#include`/`require` line: where it is in the
+    /// included file (path, byte range, message without the prefix).
+    pub origin: Option<(PathBuf, usize, usize, String)>,
 }
 
 /// What a check of one file found.
@@ -169,7 +172,7 @@ fn place_diagnostics(c: &Compilation, root: &Path) -> Vec<FileDiagnostic> {
     let not_a_program = |d: &&Diagnostic| d.message.starts_with(NO_ENTRY_POINTS);
     let mut out: Vec<FileDiagnostic> = c.diagnostics.iter().filter(|d| !not_a_program(d)).map(|d| place(d, map, &in_root)).collect();
     if c.suppressed_errors > 0 {
-        out.push(FileDiagnostic { severity: Severity::Error, start: 0, end: 0, message: format!("{} more errors not shown", c.suppressed_errors), related: Vec::new() });
+        out.push(FileDiagnostic { severity: Severity::Error, start: 0, end: 0, message: format!("{} more errors not shown", c.suppressed_errors), related: Vec::new(), origin: None });
     }
     out
 }
@@ -191,7 +194,7 @@ fn place(d: &Diagnostic, map: &SourceMap, in_root: &dyn Fn(Span) -> Option<(usiz
             Some((map.file(id).path.clone().map(|p| overlay::normalize(&p))?, r.start, r.end, m.clone()))
         })
         .collect();
-    let mut fd = FileDiagnostic { severity: d.severity, start: 0, end: 0, message, related };
+    let mut fd = FileDiagnostic { severity: d.severity, start: 0, end: 0, message, related, origin: None };
     let Some(span) = d.span else { return fd };
     if let Some((_, r)) = in_root(span) {
         fd.start = r.start;
@@ -202,6 +205,9 @@ fn place(d: &Diagnostic, map: &SourceMap, in_root: &dyn Fn(Span) -> Option<(usiz
     if let Some(site) = map.include_chain(span).into_iter().rev().find_map(in_root) {
         let (_, line, col) = map.line_col(span).unwrap_or_default();
         let name = map.file_of(span.start).map(|id| map.file(id).name.clone()).unwrap_or_default();
+        if let Some((id, r)) = map.locate(span) {
+            fd.origin = map.file(id).path.as_deref().map(|p| (overlay::normalize(p), r.start, r.end, fd.message.clone()));
+        }
         fd.message = format!("{name}:{line}:{col}: {}", fd.message);
         fd.start = site.1.start;
         fd.end = site.1.end;
@@ -983,6 +989,8 @@ mod tests {
         let diag = &bad.diagnostics[0];
         assert_eq!(&"#include \"inc.das\"\n"[diag.start..diag.end], "#include \"inc.das\"", "{diag:?}");
         assert!(diag.message.contains("nothing") && diag.message.contains("inc.das:6:"), "{}", diag.message);
+        let (origin, start, _, _) = diag.origin.clone().unwrap();
+        assert_eq!((origin, start), (overlay::normalize(&d.path().join("inc.das")), MAIN.find("c * light").unwrap() + 4));
         // The last good analysis is kept.
         assert!(ws.index(&main).is_some());
         ws.close_document(&d.path().join("inc.das"));

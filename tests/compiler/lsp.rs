@@ -83,6 +83,20 @@ impl Client {
         }
     }
 
+    /// Diagnostics as published, the latest per URI, until `done` holds of them.
+    fn diagnostics_until(&self, done: impl Fn(&std::collections::HashMap<String, Value>) -> bool) -> std::collections::HashMap<String, Value> {
+        let mut latest = std::collections::HashMap::new();
+        while !done(&latest) {
+            match self.conn.receiver.recv_timeout(Duration::from_secs(60)).expect("diagnostics are published") {
+                Message::Notification(n) if n.method == "textDocument/publishDiagnostics" => {
+                    latest.insert(n.params["uri"].as_str().unwrap().to_string(), n.params["diagnostics"].clone());
+                }
+                _ => continue,
+            }
+        }
+        latest
+    }
+
     fn open(&self, uri: &str, text: &str, version: i32) {
         self.notify("textDocument/didOpen", json!({"textDocument": {"uri": uri, "languageId": "daslang", "version": version, "text": text}}));
     }
@@ -165,16 +179,22 @@ fn an_error_in_an_open_included_file_shows_at_the_include_line() {
     let c = Client::start(Value::Null);
     c.open(&mu, main, 1);
     assert_eq!(c.diagnostics(&mu)["diagnostics"], json!([]));
-    // The unsaved text of the included file counts.
+    // The unsaved text of the included file counts: the error shows at the
+    // #include line, and in the included document where the name is.
     c.open(&iu, &SHADER.replace("c * light", "c * nothing"), 1);
-    let mut d = c.diagnostics(&mu);
-    while d["diagnostics"] == json!([]) {
-        d = c.diagnostics(&mu);
-    }
-    let diags = d["diagnostics"].as_array().unwrap();
-    assert_eq!(diags.len(), 1, "{d}");
-    assert_eq!(diags[0]["range"]["start"], json!({"line": 0, "character": 0}), "{d}");
-    assert!(diags[0]["message"].as_str().unwrap().contains("inc.das:6:"), "{d}");
+    let some = |v: Option<&Value>| v.is_some_and(|d| d != &json!([]));
+    let seen = c.diagnostics_until(|l| some(l.get(&mu)) && some(l.get(&iu)));
+    let (outer, inner) = (&seen[&mu], &seen[&iu]);
+    assert_eq!(outer.as_array().unwrap().len(), 1, "{outer}");
+    assert_eq!(outer[0]["range"]["start"], json!({"line": 0, "character": 0}), "{outer}");
+    assert!(outer[0]["message"].as_str().unwrap().contains("inc.das:6:"), "{outer}");
+    let (line, col) = pos(SHADER, "light\n}");
+    assert_eq!(inner[0]["range"]["start"], json!({"line": line, "character": col}), "{inner}");
+    assert!(inner[0]["message"].as_str().unwrap().starts_with("unknown name `nothing`"), "{inner}");
+    // Fixed in the included document: both clear.
+    c.change(&iu, SHADER, 2);
+    let empty = |v: Option<&Value>| v == Some(&json!([]));
+    c.diagnostics_until(|l| empty(l.get(&mu)) && empty(l.get(&iu)));
     c.finish();
 }
 
