@@ -47,7 +47,7 @@ fn capabilities() -> lt::ServerCapabilities {
             full: Some(lt::SemanticTokensFullOptions::Bool(true)),
             ..Default::default()
         })),
-        completion_provider: Some(lt::CompletionOptions { trigger_characters: Some(vec![".".into()]), ..Default::default() }),
+        completion_provider: Some(lt::CompletionOptions { trigger_characters: Some(vec![".".into(), "@".into()]), ..Default::default() }),
         position_encoding: Some(lt::PositionEncodingKind::UTF16),
         ..Default::default()
     }
@@ -396,6 +396,8 @@ fn dispatch(ws: &Workspace, req: Request) -> Answer {
                         workspace::CompletionKind::Struct => lt::CompletionItemKind::STRUCT,
                         workspace::CompletionKind::Field => lt::CompletionItemKind::FIELD,
                         workspace::CompletionKind::Builtin => lt::CompletionItemKind::FUNCTION,
+                        workspace::CompletionKind::Annotation => lt::CompletionItemKind::KEYWORD,
+                        workspace::CompletionKind::Type => lt::CompletionItemKind::TYPE_PARAMETER,
                     }),
                     ..Default::default()
                 })

@@ -352,6 +352,28 @@ pub enum CompletionKind {
     Struct,
     Field,
     Builtin,
+    /// A variable annotation after `@`.
+    Annotation,
+    /// A builtin type's name.
+    Type,
+}
+
+/// The annotations a shader global takes (`var @uniform @set = 1 x : T`).
+const ANNOTATIONS: &[&str] = &["in", "out", "inout", "uniform", "location", "stage", "set", "binding", "format", "push_constant", "ssbo", "groupshared", "constant_id"];
+
+/// Sampler type names (each checked against `SamplerKind::from_name` in a test).
+const SAMPLER_NAMES: &[&str] = &["sampler2D", "sampler2DShadow", "sampler2DArray", "sampler2DArrayShadow", "sampler3D", "samplerCube", "samplerCubeShadow", "isampler2D", "usampler2D"];
+
+/// Every builtin type name: scalars, vectors, matrices, samplers.
+fn type_names() -> Vec<&'static str> {
+    use crate::sema::types::Scalar;
+    let mut out = Vec::new();
+    for s in [Scalar::Float, Scalar::Int, Scalar::Uint, Scalar::Bool, Scalar::Half] {
+        out.extend((1..=4).filter_map(|n| Ty::vec(s, n).builtin_name()));
+    }
+    out.extend((2..=4).flat_map(|c| (2..=4).filter_map(move |r| Ty::Matrix(c, r).builtin_name())));
+    out.extend(SAMPLER_NAMES);
+    out
 }
 
 /// What a hover shows.
@@ -747,6 +769,9 @@ impl Index {
         let start = before.trim_end_matches(word).len();
         let at = self.global_offset(path, start).unwrap_or(u32::MAX);
         let func = self.functions.iter().filter(|(s, _)| s.start <= at && at <= s.end).min_by_key(|(s, _)| s.end - s.start).map(|(_, k)| *k);
+        if before[..start].ends_with('@') {
+            return ANNOTATIONS.iter().map(|a| Completion { label: a.to_string(), kind: CompletionKind::Annotation, detail: "annotation".into() }).collect();
+        }
         if let Some(dotted) = before[..start].strip_suffix('.') {
             let name = &dotted[dotted.trim_end_matches(word).len()..];
             let visible = |sym: &Symbol| match sym {
@@ -783,6 +808,7 @@ impl Index {
             out.push(Completion { label: name.clone(), kind, detail: detail.clone() });
         }
         out.extend(crate::sema::builtins::all_names().map(|n| Completion { label: n.to_string(), kind: CompletionKind::Builtin, detail: "builtin".into() }));
+        out.extend(type_names().into_iter().map(|n| Completion { label: n.to_string(), kind: CompletionKind::Type, detail: "type".into() }));
         out.sort_by(|a, b| (a.kind as u8, &a.label).cmp(&(b.kind as u8, &b.label)));
         out.dedup_by(|a, b| a.label == b.label);
         out
@@ -1045,6 +1071,15 @@ mod tests {
         let dot = typed.find("light.").unwrap() + 6;
         let comps: Vec<String> = index.completions(&path, &typed, dot).into_iter().map(|c| c.label).collect();
         assert_eq!(comps, ["x", "y", "z", "r", "g", "b"]);
+        let at = MAIN.find("@uniform").unwrap() + 1;
+        let annotations: Vec<String> = index.completions(&path, MAIN, at).into_iter().map(|c| c.label).collect();
+        assert!(annotations.contains(&"location".to_string()) && !annotations.contains(&"light".to_string()), "{annotations:?}");
+        assert!(labels.iter().any(|l| l == "float4x3") && labels.iter().any(|l| l == "sampler2DShadow"), "{labels:?}");
+        // Every type offered is one the checker knows.
+        for n in type_names() {
+            assert!(crate::sema::types::SamplerKind::from_name(n).is_some() || SAMPLER_NAMES.iter().all(|s| *s != n), "{n}");
+        }
+        assert_eq!(type_names().len(), 5 * 4 + 9 + SAMPLER_NAMES.len());
         // Semantic tokens: `light` declared, `length` a builtin, `gl_Position` too.
         let tokens = index.semantic_tokens(&path);
         let token_at = |at: usize| tokens.iter().find(|t| t.start == at).map(|t| (t.kind, t.declaration, &MAIN[t.start..t.end]));
