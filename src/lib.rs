@@ -28,17 +28,21 @@ pub mod golden;
 pub mod lower;
 pub mod output;
 pub mod rerun;
+pub mod run;
 mod sealed;
 pub mod sema;
 pub mod source;
 pub mod syntax;
 pub mod target;
 pub mod variants;
+pub mod workspace;
 #[cfg(feature = "cli")]
 pub mod watch;
 
 #[cfg(feature = "render")]
 pub mod render;
+#[cfg(feature = "lsp")]
+pub mod lsp;
 
 use std::path::{Path, PathBuf};
 
@@ -367,10 +371,30 @@ fn run(sources: SourceMap, root: source::FileId, opts: &Options) -> Compilation 
 
 /// Everything after preprocessing: parse, check, lower, emit.
 fn finish(pre: Preprocessed, opts: &Options) -> Compilation {
+    finish_keeping(pre, opts, false).0
+}
+
+/// Compiles a file (read through [`syntax::overlay`] like any other) on
+/// the calling thread, keeping the checked program, which
+/// [`workspace`] answers queries from. A panic is the caller's to catch.
+pub(crate) fn analyze_file(path: &Path, opts: &Options) -> (Compilation, Option<sema::tree::Program>) {
+    match read_input(path) {
+        Ok(text) => {
+            let mut sources = SourceMap::new();
+            let root = sources.add(path.display().to_string(), Some(path.to_path_buf()), text, None);
+            finish_keeping(preprocess_root(sources, root, opts), opts, true)
+        }
+        Err(d) => (Compilation { sources: SourceMap::new(), diagnostics: vec![d], suppressed_errors: 0, result: None }, None),
+    }
+}
+
+/// [`finish`], also returning the checked program when `keep` (the
+/// compiler alone drops it as soon as it is lowered).
+fn finish_keeping(pre: Preprocessed, opts: &Options, keep: bool) -> (Compilation, Option<sema::tree::Program>) {
     let Preprocessed { sources, root, unit, mut diags, .. } = pre;
     if diags.has_errors() || sources.is_empty() {
         let suppressed_errors = diags.suppressed();
-        return Compilation { sources, diagnostics: diags.into_vec(), suppressed_errors, result: None };
+        return (Compilation { sources, diagnostics: diags.into_vec(), suppressed_errors, result: None }, None);
     }
     let program = syntax::parse_unit(&sources, root, unit, &parse_options(opts), &mut diags);
     let requested = if opts.targets.is_empty() { Vec::new() } else { opts.targets() };
@@ -382,9 +406,14 @@ fn finish(pre: Preprocessed, opts: &Options) -> Compilation {
     // Each tree is dropped as soon as the next stage has been built from
     // it, so the next stage's allocations reuse its memory, still in cache.
     drop(program);
+    let mut kept = None;
     let result = checked.filter(|_| !diags.has_errors()).and_then(|checked| {
         let lowered = lower::lower(&checked, lower::LowerOptions { conventions: opts.conventions, gl_uniforms: opts.gl_uniforms, spirv: targets.contains(&Target::Spirv) });
-        drop(checked);
+        if keep {
+            kept = Some(checked);
+        } else {
+            drop(checked);
+        }
         let lowered = match lowered {
             Ok(l) => l,
             Err(d) => {
@@ -412,5 +441,5 @@ fn finish(pre: Preprocessed, opts: &Options) -> Compilation {
         }
     });
     let suppressed_errors = diags.suppressed();
-    Compilation { sources, diagnostics: diags.into_vec(), suppressed_errors, result }
+    (Compilation { sources, diagnostics: diags.into_vec(), suppressed_errors, result }, kept)
 }

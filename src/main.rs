@@ -9,6 +9,7 @@
 //! umbrac check FILE|DIR...  (compile for every target, write nothing)
 //! umbrac reflect FILE       (print the reflection manifest)
 //! umbrac bindgen FILE [-o bindings.rs] [--module NAME] [--no-bytemuck]
+//! umbrac lsp               (a language server on stdin/stdout)
 //! umbrac render ...         (feature `render`)
 //! ```
 //!
@@ -30,16 +31,12 @@ use std::process::ExitCode;
 
 use clap::{Args, Parser, Subcommand, ValueEnum};
 use codespan_reporting::term::termcolor::{ColorChoice, StandardStream};
-use umbrac::{Compilation, Conventions, Diagnostic, Options, Severity, SourceMap, Target};
+use umbrac::{Compilation, Conventions, Diagnostic, Options, SourceMap, Target};
 
 /// Subcommands' argument types that live in their own files.
 mod cli;
 
-const EXIT_ERROR: u8 = 1;
-const EXIT_USAGE: u8 = 2;
-const EXIT_BUG: u8 = 3;
-/// Output directories written at once (they wait on the disk, not a core).
-const WRITERS: usize = 8;
+use umbrac::run::{exit_code, Report, EXIT_ERROR, EXIT_USAGE};
 
 #[derive(Parser, Debug)]
 #[command(name = "umbrac", version, about = "Compiles daslang shaders to GLSL 330, GLSL ES 3.00, WGSL and SPIR-V")]
@@ -82,6 +79,8 @@ enum Command {
     /// Render the shadow scene from compiled shaders.
     #[cfg(feature = "render")]
     Render(cli::render::RenderArgs),
+    /// Serve the Language Server Protocol over stdin/stdout (docs/editor.md).
+    Lsp,
 }
 
 #[derive(Args, Debug)]
@@ -353,6 +352,13 @@ fn main() -> ExitCode {
         Command::Check(args) => check(&args),
         Command::Reflect(args) => reflect(&args),
         Command::Bindgen(args) => bindgen(&args),
+        Command::Lsp => match umbrac::lsp::run_stdio() {
+            Ok(()) => 0,
+            Err(e) => {
+                eprintln!("error: umbrac lsp: {e}");
+                EXIT_ERROR
+            }
+        },
         #[cfg(feature = "render")]
         Command::Render(args) => {
             // A headless run has no login session's runtime directory; the
@@ -381,6 +387,11 @@ impl Reporter {
         Reporter { format, stderr: StandardStream::stderr(color) }
     }
 
+}
+
+/// The run's messages: diagnostics to stderr (or JSON lines to stdout),
+/// `-v` to stderr, the output of `-o -` to stdout.
+impl Report for Reporter {
     fn diagnostic(&mut self, d: &Diagnostic, map: &SourceMap) {
         match self.format {
             MessageFormat::Human => d.emit(map, &mut self.stderr),
@@ -393,32 +404,16 @@ impl Reporter {
         }
     }
 
-    /// A diagnostic that belongs to no source file (I/O errors, usage).
-    fn plain(&mut self, d: &Diagnostic) {
-        self.diagnostic(d, &SourceMap::new());
+    fn usage(&mut self, msg: &str) {
+        usage_error(msg);
     }
 
-    fn compilation(&mut self, c: &Compilation) {
-        for d in &c.diagnostics {
-            self.diagnostic(d, &c.sources);
-        }
-        if c.suppressed_errors > 0 {
-            self.diagnostic(&Diagnostic::error_nowhere(format!("{} more errors not shown", c.suppressed_errors)), &c.sources);
-        }
-        // A failed compilation always says why.
-        if c.result.is_none() && !c.diagnostics.iter().any(|d| d.is_error()) {
-            self.plain(&Diagnostic::bug("compilation failed without a diagnostic", None));
-        }
+    fn stdout(&mut self, bytes: &[u8]) -> Result<(), Diagnostic> {
+        write_stdout(bytes)
     }
-}
 
-fn exit_code(c: &Compilation) -> u8 {
-    if c.diagnostics.iter().any(|d| d.severity == Severity::Bug) || (c.result.is_none() && !c.diagnostics.iter().any(|d| d.is_error())) {
-        EXIT_BUG
-    } else if c.has_errors() {
-        EXIT_ERROR
-    } else {
-        0
+    fn verbose(&mut self, line: &str) {
+        eprintln!("{line}");
     }
 }
 
@@ -506,6 +501,12 @@ fn compile(args: &CompileArgs) -> u8 {
     if to_stdout && (args.variants.is_some() || args.depfile.is_some()) {
         return usage_error("`-o -` prints one output; --variants and --depfile need an output directory");
     }
+    if args.check {
+        return match umbrac::jobs::inputs_of(&args.files) {
+            Ok(inputs) => compile_check(args, targets_of(&args.targets), inputs),
+            Err(e) => usage_error(&e),
+        };
+    }
     if args.watch {
         let mut reporter = Reporter::new(args.common.message_format);
         return match umbrac::watch::watch(|| compile_once(args)) {
@@ -519,357 +520,22 @@ fn compile(args: &CompileArgs) -> u8 {
     compile_once(args).0
 }
 
-/// One `compile`: the exit code, and what `--watch` waits on.
+/// One `compile` run ([`umbrac::run`]): the exit code, and what `--watch` waits on.
 fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
-    let targets = targets_of(&args.targets);
-    let to_stdout = args.out.as_deref() == Some(Path::new("-"));
-    let mut watched = umbrac::watch::Watched { files: args.variants.iter().cloned().collect(), dirs: args.files.iter().filter(|f| f.is_dir()).cloned().collect() };
-    watched.files.extend(args.files.iter().filter(|f| !f.is_dir()).cloned());
-    let inputs = match umbrac::jobs::inputs_of(&args.files) {
-        Ok(i) => i,
-        Err(e) => return (usage_error(&e), watched),
+    let req = umbrac::run::Request {
+        files: &args.files,
+        options: args.common.options(targets_of(&args.targets)),
+        out: args.out.clone(),
+        variants: args.variants.clone(),
+        load_variants: &load_spec,
+        depfile: args.depfile.clone(),
+        watch: args.watch,
+        list_outputs: args.list_outputs,
+        jobs: args.batch.jobs.map(|n| n as usize),
+        cache: args.batch.cache(),
+        verbose: args.batch.verbose,
     };
-    if args.check {
-        return (compile_check(args, targets, inputs), watched);
-    }
-    if to_stdout {
-        if inputs.len() != 1 {
-            return (usage_error("`-o -` prints one output to stdout; give exactly one FILE"), watched);
-        }
-        if targets.is_empty() || targets.contains(&Target::Spirv) {
-            return (usage_error("`-o -` prints one text output; SPIR-V is binary (choose one --target of glsl330, gles300, glsl430, gles310, wgsl)"), watched);
-        }
-    }
-    let mut reporter = Reporter::new(args.common.message_format);
-    let opts = args.common.options(targets);
-    let cache = args.batch.cache();
-    let dir = args.out.clone().unwrap_or_else(|| PathBuf::from("."));
-    // A rerun that would change nothing ends here (src/rerun.rs), before
-    // the variant spec is even expanded: its bytes are among the files
-    // the record holds the hash of.
-    // Without a cache there is no record to read or write: nothing hashed.
-    let run_key = (!to_stdout && !args.list_outputs && cache.is_some()).then(|| run_key(args, &inputs, &opts, &dir));
-    if let (Some(c), Some(key)) = (&cache, &run_key) {
-        if let Some(rec) = umbrac::rerun::Record::load(c, key) {
-            let stamps = umbrac::output::stamps::Stamps::load(c.dir(), &dir);
-            let holds = rec.still_holds(&stamps, args.batch.workers());
-            // The outputs it had to read are stamped: the next rerun
-            // reads none (and a full run below, none of those).
-            stamps.save();
-            if holds {
-                watched.files.extend(rec.files.iter().map(|(p, _)| p.clone()));
-                if args.batch.verbose {
-                    let [jobs, compiled, cached, shared] = rec.counts;
-                    eprintln!(
-                        "umbrac: {jobs} jobs: nothing to do, every file read and every output is as the last run left them (that run: {compiled} compiled, {cached} from the cache, {shared} same as another; cache {})",
-                        c.dir().display()
-                    );
-                }
-                if let Some((path, text)) = &rec.depfile {
-                    if let Err(e) = write_file(path, text.clone()) {
-                        reporter.plain(&Diagnostic::error_nowhere(e));
-                        return (EXIT_ERROR, watched);
-                    }
-                }
-                // The process ends next (see the end of a full run).
-                if !args.watch {
-                    std::mem::forget(rec);
-                }
-                return (0, watched);
-            }
-        }
-    }
-    let variants = match &args.variants {
-        None => Vec::new(),
-        Some(spec) => match load_spec(spec) {
-            Ok(v) => v,
-            Err(e) => {
-                let (map, d) = *e;
-                reporter.diagnostic(&d, &map);
-                return (EXIT_ERROR, watched);
-            }
-        },
-    };
-    // One job needs no count of the machine's cores (cgroup files read).
-    let workers = if inputs.len() == 1 && variants.is_empty() { 1 } else { args.batch.workers() };
-    let settings = umbrac::jobs::Settings { options: &opts, workers, cache: cache.as_ref(), process_ends: !args.watch };
-    // Variants whose directories do not exist yet: each job's outputs go
-    // to a stage as soon as it compiles, and a rename per directory
-    // publishes them (src/output/staged.rs).
-    let mut stage = (!to_stdout && !args.list_outputs && !variants.is_empty()).then(|| umbrac::output::staged::Staged::begin(&dir)).flatten();
-    let to_stage = |_job: usize, rel: &Path, artifacts: &[umbrac::Artifact]| {
-        if let Some(s) = stage.as_ref().filter(|s| s.takes(rel)) {
-            // A failed write spoils the stage; everything is then written
-            // the usual way, which reports why.
-            let _ = s.write(rel, artifacts);
-        }
-    };
-    let ready: Option<&umbrac::jobs::Ready> = if stage.is_some() { Some(&to_stage) } else { None };
-    let batch = umbrac::jobs::Batch::compile(inputs, variants, &settings, ready);
-    let files_read = batch.files_read();
-    watched.files.extend(files_read.iter().cloned());
-    let _trimming = report_stats(&args.batch, &batch, cache.as_ref(), &mut reporter);
-
-    let mut code = 0;
-    for f in batch.failures() {
-        for d in batch.diagnostics_of(&f) {
-            reporter.diagnostic(&d, &f.compilation.sources);
-        }
-        if f.compilation.suppressed_errors > 0 {
-            reporter.plain(&Diagnostic::error_nowhere(format!("{} more errors not shown", f.compilation.suppressed_errors)));
-        }
-        code = code.max(exit_code(f.compilation));
-    }
-    // Warnings of compilations that succeeded (a cache hit had none).
-    for o in batch.outcomes.iter().filter(|o| !o.failed()) {
-        if let Some(c) = o.compilation.as_ref().filter(|c| !c.diagnostics.is_empty()) {
-            reporter.compilation(c);
-        }
-    }
-    // A run is all or nothing, like one compile: with one input failing,
-    // the others' outputs are not written either (README).
-    if code != 0 {
-        return (code, watched);
-    }
-
-    // Which job writes where; an output two jobs would write is an error.
-    // Jobs in directories of their own cannot clash (one job's outputs
-    // have distinct names): then no output is looked up.
-    let mut dirs = std::collections::HashSet::new();
-    let may_clash = !batch.outcomes.iter().enumerate().filter(|(_, o)| o.artifacts.is_some()).all(|(j, _)| dirs.insert(batch.out_dir(j, &dir)));
-    drop(dirs);
-    let mut owner: std::collections::HashMap<PathBuf, &Path> = Default::default();
-    let mut to_write: Vec<(usize, PathBuf)> = Vec::new();
-    for (j, o) in batch.outcomes.iter().enumerate() {
-        let path = &batch.inputs[batch.jobs[j].input].path;
-        let Some(artifacts) = &o.artifacts else { continue };
-        if to_stdout {
-            let outputs: Vec<_> = artifacts.iter().filter(|a| a.target.is_some()).collect();
-            if outputs.len() != 1 {
-                let names: Vec<_> = outputs.iter().map(|a| a.file_name.as_str()).collect();
-                return (
-                    usage_error(&format!(
-                        "`-o -` needs exactly one output, but this compile has {} ({}); narrow it with --target and --entry",
-                        outputs.len(),
-                        names.join(", ")
-                    )),
-                    watched,
-                );
-            }
-            if let Err(e) = write_stdout(&outputs[0].contents) {
-                reporter.plain(&e);
-                code = code.max(EXIT_ERROR);
-            }
-            continue;
-        }
-        let out_dir = batch.out_dir(j, &dir);
-        if !may_clash {
-            to_write.push((j, out_dir));
-            continue;
-        }
-        if let Some((a, other)) = artifacts.iter().find_map(|a| owner.get(&out_dir.join(&a.file_name)).map(|o| (a, *o))) {
-            reporter.plain(&Diagnostic::error_nowhere(format!(
-                "`{}` is an output of both `{}` and `{}`; nothing was written (compile them into different directories)",
-                a.file_name,
-                other.display(),
-                path.display()
-            )));
-            code = code.max(EXIT_ERROR);
-            continue;
-        }
-        owner.extend(artifacts.iter().map(|a| (out_dir.join(&a.file_name), path.as_path())));
-        to_write.push((j, out_dir));
-    }
-    if code != 0 {
-        return (code, watched);
-    }
-    // An output never replaces a file the compile read (`x.wgsl` as the
-    // input of `-o` its own directory): the whole run is refused, nothing
-    // written.
-    if !to_stdout {
-        let writes = to_write.iter().filter_map(|(j, d)| batch.outcomes[*j].artifacts.as_deref().map(|a| (d.as_path(), a)));
-        if let Some((output, input)) = umbrac::jobs::output_replacing_input(writes, &files_read) {
-            reporter.plain(&Diagnostic::error_nowhere(format!(
-                "the output `{}` would replace `{}`, which this compile reads; nothing was written (choose another output directory)",
-                output.display(),
-                input.display()
-            )));
-            return (code.max(EXIT_ERROR), watched);
-        }
-    }
-    let mut inputs_read = files_read;
-    inputs_read.extend(args.variants.iter().cloned());
-    let manifest = (!batch.variants.is_empty()).then(|| umbrac::jobs::variants_artifact(&batch));
-    // Like `gcc -MD`: a depfile only for a build that succeeded. It is
-    // written before the outputs and renamed into place after them, so a
-    // depfile that cannot be written changes nothing.
-    // Every file the run writes: the depfile's targets, and what
-    // `umbrac outputs` prints.
-    let written = || {
-        let mut targets: Vec<PathBuf> = to_write.iter().flat_map(|(j, d)| batch.outcomes[*j].artifacts.iter().flatten().map(move |a| d.join(&a.file_name))).collect();
-        targets.extend(manifest.iter().map(|m| dir.join(&m.file_name)));
-        targets
-    };
-    if args.list_outputs {
-        let mut names: Vec<String> = written().iter().map(|p| umbrac::syntax::normalize(p).display().to_string()).collect();
-        names.sort();
-        names.push(String::new());
-        if let Err(e) = write_stdout(names.join("\n").as_bytes()) {
-            reporter.plain(&e);
-            return (EXIT_ERROR, watched);
-        }
-        return (0, watched);
-    }
-    let mut pending_depfile = None;
-    if let Some(depfile) = &args.depfile {
-        let targets = written();
-        if let Some(p) = umbrac::depfile::unwritable(&targets).or_else(|| umbrac::depfile::unwritable(&inputs_read)) {
-            reporter.plain(&Diagnostic::error_nowhere(format!("`{}` has a line break in its name, which a depfile cannot hold; nothing was written", p.display())));
-            return (EXIT_ERROR, watched);
-        }
-        let text = umbrac::depfile::render(&targets, &inputs_read, relative_base(&args.files).as_deref()).into_bytes();
-        match umbrac::depfile::Pending::write(depfile, &text) {
-            Ok(p) => pending_depfile = Some((p, depfile.clone(), text)),
-            Err(e) => {
-                reporter.plain(&Diagnostic::error_nowhere(e));
-                return (EXIT_ERROR, watched);
-            }
-        }
-    }
-    // The staged directories are published; which of `to_write` they hold.
-    let published: Vec<bool> = match stage.take() {
-        Some(s) if code == 0 => publish_stage(s, &batch, &to_write, &dir),
-        _ => Vec::new(),
-    };
-    let is_published = |k: usize| published.get(k).copied().unwrap_or(false);
-    let in_place = (0..to_write.len()).filter(|&k| !is_published(k)).count();
-    // An unchanged output newer than every file read is left alone; the
-    // cache's stamps say which outputs need not be read back to see that.
-    let newest_input = umbrac::jobs::newest_mtime(&inputs_read);
-    let stamps = match &cache {
-        Some(c) if in_place > 0 || manifest.is_some() => umbrac::output::stamps::Stamps::load(c.dir(), &dir),
-        _ => Default::default(),
-    };
-    // Each directory atomically, several at once (file system calls block
-    // now and then).
-    let results: Vec<Result<(), String>> = if in_place == 0 {
-        vec![Ok(()); to_write.len()]
-    } else {
-        umbrac::batch::parallel_map(
-            to_write.len(),
-            WRITERS,
-            |k| {
-                if is_published(k) {
-                    return Ok(());
-                }
-                let (j, out_dir) = &to_write[k];
-                let o = &batch.outcomes[*j];
-                let artifacts = o.artifacts.as_deref().unwrap_or_default();
-                let known = (o.hashes.len() == artifacts.len()).then_some(umbrac::output::Known { hashes: &o.hashes, stamps: &stamps });
-                umbrac::jobs::write_outputs(out_dir, artifacts, newest_input, known.as_ref()).map_err(|e| e.to_string())
-            },
-            |_, msg| Err(format!("writing panicked: {msg}")),
-        )
-    };
-    let mut written_hashes: Vec<(PathBuf, umbrac::cache::Key)> = Vec::new();
-    for ((j, out_dir), result) in to_write.iter().zip(results) {
-        let path = &batch.inputs[batch.jobs[*j].input].path;
-        match result {
-            Ok(()) => {
-                let o = &batch.outcomes[*j];
-                written_hashes.extend(o.artifacts.iter().flatten().zip(&o.hashes).map(|(a, h)| (out_dir.join(&a.file_name), *h)));
-            }
-            Err(e) => {
-                reporter.plain(&Diagnostic::error_nowhere(format!("{e}; no output of `{}` was changed", path.display())));
-                code = code.max(EXIT_ERROR);
-            }
-        }
-    }
-    if to_stdout {
-        return (code, watched);
-    }
-    if let (Some(manifest), 0) = (&manifest, code) {
-        // Its hash is for the stamps and the run record: only with a cache.
-        let hash: Vec<umbrac::cache::Key> = cache.iter().map(|_| umbrac::cache::Key::of_bytes(&manifest.contents)).collect();
-        let known = cache.as_ref().map(|_| umbrac::output::Known { hashes: &hash, stamps: &stamps });
-        match umbrac::jobs::write_outputs(&dir, std::slice::from_ref(manifest), newest_input, known.as_ref()) {
-            Ok(()) => {
-                written_hashes.extend(hash.first().map(|h| (dir.join(&manifest.file_name), *h)));
-            }
-            Err(e) => {
-                reporter.plain(&Diagnostic::error_nowhere(e.to_string()));
-                code = code.max(EXIT_ERROR);
-            }
-        }
-    }
-    stamps.save();
-    // The depfile goes into place once every output is written (dropped
-    // otherwise: its temporary is removed and the old one stays).
-    let mut depfile_text = None;
-    if let (Some((pending, depfile, text)), 0) = (pending_depfile, code) {
-        match pending.commit() {
-            Ok(()) => depfile_text = Some((depfile, text)),
-            Err(e) => {
-                reporter.plain(&Diagnostic::error_nowhere(e));
-                code = code.max(EXIT_ERROR);
-            }
-        }
-    }
-    // What the next run needs to see that it would change nothing. A run
-    // in which a unit said something (a warning) records nothing: a rerun
-    // that did nothing would not say it again (the cache stores only
-    // compilations without a diagnostic, for the same reason).
-    let said_something = batch.outcomes.iter().any(|o| o.compilation.as_ref().is_some_and(|c| !c.diagnostics.is_empty()));
-    if let (0, false, Some(c), Some(key)) = (code, said_something, &cache, &run_key) {
-        // Each file's hash as the batch made it from the bytes it read
-        // (each byte hashed once); the rest (the variant spec) read now.
-        let known = batch.read_hashes();
-        let mut files = Vec::new();
-        for f in inputs_read.iter() {
-            match known.get(f).copied().map(Ok).unwrap_or_else(|| std::fs::read(f).map(|b| umbrac::cache::Key::of_bytes(&b))) {
-                Ok(hash) => files.push((f.clone(), hash)),
-                Err(_) => return (code, watched),
-            }
-        }
-        let mut probed: Vec<PathBuf> = batch.outcomes.iter().flat_map(|o| o.probed.iter().cloned()).collect();
-        probed.sort();
-        probed.dedup();
-        let s = &batch.stats;
-        let counts = [batch.jobs.len() as u64, s.compiled as u64, s.cached as u64, s.shared as u64];
-        umbrac::rerun::Record { files, probed, outputs: written_hashes, depfile: depfile_text, counts }.save(c, key);
-    }
-    drop(_trimming);
-    // The process ends next and its memory goes back to the system at
-    // once: freeing thousands of outputs one by one first took another
-    // millisecond of a cold run. `--watch` runs again, and frees.
-    if !args.watch {
-        std::mem::forget(batch);
-    }
-    (code, watched)
-}
-
-/// Completes a stage with what it takes and does not hold yet (jobs that
-/// share another's outputs) and publishes it: for each of `to_write`,
-/// whether it was published. Empty where that could not be done: the
-/// caller then writes everything the usual way, and the stage is gone.
-fn publish_stage(stage: umbrac::output::staged::Staged, batch: &umbrac::jobs::Batch, to_write: &[(usize, PathBuf)], dir: &Path) -> Vec<bool> {
-    let mut taken = Vec::with_capacity(to_write.len());
-    for (j, out_dir) in to_write {
-        let Ok(rel) = out_dir.strip_prefix(dir) else { return Vec::new() };
-        let takes = stage.takes(rel);
-        taken.push(takes);
-        if !takes || stage.holds(rel) {
-            continue;
-        }
-        let Some(artifacts) = &batch.outcomes[*j].artifacts else { return Vec::new() };
-        if stage.write(rel, artifacts).is_err() {
-            return Vec::new();
-        }
-    }
-    match stage.publish() {
-        Ok(()) => taken,
-        Err(_) => Vec::new(),
-    }
+    umbrac::run::compile_once(req, &mut Reporter::new(args.common.message_format))
 }
 
 /// What a FILE argument's outputs record of it: its file name
@@ -893,49 +559,6 @@ fn load_spec(path: &Path) -> Result<Vec<umbrac::variants::Variant>, Box<(SourceM
     spec.expand().map_err(|e| Box::new((SourceMap::new(), Diagnostic::error_nowhere(format!("`{}`: {e}", path.display())))))
 }
 
-/// Says what `-v` asks (what was compiled, shared and read from the
-/// cache) and any cache store error. A run that stored entries trims the
-/// cache, on another thread, until the result is dropped.
-fn report_stats(args: &BatchArgs, batch: &umbrac::jobs::Batch, cache: Option<&umbrac::cache::Cache>, reporter: &mut Reporter) -> Option<umbrac::cache::Trimming> {
-    let s = &batch.stats;
-    if let Some(e) = &s.store_error {
-        let mut d = Diagnostic::error_nowhere(e.clone());
-        d.severity = Severity::Warning;
-        reporter.plain(&d);
-    }
-    if args.verbose {
-        let where_ = cache.map_or("no cache".to_string(), |c| format!("cache {}", c.dir().display()));
-        eprintln!("umbrac: {} jobs: {} compiled, {} from the cache, {} same as another ({where_}, {} stored)", batch.jobs.len(), s.compiled, s.cached, s.shared, s.stored);
-    }
-    cache.filter(|_| s.stored > 0).map(umbrac::cache::Cache::trim_in_background)
-}
-
-/// The key of a compile command's whole configuration (src/rerun.rs):
-/// where it runs, what it reads, how and where it writes.
-/// The spec's variants are not in it: the record holds the hash of the
-/// spec's bytes, which are all they depend on.
-fn run_key(args: &CompileArgs, inputs: &[umbrac::jobs::Input], opts: &umbrac::Options, dir: &Path) -> umbrac::cache::Key {
-    let cwd = std::env::current_dir().unwrap_or_default();
-    let parts = [
-        format!("{cwd:?}"),
-        format!("{inputs:?}"),
-        format!("{:?}", args.variants),
-        format!("{opts:?}"),
-        format!("{dir:?}"),
-        format!("{:?}", args.depfile),
-    ];
-    let bytes: Vec<&[u8]> = parts.iter().map(|p| p.as_bytes()).collect();
-    umbrac::rerun::key(&bytes)
-}
-
-/// Writes one file atomically.
-fn write_file(path: &Path, contents: Vec<u8>) -> Result<(), String> {
-    let dir = path.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
-    let name = path.file_name().map(|n| n.to_string_lossy().into_owned()).ok_or_else(|| format!("`{}` is not a file name", path.display()))?;
-    let a = umbrac::Artifact { file_name: name, target: None, entry: None, contents };
-    umbrac::output::write_artifacts(dir, &[a]).map_err(|e| e.to_string())
-}
-
 fn check(args: &CheckArgs) -> u8 {
     let opts = args.common.options(Vec::new());
     let inputs = match umbrac::jobs::inputs_of(&args.files) {
@@ -946,7 +569,7 @@ fn check(args: &CheckArgs) -> u8 {
     let settings = umbrac::jobs::Settings { options: &opts, workers: args.batch.workers(), cache: cache.as_ref(), process_ends: false };
     let batch = umbrac::jobs::Batch::compile(inputs, Vec::new(), &settings, None);
     let mut reporter = Reporter::new(args.common.message_format);
-    let _trimming = report_stats(&args.batch, &batch, cache.as_ref(), &mut reporter);
+    let _trimming = umbrac::run::report_stats(args.batch.verbose, &batch, cache.as_ref(), &mut reporter);
     let mut code = 0;
     for f in batch.failures() {
         reporter.compilation(f.compilation);
@@ -982,7 +605,7 @@ fn compile_check(args: &CompileArgs, targets: Vec<Target>, inputs: Vec<umbrac::j
     let settings = umbrac::jobs::Settings { options: &opts, workers: args.batch.workers(), cache: cache.as_ref(), process_ends: false };
     let batch = umbrac::jobs::Batch::compile(inputs, Vec::new(), &settings, None);
     let mut reporter = Reporter::new(args.common.message_format);
-    let _trimming = report_stats(&args.batch, &batch, cache.as_ref(), &mut reporter);
+    let _trimming = umbrac::run::report_stats(args.batch.verbose, &batch, cache.as_ref(), &mut reporter);
     let mut code = 0;
     for f in batch.failures() {
         reporter.compilation(f.compilation);
@@ -1058,10 +681,4 @@ fn bindgen(args: &BindgenArgs) -> u8 {
             }
         }
     }
-}
-
-/// The working directory, when every input was named relative to it: the
-/// depfile's paths are then relative too (docs/build.md, "Depfiles").
-fn relative_base(files: &[PathBuf]) -> Option<PathBuf> {
-    files.iter().all(|f| f.is_relative()).then(std::env::current_dir).and_then(Result::ok)
 }

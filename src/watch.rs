@@ -23,13 +23,7 @@ pub const QUIET: Duration = Duration::from_millis(25);
 /// The longest a step waits for quiet once a change came.
 pub const MAX_WAIT: Duration = Duration::from_millis(500);
 
-/// What a step read: files, and directories whose `.das` files (at any
-/// depth) count too (a new program in a directory argument).
-#[derive(Clone, Debug, Default)]
-pub struct Watched {
-    pub files: Vec<PathBuf>,
-    pub dirs: Vec<PathBuf>,
-}
+pub use crate::run::Watched;
 
 /// Runs `step` now and after every change to what its last run read, until
 /// the process is interrupted. `step` returns its exit code (printed when

@@ -23,6 +23,7 @@ pub mod modules;
 pub mod parser;
 pub mod preprocess;
 pub mod token;
+pub mod overlay;
 
 use std::path::{Path, PathBuf};
 
@@ -97,6 +98,13 @@ pub(crate) enum ReadError {
 /// grows while it is read cannot exhaust memory either.
 pub(crate) fn read_bounded(path: &Path, limit: usize) -> Result<Vec<u8>, ReadError> {
     use std::io::Read;
+    // An editor's unsaved text stands for the file (`crate::workspace`).
+    if let Some(text) = overlay::text_of(path) {
+        if text.len() > limit {
+            return Err(ReadError::TooLarge(text.len() as u64));
+        }
+        return Ok(text.into_bytes());
+    }
     let meta = std::fs::metadata(path).map_err(ReadError::Io)?;
     if !meta.is_file() {
         return Err(ReadError::NotAFile(file_kind(&meta)));

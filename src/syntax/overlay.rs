@@ -1,0 +1,77 @@
+//! Texts that stand for files on disk while a compilation runs: an
+//! editor's unsaved documents (`crate::workspace`). Every read of a source
+//! file (the root, `#include`s, `require`d modules) goes through
+//! [`super::read_bounded`], which asks here first.
+//!
+//! The overlay is per thread, so that compilations on other threads (tests,
+//! a build's workers) never see it; [`with`] installs it around one
+//! compilation, which runs on the calling thread.
+
+use std::cell::RefCell;
+use std::collections::HashMap;
+use std::path::{Component, Path, PathBuf};
+use std::sync::Arc;
+
+/// Texts by normalized absolute path ([`normalize`]).
+pub type Texts = Arc<HashMap<PathBuf, String>>;
+
+thread_local! {
+    static CURRENT: RefCell<Option<Texts>> = const { RefCell::new(None) };
+}
+
+/// Runs `f` with `texts` standing for the files they name, on this thread.
+pub fn with<T>(texts: Texts, f: impl FnOnce() -> T) -> T {
+    struct Reset(Option<Texts>);
+    impl Drop for Reset {
+        fn drop(&mut self) {
+            CURRENT.with(|c| *c.borrow_mut() = self.0.take());
+        }
+    }
+    let _reset = Reset(CURRENT.with(|c| c.borrow_mut().replace(texts)));
+    f()
+}
+
+/// The text standing for `path`, if any.
+pub(crate) fn text_of(path: &Path) -> Option<String> {
+    CURRENT.with(|c| {
+        let c = c.borrow();
+        let texts = c.as_ref()?;
+        texts.get(&normalize(path)).cloned()
+    })
+}
+
+/// `path` made absolute (against the working directory) with `.` and `..`
+/// resolved lexically: an include found as `dir/../inc/a.das` is the open
+/// document `inc/a.das`. Symbolic links are not followed (the file may not
+/// exist on disk).
+pub fn normalize(path: &Path) -> PathBuf {
+    let abs = if path.is_absolute() { path.to_path_buf() } else { std::env::current_dir().unwrap_or_default().join(path) };
+    let mut out = PathBuf::new();
+    for c in abs.components() {
+        match c {
+            Component::CurDir => {}
+            Component::ParentDir => {
+                out.pop();
+            }
+            other => out.push(other.as_os_str()),
+        }
+    }
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn normalizes_dots_and_restores_the_previous_overlay() {
+        assert_eq!(normalize(Path::new("/a/./b/../c.das")), PathBuf::from("/a/c.das"));
+        let texts: Texts = Arc::new([(PathBuf::from("/x/y.das"), "hi".to_string())].into_iter().collect());
+        with(texts, || {
+            assert_eq!(text_of(Path::new("/x/z/../y.das")).as_deref(), Some("hi"));
+            with(Arc::default(), || assert_eq!(text_of(Path::new("/x/y.das")), None));
+            assert_eq!(text_of(Path::new("/x/y.das")).as_deref(), Some("hi"));
+        });
+        assert_eq!(text_of(Path::new("/x/y.das")), None);
+    }
+}
