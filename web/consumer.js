@@ -170,6 +170,8 @@ async function main() {
     gl.bindTexture(gl.TEXTURE_2D, tex);
     const [internal] = formatOf(gl, t.format);
     gl.texStorage2D(gl.TEXTURE_2D, 1, internal, t.width, t.height);
+    // A texture the host uploads (rgba8, memory row 0 first).
+    if (t.contents) gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, t.width, t.height, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(t.contents));
     gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
     gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
     return tex;

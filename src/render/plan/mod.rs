@@ -13,6 +13,7 @@
 pub mod checks;
 pub mod compute;
 pub mod tutorial;
+pub mod vk_shadow;
 mod value;
 
 pub use value::{Scalar, Shape, Value, Values};
@@ -57,6 +58,9 @@ pub struct Target {
     pub width: u32,
     pub height: u32,
     pub format: Format,
+    /// Texels it starts with (`Rgba8` rows, top row first): a texture the
+    /// host uploads, such as the stand-in images of [`vk_shadow`].
+    pub contents: Option<Vec<u8>>,
 }
 
 /// Which faces are culled.
@@ -177,7 +181,10 @@ pub struct Pass {
     /// Names it in messages (`shadow`, `main`).
     pub name: String,
     pub vertex: String,
-    pub fragment: String,
+    /// `None`: a vertex-only pass (depth alone, no fragment stage), as
+    /// dasVulkan's shadow pipeline is. GL, which links no program without
+    /// a fragment shader on ES, gets an empty one.
+    pub fragment: Option<String>,
     pub color: Option<Attachment<[f64; 4]>>,
     /// Depth test LESS with writes, against this attachment.
     pub depth: Option<Attachment<f32>>,
@@ -252,7 +259,14 @@ impl FramePlan {
 
     /// Adds a target and returns its id.
     pub fn add_target(&mut self, name: &str, width: u32, height: u32, format: Format) -> TargetId {
-        self.targets.push(Target { name: name.to_string(), width, height, format });
+        self.targets.push(Target { name: name.to_string(), width, height, format, contents: None });
+        TargetId(self.targets.len() - 1)
+    }
+
+    /// Adds an `Rgba8` texture holding `texels` (top row first).
+    pub fn add_texture(&mut self, name: &str, width: u32, height: u32, texels: Vec<u8>) -> TargetId {
+        debug_assert_eq!(texels.len(), (width * height * 4) as usize);
+        self.targets.push(Target { name: name.to_string(), width, height, format: Format::Rgba8, contents: Some(texels) });
         TargetId(self.targets.len() - 1)
     }
 

@@ -126,7 +126,7 @@ struct Linked {
 /// A program ready to run plans on one GL context.
 pub struct GlPrepared {
     set: ShaderSet,
-    linked: RefCell<HashMap<(String, String), Rc<Linked>>>,
+    linked: RefCell<HashMap<(String, Option<String>), Rc<Linked>>>,
 }
 
 impl GlExecutor {
@@ -315,9 +315,9 @@ impl GlExecutor {
         }
         let set = &prepared.set;
         let (vs_file, vs_text) = set.glsl(&pass.vertex).map_err(ExecError::Program)?;
-        let (fs_file, fs_text) = set.glsl(&pass.fragment).map_err(ExecError::Program)?;
+        let (fs_file, fs_text) = set.glsl_fragment(pass.fragment.as_deref(), vs_text).map_err(ExecError::Program)?;
         let vs = self.compile(glow::VERTEX_SHADER, vs_file, vs_text)?;
-        let fs = self.compile(glow::FRAGMENT_SHADER, fs_file, fs_text)?;
+        let fs = self.compile(glow::FRAGMENT_SHADER, &fs_file, &fs_text)?;
         // With a manifest, what the program binds is known before linking:
         // attributes and colour outputs are bound to its locations then.
         let from_manifest = match &set.reflection {

@@ -69,7 +69,7 @@ pub struct WgpuExecutor {
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 struct PipelineKey {
     vertex: String,
-    fragment: String,
+    fragment: Option<String>,
     color: Option<Format>,
     depth: Option<Format>,
     cull: Cull,
@@ -260,17 +260,17 @@ impl WgpuExecutor {
     }
 
     /// The pipeline of a pass shape, made on first use.
-    fn pipeline(&self, program: &WgpuProgram, key: &PipelineKey, portable: bool, pass_name: &str) -> Result<Arc<Pipeline>, ExecError> {
+    fn pipeline(&self, program: &WgpuProgram, key: &PipelineKey, mirrored: bool, pass_name: &str) -> Result<Arc<Pipeline>, ExecError> {
         if let Some(p) = program.pipelines.lock().unwrap_or_else(|p| p.into_inner()).get(key) {
             return Ok(p.clone());
         }
-        let made = self.scoped(|| self.make_pipeline(program, key, portable)).map_err(|log| ExecError::Link { pass: pass_name.into(), log })?;
+        let made = self.scoped(|| self.make_pipeline(program, key, mirrored)).map_err(|log| ExecError::Link { pass: pass_name.into(), log })?;
         let made = Arc::new(made);
         program.pipelines.lock().unwrap_or_else(|p| p.into_inner()).insert(key.clone(), made.clone());
         Ok(made)
     }
 
-    fn make_pipeline(&self, program: &WgpuProgram, key: &PipelineKey, portable: bool) -> Pipeline {
+    fn make_pipeline(&self, program: &WgpuProgram, key: &PipelineKey, mirrored: bool) -> Pipeline {
         let layouts: BTreeMap<u32, wgpu::BindGroupLayout> = key
             .groups
             .iter()
@@ -328,8 +328,8 @@ impl WgpuExecutor {
             vertex: wgpu::VertexState { module: module(&key.vertex), entry_point: Some(&key.vertex), compilation_options: Default::default(), buffers },
             primitive: wgpu::PrimitiveState {
                 topology: wgpu::PrimitiveTopology::TriangleList,
-                // Portable conventions mirror y: GL's counter-clockwise fronts arrive clockwise.
-                front_face: if portable { wgpu::FrontFace::Cw } else { wgpu::FrontFace::Ccw },
+                // A mirrored y (portable GL-dialect code): GL's counter-clockwise fronts arrive clockwise.
+                front_face: if mirrored { wgpu::FrontFace::Cw } else { wgpu::FrontFace::Ccw },
                 cull_mode: match key.cull {
                     Cull::None => None,
                     Cull::Front => Some(wgpu::Face::Front),
@@ -345,9 +345,9 @@ impl WgpuExecutor {
                 bias: if key.depth_bias { wgpu::DepthBiasState { constant: 4, slope_scale: 2.0, clamp: 0.0 } } else { Default::default() },
             }),
             multisample: Default::default(),
-            fragment: Some(wgpu::FragmentState {
-                module: module(&key.fragment),
-                entry_point: Some(&key.fragment),
+            fragment: key.fragment.as_ref().map(|f| wgpu::FragmentState {
+                module: module(f),
+                entry_point: Some(f),
                 compilation_options: Default::default(),
                 targets: color.as_ref().map_or(&[], |c| c.as_slice()),
             }),
@@ -434,7 +434,7 @@ impl Executor for WgpuExecutor {
         };
         for (pass, pf) in plan.passes.iter().zip(&fit.passes).filter(|(p, _)| !p.draws.is_empty()) {
             let key = self.key(&program, plan, pass, pf)?;
-            self.pipeline(&program, &key, fit.portable, &pass.name)?;
+            self.pipeline(&program, &key, fit.mirrored_on_webgpu(), &pass.name)?;
         }
         Ok(program)
     }
