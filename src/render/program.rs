@@ -124,7 +124,7 @@ impl ShaderSet {
             Some(f) => self.glsl(f).map(|(file, text)| (file.to_string(), text.to_string())),
             None => {
                 let version = vertex_text.lines().find(|l| l.starts_with("#version")).unwrap_or("#version 330 core");
-                Ok(("(empty fragment stage)".into(), format!("{version}\nvoid main() {{}}\n")))
+                Ok(("umbrac_empty_fragment.frag".into(), format!("{version}\nvoid main() {{}}\n")))
             }
         }
     }
