@@ -38,3 +38,5 @@ mod uniforms;
 mod visible_fit;
 #[cfg(all(feature = "render", feature = "gl"))]
 mod vk_shadow;
+#[cfg(all(feature = "render", feature = "gl"))]
+mod vk_tutorials;

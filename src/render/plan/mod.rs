@@ -14,6 +14,7 @@ pub mod checks;
 pub mod compute;
 pub mod tutorial;
 pub mod vk_shadow;
+pub mod vk_tutorials;
 mod value;
 
 pub use value::{Scalar, Shape, Value, Values};
