@@ -113,6 +113,7 @@ pub struct Attachment<C> {
 /// A vertex attribute's format in a mesh.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum VertexFormat {
+    Float32x2,
     Float32x3,
 }
 
@@ -120,12 +121,14 @@ impl VertexFormat {
     /// wgpu's (and the manifest's `vertex_format`) name.
     pub fn name(self) -> &'static str {
         match self {
+            VertexFormat::Float32x2 => "Float32x2",
             VertexFormat::Float32x3 => "Float32x3",
         }
     }
 
     pub fn components(self) -> u32 {
         match self {
+            VertexFormat::Float32x2 => 2,
             VertexFormat::Float32x3 => 3,
         }
     }

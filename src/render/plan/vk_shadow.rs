@@ -21,11 +21,10 @@ pub const MAIN_FS: &str = "main_frag_spv";
 const TEXTURE_SIZE: u32 = 64;
 
 /// GL clip space to a Vulkan host's: z' = (z + w) / 2 (depth in [0, 1]).
-/// Equals glam's `Mat4::orthographic_rh` / `perspective_rh` applied to the
-/// same box where the GL tutorial uses the `_gl` forms.
 const VK_DEPTH: Mat4 = Mat4::from_cols(Vec4::X, Vec4::Y, Vec4::new(0.0, 0.0, 0.5, 0.0), Vec4::new(0.0, 0.0, 0.5, 1.0));
 /// The camera's projection is y-flipped as well, so that Vulkan's y-down
-/// framebuffer shows the scene upright.
+/// framebuffer shows the scene upright: with [`VK_DEPTH`], glam's
+/// `camera::rh::proj::vulkan::perspective` (tested).
 const VK_FLIP_Y: Mat4 = Mat4::from_cols(Vec4::X, Vec4::NEG_Y, Vec4::Z, Vec4::W);
 
 /// The stand-in for `name`'s brick image: a 64 x 64 running-bond brick
@@ -145,6 +144,9 @@ mod tests {
         let up = VK_FLIP_Y * VK_DEPTH * f.proj * f.view * glam::Vec4::new(0.0, 3.0, 0.0, 1.0);
         let up_gl = f.proj * f.view * glam::Vec4::new(0.0, 3.0, 0.0, 1.0);
         assert!(up.y * up_gl.y < 0.0, "y flipped");
+        // What glam's Vulkan-convention helpers give for the same boxes.
+        let vk_proj = glam::camera::rh::proj::vulkan::perspective(50f32.to_radians(), 8.0 / 6.0, 0.1, 50.0);
+        assert!((VK_FLIP_Y * VK_DEPTH * f.proj).abs_diff_eq(vk_proj, 1e-5), "{vk_proj} vs {}", VK_FLIP_Y * VK_DEPTH * f.proj);
         let plan = plan(&p);
         assert_eq!(plan.passes[0].fragment, None);
         assert_eq!(plan.passes[1].textures.len(), 5);

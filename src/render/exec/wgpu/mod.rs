@@ -33,6 +33,7 @@ fn texture_format(f: Format) -> wgpu::TextureFormat {
 
 fn vertex_format(f: VertexFormat) -> wgpu::VertexFormat {
     match f {
+        VertexFormat::Float32x2 => wgpu::VertexFormat::Float32x2,
         VertexFormat::Float32x3 => wgpu::VertexFormat::Float32x3,
     }
 }
