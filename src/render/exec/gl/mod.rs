@@ -123,10 +123,13 @@ struct Linked {
     vaos: RefCell<Vec<(usize, Obj<glow::VertexArray>)>>,
 }
 
+/// A pass's vertex entry point and its fragment one (none: vertex-only).
+type StagePair = (String, Option<String>);
+
 /// A program ready to run plans on one GL context.
 pub struct GlPrepared {
     set: ShaderSet,
-    linked: RefCell<HashMap<(String, Option<String>), Rc<Linked>>>,
+    linked: RefCell<HashMap<StagePair, Rc<Linked>>>,
 }
 
 impl GlExecutor {
