@@ -211,7 +211,8 @@ async function main() {
   const ubo = (point) => (ubos[point] ??= gl.createBuffer());
 
   gl.disable(gl.BLEND);
-  gl.frontFace(gl.CCW);
+  // Vulkan-dialect code is upside down to GL: its counter-clockwise fronts arrive clockwise.
+  gl.frontFace(plan.top_first ? gl.CW : gl.CCW);
   gl.depthFunc(gl.LESS);
   gl.depthMask(true);
   for (const pass of plan.passes) {

@@ -76,11 +76,15 @@ fn triangle_draws_on_every_consumer() {
 #[test]
 fn cube_and_msaa_draw_on_every_consumer() {
     use umbrac::render::plan::vk_tutorials::{cube, cube_covers, CUBE_FS, CUBE_VS, MSAA_FS, MSAA_VS};
+    use umbrac::render::plan::Cull;
     let (w, h) = (64u32, 48u32);
     for (file, vs, fs) in [("04_cube/cube_tut_shaders.das", CUBE_VS, CUBE_FS), ("09_msaa/msaa_tut_shaders.das", MSAA_VS, MSAA_FS)] {
         let Some(programs) = programs(file) else { return };
         for t in [0.0f32, 2.5] {
-            let plan = cube(vs, fs, t, w, h);
+            let plan = cube(vs, fs, t, w, h, Cull::None);
+            // Culling back faces must remove only hidden ones: the same
+            // picture away from the edges (the wrong front face: ~24 % differ).
+            let culled = cube(vs, fs, t, w, h, Cull::Back);
             let edges: Vec<bool> = (0..h).flat_map(|y| (0..w).map(move |x| (x, y))).map(|(x, y)| cube_covers(t, w, h, x, y, 1.0).is_none()).collect();
             let mut first: Option<(Consumer, image::RgbaImage)> = None;
             for c in [Consumer::VulkanWgsl, Consumer::VulkanSpirv, Consumer::WgpuGl, Consumer::Gl330, Consumer::Gles300, Consumer::WebGl2] {
@@ -95,6 +99,9 @@ fn cube_and_msaa_draw_on_every_consumer() {
                     Err(e) if c == Consumer::VulkanSpirv && e.to_string().contains("no gaps") => continue,
                     Err(e) => panic!("{file} on {} t = {t}: {e}", c.name()),
                 };
+                let back = consumers::run(c, set, &culled).unwrap_or_else(|e| panic!("{file} on {} culled: {e}", c.name())).0.into_image();
+                let cull_diff = umbrac::render::image_ops::diff_masked(&image, &back, 8, Some(&edges));
+                assert!(cull_diff.over == 0, "{vs} on {} t = {t}: culling back faces changed the picture (front faces the wrong way): {cull_diff}", c.name());
                 let out = gpu::artifacts_dir("vk-tutorial-tests").join(format!("{vs}_{}_{t}.png", c.name()));
                 umbrac::render::image_ops::save_png(&image, &out).unwrap();
                 let (mut covered, mut empty, mut wrong) = (0, 0, Vec::new());

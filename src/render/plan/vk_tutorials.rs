@@ -125,8 +125,10 @@ pub fn cube_matrices(t: f32, width: u32, height: u32) -> (Mat4, Mat4, Vec3, Mat4
 }
 
 /// 04 cube (`vs`/`fs` = [`CUBE_VS`]/[`CUBE_FS`]) or 09 MSAA's pair at
-/// time `t`, `width` x `height`, with depth.
-pub fn cube(vs: &str, fs: &str, t: f32, width: u32, height: u32) -> FramePlan {
+/// time `t`, `width` x `height`, with depth, culling `cull` (the mesh's
+/// faces are counter-clockwise seen from outside, as a Vulkan host's
+/// `FRONT_FACE_COUNTER_CLOCKWISE` with a y-down projection expects).
+pub fn cube(vs: &str, fs: &str, t: f32, width: u32, height: u32, cull: Cull) -> FramePlan {
     let (proj, view, eye, model) = cube_matrices(t, width, height);
     let mut plan = FramePlan {
         scene: "dasVulkan's cube".into(),
@@ -145,7 +147,7 @@ pub fn cube(vs: &str, fs: &str, t: f32, width: u32, height: u32) -> FramePlan {
         fragment: Some(fs.into()),
         color: Some(Attachment { target: color, clear: CLEAR }),
         depth: Some(Attachment { target: depth, clear: 1.0 }),
-        cull: Cull::None,
+        cull,
         depth_bias: false,
         textures: vec![TextureInput { sampler: "tex".into(), target: tex, sampling: Sampling { compare: false, linear: true, border: false } }],
         values: Values::new()

@@ -31,11 +31,14 @@ fn texel_format(f: Format) -> (u32, u32, u32, usize) {
 impl GlExecutor {
     pub(super) fn frame(&self, prepared: &GlPrepared, plan: &FramePlan) -> Result<Readback, ExecError> {
         let textures = self.targets(plan)?;
+        // Vulkan-dialect code keeps its picture's top in row 0 on GL too:
+        // GL sees it upside down, its counter-clockwise fronts clockwise.
+        let top_first = prepared.set.reflection.as_ref().is_some_and(|r| bind::is_vulkan(r, plan));
         let gl = self.ctx.current()?;
         // SAFETY: state calls on the current context.
         unsafe {
             gl.disable(glow::BLEND);
-            gl.front_face(glow::CCW);
+            gl.front_face(if top_first { glow::CW } else { glow::CCW });
             gl.depth_func(glow::LESS);
             gl.depth_mask(true);
         }
@@ -47,8 +50,6 @@ impl GlExecutor {
             gl.disable(glow::POLYGON_OFFSET_FILL);
             gl.disable(glow::CULL_FACE);
         }
-        // Vulkan-dialect code keeps its picture's top in row 0 on GL too.
-        let top_first = prepared.set.reflection.as_ref().is_some_and(|r| bind::is_vulkan(r, plan));
         self.read_back(plan, &textures, top_first)
     }
 
