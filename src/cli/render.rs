@@ -66,7 +66,7 @@ pub struct RenderArgs {
     pub view: View,
     /// daslang's checkout, where a .das program's `require`d modules are
     /// found (as `umbrac compile --daslang-root`).
-    #[arg(long, value_name = "DIR")]
+    #[arg(long, value_name = "DIR", value_parser = umbrac::syntax::modules::parse_daslang_root)]
     pub daslang_root: Option<PathBuf>,
     /// Reflection JSON for a .wgsl or .spv FILE (default: the hand port's binding model).
     #[arg(long, value_name = "JSON")]
