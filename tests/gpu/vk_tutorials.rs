@@ -66,26 +66,32 @@ fn triangle_draws_on_every_consumer() {
     }
 }
 
-/// 04 (cube) and 09 (MSAA, one sample here): the textured cube from a
-/// vertex buffer with `a_uv` (`Float32x2`), the camera block and the
-/// push-constant model matrix, at two times. Every pixel the host's
-/// projection puts inside a face (by a pixel) must be drawn, every pixel
-/// outside the cube by as much must be the clear colour; away from the
-/// edges (where rasterisation rules decide) the consumers agree with the
-/// first within 8/255 on at least 99.8 % of the pixels.
+/// 04 (cube), 05 (instancing: nine cubes in one instanced draw, offset,
+/// colour and phase per instance) and 09 (MSAA, one sample here), with
+/// their camera block (and, 04 and 09, the push-constant model matrix and
+/// a stand-in texture), at two times. Every pixel the host's math puts
+/// inside a face (by a pixel) must be drawn, every pixel outside every
+/// cube by as much must be the clear colour; drawn with back faces culled
+/// the picture must not change away from the edges (the front-face rule);
+/// there the consumers agree with the first within 8/255 on at least
+/// 99.8 % of the pixels.
 #[test]
-fn cube_and_msaa_draw_on_every_consumer() {
-    use umbrac::render::plan::vk_tutorials::{cube, cube_covers, CUBE_FS, CUBE_VS, MSAA_FS, MSAA_VS};
-    use umbrac::render::plan::Cull;
+fn cube_instancing_and_msaa_draw_on_every_consumer() {
+    use umbrac::render::plan::vk_tutorials::{self as vt, cube, cube_covers, instancing, instancing_covers};
+    use umbrac::render::plan::{Cull, FramePlan};
+    type Case = (&'static str, &'static str, Box<dyn Fn(f32, u32, u32, Cull) -> FramePlan>, fn(f32, u32, u32, u32, u32, f32) -> Option<bool>);
+    let cases: Vec<Case> = vec![
+        ("04_cube/cube_tut_shaders.das", vt::CUBE_VS, Box::new(|t, w, h, c| cube(vt::CUBE_VS, vt::CUBE_FS, t, w, h, c)), cube_covers),
+        ("05_instancing/instancing_tut_shaders.das", vt::INSTANCING_VS, Box::new(instancing), instancing_covers),
+        ("09_msaa/msaa_tut_shaders.das", vt::MSAA_VS, Box::new(|t, w, h, c| cube(vt::MSAA_VS, vt::MSAA_FS, t, w, h, c)), cube_covers),
+    ];
     let (w, h) = (64u32, 48u32);
-    for (file, vs, fs) in [("04_cube/cube_tut_shaders.das", CUBE_VS, CUBE_FS), ("09_msaa/msaa_tut_shaders.das", MSAA_VS, MSAA_FS)] {
+    for (file, vs, make, covers) in &cases {
         let Some(programs) = programs(file) else { return };
         for t in [0.0f32, 2.5] {
-            let plan = cube(vs, fs, t, w, h, Cull::None);
-            // Culling back faces must remove only hidden ones: the same
-            // picture away from the edges (the wrong front face: ~24 % differ).
-            let culled = cube(vs, fs, t, w, h, Cull::Back);
-            let edges: Vec<bool> = (0..h).flat_map(|y| (0..w).map(move |x| (x, y))).map(|(x, y)| cube_covers(t, w, h, x, y, 1.0).is_none()).collect();
+            let plan = make(t, w, h, Cull::None);
+            let culled = make(t, w, h, Cull::Back);
+            let edges: Vec<bool> = (0..h).flat_map(|y| (0..w).map(move |x| (x, y))).map(|(x, y)| covers(t, w, h, x, y, 1.0).is_none()).collect();
             let mut first: Option<(Consumer, image::RgbaImage)> = None;
             for c in [Consumer::VulkanWgsl, Consumer::VulkanSpirv, Consumer::WgpuGl, Consumer::Gl330, Consumer::Gles300, Consumer::WebGl2] {
                 let set = programs.for_consumer(c).expect("a drawing consumer has a program");
@@ -106,7 +112,7 @@ fn cube_and_msaa_draw_on_every_consumer() {
                 umbrac::render::image_ops::save_png(&image, &out).unwrap();
                 let (mut covered, mut empty, mut wrong) = (0, 0, Vec::new());
                 for (x, y, p) in image.enumerate_pixels() {
-                    let Some(expect) = cube_covers(t, w, h, x, y, 1.0) else { continue };
+                    let Some(expect) = covers(t, w, h, x, y, 1.0) else { continue };
                     let drawn = p[0] > 2 || p[1] > 2 || p[2] > 2;
                     if expect {
                         covered += 1;

@@ -141,7 +141,8 @@ fn page_error(result: &Value) -> ExecError {
 
 fn mesh_json(m: &Mesh) -> Value {
     let floats: Vec<f32> = bytemuck::cast_slice(&m.vertices).to_vec();
-    json!({ "vertices": floats, "indices": m.indices, "stride": m.stride })
+    let instances = m.instances.map(|i| json!({ "base": i.base, "stride": i.stride, "count": i.count }));
+    json!({ "vertices": floats, "indices": m.indices, "stride": m.stride, "instances": instances })
 }
 
 /// The plan as the page runs it, with everything bound resolved from the
@@ -168,7 +169,7 @@ pub fn plan_json(set: &ShaderSet, plan: &FramePlan) -> Result<(Value, Vec<(Strin
             "fragment": fs,
             "blocks": program.blocks.iter().map(|b| json!({ "name": b.glsl_name, "point": b.point, "size": b.layout.size })).collect::<Vec<_>>(),
             "samplers": program.samplers.iter().map(|s| json!({ "name": s.glsl_name, "unit": s.unit })).collect::<Vec<_>>(),
-            "attributes": program.attributes.iter().map(|a| json!({ "name": a.glsl_name, "location": a.location, "offset": a.field.offset, "components": a.field.format.components() })).collect::<Vec<_>>(),
+            "attributes": program.attributes.iter().map(|a| json!({ "name": a.glsl_name, "location": a.location, "offset": a.field.offset, "components": a.field.format.components(), "per_instance": a.field.per_instance })).collect::<Vec<_>>(),
             "uniforms": program.uniforms.iter().map(|u| &u.glsl_name).collect::<Vec<_>>(),
         }));
         let textures: Vec<Value> = bind::gl::textures(&program, pass)

@@ -113,6 +113,7 @@ pub struct Attachment<C> {
 /// A vertex attribute's format in a mesh.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum VertexFormat {
+    Float32,
     Float32x2,
     Float32x3,
 }
@@ -121,6 +122,7 @@ impl VertexFormat {
     /// wgpu's (and the manifest's `vertex_format`) name.
     pub fn name(self) -> &'static str {
         match self {
+            VertexFormat::Float32 => "Float32",
             VertexFormat::Float32x2 => "Float32x2",
             VertexFormat::Float32x3 => "Float32x3",
         }
@@ -128,6 +130,7 @@ impl VertexFormat {
 
     pub fn components(self) -> u32 {
         match self {
+            VertexFormat::Float32 => 1,
             VertexFormat::Float32x2 => 2,
             VertexFormat::Float32x3 => 3,
         }
@@ -141,6 +144,18 @@ pub struct Field {
     pub name: &'static str,
     pub offset: u32,
     pub format: VertexFormat,
+    /// Read once per instance, at `offset` in the mesh's instance records
+    /// ([`Mesh::instances`]), not per vertex.
+    pub per_instance: bool,
+}
+
+/// Per-instance records, stored in a mesh's `vertices` after its vertices:
+/// `count` records of `stride` bytes from byte `base`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Instances {
+    pub base: u32,
+    pub stride: u32,
+    pub count: u32,
 }
 
 /// Indexed triangles with interleaved vertex fields. Plans refer to meshes
@@ -155,6 +170,8 @@ pub struct Mesh {
     pub indices: Vec<u32>,
     /// The field a vertex program must read to place the vertices.
     pub position: &'static str,
+    /// Drawn instanced, with these per-instance records (none: once).
+    pub instances: Option<Instances>,
 }
 
 impl Mesh {

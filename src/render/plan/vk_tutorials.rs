@@ -102,12 +102,13 @@ pub fn uv_cube() -> &'static Mesh {
             vertices: bytemuck::cast_slice(&vertices).to_vec(),
             stride: 32,
             fields: vec![
-                Field { name: "a_pos", offset: 0, format: VertexFormat::Float32x3 },
-                Field { name: "a_uv", offset: 12, format: VertexFormat::Float32x2 },
-                Field { name: "a_normal", offset: 20, format: VertexFormat::Float32x3 },
+                Field { name: "a_pos", offset: 0, format: VertexFormat::Float32x3, per_instance: false },
+                Field { name: "a_uv", offset: 12, format: VertexFormat::Float32x2, per_instance: false },
+                Field { name: "a_normal", offset: 20, format: VertexFormat::Float32x3, per_instance: false },
             ],
             indices,
             position: "a_pos",
+            instances: None,
         }
     });
     &CUBE
@@ -168,16 +169,23 @@ pub fn cube_covers(t: f32, width: u32, height: u32, x: u32, y: u32, margin: f32)
     let (proj, view, _, model) = cube_matrices(t, width, height);
     let m = uv_cube();
     let pos: &[f32] = bytemuck::cast_slice(&m.vertices);
-    let screen = |i: u32| {
+    let clip = |i: u32| {
         let p = &pos[i as usize * 8..];
-        let c = proj * view * model * Vec4::new(p[0], p[1], p[2], 1.0);
-        // Vulkan's viewport: NDC y = -1 is row 0.
-        [(c.x / c.w + 1.0) / 2.0 * width as f32, (c.y / c.w + 1.0) / 2.0 * height as f32]
+        proj * view * model * Vec4::new(p[0], p[1], p[2], 1.0)
     };
+    let tris: Vec<[Vec4; 3]> = m.indices.chunks_exact(3).map(|t| [clip(t[0]), clip(t[1]), clip(t[2])]).collect();
+    covers(&tris, width, height, x, y, margin)
+}
+
+/// Whether triangles given in Vulkan clip space cover pixel (`x`, `y`)
+/// (see [`cube_covers`]).
+fn covers(tris: &[[Vec4; 3]], width: u32, height: u32, x: u32, y: u32, margin: f32) -> Option<bool> {
+    // Vulkan's viewport: NDC y = -1 is row 0.
+    let screen = |c: Vec4| [(c.x / c.w + 1.0) / 2.0 * width as f32, (c.y / c.w + 1.0) / 2.0 * height as f32];
     let p = [x as f32 + 0.5, y as f32 + 0.5];
     let mut near_edge = false;
-    for tri in m.indices.chunks_exact(3) {
-        let v = [screen(tri[0]), screen(tri[1]), screen(tri[2])];
+    for tri in tris {
+        let v = tri.map(screen);
         let area = (v[1][0] - v[0][0]) * (v[2][1] - v[0][1]) - (v[1][1] - v[0][1]) * (v[2][0] - v[0][0]);
         if area.abs() < 1e-6 {
             continue;
@@ -200,6 +208,109 @@ pub fn cube_covers(t: f32, width: u32, height: u32, x: u32, y: u32, margin: f32)
     } else {
         Some(false)
     }
+}
+
+pub const INSTANCING_VS: &str = "instancing_vert_spv";
+pub const INSTANCING_FS: &str = "instancing_frag_spv";
+/// 05's instances: a 3 x 3 grid, 1.6 apart.
+const GRID: u32 = 3;
+
+/// One instance record of 05: offset, colour, phase (28 bytes).
+fn instance(i: u32) -> [f32; 7] {
+    let (gx, gz) = ((i % GRID) as f32 - 1.0, (i / GRID) as f32 - 1.0);
+    [gx * 1.6, 0.0, gz * 1.6, 0.3 + 0.3 * (gx + 1.0), 0.8 - 0.25 * (gz + 1.0), 0.5, i as f32 / (GRID * GRID) as f32]
+}
+
+/// 05's mesh: the [-0.5, 0.5] cube with `a_pos` and `a_normal` per vertex
+/// and `a_offset`, `a_color`, `a_phase` per instance.
+pub fn instanced_cubes() -> &'static Mesh {
+    static MESH: LazyLock<Mesh> = LazyLock::new(|| {
+        let cube = uv_cube();
+        let src: &[f32] = bytemuck::cast_slice(&cube.vertices);
+        let mut floats: Vec<f32> = src.chunks_exact(8).flat_map(|v| [v[0], v[1], v[2], v[5], v[6], v[7]]).collect();
+        let base = (floats.len() * 4) as u32;
+        floats.extend((0..GRID * GRID).flat_map(instance));
+        let field = |name, offset, format, per_instance| Field { name, offset, format, per_instance };
+        Mesh {
+            name: "instanced cubes",
+            vertices: bytemuck::cast_slice(&floats).to_vec(),
+            stride: 24,
+            fields: vec![
+                field("a_pos", 0, VertexFormat::Float32x3, false),
+                field("a_normal", 12, VertexFormat::Float32x3, false),
+                field("a_offset", 0, VertexFormat::Float32x3, true),
+                field("a_color", 12, VertexFormat::Float32x3, true),
+                field("a_phase", 24, VertexFormat::Float32, true),
+            ],
+            indices: cube.indices.clone(),
+            position: "a_pos",
+            instances: Some(super::Instances { base, stride: 28, count: GRID * GRID }),
+        }
+    });
+    &MESH
+}
+
+fn instancing_camera(width: u32, height: u32) -> (Mat4, Mat4, Vec3) {
+    let eye = Vec3::new(3.2, 3.4, 4.4);
+    let view = glam::camera::rh::view::look_at_mat4(eye, Vec3::ZERO, Vec3::Y);
+    let proj = glam::camera::rh::proj::vulkan::perspective(45f32.to_radians(), width as f32 / height as f32, 0.1, 30.0);
+    (proj, view, eye)
+}
+
+/// 05 instancing at time `t`: one instanced draw of nine cubes.
+pub fn instancing(t: f32, width: u32, height: u32, cull: Cull) -> FramePlan {
+    let (proj, view, eye) = instancing_camera(width, height);
+    let mut plan = FramePlan {
+        scene: "dasVulkan's instanced cubes".into(),
+        targets: Vec::new(),
+        passes: Vec::new(),
+        readback: TargetId(0),
+        required: Vec::new(),
+        unset: Default::default(),
+    };
+    let color = plan.add_target("colour", width, height, Format::Rgba8);
+    let depth = plan.add_target("depth", width, height, Format::Depth32Float);
+    plan.passes.push(Pass {
+        name: "instances".into(),
+        vertex: INSTANCING_VS.into(),
+        fragment: Some(INSTANCING_FS.into()),
+        color: Some(Attachment { target: color, clear: CLEAR }),
+        depth: Some(Attachment { target: depth, clear: 1.0 }),
+        cull,
+        depth_bias: false,
+        textures: Vec::new(),
+        values: Values::new()
+            .with("view", Value::mat4(view))
+            .with("proj", Value::mat4(proj))
+            .with("cam_time", Value::vec4(Vec4::new(eye.x, eye.y, eye.z, t))),
+        draws: vec![Draw { geometry: Geometry::Mesh(instanced_cubes()), values: Values::new() }],
+    });
+    plan.readback = color;
+    plan
+}
+
+/// [`cube_covers`] for 05: each instance placed as its vertex program
+/// places it (breathing scale, spin about y, offset).
+pub fn instancing_covers(t: f32, width: u32, height: u32, x: u32, y: u32, margin: f32) -> Option<bool> {
+    let (proj, view, _) = instancing_camera(width, height);
+    let m = instanced_cubes();
+    let pos: &[f32] = bytemuck::cast_slice(&m.vertices);
+    let mut tris = Vec::new();
+    for i in 0..GRID * GRID {
+        let r = instance(i);
+        let phase = r[6] * 6.2832;
+        let breathe = 0.7 + 0.2 * (t * 1.5 + phase).sin();
+        let ang = t * 0.25 + phase;
+        let (c, s) = (ang.cos(), ang.sin());
+        let clip = |v: u32| {
+            let p = &pos[v as usize * 6..];
+            let l = Vec3::new(p[0], p[1], p[2]) * breathe;
+            let w = Vec3::new(c * l.x - s * l.z, l.y, s * l.x + c * l.z) + Vec3::new(r[0], r[1], r[2]);
+            proj * view * w.extend(1.0)
+        };
+        tris.extend(m.indices.chunks_exact(3).map(|t| [clip(t[0]), clip(t[1]), clip(t[2])]));
+    }
+    covers(&tris, width, height, x, y, margin)
 }
 
 #[cfg(test)]

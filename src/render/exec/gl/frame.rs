@@ -188,7 +188,9 @@ impl GlExecutor {
                         Geometry::Vertices(n) => (None, n as i32),
                     };
                     gl.bind_vertex_array(Some(self.vao(&linked, mesh)?));
-                    if mesh.is_some() {
+                    if let Some(i) = mesh.and_then(|m| m.instances) {
+                        gl.draw_elements_instanced(glow::TRIANGLES, count, glow::UNSIGNED_INT, 0, i.count as i32);
+                    } else if mesh.is_some() {
                         gl.draw_elements(glow::TRIANGLES, count, glow::UNSIGNED_INT, 0);
                     } else {
                         gl.draw_arrays(glow::TRIANGLES, 0, count);

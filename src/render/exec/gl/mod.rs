@@ -439,7 +439,13 @@ impl GlExecutor {
                 gl.bind_buffer(glow::ELEMENT_ARRAY_BUFFER, Some(b.indices.raw()));
                 for (loc, field) in &linked.attributes {
                     gl.enable_vertex_attrib_array(*loc);
-                    gl.vertex_attrib_pointer_f32(*loc, field.format.components() as i32, glow::FLOAT, false, m.stride as i32, field.offset as i32);
+                    // Instance records follow the vertices in the same buffer.
+                    let (stride, offset, divisor) = match m.instances.filter(|_| field.per_instance) {
+                        Some(i) => (i.stride, i.base + field.offset, 1),
+                        None => (m.stride, field.offset, 0),
+                    };
+                    gl.vertex_attrib_pointer_f32(*loc, field.format.components() as i32, glow::FLOAT, false, stride as i32, offset as i32);
+                    gl.vertex_attrib_divisor(*loc, divisor);
                 }
             }
             gl.bind_vertex_array(None);

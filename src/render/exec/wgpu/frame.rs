@@ -193,11 +193,16 @@ impl WgpuExecutor {
                 rp.set_bind_group(*group, bg, &[]);
             }
             match draw.geometry {
-                Geometry::Mesh(m) => {
-                    let m = self.mesh(m);
+                Geometry::Mesh(mesh) => {
+                    let m = self.mesh(mesh);
                     rp.set_vertex_buffer(0, m.vertices.slice(..));
+                    let mut instances = 1;
+                    if let Some(i) = mesh.instances {
+                        rp.set_vertex_buffer(1, m.vertices.slice(i.base as u64..));
+                        instances = i.count;
+                    }
                     rp.set_index_buffer(m.indices.slice(..), wgpu::IndexFormat::Uint32);
-                    rp.draw_indexed(0..m.index_count, 0, 0..1);
+                    rp.draw_indexed(0..m.index_count, 0, 0..instances);
                 }
                 Geometry::Vertices(n) => rp.draw(0..n, 0..1),
             }
