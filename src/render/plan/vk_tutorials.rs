@@ -298,6 +298,8 @@ pub fn instancing_covers(t: f32, width: u32, height: u32, x: u32, y: u32, margin
     let mut tris = Vec::new();
     for i in 0..GRID * GRID {
         let r = instance(i);
+        // The vertex program's own literal, not TAU: the same rounding.
+        #[allow(clippy::approx_constant)]
         let phase = r[6] * 6.2832;
         let breathe = 0.7 + 0.2 * (t * 1.5 + phase).sin();
         let ang = t * 0.25 + phase;
