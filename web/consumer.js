@@ -125,7 +125,11 @@ async function link(gl, p, sources, meshes) {
     gl.bindBuffer(gl.ARRAY_BUFFER, m.vbo);
     for (const a of attributes) {
       gl.enableVertexAttribArray(a.location);
-      gl.vertexAttribPointer(a.location, a.components, gl.FLOAT, false, m.stride, a.offset);
+      // Instance records follow the vertices in the same buffer.
+      const inst = a.per_instance ? m.instances : null;
+      if (inst) gl.vertexAttribPointer(a.location, a.components, gl.FLOAT, false, inst.stride, inst.base + a.offset);
+      else gl.vertexAttribPointer(a.location, a.components, gl.FLOAT, false, m.stride, a.offset);
+      gl.vertexAttribDivisor(a.location, inst ? 1 : 0);
     }
     gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, m.ibo);
     gl.bindVertexArray(null);
@@ -159,7 +163,7 @@ async function main() {
     const ibo = gl.createBuffer();
     gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, ibo);
     gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, new Uint32Array(m.indices), gl.STATIC_DRAW);
-    meshes[name] = { vbo, ibo, count: m.indices.length, stride: m.stride };
+    meshes[name] = { vbo, ibo, count: m.indices.length, stride: m.stride, instances: m.instances };
   }
   gl.bindBuffer(gl.ARRAY_BUFFER, null);
   const programs = [];
@@ -170,6 +174,8 @@ async function main() {
     gl.bindTexture(gl.TEXTURE_2D, tex);
     const [internal] = formatOf(gl, t.format);
     gl.texStorage2D(gl.TEXTURE_2D, 1, internal, t.width, t.height);
+    // A texture the host uploads (rgba8, memory row 0 first).
+    if (t.contents) gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, t.width, t.height, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(t.contents));
     gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
     gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
     return tex;
@@ -209,7 +215,8 @@ async function main() {
   const ubo = (point) => (ubos[point] ??= gl.createBuffer());
 
   gl.disable(gl.BLEND);
-  gl.frontFace(gl.CCW);
+  // Vulkan-dialect code is upside down to GL: its counter-clockwise fronts arrive clockwise.
+  gl.frontFace(plan.top_first ? gl.CW : gl.CCW);
   gl.depthFunc(gl.LESS);
   gl.depthMask(true);
   for (const pass of plan.passes) {
@@ -266,7 +273,9 @@ async function main() {
       }
       if (d.mesh !== null) {
         gl.bindVertexArray(p.vaos[d.mesh]);
-        gl.drawElements(gl.TRIANGLES, meshes[d.mesh].count, gl.UNSIGNED_INT, 0);
+        const m = meshes[d.mesh];
+        if (m.instances) gl.drawElementsInstanced(gl.TRIANGLES, m.count, gl.UNSIGNED_INT, 0, m.instances.count);
+        else gl.drawElements(gl.TRIANGLES, m.count, gl.UNSIGNED_INT, 0);
       } else {
         gl.bindVertexArray(p.vaos['']);
         gl.drawArrays(gl.TRIANGLES, 0, d.vertices);

@@ -64,6 +64,10 @@ pub struct RenderArgs {
     /// shadow map (lighting without shadows).
     #[arg(long, default_value = "final", value_parser = choice(&View::ALL, View::name))]
     pub view: View,
+    /// daslang's checkout, where a .das program's `require`d modules are
+    /// found (as `umbrac compile --daslang-root`).
+    #[arg(long, value_name = "DIR", value_parser = umbrac::syntax::modules::parse_daslang_root)]
+    pub daslang_root: Option<PathBuf>,
     /// Reflection JSON for a .wgsl or .spv FILE (default: the hand port's binding model).
     #[arg(long, value_name = "JSON")]
     pub reflection: Option<PathBuf>,
@@ -178,6 +182,7 @@ impl RenderArgs {
             compare_backends: self.compare_backends,
             scene: self.scene.clone(),
             pcf_taps: self.pcf_taps,
+            daslang_root: self.daslang_root.clone(),
         })
     }
 }

@@ -10,7 +10,7 @@ use image::RgbaImage;
 
 use super::exec::{wgpu::WgpuExecutor, webgl::WebGl, ExecError, Executor, Readback};
 use super::image_ops::{self, DiffStats};
-use super::plan::{tutorial, FramePlan};
+use super::plan::FramePlan;
 use super::program::ShaderSet;
 use super::reference;
 use super::scene::{FrameParams, View};
@@ -182,7 +182,7 @@ pub fn render(consumer: Consumer, programs: &Programs, params: &FrameParams) -> 
     let started = Instant::now();
     let result = match programs.for_consumer(consumer) {
         None => Ok((reference::render(params), "CPU".to_string())),
-        Some(set) => run(consumer, set, &tutorial::plan(params)).map(|(r, device)| (r.into_image(), device)),
+        Some(set) => run(consumer, set, &super::command::scene_plan(set)(params)).map(|(r, device)| (r.into_image(), device)),
     };
     match result {
         Ok((image, device)) => Status::Rendered { image, device, ms: started.elapsed().as_secs_f64() * 1e3 },

@@ -115,6 +115,20 @@ impl ShaderSet {
         }
     }
 
+    /// The GLSL fragment stage of a pass: `fragment`'s file, or for a
+    /// vertex-only pass an empty one in the vertex file's `#version`
+    /// (GLES links no program without a fragment shader; it writes no
+    /// colour, as the vertex-only pipeline it stands for).
+    pub fn glsl_fragment(&self, fragment: Option<&str>, vertex_text: &str) -> Result<(String, String), String> {
+        match fragment {
+            Some(f) => self.glsl(f).map(|(file, text)| (file.to_string(), text.to_string())),
+            None => {
+                let version = vertex_text.lines().find(|l| l.starts_with("#version")).unwrap_or("#version 330 core");
+                Ok(("umbrac_empty_fragment.frag".into(), format!("{version}\nvoid main() {{}}\n")))
+            }
+        }
+    }
+
     /// Applies `edit` to every GLSL or WGSL text (tests use it to break a
     /// program on purpose).
     pub fn map_sources(mut self, mut edit: impl FnMut(&str) -> String) -> ShaderSet {

@@ -99,7 +99,7 @@ pub fn mesh(object: Object) -> &'static plan::Mesh {
 }
 
 fn plan_mesh(name: &'static str, m: Mesh) -> plan::Mesh {
-    let field = |name, offset| plan::Field { name, offset, format: plan::VertexFormat::Float32x3 };
+    let field = |name, offset| plan::Field { name, offset, format: plan::VertexFormat::Float32x3, per_instance: false };
     plan::Mesh {
         name,
         vertices: bytemuck::cast_slice(&m.vertices).to_vec(),
@@ -107,6 +107,7 @@ fn plan_mesh(name: &'static str, m: Mesh) -> plan::Mesh {
         fields: vec![field(ATTR_POS, 0), field(ATTR_NORMAL, 12)],
         indices: m.indices,
         position: ATTR_POS,
+        instances: None,
     }
 }
 

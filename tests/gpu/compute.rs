@@ -430,3 +430,81 @@ fn specialization_constant_atomics_and_subgroups_match_the_cpu() {
         }
     }
 }
+
+/// `shaders/compute/vk_reduce.das`, in daslang's Vulkan dialect: a
+/// weighted sum and a count of odd values, the weight and the count
+/// specialization constants (ids 3, 4), through atomics; with `-D
+/// SUBGROUPS` each subgroup reduces first. Each compute consumer runs the
+/// form it can (subgroups where it has them) and must match the CPU
+/// exactly; on vulkan-wgsl both constants are also set by the plan.
+#[test]
+fn vulkan_dialect_reduce_matches_the_cpu() {
+    let n = 1000usize;
+    let data = values(n, 11, 1 << 20);
+    let plan = ComputePlan {
+        name: "vk_reduce".into(),
+        entry: "vk_reduce".into(),
+        workgroups: [n.div_ceil(32) as u32, 1, 1],
+        buffers: vec![BufferInput { name: "values".into(), bytes: bytes(&data) }, BufferInput { name: "sums".into(), bytes: bytes(&[0, 0, 0]) }],
+        images: vec![],
+        readback: vec!["sums".into()],
+        constants: vec![],
+    };
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("shaders/compute/vk_reduce.das");
+    let plain = umbrac::compile_file(&path, &umbrac::Options::default());
+    let with_subgroups = umbrac::Options {
+        defines: vec![("SUBGROUPS".into(), None)],
+        targets: vec![Target::Glsl430, Target::Wgsl, Target::Spirv],
+        ..Default::default()
+    };
+    let subgroups = umbrac::compile_file(&path, &with_subgroups);
+    for c in [&plain, &subgroups] {
+        assert!(!c.has_errors(), "vk_reduce does not compile:\n{}", c.render_diagnostics());
+    }
+    let spec = plain.result.as_ref().unwrap().reflection.specialization_constants.clone().expect("vk_reduce has specialization constants");
+    let (weight, count) = (spec[0].default_bits, spec[1].default_bits as usize);
+    assert_eq!((spec[0].id, spec[1].id, count), (3, 4, n));
+    let expect = |weight: u32, count: usize| {
+        let used = &data[..count];
+        (used.iter().fold(0u32, |s, v| s.wrapping_add(v.wrapping_mul(weight))), used.iter().filter(|v| *v & 1 == 1).count() as u32)
+    };
+    let invocations = (n.div_ceil(32) * 32) as u32;
+    for consumer in Consumer::COMPUTE {
+        let ok = match consumer {
+            Consumer::VulkanWgsl | Consumer::VulkanSpirv => support::gpu::vulkan().is_some(),
+            _ => support::gpu::gl(consumer).is_some(),
+        };
+        if !ok {
+            continue;
+        }
+        if consumer == Consumer::VulkanSpirv && !support::gpu::vulkan().is_some_and(|v| v.supports_passthrough()) {
+            support::skip("vk_reduce: the Vulkan device takes no SPIR-V unchanged".to_string());
+            continue;
+        }
+        let sub = has_subgroups(consumer);
+        let c = if sub { &subgroups } else { &plain };
+        let target = consumer.target().expect("a compute consumer has a target");
+        let set = ShaderSet::from_compiled("vk_reduce", c.result.as_ref().unwrap(), target).unwrap_or_else(|e| panic!("{e}"));
+        let r = match consumers::run_compute(consumer, &set, &plan) {
+            Ok((r, _)) => r,
+            Err(e @ ExecError::Unavailable { .. }) => {
+                support::skip(format!("vk_reduce on {}: {e}", consumer.name()));
+                continue;
+            }
+            Err(e) => panic!("vk_reduce on {} ({}, subgroups: {sub}): {e}", consumer.name(), target.name()),
+        };
+        let t = words(&r.resources["sums"]);
+        assert_eq!((t[0], t[1]), expect(weight, count), "{}: differs from the CPU", consumer.name());
+        match sub {
+            true => assert!(t[2] < invocations && t[2] >= invocations / 32, "{}: {} subgroup adds for {invocations} invocations", consumer.name(), t[2]),
+            false => assert_eq!(t[2], invocations, "{}: one add per invocation", consumer.name()),
+        }
+        eprintln!("vk_reduce on {}: matches the CPU (subgroups: {sub}, {} atomic adds)", consumer.name(), t[2]);
+        if consumer == Consumer::VulkanWgsl {
+            let other = ComputePlan { constants: vec![(3, 11.0), (4, 600.0)], ..plan.clone() };
+            let (r, _) = consumers::run_compute(consumer, &set, &other).unwrap_or_else(|e| panic!("vk_reduce with WEIGHT = 11, COUNT = 600: {e}"));
+            let t = words(&r.resources["sums"]);
+            assert_eq!((t[0], t[1]), expect(11, 600), "vulkan-wgsl: WEIGHT = 11, COUNT = 600 set as pipeline constants");
+        }
+    }
+}

@@ -36,3 +36,7 @@ mod techniques;
 mod uniforms;
 #[cfg(feature = "render")]
 mod visible_fit;
+#[cfg(all(feature = "render", feature = "gl"))]
+mod vk_shadow;
+#[cfg(all(feature = "render", feature = "gl"))]
+mod vk_tutorials;

@@ -124,7 +124,7 @@ fn plan(vertex: &str, fragment: &str) -> FramePlan {
     plan.passes.push(Pass {
         name: "uniforms".into(),
         vertex: vertex.into(),
-        fragment: fragment.into(),
+        fragment: Some(fragment.into()),
         color: Some(Attachment { target: image, clear: [0.0, 0.0, 0.0, 1.0] }),
         depth: None,
         cull: Cull::None,

@@ -92,6 +92,20 @@ pub struct Fit {
     /// Portable conventions: the image arrives bottom row first on WebGPU
     /// and Vulkan, and front faces are clockwise there.
     pub portable: bool,
+    /// The plan's vertex entry points are in daslang's Vulkan dialect:
+    /// with portable conventions every target stores the picture's top in
+    /// memory row 0 (docs/targets.md), so nothing is flipped on read-back.
+    pub vulkan: bool,
+}
+
+impl Fit {
+    /// Whether the image arrives bottom row first on WebGPU/Vulkan and
+    /// front faces are clockwise there: portable conventions mirror
+    /// GL-dialect code, native ones leave Vulkan-dialect code (y down)
+    /// under WebGPU's y-up NDC.
+    pub fn mirrored_on_webgpu(&self) -> bool {
+        self.portable != self.vulkan
+    }
 }
 
 /// The value names a uniform buffer's members take: each member is the
@@ -165,6 +179,7 @@ pub fn fit(program: &str, r: &Reflection, plan: &FramePlan) -> Result<Fit, Inter
         }
     }
     let passes: Vec<PassFit> = plan.passes.iter().map(|pass| fit_pass(r, plan, pass, &mut problems)).collect();
+    let vulkan = is_vulkan(r, plan);
     // Every draw's values fill the blocks its pass uses.
     for (pass, pf) in plan.passes.iter().zip(&passes) {
         for draw in &pass.draws {
@@ -177,7 +192,7 @@ pub fn fit(program: &str, r: &Reflection, plan: &FramePlan) -> Result<Fit, Inter
         }
     }
     if problems.is_empty() {
-        Ok(Fit { passes, portable })
+        Ok(Fit { passes, portable, vulkan })
     } else {
         let mut seen = std::collections::BTreeSet::new();
         problems.retain(|p| seen.insert(p.clone()));
@@ -185,9 +200,15 @@ pub fn fit(program: &str, r: &Reflection, plan: &FramePlan) -> Result<Fit, Inter
     }
 }
 
+/// Whether the plan's vertex entry points are Vulkan-dialect code (the
+/// manifest's `dialect`); a plan mixing dialects has no one orientation.
+pub fn is_vulkan(r: &Reflection, plan: &FramePlan) -> bool {
+    plan.passes.iter().any(|p| r.entry_points.iter().any(|e| e.name == p.vertex && e.dialect.as_deref() == Some("vulkan")))
+}
+
 fn fit_pass(r: &Reflection, plan: &FramePlan, pass: &Pass, problems: &mut Vec<String>) -> PassFit {
     let v = entry(r, &pass.vertex, "vertex", problems);
-    let f = entry(r, &pass.fragment, "fragment", problems);
+    let f = pass.fragment.as_ref().and_then(|f| entry(r, f, "fragment", problems));
     let mut attributes = Vec::new();
     // A pass that draws nothing (the empty shadow map of `lit`) feeds no inputs.
     if let Some(v) = v.filter(|_| !pass.draws.is_empty()) {

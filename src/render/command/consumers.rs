@@ -11,18 +11,18 @@ use crate::render::scene::FrameParams;
 /// The difference (out of 255) above which the comparison counts a pixel.
 pub const DELTA: u8 = 8;
 
-fn compile(file: Option<&Path>) -> Result<(String, crate::Compiled), String> {
+fn compile(file: Option<&Path>, daslang_root: Option<&Path>) -> Result<(String, crate::Compiled), String> {
     if let Some(ext @ ("wgsl" | "spv")) = file.and_then(|p| p.extension()).and_then(|e| e.to_str()) {
         return Err(format!("--compare-backends runs every target of a .das program, not a .{ext} file"));
     }
-    match compile_program(file, &crate::Options::default()) {
+    match compile_program(file, &crate::Options { daslang_root: daslang_root.map(Path::to_path_buf), ..Default::default() }) {
         (name, Some(compiled)) => Ok((name, compiled)),
         (name, None) => Err(format!("{name} did not compile")),
     }
 }
 
 pub(super) fn compare_backends(args: &RenderOptions, params: FrameParams) -> Result<(), String> {
-    let (name, compiled) = compile(args.file.as_deref())?;
+    let (name, compiled) = compile(args.file.as_deref(), args.daslang_root.as_deref())?;
     let programs = Programs::from_compiled(&name, &compiled)?;
     eprintln!(
         "{name} at t = {}, {}x{}, shadow map {}, view {}:",

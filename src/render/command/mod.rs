@@ -58,6 +58,8 @@ pub struct RenderOptions {
     pub scene: Option<String>,
     /// Taps of the `pcf` scene's offset table.
     pub pcf_taps: u32,
+    /// Where a .das program's `require`d daslang modules are (`--daslang-root`).
+    pub daslang_root: Option<PathBuf>,
 }
 
 impl Default for RenderOptions {
@@ -80,6 +82,7 @@ impl Default for RenderOptions {
             compare_backends: false,
             scene: None,
             pcf_taps: 9,
+            daslang_root: None,
         }
     }
 }
@@ -133,7 +136,8 @@ pub fn run(opts: &RenderOptions, progress: &mut dyn Progress) -> Result<(), Stri
         visible::check_consumer(opts.consumer)?;
     }
     let defines = params.setup.defines(params.shadow_size);
-    let set = load_program_with(opts.file.as_deref(), opts.reflection.as_deref(), opts.consumer, defines)?;
+    let base = crate::Options { defines, daslang_root: opts.daslang_root.clone(), ..Default::default() };
+    let set = load_program_with(opts.file.as_deref(), opts.reflection.as_deref(), opts.consumer, base)?;
     match opts.consumer {
         #[cfg(feature = "gl")]
         Consumer::Gl430 => {
@@ -162,10 +166,24 @@ pub fn run(opts: &RenderOptions, progress: &mut dyn Progress) -> Result<(), Stri
 }
 
 fn draw<E: Executor>(e: &E, set: &super::ShaderSet, opts: &RenderOptions, params: FrameParams, progress: &mut dyn Progress) -> Result<(), String> {
-    let prepared = e.prepare(set, &tutorial::plan(&params)).map_err(|e| e.to_string())?;
+    let plan = scene_plan(set);
+    let prepared = e.prepare(set, &plan(&params)).map_err(|e| e.to_string())?;
     eprintln!("rendering {} ({}) on {}: {}", set.label, set.target.name(), opts.consumer.name(), e.device_name());
     let times = frame_times(opts);
-    write_frames(opts, &times, |p| e.run(&prepared, &tutorial::plan(p)).map(|r| r.into_image()).map_err(|e: ExecError| e.to_string()), params, progress)
+    write_frames(opts, &times, |p| e.run(&prepared, &plan(p)).map(|r| r.into_image()).map_err(|e: ExecError| e.to_string()), params, progress)
+}
+
+/// The scene a program draws: dasVulkan's shadow rung for a program with
+/// its Vulkan-dialect entry points, the tutorial's otherwise.
+pub fn scene_plan(set: &super::ShaderSet) -> fn(&FrameParams) -> super::plan::FramePlan {
+    let vulkan = set.reflection.as_ref().is_some_and(|r| {
+        r.entry_points.iter().any(|e| e.name == super::plan::vk_shadow::MAIN_VS && e.dialect.as_deref() == Some("vulkan"))
+    });
+    if vulkan {
+        super::plan::vk_shadow::plan
+    } else {
+        tutorial::plan
+    }
 }
 
 /// [`draw`] for `--fit visible`: each frame measured first

@@ -15,16 +15,12 @@ pub(crate) const DEFAULT_PROGRAM: &str = "shaders/shadow.das";
 
 /// Loads the program named on the command line, in the form `consumer` runs.
 pub fn load_program(file: Option<&Path>, reflection: Option<&Path>, consumer: Consumer) -> Result<ShaderSet, String> {
-    load_program_with(file, reflection, consumer, Vec::new())
+    load_program_with(file, reflection, consumer, crate::Options::default())
 }
 
-/// [`load_program`] with `-D` definitions for a .das program.
-pub fn load_program_with(
-    file: Option<&Path>,
-    reflection: Option<&Path>,
-    consumer: Consumer,
-    defines: Vec<(String, Option<String>)>,
-) -> Result<ShaderSet, String> {
+/// [`load_program`] with the options of a .das program's compile (`-D`
+/// definitions, `--daslang-root`; its targets are the consumer's).
+pub fn load_program_with(file: Option<&Path>, reflection: Option<&Path>, consumer: Consumer, base: crate::Options) -> Result<ShaderSet, String> {
     let target = consumer.target().ok_or_else(|| format!("{} runs no compiled program", consumer.name()))?;
     let ext = file.and_then(|p| p.extension()).and_then(|e| e.to_str());
     if let (Some(path), Some(ext @ ("wgsl" | "spv"))) = (file, ext) {
@@ -49,7 +45,7 @@ pub fn load_program_with(
         };
         return Ok(ShaderSet::single(path.display().to_string(), code, refl));
     }
-    let opts = crate::Options { targets: vec![target], defines, ..Default::default() };
+    let opts = crate::Options { targets: vec![target], ..base };
     match compile_program(file, &opts) {
         (name, Some(compiled)) => ShaderSet::from_compiled(name, &compiled, target),
         (name, None) => Err(format!(

@@ -141,7 +141,8 @@ fn page_error(result: &Value) -> ExecError {
 
 fn mesh_json(m: &Mesh) -> Value {
     let floats: Vec<f32> = bytemuck::cast_slice(&m.vertices).to_vec();
-    json!({ "vertices": floats, "indices": m.indices, "stride": m.stride })
+    let instances = m.instances.map(|i| json!({ "base": i.base, "stride": i.stride, "count": i.count }));
+    json!({ "vertices": floats, "indices": m.indices, "stride": m.stride, "instances": instances })
 }
 
 /// The plan as the page runs it, with everything bound resolved from the
@@ -156,8 +157,8 @@ pub fn plan_json(set: &ShaderSet, plan: &FramePlan) -> Result<(Value, Vec<(Strin
     for (pass, pf) in plan.passes.iter().zip(&fit.passes) {
         let program = bind::gl::program(r, pf);
         let (vs, vs_text) = set.glsl(&pass.vertex).map_err(ExecError::Program)?;
-        let (fs, fs_text) = set.glsl(&pass.fragment).map_err(ExecError::Program)?;
-        for (f, t) in [(vs, vs_text), (fs, fs_text)] {
+        let (fs, fs_text) = set.glsl_fragment(pass.fragment.as_deref(), vs_text).map_err(ExecError::Program)?;
+        for (f, t) in [(vs, vs_text), (fs.as_str(), fs_text.as_str())] {
             if !files.iter().any(|(name, _)| name == f) {
                 files.push((f.to_string(), t.to_string()));
             }
@@ -168,7 +169,7 @@ pub fn plan_json(set: &ShaderSet, plan: &FramePlan) -> Result<(Value, Vec<(Strin
             "fragment": fs,
             "blocks": program.blocks.iter().map(|b| json!({ "name": b.glsl_name, "point": b.point, "size": b.layout.size })).collect::<Vec<_>>(),
             "samplers": program.samplers.iter().map(|s| json!({ "name": s.glsl_name, "unit": s.unit })).collect::<Vec<_>>(),
-            "attributes": program.attributes.iter().map(|a| json!({ "name": a.glsl_name, "location": a.location, "offset": a.field.offset, "components": a.field.format.components() })).collect::<Vec<_>>(),
+            "attributes": program.attributes.iter().map(|a| json!({ "name": a.glsl_name, "location": a.location, "offset": a.field.offset, "components": a.field.format.components(), "per_instance": a.field.per_instance })).collect::<Vec<_>>(),
             "uniforms": program.uniforms.iter().map(|u| &u.glsl_name).collect::<Vec<_>>(),
         }));
         let textures: Vec<Value> = bind::gl::textures(&program, pass)
@@ -215,8 +216,11 @@ pub fn plan_json(set: &ShaderSet, plan: &FramePlan) -> Result<(Value, Vec<(Strin
             "draws": draws,
         }));
     }
-    let targets: Vec<Value> =
-        plan.targets.iter().map(|t| json!({ "name": t.name, "width": t.width, "height": t.height, "format": t.format.name() })).collect();
+    let targets: Vec<Value> = plan
+        .targets
+        .iter()
+        .map(|t| json!({ "name": t.name, "width": t.width, "height": t.height, "format": t.format.name(), "contents": t.contents }))
+        .collect();
     let doc = json!({
         "scene": plan.scene,
         "targets": targets,
@@ -224,6 +228,8 @@ pub fn plan_json(set: &ShaderSet, plan: &FramePlan) -> Result<(Value, Vec<(Strin
         "programs": programs,
         "passes": passes,
         "readback": plan.readback.0,
+        // Vulkan-dialect code keeps its picture's top in row 0.
+        "top_first": bind::is_vulkan(r, plan),
     });
     Ok((doc, files))
 }
@@ -266,8 +272,9 @@ impl Executor for WebGl {
         if bytes.len() != (w * h) as usize * texel {
             return Err(ExecError::Api(format!("the page sent {} bytes for a {w}x{h} target", bytes.len())));
         }
-        // readPixels gives rows bottom first, as GL does.
-        let rows: Vec<u8> = bytes.chunks_exact(w as usize * texel).rev().flatten().copied().collect();
+        // readPixels gives rows bottom first, as GL does: GL-dialect pictures are top row first.
+        let top_first = doc["top_first"] == json!(true);
+        let rows: Vec<u8> = if top_first { bytes } else { bytes.chunks_exact(w as usize * texel).rev().flatten().copied().collect() };
         Ok(if texel == 16 {
             Readback::Words { width: w, height: h, words: bytemuck::cast_slice(&rows).to_vec() }
         } else {

@@ -19,7 +19,7 @@ pub fn plan(vertex: &str, fragment: &str, width: u32) -> FramePlan {
     plan.passes.push(Pass {
         name: "checks".into(),
         vertex: vertex.into(),
-        fragment: fragment.into(),
+        fragment: Some(fragment.into()),
         color: Some(Attachment { target: out, clear: [0.0; 4] }),
         depth: None,
         cull: Cull::None,

@@ -13,6 +13,8 @@
 pub mod checks;
 pub mod compute;
 pub mod tutorial;
+pub mod vk_shadow;
+pub mod vk_tutorials;
 mod value;
 
 pub use value::{Scalar, Shape, Value, Values};
@@ -57,6 +59,9 @@ pub struct Target {
     pub width: u32,
     pub height: u32,
     pub format: Format,
+    /// Texels it starts with (`Rgba8` rows, top row first): a texture the
+    /// host uploads, such as the stand-in images of [`vk_shadow`].
+    pub contents: Option<Vec<u8>>,
 }
 
 /// Which faces are culled.
@@ -108,6 +113,8 @@ pub struct Attachment<C> {
 /// A vertex attribute's format in a mesh.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum VertexFormat {
+    Float32,
+    Float32x2,
     Float32x3,
 }
 
@@ -115,12 +122,16 @@ impl VertexFormat {
     /// wgpu's (and the manifest's `vertex_format`) name.
     pub fn name(self) -> &'static str {
         match self {
+            VertexFormat::Float32 => "Float32",
+            VertexFormat::Float32x2 => "Float32x2",
             VertexFormat::Float32x3 => "Float32x3",
         }
     }
 
     pub fn components(self) -> u32 {
         match self {
+            VertexFormat::Float32 => 1,
+            VertexFormat::Float32x2 => 2,
             VertexFormat::Float32x3 => 3,
         }
     }
@@ -133,6 +144,18 @@ pub struct Field {
     pub name: &'static str,
     pub offset: u32,
     pub format: VertexFormat,
+    /// Read once per instance, at `offset` in the mesh's instance records
+    /// ([`Mesh::instances`]), not per vertex.
+    pub per_instance: bool,
+}
+
+/// Per-instance records, stored in a mesh's `vertices` after its vertices:
+/// `count` records of `stride` bytes from byte `base`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Instances {
+    pub base: u32,
+    pub stride: u32,
+    pub count: u32,
 }
 
 /// Indexed triangles with interleaved vertex fields. Plans refer to meshes
@@ -147,6 +170,8 @@ pub struct Mesh {
     pub indices: Vec<u32>,
     /// The field a vertex program must read to place the vertices.
     pub position: &'static str,
+    /// Drawn instanced, with these per-instance records (none: once).
+    pub instances: Option<Instances>,
 }
 
 impl Mesh {
@@ -177,7 +202,10 @@ pub struct Pass {
     /// Names it in messages (`shadow`, `main`).
     pub name: String,
     pub vertex: String,
-    pub fragment: String,
+    /// `None`: a vertex-only pass (depth alone, no fragment stage), as
+    /// dasVulkan's shadow pipeline is. GL, which links no program without
+    /// a fragment shader on ES, gets an empty one.
+    pub fragment: Option<String>,
     pub color: Option<Attachment<[f64; 4]>>,
     /// Depth test LESS with writes, against this attachment.
     pub depth: Option<Attachment<f32>>,
@@ -252,7 +280,14 @@ impl FramePlan {
 
     /// Adds a target and returns its id.
     pub fn add_target(&mut self, name: &str, width: u32, height: u32, format: Format) -> TargetId {
-        self.targets.push(Target { name: name.to_string(), width, height, format });
+        self.targets.push(Target { name: name.to_string(), width, height, format, contents: None });
+        TargetId(self.targets.len() - 1)
+    }
+
+    /// Adds an `Rgba8` texture holding `texels` (top row first).
+    pub fn add_texture(&mut self, name: &str, width: u32, height: u32, texels: Vec<u8>) -> TargetId {
+        debug_assert_eq!(texels.len(), (width * height * 4) as usize);
+        self.targets.push(Target { name: name.to_string(), width, height, format: Format::Rgba8, contents: Some(texels) });
         TargetId(self.targets.len() - 1)
     }
 

@@ -63,7 +63,7 @@ pub fn plan(params: &FrameParams) -> FramePlan {
     plan.passes.push(Pass {
         name: "shadow".into(),
         vertex: scene::SHADOW_VS.into(),
-        fragment: scene::SHADOW_FS.into(),
+        fragment: Some(scene::SHADOW_FS.into()),
         color: None,
         depth: Some(Attachment { target: shadow_map, clear: 1.0 }),
         cull: Cull::None,
@@ -82,7 +82,7 @@ pub fn plan(params: &FrameParams) -> FramePlan {
     plan.passes.push(Pass {
         name: "main".into(),
         vertex: scene::MAIN_VS.into(),
-        fragment: scene::MAIN_FS.into(),
+        fragment: Some(scene::MAIN_FS.into()),
         color: Some(Attachment { target: color, clear: [c[0], c[1], c[2], 1.0] }),
         depth: Some(Attachment { target: depth, clear: 1.0 }),
         cull: Cull::None,
@@ -125,7 +125,7 @@ pub fn camera_depth_plan(params: &FrameParams) -> FramePlan {
     plan.passes.push(Pass {
         name: "camera depth".into(),
         vertex: scene::SHADOW_VS.into(),
-        fragment: scene::SHADOW_FS.into(),
+        fragment: Some(scene::SHADOW_FS.into()),
         color: None,
         depth: Some(Attachment { target: depth, clear: 1.0 }),
         cull: Cull::None,

@@ -244,7 +244,7 @@ impl TechFrame {
             plan.passes.push(Pass {
                 name: if maps.len() > 1 { format!("shadow {i}") } else { "shadow".into() },
                 vertex: shadow_vs.clone(),
-                fragment: shadow_fs.clone(),
+                fragment: Some(shadow_fs.clone()),
                 color: rgba.then_some(Attachment { target: map, clear: [1.0; 4] }),
                 depth: Some(Attachment { target: map_depth.unwrap_or(map), clear: 1.0 }),
                 cull: if t.cull_front() { Cull::Front } else { Cull::None },
@@ -266,7 +266,7 @@ impl TechFrame {
         plan.passes.push(Pass {
             name: "main".into(),
             vertex: main_vs,
-            fragment: main_fs,
+            fragment: Some(main_fs),
             color: Some(Attachment { target: color, clear: [c[0], c[1], c[2], 1.0] }),
             depth: Some(Attachment { target: depth, clear: 1.0 }),
             cull: Cull::None,

@@ -31,11 +31,14 @@ fn texel_format(f: Format) -> (u32, u32, u32, usize) {
 impl GlExecutor {
     pub(super) fn frame(&self, prepared: &GlPrepared, plan: &FramePlan) -> Result<Readback, ExecError> {
         let textures = self.targets(plan)?;
+        // Vulkan-dialect code keeps its picture's top in row 0 on GL too:
+        // GL sees it upside down, its counter-clockwise fronts clockwise.
+        let top_first = prepared.set.reflection.as_ref().is_some_and(|r| bind::is_vulkan(r, plan));
         let gl = self.ctx.current()?;
         // SAFETY: state calls on the current context.
         unsafe {
             gl.disable(glow::BLEND);
-            gl.front_face(glow::CCW);
+            gl.front_face(if top_first { glow::CW } else { glow::CCW });
             gl.depth_func(glow::LESS);
             gl.depth_mask(true);
         }
@@ -47,7 +50,7 @@ impl GlExecutor {
             gl.disable(glow::POLYGON_OFFSET_FILL);
             gl.disable(glow::CULL_FACE);
         }
-        self.read_back(plan, &textures)
+        self.read_back(plan, &textures, top_first)
     }
 
     /// Every target of the plan as a one-level texture.
@@ -60,7 +63,18 @@ impl GlExecutor {
             unsafe {
                 let tex = Obj::new(&self.ctx, gl.create_texture().map_err(ExecError::Api)?);
                 gl.bind_texture(glow::TEXTURE_2D, Some(tex.raw()));
-                gl.tex_image_2d(glow::TEXTURE_2D, 0, internal as i32, t.width as i32, t.height as i32, 0, format, ty, glow::PixelUnpackData::Slice(None));
+                gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);
+                gl.tex_image_2d(
+                    glow::TEXTURE_2D,
+                    0,
+                    internal as i32,
+                    t.width as i32,
+                    t.height as i32,
+                    0,
+                    format,
+                    ty,
+                    glow::PixelUnpackData::Slice(t.contents.as_deref()),
+                );
                 // One level: complete without a sampler object too.
                 gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MIN_FILTER, glow::NEAREST as i32);
                 gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAG_FILTER, glow::NEAREST as i32);
@@ -174,7 +188,9 @@ impl GlExecutor {
                         Geometry::Vertices(n) => (None, n as i32),
                     };
                     gl.bind_vertex_array(Some(self.vao(&linked, mesh)?));
-                    if mesh.is_some() {
+                    if let Some(i) = mesh.and_then(|m| m.instances) {
+                        gl.draw_elements_instanced(glow::TRIANGLES, count, glow::UNSIGNED_INT, 0, i.count as i32);
+                    } else if mesh.is_some() {
                         gl.draw_elements(glow::TRIANGLES, count, glow::UNSIGNED_INT, 0);
                     } else {
                         gl.draw_arrays(glow::TRIANGLES, 0, count);
@@ -198,8 +214,9 @@ impl GlExecutor {
         }
     }
 
-    /// The read-back target's texels, top row first.
-    fn read_back(&self, plan: &FramePlan, textures: &[Obj<glow::Texture>]) -> Result<Readback, ExecError> {
+    /// The read-back target's texels, top row first (`top_first`: memory
+    /// row 0 is already the picture's top).
+    fn read_back(&self, plan: &FramePlan, textures: &[Obj<glow::Texture>], top_first: bool) -> Result<Readback, ExecError> {
         let t = plan.target(plan.readback);
         let depth = t.format.is_depth();
         let _fbo = if depth { self.framebuffer(textures, None, Some(plan.readback))? } else { self.framebuffer(textures, Some(plan.readback), None)? };
@@ -217,8 +234,8 @@ impl GlExecutor {
             gl.read_pixels(0, 0, w as i32, h as i32, format, ty, glow::PixelPackData::Slice(Some(&mut bytes)));
             gl.bind_framebuffer(glow::FRAMEBUFFER, None);
         }
-        // GL returns rows bottom first; pictures are top row first.
-        let bytes: Vec<u8> = bytes.chunks_exact(w as usize * texel).rev().flatten().copied().collect();
+        // GL returns rows bottom first; GL-dialect pictures are top row first.
+        let bytes: Vec<u8> = if top_first { bytes } else { bytes.chunks_exact(w as usize * texel).rev().flatten().copied().collect() };
         Ok(match t.format {
             Format::Rgba8 => Readback::Rgba8(RgbaImage::from_raw(w, h, bytes).expect("w * h * 4 bytes")),
             Format::Rgba32Uint => Readback::Words { width: w, height: h, words: bytemuck::cast_slice(&bytes).to_vec() },

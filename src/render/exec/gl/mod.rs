@@ -123,10 +123,13 @@ struct Linked {
     vaos: RefCell<Vec<(usize, Obj<glow::VertexArray>)>>,
 }
 
+/// A pass's vertex entry point and its fragment one (none: vertex-only).
+type StagePair = (String, Option<String>);
+
 /// A program ready to run plans on one GL context.
 pub struct GlPrepared {
     set: ShaderSet,
-    linked: RefCell<HashMap<(String, String), Rc<Linked>>>,
+    linked: RefCell<HashMap<StagePair, Rc<Linked>>>,
 }
 
 impl GlExecutor {
@@ -315,9 +318,9 @@ impl GlExecutor {
         }
         let set = &prepared.set;
         let (vs_file, vs_text) = set.glsl(&pass.vertex).map_err(ExecError::Program)?;
-        let (fs_file, fs_text) = set.glsl(&pass.fragment).map_err(ExecError::Program)?;
+        let (fs_file, fs_text) = set.glsl_fragment(pass.fragment.as_deref(), vs_text).map_err(ExecError::Program)?;
         let vs = self.compile(glow::VERTEX_SHADER, vs_file, vs_text)?;
-        let fs = self.compile(glow::FRAGMENT_SHADER, fs_file, fs_text)?;
+        let fs = self.compile(glow::FRAGMENT_SHADER, &fs_file, &fs_text)?;
         // With a manifest, what the program binds is known before linking:
         // attributes and colour outputs are bound to its locations then.
         let from_manifest = match &set.reflection {
@@ -436,7 +439,13 @@ impl GlExecutor {
                 gl.bind_buffer(glow::ELEMENT_ARRAY_BUFFER, Some(b.indices.raw()));
                 for (loc, field) in &linked.attributes {
                     gl.enable_vertex_attrib_array(*loc);
-                    gl.vertex_attrib_pointer_f32(*loc, field.format.components() as i32, glow::FLOAT, false, m.stride as i32, field.offset as i32);
+                    // Instance records follow the vertices in the same buffer.
+                    let (stride, offset, divisor) = match m.instances.filter(|_| field.per_instance) {
+                        Some(i) => (i.stride, i.base + field.offset, 1),
+                        None => (m.stride, field.offset, 0),
+                    };
+                    gl.vertex_attrib_pointer_f32(*loc, field.format.components() as i32, glow::FLOAT, false, stride as i32, offset as i32);
+                    gl.vertex_attrib_divisor(*loc, divisor);
                 }
             }
             gl.bind_vertex_array(None);

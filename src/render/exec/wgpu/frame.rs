@@ -35,7 +35,7 @@ impl WgpuExecutor {
         for (p, key) in keys.iter().enumerate() {
             self.encode_pass(&mut encoder, program, plan, fit, p, key, &views, &uniforms)?;
         }
-        self.read_back(encoder, plan, &textures[plan.readback.0], fit.portable)
+        self.read_back(encoder, plan, &textures[plan.readback.0], fit.mirrored_on_webgpu())
     }
 
     /// Every target of the plan, usable as what the plan does with it.
@@ -52,16 +52,25 @@ impl WgpuExecutor {
                 if plan.readback.0 == i {
                     usage |= U::COPY_SRC;
                 }
-                self.device.create_texture(&wgpu::TextureDescriptor {
+                if t.contents.is_some() {
+                    usage |= U::COPY_DST;
+                }
+                let size = wgpu::Extent3d { width: t.width, height: t.height, depth_or_array_layers: 1 };
+                let texture = self.device.create_texture(&wgpu::TextureDescriptor {
                     label: Some(&t.name),
-                    size: wgpu::Extent3d { width: t.width, height: t.height, depth_or_array_layers: 1 },
+                    size,
                     mip_level_count: 1,
                     sample_count: 1,
                     dimension: wgpu::TextureDimension::D2,
                     format: texture_format(t.format),
                     usage,
                     view_formats: &[],
-                })
+                });
+                if let Some(texels) = &t.contents {
+                    let layout = wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(t.width * 4), rows_per_image: None };
+                    self.queue.write_texture(texture.as_image_copy(), texels, layout, size);
+                }
+                texture
             })
             .collect()
     }
@@ -123,7 +132,7 @@ impl WgpuExecutor {
     ) -> Result<(), ExecError> {
         let pass = &plan.passes[p];
         // A pass that draws nothing only clears: it needs no pipeline.
-        let pipeline = if pass.draws.is_empty() { None } else { Some(self.pipeline(program, key, fit.portable, &pass.name)?) };
+        let pipeline = if pass.draws.is_empty() { None } else { Some(self.pipeline(program, key, fit.mirrored_on_webgpu(), &pass.name)?) };
         let samplers: Vec<Arc<wgpu::Sampler>> = pass.textures.iter().map(|t| self.sampler(t.sampling)).collect();
         let needs_stand_in = key.groups.values().flatten().any(|e| matches!(e.resource, Resource::Texture { texture: None, .. }));
         let stand_ins = needs_stand_in.then(|| [self.stand_in(false), self.stand_in(true)]);
@@ -184,11 +193,16 @@ impl WgpuExecutor {
                 rp.set_bind_group(*group, bg, &[]);
             }
             match draw.geometry {
-                Geometry::Mesh(m) => {
-                    let m = self.mesh(m);
+                Geometry::Mesh(mesh) => {
+                    let m = self.mesh(mesh);
                     rp.set_vertex_buffer(0, m.vertices.slice(..));
+                    let mut instances = 1;
+                    if let Some(i) = mesh.instances {
+                        rp.set_vertex_buffer(1, m.vertices.slice(i.base as u64..));
+                        instances = i.count;
+                    }
                     rp.set_index_buffer(m.indices.slice(..), wgpu::IndexFormat::Uint32);
-                    rp.draw_indexed(0..m.index_count, 0, 0..1);
+                    rp.draw_indexed(0..m.index_count, 0, 0..instances);
                 }
                 Geometry::Vertices(n) => rp.draw(0..n, 0..1),
             }
@@ -197,8 +211,8 @@ impl WgpuExecutor {
     }
 
     /// Copies `texture` out, submits, waits, and returns its texels top row
-    /// first (portable conventions render GL's bottom row into row 0).
-    fn read_back(&self, mut encoder: wgpu::CommandEncoder, plan: &FramePlan, texture: &wgpu::Texture, portable: bool) -> Result<Readback, ExecError> {
+    /// first (mirrored: portable GL-dialect code renders GL's bottom row into row 0).
+    fn read_back(&self, mut encoder: wgpu::CommandEncoder, plan: &FramePlan, texture: &wgpu::Texture, mirrored: bool) -> Result<Readback, ExecError> {
         let target = plan.target(plan.readback);
         let (w, h, read) = (target.width, target.height, target.format);
         let texel = match read {
@@ -233,7 +247,7 @@ impl WgpuExecutor {
         let mapped = slice.get_mapped_range().map_err(|e| ExecError::Api(format!("reading the readback: {e}")))?;
         let mut bytes = Vec::with_capacity((row * h) as usize);
         for y in 0..h {
-            let src = if portable { h - 1 - y } else { y };
+            let src = if mirrored { h - 1 - y } else { y };
             let start = (src * padded) as usize;
             bytes.extend_from_slice(&mapped[start..start + row as usize]);
         }

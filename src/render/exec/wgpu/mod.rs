@@ -33,6 +33,8 @@ fn texture_format(f: Format) -> wgpu::TextureFormat {
 
 fn vertex_format(f: VertexFormat) -> wgpu::VertexFormat {
     match f {
+        VertexFormat::Float32 => wgpu::VertexFormat::Float32,
+        VertexFormat::Float32x2 => wgpu::VertexFormat::Float32x2,
         VertexFormat::Float32x3 => wgpu::VertexFormat::Float32x3,
     }
 }
@@ -69,14 +71,16 @@ pub struct WgpuExecutor {
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
 struct PipelineKey {
     vertex: String,
-    fragment: String,
+    fragment: Option<String>,
     color: Option<Format>,
     depth: Option<Format>,
     cull: Cull,
     depth_bias: bool,
     /// (location, byte offset, format) per attribute, and the stride.
-    attributes: Vec<(u32, u32, VertexFormat)>,
+    attributes: Vec<(u32, u32, VertexFormat, bool)>,
     stride: u32,
+    /// The instance records' stride (0: not instanced).
+    instance_stride: u32,
     groups: Groups,
 }
 
@@ -238,14 +242,12 @@ impl WgpuExecutor {
         let groups = bind::wgpu::groups(&program.reflection, pass, fit, program.target == Target::Spirv).map_err(|problems| {
             ExecError::Interface(bind::InterfaceError { program: program.label.clone(), scene: plan.scene.clone(), problems })
         })?;
-        let stride = pass
-            .draws
-            .iter()
-            .find_map(|d| match d.geometry {
-                Geometry::Mesh(m) => Some(m.stride),
-                Geometry::Vertices(_) => None,
-            })
-            .unwrap_or(0);
+        let mesh = pass.draws.iter().find_map(|d| match d.geometry {
+            Geometry::Mesh(m) => Some(m),
+            Geometry::Vertices(_) => None,
+        });
+        let stride = mesh.map_or(0, |m| m.stride);
+        let instance_stride = mesh.and_then(|m| m.instances).map_or(0, |i| i.stride);
         Ok(PipelineKey {
             vertex: pass.vertex.clone(),
             fragment: pass.fragment.clone(),
@@ -253,24 +255,25 @@ impl WgpuExecutor {
             depth: pass.depth.map(|a| plan.target(a.target).format),
             cull: pass.cull,
             depth_bias: pass.depth_bias,
-            attributes: fit.attributes.iter().map(|a| (a.location, a.field.offset, a.field.format)).collect(),
+            attributes: fit.attributes.iter().map(|a| (a.location, a.field.offset, a.field.format, a.field.per_instance)).collect(),
             stride,
+            instance_stride,
             groups,
         })
     }
 
     /// The pipeline of a pass shape, made on first use.
-    fn pipeline(&self, program: &WgpuProgram, key: &PipelineKey, portable: bool, pass_name: &str) -> Result<Arc<Pipeline>, ExecError> {
+    fn pipeline(&self, program: &WgpuProgram, key: &PipelineKey, mirrored: bool, pass_name: &str) -> Result<Arc<Pipeline>, ExecError> {
         if let Some(p) = program.pipelines.lock().unwrap_or_else(|p| p.into_inner()).get(key) {
             return Ok(p.clone());
         }
-        let made = self.scoped(|| self.make_pipeline(program, key, portable)).map_err(|log| ExecError::Link { pass: pass_name.into(), log })?;
+        let made = self.scoped(|| self.make_pipeline(program, key, mirrored)).map_err(|log| ExecError::Link { pass: pass_name.into(), log })?;
         let made = Arc::new(made);
         program.pipelines.lock().unwrap_or_else(|p| p.into_inner()).insert(key.clone(), made.clone());
         Ok(made)
     }
 
-    fn make_pipeline(&self, program: &WgpuProgram, key: &PipelineKey, portable: bool) -> Pipeline {
+    fn make_pipeline(&self, program: &WgpuProgram, key: &PipelineKey, mirrored: bool) -> Pipeline {
         let layouts: BTreeMap<u32, wgpu::BindGroupLayout> = key
             .groups
             .iter()
@@ -313,13 +316,24 @@ impl WgpuExecutor {
         let group_count = layouts.keys().max().map_or(0, |g| g + 1);
         let list: Vec<Option<&wgpu::BindGroupLayout>> = (0..group_count).map(|g| layouts.get(&g)).collect();
         let layout = self.device.create_pipeline_layout(&wgpu::PipelineLayoutDescriptor { label: None, bind_group_layouts: &list, immediate_size: 0 });
-        let attributes: Vec<wgpu::VertexAttribute> = key
-            .attributes
-            .iter()
-            .map(|&(location, offset, format)| wgpu::VertexAttribute { format: vertex_format(format), offset: offset as u64, shader_location: location })
-            .collect();
-        let buffers = [Some(wgpu::VertexBufferLayout { array_stride: key.stride as u64, step_mode: wgpu::VertexStepMode::Vertex, attributes: &attributes })];
-        let buffers: &[Option<wgpu::VertexBufferLayout>] = if key.stride == 0 { &[] } else { &buffers };
+        // Buffer 0 steps per vertex, buffer 1 (the instance records) per instance.
+        let attributes = |instance: bool| -> Vec<wgpu::VertexAttribute> {
+            key.attributes
+                .iter()
+                .filter(|a| a.3 == instance)
+                .map(|&(location, offset, format, _)| wgpu::VertexAttribute { format: vertex_format(format), offset: offset as u64, shader_location: location })
+                .collect()
+        };
+        let (per_vertex, per_instance) = (attributes(false), attributes(true));
+        let buffers = [
+            Some(wgpu::VertexBufferLayout { array_stride: key.stride as u64, step_mode: wgpu::VertexStepMode::Vertex, attributes: &per_vertex }),
+            Some(wgpu::VertexBufferLayout { array_stride: key.instance_stride as u64, step_mode: wgpu::VertexStepMode::Instance, attributes: &per_instance }),
+        ];
+        let buffers: &[Option<wgpu::VertexBufferLayout>] = match (key.stride, key.instance_stride) {
+            (0, _) => &[],
+            (_, 0) => &buffers[..1],
+            _ => &buffers,
+        };
         let color = key.color.map(|f| [Some(wgpu::ColorTargetState { format: texture_format(f), blend: None, write_mask: wgpu::ColorWrites::ALL })]);
         let module = |entry: &str| &program.modules[program.entry_module.get(entry).copied().unwrap_or(0)];
         let pipeline = self.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
@@ -328,8 +342,8 @@ impl WgpuExecutor {
             vertex: wgpu::VertexState { module: module(&key.vertex), entry_point: Some(&key.vertex), compilation_options: Default::default(), buffers },
             primitive: wgpu::PrimitiveState {
                 topology: wgpu::PrimitiveTopology::TriangleList,
-                // Portable conventions mirror y: GL's counter-clockwise fronts arrive clockwise.
-                front_face: if portable { wgpu::FrontFace::Cw } else { wgpu::FrontFace::Ccw },
+                // A mirrored y (portable GL-dialect code): GL's counter-clockwise fronts arrive clockwise.
+                front_face: if mirrored { wgpu::FrontFace::Cw } else { wgpu::FrontFace::Ccw },
                 cull_mode: match key.cull {
                     Cull::None => None,
                     Cull::Front => Some(wgpu::Face::Front),
@@ -345,9 +359,9 @@ impl WgpuExecutor {
                 bias: if key.depth_bias { wgpu::DepthBiasState { constant: 4, slope_scale: 2.0, clamp: 0.0 } } else { Default::default() },
             }),
             multisample: Default::default(),
-            fragment: Some(wgpu::FragmentState {
-                module: module(&key.fragment),
-                entry_point: Some(&key.fragment),
+            fragment: key.fragment.as_ref().map(|f| wgpu::FragmentState {
+                module: module(f),
+                entry_point: Some(f),
                 compilation_options: Default::default(),
                 targets: color.as_ref().map_or(&[], |c| c.as_slice()),
             }),
@@ -434,7 +448,7 @@ impl Executor for WgpuExecutor {
         };
         for (pass, pf) in plan.passes.iter().zip(&fit.passes).filter(|(p, _)| !p.draws.is_empty()) {
             let key = self.key(&program, plan, pass, pf)?;
-            self.pipeline(&program, &key, fit.portable, &pass.name)?;
+            self.pipeline(&program, &key, fit.mirrored_on_webgpu(), &pass.name)?;
         }
         Ok(program)
     }
