@@ -511,6 +511,7 @@ impl Build {
                 crate::Severity::Warning => "warning",
                 crate::Severity::Error => "error",
                 crate::Severity::Bug => "internal compiler error",
+                crate::Severity::Note => "note",
             };
             let place = d
                 .span

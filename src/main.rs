@@ -374,7 +374,7 @@ impl Reporter {
             self.diagnostic(d, &c.sources);
         }
         if c.suppressed_errors > 0 {
-            self.diagnostic(&Diagnostic::error_nowhere(format!("{} more errors not shown", c.suppressed_errors)), &c.sources);
+            self.diagnostic(&Diagnostic::suppressed(c.suppressed_errors), &c.sources);
         }
         // A failed compilation always says why.
         if c.result.is_none() && !c.diagnostics.iter().any(|d| d.is_error()) {
@@ -582,7 +582,7 @@ fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
             reporter.diagnostic(&d, &f.compilation.sources);
         }
         if f.compilation.suppressed_errors > 0 {
-            reporter.plain(&Diagnostic::error_nowhere(format!("{} more errors not shown", f.compilation.suppressed_errors)));
+            reporter.plain(&Diagnostic::suppressed(f.compilation.suppressed_errors));
         }
         code = code.max(exit_code(f.compilation));
     }

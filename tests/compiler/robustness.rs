@@ -551,7 +551,26 @@ fn independent_errors_are_all_reported_and_capped() {
     let c = compile_source("many.das", &fs(&format!("{body}    f_color = float4(1.0)")), &Options::default());
     assert_eq!(errors(&c).len(), umbrac::Diagnostics::MAX_ERRORS);
     assert_eq!(c.suppressed_errors, 150);
-    assert!(c.render_diagnostics().ends_with("error: 150 more errors not shown\n"));
+    // A note about the report, not a 51st error.
+    assert!(c.render_diagnostics().ends_with("note: 150 more errors not shown\n\n"), "{}", c.render_diagnostics());
+
+    // The same through the command line, in both formats: 50 errors and
+    // the note; and one error over the cap says `1 more error`.
+    let d = tempfile::tempdir().unwrap();
+    for (n, more) in [(200, "150 more errors not shown"), (51, "1 more error not shown")] {
+        let body: String = (0..n).map(|i| format!("    let v{i} : int = 1.0\n")).collect();
+        std::fs::write(d.path().join("many.das"), fs(&format!("{body}    f_color = float4(1.0)"))).unwrap();
+        let o = umbrac(&["check", "many.das", "--message-format", "json"], d.path());
+        assert_eq!(o.status.code(), Some(1));
+        let lines: Vec<serde_json::Value> = String::from_utf8_lossy(&o.stdout).lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+        assert_eq!(lines.iter().filter(|l| l["severity"] == "error").count(), umbrac::Diagnostics::MAX_ERRORS);
+        let last = lines.last().unwrap();
+        assert_eq!((last["severity"].as_str(), last["message"].as_str()), (Some("note"), Some(more)), "{last}");
+        let o = umbrac(&["check", "many.das"], d.path());
+        let text = stderr(&o);
+        assert_eq!(text.lines().filter(|l| l.starts_with("error")).count(), umbrac::Diagnostics::MAX_ERRORS, "{text}");
+        assert!(text.contains(&format!("note: {more}")), "{text}");
+    }
 }
 
 // ---------------------------------------------------------------- internal errors
