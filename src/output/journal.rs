@@ -82,3 +82,36 @@ fn name_of(bytes: &[u8]) -> std::io::Result<&std::ffi::OsStr> {
     }
     Ok(std::ffi::OsStr::new(s))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_record_left_by_a_kill_is_finished_and_removed() {
+        let d = tempfile::tempdir().unwrap();
+        let dir = d.path();
+        // Killed after renaming the first of two: a.wgsl is new, b.spv old.
+        std::fs::write(dir.join("a.wgsl"), "new a").unwrap();
+        std::fs::write(dir.join("b.spv"), "old b").unwrap();
+        std::fs::write(dir.join(".umbrac-1-000001.tmp"), "new b").unwrap();
+        let (ta, tb) = (dir.join(".umbrac-1-000000.tmp"), dir.join(".umbrac-1-000001.tmp"));
+        let (da, db) = (dir.join("a.wgsl"), dir.join("b.spv"));
+        commit(dir, &[(ta.as_path(), da.as_path()), (tb.as_path(), db.as_path())]).unwrap();
+        assert_eq!(complete(dir).unwrap(), Some(1));
+        assert_eq!(std::fs::read_to_string(&da).unwrap(), "new a");
+        assert_eq!(std::fs::read_to_string(&db).unwrap(), "new b");
+        let mut left: Vec<_> = std::fs::read_dir(dir).unwrap().map(|e| e.unwrap().file_name().into_string().unwrap()).collect();
+        left.sort();
+        assert_eq!(left, ["a.wgsl", "b.spv"]);
+        assert_eq!(complete(dir).unwrap(), None, "nothing left to finish");
+    }
+
+    #[test]
+    fn a_record_naming_a_path_outside_its_directory_is_refused() {
+        let d = tempfile::tempdir().unwrap();
+        std::fs::write(d.path().join(RECORD), b"../x\0a.wgsl\0").unwrap();
+        assert!(complete(d.path()).is_err());
+        assert!(d.path().join(RECORD).exists(), "kept for a person to look at");
+    }
+}
