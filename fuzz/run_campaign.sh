@@ -11,7 +11,7 @@
 #   default 300 s per target. --seed N: one process, libFuzzer's seed N,
 #   stopping at the first finding (what .ci/run does). Without it, fork
 #   mode: a finding is recorded under fuzz/artifacts/ and the run goes on.
-#   --keep-every N (default 16): one compiled mutant in N is kept under
+#   --keep-every N (default 4): one compiled mutant in N is kept under
 #   fuzz/mutants/ and its outputs validated after the run. --targets
 #   "LIST" (default "compile parse preprocess"): the targets to run.
 #   UMBRAC_FUZZ_BIN=DIR: use the targets already built there (build.sh's
@@ -24,7 +24,7 @@ cd "$(dirname "$0")"
 secs=300
 seed=""
 jobs=1
-keep=16
+keep=4
 targets="compile parse preprocess"
 while [ $# -gt 0 ]; do
     case "$1" in

@@ -109,7 +109,7 @@ fn keep_outputs(data: &[u8], artifacts: &[umbrac::Artifact]) {
 }
 
 /// With `UMBRAC_FUZZ_KEEP=DIR`, one compiled input in `UMBRAC_FUZZ_KEEP_EVERY`
-/// (default 16, chosen by its hash, so a mutant is kept or not whatever
+/// (default 4, chosen by its hash, so a mutant is kept or not whatever
 /// the process) is copied to `DIR/<hash>.das`: the sample of accepted
 /// mutants whose outputs `fuzz/run_campaign.sh` runs through every
 /// validator after the run (processes are too slow to start per input).
@@ -117,7 +117,7 @@ fn keep_mutant(data: &[u8]) {
     static KEEP: std::sync::OnceLock<Option<(std::path::PathBuf, u64)>> = std::sync::OnceLock::new();
     let Some((dir, every)) = KEEP.get_or_init(|| {
         let dir = std::env::var_os("UMBRAC_FUZZ_KEEP")?;
-        let every = std::env::var("UMBRAC_FUZZ_KEEP_EVERY").ok().and_then(|v| v.parse().ok()).unwrap_or(16u64);
+        let every = std::env::var("UMBRAC_FUZZ_KEEP_EVERY").ok().and_then(|v| v.parse().ok()).unwrap_or(4u64);
         Some((dir.into(), every.max(1)))
     }) else {
         return;
