@@ -416,7 +416,8 @@ fn killed_compiles_leave_previous_outputs_intact() {
 }
 
 /// SIGKILL at many instants of the write phase (from the moment the first
-/// temporary appears, then a little later each time) into a directory
+/// temporary or the commit record appears, then a little later each
+/// time) into a directory
 /// holding the old version of every output: what is on disk is the old
 /// set or the new one, or the new one committed (`.umbrac-commit` present)
 /// and finished by whoever next takes the directory's lock, never a mix.
@@ -459,10 +460,12 @@ fn a_kill_never_leaves_a_mixed_set() {
             .spawn()
             .unwrap();
         let deadline = Instant::now() + Duration::from_secs(60);
+        // Half the kills aim at the first temporary, half at the commit
+        // record (the renames follow it), each a little later every time.
+        let (aim, step) = if k % 2 == 0 { (".umbrac-", 50) } else { (umbrac::output::journal::RECORD, 10) };
         loop {
-            if std::fs::read_dir(&out).unwrap().flatten().any(|e| e.file_name().to_string_lossy().starts_with(".umbrac-")) {
-                // Later into the write phase each time: 0 to 350 µs.
-                let until = Instant::now() + Duration::from_micros(50 * (k % 8));
+            if std::fs::read_dir(&out).unwrap().flatten().any(|e| e.file_name().to_string_lossy().starts_with(aim)) {
+                let until = Instant::now() + Duration::from_micros(step * (k / 2 % 8));
                 while Instant::now() < until {}
                 break;
             }
@@ -501,7 +504,7 @@ fn a_kill_never_leaves_a_mixed_set() {
         assert!(olds == 0 || news == 0, "kill {k}: a mixed set after settling: {olds} old, {news} new");
     }
     eprintln!("{kills} kills: {all_old} all old, {all_new} all new, {committed} committed and finished by the next lock holder ({finished} runs ended before the kill)");
-    assert!(all_old + committed > 0, "no kill landed before the end of the write phase");
+    assert!(all_old > 0 && committed > 0, "no kill landed before the commit point, or none between it and the last rename");
 }
 
 // ---------------------------------------------------------------- error recovery
