@@ -313,8 +313,8 @@ impl Build {
             }
         }
         for (file, source) in &self.specs {
-            let spec = match source {
-                SpecSource::Spec(s) => s.clone(),
+            let variants = match source {
+                SpecSource::Spec(s) => s.expand().map_err(|e| err(format!("variants of {}: {e}", file.display())))?,
                 #[cfg(feature = "spec")]
                 SpecSource::Toml(path) => {
                     self.cargo(&format!("rerun-if-changed={}", path.display()));
@@ -322,7 +322,7 @@ impl Build {
                 }
             };
             let group = crate::stem_of(&file.to_string_lossy());
-            for v in spec.expand().map_err(|e| err(format!("variants of {}: {e}", file.display())))? {
+            for v in variants {
                 planned.push(Planned { variant: Variant { file: file.clone(), name: v.name, defines: v.defines }, group: Some(group.clone()), source_name: file_name(file) });
             }
         }
@@ -511,6 +511,7 @@ impl Build {
                 crate::Severity::Warning => "warning",
                 crate::Severity::Error => "error",
                 crate::Severity::Bug => "internal compiler error",
+                crate::Severity::Note => "note",
             };
             let place = d
                 .span
@@ -529,11 +530,15 @@ impl Build {
 const BINDINGS: &str = "umbrac-bindings.rs";
 
 #[cfg(feature = "spec")]
-fn read_spec(path: &Path) -> Result<crate::variants::Spec, Error> {
+/// Reads and expands a TOML variant spec; errors, the expansion's too,
+/// point into it.
+fn read_spec(path: &Path) -> Result<Vec<crate::variants::Variant>, Error> {
     let text = std::fs::read_to_string(path).map_err(|e| Error { summary: format!("cannot read the variant spec {}: {e}", path.display()), details: String::new() })?;
     let mut map = crate::SourceMap::new();
     let id = map.add(path.display().to_string(), Some(path.to_path_buf()), text, None);
-    crate::variants::Spec::parse_toml(&map, id).map_err(|d| {
+    let parsed = crate::variants::Spec::parse_toml_spanned(&map, id);
+    let expanded = parsed.and_then(|(spec, spans)| spec.expand().map_err(|e| crate::Diagnostic::error(e.0, spans.of(e.1)).with_label("here")));
+    expanded.map_err(|d| {
         let details = d.render(&map);
         eprint!("{details}");
         Error { summary: format!("umbrac: the variant spec {} is not valid (diagnostics above)", path.display()), details }

@@ -10,13 +10,16 @@ use codespan_reporting::term::{self, termcolor::WriteColor};
 
 use crate::source::{SourceMap, Span};
 
-/// In JSON: `"error"`, `"warning"`, `"bug"`.
+/// In JSON: `"error"`, `"warning"`, `"bug"`, `"note"`.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Severity {
     Error,
     Warning,
     /// A bug in umbrac itself (for example naga rejecting IR that umbrac built).
     Bug,
+    /// Information about the report itself, not about the source: how
+    /// many errors the cap left out ([`Diagnostic::suppressed`]).
+    Note,
 }
 
 #[derive(Clone, Debug)]
@@ -55,6 +58,14 @@ impl Diagnostic {
         Diagnostic { severity: Severity::Bug, span, ..Diagnostic::error(message, Span::default()) }
     }
 
+    /// The note that follows a report cut at [`Diagnostics::MAX_ERRORS`]:
+    /// not an error itself, so a reader counting errors counts the shown
+    /// ones, and `n` more were found.
+    pub fn suppressed(n: usize) -> Self {
+        let errors = if n == 1 { "error" } else { "errors" };
+        Diagnostic { severity: Severity::Note, span: None, ..Diagnostic::error(format!("{n} more {errors} not shown"), Span::default()) }
+    }
+
     pub fn warning(message: impl Into<String>, span: Span) -> Self {
         Diagnostic { severity: Severity::Warning, ..Diagnostic::error(message, span) }
     }
@@ -82,6 +93,7 @@ impl Diagnostic {
         let mut d = match self.severity {
             Severity::Error => CsDiagnostic::error(),
             Severity::Warning => CsDiagnostic::warning(),
+            Severity::Note => CsDiagnostic::note(),
             Severity::Bug => CsDiagnostic::bug(),
         };
         let msg = match self.severity {
@@ -315,6 +327,7 @@ impl serde_core::Serialize for Severity {
             Severity::Error => "error",
             Severity::Warning => "warning",
             Severity::Bug => "bug",
+            Severity::Note => "note",
         };
         serializer.serialize_unit_variant("Severity", *self as u32, name)
     }

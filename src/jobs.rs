@@ -379,3 +379,51 @@ pub fn output_replacing_input<'a>(writes: impl IntoIterator<Item = (&'a Path, &'
     }
     None
 }
+
+/// The error of an output that two inputs would write (`a/x.das` and
+/// `b/x.das` into one `-o`), located in both: at the entry point that
+/// names it where it is a per-entry-point file (`def vs` makes
+/// `vs.330.vert`), else at the start of each input, whose name names it.
+/// The sources are read again for this (an input that cannot be is shown
+/// by name only).
+pub fn output_clash(file_name: &str, entry: Option<&str>, first: &Path, second: &Path) -> (crate::SourceMap, Diagnostic) {
+    let mut map = crate::SourceMap::new();
+    let mut place = |path: &Path| {
+        let text = std::fs::read_to_string(path).ok()?;
+        let at = entry.and_then(|e| entry_definition(&text, e)).unwrap_or(0..0);
+        let id = map.add(path.display().to_string(), Some(path.to_path_buf()), text, None);
+        let base = map.file(id).base;
+        Some(crate::source::Span::new(base + at.start as u32, base + at.end as u32))
+    };
+    let (at_first, at_second) = (place(first), place(second));
+    let message = format!(
+        "`{file_name}` is an output of both `{}` and `{}`; nothing was written (compile them into different directories)",
+        first.display(),
+        second.display()
+    );
+    let mut d = match at_second {
+        Some(span) => Diagnostic::error(message, span).with_label(format!("writes `{file_name}`")),
+        None => Diagnostic::error_nowhere(message),
+    };
+    if let Some(span) = at_first {
+        d = d.with_secondary(span, format!("also writes `{file_name}`"));
+    }
+    (map, d)
+}
+
+/// The byte range of `name` in the first `def name` of `text`.
+fn entry_definition(text: &str, name: &str) -> Option<std::ops::Range<usize>> {
+    let mut from = 0;
+    while let Some(i) = text[from..].find("def ") {
+        let start = from + i + 4;
+        let rest = &text[start..];
+        let skipped = rest.len() - rest.trim_start_matches([' ', '\t']).len();
+        let at = start + skipped;
+        let end = at + name.len();
+        if text[at..].starts_with(name) && !text[end..].starts_with(|c: char| c.is_alphanumeric() || c == '_') {
+            return Some(at..end);
+        }
+        from = start;
+    }
+    None
+}

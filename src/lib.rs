@@ -148,7 +148,7 @@ impl Compilation {
     pub fn render_diagnostics(&self) -> String {
         let mut s: String = self.diagnostics.iter().map(|d| d.render(&self.sources)).collect();
         if self.suppressed_errors > 0 {
-            s.push_str(&format!("error: {} more errors not shown\n", self.suppressed_errors));
+            s.push_str(&Diagnostic::suppressed(self.suppressed_errors).render(&self.sources));
         }
         s
     }

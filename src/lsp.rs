@@ -540,6 +540,7 @@ fn to_lsp_diagnostic(d: &workspace::FileDiagnostic, text: &str, ws: &Workspace) 
         severity: Some(match d.severity {
             Severity::Warning => lt::DiagnosticSeverity::WARNING,
             Severity::Error | Severity::Bug => lt::DiagnosticSeverity::ERROR,
+            Severity::Note => lt::DiagnosticSeverity::INFORMATION,
         }),
         source: Some("umbrac".into()),
         message: d.message.clone(),

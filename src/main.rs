@@ -552,11 +552,19 @@ fn load_spec(path: &Path) -> Result<Vec<umbrac::variants::Variant>, Box<(SourceM
         Err(e) => return Err(Box::new((map, Diagnostic::error_nowhere(format!("cannot read the variant spec `{}`: {e}", path.display()))))),
     };
     let id = map.add(path.display().to_string(), Some(path.to_path_buf()), text, None);
-    let spec = match umbrac::variants::Spec::parse_toml(&map, id) {
+    let (spec, spans) = match umbrac::variants::Spec::parse_toml_spanned(&map, id) {
         Ok(s) => s,
         Err(d) => return Err(Box::new((map, d))),
     };
-    spec.expand().map_err(|e| Box::new((SourceMap::new(), Diagnostic::error_nowhere(format!("`{}`: {e}", path.display())))))
+    spec.expand().map_err(|e| {
+        let label = match e.1 {
+            umbrac::variants::Place::Spec => "in this spec",
+            umbrac::variants::Place::Axes => "in these axes",
+            umbrac::variants::Place::Named(_) => "this variant",
+        };
+        let d = Diagnostic::error(e.0, spans.of(e.1)).with_label(label);
+        Box::new((map, d))
+    })
 }
 
 fn check(args: &CheckArgs) -> u8 {

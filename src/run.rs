@@ -45,7 +45,7 @@ pub trait Report {
             self.diagnostic(d, &c.sources);
         }
         if c.suppressed_errors > 0 {
-            self.diagnostic(&Diagnostic::error_nowhere(format!("{} more errors not shown", c.suppressed_errors)), &c.sources);
+            self.diagnostic(&Diagnostic::suppressed(c.suppressed_errors), &c.sources);
         }
         // A failed compilation always says why.
         if c.result.is_none() && !c.diagnostics.iter().any(|d| d.is_error()) {
@@ -188,7 +188,7 @@ pub fn compile_once(req: Request, report: &mut dyn Report) -> (u8, Watched) {
             report.diagnostic(&d, &f.compilation.sources);
         }
         if f.compilation.suppressed_errors > 0 {
-            report.plain(&Diagnostic::error_nowhere(format!("{} more errors not shown", f.compilation.suppressed_errors)));
+            report.plain(&Diagnostic::suppressed(f.compilation.suppressed_errors));
         }
         code = code.max(exit_code(f.compilation));
     }
@@ -240,12 +240,8 @@ pub fn compile_once(req: Request, report: &mut dyn Report) -> (u8, Watched) {
             continue;
         }
         if let Some((a, other)) = artifacts.iter().find_map(|a| owner.get(&out_dir.join(&a.file_name)).map(|o| (a, *o))) {
-            report.plain(&Diagnostic::error_nowhere(format!(
-                "`{}` is an output of both `{}` and `{}`; nothing was written (compile them into different directories)",
-                a.file_name,
-                other.display(),
-                path.display()
-            )));
+            let (map, d) = crate::jobs::output_clash(&a.file_name, a.entry.as_deref(), other, path);
+            report.diagnostic(&d, &map);
             code = code.max(EXIT_ERROR);
             continue;
         }

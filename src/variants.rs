@@ -63,9 +63,42 @@ pub struct Spec {
     pub axes: Vec<Axis>,
 }
 
-/// Why a spec is not valid (names that collide, an empty axis...).
+/// Why a spec is not valid (names that collide, an empty axis...), and
+/// the part of the spec at fault.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub struct SpecError(pub String);
+pub struct SpecError(pub String, pub Place);
+
+/// A part of a spec an error points at: the `[axes]` table, the `n`-th
+/// named variant, or the spec as a whole (it names no variant). With the
+/// [`SpecSpans`] of a parsed spec, a place in its file.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Place {
+    Spec,
+    Axes,
+    Named(usize),
+}
+
+/// Where the parts of a spec read from a file are ([`Spec::parse_toml_spanned`]).
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct SpecSpans {
+    /// The start of the file.
+    pub start: crate::source::Span,
+    /// The `axes` key.
+    pub axes: Option<crate::source::Span>,
+    /// Each named variant's name, in the spec's order.
+    pub named: Vec<crate::source::Span>,
+}
+
+impl SpecSpans {
+    /// Where an error at `place` points.
+    pub fn of(&self, place: Place) -> crate::source::Span {
+        match place {
+            Place::Spec => self.start,
+            Place::Axes => self.axes.unwrap_or(self.start),
+            Place::Named(i) => self.named.get(i).copied().unwrap_or(self.start),
+        }
+    }
+}
 
 impl fmt::Display for SpecError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
@@ -83,25 +116,29 @@ impl Spec {
     pub fn expand(&self) -> Result<Vec<Variant>, SpecError> {
         for a in &self.axes {
             if a.values.is_empty() {
-                return Err(SpecError(format!("axis `{}` has no values", a.name)));
+                return Err(SpecError(format!("axis `{}` has no values", a.name), Place::Axes));
             }
             if !is_define_name(&a.name) {
-                return Err(SpecError(format!("axis `{}` is not a preprocessor name", a.name)));
+                return Err(SpecError(format!("axis `{}` is not a preprocessor name", a.name), Place::Axes));
             }
         }
         let product = self.axes.iter().try_fold(1usize, |n, a| n.checked_mul(a.values.len()).filter(|&n| n <= MAX_VARIANTS));
         let Some(product) = product.filter(|p| p + self.named.len() <= MAX_VARIANTS) else {
-            return Err(SpecError(format!("the spec makes more than {MAX_VARIANTS} variants")));
+            // The axes alone, or with the named variants.
+            let place = if product.is_none() { Place::Axes } else { Place::Spec };
+            return Err(SpecError(format!("the spec makes more than {MAX_VARIANTS} variants"), place));
         };
         let mut out = self.named.clone();
-        for v in &self.named {
+        for (i, v) in self.named.iter().enumerate() {
             if !is_variant_name(&v.name) {
-                return Err(SpecError(format!("variant name `{}` must be ASCII letters, digits and `_`, not starting with a digit", v.name)));
+                return Err(SpecError(format!("variant name `{}` must be ASCII letters, digits and `_`, not starting with a digit", v.name), Place::Named(i)));
             }
             if let Some((n, _)) = v.defines.iter().find(|(n, _)| !is_define_name(n)) {
-                return Err(SpecError(format!("`{n}` in variant `{}` is not a preprocessor name", v.name)));
+                return Err(SpecError(format!("`{n}` in variant `{}` is not a preprocessor name", v.name), Place::Named(i)));
             }
         }
+        // A variant of `out` by index: a named one, or one of the axes'.
+        let place_of = |i: usize| if i < self.named.len() { Place::Named(i) } else { Place::Axes };
         if !self.axes.is_empty() {
             for i in 0..product {
                 // Mixed-radix digits, the first axis most significant.
@@ -126,24 +163,30 @@ impl Spec {
         names.sort();
         if let Some(w) = names.windows(2).find(|w| w[0].0 == w[1].0) {
             let (a, b) = (&out[w[0].1], &out[w[1].1]);
-            return Err(SpecError(format!(
-                "two variants are named `{}` ({} and {}); rename the named one or the values of an axis",
-                a.name,
-                describe(&a.defines),
-                describe(&b.defines)
-            )));
+            return Err(SpecError(
+                format!(
+                    "two variants are named `{}` ({} and {}); rename the named one or the values of an axis",
+                    a.name,
+                    describe(&a.defines),
+                    describe(&b.defines)
+                ),
+                place_of(w[0].1.min(w[1].1)),
+            ));
         }
         if out.is_empty() {
-            return Err(SpecError("the spec names no variant: add [variant.NAME] tables or an [axes] table".into()));
+            return Err(SpecError("the spec names no variant: add [variant.NAME] tables or an [axes] table".into(), Place::Spec));
         }
         // Each name is a directory's: file systems take at most 255 bytes.
-        if let Some(v) = out.iter().find(|v| v.name.len() > MAX_VARIANT_NAME_LEN) {
+        if let Some((i, v)) = out.iter().enumerate().find(|(_, v)| v.name.len() > MAX_VARIANT_NAME_LEN) {
             let shown: String = v.name.chars().take(48).collect();
-            return Err(SpecError(format!(
-                "variant `{shown}...` ({}) has a name of {} characters, and names its output directory, which can have at most {MAX_VARIANT_NAME_LEN}: shorten the axes' names or values",
-                describe(&v.defines),
-                v.name.len()
-            )));
+            return Err(SpecError(
+                format!(
+                    "variant `{shown}...` ({}) has a name of {} characters, and names its output directory, which can have at most {MAX_VARIANT_NAME_LEN}: shorten the axes' names or values",
+                    describe(&v.defines),
+                    v.name.len()
+                ),
+                place_of(i),
+            ));
         }
         Ok(out)
     }
@@ -210,6 +253,12 @@ mod toml_spec {
         /// Parses a TOML spec held in `map` as file `file` (module docs).
         /// Errors point into it.
         pub fn parse_toml(map: &SourceMap, file: crate::source::FileId) -> Result<Spec, Diagnostic> {
+            Self::parse_toml_spanned(map, file).map(|(spec, _)| spec)
+        }
+
+        /// [`Spec::parse_toml`], with where its parts are, so that the
+        /// errors of [`Spec::expand`] can point into the file too.
+        pub fn parse_toml_spanned(map: &SourceMap, file: crate::source::FileId) -> Result<(Spec, SpecSpans), Diagnostic> {
             let f = map.file(file);
             let base = f.base;
             let at = |r: std::ops::Range<usize>| Span::new(base + r.start as u32, base + r.end as u32);
@@ -218,15 +267,18 @@ mod toml_spec {
                 Diagnostic::error(format!("the variant spec is not valid TOML: {}", e.message().trim_end()), span).with_label("here")
             })?;
             let mut spec = Spec::default();
+            let mut spans = SpecSpans { start: Span::new(base, base), ..Default::default() };
             for (key, value) in doc.get_ref() {
                 match &**key.get_ref() {
                     "variant" => {
                         let table = value.get_ref().as_table().ok_or_else(|| expected(value, "a table of variants: [variant.NAME]", &at))?;
                         for (name, body) in table {
                             spec.named.push(named_variant(name, body, &at)?);
+                            spans.named.push(at(name.span()));
                         }
                     }
                     "axes" => {
+                        spans.axes = Some(at(key.span()));
                         let table = value.get_ref().as_table().ok_or_else(|| expected(value, "a table of axes: [axes] NAME = [values]", &at))?;
                         for (name, values) in table {
                             spec.axes.push(axis(name, values, &at)?);
@@ -239,7 +291,7 @@ mod toml_spec {
                     }
                 }
             }
-            Ok(spec)
+            Ok((spec, spans))
         }
     }
 

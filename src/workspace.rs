@@ -172,7 +172,8 @@ fn place_diagnostics(c: &Compilation, root: &Path) -> Vec<FileDiagnostic> {
     let not_a_program = |d: &&Diagnostic| d.message.starts_with(NO_ENTRY_POINTS);
     let mut out: Vec<FileDiagnostic> = c.diagnostics.iter().filter(|d| !not_a_program(d)).map(|d| place(d, map, &in_root)).collect();
     if c.suppressed_errors > 0 {
-        out.push(FileDiagnostic { severity: Severity::Error, start: 0, end: 0, message: format!("{} more errors not shown", c.suppressed_errors), related: Vec::new(), origin: None });
+        let note = Diagnostic::suppressed(c.suppressed_errors);
+        out.push(FileDiagnostic { severity: note.severity, start: 0, end: 0, message: note.message, related: Vec::new(), origin: None });
     }
     out
 }

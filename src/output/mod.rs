@@ -7,8 +7,10 @@
 //!    file (a directory, say) is an error before anything is written;
 //! 3. with the directory locked against other writers (`flock`), each
 //!    destination's present contents are read; each file to be replaced is
-//!    written to a temporary file in the destination directory, then the
-//!    temporaries are renamed over the destinations. Should a rename fail
+//!    written to a temporary file in the destination directory; with every
+//!    temporary whole, a commit record says which becomes which
+//!    ([`journal`]), then the temporaries are renamed over the
+//!    destinations and the record is removed. Should a rename fail
 //!    part-way, the files already replaced are restored from their
 //!    previous contents (or removed, if they are new), so a failed write
 //!    leaves the directory as it was. A file that already holds its bytes
@@ -16,7 +18,9 @@
 //!
 //! Each rename is atomic, so a reader (or a crash) never sees a half-written
 //! file, and two compiles into one directory leave the whole set of one of
-//! them, never a mix. Temporaries are removed on every error path. They are named
+//! them, never a mix. A process killed between two renames leaves its
+//! commit record, and whoever next takes the lock (the next write, or
+//! [`settle`]) finishes the renames first: no lock holder sees a mix. Temporaries are removed on every error path. They are named
 //! `.umbrac-PID-XXXXXX.tmp`: hidden, and never the name of an output. A
 //! process killed mid-write (SIGKILL, power loss) can leave one behind; the
 //! next write into the same directory removes those whose process is gone.
@@ -40,6 +44,7 @@ use std::sync::atomic::{AtomicU32, Ordering};
 
 use crate::target::Artifact;
 
+pub mod journal;
 pub mod staged;
 pub mod stamps;
 
@@ -149,6 +154,11 @@ pub fn write_outputs_known(dir: &Path, artifacts: &[Artifact], unchanged: Unchan
     // compiling into the same directory) can rename in between: one
     // compile's outputs replace another's as a set.
     let _lock = DirLock::acquire(dir).map_err(|e| err(dir, format!("cannot lock the output directory: {e}")))?;
+    // A writer killed after its commit point: its set is finished first,
+    // so the files read below are one whole set.
+    if !made_here {
+        complete_killed(dir)?;
+    }
 
     // What each destination holds now, for rollback and to see which are
     // unchanged.
@@ -223,6 +233,15 @@ pub fn write_outputs_known(dir: &Path, artifacts: &[Artifact], unchanged: Unchan
         temps.push(temp);
     }
 
+    // The commit point (journal.rs): from the record on, the new set is
+    // what the directory holds, even if this process dies between renames.
+    // One rename is atomic by itself and needs no record.
+    let recorded = todo.len() > 1;
+    if recorded {
+        let dests: Vec<PathBuf> = todo.iter().map(|&i| dir.join(&artifacts[i].file_name)).collect();
+        let pairs: Vec<(&Path, &Path)> = temps.iter().map(|t| t.path.as_path()).zip(dests.iter().map(PathBuf::as_path)).collect();
+        journal::commit(dir, &pairs).map_err(|e| err(&dir.join(journal::RECORD), e.to_string()))?;
+    }
     let mut done: Vec<usize> = Vec::new();
     for (&i, temp) in todo.iter().zip(temps) {
         let dest = dir.join(&artifacts[i].file_name);
@@ -234,6 +253,8 @@ pub fn write_outputs_known(dir: &Path, artifacts: &[Artifact], unchanged: Unchan
         #[cfg(not(test))]
         let result = temp.persist(&dest);
         if let Err(e) = result {
+            // The new set is abandoned: no later run may finish it.
+            journal::finish(dir);
             rollback(dir, artifacts, &previous, &done);
             return Err(err(&dest, e.to_string()));
         }
@@ -242,7 +263,24 @@ pub fn write_outputs_known(dir: &Path, artifacts: &[Artifact], unchanged: Unchan
         }
         done.push(i);
     }
+    if recorded {
+        journal::finish(dir);
+    }
     Ok(())
+}
+
+/// Finishes, under the directory's lock, the set of a writer killed
+/// between its commit point and its last rename (journal.rs). What a
+/// reader that needs one whole set does first: with the lock held and no
+/// record left, the files are one set. Returns how many renames it
+/// finished (`None`: no writer had been killed there).
+pub fn settle(dir: &Path) -> Result<Option<usize>, OutputError> {
+    let _lock = DirLock::acquire(dir).map_err(|e| err(dir, format!("cannot lock the output directory: {e}")))?;
+    complete_killed(dir)
+}
+
+fn complete_killed(dir: &Path) -> Result<Option<usize>, OutputError> {
+    journal::complete(dir).map_err(|e| err(&dir.join(journal::RECORD), format!("cannot finish the outputs of a killed run: {e}")))
 }
 
 /// An exclusive advisory lock (`flock`) on an output directory, held by

@@ -195,6 +195,11 @@ fn spec_errors_point_into_the_spec() {
     p.write("spec.toml", "[axes]\nA = [\"x-y\", \"x_y\"]\nSCALE = [\"1.0\"]\n");
     let e = stderr(&p.run(&["compile", "tint.das", "--variants", "spec.toml", "-o", "out"]));
     assert!(e.contains("two variants are named `a_x_y__scale_1_0`"), "{e}");
+    // Expansion errors point into the spec too: the axes, or the variant.
+    assert!(e.contains("spec.toml:1:2") && e.contains('^'), "{e}");
+    p.write("spec.toml", "[variant.base]\ndefines = { A = \"1\" }\n\n[axes]\nA = [false]\n");
+    let e = stderr(&p.run(&["compile", "tint.das", "--variants", "spec.toml", "-o", "out"]));
+    assert!(e.contains("two variants are named `base`") && e.contains("spec.toml:1:10"), "{e}");
     assert!(!p.path("out").exists());
 }
 

@@ -366,6 +366,10 @@ fn compile_a_directory() {
     let o = umbrac(&["compile", twins.to_str().unwrap(), "-o", clash.to_str().unwrap()], tmp.path());
     assert_eq!(code(&o), 1, "{}", stderr(&o));
     assert!(stderr(&o).contains("is an output of both"), "{}", stderr(&o));
+    // Located in both inputs, at the entry point that names the file.
+    let e = stderr(&o);
+    let at = |f: &str| regex_free_location(&e, f);
+    assert!(at("b.das").is_some() && at("a.das").is_some() && e.contains('^'), "{e}");
     assert!(!clash.exists() || std::fs::read_dir(&clash).unwrap().next().is_none(), "nothing is written");
 }
 
@@ -453,4 +457,13 @@ fn an_output_never_replaces_a_file_the_compile_reads() {
     let o = umbrac(&["compile", "inc/main.das", "-o", "out"], d.path());
     assert_eq!(code(&o), 0, "{}", stderr(&o));
     assert!(d.path().join("out/fs.330.frag").exists());
+}
+
+/// The `LINE:COL` after `FILE:` in a rendered diagnostic, if any.
+fn regex_free_location(text: &str, file: &str) -> Option<(usize, usize)> {
+    let i = text.find(&format!("{file}:"))? + file.len() + 1;
+    let mut parts = text[i..].splitn(3, ':');
+    let line = parts.next()?.parse().ok()?;
+    let col = parts.next()?.split(|c: char| !c.is_ascii_digit()).next()?.parse().ok()?;
+    Some((line, col))
 }
