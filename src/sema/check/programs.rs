@@ -228,7 +228,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             let slots = match global.kind {
                 GlobalKind::Uniform { .. } | GlobalKind::Storage { .. } | GlobalKind::Image { .. } => 1u32,
                 // The Vulkan dialect's sampler half is placed after all
-                // the others (`place_sampler_halves`): one slot here.
+                // the others (below): one slot here.
                 GlobalKind::Sampler { count: None, .. } if self.out.vulkan => 1,
                 GlobalKind::Sampler { count, .. } => 2 * count.unwrap_or(1),
                 _ => {
