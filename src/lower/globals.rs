@@ -84,7 +84,7 @@ impl ModuleBuilder<'_> {
                         };
                         let sampler_name = [&gname, "_sampler"].concat();
                         let (tb, sb) = match self.p.vulkan {
-                            true => (binding, binding + sema::VULKAN_SAMPLER_OFFSET),
+                            true => (binding, self.p.sampler_halves[&gid]),
                             false => (binding + 2 * i, binding + 2 * i + 1),
                         };
                         let image = self.add_global(gname, naga::AddressSpace::Handle, with_binding.then_some(naga::ResourceBinding { group, binding: tb }), image_ty, None, span);

@@ -13,11 +13,10 @@ pub type ConstId = usize;
 pub type FuncId = usize;
 pub type LocalId = usize;
 
-/// In the Vulkan dialect a `sampler2D` at `@binding = B` is one combined
-/// image-sampler; naga has none, so the GPU module (WGSL, SPIR-V) binds its
-/// texture at B and its sampler at B + this, in the same group
-/// (docs/targets.md). Bindings written in that dialect stay below it.
-pub const VULKAN_SAMPLER_OFFSET: u32 = 100;
+/// Highest `@binding` accepted (exclusive): a bound on the checker's
+/// tables, in both dialects; the sampler halves of the Vulkan dialect's
+/// combined image-samplers must fit below it too.
+pub const MAX_BINDINGS: u32 = 1000;
 
 #[derive(Debug, Default)]
 pub struct Program {
@@ -42,9 +41,15 @@ pub struct Program {
     /// The `@flat` interface globals (no interpolation).
     pub flat: std::collections::BTreeSet<GlobalId>,
     /// The program has Vulkan-dialect entry points: its resources follow
-    /// dasSpirv's rules (a sampler's sampler half at
-    /// `binding + VULKAN_SAMPLER_OFFSET`, storage images rgba8 by default).
+    /// dasSpirv's rules (a `sampler2D` is one combined image-sampler,
+    /// storage images rgba8 by default).
     pub vulkan: bool,
+    /// In the Vulkan dialect, the binding of each used (non-array)
+    /// sampler's sampler half, in the sampler's group: naga has no
+    /// combined image-sampler, so the GPU module binds its texture at the
+    /// sampler's binding and its sampler here, past every other binding
+    /// of the group in the programs that use it (docs/targets.md).
+    pub sampler_halves: std::collections::BTreeMap<GlobalId, u32>,
     /// The `@binding = N` written on a global, where one is.
     pub written_bindings: std::collections::BTreeMap<GlobalId, u32>,
 }

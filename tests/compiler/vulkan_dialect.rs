@@ -232,7 +232,8 @@ fn both_dialects_in_one_file_link_by_their_own_rules_and_adapt_by_their_own_conv
 }
 
 /// A push constant is a uniform buffer the manifest marks, and a combined
-/// image-sampler's halves are at B and B + 100 in the GPU module.
+/// image-sampler's halves are at B and just past the group's highest
+/// binding in the GPU module.
 #[test]
 fn push_constants_and_samplers_are_where_the_manifest_says() {
     let src = "struct P {\n    k : float4\n}\nvar @push_constant pc : P\nvar @set = 1 @binding = 3 tex : sampler2D\nvar @out @location = 0 o : float4\n[fragment_shader]\ndef fs {\n    o = texture(tex, float2(0.5)) * pc.k\n}\n";
@@ -247,6 +248,50 @@ fn push_constants_and_samplers_are_where_the_manifest_says() {
     let pc_module = bindings.split("pub mod pc {").nth(1).expect("a module for the push constant");
     assert!(pc_module.split("pub mod ").next().unwrap().contains("pub const PUSH_CONSTANT: bool = true;"), "{bindings}");
     let s = &out.reflection.samplers[0];
-    assert_eq!((s.group, s.texture_binding, s.sampler_binding), (1, 3, 103));
-    assert!(wgsl.contains("@group(1) @binding(103) \nvar tex_sampler"), "{wgsl}");
+    assert_eq!((s.group, s.texture_binding, s.sampler_binding), (1, 3, 4));
+    assert!(wgsl.contains("@group(1) @binding(4) \nvar tex_sampler"), "{wgsl}");
+    let tex = bindings.split("pub mod tex {").nth(1).expect("a module for the sampler");
+    assert!(tex.contains("pub const SAMPLER_BINDING: u32 = 4;"), "{bindings}");
+}
+
+/// The sampler halves take the bindings after the highest one of their
+/// group in each program, in declaration order: the bindings written stay
+/// where they are, and bindings written 0, 1, 2 ... stay gapless (what
+/// wgpu needs of a passthrough SPIR-V module). Bindings up to 999 may be
+/// written; a sampler whose half finds none below 1000 is refused (a
+/// bad-input case).
+#[test]
+fn sampler_halves_follow_the_highest_binding_of_their_group() {
+    let src = "\
+struct U {
+    k : float4
+}
+var @set = 0 @binding = 2 a : sampler2D
+var @set = 0 @binding = 0 b : sampler2D
+var @set = 0 @binding = 1 @uniform u : U
+var @set = 1 @binding = 998 far : sampler2D
+var @set = 2 @binding = 0 other : sampler2D
+var @out @location = 0 o : float4
+[fragment_shader]
+def fs {
+    o = texture(a, float2(0.5)) + texture(b, float2(0.5)) * u.k + texture(far, float2(0.5))
+}
+[fragment_shader]
+def fs2 {
+    o = texture(other, float2(0.5)) + texture(b, float2(0.5))
+}
+";
+    let c = umbrac::compile_source("halves.das", src, &Options::default());
+    let out = c.result.as_ref().unwrap_or_else(|| panic!("{}", c.render_diagnostics()));
+    let at = |n: &str| {
+        let s = out.reflection.samplers.iter().find(|s| s.name == n).unwrap_or_else(|| panic!("no sampler {n}"));
+        (s.group, s.texture_binding, s.sampler_binding)
+    };
+    // fs: group 0 holds 0, 1, 2 as written, then a's half, then b's.
+    assert_eq!(at("a"), (0, 2, 3));
+    assert_eq!(at("b"), (0, 0, 4));
+    assert_eq!(at("far"), (1, 998, 999));
+    // fs2 alone: other at 0, but b's half (shared with fs) keeps 4.
+    assert_eq!(at("other"), (2, 0, 1));
+    assert!(out.reflection.uniform_buffers.iter().any(|u| u.name == "u" && (u.group, u.binding) == (0, 1)));
 }

@@ -670,9 +670,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         // Bounds of the checker's tables; wgpu's default of 4 bind groups
         // is checked per target (`emit::limits`); 1000 bindings per group.
         let set = checked(set, "set", crate::sema::limits::MAX_SETS);
-        // The Vulkan dialect keeps binding + VULKAN_SAMPLER_OFFSET free
-        // for the sampler halves of its combined image-samplers.
-        let binding = checked(binding, "binding", if self.vulkan { crate::sema::tree::VULKAN_SAMPLER_OFFSET as i64 } else { 1000 });
+        let binding = checked(binding, "binding", crate::sema::tree::MAX_BINDINGS as i64);
         if let Some((b, _)) = binding {
             self.out.written_bindings.insert(self.out.globals.len(), b);
         }

@@ -227,8 +227,8 @@ impl<'a, 'd> Checker<'a, 'd> {
             let global = &self.out.globals[g];
             let slots = match global.kind {
                 GlobalKind::Uniform { .. } | GlobalKind::Storage { .. } | GlobalKind::Image { .. } => 1u32,
-                // The Vulkan dialect's sampler half lies past every binding
-                // it writes (`VULKAN_SAMPLER_OFFSET`): one slot here.
+                // The Vulkan dialect's sampler half is placed after all
+                // the others (below): one slot here.
                 GlobalKind::Sampler { count: None, .. } if self.out.vulkan => 1,
                 GlobalKind::Sampler { count, .. } => 2 * count.unwrap_or(1),
                 _ => {
@@ -319,7 +319,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
             let progs = &progs_of[i];
             let free = |b: u32| progs.iter().all(|&p| (b..b + n).all(|k| !taken.contains_key(&(p, group, k))));
-            let most = if self.out.vulkan { VULKAN_SAMPLER_OFFSET } else { 1000 };
+            let most = MAX_BINDINGS;
             let Some(first) = (0..most.saturating_sub(n - 1)).find(|&b| free(b)) else {
                 self.diags.push(Diagnostic::error(format!("no {n} free bindings left in group {group} (at most {most})"), self.out.globals[h.first].span));
                 no_room.insert(group, n);
@@ -332,6 +332,39 @@ impl<'a, 'd> Checker<'a, 'd> {
             }
             placed[i] = Some(first);
         }
+        // The Vulkan dialect's sampler halves (naga has no combined
+        // image-sampler): in declaration order, each at the lowest binding
+        // past every other binding of its group in each of its programs,
+        // so that bindings written 0, 1, 2 ... stay gapless (wgpu numbers
+        // a passthrough module's descriptors by their place in the layout).
+        let mut halves: Vec<(GlobalId, u32)> = Vec::new();
+        if self.out.vulkan {
+            let mut top: BTreeMap<(usize, u32), u32> = BTreeMap::new();
+            for &(p, group, b) in taken.keys() {
+                let t = top.entry((p, group)).or_insert(0);
+                *t = (*t).max(b + 1);
+            }
+            for (i, h) in holders.iter().enumerate() {
+                if placed[i].is_none() || !matches!(self.out.globals[h.first].kind, GlobalKind::Sampler { count: None, .. }) {
+                    continue;
+                }
+                let (group, progs) = (h.group, &progs_of[i]);
+                let start = progs.iter().map(|&p| top.get(&(p, group)).copied().unwrap_or(0)).max().unwrap_or(0);
+                let Some(b) = (start..MAX_BINDINGS).find(|&b| progs.iter().all(|&p| !taken.contains_key(&(p, group, b)))) else {
+                    let g = &self.out.globals[h.first];
+                    let d = Diagnostic::error(format!("no binding below {MAX_BINDINGS} is left in group {group} for the sampler half of `{}`", g.name), g.span)
+                        .with_note("naga has no combined image-sampler: a Vulkan-dialect sampler's sampler half takes the binding after the highest one of its group");
+                    self.diags.push(d);
+                    continue;
+                };
+                for &p in progs {
+                    taken.insert((p, group, b), i);
+                    top.insert((p, group), b + 1);
+                }
+                halves.push((h.first, b));
+            }
+        }
+        self.out.sampler_halves.extend(halves);
         for (g, &h) in holder_of.iter().enumerate() {
             if h >= USED {
                 continue;

@@ -32,11 +32,11 @@ var<uniform> frame: Frame;
 var<uniform> model: Model;
 @group(0) @binding(1) 
 var albedo: texture_2d<f32>;
-@group(0) @binding(101) 
+@group(0) @binding(3) 
 var albedo_sampler: sampler;
 @group(1) @binding(0) 
 var shadow: texture_depth_2d;
-@group(1) @binding(100) 
+@group(1) @binding(1) 
 var shadow_sampler: sampler_comparison;
 
 @vertex 
