@@ -181,16 +181,16 @@ pub fn write_entry(lowered: &Lowered, ep: &EntryInterface, profile: Profile) -> 
     write_entry_from(lowered, &EntryModule::new(lowered, ep, &varyings)?, ep, profile)
 }
 
-/// The GLSL name of each attribute, varying and colour output of a
-/// compile, by source name: chosen once against what naga can call
-/// anything in the GL modules that have them ([`glsl_names::NamerLabels`]),
-/// so that both stages of a program, and every profile, agree.
 /// The GLSL name of the Vulkan-dialect varying at `location` (before
 /// `glsl_names` renames it where the program already has that name).
 pub fn vulkan_varying_name(location: u32) -> String {
     format!("vk_location{location}")
 }
 
+/// The GLSL name of each attribute, varying and colour output of a
+/// compile, by source name: chosen once against what naga can call
+/// anything in the GL modules that have them ([`glsl_names::NamerLabels`]),
+/// so that both stages of a program, and every profile, agree.
 pub struct VaryingNames<'a> {
     names: Vec<(&'a str, String)>,
     /// The plain uniforms naga's namer would rename in some GL module
@@ -203,7 +203,11 @@ impl<'a> VaryingNames<'a> {
     pub fn of(lowered: &'a Lowered) -> VaryingNames<'a> {
         let with_io = || lowered.interface.entry_points.iter().filter(|ep| !ep.inputs.is_empty() || !ep.outputs.is_empty());
         let vars = || with_io().flat_map(|ep| ep.inputs.iter().chain(&ep.outputs));
-        let mut labels = glsl_names::NamerLabels::for_initials(vars().map(|v| v.name.as_str()));
+        // The names asked about: the stage I/O's, and the Vulkan dialect's
+        // location names (`vk_location0`), whatever the I/O is called.
+        let vulkan = with_io().any(|ep| ep.dialect == crate::syntax::ast::Dialect::Vulkan);
+        let location_name = vulkan.then(|| vulkan_varying_name(0));
+        let mut labels = glsl_names::NamerLabels::for_initials(vars().map(|v| v.name.as_str()).chain(location_name.as_deref()));
         for gl in with_io().filter_map(|ep| lowered.gl.get(ep.index)) {
             labels.add_module(&gl.module);
         }

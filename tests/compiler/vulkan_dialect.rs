@@ -295,3 +295,29 @@ def fs2 {
     assert_eq!(at("other"), (2, 0, 1));
     assert!(out.reflection.uniform_buffers.iter().any(|u| u.name == "u" && (u.group, u.binding) == (0, 1)));
 }
+
+/// Found by the fuzz campaign in CI: a Vulkan-dialect varying is named by
+/// its location (`vk_location0`) in GLSL, and that name must be checked
+/// against naga's names even when no stage input or output starts with
+/// its letter (the checked set was narrowed to the stage I/O's initials).
+#[test]
+fn varyings_named_by_location_when_no_io_name_shares_their_initial() {
+    let src = "var @in @location = 0 a_pos : float3
+var @out @location = 0 n_out : float2
+[vertex_shader]
+def main_vs {
+    n_out = a_pos.xy
+    gl_Position = float4(a_pos, 1.0)
+}
+var @in @location = 0 f_n : float2
+var @out @location = 0 o_color : float4
+[fragment_shader]
+def main_fs {
+    o_color = float4(f_n, 0.0, 1.0)
+}
+";
+    let c = umbrac::compile_source("initials.das", src, &Options::default());
+    let out = c.result.as_ref().unwrap_or_else(|| panic!("{}", c.render_diagnostics()));
+    assert!(text(out, "main_vs.330.vert").contains("out vec2 vk_location0;"));
+    assert!(text(out, "main_fs.300es.frag").contains("in vec2 vk_location0;"));
+}
