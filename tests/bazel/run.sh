@@ -94,7 +94,7 @@ build() {
     start=$(date +%s.%N)
     (cd "$dir" && bazel --output_user_root="$tmp/root-$name" build //:shaders --execution_log_json_file="$tmp/$name.exec.json" "$@") > "$tmp/$name.log" 2>&1 || { cat "$tmp/$name.log" >&2; echo "FAIL: build $name" >&2; exit 1; }
     end=$(date +%s.%N)
-    python3 -c "print(f'{$end - $start:.1f}')"
+    python3 -c "print(f'{$end - $start:.2f}')"
 }
 
 # The processes line: "INFO: 70 processes: 2 internal, 68 linux-sandbox."
@@ -142,7 +142,7 @@ own() {
         --target wgsl --target spirv -o "$tmp/own-$1" --cache "$tmp/own-cache" >/dev/null 2>"$tmp/own.log"
     "$umbrac" compile shaders/spirv --target spirv -o "$tmp/own-$1/spirv" --cache "$tmp/own-cache" >/dev/null 2>>"$tmp/own.log"
     end=$(date +%s.%N)
-    python3 -c "print(f'{$end - $start:.1f}')"
+    python3 -c "print(f'{$end - $start:.2f}')"
 }
 t_own_cold=$(own cold)
 t_own_warm=$(own warm)
