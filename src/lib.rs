@@ -17,6 +17,7 @@ mod serialize;
 
 pub mod batch;
 pub mod bindgen;
+pub mod bundle;
 pub mod build;
 pub mod cache;
 pub mod depfile;
