@@ -492,6 +492,7 @@ pub fn build(
                     dimension: dimension(*kind).into(),
                     sample_type: sample_type(*kind).into(),
                     comparison: kind.is_shadow(),
+                    count: r.count,
                 });
             }
             ResourceKind::Storage { ty, dsl_type, access } => {
@@ -596,6 +597,10 @@ fn requirements(module: &naga::Module) -> Option<Requirements> {
     }
     if reads(B::DrawIndex) {
         r.vulkan.push("shaderDrawParameters".into());
+    }
+    // A Vulkan-dialect descriptor array (a binding array of images).
+    if module.global_variables.iter().any(|(_, g)| matches!(module.types[g.ty].inner, naga::TypeInner::BindingArray { .. })) {
+        r.vulkan.push("shaderSampledImageArrayNonUniformIndexing (descriptor arrays indexed with nonuniformEXT; VK_EXT_descriptor_indexing)".into());
     }
     if r == Requirements::default() {
         return None;

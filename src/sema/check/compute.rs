@@ -318,10 +318,14 @@ impl<'a, 'd> Checker<'a, 'd> {
                         .with_secondary(g.span, "declared here");
                     self.diags.push(d);
                 }
-                GlobalKind::Storage { access: Access::ReadWrite, .. } | GlobalKind::Image { access: Access::ReadWrite | Access::Write, .. } if stage == naga::ShaderStage::Vertex => {
+                // Only WebGPU refuses the declaration (a pipeline whose vertex
+                // stage binds writable storage); the other targets take it.
+                GlobalKind::Storage { access: Access::ReadWrite, .. } | GlobalKind::Image { access: Access::ReadWrite | Access::Write, .. }
+                    if stage == naga::ShaderStage::Vertex && (self.targets_defaulted || self.targets.contains(&crate::Target::Wgsl)) =>
+                {
                     let d = Diagnostic::error(format!("vertex entry point `{name}` uses `{gname}`, which it could write"), span)
                         .with_secondary(g.span, "declared here")
-                        .with_note("WebGPU has no writable storage in vertex programs: declare it `@readonly`, or write it from a fragment or compute program");
+                        .with_note("WebGPU has no writable storage in vertex programs: declare it `@readonly`, write it from a fragment or compute program, or compile for targets other than `wgsl`");
                     self.diags.push(d);
                 }
                 _ => {}

@@ -228,8 +228,10 @@ impl<'a, 'd> Checker<'a, 'd> {
             let slots = match global.kind {
                 GlobalKind::Uniform { .. } | GlobalKind::Storage { .. } | GlobalKind::Image { .. } => 1u32,
                 // The Vulkan dialect's sampler half is placed after all
-                // the others (below): one slot here.
-                GlobalKind::Sampler { count: None, .. } if self.out.vulkan => 1,
+                // the others (below): one slot here; a descriptor array
+                // too (its N textures at one binding, its N samplers at
+                // the half).
+                GlobalKind::Sampler { .. } if self.out.vulkan => 1,
                 GlobalKind::Sampler { count, .. } => 2 * count.unwrap_or(1),
                 _ => {
                     holder_of[g] = UNUSED;
@@ -345,7 +347,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                 *t = (*t).max(b + 1);
             }
             for (i, h) in holders.iter().enumerate() {
-                if placed[i].is_none() || !matches!(self.out.globals[h.first].kind, GlobalKind::Sampler { count: None, .. }) {
+                if placed[i].is_none() || !matches!(self.out.globals[h.first].kind, GlobalKind::Sampler { .. }) {
                     continue;
                 }
                 let (group, progs) = (h.group, &progs_of[i]);

@@ -64,12 +64,18 @@ impl<'a, 'd> Checker<'a, 'd> {
     }
 
     /// An array of samplers in the Vulkan dialect: one descriptor array
-    /// (one binding, N elements), which umbrac does not build.
+    /// (one binding, N elements), a binding array in SPIR-V. GLSL has
+    /// none, and WebGPU has none either: naga writes wgpu's native
+    /// `enable wgpu_binding_array;`, which Chrome's tint refuses.
     pub(super) fn descriptor_array_used(&mut self, span: Span) {
-        let targets: Vec<&str> = self.targets.iter().map(|t| t.name()).collect();
-        let d = Diagnostic::error(format!("an array of samplers in the Vulkan dialect (a descriptor array at one binding) is not supported by umbrac on {}", targets.join(", ")), span)
-            .with_note("bind each sampler at its own `@binding`");
-        self.diags.push(d);
+        self.lacking_targets_used(
+            "descriptor array",
+            "an array of samplers in the Vulkan dialect (a descriptor array at one binding)",
+            span,
+            |t| t != Target::Spirv,
+            "SPIR-V binds it as one descriptor array (indexed with `nonuniformEXT`); GLSL has no descriptor arrays, and WebGPU has no binding arrays (wgpu's native `wgpu_binding_array` extension is not WebGPU: Chrome refuses it)",
+            "compile for `--target spirv`, or bind each sampler at its own `@binding`",
+        );
     }
 
     /// A read-write storage image of `format` (neither `@readonly` nor
