@@ -494,6 +494,8 @@ fn stage_name(stage: naga::ShaderStage) -> &'static str {
     match stage {
         naga::ShaderStage::Vertex => "vertex",
         naga::ShaderStage::Fragment => "fragment",
+        naga::ShaderStage::Mesh => "mesh",
+        naga::ShaderStage::Task => "task",
         _ => "compute",
     }
 }

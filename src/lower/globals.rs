@@ -9,7 +9,7 @@ use naga::TypeInner;
 
 use super::interface::{Flavor, Resource, ResourceKind};
 use super::module::{GlobalSlot, ModuleBuilder};
-use crate::sema::{self, GlobalKind};
+use crate::sema::{self, GlobalKind, Ty};
 use crate::source::Span;
 
 impl ModuleBuilder<'_> {
@@ -23,6 +23,8 @@ impl ModuleBuilder<'_> {
     pub(super) fn declare_globals(&mut self, only: Option<&std::collections::BTreeMap<sema::GlobalId, Span>>, private: &[bool]) {
         let with_binding = self.flavor != Flavor::Gl;
         let describe = self.flavor != Flavor::Gl;
+        // The mesh outputs' arrays hold what the largest mesh entry point writes.
+        let mesh_sizes = self.p.entry_points.iter().filter_map(|e| e.mesh).fold([1, 1], |a, b| [a[0].max(b[0]), a[1].max(b[1])]);
         for (gid, g) in self.p.globals.iter().enumerate() {
             let span: naga::Span = g.span.into();
             let first_resource = self.resources.len();
@@ -35,6 +37,21 @@ impl ModuleBuilder<'_> {
                 continue;
             }
             let slot = match &g.kind {
+                // Workgroup arrays the mesh entry points write (their
+                // epilogue copies them into naga's output, `lower::mesh`).
+                _ if super::mesh::is_mesh_output(g) => {
+                    let (Ty::RuntimeArray(elem), GlobalKind::Builtin(_) | GlobalKind::Io { .. }) = (&g.ty, &g.kind) else { unreachable!("a mesh output is an array") };
+                    let n = match g.kind {
+                        GlobalKind::Builtin(sema::BuiltinVar::PrimitiveTriangleIndices | sema::BuiltinVar::MeshPrimitives) => mesh_sizes[1],
+                        _ => mesh_sizes[0],
+                    };
+                    let ty = self.ty(&Ty::Array(elem.clone(), n));
+                    GlobalSlot::Var(self.add_global(g.name.clone(), naga::AddressSpace::WorkGroup, None, ty, None, span))
+                }
+                GlobalKind::TaskPayload => {
+                    let ty = self.ty(&g.ty);
+                    GlobalSlot::Var(self.add_global(g.name.clone(), naga::AddressSpace::TaskPayload, None, ty, None, span))
+                }
                 GlobalKind::Uniform { .. } if g.is_loose_uniform() && self.packs_uniforms() => {
                     let slot = self.uniform_buffer_member(gid);
                     let buffer = self.resources.iter().position(|r| matches!(slot, GlobalSlot::Packed { buffer, .. } if r.global == buffer));

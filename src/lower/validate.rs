@@ -30,7 +30,9 @@ fn validator(flavor: Flavor) -> Validator {
                 | Capabilities::DRAW_INDEX
                 // Vulkan-dialect descriptor arrays (SPIR-V only, by sema).
                 | Capabilities::TEXTURE_AND_SAMPLER_BINDING_ARRAY
-                | Capabilities::TEXTURE_AND_SAMPLER_BINDING_ARRAY_NON_UNIFORM_INDEXING,
+                | Capabilities::TEXTURE_AND_SAMPLER_BINDING_ARRAY_NON_UNIFORM_INDEXING
+                // Mesh and task entry points (SPIR-V only, by sema).
+                | Capabilities::MESH_SHADER,
         ),
     };
     Validator::new(flags, caps)

@@ -133,7 +133,17 @@ impl<'a, 'd> Checker<'a, 'd> {
                     Some(_) => {}
                 }
             }
-            if links.iter().all(|l| l.fragment != f) {
+            // A mesh entry point writing every input (one element per
+            // vertex) feeds it instead: a mesh pipeline, no link.
+            let elem = |g: GlobalId| match &self.out.globals[g].ty {
+                Ty::RuntimeArray(e) => Some((**e).clone()),
+                _ => None,
+            };
+            let meshes = eps.iter().filter(|e| vulkan(e, naga::ShaderStage::Mesh)).map(|e| io(e, IoKind::Out));
+            let fed_by_mesh = meshes.into_iter().any(|outs| {
+                ins.iter().all(|&(l, g)| outs.iter().any(|&(ol, o)| ol == l && elem(o).as_ref() == Some(&self.out.globals[g].ty) && self.out.flat.contains(&o) == self.out.flat.contains(&g)))
+            });
+            if links.iter().all(|l| l.fragment != f) && !fed_by_mesh {
                 if let Some(b) = best {
                     errors.push((f, b));
                 }
