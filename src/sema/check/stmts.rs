@@ -453,6 +453,13 @@ impl<'a, 'd> Checker<'a, 'd> {
             ast::StmtKind::With { subject, body } => self.check_with(cx, subject, body, s.span, out),
             ast::StmtKind::Return(value) => {
                 let v = value.as_ref().map(|e| self.check_expr(cx, e));
+                // Its outputs are handed over after a workgroup barrier
+                // every invocation must reach (`lower::mesh`).
+                if cx.entry && self.entry_stage == Some(naga::ShaderStage::Mesh) {
+                    let d = Diagnostic::error("a mesh entry point cannot `return`", s.span)
+                        .with_note("its outputs are handed over at its end, after a workgroup barrier every invocation must reach: put the rest under an `if` instead");
+                    self.diags.push(d);
+                }
                 self.check_return(cx, v.as_ref(), s.span);
                 out.push(Stmt::Return(v, s.span));
             }

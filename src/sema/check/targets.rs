@@ -77,7 +77,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         let what = ast::UNCOMPILED_STAGES.iter().find(|&&(n, _)| n == a.name.name.as_str()).map_or("this", |&(_, w)| w);
         let targets: Vec<&str> = self.targets.iter().map(|t| t.name()).collect();
         let d = Diagnostic::error(format!("the {what} stage (`[{}]`) is not supported by umbrac on {}", a.name.name, targets.join(", ")), a.span)
-            .with_note("GLSL 3.30, ES 3.00, GLSL 4.30 and ES 3.10 have no such stage, nor does WebGPU; naga 30 can write ray-tracing stages to SPIR-V, but umbrac does not lower them yet")
+            .with_note("GLSL 3.30, ES 3.00, GLSL 4.30 and ES 3.10 have no such stage, nor does WebGPU; naga 30 writes ray-tracing stages to SPIR-V, but its trace-ray call has no shader-binding-table offset, stride or miss index (`traceRayEXT`'s 4th to 6th arguments), so umbrac does not lower them")
             .with_note("the vertex, fragment, compute, mesh and task stages of the Vulkan dialect are supported");
         self.diags.push(d);
     }
