@@ -494,6 +494,8 @@ fn stage_name(stage: naga::ShaderStage) -> &'static str {
     match stage {
         naga::ShaderStage::Vertex => "vertex",
         naga::ShaderStage::Fragment => "fragment",
+        naga::ShaderStage::Mesh => "mesh",
+        naga::ShaderStage::Task => "task",
         _ => "compute",
     }
 }
@@ -568,8 +570,9 @@ fn entry_uses<'a>(lowered: &'a Lowered, ep: &'a EntryInterface, family: Family, 
                 }
             }
             ResourceKind::Sampler(_) => {
-                textures.add(1, r.span, &r.name);
-                samplers.add(1, r.span, &r.name);
+                let n = u64::from(r.count.unwrap_or(1));
+                textures.add(n, r.span, &r.name);
+                samplers.add(n, r.span, &r.name);
             }
             ResourceKind::Storage { .. } => storage_buffers.add(1, r.span, &r.name),
             ResourceKind::Image { .. } => storage_images.add(1, r.span, &r.name),

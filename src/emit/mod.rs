@@ -63,6 +63,11 @@ pub fn emit(lowered: &Lowered, stem: &str, source_name: &str, targets: &[Target]
     let mut glsl_names: Vec<glsl::EntryNames> = Vec::with_capacity(lowered.interface.entry_points.len());
     let varyings = glsl::VaryingNames::of(lowered);
     for ep in &lowered.interface.entry_points {
+        // No GLSL stage: nothing to name (sema refuses the GLSL targets).
+        if matches!(ep.stage, naga::ShaderStage::Mesh | naga::ShaderStage::Task) {
+            glsl_names.push(glsl::EntryNames::default());
+            continue;
+        }
         let entry_module = glsl::EntryModule::new(lowered, ep, &varyings)?;
         let naming = if needs_430 { glsl::Profile::Desktop430 } else { glsl::Profile::Desktop330 };
         let (text, names) = glsl::write_entry_from(lowered, &entry_module, ep, naming)?;
@@ -159,10 +164,15 @@ fn check_consistency(lowered: &Lowered) -> Result<(), Diagnostic> {
     for (i, ep) in eps.iter().enumerate() {
         let same = |m: &naga::EntryPoint| m.name == ep.name && m.stage == ep.stage;
         let gl = &lowered.gl[i].module.entry_points;
-        if ep.index != i || !gpu.entry_points.get(i).is_some_and(same) || gl.len() != 1 || !same(&gl[0]) {
+        // A mesh or task entry point has an empty GL module (no GLSL stage).
+        let gl_ok = match ep.stage {
+            naga::ShaderStage::Mesh | naga::ShaderStage::Task => gl.is_empty(),
+            _ => gl.len() == 1 && same(&gl[0]),
+        };
+        if ep.index != i || !gpu.entry_points.get(i).is_some_and(same) || !gl_ok {
             return Err(Diagnostic::bug(format!("entry point `{}` (index {}) does not match the lowered modules", ep.name, ep.index), None));
         }
-        if !matches!(ep.stage, naga::ShaderStage::Vertex | naga::ShaderStage::Fragment | naga::ShaderStage::Compute) {
+        if !matches!(ep.stage, naga::ShaderStage::Vertex | naga::ShaderStage::Fragment | naga::ShaderStage::Compute | naga::ShaderStage::Mesh | naga::ShaderStage::Task) {
             return Err(Diagnostic::bug(format!("entry point `{}` has unsupported stage {:?}", ep.name, ep.stage), None));
         }
     }

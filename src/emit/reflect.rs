@@ -374,6 +374,8 @@ fn stage_name(stage: ShaderStage) -> &'static str {
     match stage {
         ShaderStage::Vertex => "vertex",
         ShaderStage::Fragment => "fragment",
+        naga::ShaderStage::Mesh => "mesh",
+        naga::ShaderStage::Task => "task",
         _ => "compute",
     }
 }
@@ -492,6 +494,7 @@ pub fn build(
                     dimension: dimension(*kind).into(),
                     sample_type: sample_type(*kind).into(),
                     comparison: kind.is_shadow(),
+                    count: r.count,
                 });
             }
             ResourceKind::Storage { ty, dsl_type, access } => {
@@ -597,10 +600,26 @@ fn requirements(module: &naga::Module) -> Option<Requirements> {
     if reads(B::DrawIndex) {
         r.vulkan.push("shaderDrawParameters".into());
     }
+    let mesh = module.entry_points.iter().any(|e| matches!(e.stage, naga::ShaderStage::Mesh | naga::ShaderStage::Task));
+    if mesh {
+        r.vulkan.push("VK_EXT_mesh_shader: meshShader, taskShader (as the program has them)".into());
+    }
+    let primitive_id_written = module.entry_points.iter().filter_map(|e| e.mesh_info.as_ref()).any(|m| match &module.types[m.primitive_output_type].inner {
+        naga::TypeInner::Struct { members, .. } => members.iter().any(|mb| mb.binding == Some(naga::Binding::BuiltIn(B::PrimitiveIndex))),
+        _ => false,
+    });
+    if primitive_id_written {
+        r.vulkan.push("geometryShader (the Geometry capability naga declares for a mesh shader's gl_PrimitiveID)".into());
+    }
+    // A Vulkan-dialect descriptor array (a binding array of images).
+    if module.global_variables.iter().any(|(_, g)| matches!(module.types[g.ty].inner, naga::TypeInner::BindingArray { .. })) {
+        r.vulkan.push("shaderSampledImageArrayNonUniformIndexing (descriptor arrays indexed with nonuniformEXT; VK_EXT_descriptor_indexing)".into());
+    }
     if r == Requirements::default() {
         return None;
     }
-    r.spirv_version = if subgroups { "1.3" } else { "1.0" }.into();
+    let (major, minor) = super::spirv::version(module);
+    r.spirv_version = format!("{major}.{minor}");
     Some(r)
 }
 
@@ -665,7 +684,10 @@ fn entry_point(
             .iter()
             .map(|var| {
                 let (format, size) = vertex_format(module, var.ty);
-                let glsl_name = glsl.get(&var.location).cloned().ok_or_else(|| {
+                // A mesh entry point has no GLSL: its per-vertex outputs
+                // are named as the GLSL fragment stage names its inputs.
+                let mesh = (ep.stage == ShaderStage::Mesh).then(|| glsl::vulkan_varying_name(var.location));
+                let glsl_name = mesh.or_else(|| glsl.get(&var.location).cloned()).ok_or_else(|| {
                     Diagnostic::bug(format!("GLSL of `{}` has no variable for `{}` at location {}", ep.name, var.name, var.location), None)
                 })?;
                 Ok(Io {
@@ -723,7 +745,7 @@ fn entry_point(
         uniform_buffers,
         uniforms,
         samplers,
-        workgroup_size: (ep.stage == ShaderStage::Compute).then_some(ep.workgroup_size),
+        workgroup_size: matches!(ep.stage, ShaderStage::Compute | ShaderStage::Mesh | ShaderStage::Task).then_some(ep.workgroup_size),
         storage_buffers: (!storage_buffers.is_empty()).then_some(storage_buffers),
         storage_images: (!storage_images.is_empty()).then_some(storage_images),
         dialect: (ep.dialect == crate::syntax::ast::Dialect::Vulkan).then(|| "vulkan".to_string()),

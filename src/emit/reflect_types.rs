@@ -396,6 +396,11 @@ pub struct Sampler {
     pub sample_type: String,
     /// Whether the sampler must be a comparison sampler.
     pub comparison: bool,
+    /// The length of a descriptor array (a Vulkan-dialect `sampler2D[N]`:
+    /// N textures at `texture_binding`, N samplers at `sampler_binding`);
+    /// absent for one sampler.
+    #[cfg_attr(feature = "deserialize", serde(default))]
+    pub count: Option<u32>,
 }
 
 serialize_struct!(Reflection {
@@ -544,4 +549,5 @@ serialize_struct!(Sampler {
     "dimension": dimension,
     "sample_type": sample_type,
     "comparison": comparison,
+    "count": count?,
 });

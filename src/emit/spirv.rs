@@ -26,7 +26,8 @@ use crate::lower::Lowered;
 ///   policies that make every target read the same defined value.
 /// - SPIR-V 1.0, so any Vulkan 1.0 driver takes it; 1.3 (Vulkan 1.1)
 ///   where the module uses subgroups, whose GroupNonUniform instructions
-///   need it (the manifest's `requires`).
+///   need it, 1.4 (Vulkan 1.2) with mesh or task entry points (the
+///   manifest's `requires`; [`version`]).
 pub fn options(module: &naga::Module) -> Options<'static> {
     let binding_map = module
         .global_variables
@@ -36,7 +37,7 @@ pub fn options(module: &naga::Module) -> Options<'static> {
         .collect();
     Options {
         binding_map,
-        lang_version: if super::wgsl::uses_subgroups(module) { (1, 3) } else { (1, 0) },
+        lang_version: version(module),
         flags: WriterFlags::DEBUG,
         fake_missing_bindings: false,
         bounds_check_policies: BoundsCheckPolicies {
@@ -47,6 +48,19 @@ pub fn options(module: &naga::Module) -> Options<'static> {
         },
         debug_info: None,
         ..Options::default()
+    }
+}
+
+/// The SPIR-V version a module needs: 1.4 for mesh and task entry points
+/// (SPV_EXT_mesh_shader: Vulkan 1.2 with VK_EXT_mesh_shader), 1.3 for
+/// subgroups (Vulkan 1.1), 1.0 otherwise.
+pub fn version(module: &naga::Module) -> (u8, u8) {
+    if module.entry_points.iter().any(|e| matches!(e.stage, naga::ShaderStage::Mesh | naga::ShaderStage::Task)) {
+        (1, 4)
+    } else if super::wgsl::uses_subgroups(module) {
+        (1, 3)
+    } else {
+        (1, 0)
     }
 }
 

@@ -20,6 +20,14 @@ impl FnBuilder<'_, '_> {
                 self.push(block, stmt, s);
                 self.literal(naga::Literal::Bool(false), s)
             }
+            Builtin::SetMeshOutputs => {
+                self.set_mesh_outputs(args, block, s);
+                self.literal(naga::Literal::Bool(false), s)
+            }
+            Builtin::EmitMeshTasks => {
+                self.emit_mesh_tasks(args, block, s);
+                self.literal(naga::Literal::Bool(false), s)
+            }
             Builtin::Atomic(op) => {
                 let pointer = self.pointer(&args[0], block).expect("sema checks that an atomic operates on a place");
                 let value = self.expr(&args[args.len() - 1], block);

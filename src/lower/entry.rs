@@ -71,6 +71,12 @@ impl FnBuilder<'_, '_> {
             self.push(block, Statement::Return { value: None }, s);
             return;
         };
+        match outs.stage {
+            naga::ShaderStage::Task => return self.task_return_none(block, s),
+            naga::ShaderStage::Mesh => self.mesh_epilogue(block, s),
+            _ => {}
+        }
+        let FnKind::Entry(outs) = &self.kind else { unreachable!("an entry point") };
         let Some(result_ty) = outs.result_ty else {
             self.push(block, Statement::Return { value: None }, s);
             return;
@@ -185,6 +191,24 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
             iface.loose.extend(m.loose_of[gid]);
             continue;
         }
+        // A mesh entry point's outputs and the task payload are module
+        // variables (`lower::mesh`).
+        if super::mesh::is_mesh_output(g) || matches!(g.kind, GlobalKind::TaskPayload) {
+            if describe {
+                match (&g.kind, &g.ty) {
+                    (GlobalKind::Builtin(b), _) => iface.builtins.push(b.name().to_string()),
+                    // A per-vertex output: its element type.
+                    (GlobalKind::Io { .. }, Ty::RuntimeArray(elem)) => {
+                        let ty = m.ty(elem);
+                        let dsl_type = m.show_ty(elem);
+                        let interp = interpolation(elem, p.flat.contains(&gid));
+                        iface.outputs.push(IoVar { name: g.name.clone(), location: ep.location(gid), explicit_location: true, span: g.span, ty, dsl_type, interpolation: interp.0 });
+                    }
+                    _ => {}
+                }
+            }
+            continue;
+        }
         if matches!(g.kind, GlobalKind::Workgroup) {
             if describe {
                 iface.workgroup.push((g.name.clone(), g.span));
@@ -282,7 +306,17 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
     iface.outputs.sort_by_key(|v| v.location);
     let members = outs.iter().map(|o| (o.0, o.1, o.2)).collect();
     let result_ty = (!outs.is_empty()).then(|| m.struct_type([&ep.name, "_out"].concat(), outs.into_iter().map(|o| (o.4, o.2, Some(o.3))).collect()));
-    let kind = FnKind::Entry(EntryOutputs { result_ty, members, stage, dialect: ep.dialect });
+    // A mesh entry point's epilogue runs on invocation 0: the argument
+    // holding the local invocation index (one added where none is read).
+    let local_index = args.iter().position(|a| a.1 == naga::Binding::BuiltIn(naga::BuiltIn::LocalInvocationIndex)).unwrap_or(args.len()) as u32;
+    let (mesh_info, mesh) = match stage {
+        naga::ShaderStage::Mesh => {
+            let (info, out) = m.mesh_output(ep, local_index);
+            (Some(info), Some(out))
+        }
+        _ => (None, None),
+    };
+    let kind = FnKind::Entry(EntryOutputs { result_ty, members, stage, dialect: ep.dialect, mesh });
     let mut b = FnBuilder::new(m, &ep.name, &ep.func.locals, kind);
     b.vertex_lod = stage == Vertex;
     // The prologue's stores, then the statements.
@@ -319,13 +353,25 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
         b.func.arguments.push(naga::FunctionArgument { name: Some(name), ty, binding: Some(binding.clone()) });
         b.input_argument(&mut body, gid, h, i as u32, to_int, g.span);
     }
+    if mesh_info.is_some() && local_index as usize == args.len() {
+        let ty = b.m.ty(&Ty::Scalar(Scalar::Uint));
+        b.func.arguments.push(naga::FunctionArgument { name: Some("local_invocation_index".into()), ty, binding: Some(naga::Binding::BuiltIn(naga::BuiltIn::LocalInvocationIndex)) });
+    }
     b.stmts_into(&ep.func.body.as_slice(), &mut body);
     if !matches!(body.last(), Some(naga::Statement::Return { .. })) {
         let end = Span::new(ep.func.span.end.saturating_sub(1), ep.func.span.end);
         b.entry_return(&mut body, end);
     }
-    let result = result_ty.map(|ty| naga::FunctionResult { ty, binding: None });
+    let result = match stage {
+        // The task entry point's mesh workgroup grid (`EmitMeshTasksEXT`).
+        naga::ShaderStage::Task => Some(naga::FunctionResult { ty: b.m.ty(&Ty::Vector(Scalar::Uint, 3)), binding: Some(naga::Binding::BuiltIn(naga::BuiltIn::MeshTaskSize)) }),
+        _ => result_ty.map(|ty| naga::FunctionResult { ty, binding: None }),
+    };
     let function = b.finish(body, result);
+    let task_payload = ep.func.uses.keys().find(|&&g| matches!(p.globals[g].kind, GlobalKind::TaskPayload)).and_then(|&g| match m.globals[g] {
+        GlobalSlot::Var(h) => Some(h),
+        _ => None,
+    });
     m.module.entry_points.push(naga::EntryPoint {
         name: ep.name.clone(),
         stage,
@@ -333,8 +379,8 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
         workgroup_size: ep.workgroup_size,
         workgroup_size_overrides: None,
         function,
-        mesh_info: None,
-        task_payload: None,
+        mesh_info,
+        task_payload,
         incoming_ray_payload: None,
     });
     Ok(iface)

@@ -46,6 +46,8 @@ pub(super) struct EntryOutputs {
     pub(super) members: Vec<(Option<sema::GlobalId>, Option<BuiltinVar>, Handle<naga::Type>)>,
     pub(super) stage: naga::ShaderStage,
     pub(super) dialect: crate::syntax::ast::Dialect,
+    /// A mesh entry point's outputs (`lower::mesh`).
+    pub(super) mesh: Option<super::mesh::MeshOut>,
 }
 
 pub(super) struct FnBuilder<'m, 'p> {

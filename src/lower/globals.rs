@@ -9,7 +9,7 @@ use naga::TypeInner;
 
 use super::interface::{Flavor, Resource, ResourceKind};
 use super::module::{GlobalSlot, ModuleBuilder};
-use crate::sema::{self, GlobalKind};
+use crate::sema::{self, GlobalKind, Ty};
 use crate::source::Span;
 
 impl ModuleBuilder<'_> {
@@ -23,6 +23,8 @@ impl ModuleBuilder<'_> {
     pub(super) fn declare_globals(&mut self, only: Option<&std::collections::BTreeMap<sema::GlobalId, Span>>, private: &[bool]) {
         let with_binding = self.flavor != Flavor::Gl;
         let describe = self.flavor != Flavor::Gl;
+        // The mesh outputs' arrays hold what the largest mesh entry point writes.
+        let mesh_sizes = self.p.entry_points.iter().filter_map(|e| e.mesh).fold([1, 1], |a, b| [a[0].max(b[0]), a[1].max(b[1])]);
         for (gid, g) in self.p.globals.iter().enumerate() {
             let span: naga::Span = g.span.into();
             let first_resource = self.resources.len();
@@ -35,6 +37,21 @@ impl ModuleBuilder<'_> {
                 continue;
             }
             let slot = match &g.kind {
+                // Workgroup arrays the mesh entry points write (their
+                // epilogue copies them into naga's output, `lower::mesh`).
+                _ if super::mesh::is_mesh_output(g) => {
+                    let (Ty::RuntimeArray(elem), GlobalKind::Builtin(_) | GlobalKind::Io { .. }) = (&g.ty, &g.kind) else { unreachable!("a mesh output is an array") };
+                    let n = match g.kind {
+                        GlobalKind::Builtin(sema::BuiltinVar::PrimitiveTriangleIndices | sema::BuiltinVar::MeshPrimitives) => mesh_sizes[1],
+                        _ => mesh_sizes[0],
+                    };
+                    let ty = self.ty(&Ty::Array(elem.clone(), n));
+                    GlobalSlot::Var(self.add_global(g.name.clone(), naga::AddressSpace::WorkGroup, None, ty, None, span))
+                }
+                GlobalKind::TaskPayload => {
+                    let ty = self.ty(&g.ty);
+                    GlobalSlot::Var(self.add_global(g.name.clone(), naga::AddressSpace::TaskPayload, None, ty, None, span))
+                }
                 GlobalKind::Uniform { .. } if g.is_loose_uniform() && self.packs_uniforms() => {
                     let slot = self.uniform_buffer_member(gid);
                     let buffer = self.resources.iter().position(|r| matches!(slot, GlobalSlot::Packed { buffer, .. } if r.global == buffer));
@@ -67,10 +84,12 @@ impl ModuleBuilder<'_> {
                             sampler_binding: None,
                             texture_unit: None,
                             default: default.clone(),
+                            count: None,
                         });
                     }
                     GlobalSlot::Var(h)
                 }
+                GlobalKind::Sampler { kind, texture_unit, count: Some(n) } if self.p.vulkan => self.descriptor_array(gid, g, *kind, *n, *texture_unit),
                 GlobalKind::Sampler { kind, texture_unit, count } => {
                     let image_ty = self.add_type(None, TypeInner::Image { dim: kind.dim(), arrayed: kind.is_array(), class: kind.image_class() });
                     let sampler_ty = self.add_type(None, TypeInner::Sampler { comparison: kind.is_shadow() });
@@ -108,9 +127,10 @@ impl ModuleBuilder<'_> {
                             sampler_binding: Some(sb),
                             texture_unit: Some(*texture_unit + i),
                             default: None,
+                            count: None,
                         });
                     }
-                    GlobalSlot::Sampler { first, count: count.unwrap_or(1) }
+                    GlobalSlot::Sampler { first, count: count.unwrap_or(1), binding_array: false }
                 }
                 GlobalKind::Storage { access, unit } => {
                     let sema::Bind { group, binding } = g.bind.expect("a used resource is bound");
@@ -135,6 +155,7 @@ impl ModuleBuilder<'_> {
                             sampler_binding: None,
                             texture_unit: Some(*unit),
                             default: None,
+                            count: None,
                         });
                     }
                     GlobalSlot::Var(h)
@@ -161,6 +182,7 @@ impl ModuleBuilder<'_> {
                             sampler_binding: None,
                             texture_unit: Some(*unit),
                             default: None,
+                            count: None,
                         });
                     }
                     GlobalSlot::Image(h)
@@ -215,6 +237,50 @@ impl ModuleBuilder<'_> {
             self.globals.push(slot);
             self.resource_of.push(first_resource..self.resources.len());
         }
+    }
+
+    /// A Vulkan-dialect `sampler2D[N]`: one descriptor array at one
+    /// binding. The GPU module holds a binding array of N images at the
+    /// binding and one of N samplers at the sampler half (naga has no
+    /// combined image-samplers), described as one resource with its count.
+    /// A GL module, whose text sema lets no target write (GLSL has no
+    /// descriptor arrays), holds one element standing in for all, under
+    /// the array's name, so that its globals still match the GPU module's
+    /// by name.
+    fn descriptor_array(&mut self, gid: sema::GlobalId, g: &sema::Global, kind: sema::SamplerKind, n: u32, texture_unit: u32) -> GlobalSlot {
+        let span: naga::Span = g.span.into();
+        let mut image_ty = self.add_type(None, TypeInner::Image { dim: kind.dim(), arrayed: kind.is_array(), class: kind.image_class() });
+        let mut sampler_ty = self.add_type(None, TypeInner::Sampler { comparison: kind.is_shadow() });
+        let first = self.sampler_elems.len();
+        let sampler_name = [&g.name, "_sampler"].concat();
+        if self.flavor == Flavor::Gl {
+            let image = self.add_global(g.name.clone(), naga::AddressSpace::Handle, None, image_ty, None, span);
+            let sampler = self.add_global(sampler_name, naga::AddressSpace::Handle, None, sampler_ty, None, span);
+            self.sampler_elems.push((image, sampler));
+            return GlobalSlot::Sampler { first, count: 1, binding_array: false };
+        }
+        let size = naga::ArraySize::Constant(std::num::NonZeroU32::new(n).expect("sema sizes arrays from 1"));
+        image_ty = self.add_type(None, TypeInner::BindingArray { base: image_ty, size });
+        sampler_ty = self.add_type(None, TypeInner::BindingArray { base: sampler_ty, size });
+        let sema::Bind { group, binding } = g.bind.expect("a used resource is bound");
+        let sampler_binding = self.p.sampler_halves[&gid];
+        let image = self.add_global(g.name.clone(), naga::AddressSpace::Handle, Some(naga::ResourceBinding { group, binding }), image_ty, None, span);
+        let sampler = self.add_global(sampler_name, naga::AddressSpace::Handle, Some(naga::ResourceBinding { group, binding: sampler_binding }), sampler_ty, None, span);
+        self.sampler_elems.push((image, sampler));
+        self.resources.push(Resource {
+            name: g.name.clone(),
+            span: g.span,
+            kind: ResourceKind::Sampler(kind),
+            global: image,
+            sampler_global: Some(sampler),
+            group,
+            binding,
+            sampler_binding: Some(sampler_binding),
+            texture_unit: Some(texture_unit),
+            default: None,
+            count: Some(n),
+        });
+        GlobalSlot::Sampler { first, count: n, binding_array: true }
     }
 
     /// Appends a module variable (no memory decorations).

@@ -96,6 +96,9 @@ pub struct Resource {
     /// The host's default value of a struct uniform (`var @uniform x : T
     /// = value`); a loose uniform's is its [`LooseUniform::default`].
     pub default: Option<crate::sema::ConstValue>,
+    /// The length of a descriptor array (a Vulkan-dialect `sampler2D[N]`:
+    /// one binding, N elements, a naga binding array); `None` otherwise.
+    pub count: Option<u32>,
 }
 
 /// A loose uniform (not a struct): a member of its group's uniform buffer

@@ -42,6 +42,7 @@ mod fault;
 mod function;
 mod globals;
 mod helpers;
+mod mesh;
 pub mod interface;
 mod inverse;
 mod module;
@@ -122,6 +123,13 @@ pub fn lower_gl_entry(program: &sema::Program, index: usize, conventions: Conven
 
 /// [`lower_gl_entry`] with the program's reach already computed.
 fn gl_entry(program: &sema::Program, index: usize, conventions: Conventions, gl_uniforms: GlUniforms, reach: &Reach) -> Result<GlEntry, Diagnostic> {
+    // GLSL has no mesh or task stage (sema refuses the GLSL targets for
+    // them): an empty module stands in, and `emit` writes no GLSL of it.
+    if matches!(program.entry_points[index].stage, naga::ShaderStage::Mesh | naga::ShaderStage::Task) {
+        let module = naga::Module::default();
+        let info = validate::validate(&module, Flavor::Gl)?;
+        return Ok(GlEntry { module, info, uniforms: Vec::new() });
+    }
     let (module, _, uniforms) = build(program, Flavor::Gl, conventions, gl_uniforms, Some(index), reach, false)?;
     let info = validate::validate(&module, Flavor::Gl)?;
     Ok(GlEntry { module, info, uniforms })

@@ -15,8 +15,11 @@ pub(super) enum GlobalSlot {
     Var(Handle<naga::GlobalVariable>),
     /// A sampler or an array of samplers: `count` elements from `first` in
     /// `ModuleBuilder::sampler_elems`, each a separate image and sampler
-    /// global (naga's GLSL writer cannot write binding arrays).
-    Sampler { first: usize, count: u32 },
+    /// global (naga's GLSL writer cannot write binding arrays); or, with
+    /// `binding_array`, a Vulkan-dialect descriptor array in the GPU
+    /// module: one pair at `first`, a binding array of images and one of
+    /// samplers, `count` long.
+    Sampler { first: usize, count: u32, binding_array: bool },
     /// A storage image (Handle space): used only through the image builtins.
     Image(Handle<naga::GlobalVariable>),
     /// A loose uniform: member `member` of uniform buffer `buffer`

@@ -18,6 +18,13 @@ pub(super) enum TexOp {
     Size { level: Handle<E> },
 }
 
+/// The sampler of a texture call: a global, or the element `index` of a
+/// binding array of samplers.
+enum SamplerAt {
+    Global(Handle<naga::GlobalVariable>),
+    Element(Handle<naga::GlobalVariable>, Handle<E>),
+}
+
 impl FnBuilder<'_, '_> {
     pub(super) fn texture(&mut self, b: Builtin, args: &[Expr], ret: &Ty, s: Span, block: &mut Block) -> Handle<E> {
         // The sampler global, and the element when known here.
@@ -26,7 +33,7 @@ impl FnBuilder<'_, '_> {
             Some(Err((g, i))) => (g, None, Some(i)),
             None => unreachable!("sema checks the sampler argument"),
         };
-        let GlobalSlot::Sampler { first, count } = self.m.globals[g] else { unreachable!("sema checks the sampler argument") };
+        let GlobalSlot::Sampler { first, count, binding_array } = self.m.globals[g] else { unreachable!("sema checks the sampler argument") };
         let GlobalKind::Sampler { kind, .. } = self.m.p.globals[g].kind else { unreachable!("sema checks the sampler argument") };
         // An `...Offset` call: the call it offsets, with the offset (a
         // constant, checked by sema) as a const-expression as naga wants.
@@ -34,6 +41,20 @@ impl FnBuilder<'_, '_> {
         let rest: Vec<Handle<E>> = args.iter().enumerate().skip(1).filter(|(i, _)| Some(*i) != offset_at).map(|(_, a)| self.expr(a, block)).collect();
         let offset = offset_at.map(|at| self.texel_offset(&args[at], s));
         let op = self.texture_op(b, kind, &rest, offset, args, s);
+        if binding_array {
+            // A descriptor array: the element picked by the index (clamped
+            // like every other array index); naga marks it NonUniform in
+            // SPIR-V where its uniformity analysis finds the index varies.
+            let i = match (constant, index) {
+                (Some(k), _) => self.literal(naga::Literal::I32(k.min(count - 1) as i32), s),
+                (None, Some(index)) => self.clamped_index(index, count, block, s),
+                (None, None) => unreachable!("a sampler reference is a constant or a dynamic index"),
+            };
+            let (images, samplers) = self.m.sampler_elems[first];
+            let base = self.append_plain(E::GlobalVariable(images), s);
+            let image = self.append(E::Access { base, index: i }, s);
+            return self.texture_apply_to(&op, kind, image, SamplerAt::Element(samplers, i), ret, s);
+        }
         if let Some(k) = constant {
             let (image, sampler) = self.m.sampler_elems[first + k.min(count - 1) as usize];
             return self.texture_apply(&op, kind, image, sampler, ret, s);
@@ -42,11 +63,7 @@ impl FnBuilder<'_, '_> {
         // elements (each a separate global), the index clamped like every
         // other array index.
         let index = index.expect("a dynamic index");
-        let mut i = self.expr(index, block);
-        i = self.convert(i, &index.ty, Scalar::Int, s);
-        let lo = self.literal(naga::Literal::I32(0), s);
-        let hi = self.literal(naga::Literal::I32(count as i32 - 1), s);
-        let i = self.math(naga::MathFunction::Clamp, &[i, lo, hi], s);
+        let i = self.clamped_index(index, count, block, s);
         let ty = self.m.ty(ret);
         let var = self.func.local_variables.append(naga::LocalVariable { name: Some("texel".into()), ty, init: None }, span(s));
         self.flush(block);
@@ -63,6 +80,16 @@ impl FnBuilder<'_, '_> {
         self.push(block, Statement::Switch { selector: i, cases }, s);
         let ptr = self.append_plain(E::LocalVariable(var), s);
         self.append(E::Load { pointer: ptr }, s)
+    }
+
+    /// A run-time index into an array of `count` samplers, as an `int`
+    /// clamped to the array.
+    fn clamped_index(&mut self, index: &Expr, count: u32, block: &mut Block, s: Span) -> Handle<E> {
+        let mut i = self.expr(index, block);
+        i = self.convert(i, &index.ty, Scalar::Int, s);
+        let lo = self.literal(naga::Literal::I32(0), s);
+        let hi = self.literal(naga::Literal::I32(count as i32 - 1), s);
+        self.math(naga::MathFunction::Clamp, &[i, lo, hi], s)
     }
 
     /// A texel offset as the const-expression naga wants: a vector of
@@ -149,9 +176,20 @@ impl FnBuilder<'_, '_> {
         s: Span,
     ) -> Handle<E> {
         let img = self.append_plain(E::GlobalVariable(image), s);
+        self.texture_apply_to(op, kind, img, SamplerAt::Global(sampler), ret, s)
+    }
+
+    /// A texture operation on image expression `img` with `sampler`.
+    fn texture_apply_to(&mut self, op: &TexOp, kind: SamplerKind, img: Handle<E>, sampler: SamplerAt, ret: &Ty, s: Span) -> Handle<E> {
         match op {
             TexOp::Sample { coordinate, array_index, depth_ref, level, offset } => {
-                let smp = self.append_plain(E::GlobalVariable(sampler), s);
+                let smp = match sampler {
+                    SamplerAt::Global(g) => self.append_plain(E::GlobalVariable(g), s),
+                    SamplerAt::Element(array, index) => {
+                        let base = self.append_plain(E::GlobalVariable(array), s);
+                        self.append(E::Access { base, index }, s)
+                    }
+                };
                 let e = E::ImageSample {
                     image: img,
                     sampler: smp,

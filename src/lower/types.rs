@@ -94,7 +94,7 @@ impl TypeTable {
         TypeTable { half: Some(half_scalar(flavor)), ..TypeTable::default() }
     }
 
-    fn layout(&mut self, module: &Module, ty: Handle<Type>) -> naga::proc::TypeLayout {
+    pub(super) fn layout(&mut self, module: &Module, ty: Handle<Type>) -> naga::proc::TypeLayout {
         // The layouter only ever appends; types are never removed.
         if self.layouter.update(module.to_ctx()).is_err() {
             return naga::proc::TypeLayout { size: 0, alignment: naga::proc::Alignment::ONE };

@@ -175,6 +175,7 @@ impl ModuleBuilder<'_> {
                 sampler_binding: None,
                 texture_unit: None,
                 default: None,
+                count: None,
             });
             for (k, (&g, &stored_ty)) in members.iter().zip(&stored).enumerate() {
                 let global = &p.globals[g];
@@ -426,6 +427,7 @@ mod tests {
                 sampler_binding: None,
                 texture_unit: None,
                 default: None,
+                count: None,
             });
         }
         (p, resources)

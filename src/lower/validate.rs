@@ -27,7 +27,12 @@ fn validator(flavor: Flavor) -> Validator {
                 | Capabilities::SUBGROUP
                 | Capabilities::SUBGROUP_BARRIER
                 | Capabilities::PRIMITIVE_INDEX
-                | Capabilities::DRAW_INDEX,
+                | Capabilities::DRAW_INDEX
+                // Vulkan-dialect descriptor arrays (SPIR-V only, by sema).
+                | Capabilities::TEXTURE_AND_SAMPLER_BINDING_ARRAY
+                | Capabilities::TEXTURE_AND_SAMPLER_BINDING_ARRAY_NON_UNIFORM_INDEXING
+                // Mesh and task entry points (SPIR-V only, by sema).
+                | Capabilities::MESH_SHADER,
         ),
     };
     Validator::new(flags, caps)

@@ -159,6 +159,7 @@ pub fn reflection() -> Reflection {
         dimension: "2d".into(),
         sample_type: "depth".into(),
         comparison: true,
+        count: None,
     }];
     let files = |_: &str| BTreeMap::from([("wgsl".to_string(), "shadow.wgsl".to_string())]);
     let strings = |v: &[&str]| v.iter().map(|s| s.to_string()).collect::<Vec<_>>();

@@ -112,6 +112,12 @@ pub enum Builtin {
     ArrayLength,
     /// A subgroup operation (dasSpirv's names; sema/check/subgroup.rs).
     Subgroup(SubgroupFn),
+    /// `SetMeshOutputsEXT(vertices, primitives)` (a mesh entry point's
+    /// output counts) and `EmitMeshTasksEXT(x, y, z)` (a task entry
+    /// point's mesh workgroups, and its end), both in the entry point's
+    /// own body.
+    SetMeshOutputs,
+    EmitMeshTasks,
     /// `nonuniformEXT(i)`: marks an index as varying across a subgroup; the
     /// index as it is (umbrac has no descriptor arrays to index with it).
     NonUniform,

@@ -122,6 +122,12 @@ pub enum BuiltinVar {
     SubgroupInvocationId,
     NumSubgroups,
     SubgroupId,
+    /// A mesh entry point's outputs (dasSpirv's VK_EXT_mesh_shader arrays):
+    /// `gl_MeshVerticesEXT[i].gl_Position`, `gl_PrimitiveTriangleIndicesEXT[i]`
+    /// and `gl_MeshPrimitivesEXT[i].gl_PrimitiveID`.
+    MeshVertices,
+    PrimitiveTriangleIndices,
+    MeshPrimitives,
 }
 
 impl BuiltinVar {
@@ -142,6 +148,9 @@ impl BuiltinVar {
             BuiltinVar::NumWorkGroups => "gl_NumWorkGroups",
             BuiltinVar::WorkGroupSize => "gl_WorkGroupSize",
             BuiltinVar::DrawId => "gl_DrawID",
+            BuiltinVar::MeshVertices => "gl_MeshVerticesEXT",
+            BuiltinVar::PrimitiveTriangleIndices => "gl_PrimitiveTriangleIndicesEXT",
+            BuiltinVar::MeshPrimitives => "gl_MeshPrimitivesEXT",
             BuiltinVar::PrimitiveId => "gl_PrimitiveID",
             BuiltinVar::SubgroupSize => "gl_SubgroupSize",
             BuiltinVar::SubgroupInvocationId => "gl_SubgroupInvocationID",
@@ -167,6 +176,9 @@ impl BuiltinVar {
             "gl_NumWorkGroups" => BuiltinVar::NumWorkGroups,
             "gl_WorkGroupSize" => BuiltinVar::WorkGroupSize,
             "gl_DrawID" => BuiltinVar::DrawId,
+            "gl_MeshVerticesEXT" => BuiltinVar::MeshVertices,
+            "gl_PrimitiveTriangleIndicesEXT" => BuiltinVar::PrimitiveTriangleIndices,
+            "gl_MeshPrimitivesEXT" => BuiltinVar::MeshPrimitives,
             "gl_PrimitiveID" => BuiltinVar::PrimitiveId,
             "gl_SubgroupSize" => BuiltinVar::SubgroupSize,
             "gl_SubgroupInvocationID" => BuiltinVar::SubgroupInvocationId,
@@ -176,8 +188,11 @@ impl BuiltinVar {
         })
     }
 
-    pub const NAMES: [&'static str; 22] = [
+    pub const NAMES: [&'static str; 25] = [
         "gl_DrawID",
+        "gl_MeshVerticesEXT",
+        "gl_PrimitiveTriangleIndicesEXT",
+        "gl_MeshPrimitivesEXT",
         "gl_PrimitiveID",
         "gl_SubgroupSize",
         "gl_SubgroupInvocationID",
@@ -209,6 +224,10 @@ impl BuiltinVar {
             BuiltinVar::FrontFacing => BOOL,
             BuiltinVar::PointCoord => Ty::Vector(Scalar::Float, 2),
             BuiltinVar::VertexId | BuiltinVar::InstanceId | BuiltinVar::DrawId | BuiltinVar::PrimitiveId => INT,
+            // The element structs of the other two are the checker's
+            // (`Checker::mesh_output_ty`), which the global's type holds.
+            BuiltinVar::PrimitiveTriangleIndices => Ty::RuntimeArray(Box::new(Ty::Vector(Scalar::Uint, 3))),
+            BuiltinVar::MeshVertices | BuiltinVar::MeshPrimitives => Ty::Error,
             BuiltinVar::LocalInvocationIndex | BuiltinVar::SubgroupSize | BuiltinVar::SubgroupInvocationId | BuiltinVar::NumSubgroups | BuiltinVar::SubgroupId => UINT,
             _ => Ty::Vector(Scalar::Uint, 3),
         }
@@ -216,7 +235,12 @@ impl BuiltinVar {
 
     /// Written by the shader (an output) rather than read.
     pub fn is_output(self) -> bool {
-        matches!(self, BuiltinVar::Position | BuiltinVar::PointSize | BuiltinVar::FragDepth)
+        matches!(self, BuiltinVar::Position | BuiltinVar::PointSize | BuiltinVar::FragDepth) || self.is_mesh_output()
+    }
+
+    /// One of a mesh entry point's output arrays.
+    pub fn is_mesh_output(self) -> bool {
+        matches!(self, BuiltinVar::MeshVertices | BuiltinVar::PrimitiveTriangleIndices | BuiltinVar::MeshPrimitives)
     }
 
     /// The stage it belongs to (the first of its stages).
@@ -224,6 +248,7 @@ impl BuiltinVar {
         match self {
             BuiltinVar::Position | BuiltinVar::PointSize | BuiltinVar::VertexId | BuiltinVar::InstanceId | BuiltinVar::DrawId => naga::ShaderStage::Vertex,
             BuiltinVar::FragDepth | BuiltinVar::FragCoord | BuiltinVar::FrontFacing | BuiltinVar::PointCoord | BuiltinVar::PrimitiveId => naga::ShaderStage::Fragment,
+            BuiltinVar::MeshVertices | BuiltinVar::PrimitiveTriangleIndices | BuiltinVar::MeshPrimitives => naga::ShaderStage::Mesh,
             _ => naga::ShaderStage::Compute,
         }
     }
@@ -234,6 +259,10 @@ impl BuiltinVar {
     pub fn available_in(self, stage: naga::ShaderStage) -> bool {
         match self {
             BuiltinVar::SubgroupSize | BuiltinVar::SubgroupInvocationId => matches!(stage, naga::ShaderStage::Compute | naga::ShaderStage::Fragment),
+            // The workgroup inputs in mesh and task entry points too.
+            BuiltinVar::GlobalInvocationId | BuiltinVar::LocalInvocationId | BuiltinVar::LocalInvocationIndex | BuiltinVar::WorkGroupId | BuiltinVar::NumWorkGroups => {
+                matches!(stage, naga::ShaderStage::Compute | naga::ShaderStage::Mesh | naga::ShaderStage::Task)
+            }
             _ => self.stage() == stage,
         }
     }
@@ -279,6 +308,9 @@ pub enum GlobalKind {
     /// `@groupshared`: workgroup memory, shared by the invocations of one
     /// workgroup of a compute entry point (zero at the start of each).
     Workgroup,
+    /// `@task_payload`: what a task workgroup hands the mesh workgroups it
+    /// launches (written by the task entry point, read by the mesh one).
+    TaskPayload,
     /// `@constant_id = N`: a specialization constant (a `bool`, `int`,
     /// `uint` or `float` the host may set when it creates the pipeline),
     /// with its default. WGSL `override`, SPIR-V `OpSpecConstant`; the
@@ -396,6 +428,8 @@ pub struct EntryPoint {
     /// The dialect its stage annotation names: Vulkan-dialect entry points
     /// link stage I/O by location and are written in Vulkan conventions.
     pub dialect: crate::syntax::ast::Dialect,
+    /// A mesh entry point's `max_vertices` and `max_primitives` (triangles).
+    pub mesh: Option<[u32; 2]>,
 }
 
 impl EntryPoint {

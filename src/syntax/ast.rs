@@ -84,8 +84,7 @@ pub enum Dialect {
 }
 
 /// What a stage annotation names: the stage (`None` for a stage of the
-/// Vulkan dialect umbrac does not compile: mesh, task, ray tracing) and
-/// the dialect.
+/// Vulkan dialect umbrac does not compile: ray tracing) and the dialect.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct StageAnnotation {
     pub stage: Option<naga::ShaderStage>,
@@ -95,10 +94,6 @@ pub struct StageAnnotation {
 /// The stages of dasSpirv/dasVulkan umbrac recognises but does not compile,
 /// with the name of the stage (for the refusal).
 pub const UNCOMPILED_STAGES: &[(&str, &str)] = &[
-    ("mesh_shader", "mesh"),
-    ("task_shader", "task"),
-    ("vulkan_mesh_shader", "mesh"),
-    ("vulkan_task_shader", "task"),
     ("vulkan_raygen_shader", "ray generation"),
     ("vulkan_miss_shader", "miss"),
     ("vulkan_closest_hit_shader", "closest-hit"),
@@ -118,6 +113,8 @@ pub fn stage_annotation(name: &str) -> Option<StageAnnotation> {
         "vertex_shader" | "vulkan_vertex_shader" => (Some(S::Vertex), Dialect::Vulkan),
         "fragment_shader" | "vulkan_fragment_shader" => (Some(S::Fragment), Dialect::Vulkan),
         "compute_shader" | "vulkan_compute_shader" => (Some(S::Compute), Dialect::Vulkan),
+        "mesh_shader" | "vulkan_mesh_shader" => (Some(S::Mesh), Dialect::Vulkan),
+        "task_shader" | "vulkan_task_shader" => (Some(S::Task), Dialect::Vulkan),
         _ if UNCOMPILED_STAGES.iter().any(|&(a, _)| a == name) => (None, Dialect::Vulkan),
         _ => return None,
     };

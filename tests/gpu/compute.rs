@@ -335,6 +335,62 @@ fn has_subgroups(consumer: Consumer) -> bool {
     }
 }
 
+/// `shaders/compute/NAME.das` compiled as it is (default targets) and
+/// with `-D SUBGROUPS` for the targets with subgroups (glsl430, wgsl,
+/// spirv); both must compile.
+fn plain_and_subgroups(name: &str) -> (umbrac::Compilation, umbrac::Compilation) {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join(format!("shaders/compute/{name}.das"));
+    let plain = umbrac::compile_file(&path, &umbrac::Options::default());
+    let with_subgroups = umbrac::Options {
+        defines: vec![("SUBGROUPS".into(), None)],
+        targets: vec![Target::Glsl430, Target::Wgsl, Target::Spirv],
+        ..Default::default()
+    };
+    let subgroups = umbrac::compile_file(&path, &with_subgroups);
+    for c in [&plain, &subgroups] {
+        assert!(!c.has_errors(), "{name} does not compile:\n{}", c.render_diagnostics());
+    }
+    (plain, subgroups)
+}
+
+/// Runs `plan` on every compute consumer this machine has, each with the
+/// form it can run (`subgroups` where it has subgroup operations, `plain`
+/// elsewhere), and hands `check` the consumer, the shader set it ran, the
+/// words of buffer `readback` and whether subgroups ran. A consumer that
+/// is missing, or the Vulkan device where it takes no SPIR-V unchanged,
+/// is skipped.
+fn run_each_form(name: &str, (plain, subgroups): (&umbrac::Compilation, &umbrac::Compilation), plan: &ComputePlan, readback: &str, mut check: impl FnMut(Consumer, &ShaderSet, Vec<u32>, bool)) {
+    for consumer in Consumer::COMPUTE {
+        let ok = match consumer {
+            Consumer::VulkanWgsl | Consumer::VulkanSpirv => support::gpu::vulkan().is_some(),
+            _ => support::gpu::gl(consumer).is_some(),
+        };
+        if !ok {
+            continue;
+        }
+        if consumer == Consumer::VulkanSpirv && !support::gpu::vulkan().is_some_and(|v| v.supports_passthrough()) {
+            support::skip(format!("{name}: the Vulkan device takes no SPIR-V unchanged"));
+            continue;
+        }
+        let sub = has_subgroups(consumer);
+        if !sub {
+            eprintln!("{name} on {}: the device has no subgroup operations; running the form without them", consumer.name());
+        }
+        let c = if sub { subgroups } else { plain };
+        let target = consumer.target().expect("a compute consumer has a target");
+        let set = ShaderSet::from_compiled(name, c.result.as_ref().unwrap(), target).unwrap_or_else(|e| panic!("{e}"));
+        let r = match consumers::run_compute(consumer, &set, plan) {
+            Ok((r, _)) => r,
+            Err(e @ ExecError::Unavailable { .. }) => {
+                support::skip(format!("{name} on {}: {e}", consumer.name()));
+                continue;
+            }
+            Err(e) => panic!("{name} on {} ({}, subgroups: {sub}): {e}", consumer.name(), target.name()),
+        };
+        check(consumer, &set, words(&r.resources[readback]), sub);
+    }
+}
+
 /// `shaders/compute/spec_reduce.das`: a sum and a maximum of values scaled
 /// by a specialization constant, through atomics; with `-D SUBGROUPS`
 /// (compiled for glsl430, wgsl and spirv) each subgroup reduces first and
@@ -357,17 +413,7 @@ fn specialization_constant_atomics_and_subgroups_match_the_cpu() {
         readback: vec!["totals".into()],
         constants: vec![],
     };
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("shaders/compute/spec_reduce.das");
-    let plain = umbrac::compile_file(&path, &umbrac::Options::default());
-    let with_subgroups = umbrac::Options {
-        defines: vec![("SUBGROUPS".into(), None)],
-        targets: vec![Target::Glsl430, Target::Wgsl, Target::Spirv],
-        ..Default::default()
-    };
-    let subgroups = umbrac::compile_file(&path, &with_subgroups);
-    for c in [&plain, &subgroups] {
-        assert!(!c.has_errors(), "spec_reduce does not compile:\n{}", c.render_diagnostics());
-    }
+    let (plain, subgroups) = plain_and_subgroups("spec_reduce");
     // The CPU's answer, from the default the manifest reports.
     let spec = plain.result.as_ref().unwrap().reflection.specialization_constants.clone().expect("spec_reduce has a specialization constant");
     assert_eq!((spec[0].name.as_str(), spec[0].id, spec[0].ty.as_str()), ("SCALE", 0, "uint"));
@@ -375,34 +421,7 @@ fn specialization_constant_atomics_and_subgroups_match_the_cpu() {
     let sum = data.iter().fold(0u32, |s, v| s.wrapping_add(v.wrapping_mul(scale)));
     let largest = data.iter().max().unwrap() * scale;
     let invocations = (n.div_ceil(64) * 64) as u32;
-    for consumer in Consumer::COMPUTE {
-        let ok = match consumer {
-            Consumer::VulkanWgsl | Consumer::VulkanSpirv => support::gpu::vulkan().is_some(),
-            _ => support::gpu::gl(consumer).is_some(),
-        };
-        if !ok {
-            continue;
-        }
-        if consumer == Consumer::VulkanSpirv && !support::gpu::vulkan().is_some_and(|v| v.supports_passthrough()) {
-            support::skip("spec_reduce: the Vulkan device takes no SPIR-V unchanged".to_string());
-            continue;
-        }
-        let sub = has_subgroups(consumer);
-        if !sub {
-            eprintln!("spec_reduce on {}: the device has no subgroup operations; running the form without them", consumer.name());
-        }
-        let c = if sub { &subgroups } else { &plain };
-        let target = consumer.target().expect("a compute consumer has a target");
-        let set = ShaderSet::from_compiled("spec_reduce", c.result.as_ref().unwrap(), target).unwrap_or_else(|e| panic!("{e}"));
-        let r = match consumers::run_compute(consumer, &set, &plan) {
-            Ok((r, _)) => r,
-            Err(e @ ExecError::Unavailable { .. }) => {
-                support::skip(format!("spec_reduce on {}: {e}", consumer.name()));
-                continue;
-            }
-            Err(e) => panic!("spec_reduce on {} ({}, subgroups: {sub}): {e}", consumer.name(), target.name()),
-        };
-        let t = words(&r.resources["totals"]);
+    run_each_form("spec_reduce", (&plain, &subgroups), &plan, "totals", |consumer, set, t, sub| {
         assert_eq!(t[0], sum, "{}: the sum differs from the CPU's", consumer.name());
         assert_eq!(t[1], largest, "{}: the largest value differs from the CPU's", consumer.name());
         match sub {
@@ -417,7 +436,7 @@ fn specialization_constant_atomics_and_subgroups_match_the_cpu() {
         // consumers, whose GLSL holds the default, refuse to pretend.
         let other = ComputePlan { constants: vec![(0, 5.0)], ..plan.clone() };
         let settable = matches!(consumer, Consumer::VulkanWgsl | Consumer::VulkanSpirv);
-        match (settable, consumers::run_compute(consumer, &set, &other)) {
+        match (settable, consumers::run_compute(consumer, set, &other)) {
             (true, Ok((r, _))) => {
                 let t = words(&r.resources["totals"]);
                 let sum5 = data.iter().fold(0u32, |s, v| s.wrapping_add(v.wrapping_mul(5)));
@@ -428,7 +447,7 @@ fn specialization_constant_atomics_and_subgroups_match_the_cpu() {
             (false, Err(ExecError::Unsupported(_))) => {}
             (_, other) => panic!("spec_reduce on {}: a plan setting a specialization constant was not refused: {:?}", consumer.name(), other.map(|_| ())),
         }
-    }
+    });
 }
 
 /// `shaders/compute/vk_reduce.das`, in daslang's Vulkan dialect: a
@@ -450,17 +469,7 @@ fn vulkan_dialect_reduce_matches_the_cpu() {
         readback: vec!["sums".into()],
         constants: vec![],
     };
-    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("shaders/compute/vk_reduce.das");
-    let plain = umbrac::compile_file(&path, &umbrac::Options::default());
-    let with_subgroups = umbrac::Options {
-        defines: vec![("SUBGROUPS".into(), None)],
-        targets: vec![Target::Glsl430, Target::Wgsl, Target::Spirv],
-        ..Default::default()
-    };
-    let subgroups = umbrac::compile_file(&path, &with_subgroups);
-    for c in [&plain, &subgroups] {
-        assert!(!c.has_errors(), "vk_reduce does not compile:\n{}", c.render_diagnostics());
-    }
+    let (plain, subgroups) = plain_and_subgroups("vk_reduce");
     let spec = plain.result.as_ref().unwrap().reflection.specialization_constants.clone().expect("vk_reduce has specialization constants");
     let (weight, count) = (spec[0].default_bits, spec[1].default_bits as usize);
     assert_eq!((spec[0].id, spec[1].id, count), (3, 4, n));
@@ -469,31 +478,7 @@ fn vulkan_dialect_reduce_matches_the_cpu() {
         (used.iter().fold(0u32, |s, v| s.wrapping_add(v.wrapping_mul(weight))), used.iter().filter(|v| *v & 1 == 1).count() as u32)
     };
     let invocations = (n.div_ceil(32) * 32) as u32;
-    for consumer in Consumer::COMPUTE {
-        let ok = match consumer {
-            Consumer::VulkanWgsl | Consumer::VulkanSpirv => support::gpu::vulkan().is_some(),
-            _ => support::gpu::gl(consumer).is_some(),
-        };
-        if !ok {
-            continue;
-        }
-        if consumer == Consumer::VulkanSpirv && !support::gpu::vulkan().is_some_and(|v| v.supports_passthrough()) {
-            support::skip("vk_reduce: the Vulkan device takes no SPIR-V unchanged".to_string());
-            continue;
-        }
-        let sub = has_subgroups(consumer);
-        let c = if sub { &subgroups } else { &plain };
-        let target = consumer.target().expect("a compute consumer has a target");
-        let set = ShaderSet::from_compiled("vk_reduce", c.result.as_ref().unwrap(), target).unwrap_or_else(|e| panic!("{e}"));
-        let r = match consumers::run_compute(consumer, &set, &plan) {
-            Ok((r, _)) => r,
-            Err(e @ ExecError::Unavailable { .. }) => {
-                support::skip(format!("vk_reduce on {}: {e}", consumer.name()));
-                continue;
-            }
-            Err(e) => panic!("vk_reduce on {} ({}, subgroups: {sub}): {e}", consumer.name(), target.name()),
-        };
-        let t = words(&r.resources["sums"]);
+    run_each_form("vk_reduce", (&plain, &subgroups), &plan, "sums", |consumer, set, t, sub| {
         assert_eq!((t[0], t[1]), expect(weight, count), "{}: differs from the CPU", consumer.name());
         match sub {
             true => assert!(t[2] < invocations && t[2] >= invocations / 32, "{}: {} subgroup adds for {invocations} invocations", consumer.name(), t[2]),
@@ -502,9 +487,9 @@ fn vulkan_dialect_reduce_matches_the_cpu() {
         eprintln!("vk_reduce on {}: matches the CPU (subgroups: {sub}, {} atomic adds)", consumer.name(), t[2]);
         if consumer == Consumer::VulkanWgsl {
             let other = ComputePlan { constants: vec![(3, 11.0), (4, 600.0)], ..plan.clone() };
-            let (r, _) = consumers::run_compute(consumer, &set, &other).unwrap_or_else(|e| panic!("vk_reduce with WEIGHT = 11, COUNT = 600: {e}"));
+            let (r, _) = consumers::run_compute(consumer, set, &other).unwrap_or_else(|e| panic!("vk_reduce with WEIGHT = 11, COUNT = 600: {e}"));
             let t = words(&r.resources["sums"]);
             assert_eq!((t[0], t[1]), expect(11, 600), "vulkan-wgsl: WEIGHT = 11, COUNT = 600 set as pipeline constants");
         }
-    }
+    });
 }

@@ -23,6 +23,27 @@ fn programs(rel: &str) -> Option<Programs> {
     Some(Programs::from_compiled(rel, result).unwrap())
 }
 
+/// The consumers every tutorial is drawn on.
+const DRAWING: [Consumer; 6] = [Consumer::VulkanWgsl, Consumer::VulkanSpirv, Consumer::WgpuGl, Consumer::Gl330, Consumer::Gles300, Consumer::WebGl2];
+
+/// `plan` drawn on `c` from `programs`, saved as `NAME_CONSUMER.png` among
+/// the test artifacts (returned with its path); `None` (skipped) where the
+/// consumer is unavailable here.
+fn draw(c: Consumer, programs: &Programs, plan: &umbrac::render::plan::FramePlan, name: &str) -> Option<(image::RgbaImage, std::path::PathBuf)> {
+    let set = programs.for_consumer(c).expect("a drawing consumer has a program");
+    let image = match consumers::run(c, set, plan) {
+        Ok((r, _)) => r.into_image(),
+        Err(e @ ExecError::Unavailable { .. }) => {
+            ci::skip(format!("{}: {e}", c.name()));
+            return None;
+        }
+        Err(e) => panic!("{name} on {}: {e}", c.name()),
+    };
+    let out = gpu::artifacts_dir("vk-tutorial-tests").join(format!("{name}_{}.png", c.name()));
+    umbrac::render::image_ops::save_png(&image, &out).unwrap();
+    Some((image, out))
+}
+
 /// 01: the spinning triangle at two angles. Inside (by a barycentric
 /// margin) each pixel is the interpolated vertex colour within 2/255,
 /// outside it is the clear colour; pixels on the edges are not compared.
@@ -34,18 +55,8 @@ fn triangle_draws_on_every_consumer() {
     let (w, h) = (64u32, 48u32);
     for angle in [0.0f32, 0.9] {
         let plan = vk_tutorials::triangle(angle, w, h);
-        for c in [Consumer::VulkanWgsl, Consumer::VulkanSpirv, Consumer::WgpuGl, Consumer::Gl330, Consumer::Gles300, Consumer::WebGl2] {
-            let set = programs.for_consumer(c).expect("a drawing consumer has a program");
-            let image = match consumers::run(c, set, &plan) {
-                Ok((r, _)) => r.into_image(),
-                Err(e @ ExecError::Unavailable { .. }) => {
-                    ci::skip(format!("{}: {e}", c.name()));
-                    continue;
-                }
-                Err(e) => panic!("{} angle {angle}: {e}", c.name()),
-            };
-            let out = gpu::artifacts_dir("vk-tutorial-tests").join(format!("triangle_{}_{angle}.png", c.name()));
-            umbrac::render::image_ops::save_png(&image, &out).unwrap();
+        for c in DRAWING {
+            let Some((image, out)) = draw(c, &programs, &plan, &format!("triangle_{angle}")) else { continue };
             let (mut inside, mut outside, mut wrong) = (0, 0, Vec::new());
             for (x, y, p) in image.enumerate_pixels() {
                 let Some(rgb) = triangle_expected(angle, w, h, x, y, 0.02) else { continue };
@@ -93,21 +104,12 @@ fn cube_instancing_and_msaa_draw_on_every_consumer() {
             let culled = make(t, w, h, Cull::Back);
             let edges: Vec<bool> = (0..h).flat_map(|y| (0..w).map(move |x| (x, y))).map(|(x, y)| covers(t, w, h, x, y, 1.0).is_none()).collect();
             let mut first: Option<(Consumer, image::RgbaImage)> = None;
-            for c in [Consumer::VulkanWgsl, Consumer::VulkanSpirv, Consumer::WgpuGl, Consumer::Gl330, Consumer::Gles300, Consumer::WebGl2] {
+            for c in DRAWING {
+                let Some((image, out)) = draw(c, &programs, &plan, &format!("{vs}_{t}")) else { continue };
                 let set = programs.for_consumer(c).expect("a drawing consumer has a program");
-                let image = match consumers::run(c, set, &plan) {
-                    Ok((r, _)) => r.into_image(),
-                    Err(e @ ExecError::Unavailable { .. }) => {
-                        ci::skip(format!("{}: {e}", c.name()));
-                        continue;
-                    }
-                    Err(e) => panic!("{file} on {} t = {t}: {e}", c.name()),
-                };
                 let back = consumers::run(c, set, &culled).unwrap_or_else(|e| panic!("{file} on {} culled: {e}", c.name())).0.into_image();
                 let cull_diff = umbrac::render::image_ops::diff_masked(&image, &back, 8, Some(&edges));
                 assert!(cull_diff.over == 0, "{vs} on {} t = {t}: culling back faces changed the picture (front faces the wrong way): {cull_diff}", c.name());
-                let out = gpu::artifacts_dir("vk-tutorial-tests").join(format!("{vs}_{}_{t}.png", c.name()));
-                umbrac::render::image_ops::save_png(&image, &out).unwrap();
                 let (mut covered, mut empty, mut wrong) = (0, 0, Vec::new());
                 for (x, y, p) in image.enumerate_pixels() {
                     let Some(expect) = covers(t, w, h, x, y, 1.0) else { continue };

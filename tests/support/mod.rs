@@ -148,6 +148,7 @@ fn interface_of(m: &naga::Module, info: &naga::valid::ModuleInfo) -> Interface {
             sampler_binding: None,
             texture_unit: None,
             default: None,
+            count: None,
         };
         if let ResourceKind::Sampler(_) = r.kind {
             let (sh, sg) = m
@@ -261,10 +262,12 @@ pub fn glslang_link(vert: &Path, frag: &Path) -> Result<(), String> {
 
 /// `spirv-val --target-env vulkan1.0 FILE` (vulkan1.1 for a SPIR-V 1.3 module).
 pub fn spirv_val(path: &Path) -> Result<(), String> {
-    // The version word: 1.3 modules (subgroups) are Vulkan 1.1's.
+    // The version word: 1.3 modules (subgroups) are Vulkan 1.1's, 1.4
+    // ones (mesh and task stages) Vulkan 1.2's.
     let words = std::fs::read(path).unwrap_or_default();
-    let env = match words.get(4..8) {
-        Some(v) if u32::from_le_bytes([v[0], v[1], v[2], v[3]]) >= 0x0001_0300 => "vulkan1.1",
+    let env = match words.get(4..8).map(|v| u32::from_le_bytes([v[0], v[1], v[2], v[3]])) {
+        Some(v) if v >= 0x0001_0400 => "vulkan1.2",
+        Some(v) if v >= 0x0001_0300 => "vulkan1.1",
         _ => "vulkan1.0",
     };
     run(Command::new("spirv-val").args(["--target-env", env]).arg(path))

@@ -26,6 +26,8 @@ pub(super) fn compute_builtin(name: &str) -> Option<Builtin> {
         "imageLoad" => Builtin::ImageLoad,
         "imageStore" => Builtin::ImageStore,
         "imageSize" => Builtin::ImageSize,
+        "SetMeshOutputsEXT" => Builtin::SetMeshOutputs,
+        "EmitMeshTasksEXT" => Builtin::EmitMeshTasks,
         _ => return None,
     })
 }
@@ -33,6 +35,9 @@ pub(super) fn compute_builtin(name: &str) -> Option<Builtin> {
 /// The largest `local_size_*` the checker takes; each target's device
 /// minimums are checked in `emit::limits`.
 const MAX_LOCAL_SIZE: i64 = 65535;
+/// The most vertices or primitives one mesh workgroup may write: what
+/// Vulkan guarantees (maxMeshOutputVertices, maxMeshOutputPrimitives).
+const MAX_MESH_OUTPUTS: u32 = 256;
 
 impl<'a, 'd> Checker<'a, 'd> {
     /// `local_size_x/y/z` of a compute entry point (1 where not given):
@@ -40,8 +45,10 @@ impl<'a, 'd> Checker<'a, 'd> {
     /// is accepted and has no effect: each target has its own.
     pub(super) fn workgroup_size(&mut self, decl: &'a ast::FunctionDecl) -> [u32; 3] {
         let mut size = [1u32; 3];
-        let Some((a, sa)) = decl.stage_annotation().filter(|(_, s)| s.stage == Some(naga::ShaderStage::Compute)) else { return size };
+        let workgroups = |s: Option<naga::ShaderStage>| matches!(s, Some(naga::ShaderStage::Compute | naga::ShaderStage::Mesh | naga::ShaderStage::Task));
+        let Some((a, sa)) = decl.stage_annotation().filter(|(_, s)| workgroups(s.stage)) else { return size };
         let annot = a.name.name.as_str();
+        let mesh = sa.stage == Some(naga::ShaderStage::Mesh);
         let mut given = false;
         for arg in &a.args {
             let axis = match arg.name.name.as_str() {
@@ -49,6 +56,8 @@ impl<'a, 'd> Checker<'a, 'd> {
                 "local_size_y" => 1,
                 "local_size_z" => 2,
                 "version" | "name" => continue,
+                // Read by `mesh_output`.
+                "max_vertices" | "max_primitives" | "output_topology" if mesh => continue,
                 // dasSpirv's specialization-constant workgroup sizes.
                 id @ ("local_size_x_id" | "local_size_y_id" | "local_size_z_id") => {
                     let targets: Vec<&str> = self.targets.iter().map(|t| t.name()).collect();
@@ -93,6 +102,68 @@ impl<'a, 'd> Checker<'a, 'd> {
         size
     }
 
+    /// A mesh entry point's `max_vertices` and `max_primitives` (64 each
+    /// when left out, as dasSpirv's) and its `output_topology`: triangles,
+    /// the one dasSpirv writes indices for.
+    pub(super) fn mesh_output(&mut self, decl: &'a ast::FunctionDecl) -> [u32; 2] {
+        let mut out = [64u32; 2];
+        let Some((a, _)) = decl.stage_annotation() else { return out };
+        for arg in &a.args {
+            let name = arg.name.name.as_str();
+            let at = match name {
+                "max_vertices" => 0,
+                "max_primitives" => 1,
+                "output_topology" => {
+                    let topology = match arg.value.as_ref().map(|v| &v.kind) {
+                        Some(ast::ExprKind::Str(s)) => s.as_str(),
+                        _ => "",
+                    };
+                    if topology != "triangles" {
+                        let targets: Vec<&str> = self.targets.iter().map(|t| t.name()).collect();
+                        let d = Diagnostic::error(format!("mesh output topology `{topology}` is not supported by umbrac on {}", targets.join(", ")), arg.name.span)
+                            .with_note("`output_topology = \"triangles\"` (the default) is the one dasSpirv writes primitive indices for");
+                        self.diags.push(d);
+                    }
+                    continue;
+                }
+                _ => continue,
+            };
+            let Some(value) = &arg.value else {
+                self.diags.push(Diagnostic::error(format!("`{name}` needs a value: `{name} = N`"), arg.name.span));
+                continue;
+            };
+            match self.fold(value, None, value.span) {
+                Some(Ok((ConstValue::Int(n), _))) if (1..=MAX_MESH_OUTPUTS as i64).contains(&n) => out[at] = n as u32,
+                Some(Ok((ConstValue::Uint(n), _))) if (1..=MAX_MESH_OUTPUTS as u64).contains(&n) => out[at] = n as u32,
+                Some(Ok(_)) => {
+                    let d = Diagnostic::error(format!("`{name}` must be an integer from 1 to {MAX_MESH_OUTPUTS}"), value.span)
+                        .with_note("Vulkan guarantees 256 vertices and primitives per mesh workgroup (maxMeshOutputVertices, maxMeshOutputPrimitives)");
+                    self.diags.push(d);
+                }
+                Some(Err(d)) => self.diags.push(d),
+                None => {}
+            }
+        }
+        out
+    }
+
+    /// The type of `gl_MeshVerticesEXT` (`array<gl_MeshPerVertexEXT>`, a
+    /// struct of `gl_Position`) and `gl_MeshPrimitivesEXT`
+    /// (`array<gl_MeshPerPrimitiveEXT>`, of `gl_PrimitiveID`), as
+    /// dasSpirv's `spirv_builtins` declares them; `None` for the others.
+    pub(super) fn mesh_output_ty(&mut self, b: BuiltinVar, span: Span) -> Option<Ty> {
+        let (name, field, ty) = match b {
+            BuiltinVar::MeshVertices => ("gl_MeshPerVertexEXT", "gl_Position", Ty::Vector(Scalar::Float, 4)),
+            BuiltinVar::MeshPrimitives => ("gl_MeshPerPrimitiveEXT", "gl_PrimitiveID", INT),
+            _ => return None,
+        };
+        let sid = self.out.structs.len();
+        self.out.structs.push(StructDef { name: name.to_string(), fields: vec![(field.to_string(), ty, span)], span });
+        self.field_index.resize_with(sid, Default::default);
+        self.field_index.push(std::iter::once((field, 0)).collect());
+        Some(Ty::RuntimeArray(Box::new(Ty::Struct(sid as _))))
+    }
+
     /// `gl_WorkGroupSize`: the entry point's size as a `uint3` constant;
     /// a helper has no one size (several entry points may call it).
     pub(super) fn workgroup_size_value(&mut self, cx: &FnCtx<'a>, span: Span) -> Expr {
@@ -117,6 +188,27 @@ impl<'a, 'd> Checker<'a, 'd> {
             true
         };
         match b {
+            Builtin::SetMeshOutputs | Builtin::EmitMeshTasks => {
+                let (stage, sig) = match b {
+                    Builtin::SetMeshOutputs => (naga::ShaderStage::Mesh, "SetMeshOutputsEXT(vertex_count : uint, primitive_count : uint)"),
+                    _ => (naga::ShaderStage::Task, "EmitMeshTasksEXT(x : uint, y : uint, z : uint)"),
+                };
+                if !cx.entry || self.entry_stage != Some(stage) {
+                    let d = Diagnostic::error(format!("`{name}` is only available in the body of a {} entry point", super::stmts::stage_name(stage)), span)
+                        .with_note("it belongs to the entry point itself (dasSpirv's VK_EXT_mesh_shader intrinsics), not to a helper or another stage");
+                    self.diags.push(d);
+                    return err_expr(span);
+                }
+                if !arity(if stage == naga::ShaderStage::Mesh { 2 } else { 3 }, self, &xs, sig) {
+                    return err_expr(span);
+                }
+                for x in &xs {
+                    if !x.ty.is_error() && x.ty != UINT && x.ty != INT {
+                        self.diags.push(Diagnostic::error(format!("`{name}` takes `uint` counts, not `{}`", self.show(&x.ty)), x.span).with_note(format!("expected `{sig}`")));
+                    }
+                }
+                Expr { kind: ExprKind::Builtin(b, xs), ty: Ty::Void, span }
+            }
             Builtin::Barrier { .. } => {
                 self.saw_barrier = true;
                 if !arity(0, self, &xs, &format!("{name}()")) {
@@ -313,15 +405,38 @@ impl<'a, 'd> Checker<'a, 'd> {
                         .with_note("compute programs have no `@in`/`@out`: read and write `@ssbo` buffers or storage images");
                     self.diags.push(d);
                 }
-                GlobalKind::Workgroup if stage != naga::ShaderStage::Compute => {
+                GlobalKind::TaskPayload if !matches!(stage, naga::ShaderStage::Task | naga::ShaderStage::Mesh) => {
+                    let d = Diagnostic::error(format!("`{gname}` is a `@task_payload`, which only task and mesh entry points have; `{name}` is a {} entry point", super::stmts::stage_name(stage)), span)
+                        .with_secondary(g.span, "declared here");
+                    self.diags.push(d);
+                }
+                GlobalKind::Io { .. } if stage == naga::ShaderStage::Task => {
+                    let d = Diagnostic::error(format!("task entry point `{name}` uses `{gname}`, an interface variable"), span)
+                        .with_secondary(g.span, "declared here")
+                        .with_note("a task entry point has no `@in`/`@out`: it hands its mesh workgroups a `@task_payload`");
+                    self.diags.push(d);
+                }
+                GlobalKind::Io { kind, .. } if (stage == naga::ShaderStage::Mesh) != (kind == IoKind::Out && matches!(g.ty, Ty::RuntimeArray(_))) && (stage == naga::ShaderStage::Mesh || matches!(g.ty, Ty::RuntimeArray(_))) => {
+                    let d = match stage {
+                        naga::ShaderStage::Mesh => Diagnostic::error(format!("mesh entry point `{name}` uses `{gname}`, which is no per-vertex output"), span)
+                            .with_note("a mesh entry point has no `@in`; its outputs are `@out @location = N NAME : array<T>`, one `T` per vertex"),
+                        _ => Diagnostic::error(format!("`{gname}` is an array output (one element per vertex), which only mesh entry points have; `{name}` is a {} entry point", super::stmts::stage_name(stage)), span),
+                    };
+                    self.diags.push(d.with_secondary(g.span, "declared here"));
+                }
+                GlobalKind::Workgroup if !matches!(stage, naga::ShaderStage::Compute | naga::ShaderStage::Mesh | naga::ShaderStage::Task) => {
                     let d = Diagnostic::error(format!("`{gname}` is `@groupshared`, which only compute programs have; `{name}` is a {} entry point", super::stmts::stage_name(stage)), span)
                         .with_secondary(g.span, "declared here");
                     self.diags.push(d);
                 }
-                GlobalKind::Storage { access: Access::ReadWrite, .. } | GlobalKind::Image { access: Access::ReadWrite | Access::Write, .. } if stage == naga::ShaderStage::Vertex => {
+                // Only WebGPU refuses the declaration (a pipeline whose vertex
+                // stage binds writable storage); the other targets take it.
+                GlobalKind::Storage { access: Access::ReadWrite, .. } | GlobalKind::Image { access: Access::ReadWrite | Access::Write, .. }
+                    if stage == naga::ShaderStage::Vertex && (self.targets_defaulted || self.targets.contains(&crate::Target::Wgsl)) =>
+                {
                     let d = Diagnostic::error(format!("vertex entry point `{name}` uses `{gname}`, which it could write"), span)
                         .with_secondary(g.span, "declared here")
-                        .with_note("WebGPU has no writable storage in vertex programs: declare it `@readonly`, or write it from a fragment or compute program");
+                        .with_note("WebGPU has no writable storage in vertex programs: declare it `@readonly`, write it from a fragment or compute program, or compile for targets other than `wgsl`");
                     self.diags.push(d);
                 }
                 _ => {}

@@ -340,6 +340,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                         None
                     }
                     ast::QualifierKind::Other(name) if name == "groupshared" => Some("groupshared"),
+                    ast::QualifierKind::Other(name) if name == "task_payload" => Some("task_payload"),
                     ast::QualifierKind::ConstantId(n) => {
                         constant_id = Some((*n, q.span));
                         Some("constant_id")
@@ -371,11 +372,10 @@ impl<'a, 'd> Checker<'a, 'd> {
                         None
                     }
                     // dasSpirv's payloads of the stages umbrac does not compile.
-                    ast::QualifierKind::Other(name) if matches!(name.as_str(), "task_payload" | "ray_payload" | "incoming_ray_payload" | "hit_attribute" | "callable_data" | "incoming_callable_data") => {
+                    ast::QualifierKind::Other(name) if matches!(name.as_str(), "ray_payload" | "incoming_ray_payload" | "hit_attribute" | "callable_data" | "incoming_callable_data") => {
                         let targets: Vec<&str> = self.targets.iter().map(|t| t.name()).collect();
-                        let stages = if name == "task_payload" { "task and mesh shaders" } else { "ray-tracing shaders" };
-                        let d = Diagnostic::error(format!("`@{name}` (of {stages}) is not supported by umbrac on {}", targets.join(", ")), q.span)
-                            .with_note("umbrac compiles the vertex, fragment and compute stages of the Vulkan dialect");
+                        let d = Diagnostic::error(format!("`@{name}` (of ray-tracing shaders) is not supported by umbrac on {}", targets.join(", ")), q.span)
+                            .with_note("umbrac compiles the vertex, fragment, compute, mesh and task stages of the Vulkan dialect");
                         self.diags.push(d);
                         refused = true;
                         None
@@ -496,6 +496,15 @@ impl<'a, 'd> Checker<'a, 'd> {
                     }
                     GlobalKind::Workgroup
                 }
+                ("task_payload", _) => {
+                    if let Some(span) = location.map(|l| l.1).or(stage.map(|s| s.1)) {
+                        self.diags.push(Diagnostic::error("`@task_payload` variables take no `@location` or `@stage`", span));
+                    }
+                    if !ty.is_error() && (!ty.is_value() || self.is_unsized(&ty)) {
+                        self.diags.push(Diagnostic::error(format!("`@task_payload` variables must be plain values, not `{}`", self.show(&ty)), gty.span));
+                    }
+                    GlobalKind::TaskPayload
+                }
                 ("uniform", _) => {
                     if let Some(span) = location.map(|l| l.1).or(stage.map(|s| s.1)) {
                         self.diags.push(Diagnostic::error("uniform values take no `@location` or `@stage`", span));
@@ -517,7 +526,13 @@ impl<'a, 'd> Checker<'a, 'd> {
                     if let Some((_, span)) = stage {
                         self.diags.push(Diagnostic::error("`@stage` applies only to samplers, storage images and `@ssbo` buffers", span));
                     }
-                    let ok = matches!(ty, Ty::Scalar(s) | Ty::Vector(s, _) if s != Scalar::Bool) || ty.is_error();
+                    // `@out array<T>`: a mesh entry point's per-vertex
+                    // output (one `T` per vertex, `check_stage_rules`).
+                    let io_ty = match (&ty, c) {
+                        (Ty::RuntimeArray(elem), "out") => &**elem,
+                        _ => &ty,
+                    };
+                    let ok = matches!(io_ty, Ty::Scalar(s) | Ty::Vector(s, _) if *s != Scalar::Bool) || ty.is_error();
                     if matches!(ty, Ty::Scalar(Scalar::Half) | Ty::Vector(Scalar::Half, _)) {
                         self.diags.push(half_interface_error(&format!("an `@{c}` variable"), gty.span));
                     } else if !ok {

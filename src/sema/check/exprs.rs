@@ -301,13 +301,18 @@ impl<'a, 'd> Checker<'a, 'd> {
             if b == BuiltinVar::WorkGroupSize {
                 return self.workgroup_size_value(cx, span);
             }
-            let g = *self.builtin_vars.entry(b).or_insert_with(|| {
-                self.out.globals.push(Global { name: b.name().to_string(), ty: b.ty(), kind: GlobalKind::Builtin(b), span, bind: None });
-                self.out.globals.len() - 1
-            });
+            let g = match self.builtin_vars.get(&b) {
+                Some(&g) => g,
+                None => {
+                    let ty = self.mesh_output_ty(b, span).unwrap_or_else(|| b.ty());
+                    self.out.globals.push(Global { name: b.name().to_string(), ty, kind: GlobalKind::Builtin(b), span, bind: None });
+                    self.builtin_vars.insert(b, self.out.globals.len() - 1);
+                    self.out.globals.len() - 1
+                }
+            };
             cx.uses.entry(g).or_insert(span);
             self.builtin_var_used(b, span);
-            return Expr { kind: ExprKind::Global(g), ty: b.ty(), span };
+            return Expr { kind: ExprKind::Global(g), ty: self.out.globals[g].ty.clone(), span };
         }
         if self.funcs.contains_key(id.name.as_str()) || builtins::is_builtin(&id.name) {
             self.diags.push(Diagnostic::error(format!("`{}` is a function; call it with `{}(...)`", id.name, id.name), span));

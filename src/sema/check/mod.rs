@@ -255,6 +255,8 @@ struct Checker<'a, 'd> {
     /// The `local_size_*` of the compute entry point being checked
     /// (`gl_WorkGroupSize` there); `[0; 3]` elsewhere.
     entry_workgroup_size: [u32; 3],
+    /// The stage of the entry point being checked (helpers: its caller's).
+    entry_stage: Option<naga::ShaderStage>,
 }
 
 fn is_entry(f: &ast::FunctionDecl) -> Option<naga::ShaderStage> {
@@ -310,6 +312,7 @@ impl<'a, 'd> Checker<'a, 'd> {
             saw_barrier: false,
             compute_refused: false,
             entry_workgroup_size: [0; 3],
+            entry_stage: None,
             half_refused: false,
             refused_constructs: Default::default(),
         }

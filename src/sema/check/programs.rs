@@ -133,7 +133,17 @@ impl<'a, 'd> Checker<'a, 'd> {
                     Some(_) => {}
                 }
             }
-            if links.iter().all(|l| l.fragment != f) {
+            // A mesh entry point writing every input (one element per
+            // vertex) feeds it instead: a mesh pipeline, no link.
+            let elem = |g: GlobalId| match &self.out.globals[g].ty {
+                Ty::RuntimeArray(e) => Some((**e).clone()),
+                _ => None,
+            };
+            let meshes = eps.iter().filter(|e| vulkan(e, naga::ShaderStage::Mesh)).map(|e| io(e, IoKind::Out));
+            let fed_by_mesh = meshes.into_iter().any(|outs| {
+                ins.iter().all(|&(l, g)| outs.iter().any(|&(ol, o)| ol == l && elem(o).as_ref() == Some(&self.out.globals[g].ty) && self.out.flat.contains(&o) == self.out.flat.contains(&g)))
+            });
+            if links.iter().all(|l| l.fragment != f) && !fed_by_mesh {
                 if let Some(b) = best {
                     errors.push((f, b));
                 }
@@ -228,8 +238,10 @@ impl<'a, 'd> Checker<'a, 'd> {
             let slots = match global.kind {
                 GlobalKind::Uniform { .. } | GlobalKind::Storage { .. } | GlobalKind::Image { .. } => 1u32,
                 // The Vulkan dialect's sampler half is placed after all
-                // the others (below): one slot here.
-                GlobalKind::Sampler { count: None, .. } if self.out.vulkan => 1,
+                // the others (below): one slot here; a descriptor array
+                // too (its N textures at one binding, its N samplers at
+                // the half).
+                GlobalKind::Sampler { .. } if self.out.vulkan => 1,
                 GlobalKind::Sampler { count, .. } => 2 * count.unwrap_or(1),
                 _ => {
                     holder_of[g] = UNUSED;
@@ -345,7 +357,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                 *t = (*t).max(b + 1);
             }
             for (i, h) in holders.iter().enumerate() {
-                if placed[i].is_none() || !matches!(self.out.globals[h.first].kind, GlobalKind::Sampler { count: None, .. }) {
+                if placed[i].is_none() || !matches!(self.out.globals[h.first].kind, GlobalKind::Sampler { .. }) {
                     continue;
                 }
                 let (group, progs) = (h.group, &progs_of[i]);

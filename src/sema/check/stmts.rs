@@ -24,10 +24,16 @@ impl<'a, 'd> Checker<'a, 'd> {
                 continue;
             }
             let workgroup_size = match stage {
-                naga::ShaderStage::Compute => self.workgroup_size(decl),
+                naga::ShaderStage::Compute | naga::ShaderStage::Mesh | naga::ShaderStage::Task => self.workgroup_size(decl),
                 _ => [0; 3],
             };
+            let mesh = (stage == naga::ShaderStage::Mesh).then(|| self.mesh_output(decl));
+            if matches!(stage, naga::ShaderStage::Mesh | naga::ShaderStage::Task) {
+                let at = decl.stage_annotation().map_or(decl.name.span, |(a, _)| a.span);
+                self.mesh_stage_used(stage, decl.stage_annotation().map_or("", |(a, _)| a.name.name.as_str()), at);
+            }
             self.entry_workgroup_size = workgroup_size;
+            self.entry_stage = Some(stage);
             let Some(func) = self.check_function(decl, Some(stage), None) else { continue };
             self.check_stage_rules(&name, stage, &func);
             self.check_compute_rules(decl, &name, stage, &func);
@@ -36,7 +42,7 @@ impl<'a, 'd> Checker<'a, 'd> {
                 self.check_vulkan_locations(&name, &func);
                 self.check_vulkan_stage_args(decl, stage);
             }
-            self.out.entry_points.push(EntryPoint { name, stage, func, locations: Vec::new(), workgroup_size, annotation, dialect });
+            self.out.entry_points.push(EntryPoint { name, stage, func, locations: Vec::new(), workgroup_size, annotation, dialect, mesh });
         }
     }
 
@@ -57,7 +63,8 @@ impl<'a, 'd> Checker<'a, 'd> {
     /// compute one's are read with its workgroup size): `name`; what
     /// dasSpirv has beyond it is refused by name, never ignored.
     fn check_vulkan_stage_args(&mut self, decl: &ast::FunctionDecl, stage: naga::ShaderStage) {
-        let Some((a, _)) = decl.stage_annotation().filter(|_| stage != naga::ShaderStage::Compute) else { return };
+        let workgroups = matches!(stage, naga::ShaderStage::Compute | naga::ShaderStage::Mesh | naga::ShaderStage::Task);
+        let Some((a, _)) = decl.stage_annotation().filter(|_| !workgroups) else { return };
         for arg in a.args.iter().filter(|arg| arg.name.name != "name") {
             let arg_name = arg.name.name.as_str();
             let d = if arg_name == "early_fragment_tests" {
@@ -446,6 +453,13 @@ impl<'a, 'd> Checker<'a, 'd> {
             ast::StmtKind::With { subject, body } => self.check_with(cx, subject, body, s.span, out),
             ast::StmtKind::Return(value) => {
                 let v = value.as_ref().map(|e| self.check_expr(cx, e));
+                // Its outputs are handed over after a workgroup barrier
+                // every invocation must reach (`lower::mesh`).
+                if cx.entry && self.entry_stage == Some(naga::ShaderStage::Mesh) {
+                    let d = Diagnostic::error("a mesh entry point cannot `return`", s.span)
+                        .with_note("its outputs are handed over at its end, after a workgroup barrier every invocation must reach: put the rest under an `if` instead");
+                    self.diags.push(d);
+                }
                 self.check_return(cx, v.as_ref(), s.span);
                 out.push(Stmt::Return(v, s.span));
             }
@@ -640,6 +654,10 @@ impl<'a, 'd> Checker<'a, 'd> {
                     GlobalKind::Io { kind: IoKind::In, .. } => Some("it is an `@in` input"),
                     GlobalKind::Builtin(b) if !b.is_output() => Some("it is a builtin input"),
                     GlobalKind::SpecConstant { .. } => Some("it is a specialization constant, set by the host when it creates the pipeline"),
+                    // naga (and SPIR-V) let only the task stage write it.
+                    GlobalKind::TaskPayload if !(cx.entry && self.entry_stage == Some(naga::ShaderStage::Task)) => {
+                        Some("it is a `@task_payload`, written only in the body of the task entry point (mesh entry points read it)")
+                    }
                     _ => None,
                 };
                 match why {
@@ -669,6 +687,8 @@ pub(super) fn stage_name(s: naga::ShaderStage) -> &'static str {
     match s {
         naga::ShaderStage::Vertex => "vertex",
         naga::ShaderStage::Fragment => "fragment",
+        naga::ShaderStage::Mesh => "mesh",
+        naga::ShaderStage::Task => "task",
         _ => "compute",
     }
 }

@@ -51,25 +51,50 @@ impl<'a, 'd> Checker<'a, 'd> {
         self.diags.push(d);
     }
 
-    /// A stage of dasSpirv's Vulkan dialect umbrac does not compile (mesh,
-    /// task, ray tracing), annotated at `a`: refused by name for every
-    /// target requested, never skipped.
+    /// A mesh or task entry point (`[vulkan_mesh_shader]` at `span`): SPIR-V
+    /// only. naga 30 writes these stages to SPIR-V 1.4 (VK_EXT_mesh_shader),
+    /// which spirv-val checks; it writes WGSL ones only in wgpu's own
+    /// `enable wgpu_mesh_shader;`, which no WebGPU has and tint refuses.
+    pub(super) fn mesh_stage_used(&mut self, stage: naga::ShaderStage, annotation: &str, span: Span) {
+        let (key, what) = match stage {
+            naga::ShaderStage::Mesh => ("mesh stage", format!("the mesh stage (`[{annotation}]`)")),
+            _ => ("task stage", format!("the task stage (`[{annotation}]`)")),
+        };
+        self.lacking_targets_used(
+            key,
+            &what,
+            span,
+            |t| t != Target::Spirv,
+            "SPIR-V 1.4 has mesh and task shaders (VK_EXT_mesh_shader); GLSL 3.30, ES 3.00, 4.30 and ES 3.10 have none, and WebGPU has none (naga's WGSL for them is wgpu's native `enable wgpu_mesh_shader;`, which Chrome refuses)",
+            "compile for `--target spirv`",
+        );
+    }
+
+    /// A stage of dasSpirv's Vulkan dialect umbrac does not compile (ray
+    /// tracing), annotated at `a`: refused by name for every target
+    /// requested, never skipped.
     pub(super) fn uncompiled_stage(&mut self, a: &ast::Annotation) {
         let what = ast::UNCOMPILED_STAGES.iter().find(|&&(n, _)| n == a.name.name.as_str()).map_or("this", |&(_, w)| w);
         let targets: Vec<&str> = self.targets.iter().map(|t| t.name()).collect();
         let d = Diagnostic::error(format!("the {what} stage (`[{}]`) is not supported by umbrac on {}", a.name.name, targets.join(", ")), a.span)
-            .with_note("GLSL 3.30, ES 3.00, GLSL 4.30 and ES 3.10 have no such stage; naga 30 can write it to SPIR-V (and mesh/task to WGSL), but umbrac does not lower it yet")
-            .with_note("the vertex, fragment and compute stages of the Vulkan dialect are supported");
+            .with_note("GLSL 3.30, ES 3.00, GLSL 4.30 and ES 3.10 have no such stage, nor does WebGPU; naga 30 writes ray-tracing stages to SPIR-V, but its trace-ray call has no shader-binding-table offset, stride or miss index (`traceRayEXT`'s 4th to 6th arguments), so umbrac does not lower them")
+            .with_note("the vertex, fragment, compute, mesh and task stages of the Vulkan dialect are supported");
         self.diags.push(d);
     }
 
     /// An array of samplers in the Vulkan dialect: one descriptor array
-    /// (one binding, N elements), which umbrac does not build.
+    /// (one binding, N elements), a binding array in SPIR-V. GLSL has
+    /// none, and WebGPU has none either: naga writes wgpu's native
+    /// `enable wgpu_binding_array;`, which Chrome's tint refuses.
     pub(super) fn descriptor_array_used(&mut self, span: Span) {
-        let targets: Vec<&str> = self.targets.iter().map(|t| t.name()).collect();
-        let d = Diagnostic::error(format!("an array of samplers in the Vulkan dialect (a descriptor array at one binding) is not supported by umbrac on {}", targets.join(", ")), span)
-            .with_note("bind each sampler at its own `@binding`");
-        self.diags.push(d);
+        self.lacking_targets_used(
+            "descriptor array",
+            "an array of samplers in the Vulkan dialect (a descriptor array at one binding)",
+            span,
+            |t| t != Target::Spirv,
+            "SPIR-V binds it as one descriptor array (indexed with `nonuniformEXT`); GLSL has no descriptor arrays, and WebGPU has no binding arrays (wgpu's native `wgpu_binding_array` extension is not WebGPU: Chrome refuses it)",
+            "compile for `--target spirv`, or bind each sampler at its own `@binding`",
+        );
     }
 
     /// A read-write storage image of `format` (neither `@readonly` nor

@@ -26,9 +26,10 @@ use std::collections::BTreeSet;
 pub(super) fn check_program(p: &Program, diags: &mut Diagnostics) {
     let has_barrier = barrier_reach(p);
     for ep in &p.entry_points {
-        if ep.stage != naga::ShaderStage::Compute {
+        // Mesh and task workgroups have barriers as compute ones do.
+        if !matches!(ep.stage, naga::ShaderStage::Compute | naga::ShaderStage::Mesh | naga::ShaderStage::Task) {
             if let Some(span) = first_barrier(p, &ep.func.body, &has_barrier) {
-                let d = Diagnostic::error(format!("barriers are only available in compute programs, and `{}` is a {} entry point", ep.name, super::stmts::stage_name(ep.stage)), span);
+                let d = Diagnostic::error(format!("barriers are only available in compute, mesh and task programs, and `{}` is a {} entry point", ep.name, super::stmts::stage_name(ep.stage)), span);
                 diags.push(d);
             }
             continue;
