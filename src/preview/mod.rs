@@ -90,7 +90,9 @@ pub fn options_for(file: &Path, base: &Options) -> Options {
 pub fn compile(file: &Path, opts: &Options) -> (Bundle, String, Watched) {
     let pre = crate::preprocess_file(file, opts);
     let mut files = pre.files_read();
-    files.extend(pre.probed().iter().cloned());
+    // A probe in a directory that does not exist (a daslang module root
+    // absent here) cannot be watched: its directory is not there either.
+    files.extend(pre.probed().iter().filter(|p| p.parent().is_some_and(Path::is_dir)).cloned());
     if files.is_empty() {
         files.push(file.to_path_buf());
     }
@@ -173,10 +175,10 @@ fn answer(request: tiny_http::Request, port: u16, published: &Published) {
             Some((kind, body)) => respond(request, 200, kind, body),
             None => respond(request, 404, "text/plain; charset=utf-8", b"not found\n".to_vec()),
         },
-        Route::Bundle => {
-            let (_, json) = published.latest();
-            respond(request, 200, "application/json", json.as_bytes().to_vec());
-        }
+        Route::Bundle => match published.latest() {
+            (0, _) => respond(request, 503, "text/plain; charset=utf-8", b"the first compile is still running\n".to_vec()),
+            (_, json) => respond(request, 200, "application/json", json.as_bytes().to_vec()),
+        },
         Route::Events => stream(request, published),
     }
 }
