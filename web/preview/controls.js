@@ -130,6 +130,13 @@ function slider(label, value, int, onInput) {
   return row;
 }
 
+// The start of a member declared without a value: identity matrices and
+// white colours (a zero would draw nothing), zero otherwise.
+function undeclared(name, t) {
+  if (t.cols) return Array.from({ length: t.n }, (_, k) => (Math.floor(k / t.rows) === k % t.rows ? 1 : 0));
+  return Array(t.n).fill(isColour(name, t) ? 1 : 0);
+}
+
 // The inputs of a manifest: { buffers, textures } each frame, with the
 // controls in `panel`. `previous` (the Inputs of the last program) keeps
 // the values and patterns of members and samplers still there.
@@ -164,7 +171,7 @@ export class Inputs {
           continue;
         }
         const kept = previous?.values.get(key);
-        const start = kept?.length === t.n ? kept : readMember(this.defaults[b.name], m);
+        const start = kept?.length === t.n ? kept : m.default ? readMember(this.defaults[b.name], m) : undeclared(m.name, t);
         this.values.set(key, start.slice());
         panel.append(this.control(key, m.name, t, start));
       }
@@ -210,7 +217,9 @@ export class Inputs {
     legend.textContent = `${name} : ${t.cols ? `float${t.cols}x${t.rows}` : t.n > 1 ? `${t.scalar}${t.n}` : t.scalar}`;
     box.append(legend);
     const int = t.scalar !== 'float';
-    start.forEach((v, k) => box.append(slider(t.n > 1 ? ['x', 'y', 'z', 'w'][k % 4] + (t.cols ? Math.floor(k / t.rows) : '') : '', v, int, (x) => set(k, x))));
+    // A matrix's sliders are named column.row: `c1.y`.
+    const label = (k) => (t.cols ? `c${Math.floor(k / t.rows)}.${'xyzw'[k % t.rows]}` : t.n > 1 ? 'xyzw'[k] : '');
+    start.forEach((v, k) => box.append(slider(label(k), v, int, (x) => set(k, x))));
     return box;
   }
 

@@ -279,11 +279,15 @@ class WebGL2Renderer {
         blocks.push({ name: b.name, point: b.glsl_binding, size, ubo: gl.createBuffer() });
       } else {
         for (const x of b.members) {
-          const t = parseType(x.type);
+          // An array of numbers, vectors or matrices is set whole: its elements
+          // read at the array stride.
+          const arr = /^(.+)\[(\d+)\]$/.exec(x.type);
+          const t = parseType(arr ? arr[1] : x.type);
           const loc = gl.getUniformLocation(program, x.glsl_name ?? x.name);
           if (loc === null) continue;
           if (!t) throw new DrawError('plan', `the preview does not set the loose uniform \`${x.name} : ${x.type}\` on WebGL2 yet`);
-          loose.push({ buffer: b.name, member: x, t, loc });
+          const elements = arr ? Array.from({ length: +arr[2] }, (_, k) => ({ ...x, type: arr[1], offset: x.offset + k * x.array_stride })) : [x];
+          loose.push({ buffer: b.name, elements, t, loc });
         }
       }
     }
@@ -346,7 +350,7 @@ class WebGL2Renderer {
       gl.bindBufferBase(gl.UNIFORM_BUFFER, b.point, b.ubo);
     }
     for (const u of l.loose) {
-      const v = readMember(buffers[u.buffer], u.member);
+      const v = u.elements.flatMap((e) => readMember(buffers[u.buffer], e));
       const { t, loc } = u;
       if (t.cols) {
         const fn = t.cols === t.rows ? `uniformMatrix${t.cols}fv` : `uniformMatrix${t.cols}x${t.rows}fv`;
