@@ -32,6 +32,8 @@ pub mod rerun;
 pub mod run;
 mod sealed;
 pub mod sema;
+#[cfg(feature = "scene")]
+pub mod scene;
 pub mod source;
 pub mod syntax;
 pub mod target;
