@@ -8,6 +8,7 @@ const ASSETS: &[(&str, &str, &str)] = &[
     ("preview.js", "text/javascript; charset=utf-8", include_str!("../../web/preview/preview.js")),
     ("draw.js", "text/javascript; charset=utf-8", include_str!("../../web/preview/draw.js")),
     ("controls.js", "text/javascript; charset=utf-8", include_str!("../../web/preview/controls.js")),
+    ("scene.js", "text/javascript; charset=utf-8", include_str!("../../web/preview/scene.js")),
     ("preview.css", "text/css; charset=utf-8", include_str!("../../web/preview/preview.css")),
 ];
 

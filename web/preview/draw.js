@@ -18,6 +18,10 @@
 // buffers; GLSL's std140 blocks; GLSL's loose uniforms are read back
 // from the same words), so both APIs draw the same values.
 
+import { pattern, mesh, instance, fit, PATTERNS } from './scene.js';
+
+export { pattern, PATTERNS };
+
 export class DrawError extends Error {
   constructor(kind, message) {
     super(message);
@@ -64,26 +68,131 @@ function madeUpExprs(kind, t) {
 
 const QUAD = [[-1, -1], [1, -1], [1, 1], [-1, -1], [1, 1], [-1, 1]];
 
-// The draw a bundle gets: { vertex (entry point or null), fragment,
-// attributes: [{ name, glsl_name, location, type, format, data }], count }.
+// What a bundle is drawn with:
+// { vertex, fragment (entry points; vertex null: the page's full-screen
+//   triangle), attributes: [{ name, glsl_name, location, wgsl_location,
+//   type, format, data (numbers, one record per vertex or instance),
+//   perInstance }], count (vertices), instances, depth, cull ('none' |
+//   'back' | 'front', counter-clockwise is front), clear, values (name ->
+//   a scene value: numbers, a bool, or a convention's name), textures
+//   (sampler -> { pattern, size, filter }), camera, controls, entries }.
+// From the bundle's scene (umbrac::scene, inferred by the compiler) where
+// it has one; else made up here from the names (a lone fragment entry point,
+// or a program the scene inference refused).
 export function planOf(bundle, programIndex = 0) {
   const m = bundle.manifest;
   if (!m) throw new DrawError('plan', 'the bundle has no manifest (the program did not compile)');
-  const entry = (name) => m.entry_points.find((e) => e.name === name);
-  const prog = m.programs[programIndex];
-  let vertex = null;
-  let fragment;
-  if (prog) {
-    vertex = entry(prog.vertex);
-    fragment = entry(prog.fragment);
-  } else {
-    fragment = m.entry_points.find((e) => e.stage === 'fragment');
-  }
-  if (!fragment) throw new DrawError('plan', 'the program has no fragment entry point to draw');
+  if (bundle.scene && programIndex === 0) return planOfScene(m, bundle.scene);
+  return madeUpPlan(m, programIndex);
+}
+
+const entryOf = (m, name) => m.entry_points.find((e) => e.name === name);
+
+function checkColourOutput(fragment) {
   const out0 = fragment.outputs.find((o) => o.location === 0) ?? fragment.outputs[0];
   if (!out0 || parseType(out0.type)?.scalar !== 'float') {
     throw new DrawError('plan', `the preview draws a float colour output at location 0; \`${fragment.name}\` has ${out0 ? `\`${out0.name} : ${out0.type}\`` : 'none'}`);
   }
+}
+
+function planOfScene(m, scene) {
+  const passes = scene.passes ?? [];
+  const onScreen = passes.filter((p) => p.color === 'screen');
+  // What this page does not draw yet is named, never skipped.
+  if (passes.length !== 1 || onScreen.length !== 1) {
+    throw new DrawError('plan', `the preview draws scenes of one pass to the screen; this one has ${passes.length} (${passes.map((p) => p.name).join(', ')})`);
+  }
+  const pass = passes[0];
+  if (pass.draws.length !== 1) throw new DrawError('plan', `the preview draws one draw a pass; pass \`${pass.name}\` has ${pass.draws.length}`);
+  const draw = pass.draws[0];
+  const vertex = entryOf(m, pass.vertex);
+  const fragment = pass.fragment ? entryOf(m, pass.fragment) : null;
+  if (!vertex || !fragment) throw new DrawError('plan', `pass \`${pass.name}\` names an entry point the manifest lacks`);
+  checkColourOutput(fragment);
+  const vertices = mesh(draw.mesh);
+  const instances = draw.instances ? draw.instances.count.reduce((a, b) => a * b, 1) : 1;
+  const attributes = [];
+  for (const a of vertex.inputs) {
+    const t = parseType(a.type);
+    const source = draw.attributes?.[a.name];
+    if (!t || t.cols || !source) throw new DrawError('plan', `the scene feeds no attribute to the vertex input \`${a.name} : ${a.type}\``);
+    const perInstance = source.startsWith('instance_');
+    if (perInstance && !draw.instances) throw new DrawError('plan', `\`${a.name}\` is per instance and the draw has no instance grid`);
+    const records = perInstance ? Array.from({ length: instances }, (_, i) => instance(draw.instances, i)[source]) : vertices.map((v) => v[source]);
+    attributes.push({ name: a.name, glsl_name: a.glsl_name ?? a.name, location: a.glsl_location ?? a.location, wgsl_location: a.location, type: t, format: a.vertex_format, perInstance, data: records.flatMap((r) => fit(r, t.n)) });
+  }
+  const textures = {};
+  for (const [sampler, input] of Object.entries(pass.samplers ?? {})) {
+    const tex = (scene.textures ?? []).find((x) => x.name === input.texture);
+    if (!tex || !tex.pattern) throw new DrawError('plan', `sampler \`${sampler}\` reads \`${input.texture}\`, which is not a built-in pattern (render targets and image files are not drawn by the preview yet)`);
+    textures[sampler] = { pattern: tex.pattern, size: tex.size ?? [64, 64], filter: input.filter ?? 'linear' };
+  }
+  return {
+    vertex, fragment, attributes,
+    count: draw.mesh === 'none' ? draw.vertices ?? 3 : vertices.length,
+    instances,
+    depth: !!pass.depth,
+    cull: pass.cull ?? 'none',
+    clear: pass.clear ?? [0, 0, 0, 1],
+    values: { ...(scene.values ?? {}), ...(pass.values ?? {}), ...(draw.values ?? {}) },
+    textures,
+    camera: scene.camera ?? {},
+    controls: scene.controls ?? [],
+    entries: [vertex, fragment],
+  };
+}
+
+// A name without its usual prefixes, lower case: `u_Time`, `iTime` -> `time`.
+export function bareName(name) {
+  return name.replace(/^(u_|i(?=[A-Z])|g_|c_)/, '').toLowerCase();
+}
+
+// The convention (umbrac::scene's names) a member of this name and type
+// is bound to when no scene says (docs/preview.md), or null.
+export function conventionOf(name, t) {
+  const n = bareName(name);
+  if (!t) return null;
+  if (t.cols === 4 && t.rows === 4) {
+    if (/^(mvp|modelviewproj(ection)?|model_view_proj(ection)?|wvp)$/.test(n)) return 'model_view_projection';
+    if (/^(view_?proj(ection)?|vp|camera)$/.test(n)) return 'view_projection';
+    if (/proj/.test(n)) return 'projection';
+    if (/view/.test(n)) return 'view';
+    if (/model|world/.test(n)) return 'model';
+    return null;
+  }
+  if (/^(time|global_?time|seconds)$/.test(n) && t.n === 1 && t.scalar === 'float') return 'time';
+  if (/^(resolution|screen_?size|viewport_?size|res)$/.test(n) && t.scalar === 'float' && t.n >= 2) return 'resolution';
+  if (/^mouse$/.test(n) && t.scalar === 'float' && t.n >= 2) return 'mouse';
+  if (/^(frame|frame_?index|frame_?count)$/.test(n) && t.n === 1) return 'frame';
+  if (/^aspect(_?ratio)?$/.test(n) && t.n === 1 && t.scalar === 'float') return 'aspect';
+  return null;
+}
+
+function conventionsByName(m) {
+  const out = {};
+  for (const b of m.uniform_buffers ?? []) {
+    for (const x of b.members) {
+      const c = conventionOf(x.name, parseType(x.type));
+      if (c) out[x.name] = c;
+    }
+  }
+  return out;
+}
+
+// The made-up plan: the program on a full-screen quad (a lone fragment
+// entry point: the page's full-screen triangle), values by name.
+function madeUpPlan(m, programIndex) {
+  const prog = m.programs[programIndex];
+  let vertex = null;
+  let fragment;
+  if (prog) {
+    vertex = entryOf(m, prog.vertex);
+    fragment = entryOf(m, prog.fragment);
+  } else {
+    fragment = m.entry_points.find((e) => e.stage === 'fragment');
+  }
+  if (!fragment) throw new DrawError('plan', 'the program has no fragment entry point to draw');
+  checkColourOutput(fragment);
   const attributes = [];
   if (vertex) {
     for (const a of vertex.inputs) {
@@ -91,10 +200,16 @@ export function planOf(bundle, programIndex = 0) {
       if (!t || t.cols) throw new DrawError('plan', `the preview cannot make up vertex attribute \`${a.name} : ${a.type}\``);
       const kind = madeUp(a.name, t);
       const data = QUAD.flatMap((p) => madeUpValues(kind, t.n, p));
-      attributes.push({ name: a.name, glsl_name: a.glsl_name ?? a.name, location: a.glsl_location ?? a.location, wgsl_location: a.location, type: t, format: a.vertex_format, kind, data });
+      attributes.push({ name: a.name, glsl_name: a.glsl_name ?? a.name, location: a.glsl_location ?? a.location, wgsl_location: a.location, type: t, format: a.vertex_format, perInstance: false, data });
     }
   }
-  return { vertex, fragment, attributes, count: vertex ? QUAD.length : 3, entries: [vertex, fragment].filter(Boolean) };
+  const entries = [vertex, fragment].filter(Boolean);
+  const textures = {};
+  for (const s of m.samplers ?? []) textures[s.name] = { pattern: 'checker', size: [64, 64], filter: 'linear' };
+  return {
+    vertex, fragment, attributes, count: vertex ? QUAD.length : 3, instances: 1, depth: false, cull: 'none', clear: [0, 0, 0, 1],
+    values: conventionsByName(m), textures, camera: {}, controls: [], entries,
+  };
 }
 
 // ---- uniform values -----------------------------------------------------
@@ -143,31 +258,6 @@ export function readMember(words, member) {
     for (let c = 0; c < t.cols; c++) for (let r = 0; r < t.rows; r++) out.push(get(base + c * stride + r));
   } else for (let k = 0; k < t.n; k++) out.push(get(base + k));
   return out;
-}
-
-// ---- built-in textures --------------------------------------------------
-
-// RGBA8 images, memory row 0 first (texture coordinate v = 0).
-export function pattern(kind, size = 256) {
-  const data = new Uint8Array(size * size * 4);
-  let seed = 0x9e3779b9;
-  for (let y = 0; y < size; y++) {
-    for (let x = 0; x < size; x++) {
-      const o = 4 * (y * size + x);
-      let rgb;
-      if (kind === 'uv') rgb = [x * 255 / (size - 1), y * 255 / (size - 1), 0];
-      else if (kind === 'noise') {
-        seed ^= seed << 13; seed ^= seed >>> 17; seed ^= seed << 5;
-        const v = (seed >>> 24) & 255;
-        rgb = [v, v, v];
-      } else {
-        const on = ((x >> 5) + (y >> 5)) & 1;
-        rgb = on ? [230, 230, 230] : [40, 40, 40];
-      }
-      data.set([rgb[0], rgb[1], rgb[2], 255], o);
-    }
-  }
-  return { width: size, height: size, data };
 }
 
 // What this preview cannot bind yet, named, rather than drawn wrong.
@@ -221,7 +311,7 @@ class WebGL2Renderer {
   constructor(canvas) {
     this.api = 'webgl2';
     this.canvas = canvas;
-    const gl = canvas.getContext('webgl2', { antialias: false, alpha: false, depth: false, preserveDrawingBuffer: true });
+    const gl = canvas.getContext('webgl2', { antialias: false, alpha: false, depth: true, preserveDrawingBuffer: true });
     if (!gl) throw new DrawError('api', 'this browser gives no WebGL2 context');
     this.gl = gl;
     this.loaded = null;
@@ -314,12 +404,13 @@ class WebGL2Renderer {
       gl.bufferData(gl.ARRAY_BUFFER, new Float32Array(a.data), gl.STATIC_DRAW);
       gl.enableVertexAttribArray(loc);
       gl.vertexAttribPointer(loc, a.type.n, gl.FLOAT, false, 0, 0);
+      gl.vertexAttribDivisor(loc, a.perInstance ? 1 : 0);
       vbos.push(vbo);
     }
     gl.bindVertexArray(null);
     gl.bindBuffer(gl.ARRAY_BUFFER, null);
     this.unload();
-    this.loaded = { program, blocks, loose, samplers, vao, vbos, count: plan.count, textureOf: new Map() };
+    this.loaded = { program, blocks, loose, samplers, vao, vbos, plan, textureOf: new Map() };
   }
 
   unload() {
@@ -338,9 +429,21 @@ class WebGL2Renderer {
     const l = this.loaded;
     if (!l) return;
     const gl = this.gl;
+    const { plan } = l;
     gl.viewport(0, 0, this.canvas.width, this.canvas.height);
-    gl.clearColor(0, 0, 0, 1);
-    gl.clear(gl.COLOR_BUFFER_BIT);
+    gl.clearColor(...plan.clear);
+    gl.clearDepth(1);
+    gl.clear(gl.COLOR_BUFFER_BIT | gl.DEPTH_BUFFER_BIT);
+    if (plan.depth) {
+      gl.enable(gl.DEPTH_TEST);
+      gl.depthFunc(gl.LESS);
+    } else gl.disable(gl.DEPTH_TEST);
+    if (plan.cull === 'none') gl.disable(gl.CULL_FACE);
+    else {
+      gl.enable(gl.CULL_FACE);
+      gl.frontFace(gl.CCW);
+      gl.cullFace(plan.cull === 'front' ? gl.FRONT : gl.BACK);
+    }
     gl.useProgram(l.program);
     for (const b of l.blocks) {
       const bytes = new Uint8Array(b.size);
@@ -365,8 +468,9 @@ class WebGL2Renderer {
       gl.bindTexture(gl.TEXTURE_2D, s.texture);
       if (img && l.textureOf.get(s.name) !== img) {
         gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, img.width, img.height, 0, gl.RGBA, gl.UNSIGNED_BYTE, img.data);
-        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR);
-        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+        const filter = img.filter === 'nearest' ? gl.NEAREST : gl.LINEAR;
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, filter);
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, filter);
         gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.REPEAT);
         gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.REPEAT);
         l.textureOf.set(s.name, img);
@@ -374,7 +478,7 @@ class WebGL2Renderer {
     }
     gl.activeTexture(gl.TEXTURE0);
     gl.bindVertexArray(l.vao);
-    gl.drawArrays(gl.TRIANGLES, 0, l.count);
+    gl.drawArraysInstanced(gl.TRIANGLES, 0, plan.count, plan.instances);
     gl.bindVertexArray(null);
     gl.useProgram(null);
     const err = gl.getError();
@@ -491,10 +595,9 @@ class WebGPURenderer {
     for (const s of m.samplers ?? []) {
       if (!used.has(s.name)) continue;
       const texture = device.createTexture({ size: [1, 1], format: 'rgba8unorm', usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST });
-      const sampler = device.createSampler({ magFilter: 'linear', minFilter: 'linear', addressModeU: 'repeat', addressModeV: 'repeat' });
-      const entry = { name: s.name, group: s.group, binding: s.texture_binding, texture, image: null };
-      group(s.group).push({ layout: { binding: s.texture_binding, visibility: vis, texture: { sampleType: 'float', viewDimension: '2d' } }, sampler: entry });
-      group(s.group).push({ layout: { binding: s.sampler_binding, visibility: vis, sampler: { type: 'filtering' } }, resource: sampler });
+      const entry = { name: s.name, group: s.group, binding: s.texture_binding, texture, sampler: this.sampler('linear'), image: null };
+      group(s.group).push({ layout: { binding: s.texture_binding, visibility: vis, texture: { sampleType: 'float', viewDimension: '2d' } }, texture: entry });
+      group(s.group).push({ layout: { binding: s.sampler_binding, visibility: vis, sampler: { type: 'filtering' } }, sampler: entry });
       samplers.push(entry);
     }
     const layouts = [];
@@ -509,7 +612,7 @@ class WebGPURenderer {
       const buf = device.createBuffer({ size: Math.max(16, data.byteLength), usage: GPUBufferUsage.VERTEX | GPUBufferUsage.COPY_DST });
       device.queue.writeBuffer(buf, 0, data);
       vbos.push(buf);
-      vertexBuffers.push({ arrayStride: 4 * t.n, attributes: [{ shaderLocation: a.wgsl_location, offset: 0, format }] });
+      vertexBuffers.push({ arrayStride: 4 * t.n, stepMode: a.perInstance ? 'instance' : 'vertex', attributes: [{ shaderLocation: a.wgsl_location, offset: 0, format }] });
     }
     device.pushErrorScope('validation');
     const pipeline = device.createRenderPipeline({
@@ -517,12 +620,13 @@ class WebGPURenderer {
       vertex: { module, entryPoint: plan.vertex ? plan.vertex.name : 'umbrac_preview_vs', buffers: vertexBuffers },
       fragment: { module, entryPoint: plan.fragment.name, targets: [{ format: 'rgba8unorm' }] },
       // umbrac's portable WGSL flips y, so GL's counter-clockwise fronts arrive clockwise.
-      primitive: { topology: 'triangle-list', frontFace: 'cw', cullMode: 'none' },
+      primitive: { topology: 'triangle-list', frontFace: 'cw', cullMode: plan.cull ?? 'none' },
+      depthStencil: plan.depth ? { format: 'depth24plus', depthWriteEnabled: true, depthCompare: 'less' } : undefined,
     });
     const err = await device.popErrorScope();
     if (err) throw new DrawError('link', `the WebGPU pipeline is refused: ${err.message}`);
     this.unload();
-    this.loaded = { pipeline, groups, layouts, buffers, samplers, vbos, count: plan.count, bindGroups: null };
+    this.loaded = { pipeline, groups, layouts, buffers, samplers, vbos, plan, bindGroups: null };
   }
 
   unload() {
@@ -534,11 +638,16 @@ class WebGPURenderer {
     this.loaded = null;
   }
 
+  sampler(filter) {
+    const f = filter === 'nearest' ? 'nearest' : 'linear';
+    return this.device.createSampler({ magFilter: f, minFilter: f, addressModeU: 'repeat', addressModeV: 'repeat' });
+  }
+
   bindGroups() {
     const l = this.loaded;
     return l.layouts.map((layout, g) => this.device.createBindGroup({
       layout,
-      entries: (l.groups[g] ?? []).map((e) => ({ binding: e.layout.binding, resource: e.sampler ? e.sampler.texture.createView() : e.resource })),
+      entries: (l.groups[g] ?? []).map((e) => ({ binding: e.layout.binding, resource: e.texture ? e.texture.texture.createView() : e.sampler ? e.sampler.sampler : e.resource })),
     }));
   }
 
@@ -567,22 +676,28 @@ class WebGPURenderer {
       s.texture.destroy();
       s.texture = device.createTexture({ size: [img.width, img.height], format: 'rgba8unorm', usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST });
       device.queue.writeTexture({ texture: s.texture }, img.data, { bytesPerRow: img.width * 4 }, [img.width, img.height]);
+      s.sampler = this.sampler(img.filter);
       s.image = img;
       rebind = true;
     }
     if (rebind) l.bindGroups = this.bindGroups();
     const target = readback.texture;
     const enc = device.createCommandEncoder();
-    const pass = enc.beginRenderPass({ colorAttachments: [{ view: target.createView(), loadOp: 'clear', storeOp: 'store', clearValue: [0, 0, 0, 1] }] });
+    const depth = l.plan.depth ? device.createTexture({ size: [target.width, target.height], format: 'depth24plus', usage: GPUTextureUsage.RENDER_ATTACHMENT }) : null;
+    const pass = enc.beginRenderPass({
+      colorAttachments: [{ view: target.createView(), loadOp: 'clear', storeOp: 'store', clearValue: l.plan.clear }],
+      depthStencilAttachment: depth ? { view: depth.createView(), depthClearValue: 1, depthLoadOp: 'clear', depthStoreOp: 'discard' } : undefined,
+    });
     pass.setPipeline(l.pipeline);
     l.bindGroups.forEach((g, i) => pass.setBindGroup(i, g));
     l.vbos.forEach((b, i) => pass.setVertexBuffer(i, b));
-    pass.draw(l.count);
+    pass.draw(l.plan.count, l.plan.instances);
     pass.end();
     if (readback) {
       enc.copyTextureToBuffer({ texture: target }, { buffer: readback.buffer, bytesPerRow: readback.bytesPerRow }, [target.width, target.height]);
     }
     device.queue.submit([enc.finish()]);
+    depth?.destroy();
   }
 
   // Rows bottom first (GL's order) into the 2D canvas, top first.
@@ -650,7 +765,7 @@ export async function draw(bundle, canvas, { api = 'webgl2', inputs = null } = {
   const plan = planOf(bundle);
   await r.load(bundle, plan);
   const textures = {};
-  for (const s of bundle.manifest.samplers ?? []) textures[s.name] = pattern('checker');
+  for (const [s, t] of Object.entries(plan.textures)) textures[s] = { ...pattern(t.pattern, t.size[0], t.size[1]), filter: t.filter };
   const given = inputs ?? { buffers: uniformBuffers(bundle.manifest), textures };
   r.frame(given);
   return r;

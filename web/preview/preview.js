@@ -30,7 +30,8 @@ let inputs = null;
 let lastGood = null;
 let programIndex = 0;
 const orbit = new Orbit();
-const clock = { start: performance.now(), time: fixedTime ?? 0, frame: 0, mouse: [0, 0, 0, 0] };
+// No click yet: `mouse` is null, and the convention gives the centre.
+const clock = { start: performance.now(), time: fixedTime ?? 0, frame: 0, mouse: null };
 
 function setError(api, message) {
   state.errors[api] = message;
@@ -58,7 +59,7 @@ async function start() {
       const r = canvas.getBoundingClientRect();
       return [(e.clientX - r.left) * canvas.width / r.width, (1 - (e.clientY - r.top) / r.height) * canvas.height];
     };
-    canvas.addEventListener('pointermove', (e) => { if (e.buttons) clock.mouse.splice(0, 2, ...at(e)); });
+    canvas.addEventListener('pointermove', (e) => { if (e.buttons && clock.mouse) clock.mouse.splice(0, 2, ...at(e)); });
     canvas.addEventListener('pointerdown', (e) => { const p = at(e); clock.mouse = [p[0], p[1], p[0], p[1]]; });
   }
   $('program').addEventListener('change', () => {
@@ -115,7 +116,7 @@ async function show(bundle, generation) {
       setError(api, e instanceof DrawError ? e.message : `${e}`);
     }
   }
-  inputs = new Inputs(bundle.manifest, $('controls'), inputs, orbit);
+  inputs = new Inputs(bundle.manifest, plan, $('controls'), inputs, orbit);
   lastGood = { bundle, generation };
   drawFrame();
   await measure().catch((e) => { $('diff').textContent = `cannot compare: ${e.message}`; });
