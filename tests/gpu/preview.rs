@@ -159,38 +159,45 @@ fn a_save_redraws_without_a_reload_and_a_broken_save_keeps_the_last_picture() {
     check_picture(&steps[2], "after the broken save", |u, v| [1.0 - u, v, 0.25]);
 }
 
-/// A GL tutorial from ../shared (a full-screen fragment program with time
-/// and aspect by name convention): both pictures drawn, and at most this
+/// GL tutorials from ../shared, each saved over the last in one page: 03
+/// (a full-screen program, time and aspect by convention, no scene mesh),
+/// 04 (the scene's cube with a depth target and a checker texture) and 05
+/// (an instance grid). Both pictures drawn, not flat, and at most this
 /// share of their pixels differ by more than 2/255.
 const TUTORIAL_AGREEMENT: f64 = 0.01;
 
 #[test]
-fn a_tutorial_draws_alike_on_webgl2_and_webgpu() {
-    let tutorial = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/reference/daslang-tutorials/03_sdf.das");
-    if !tutorial.is_file() {
-        skip(format!("{} is missing", tutorial.display()));
+fn tutorials_draw_alike_on_webgl2_and_webgpu() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/reference/daslang-tutorials");
+    let names = ["03_sdf.das", "04_cube.das", "05_instancing.das"];
+    if let Some(missing) = names.iter().map(|n| root.join(n)).find(|p| !p.is_file()) {
+        skip(format!("{} is missing", missing.display()));
         return;
     }
     if !browser_ready() {
         return;
     }
     let dir = tempfile::tempdir().unwrap();
-    let file = dir.path().join("03_sdf.das");
-    std::fs::copy(&tutorial, &file).unwrap();
+    let file = dir.path().join("tutorial.das");
+    std::fs::copy(root.join(names[0]), &file).unwrap();
     let out = dir.path().join("out");
     std::fs::create_dir(&out).unwrap();
     let server = PreviewServer::start(&file);
-    let steps = drive(&server, &file, &[], &out);
-    let s = &steps[0].state;
-    assert_eq!(s["ok"], true, "{s}");
-    let gl = steps[0].webgl2.as_ref().unwrap_or_else(|| panic!("no WebGL2 picture: {s}"));
-    // Not one flat colour: the scene was drawn.
-    let distinct: std::collections::HashSet<&[u8]> = gl.chunks(4).collect();
-    assert!(distinct.len() > 100, "only {} colours in the WebGL2 picture", distinct.len());
-    if steps[0].webgpu.is_none() {
-        skip(format!("headless chromium drew no WebGPU picture: {}", s["errors"]["webgpu"]));
-        return;
+    let rest: Vec<String> = names[1..].iter().map(|n| std::fs::read_to_string(root.join(n)).unwrap()).collect();
+    let steps = drive(&server, &file, &rest.iter().map(String::as_str).collect::<Vec<_>>(), &out);
+    for (name, step) in names.iter().zip(&steps) {
+        let s = &step.state;
+        assert_eq!(s["ok"], true, "{name}: {s}");
+        assert_eq!(s["errors"]["webgl2"], serde_json::Value::Null, "{name}: {s}");
+        let gl = step.webgl2.as_ref().unwrap_or_else(|| panic!("{name}: no WebGL2 picture: {s}"));
+        // Not one flat colour: the scene was drawn.
+        let distinct: std::collections::HashSet<&[u8]> = gl.chunks(4).collect();
+        assert!(distinct.len() > 100, "{name}: only {} colours in the WebGL2 picture", distinct.len());
+        if step.webgpu.is_none() {
+            skip(format!("{name}: headless chromium drew no WebGPU picture: {}", s["errors"]["webgpu"]));
+            continue;
+        }
+        let share = s["diff"]["share"].as_f64().unwrap();
+        assert!(share <= TUTORIAL_AGREEMENT, "{name}: {:.2}% of the pixels differ: {}", share * 100.0, s["diff"]);
     }
-    let share = s["diff"]["share"].as_f64().unwrap();
-    assert!(share <= TUTORIAL_AGREEMENT, "{:.2}% of the pixels differ: {}", share * 100.0, s["diff"]);
 }

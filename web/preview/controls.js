@@ -114,7 +114,8 @@ export class Inputs {
         const control = plan.controls.find((c) => c.name === m.name);
         if (typeof spec === 'string') {
           this.bound.push({ buffer: b.name, member: m, t, convention: spec });
-          panel.append(note(`${m.name}: ${spec}${t?.cols ? ' (orbit camera: drag, wheel)' : ''}`));
+          const orbits = /view|projection|camera/.test(spec);
+          panel.append(note(`${m.name}: ${spec}${orbits ? ' (orbit camera: drag, wheel)' : ''}`));
           continue;
         }
         if (!t || control?.kind === 'none') {

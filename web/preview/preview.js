@@ -155,9 +155,10 @@ async function snapshot() {
 async function measure() {
   const s = await snapshot();
   state.diff = s.diff;
+  const drawn = Object.values(renderers).filter((r) => r.loaded).length;
   $('diff').textContent = s.diff
     ? `${(100 * s.diff.share).toFixed(2)}% of pixels differ (worst channel: ${s.diff.worst}/255)`
-    : 'one picture: nothing to compare';
+    : drawn ? 'one picture: nothing to compare' : 'nothing drawn';
 }
 
 let lastMeasure = 0;
