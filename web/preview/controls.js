@@ -114,7 +114,7 @@ export class Inputs {
         const control = plan.controls.find((c) => c.name === m.name);
         if (typeof spec === 'string') {
           this.bound.push({ buffer: b.name, member: m, t, convention: spec });
-          const orbits = /view|projection|camera/.test(spec);
+          const orbits = /^(view|view_rotation|projection|view_projection|model_view_projection|camera_position)$/.test(spec);
           panel.append(note(`${m.name}: ${spec}${orbits ? ' (orbit camera: drag, wheel)' : ''}`));
           continue;
         }
@@ -131,6 +131,10 @@ export class Inputs {
       }
     }
     for (const [s, tex] of Object.entries(plan.textures)) {
+      if (tex.depthCleared) {
+        panel.append(note(`${s}: a depth target cleared to 1 (every comparison passes)`));
+        continue;
+      }
       const row = document.createElement('label');
       row.className = 'control';
       const select = document.createElement('select');

@@ -97,12 +97,16 @@ function checkColourOutput(fragment) {
 
 function planOfScene(m, scene) {
   const passes = scene.passes ?? [];
-  const onScreen = passes.filter((p) => p.color === 'screen');
+  // Passes that only clear a depth target (what a shadow sampler reads when
+  // nothing draws its map) are the depth texture itself, cleared to 1.
+  const clearOnly = passes.filter((p) => p.draws.length === 0 && p.depth && !p.color);
+  const drawn = passes.filter((p) => !clearOnly.includes(p));
   // What this page does not draw yet is named, never skipped.
-  if (passes.length !== 1 || onScreen.length !== 1) {
-    throw new DrawError('plan', `the preview draws scenes of one pass to the screen; this one has ${passes.length} (${passes.map((p) => p.name).join(', ')})`);
+  if (drawn.length !== 1 || drawn[0].color !== 'screen') {
+    throw new DrawError('plan', `the preview draws scenes of one pass to the screen (and depth targets cleared); this one has ${drawn.length} (${drawn.map((p) => p.name).join(', ')})`);
   }
-  const pass = passes[0];
+  const pass = drawn[0];
+  const cleared = new Set(clearOnly.map((p) => p.depth));
   if (pass.draws.length !== 1) throw new DrawError('plan', `the preview draws one draw a pass; pass \`${pass.name}\` has ${pass.draws.length}`);
   const draw = pass.draws[0];
   const vertex = entryOf(m, pass.vertex);
@@ -123,6 +127,11 @@ function planOfScene(m, scene) {
   }
   const textures = {};
   for (const [sampler, input] of Object.entries(pass.samplers ?? {})) {
+    if (cleared.has(input.texture)) {
+      const target = (scene.targets ?? []).find((x) => x.name === input.texture);
+      textures[sampler] = { depthCleared: true, size: target?.size ?? [64, 64], filter: input.filter ?? 'linear' };
+      continue;
+    }
     const tex = (scene.textures ?? []).find((x) => x.name === input.texture);
     if (!tex || !tex.pattern) throw new DrawError('plan', `sampler \`${sampler}\` reads \`${input.texture}\`, which is not a built-in pattern (render targets and image files are not drawn by the preview yet)`);
     textures[sampler] = { pattern: tex.pattern, size: tex.size ?? [64, 64], filter: input.filter ?? 'linear' };
@@ -261,12 +270,14 @@ export function readMember(words, member) {
 }
 
 // What this preview cannot bind yet, named, rather than drawn wrong.
-function refuseUnsupported(m, entries) {
+function refuseUnsupported(m, plan) {
+  const entries = plan.entries;
   const used = new Set(entries.flatMap((e) => [...(e.uniform_buffers ?? []), ...(e.samplers ?? []), ...(e.storage_buffers ?? []), ...(e.images ?? [])]));
   for (const s of m.samplers ?? []) {
     if (!used.has(s.name)) continue;
-    if (s.dimension !== '2d' || s.comparison || s.sample_type !== 'float' || s.array_size) {
-      throw new DrawError('plan', `the preview binds built-in 2D colour textures only; \`${s.name} : ${s.type}\` is not one`);
+    const depth = plan.textures[s.name]?.depthCleared;
+    if (s.dimension !== '2d' || s.array_size || (depth ? !s.comparison : s.comparison || s.sample_type !== 'float')) {
+      throw new DrawError('plan', `the preview binds built-in 2D colour textures and cleared depth targets only; \`${s.name} : ${s.type}\` is not one here`);
     }
   }
   for (const b of m.uniform_buffers ?? []) {
@@ -339,7 +350,7 @@ class WebGL2Renderer {
   load(bundle, plan) {
     const gl = this.gl;
     const m = bundle.manifest;
-    refuseUnsupported(m, plan.entries);
+    refuseUnsupported(m, plan);
     const vsText = plan.vertex ? fileOf(bundle, plan.vertex, 'gles300') : glslFullScreen(plan.fragment);
     const vs = this.compile(gl.VERTEX_SHADER, plan.vertex ? plan.vertex.files.gles300 : 'the full-screen vertex shader', vsText);
     const fs = this.compile(gl.FRAGMENT_SHADER, plan.fragment.files.gles300, fileOf(bundle, plan.fragment, 'gles300'));
@@ -386,7 +397,23 @@ class WebGL2Renderer {
       const loc = gl.getUniformLocation(program, s.glsl_name);
       if (loc === null) continue;
       gl.uniform1i(loc, s.texture_unit);
-      samplers.push({ name: s.name, unit: s.texture_unit, texture: gl.createTexture() });
+      const texture = gl.createTexture();
+      const depth = plan.textures[s.name]?.depthCleared ? plan.textures[s.name] : null;
+      if (depth) {
+        // The cleared depth target: every texel 1, compared LEQUAL.
+        const [w, h] = depth.size;
+        gl.bindTexture(gl.TEXTURE_2D, texture);
+        gl.texImage2D(gl.TEXTURE_2D, 0, gl.DEPTH_COMPONENT32F, w, h, 0, gl.DEPTH_COMPONENT, gl.FLOAT, new Float32Array(w * h).fill(1));
+        const filter = depth.filter === 'nearest' ? gl.NEAREST : gl.LINEAR;
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, filter);
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, filter);
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_COMPARE_MODE, gl.COMPARE_REF_TO_TEXTURE);
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_COMPARE_FUNC, gl.LEQUAL);
+        gl.bindTexture(gl.TEXTURE_2D, null);
+      }
+      samplers.push({ name: s.name, unit: s.texture_unit, texture });
     }
     gl.useProgram(null);
     const vao = gl.createVertexArray();
@@ -568,7 +595,7 @@ class WebGPURenderer {
   async load(bundle, plan) {
     const device = this.device;
     const m = bundle.manifest;
-    refuseUnsupported(m, plan.entries);
+    refuseUnsupported(m, plan);
     const wgsl = bundle.files.find((f) => f.target === 'wgsl');
     if (!wgsl) throw new DrawError('plan', 'the bundle has no WGSL output');
     const code = plan.vertex ? wgsl.text : wgsl.text + wgslFullScreen(plan.fragment);
@@ -594,10 +621,24 @@ class WebGPURenderer {
     const samplers = [];
     for (const s of m.samplers ?? []) {
       if (!used.has(s.name)) continue;
-      const texture = device.createTexture({ size: [1, 1], format: 'rgba8unorm', usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST });
-      const entry = { name: s.name, group: s.group, binding: s.texture_binding, texture, sampler: this.sampler('linear'), image: null };
-      group(s.group).push({ layout: { binding: s.texture_binding, visibility: vis, texture: { sampleType: 'float', viewDimension: '2d' } }, texture: entry });
-      group(s.group).push({ layout: { binding: s.sampler_binding, visibility: vis, sampler: { type: 'filtering' } }, sampler: entry });
+      const depth = plan.textures[s.name]?.depthCleared ? plan.textures[s.name] : null;
+      let entry;
+      if (depth) {
+        // The cleared depth target: a depth32float texture a pass clears to 1, compared less-equal.
+        const texture = device.createTexture({ size: depth.size, format: 'depth32float', usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.RENDER_ATTACHMENT });
+        const enc = device.createCommandEncoder();
+        enc.beginRenderPass({ colorAttachments: [], depthStencilAttachment: { view: texture.createView(), depthClearValue: 1, depthLoadOp: 'clear', depthStoreOp: 'store' } }).end();
+        device.queue.submit([enc.finish()]);
+        const f = depth.filter === 'nearest' ? 'nearest' : 'linear';
+        entry = { name: s.name, texture, sampler: device.createSampler({ compare: 'less-equal', magFilter: f, minFilter: f }), image: null, fixed: true };
+        group(s.group).push({ layout: { binding: s.texture_binding, visibility: vis, texture: { sampleType: 'depth', viewDimension: '2d' } }, texture: entry });
+        group(s.group).push({ layout: { binding: s.sampler_binding, visibility: vis, sampler: { type: 'comparison' } }, sampler: entry });
+      } else {
+        const texture = device.createTexture({ size: [1, 1], format: 'rgba8unorm', usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST });
+        entry = { name: s.name, texture, sampler: this.sampler('linear'), image: null };
+        group(s.group).push({ layout: { binding: s.texture_binding, visibility: vis, texture: { sampleType: 'float', viewDimension: '2d' } }, texture: entry });
+        group(s.group).push({ layout: { binding: s.sampler_binding, visibility: vis, sampler: { type: 'filtering' } }, sampler: entry });
+      }
       samplers.push(entry);
     }
     const layouts = [];
@@ -672,7 +713,7 @@ class WebGPURenderer {
     let rebind = !l.bindGroups;
     for (const s of l.samplers) {
       const img = textures[s.name];
-      if (!img || s.image === img) continue;
+      if (!img || s.fixed || s.image === img) continue;
       s.texture.destroy();
       s.texture = device.createTexture({ size: [img.width, img.height], format: 'rgba8unorm', usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST });
       device.queue.writeTexture({ texture: s.texture }, img.data, { bytesPerRow: img.width * 4 }, [img.width, img.height]);
