@@ -44,35 +44,33 @@ const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a
 const dot = (a, b) => a.reduce((s, x, i) => s + x * b[i], 0);
 const normalize = (a) => { const l = Math.hypot(...a); return a.map((x) => x / l); };
 
-// Triangles as vertex lists, each turned counter-clockwise seen from the
-// side its normals point to.
-function triangles(vertices, indices) {
-  const out = [];
-  for (let i = 0; i < indices.length; i += 3) {
-    let [a, b, c] = [vertices[indices[i]], vertices[indices[i + 1]], vertices[indices[i + 2]]];
-    const n = [0, 1, 2].map((k) => a.normal[k] + b.normal[k] + c.normal[k]);
-    if (dot(cross(sub(b.position, a.position), sub(c.position, a.position)), n) < 0) [b, c] = [c, b];
-    out.push(a, b, c);
-  }
-  return out;
+// The meshes are laid out as the native runner's (src/render/plan/meshes.rs):
+// the same vertices, in the same order, and the same triangles, so that
+// the two draw the same picture.
+
+// A mesh's colour attribute: the position mapped to [0, 1].
+const colourOf = (p) => [...p.map((x) => Math.min(1, Math.max(0, x + 0.5))), 1];
+
+function indexed(vertices, indices) {
+  return indices.map((i) => vertices[i]);
 }
 
 function cube() {
   const v = [];
   const idx = [];
-  for (const [n, u, w] of [
-    [[1, 0, 0], [0, 0, -1], [0, 1, 0]], [[-1, 0, 0], [0, 0, 1], [0, 1, 0]],
-    [[0, 1, 0], [1, 0, 0], [0, 0, -1]], [[0, -1, 0], [1, 0, 0], [0, 0, 1]],
-    [[0, 0, 1], [1, 0, 0], [0, 1, 0]], [[0, 0, -1], [-1, 0, 0], [0, 1, 0]],
-  ]) {
-    const base = v.length;
-    for (const [su, sv] of [[0, 0], [1, 0], [1, 1], [0, 1]]) {
-      const position = [0, 1, 2].map((k) => 0.5 * n[k] + (su - 0.5) * u[k] + (sv - 0.5) * w[k]);
-      v.push({ position, normal: n, tangent: [...u, 1], uv: [su, sv], color: [...position.map((x) => x + 0.5), 1] });
+  const faces = [
+    [[0, 0, 1], [1, 0, 0], [0, 1, 0]], [[1, 0, 0], [0, 1, 0], [0, 0, 1]], [[0, 1, 0], [0, 0, 1], [1, 0, 0]],
+    [[-1, 0, 0], [0, 0, 1], [0, 1, 0]], [[0, -1, 0], [1, 0, 0], [0, 0, 1]], [[0, 0, -1], [0, 1, 0], [1, 0, 0]],
+  ];
+  faces.forEach(([n, u, w], i) => {
+    for (const [su, sv] of [[1, 1], [-1, 1], [-1, -1], [1, -1]]) {
+      const position = [0, 1, 2].map((k) => (n[k] + u[k] * su + w[k] * sv) * 0.5);
+      v.push({ position, normal: n, tangent: [...u, 1], uv: [(su + 1) / 2, (sv + 1) / 2], color: colourOf(position) });
     }
-    idx.push(base, base + 1, base + 2, base, base + 2, base + 3);
-  }
-  return triangles(v, idx);
+    const b = 4 * i;
+    idx.push(b, b + 1, b + 2, b + 2, b + 3, b);
+  });
+  return indexed(v, idx);
 }
 
 function sphere() {
@@ -83,27 +81,26 @@ function sphere() {
     const theta = (r / rings) * Math.PI;
     for (let s = 0; s <= segments; s++) {
       const phi = (s / segments) * 2 * Math.PI;
-      const normal = [Math.sin(theta) * Math.cos(phi), Math.cos(theta), Math.sin(theta) * Math.sin(phi)];
+      const normal = [Math.sin(theta) * Math.sin(phi), Math.cos(theta), Math.sin(theta) * Math.cos(phi)];
       const position = normal.map((x) => 0.5 * x);
-      v.push({ position, normal, tangent: [-Math.sin(phi), 0, Math.cos(phi), 1], uv: [s / segments, r / rings], color: [...position.map((x) => x + 0.5), 1] });
+      v.push({ position, normal, tangent: [Math.cos(phi), 0, -Math.sin(phi), 1], uv: [s / segments, r / rings], color: colourOf(position) });
     }
   }
+  const row = segments + 1;
   for (let r = 0; r < rings; r++) {
     for (let s = 0; s < segments; s++) {
-      const a = r * (segments + 1) + s;
-      const b = a + segments + 1;
-      if (r > 0) idx.push(a, a + 1, b);
-      if (r < rings - 1) idx.push(a + 1, b + 1, b);
+      const [a, b, c, d] = [r * row + s, (r + 1) * row + s, (r + 1) * row + s + 1, r * row + s + 1];
+      idx.push(a, b, c, a, c, d);
     }
   }
-  return triangles(v, idx);
+  return indexed(v, idx);
 }
 
 function plane() {
-  const v = [[-1, -1], [1, -1], [1, 1], [-1, 1]].map(([x, z]) => ({
-    position: [x, 0, z], normal: [0, 1, 0], tangent: [1, 0, 0, 1], uv: [(x + 1) / 2, (z + 1) / 2], color: [x + 0.5, 0.5, z + 0.5, 1],
+  const v = [[-1, 1], [1, 1], [1, -1], [-1, -1]].map(([x, z]) => ({
+    position: [x, 0, z], normal: [0, 1, 0], tangent: [1, 0, 0, 1], uv: [(x + 1) / 2, (z + 1) / 2], color: colourOf([x, 0, z]),
   }));
-  return triangles(v, [0, 1, 2, 0, 2, 3]);
+  return indexed(v, [0, 1, 2, 0, 2, 3]);
 }
 
 function fullscreenTriangle() {
@@ -195,7 +192,7 @@ export function conventions(camera, clock) {
   return {
     time: [clock.time],
     frame: [clock.frame],
-    resolution: [clock.width, clock.height, 1],
+    resolution: [clock.width, clock.height, 1, clock.time],
     aspect: [aspect],
     mouse: clock.mouse ?? [clock.width / 2, clock.height / 2, 0, 0],
     texel_size: [1 / clock.width, 1 / clock.height],
@@ -207,7 +204,7 @@ export function conventions(camera, clock) {
     model_view_projection: mul(viewProjection, model),
     // A turn's inverse transpose is itself.
     normal_matrix: model,
-    camera_position: eye,
+    camera_position: [...eye, 1],
     light_direction: light,
     light_view_projection: mul(orthographic(-4, 4, -4, 4, 0.1, 20), lookAt(light.map((x) => 10 * x), [0, 0, 0], [0, 1, 0])),
   };
