@@ -105,6 +105,7 @@ export class Inputs {
     this.bound = []; // { buffer, member, t, convention }
     this.orbit = orbit;
     this.images = new Map();
+    this.files = new Map(); // sampler -> an image file's texels
     panel.replaceChildren();
     for (const b of manifest.uniform_buffers ?? []) {
       for (const m of b.members) {
@@ -139,10 +140,34 @@ export class Inputs {
       row.className = 'control';
       const select = document.createElement('select');
       for (const p of PATTERNS) select.append(new Option(p, p));
+      // An image file of the user's (chosen or dropped on the button) joins the menu.
+      const kept = previous?.files.get(s);
+      if (kept) {
+        this.files.set(s, kept);
+        select.append(new Option(kept.name, 'file'));
+      }
       select.value = previous?.patterns.get(s) ?? tex.pattern;
       this.patterns.set(s, select.value);
       select.addEventListener('change', () => this.patterns.set(s, select.value));
-      row.append(document.createTextNode(`${s} `), select);
+      const file = document.createElement('input');
+      file.type = 'file';
+      file.accept = 'image/*';
+      file.addEventListener('change', async () => {
+        const f = file.files[0];
+        if (!f) return;
+        const bitmap = await createImageBitmap(f);
+        const canvas = new OffscreenCanvas(bitmap.width, bitmap.height);
+        const ctx = canvas.getContext('2d');
+        ctx.drawImage(bitmap, 0, 0);
+        // Row 0 first, the image's top: as the patterns and the native runner's image files.
+        const px = ctx.getImageData(0, 0, bitmap.width, bitmap.height);
+        this.files.set(s, { name: f.name, width: bitmap.width, height: bitmap.height, data: new Uint8Array(px.data.buffer) });
+        select.querySelector('option[value="file"]')?.remove();
+        select.append(new Option(f.name, 'file'));
+        select.value = 'file';
+        this.patterns.set(s, 'file');
+      });
+      row.append(document.createTextNode(`${s} `), select, file);
       panel.append(row);
     }
   }
@@ -201,6 +226,12 @@ export class Inputs {
     const textures = {};
     for (const [s, p] of this.patterns) {
       const tex = this.plan.textures[s];
+      const file = p === 'file' ? this.files.get(s) : null;
+      if (file) {
+        file.filter = tex.filter;
+        textures[s] = file;
+        continue;
+      }
       const key = `${p}:${tex.size.join('x')}`;
       if (!this.images.has(key)) this.images.set(key, pattern(p, tex.size[0], tex.size[1]));
       // One object per pattern, size and filter: a renderer uploads a texture when its object changes.

@@ -167,7 +167,8 @@ function tick(now) {
     clock.time = (now - clock.start) / 1000;
     clock.frame++;
   } else if (fixedTime !== null) clock.time = fixedTime;
-  if (!$('paused').checked || fixedTime === null) drawFrame();
+  // Paused or not, every frame is drawn: a control changes the picture.
+  drawFrame();
   if (now - lastMeasure > 1000 && lastGood && !$('paused').checked) {
     lastMeasure = now;
     measure().catch(() => {});
