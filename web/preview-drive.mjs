@@ -77,6 +77,18 @@ try {
       state[api] = !!state[api];
     }
     result.steps.push(state);
+    // UMBRAC_PREVIEW_CONTROL=NAME=VALUE: after the first picture, the first
+    // slider of NAME's control is moved to VALUE as a user would, and the
+    // pictures are written as control.API.rgba.
+    const control = process.env.UMBRAC_PREVIEW_CONTROL;
+    if (step === 0 && control) {
+      const [name, value] = control.split('=');
+      const slider = page.locator('fieldset.control', { has: page.locator(`legend:text-matches("^${name} :")`) }).locator('input[type=range]').first();
+      await slider.evaluate((el, v) => { el.value = v; el.dispatchEvent(new Event('input', { bubbles: true })); }, value);
+      const snap = await page.evaluate(() => window.umbracSnapshot());
+      for (const api of ['webgl2', 'webgpu']) if (snap[api]) writeFileSync(join(outDir, `control.${api}.rgba`), Buffer.from(snap[api], 'base64'));
+      result.control = { name, value, diff: snap.diff };
+    }
   }
   result.ok = true;
 } catch (e) {

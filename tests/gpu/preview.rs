@@ -59,6 +59,12 @@ struct Step {
 }
 
 fn drive(server: &PreviewServer, saved: &Path, saves: &[&str], out: &Path) -> Vec<Step> {
+    drive_with(server, saved, saves, out, None)
+}
+
+/// `control`: NAME=VALUE, a slider moved after the first picture
+/// (`control.API.rgba` in `out`).
+fn drive_with(server: &PreviewServer, saved: &Path, saves: &[&str], out: &Path, control: Option<&str>) -> Vec<Step> {
     let mut files = Vec::new();
     for (i, text) in saves.iter().enumerate() {
         let f = out.join(format!("save{i}.das"));
@@ -71,6 +77,7 @@ fn drive(server: &PreviewServer, saved: &Path, saves: &[&str], out: &Path) -> Ve
         .arg(saved)
         .arg(out)
         .args(&files)
+        .envs(control.map(|c| ("UMBRAC_PREVIEW_CONTROL", c)))
         .stdin(Stdio::null())
         .status()
         .expect("node runs");
@@ -134,17 +141,21 @@ fn a_save_redraws_without_a_reload_and_a_broken_save_keeps_the_last_picture() {
     std::fs::create_dir(&out).unwrap();
     let server = PreviewServer::start(&main);
     // The include is what is saved: what the program reads is watched too.
-    let steps = drive(&server, &tint, &[TINT_EDITED, TINT_BROKEN], &out);
+    // After the first picture, u_blue's slider is moved to 0.75.
+    let steps = drive_with(&server, &tint, &[TINT_EDITED, TINT_BROKEN], &out, Some("u_blue=0.75"));
     assert_eq!(steps.len(), 3);
 
     assert_eq!(steps[0].state["ok"], true, "{}", steps[0].state);
     check_picture(&steps[0], "first picture", |u, v| [u, v, 0.25]);
+    let moved = Step { state: steps[0].state.clone(), webgl2: std::fs::read(out.join("control.webgl2.rgba")).ok(), webgpu: std::fs::read(out.join("control.webgpu.rgba")).ok() };
+    let diff = serde_json::from_slice::<serde_json::Value>(&std::fs::read(out.join("result.json")).unwrap()).unwrap()["control"]["diff"].clone();
+    check_picture(&Step { state: serde_json::json!({ "width": moved.state["width"], "height": moved.state["height"], "diff": diff }), ..moved }, "u_blue's slider at 0.75", |u, v| [u, v, 0.75]);
 
     let s = &steps[1].state;
     assert_eq!(s["ok"], true, "{s}");
     assert_eq!(s["notReloaded"], true);
     assert!(s["drawn"].as_u64() > steps[0].state["drawn"].as_u64(), "{s}");
-    check_picture(&steps[1], "after the save", |u, v| [1.0 - u, v, 0.25]);
+    check_picture(&steps[1], "after the save", |u, v| [1.0 - u, v, 0.75]);
 
     let s = &steps[2].state;
     assert_eq!(s["ok"], false, "{s}");
@@ -156,7 +167,7 @@ fn a_save_redraws_without_a_reload_and_a_broken_save_keeps_the_last_picture() {
     let overlay = s["overlayText"].as_str().unwrap();
     assert!(overlay.contains("unknown name `nope`") && overlay.contains("tint.das:2:31") && overlay.contains('^'), "{overlay}");
     // The last good program still draws.
-    check_picture(&steps[2], "after the broken save", |u, v| [1.0 - u, v, 0.25]);
+    check_picture(&steps[2], "after the broken save", |u, v| [1.0 - u, v, 0.75]);
 }
 
 /// GL tutorials from ../shared, each saved over the last in one page: 03

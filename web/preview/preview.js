@@ -89,7 +89,23 @@ function fail(bundle) {
   $('overlay').hidden = false;
 }
 
+// True while a program loads: a frame then would draw the new program
+// with the old one's inputs.
+let switching = false;
+
 async function show(bundle, generation) {
+  switching = true;
+  try {
+    await switchTo(bundle, generation);
+  } finally {
+    switching = false;
+  }
+  drawFrame();
+  await measure().catch((e) => { $('diff').textContent = `cannot compare: ${e.message}`; });
+  state.drawn = generation;
+}
+
+async function switchTo(bundle, generation) {
   state.ok = true;
   state.diagnostics = bundle.diagnostics;
   $('overlay').hidden = true;
@@ -104,36 +120,41 @@ async function show(bundle, generation) {
     plan = planOf(bundle, programIndex);
   } catch (e) {
     for (const api of Object.keys(renderers)) setError(api, e.message);
-    state.drawn = generation;
     return;
   }
+  const next = new Inputs(bundle.manifest, plan, $('controls'), inputs, orbit);
   for (const [api, r] of Object.entries(renderers)) {
     try {
       await r.load(bundle, plan);
+      inputsOf[api] = next;
       setError(api, null);
     } catch (e) {
-      // The last program that loaded keeps drawing in this pane.
+      // The last program that loaded keeps drawing in this pane, with its inputs.
       setError(api, e instanceof DrawError ? e.message : `${e}`);
     }
   }
-  inputs = new Inputs(bundle.manifest, plan, $('controls'), inputs, orbit);
+  inputs = next;
   lastGood = { bundle, generation };
-  drawFrame();
-  await measure().catch((e) => { $('diff').textContent = `cannot compare: ${e.message}`; });
-  state.drawn = generation;
 }
+
+// Each pane's program's inputs (the last that loaded there), and one
+// frame's values of each.
+const inputsOf = {};
 
 function frameInputs() {
   const { width, height } = panes.webgl2.canvas;
-  return inputs.frame({ ...clock, width, height });
+  const given = new Map();
+  for (const i of Object.values(inputsOf)) if (!given.has(i)) given.set(i, i.frame({ ...clock, width, height }));
+  return (api) => given.get(inputsOf[api]);
 }
 
 function drawFrame() {
-  if (!inputs) return;
+  if (switching) return;
   const given = frameInputs();
   for (const [api, r] of Object.entries(renderers)) {
+    if (!inputsOf[api]) continue;
     try {
-      r.frame(given);
+      r.frame(given(api));
     } catch (e) {
       setError(api, e.message);
     }
@@ -145,8 +166,8 @@ async function snapshot() {
   const given = frameInputs();
   const out = { width: panes.webgl2.canvas.width, height: panes.webgl2.canvas.height };
   for (const [api, r] of Object.entries(renderers)) {
-    if (!r.loaded) continue;
-    out[api] = await r.read(given);
+    if (!r.loaded || !inputsOf[api]) continue;
+    out[api] = await r.read(given(api));
   }
   out.diff = out.webgl2 && out.webgpu ? compare(out.webgl2, out.webgpu) : null;
   return out;
