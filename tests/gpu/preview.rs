@@ -59,12 +59,12 @@ struct Step {
 }
 
 fn drive(server: &PreviewServer, saved: &Path, saves: &[&str], out: &Path) -> Vec<Step> {
-    drive_with(server, saved, saves, out, None)
+    drive_with(server, "time=1", saved, saves, out, None)
 }
 
-/// `control`: NAME=VALUE, a slider moved after the first picture
-/// (`control.API.rgba` in `out`).
-fn drive_with(server: &PreviewServer, saved: &Path, saves: &[&str], out: &Path, control: Option<&str>) -> Vec<Step> {
+/// `query`: the page's (docs/preview.md); `control`: NAME=VALUE, a slider
+/// moved after the first picture (`control.API.rgba` in `out`).
+fn drive_with(server: &PreviewServer, query: &str, saved: &Path, saves: &[&str], out: &Path, control: Option<&str>) -> Vec<Step> {
     let mut files = Vec::new();
     for (i, text) in saves.iter().enumerate() {
         let f = out.join(format!("save{i}.das"));
@@ -73,7 +73,7 @@ fn drive_with(server: &PreviewServer, saved: &Path, saves: &[&str], out: &Path, 
     }
     let status = Command::new("node")
         .arg(web_dir().join("preview-drive.mjs"))
-        .arg(format!("{}?time=1", server.url()))
+        .arg(format!("{}?{query}", server.url()))
         .arg(saved)
         .arg(out)
         .args(&files)
@@ -142,7 +142,7 @@ fn a_save_redraws_without_a_reload_and_a_broken_save_keeps_the_last_picture() {
     let server = PreviewServer::start(&main);
     // The include is what is saved: what the program reads is watched too.
     // After the first picture, u_blue's slider is moved to 0.75.
-    let steps = drive_with(&server, &tint, &[TINT_EDITED, TINT_BROKEN], &out, Some("u_blue=0.75"));
+    let steps = drive_with(&server, "time=1", &tint, &[TINT_EDITED, TINT_BROKEN], &out, Some("u_blue=0.75"));
     assert_eq!(steps.len(), 3);
 
     assert_eq!(steps[0].state["ok"], true, "{}", steps[0].state);
@@ -213,4 +213,38 @@ fn tutorials_draw_alike_on_webgl2_and_webgpu() {
         let share = s["diff"]["share"].as_f64().unwrap();
         assert!(share <= TUTORIAL_AGREEMENT, "{name}: {:.2}% of the pixels differ: {}", share * 100.0, s["diff"]);
     }
+}
+
+/// Tutorial 10's G-buffer program writes three colour outputs: each is
+/// viewable (`?output=LOCATION`), alike on both APIs, and they differ.
+#[test]
+fn every_colour_output_of_a_g_buffer_is_viewable() {
+    let tutorial = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/reference/daslang-tutorials/10_deferred.das");
+    if !tutorial.is_file() {
+        skip(format!("{} is missing", tutorial.display()));
+        return;
+    }
+    if !browser_ready() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("10_deferred.das");
+    std::fs::copy(&tutorial, &file).unwrap();
+    let server = PreviewServer::start(&file);
+    let mut pictures = Vec::new();
+    for location in 0..3 {
+        let out = dir.path().join(format!("out{location}"));
+        std::fs::create_dir(&out).unwrap();
+        let steps = drive_with(&server, &format!("time=1&output={location}"), &file, &[], &out, None);
+        let s = &steps[0].state;
+        assert_eq!(s["errors"]["webgl2"], serde_json::Value::Null, "output {location}: {s}");
+        pictures.push(steps[0].webgl2.clone().unwrap_or_else(|| panic!("output {location}: no WebGL2 picture: {s}")));
+        if steps[0].webgpu.is_none() {
+            skip(format!("output {location}: headless chromium drew no WebGPU picture: {}", s["errors"]["webgpu"]));
+            continue;
+        }
+        let share = s["diff"]["share"].as_f64().unwrap();
+        assert!(share <= TUTORIAL_AGREEMENT, "output {location}: {:.2}% of the pixels differ: {}", share * 100.0, s["diff"]);
+    }
+    assert!(pictures[0] != pictures[1] && pictures[1] != pictures[2] && pictures[0] != pictures[2], "the three outputs show the same picture");
 }

@@ -95,6 +95,12 @@ function checkColourOutput(fragment) {
   }
 }
 
+// The fragment's float colour outputs by location (MRT): which one is
+// shown is the renderer's `view`.
+function colourOutputs(fragment) {
+  return fragment.outputs.filter((o) => parseType(o.type)?.scalar === 'float').map((o) => ({ name: o.name, location: o.location })).sort((a, b) => a.location - b.location);
+}
+
 function planOfScene(m, scene) {
   const passes = scene.passes ?? [];
   // Passes that only clear a depth target (what a shadow sampler reads when
@@ -148,6 +154,7 @@ function planOfScene(m, scene) {
     camera: scene.camera ?? {},
     controls: scene.controls ?? [],
     entries: [vertex, fragment],
+    outputs: colourOutputs(fragment),
   };
 }
 
@@ -217,7 +224,7 @@ function madeUpPlan(m, programIndex) {
   for (const s of m.samplers ?? []) textures[s.name] = { pattern: 'checker', size: [64, 64], filter: 'linear' };
   return {
     vertex, fragment, attributes, count: vertex ? QUAD.length : 3, instances: 1, depth: false, cull: 'none', clear: [0, 0, 0, 1],
-    values: conventionsByName(m), textures, camera: {}, controls: [], entries,
+    values: conventionsByName(m), textures, camera: {}, controls: [], entries, outputs: colourOutputs(fragment),
   };
 }
 
@@ -437,7 +444,7 @@ class WebGL2Renderer {
     gl.bindVertexArray(null);
     gl.bindBuffer(gl.ARRAY_BUFFER, null);
     this.unload();
-    this.loaded = { program, blocks, loose, samplers, vao, vbos, plan, textureOf: new Map() };
+    this.loaded = { program, blocks, loose, samplers, vao, vbos, plan, textureOf: new Map(), targets: null };
   }
 
   unload() {
@@ -449,7 +456,52 @@ class WebGL2Renderer {
     l.vbos.forEach((b) => gl.deleteBuffer(b));
     l.blocks.forEach((b) => gl.deleteBuffer(b.ubo));
     l.samplers.forEach((s) => gl.deleteTexture(s.texture));
+    this.dropTargets(l);
     this.loaded = null;
+  }
+
+  dropTargets(l) {
+    const gl = this.gl;
+    if (!l.targets) return;
+    gl.deleteFramebuffer(l.targets.fbo);
+    l.targets.textures.forEach((t) => gl.deleteTexture(t));
+    gl.deleteRenderbuffer(l.targets.depth);
+    l.targets = null;
+  }
+
+  // A program with several colour outputs draws into a texture for each
+  // (and a depth buffer of its own); the one viewed is copied to the canvas.
+  mrtTargets(l) {
+    const gl = this.gl;
+    const { width, height } = this.canvas;
+    if (l.targets && l.targets.width === width && l.targets.height === height) return l.targets;
+    this.dropTargets(l);
+    const fbo = gl.createFramebuffer();
+    gl.bindFramebuffer(gl.FRAMEBUFFER, fbo);
+    const textures = [];
+    const buffers = [];
+    const top = Math.max(...l.plan.outputs.map((o) => o.location));
+    for (let loc = 0; loc <= top; loc++) {
+      if (!l.plan.outputs.some((o) => o.location === loc)) {
+        buffers.push(gl.NONE);
+        continue;
+      }
+      const t = gl.createTexture();
+      gl.bindTexture(gl.TEXTURE_2D, t);
+      gl.texStorage2D(gl.TEXTURE_2D, 1, gl.RGBA8, width, height);
+      gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0 + loc, gl.TEXTURE_2D, t, 0);
+      textures.push(t);
+      buffers.push(gl.COLOR_ATTACHMENT0 + loc);
+    }
+    const depth = gl.createRenderbuffer();
+    gl.bindRenderbuffer(gl.RENDERBUFFER, depth);
+    gl.renderbufferStorage(gl.RENDERBUFFER, gl.DEPTH_COMPONENT24, width, height);
+    gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, depth);
+    gl.drawBuffers(buffers);
+    gl.bindTexture(gl.TEXTURE_2D, null);
+    gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    l.targets = { fbo, textures, depth, width, height };
+    return l.targets;
   }
 
   frame({ buffers, textures }) {
@@ -457,6 +509,8 @@ class WebGL2Renderer {
     if (!l) return;
     const gl = this.gl;
     const { plan } = l;
+    const mrt = plan.outputs.length > 1 ? this.mrtTargets(l) : null;
+    gl.bindFramebuffer(gl.FRAMEBUFFER, mrt ? mrt.fbo : null);
     gl.viewport(0, 0, this.canvas.width, this.canvas.height);
     gl.clearColor(...plan.clear);
     gl.clearDepth(1);
@@ -508,6 +562,14 @@ class WebGL2Renderer {
     gl.drawArraysInstanced(gl.TRIANGLES, 0, plan.count, plan.instances);
     gl.bindVertexArray(null);
     gl.useProgram(null);
+    if (mrt) {
+      const { width, height } = this.canvas;
+      gl.bindFramebuffer(gl.READ_FRAMEBUFFER, mrt.fbo);
+      gl.readBuffer(gl.COLOR_ATTACHMENT0 + (this.view ?? plan.outputs[0].location));
+      gl.bindFramebuffer(gl.DRAW_FRAMEBUFFER, null);
+      gl.blitFramebuffer(0, 0, width, height, 0, 0, width, height, gl.COLOR_BUFFER_BIT, gl.NEAREST);
+      gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+    }
     const err = gl.getError();
     if (err !== gl.NO_ERROR) throw new DrawError('api', `WebGL error ${err}`);
   }
@@ -558,6 +620,12 @@ ${body.join('\n')}
   return o;
 }
 `;
+}
+
+// One rgba8unorm target per colour output location; none at a gap.
+function colourTargets(plan) {
+  const top = Math.max(0, ...plan.outputs.map((o) => o.location));
+  return Array.from({ length: top + 1 }, (_, loc) => (plan.outputs.some((o) => o.location === loc) ? { format: 'rgba8unorm' } : null));
 }
 
 class WebGPURenderer {
@@ -659,7 +727,7 @@ class WebGPURenderer {
     const pipeline = device.createRenderPipeline({
       layout: device.createPipelineLayout({ bindGroupLayouts: layouts }),
       vertex: { module, entryPoint: plan.vertex ? plan.vertex.name : 'umbrac_preview_vs', buffers: vertexBuffers },
-      fragment: { module, entryPoint: plan.fragment.name, targets: [{ format: 'rgba8unorm' }] },
+      fragment: { module, entryPoint: plan.fragment.name, targets: colourTargets(plan) },
       // umbrac's portable WGSL flips y, so GL's counter-clockwise fronts arrive clockwise.
       primitive: { topology: 'triangle-list', frontFace: 'cw', cullMode: plan.cull ?? 'none' },
       depthStencil: plan.depth ? { format: 'depth24plus', depthWriteEnabled: true, depthCompare: 'less' } : undefined,
@@ -722,11 +790,14 @@ class WebGPURenderer {
       rebind = true;
     }
     if (rebind) l.bindGroups = this.bindGroups();
+    // Every colour output is drawn; the one viewed is read back.
+    const view = this.view ?? l.plan.outputs[0].location;
+    const others = colourTargets(l.plan).map((t, loc) => (t && loc !== view ? device.createTexture({ size: [readback.texture.width, readback.texture.height], format: 'rgba8unorm', usage: GPUTextureUsage.RENDER_ATTACHMENT }) : null));
     const target = readback.texture;
     const enc = device.createCommandEncoder();
     const depth = l.plan.depth ? device.createTexture({ size: [target.width, target.height], format: 'depth24plus', usage: GPUTextureUsage.RENDER_ATTACHMENT }) : null;
     const pass = enc.beginRenderPass({
-      colorAttachments: [{ view: target.createView(), loadOp: 'clear', storeOp: 'store', clearValue: l.plan.clear }],
+      colorAttachments: colourTargets(l.plan).map((t, loc) => (t ? { view: (loc === view ? target : others[loc]).createView(), loadOp: 'clear', storeOp: 'store', clearValue: l.plan.clear } : null)),
       depthStencilAttachment: depth ? { view: depth.createView(), depthClearValue: 1, depthLoadOp: 'clear', depthStoreOp: 'discard' } : undefined,
     });
     pass.setPipeline(l.pipeline);
@@ -739,6 +810,7 @@ class WebGPURenderer {
     }
     device.queue.submit([enc.finish()]);
     depth?.destroy();
+    others.forEach((t) => t?.destroy());
   }
 
   // Rows bottom first (GL's order) into the 2D canvas, top first.

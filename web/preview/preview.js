@@ -5,7 +5,8 @@
 // over the last good picture.
 //
 // Query parameters: `time=T` fixes the clock at T seconds (and frame 0);
-// `api=webgl2` or `api=webgpu` draws with one only.
+// `api=webgl2` or `api=webgpu` draws with one only; `output=LOCATION` shows
+// that colour output of a program with several.
 //
 // window.umbracPreview is the state a test reads: { received, drawn (the
 // bundle numbers last received and last drawn), ok, diagnostics, errors
@@ -18,6 +19,8 @@ const $ = (id) => document.getElementById(id);
 const query = new URLSearchParams(location.search);
 const fixedTime = query.has('time') ? parseFloat(query.get('time')) : null;
 const apis = query.has('api') ? [query.get('api')] : ['webgl2', 'webgpu'];
+// The colour output shown (its location), for programs with several.
+let view = query.has('output') ? +query.get('output') : null;
 if (fixedTime !== null) $('paused').checked = true;
 
 const state = (window.umbracPreview = {
@@ -62,6 +65,10 @@ async function start() {
     canvas.addEventListener('pointermove', (e) => { if (e.buttons && clock.mouse) clock.mouse.splice(0, 2, ...at(e)); });
     canvas.addEventListener('pointerdown', (e) => { const p = at(e); clock.mouse = [p[0], p[1], p[0], p[1]]; });
   }
+  $('output').addEventListener('change', () => {
+    view = +$('output').value;
+    for (const r of Object.values(renderers)) r.view = view;
+  });
   $('program').addEventListener('change', () => {
     programIndex = +$('program').value;
     if (lastGood) show(lastGood.bundle, lastGood.generation);
@@ -122,6 +129,12 @@ async function switchTo(bundle, generation) {
     for (const api of Object.keys(renderers)) setError(api, e.message);
     return;
   }
+  const outputs = plan.outputs;
+  $('output').replaceChildren(...outputs.map((o) => new Option(`${o.name} (location ${o.location})`, o.location)));
+  $('output').hidden = outputs.length < 2;
+  if (!outputs.some((o) => o.location === view)) view = outputs[0]?.location ?? 0;
+  $('output').value = view;
+  for (const r of Object.values(renderers)) r.view = view;
   const next = new Inputs(bundle.manifest, plan, $('controls'), inputs, orbit);
   for (const [api, r] of Object.entries(renderers)) {
     try {
