@@ -216,9 +216,10 @@ fn tutorials_draw_alike_on_webgl2_and_webgpu() {
 }
 
 /// Tutorial 10's G-buffer program writes three colour outputs: each is
-/// viewable (`?output=LOCATION`), alike on both APIs, and they differ.
+/// viewable (`?output=LOCATION`), alike on both APIs, and they differ; so
+/// is its depth (`?output=depth`).
 #[test]
-fn every_colour_output_of_a_g_buffer_is_viewable() {
+fn every_colour_output_and_the_depth_of_a_g_buffer_are_viewable() {
     let tutorial = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/reference/daslang-tutorials/10_deferred.das");
     if !tutorial.is_file() {
         skip(format!("{} is missing", tutorial.display()));
@@ -247,4 +248,16 @@ fn every_colour_output_of_a_g_buffer_is_viewable() {
         assert!(share <= TUTORIAL_AGREEMENT, "output {location}: {:.2}% of the pixels differ: {}", share * 100.0, s["diff"]);
     }
     assert!(pictures[0] != pictures[1] && pictures[1] != pictures[2] && pictures[0] != pictures[2], "the three outputs show the same picture");
+    // The depth: grey, farther where nothing was drawn (the clear, 1: white).
+    let out = dir.path().join("depth");
+    std::fs::create_dir(&out).unwrap();
+    let steps = drive_with(&server, "time=1&output=depth", &file, &[], &out, None);
+    let s = &steps[0].state;
+    let depth = steps[0].webgl2.clone().unwrap_or_else(|| panic!("depth: no WebGL2 picture: {s}"));
+    assert!(depth.chunks(4).all(|p| p[0] == p[1] && p[1] == p[2]), "the depth view is grey");
+    assert!(depth.chunks(4).any(|p| p[0] == 255) && depth.chunks(4).any(|p| p[0] < 250), "the depth view shows the background and something nearer");
+    if steps[0].webgpu.is_some() {
+        let share = s["diff"]["share"].as_f64().unwrap();
+        assert!(share <= TUTORIAL_AGREEMENT, "depth: {:.2}% of the pixels differ: {}", share * 100.0, s["diff"]);
+    }
 }

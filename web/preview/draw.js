@@ -325,6 +325,25 @@ function fileOf(bundle, entry, target) {
   return f.text;
 }
 
+// The depth view's shaders (a full-screen triangle, each pixel its depth
+// texel as grey, raised to the 32nd power: a perspective depth buffer is
+// nearly all above 0.9).
+const DEPTH_VIEW_GLSL = [
+  '#version 300 es\nvoid main() { gl_Position = vec4(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0, 0.0, 1.0); }\n',
+  '#version 300 es\nprecision highp float;\nuniform highp sampler2D depth_view;\nout vec4 colour;\nvoid main() { float z = pow(texelFetch(depth_view, ivec2(gl_FragCoord.xy), 0).r, 32.0); colour = vec4(vec3(z), 1.0); }\n',
+];
+
+const DEPTH_VIEW_WGSL = `
+@group(0) @binding(0) var depth_view: texture_depth_2d;
+@vertex fn vs(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {
+  return vec4<f32>(select(-1.0, 3.0, i == 1u), select(-1.0, 3.0, i == 2u), 0.0, 1.0);
+}
+@fragment fn fs(@builtin(position) p: vec4<f32>) -> @location(0) vec4<f32> {
+  let z = pow(textureLoad(depth_view, vec2<i32>(p.xy), 0), 32.0);
+  return vec4<f32>(vec3<f32>(z), 1.0);
+}
+`;
+
 class WebGL2Renderer {
   constructor(canvas) {
     this.api = 'webgl2';
@@ -465,7 +484,7 @@ class WebGL2Renderer {
     if (!l.targets) return;
     gl.deleteFramebuffer(l.targets.fbo);
     l.targets.textures.forEach((t) => gl.deleteTexture(t));
-    gl.deleteRenderbuffer(l.targets.depth);
+    gl.deleteTexture(l.targets.depth);
     l.targets = null;
   }
 
@@ -493,10 +512,13 @@ class WebGL2Renderer {
       textures.push(t);
       buffers.push(gl.COLOR_ATTACHMENT0 + loc);
     }
-    const depth = gl.createRenderbuffer();
-    gl.bindRenderbuffer(gl.RENDERBUFFER, depth);
-    gl.renderbufferStorage(gl.RENDERBUFFER, gl.DEPTH_COMPONENT24, width, height);
-    gl.framebufferRenderbuffer(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.RENDERBUFFER, depth);
+    // A depth texture: viewable as grey (`view` 'depth').
+    const depth = gl.createTexture();
+    gl.bindTexture(gl.TEXTURE_2D, depth);
+    gl.texStorage2D(gl.TEXTURE_2D, 1, gl.DEPTH_COMPONENT24, width, height);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+    gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.TEXTURE_2D, depth, 0);
     gl.drawBuffers(buffers);
     gl.bindTexture(gl.TEXTURE_2D, null);
     gl.bindFramebuffer(gl.FRAMEBUFFER, null);
@@ -504,12 +526,42 @@ class WebGL2Renderer {
     return l.targets;
   }
 
+  // The depth texture as grey on the canvas (z^32: near dark, far white).
+  showDepth(texture) {
+    const gl = this.gl;
+    if (!this.depthProgram) {
+      const vs = this.compile(gl.VERTEX_SHADER, 'the depth view', DEPTH_VIEW_GLSL[0]);
+      const fs = this.compile(gl.FRAGMENT_SHADER, 'the depth view', DEPTH_VIEW_GLSL[1]);
+      const p = gl.createProgram();
+      gl.attachShader(p, vs);
+      gl.attachShader(p, fs);
+      gl.linkProgram(p);
+      gl.deleteShader(vs);
+      gl.deleteShader(fs);
+      this.depthProgram = p;
+      this.depthVao = gl.createVertexArray();
+    }
+    gl.viewport(0, 0, this.canvas.width, this.canvas.height);
+    gl.disable(gl.DEPTH_TEST);
+    gl.disable(gl.CULL_FACE);
+    gl.useProgram(this.depthProgram);
+    gl.activeTexture(gl.TEXTURE0);
+    gl.bindTexture(gl.TEXTURE_2D, texture);
+    gl.uniform1i(gl.getUniformLocation(this.depthProgram, 'depth_view'), 0);
+    gl.bindVertexArray(this.depthVao);
+    gl.drawArrays(gl.TRIANGLES, 0, 3);
+    gl.bindVertexArray(null);
+    gl.bindTexture(gl.TEXTURE_2D, null);
+    gl.useProgram(null);
+  }
+
   frame({ buffers, textures }) {
     const l = this.loaded;
     if (!l) return;
     const gl = this.gl;
     const { plan } = l;
-    const mrt = plan.outputs.length > 1 ? this.mrtTargets(l) : null;
+    const depthView = this.view === 'depth' && plan.depth;
+    const mrt = plan.outputs.length > 1 || depthView ? this.mrtTargets(l) : null;
     gl.bindFramebuffer(gl.FRAMEBUFFER, mrt ? mrt.fbo : null);
     gl.viewport(0, 0, this.canvas.width, this.canvas.height);
     gl.clearColor(...plan.clear);
@@ -562,7 +614,10 @@ class WebGL2Renderer {
     gl.drawArraysInstanced(gl.TRIANGLES, 0, plan.count, plan.instances);
     gl.bindVertexArray(null);
     gl.useProgram(null);
-    if (mrt) {
+    if (depthView) {
+      gl.bindFramebuffer(gl.FRAMEBUFFER, null);
+      this.showDepth(mrt.depth);
+    } else if (mrt) {
       const { width, height } = this.canvas;
       gl.bindFramebuffer(gl.READ_FRAMEBUFFER, mrt.fbo);
       gl.readBuffer(gl.COLOR_ATTACHMENT0 + (this.view ?? plan.outputs[0].location));
@@ -791,20 +846,34 @@ class WebGPURenderer {
     }
     if (rebind) l.bindGroups = this.bindGroups();
     // Every colour output is drawn; the one viewed is read back.
-    const view = this.view ?? l.plan.outputs[0].location;
-    const others = colourTargets(l.plan).map((t, loc) => (t && loc !== view ? device.createTexture({ size: [readback.texture.width, readback.texture.height], format: 'rgba8unorm', usage: GPUTextureUsage.RENDER_ATTACHMENT }) : null));
+    const depthView = this.view === 'depth' && l.plan.depth;
+    const view = depthView || this.view === null || this.view === undefined || this.view === 'depth' ? l.plan.outputs[0].location : this.view;
+    const others = colourTargets(l.plan).map((t, loc) => (t && (loc !== view || depthView) ? device.createTexture({ size: [readback.texture.width, readback.texture.height], format: 'rgba8unorm', usage: GPUTextureUsage.RENDER_ATTACHMENT }) : null));
     const target = readback.texture;
     const enc = device.createCommandEncoder();
-    const depth = l.plan.depth ? device.createTexture({ size: [target.width, target.height], format: 'depth24plus', usage: GPUTextureUsage.RENDER_ATTACHMENT }) : null;
+    const depth = l.plan.depth ? device.createTexture({ size: [target.width, target.height], format: 'depth24plus', usage: GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.TEXTURE_BINDING }) : null;
     const pass = enc.beginRenderPass({
-      colorAttachments: colourTargets(l.plan).map((t, loc) => (t ? { view: (loc === view ? target : others[loc]).createView(), loadOp: 'clear', storeOp: 'store', clearValue: l.plan.clear } : null)),
-      depthStencilAttachment: depth ? { view: depth.createView(), depthClearValue: 1, depthLoadOp: 'clear', depthStoreOp: 'discard' } : undefined,
+      colorAttachments: colourTargets(l.plan).map((t, loc) => (t ? { view: (others[loc] ?? target).createView(), loadOp: 'clear', storeOp: 'store', clearValue: l.plan.clear } : null)),
+      depthStencilAttachment: depth ? { view: depth.createView(), depthClearValue: 1, depthLoadOp: 'clear', depthStoreOp: depthView ? 'store' : 'discard' } : undefined,
     });
     pass.setPipeline(l.pipeline);
     l.bindGroups.forEach((g, i) => pass.setBindGroup(i, g));
     l.vbos.forEach((b, i) => pass.setVertexBuffer(i, b));
     pass.draw(l.plan.count, l.plan.instances);
     pass.end();
+    if (depthView) {
+      this.depthPipeline ??= device.createRenderPipeline({
+        layout: 'auto',
+        vertex: { module: device.createShaderModule({ code: DEPTH_VIEW_WGSL }), entryPoint: 'vs' },
+        fragment: { module: device.createShaderModule({ code: DEPTH_VIEW_WGSL }), entryPoint: 'fs', targets: [{ format: 'rgba8unorm' }] },
+      });
+      const group = device.createBindGroup({ layout: this.depthPipeline.getBindGroupLayout(0), entries: [{ binding: 0, resource: depth.createView() }] });
+      const show = enc.beginRenderPass({ colorAttachments: [{ view: target.createView(), loadOp: 'clear', storeOp: 'store', clearValue: [0, 0, 0, 1] }] });
+      show.setPipeline(this.depthPipeline);
+      show.setBindGroup(0, group);
+      show.draw(3);
+      show.end();
+    }
     if (readback) {
       enc.copyTextureToBuffer({ texture: target }, { buffer: readback.buffer, bytesPerRow: readback.bytesPerRow }, [target.width, target.height]);
     }

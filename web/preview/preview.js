@@ -20,7 +20,8 @@ const query = new URLSearchParams(location.search);
 const fixedTime = query.has('time') ? parseFloat(query.get('time')) : null;
 const apis = query.has('api') ? [query.get('api')] : ['webgl2', 'webgpu'];
 // The colour output shown (its location), for programs with several.
-let view = query.has('output') ? +query.get('output') : null;
+const viewOf = (v) => (v === 'depth' ? 'depth' : +v);
+let view = query.has('output') ? viewOf(query.get('output')) : null;
 if (fixedTime !== null) $('paused').checked = true;
 
 const state = (window.umbracPreview = {
@@ -66,7 +67,7 @@ async function start() {
     canvas.addEventListener('pointerdown', (e) => { const p = at(e); clock.mouse = [p[0], p[1], p[0], p[1]]; });
   }
   $('output').addEventListener('change', () => {
-    view = +$('output').value;
+    view = viewOf($('output').value);
     for (const r of Object.values(renderers)) r.view = view;
   });
   $('program').addEventListener('change', () => {
@@ -131,8 +132,9 @@ async function switchTo(bundle, generation) {
   }
   const outputs = plan.outputs;
   $('output').replaceChildren(...outputs.map((o) => new Option(`${o.name} (location ${o.location})`, o.location)));
-  $('output').hidden = outputs.length < 2;
-  if (!outputs.some((o) => o.location === view)) view = outputs[0]?.location ?? 0;
+  if (plan.depth) $('output').append(new Option('depth (z^32: near dark, far white)', 'depth'));
+  $('output').hidden = $('output').options.length < 2;
+  if (!(view === 'depth' && plan.depth) && !outputs.some((o) => o.location === view)) view = outputs[0]?.location ?? 0;
   $('output').value = view;
   for (const r of Object.values(renderers)) r.view = view;
   const next = new Inputs(bundle.manifest, plan, $('controls'), inputs, orbit);
