@@ -4,16 +4,19 @@
 //
 //   import { createRenderer, planOf, uniformBuffers, DrawError } from './draw.js';
 //   const r = await createRenderer(canvas, 'webgl2');   // or 'webgpu'
-//   r.load(bundle, planOf(bundle));   // compiles; throws DrawError, the last load stays
-//   r.frame({ buffers, textures });   // draws: buffers from uniformBuffers(),
-//                                     // textures { samplerName: {width, height, data} }
-//   const rgba = await r.read();      // Uint8Array, rows bottom first (GL's order)
+//   await r.load(bundle, planOf(bundle)); // compiles; throws DrawError, the last load stays
+//   r.frame({ buffers, textures });   // draws: buffers from uniformBuffers() (or
+//                                     // controls.js's Inputs), textures
+//                                     // { samplerName: {width, height, data, filter} }
+//   r.view = 1;                       // the colour output shown (MRT), or 'depth'
+//   const rgba = await r.read(inputs); // Uint8Array, rows bottom first (GL's order)
 //
 // A bundle is src/bundle.rs's JSON (docs/preview.md). What is drawn
-// comes from planOf: the manifest's first vertex/fragment program over a
-// full-screen quad whose attributes are made up from their names, or a
-// lone fragment entry point over a full-screen triangle whose varyings
-// are made up the same way. Uniform values live in one word array per
+// comes from planOf: the bundle's scene (umbrac::scene) where it has one;
+// else the manifest's first vertex/fragment program over a full-screen
+// quad whose attributes are made up from their names, or a lone fragment
+// entry point over a full-screen triangle whose varyings are made up the
+// same way. Uniform values live in one word array per
 // uniform buffer of the manifest, laid out as the manifest says (WGSL's
 // buffers; GLSL's std140 blocks; GLSL's loose uniforms are read back
 // from the same words), so both APIs draw the same values.
