@@ -46,6 +46,11 @@ pub struct Bundle {
     pub files: Vec<BundleFile>,
     /// The reflection manifest, parsed (the object the `.json` output holds).
     pub manifest: Option<serde_json::Value>,
+    /// The scene the program is drawn with when no scene file is given
+    /// (`umbrac::scene::Scene::infer`, as JSON; docs/runner.md, "Scene
+    /// files"): absent on errors, and for a program no scene draws (a
+    /// compute program).
+    pub scene: Option<serde_json::Value>,
 }
 
 serialize_struct!(Bundle {
@@ -53,6 +58,7 @@ serialize_struct!(Bundle {
     "diagnostics": diagnostics,
     "files": files,
     "manifest": manifest?,
+    "scene": scene?,
 });
 
 impl Bundle {
@@ -67,12 +73,23 @@ impl Bundle {
             .iter()
             .find(|a| a.target.is_none())
             .and_then(|a| serde_json::from_slice(&a.contents).ok());
-        Bundle { ok: !c.has_errors(), diagnostics, files, manifest }
+        Bundle { ok: !c.has_errors(), diagnostics, files, manifest, scene: scene_of(c) }
     }
 
     pub fn to_json(&self) -> String {
         serde_json::to_string(self).expect("a bundle is plain data")
     }
+}
+
+#[cfg(feature = "scene")]
+fn scene_of(c: &Compilation) -> Option<serde_json::Value> {
+    let r = c.result.as_ref().filter(|_| !c.has_errors())?;
+    crate::scene::Scene::infer(&r.reflection).ok().map(|s| s.to_json())
+}
+
+#[cfg(not(feature = "scene"))]
+fn scene_of(_: &Compilation) -> Option<serde_json::Value> {
+    None
 }
 
 fn file_of(a: &Artifact) -> BundleFile {
@@ -119,6 +136,15 @@ mod tests {
         assert_eq!(spv.disassembly.as_deref().is_some_and(|d| d.contains("OpEntryPoint Fragment")), cfg!(feature = "spirv-text"));
         let json: serde_json::Value = serde_json::from_str(&b.to_json()).unwrap();
         assert_eq!(json["ok"], true);
+    }
+
+    #[cfg(feature = "scene")]
+    #[test]
+    fn a_drawable_program_carries_its_inferred_scene() {
+        let src = "var @out f_color : float4\n[vertex_program]\ndef vs {\n    gl_Position = float4(float(gl_VertexID), 0.0, 0.0, 1.0)\n}\n[fragment_program]\ndef fs {\n    f_color = float4(1.0)\n}\n";
+        let json: serde_json::Value = serde_json::from_str(&Bundle::of(&crate::compile_source("t.das", src, &crate::Options::default())).to_json()).unwrap();
+        assert_eq!(json["scene"]["passes"][0]["draws"][0]["mesh"], "none", "three vertices: {}", json["scene"]);
+        assert_eq!(json["scene"]["passes"][0]["color"], "screen");
     }
 
     #[test]

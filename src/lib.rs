@@ -32,18 +32,22 @@ pub mod rerun;
 pub mod run;
 mod sealed;
 pub mod sema;
+#[cfg(feature = "scene")]
+pub mod scene;
 pub mod source;
 pub mod syntax;
 pub mod target;
 pub mod variants;
 pub mod workspace;
-#[cfg(feature = "cli")]
+#[cfg(any(feature = "cli", feature = "preview"))]
 pub mod watch;
 
 #[cfg(feature = "render")]
 pub mod render;
 #[cfg(feature = "lsp")]
 pub mod lsp;
+#[cfg(feature = "preview")]
+pub mod preview;
 
 use std::path::{Path, PathBuf};
 

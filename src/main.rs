@@ -81,6 +81,25 @@ enum Command {
     Render(cli::render::RenderArgs),
     /// Serve the Language Server Protocol over stdin/stdout (docs/editor.md).
     Lsp,
+    /// Serve a page on 127.0.0.1 that draws the program in WebGL2 and
+    /// WebGPU and redraws it on every save (docs/preview.md).
+    #[cfg(feature = "preview")]
+    Preview(PreviewArgs),
+}
+
+#[cfg(feature = "preview")]
+#[derive(Args, Debug)]
+struct PreviewArgs {
+    #[arg(value_name = "FILE")]
+    file: PathBuf,
+    /// The port on 127.0.0.1; default: any free one (the URL is printed).
+    #[arg(long, value_name = "N", default_value_t = 0)]
+    port: u16,
+    /// Start the desktop's browser on the page.
+    #[arg(long)]
+    open: bool,
+    #[command(flatten)]
+    common: CommonArgs,
 }
 
 #[derive(Args, Debug)]
@@ -359,6 +378,8 @@ fn main() -> ExitCode {
                 EXIT_ERROR
             }
         },
+        #[cfg(feature = "preview")]
+        Command::Preview(args) => preview(&args),
         #[cfg(feature = "render")]
         Command::Render(args) => {
             // A headless run has no login session's runtime directory; the
@@ -603,6 +624,35 @@ fn reflect(args: &ReflectArgs) -> u8 {
         }
     }
     code
+}
+
+/// `umbrac preview`: prints the page's URL, then serves until interrupted.
+#[cfg(feature = "preview")]
+fn preview(args: &PreviewArgs) -> u8 {
+    if !args.file.is_file() {
+        eprintln!("error: cannot read `{}`: not a file", args.file.display());
+        return EXIT_ERROR;
+    }
+    let opts = umbrac::preview::options_for(&args.file, &args.common.options(Vec::new()));
+    let server = match umbrac::preview::Server::bind(args.port) {
+        Ok(s) => s,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return EXIT_ERROR;
+        }
+    };
+    let url = server.url();
+    if write_stdout(format!("umbrac preview: {} at {url}\n", args.file.display()).as_bytes()).is_err() {
+        return EXIT_ERROR;
+    }
+    if args.open {
+        if let Err(e) = umbrac::preview::open_browser(&url) {
+            eprintln!("warning: {e}");
+        }
+    }
+    let e = server.serve(args.file.clone(), opts).err().unwrap_or_default();
+    eprintln!("error: umbrac preview: {e}");
+    EXIT_ERROR
 }
 
 /// `compile --check`: every difference between the outputs and the files in

@@ -41,6 +41,8 @@ mod limits;
 mod lsp;
 mod lowering;
 mod modules;
+#[cfg(feature = "preview")]
+mod preview;
 #[cfg(feature = "deserialize")]
 mod programs;
 mod proptest_programs;

@@ -26,6 +26,8 @@ mod language_f;
 mod features_l;
 #[cfg(feature = "render")]
 mod numerics;
+#[cfg(feature = "preview")]
+mod preview;
 #[cfg(feature = "render")]
 mod programs;
 #[cfg(feature = "render")]

@@ -8,6 +8,7 @@
 //!   alone.
 //! - [`gpu`]: the Vulkan device, wgpu's GL backend and the EGL GL/GLES
 //!   contexts, opened once per process (feature `render`).
+//! - [`preview`]: `umbrac preview` on a free port (feature `preview`).
 //! - [`fake_lowered`]: a `Lowered` built from WGSL, shaped like the real
 //!   lowering's output, so emitter tests do not depend on the front end.
 //! - Validator runners: `glslangValidator` (each GLSL file, and each
@@ -22,6 +23,8 @@
 mod ci;
 #[cfg(feature = "render")]
 pub mod gpu;
+#[cfg(feature = "preview")]
+pub mod preview;
 
 pub use ci::*;
 

@@ -1,0 +1,239 @@
+//! The scene a program gets without a scene file, from its manifest alone
+//! (docs/runner.md, "Inference"):
+//!
+//! - a vertex program with no vertex inputs draws three vertices (a
+//!   full-screen triangle placed from `gl_VertexID`); one whose position
+//!   input is a `float2` draws the built-in full-screen triangle; any
+//!   other draws the cube, with a depth buffer;
+//! - each vertex input is fed by the mesh attribute its name asks for
+//!   (`names::attribute`); when one looks per-instance (`offset`,
+//!   `instance`), the draw is a 3 x 3 instance grid and every input the
+//!   mesh does not have is per instance too;
+//! - colour output 0 goes to the screen;
+//! - each 2D sampler reads a built-in pattern (a flat normal for names
+//!   that say normal, white for occlusion, checker otherwise); a shadow
+//!   sampler reads a depth target cleared to 1 (everything lit);
+//! - each uniform: a per-frame convention its name asks for, else the
+//!   manifest's default, else a convention for the camera and light
+//!   names, else a fallback (`names::fallback`); and a control.
+
+use std::collections::BTreeMap;
+
+use super::names;
+use super::{Attribute, Control, Convention, Draw, Filter, InstanceGrid, MeshKind, OrbitCamera, Pass, Pattern, RenderTarget, SamplerInput, Scene, TargetFormat, Texture, ValueSpec, SCREEN};
+use crate::emit::reflect_types::{EntryPoint, Reflection};
+
+/// Why a program gets no inferred scene.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct InferError(pub String);
+
+impl std::fmt::Display for InferError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.0)
+    }
+}
+
+impl std::error::Error for InferError {}
+
+/// The vertex and fragment entry points of every program of a manifest,
+/// in its order (each vertex entry point with the first fragment one,
+/// where the manifest links none).
+pub fn programs(r: &Reflection) -> Vec<(String, String)> {
+    if !r.programs.is_empty() {
+        return r.programs.iter().map(|p| (p.vertex.clone(), p.fragment.clone())).collect();
+    }
+    let fragment = r.entry_points.iter().find(|e| e.stage == "fragment");
+    match fragment {
+        Some(f) => r.entry_points.iter().filter(|e| e.stage == "vertex").map(|v| (v.name.clone(), f.name.clone())).collect(),
+        None => Vec::new(),
+    }
+}
+
+/// Per-frame conventions a name asks for even where the manifest has a
+/// default: the default is a placeholder for what the host knows.
+const PER_FRAME: [Convention; 6] = [Convention::Time, Convention::Frame, Convention::Resolution, Convention::Aspect, Convention::Mouse, Convention::TexelSize];
+
+impl Scene {
+    /// The scene of the manifest's first program.
+    pub fn infer(r: &Reflection) -> Result<Scene, InferError> {
+        let (vertex, fragment) = programs(r)
+            .into_iter()
+            .next()
+            .ok_or_else(|| InferError(format!("{} has no vertex and fragment entry points to draw (a compute program runs no scene)", r.source)))?;
+        Scene::infer_program(r, &vertex, &fragment)
+    }
+
+    /// The scene of one program: `vertex` with `fragment`.
+    pub fn infer_program(r: &Reflection, vertex: &str, fragment: &str) -> Result<Scene, InferError> {
+        let entry = |name: &str, stage: &str| {
+            r.entry_points
+                .iter()
+                .find(|e| e.name == name && e.stage == stage)
+                .ok_or_else(|| InferError(format!("{} has no {stage} entry point `{name}`", r.source)))
+        };
+        let (vs, fs) = (entry(vertex, "vertex")?, entry(fragment, "fragment")?);
+        let mut scene = Scene {
+            camera: OrbitCamera::default(),
+            textures: Vec::new(),
+            targets: Vec::new(),
+            passes: Vec::new(),
+            output: SCREEN.to_string(),
+            values: BTreeMap::new(),
+            controls: Vec::new(),
+        };
+        let draw = infer_draw(vs);
+        let mut pass = Pass {
+            name: format!("{vertex} + {fragment}"),
+            vertex: vertex.to_string(),
+            fragment: Some(fragment.to_string()),
+            color: Some(SCREEN.to_string()),
+            clear: [0.0, 0.0, 0.0, 1.0],
+            depth: None,
+            cull: super::Cull::None,
+            depth_bias: false,
+            samplers: BTreeMap::new(),
+            values: BTreeMap::new(),
+            draws: Vec::new(),
+        };
+        if !matches!(draw.mesh, MeshKind::None | MeshKind::FullscreenTriangle) {
+            scene.targets.push(RenderTarget { name: "depth".into(), format: TargetFormat::Depth32float, size: None });
+            pass.depth = Some("depth".into());
+        }
+        pass.draws.push(draw);
+        let mut clears = Vec::new();
+        for name in vs.samplers.iter().chain(&fs.samplers) {
+            if pass.samplers.contains_key(name) {
+                continue;
+            }
+            let s = r.samplers.iter().find(|s| &s.name == name).ok_or_else(|| InferError(format!("sampler `{name}` is not in the manifest")))?;
+            if s.dimension != "2d" {
+                return Err(InferError(format!(
+                    "sampler `{name}` is a {}: the runner's scenes have 2D textures only (no cube, 3D or array textures yet)",
+                    s.ty
+                )));
+            }
+            let texture = format!("{name}_texture");
+            match s.sample_type.as_str() {
+                "float" => scene.textures.push(Texture { name: texture.clone(), pattern: Some(pattern_for(name)), image: None, size: [64, 64] }),
+                "depth" => {
+                    // A depth target no pass draws into but one that clears
+                    // it: depth 1 everywhere, every compare passes.
+                    scene.targets.push(RenderTarget { name: texture.clone(), format: TargetFormat::Depth32float, size: Some([64, 64]) });
+                    clears.push(texture.clone());
+                }
+                other => return Err(InferError(format!("sampler `{name}` reads {other} texels: the runner's patterns are float colours"))),
+            }
+            pass.samplers.insert(name.clone(), SamplerInput { texture, filter: Filter::Linear });
+        }
+        for target in clears {
+            scene.passes.push(Pass {
+                name: format!("clear {target}"),
+                vertex: vertex.to_string(),
+                fragment: None,
+                color: None,
+                clear: [0.0, 0.0, 0.0, 1.0],
+                depth: Some(target),
+                cull: super::Cull::None,
+                depth_bias: false,
+                samplers: BTreeMap::new(),
+                values: BTreeMap::new(),
+                draws: Vec::new(),
+            });
+        }
+        for (name, ty, default) in uniforms(r, &[vs, fs]) {
+            let value = value_for(&name, &ty, default.as_deref());
+            scene.controls.push(names::control(&name, &ty, value.as_ref()));
+            if let Some(v) = value {
+                scene.values.insert(name, v);
+            }
+        }
+        scene.passes.push(pass);
+        Ok(scene)
+    }
+}
+
+/// The value an inferred scene gives a uniform (module docs).
+fn value_for(name: &str, ty: &str, default: Option<&[u32]>) -> Option<ValueSpec> {
+    let convention = names::convention(name, ty);
+    if let Some(c) = convention.filter(|c| PER_FRAME.contains(c)) {
+        return Some(ValueSpec::Convention(c));
+    }
+    if let Some(v) = default.and_then(|w| names::from_words(ty, w)) {
+        return Some(v);
+    }
+    convention.map(ValueSpec::Convention).or_else(|| names::fallback(name, ty))
+}
+
+/// Every uniform the entry points read: loose ones and the members of the
+/// uniform blocks they use (by member name), each once, with the
+/// manifest's default where a loose one has it.
+fn uniforms(r: &Reflection, entries: &[&EntryPoint]) -> Vec<(String, String, Option<Vec<u32>>)> {
+    let mut out: Vec<(String, String, Option<Vec<u32>>)> = Vec::new();
+    for u in &r.uniforms {
+        if entries.iter().any(|e| e.uniforms.contains(&u.name)) {
+            out.push((u.name.clone(), u.ty.clone(), u.default.clone()));
+        }
+    }
+    for b in r.uniform_buffers.iter().filter(|b| !b.loose && entries.iter().any(|e| e.uniform_buffers.contains(&b.name))) {
+        for m in &b.members {
+            if !out.iter().any(|(n, _, _)| n == &m.name) {
+                out.push((m.name.clone(), m.ty.clone(), None));
+            }
+        }
+    }
+    out
+}
+
+fn pattern_for(sampler: &str) -> Pattern {
+    let w = names::words(sampler);
+    let has = |any: &[&str]| w.iter().any(|x| any.contains(&x.as_str()));
+    if has(&["normal", "nrm", "bump"]) {
+        Pattern::FlatNormal
+    } else if has(&["ao", "occlusion", "occ", "shadow", "mask"]) {
+        Pattern::White
+    } else if has(&["noise", "rough", "roughness", "arm", "metal", "metallic"]) {
+        Pattern::Noise
+    } else if has(&["uv", "ramp", "gradient"]) {
+        Pattern::Uv
+    } else {
+        Pattern::Checker
+    }
+}
+
+/// The draw of a vertex program (module docs).
+fn infer_draw(vs: &EntryPoint) -> Draw {
+    if vs.inputs.is_empty() {
+        return Draw { mesh: MeshKind::None, vertices: Some(3), attributes: BTreeMap::new(), instances: None, values: BTreeMap::new() };
+    }
+    let named: Vec<(String, &str, Option<Attribute>)> = vs.inputs.iter().map(|i| (i.name.clone(), i.ty.as_str(), names::attribute(&i.name))).collect();
+    let by_id = vs.builtins.iter().any(|b| b == "gl_InstanceID" || b == "gl_InstanceIndex");
+    let instanced = named.iter().any(|(_, _, a)| a.is_some_and(Attribute::per_instance));
+    // The position: the input that says so, else the first.
+    let position = named.iter().position(|(_, _, a)| *a == Some(Attribute::Position)).unwrap_or(0);
+    let mesh = if named[position].1 == "float2" { MeshKind::FullscreenTriangle } else { MeshKind::Cube };
+    let mut attributes = BTreeMap::new();
+    let mut instance_fallbacks = [Attribute::InstanceColor, Attribute::InstancePhase].into_iter().cycle();
+    for (i, (name, ty, a)) in named.iter().enumerate() {
+        let a = if i == position {
+            Attribute::Position
+        } else {
+            match a {
+                Some(Attribute::Color) if instanced => Attribute::InstanceColor,
+                Some(Attribute::Position) => Attribute::Color,
+                Some(a) => *a,
+                None if instanced && *ty == "float" => Attribute::InstancePhase,
+                None if instanced => instance_fallbacks.next().unwrap(),
+                None if *ty == "float2" => Attribute::Uv,
+                None => Attribute::Color,
+            }
+        };
+        attributes.insert(name.clone(), a);
+    }
+    let instances = (instanced || by_id).then(|| InstanceGrid { count: [3, 3, 1], spacing: 1.6 });
+    Draw { mesh, vertices: None, attributes, instances, values: BTreeMap::new() }
+}
+
+/// The controls of a scene's uniforms, by name (for a page).
+pub fn control<'a>(scene: &'a Scene, name: &str) -> Option<&'a Control> {
+    scene.controls.iter().find(|c| c.name == name)
+}

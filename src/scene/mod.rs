@@ -1,0 +1,614 @@
+//! A scene: what a host draws a program with, as plain data. Render
+//! targets, textures (built-in patterns or an image file), passes (which
+//! program, which attachments, which texture each sampler reads), draws
+//! (a built-in mesh, maybe as an instance grid, with each vertex input fed
+//! by a named attribute of that mesh) and uniform values (numbers, or a
+//! documented convention such as `time` or `view`), plus a control hint
+//! for every uniform a page can show.
+//!
+//! Written by hand as a TOML or JSON file (`umbrac render --scene FILE`,
+//! docs/runner.md, "Scene files"), or inferred from a program's manifest
+//! ([`Scene::infer`], in [`infer`]). The native runner turns one into a
+//! frame plan (`render::scene_file`); the preview page reads the same
+//! value from the bundle's `scene` key. Nothing here needs a GPU.
+
+pub mod infer;
+mod names;
+
+use std::collections::BTreeMap;
+
+use serde::{Deserialize, Serialize};
+
+pub use infer::InferError;
+
+/// The name of the image a scene shows: the window, or the PNG written.
+pub const SCREEN: &str = "screen";
+
+/// A whole scene. Field names are the file format's keys.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Scene {
+    /// The orbit camera the matrix conventions (`view`, `projection`,
+    /// `camera_position`, ...) are computed from.
+    #[serde(default)]
+    pub camera: OrbitCamera,
+    /// Textures made before the frame: patterns or image files.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub textures: Vec<Texture>,
+    /// Render targets passes draw into and later passes sample.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub targets: Vec<RenderTarget>,
+    /// In order.
+    pub passes: Vec<Pass>,
+    /// The target shown (written): [`SCREEN`] or a target's name.
+    #[serde(default = "screen")]
+    pub output: String,
+    /// Values every pass sets, by uniform (or uniform block member) name.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub values: BTreeMap<String, ValueSpec>,
+    /// One per uniform the program reads: how a page lets the user set it.
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub controls: Vec<Control>,
+}
+
+fn screen() -> String {
+    SCREEN.to_string()
+}
+
+/// A camera circling `target`: at `distance`, `yaw` degrees about +y from
+/// +z, `pitch` degrees above the horizon; right-handed, y up, GL clip
+/// space (z in [-1, 1]) for `projection`. `spin` turns the yaw by that many
+/// degrees a second of `time`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct OrbitCamera {
+    pub target: [f32; 3],
+    pub distance: f32,
+    pub yaw: f32,
+    pub pitch: f32,
+    pub spin: f32,
+    /// Vertical field of view, degrees.
+    pub fov_y: f32,
+    pub near: f32,
+    pub far: f32,
+}
+
+impl Default for OrbitCamera {
+    fn default() -> OrbitCamera {
+        OrbitCamera { target: [0.0; 3], distance: 3.0, yaw: 35.0, pitch: 25.0, spin: 0.0, fov_y: 45.0, near: 0.1, far: 100.0 }
+    }
+}
+
+impl OrbitCamera {
+    /// The eye's position at `time` seconds.
+    pub fn eye(&self, time: f32) -> [f32; 3] {
+        let yaw = (self.yaw + self.spin * time).to_radians();
+        let pitch = self.pitch.to_radians();
+        let t = self.target;
+        [
+            t[0] + self.distance * pitch.cos() * yaw.sin(),
+            t[1] + self.distance * pitch.sin(),
+            t[2] + self.distance * pitch.cos() * yaw.cos(),
+        ]
+    }
+}
+
+/// A texture made before the frame.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Texture {
+    pub name: String,
+    /// A built-in pattern ...
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub pattern: Option<Pattern>,
+    /// ... or a PNG or JPEG file, relative to the scene file.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub image: Option<String>,
+    /// Texels of a pattern (an image has its own size).
+    #[serde(default = "pattern_size")]
+    pub size: [u32; 2],
+}
+
+fn pattern_size() -> [u32; 2] {
+    [64, 64]
+}
+
+/// The built-in patterns (RGBA8; docs/runner.md says which texels each has).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Pattern {
+    /// 8 x 8 squares, light grey and dark grey.
+    Checker,
+    /// Value noise, grey, the same texels everywhere (a fixed hash).
+    Noise,
+    /// Red = u, green = v, blue 0.5.
+    Uv,
+    /// The flat normal (0.5, 0.5, 1) a normal map holds where it is level.
+    FlatNormal,
+    /// Every texel white.
+    White,
+}
+
+impl Pattern {
+    pub const ALL: [Pattern; 5] = [Pattern::Checker, Pattern::Noise, Pattern::Uv, Pattern::FlatNormal, Pattern::White];
+
+    /// The RGBA8 texels of a `width` x `height` pattern, top row first.
+    /// Pure integer arithmetic, so a page computes the same bytes.
+    pub fn texels(self, width: u32, height: u32) -> Vec<u8> {
+        let mut out = Vec::with_capacity((width * height * 4) as usize);
+        for y in 0..height {
+            for x in 0..width {
+                let px: [u8; 4] = match self {
+                    Pattern::Checker => {
+                        let c = if ((x / 8) + (y / 8)) % 2 == 0 { 200 } else { 60 };
+                        [c, c, c, 255]
+                    }
+                    Pattern::Noise => {
+                        let c = noise(x, y);
+                        [c, c, c, 255]
+                    }
+                    Pattern::Uv => [(x * 255 / (width - 1).max(1)) as u8, (y * 255 / (height - 1).max(1)) as u8, 128, 255],
+                    Pattern::FlatNormal => [128, 128, 255, 255],
+                    Pattern::White => [255; 4],
+                };
+                out.extend_from_slice(&px);
+            }
+        }
+        out
+    }
+}
+
+/// A hash of the texel's cell corners, blended: 4-texel cells.
+fn noise(x: u32, y: u32) -> u8 {
+    let h = |cx: u32, cy: u32| -> u32 {
+        let mut v = cx.wrapping_mul(374_761_393) ^ cy.wrapping_mul(668_265_263);
+        v = (v ^ (v >> 13)).wrapping_mul(1_274_126_177);
+        (v ^ (v >> 16)) & 255
+    };
+    let (cx, cy, fx, fy) = (x / 4, y / 4, x % 4, y % 4);
+    let top = h(cx, cy) * (4 - fx) + h(cx + 1, cy) * fx;
+    let bottom = h(cx, cy + 1) * (4 - fx) + h(cx + 1, cy + 1) * fx;
+    ((top * (4 - fy) + bottom * fy) / 16) as u8
+}
+
+/// A texture passes draw into.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct RenderTarget {
+    pub name: String,
+    pub format: TargetFormat,
+    /// Texels; none: the output's size.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub size: Option<[u32; 2]>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum TargetFormat {
+    /// 8-bit UNORM colour (the screen's format).
+    Rgba8,
+    /// 32-bit float depth.
+    Depth32float,
+    Depth24plus,
+    Depth16,
+}
+
+impl TargetFormat {
+    pub fn is_depth(self) -> bool {
+        !matches!(self, TargetFormat::Rgba8)
+    }
+}
+
+/// Which faces are culled (counter-clockwise faces are front faces, as a
+/// GL host's default).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Cull {
+    #[default]
+    None,
+    Front,
+    Back,
+}
+
+/// One render pass.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Pass {
+    pub name: String,
+    /// The vertex entry point.
+    pub vertex: String,
+    /// The fragment entry point; none: a depth-only pass.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub fragment: Option<String>,
+    /// Where colour output 0 goes: [`SCREEN`] or a colour target's name;
+    /// none: no colour.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub color: Option<String>,
+    /// The colour it is cleared to first.
+    #[serde(default = "black")]
+    pub clear: [f32; 4],
+    /// A depth target's name (depth test LESS, writes on, cleared to 1);
+    /// none: no depth test.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub depth: Option<String>,
+    #[serde(default)]
+    pub cull: Cull,
+    /// Slope-scaled depth bias, for shadow maps.
+    #[serde(default, skip_serializing_if = "is_false")]
+    pub depth_bias: bool,
+    /// What each sampler reads, by sampler name.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub samplers: BTreeMap<String, SamplerInput>,
+    /// Values this pass's draws set (over the scene's).
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub values: BTreeMap<String, ValueSpec>,
+    pub draws: Vec<Draw>,
+}
+
+fn black() -> [f32; 4] {
+    [0.0, 0.0, 0.0, 1.0]
+}
+
+fn is_false(b: &bool) -> bool {
+    !*b
+}
+
+/// A texture or target a sampler reads.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct SamplerInput {
+    /// A texture's or a render target's name.
+    pub texture: String,
+    #[serde(default)]
+    pub filter: Filter,
+}
+
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Filter {
+    #[default]
+    Linear,
+    Nearest,
+}
+
+/// One draw call.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Draw {
+    pub mesh: MeshKind,
+    /// With `mesh = "none"`: this many vertices, no vertex buffers (the
+    /// vertex program places them from `gl_VertexID`).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub vertices: Option<u32>,
+    /// What feeds each vertex input, by its name.
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub attributes: BTreeMap<String, Attribute>,
+    /// Drawn once per cell of a grid.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub instances: Option<InstanceGrid>,
+    /// This draw's values (over the pass's).
+    #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
+    pub values: BTreeMap<String, ValueSpec>,
+}
+
+/// The built-in meshes (docs/runner.md: their vertices).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum MeshKind {
+    /// One triangle covering clip space: positions (-1,-1), (3,-1),
+    /// (-1,3) at z 0, uvs from (0,0) to (2,2).
+    FullscreenTriangle,
+    /// The cube from -0.5 to 0.5, 24 vertices, a uv square on each face.
+    Cube,
+    /// Radius 0.5, 24 segments around, 16 rings.
+    Sphere,
+    /// The square from -1 to 1 in x and z at y 0, facing +y.
+    Plane,
+    /// No vertex buffers: `vertices` vertices.
+    None,
+}
+
+impl MeshKind {
+    pub fn name(self) -> &'static str {
+        match self {
+            MeshKind::FullscreenTriangle => "fullscreen_triangle",
+            MeshKind::Cube => "cube",
+            MeshKind::Sphere => "sphere",
+            MeshKind::Plane => "plane",
+            MeshKind::None => "none",
+        }
+    }
+}
+
+/// What a mesh gives a vertex input. Each fits the input's components:
+/// the first N of a longer value, a 4th component of 1 where the value
+/// has 3.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Attribute {
+    /// Object-space position (clip space for the full-screen triangle).
+    Position,
+    Normal,
+    /// The tangent along u, w = 1.
+    Tangent,
+    Uv,
+    /// The position mapped to [0, 1] (x, y, z), alpha 1.
+    Color,
+    /// Per instance: the cell's centre.
+    InstanceOffset,
+    /// Per instance: a colour from the cell's place in the grid.
+    InstanceColor,
+    /// Per instance: `index / count`, in [0, 1).
+    InstancePhase,
+}
+
+impl Attribute {
+    pub fn per_instance(self) -> bool {
+        matches!(self, Attribute::InstanceOffset | Attribute::InstanceColor | Attribute::InstancePhase)
+    }
+}
+
+/// `count` instances on a grid centred on the origin, `spacing` apart in
+/// x, then z, then y.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct InstanceGrid {
+    pub count: [u32; 3],
+    #[serde(default = "spacing")]
+    pub spacing: f32,
+}
+
+fn spacing() -> f32 {
+    1.5
+}
+
+impl InstanceGrid {
+    pub fn total(&self) -> u32 {
+        self.count.iter().product()
+    }
+
+    /// Instance `i`'s (offset, colour, phase).
+    pub fn instance(&self, i: u32) -> ([f32; 3], [f32; 3], f32) {
+        let [nx, nz, ny] = self.count.map(|n| n.max(1));
+        let (ix, iz, iy) = (i % nx, (i / nx) % nz, i / (nx * nz));
+        let centre = |k: u32, n: u32| (k as f32 - (n - 1) as f32 / 2.0) * self.spacing;
+        let frac = |k: u32, n: u32| if n > 1 { k as f32 / (n - 1) as f32 } else { 0.5 };
+        (
+            [centre(ix, nx), centre(iy, ny), centre(iz, nz)],
+            [0.25 + 0.7 * frac(ix, nx), 0.8 - 0.5 * frac(iz, nz), 0.3 + 0.6 * frac(iy, ny)],
+            i as f32 / self.total() as f32,
+        )
+    }
+}
+
+/// A uniform's value in a scene: a number, numbers (components in order,
+/// matrices column by column), a bool, or the name of a convention
+/// ([`Convention`]) the host computes each frame.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(untagged)]
+pub enum ValueSpec {
+    Bool(bool),
+    Number(f64),
+    Numbers(Vec<f64>),
+    Convention(Convention),
+}
+
+/// Values the host computes each frame (docs/runner.md, "Conventions").
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Convention {
+    /// Seconds.
+    Time,
+    /// The frame's number from 0.
+    Frame,
+    /// The output's width and height in pixels (a third component 1, a
+    /// fourth `time`).
+    Resolution,
+    /// Width over height.
+    Aspect,
+    /// The pointer in pixels (x, y; a held button: z, w = the press), from
+    /// the bottom left; the output's centre when nothing moved it.
+    Mouse,
+    /// The orbit camera's world-to-view matrix.
+    View,
+    /// `view` without its translation (a skybox's).
+    ViewRotation,
+    /// The orbit camera's perspective projection (GL clip space).
+    Projection,
+    /// `projection * view`.
+    ViewProjection,
+    /// The object's model matrix: a slow turn about y with `time`.
+    Model,
+    /// `projection * view * model`.
+    ModelViewProjection,
+    /// The inverse transpose of `model`'s upper 3x3.
+    NormalMatrix,
+    /// The orbit camera's eye, in world space.
+    CameraPosition,
+    /// A sun's direction towards the light: normalize(0.4, 0.8, 0.45).
+    LightDirection,
+    /// The sun's orthographic `projection * view`, a box of half-size 4
+    /// around the origin looking down `-light_direction`.
+    LightViewProjection,
+    /// 1 / `resolution` (x, y).
+    TexelSize,
+}
+
+impl Convention {
+    pub const ALL: [Convention; 16] = [
+        Convention::Time,
+        Convention::Frame,
+        Convention::Resolution,
+        Convention::Aspect,
+        Convention::Mouse,
+        Convention::View,
+        Convention::ViewRotation,
+        Convention::Projection,
+        Convention::ViewProjection,
+        Convention::Model,
+        Convention::ModelViewProjection,
+        Convention::NormalMatrix,
+        Convention::CameraPosition,
+        Convention::LightDirection,
+        Convention::LightViewProjection,
+        Convention::TexelSize,
+    ];
+}
+
+/// How a page lets the user set one uniform.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Control {
+    /// The uniform's (or block member's) name.
+    pub name: String,
+    /// Its DSL type (`float`, `float3`, `bool`, `float4x4`).
+    #[serde(rename = "type")]
+    pub ty: String,
+    pub kind: ControlKind,
+    /// A slider's range and step (every component of a vector alike).
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub min: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub max: Option<f64>,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub step: Option<f64>,
+}
+
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ControlKind {
+    /// One slider per component.
+    Slider,
+    /// A colour picker (RGB; an alpha slider for a `float4`).
+    Color,
+    Checkbox,
+    /// Set by its convention each frame (the scene's value names it);
+    /// matrices follow the orbit camera, which the page may let the user drag.
+    Convention,
+    /// Nothing a control can set (a struct, an array).
+    None,
+}
+
+impl Scene {
+    /// Reads a scene file: TOML, or JSON when `name` ends in `.json`.
+    /// The error names the file and, where the parser knows it, the line.
+    pub fn parse(name: &str, text: &str) -> Result<Scene, String> {
+        let scene: Scene = if name.ends_with(".json") {
+            serde_json::from_str(text).map_err(|e| format!("{name}:{}:{}: {e}", e.line(), e.column()))?
+        } else {
+            toml::from_str(text).map_err(|e| match e.span() {
+                Some(span) => {
+                    let (line, col) = line_col(text, span.start);
+                    format!("{name}:{line}:{col}: {}", e.message())
+                }
+                None => format!("{name}: {}", e.message()),
+            })?
+        };
+        scene.check().map_err(|e| format!("{name}: {e}"))?;
+        Ok(scene)
+    }
+
+    /// As JSON (the bundle's `scene`, a file `parse` reads back).
+    pub fn to_json(&self) -> serde_json::Value {
+        serde_json::to_value(self).expect("a scene is plain data")
+    }
+
+    /// Whether every name a pass uses is declared, sizes are at least 1,
+    /// attachments have the right kind and each draw has geometry.
+    pub fn check(&self) -> Result<(), String> {
+        let mut names: Vec<&str> = vec![SCREEN];
+        for n in self.textures.iter().map(|t| t.name.as_str()).chain(self.targets.iter().map(|t| t.name.as_str())) {
+            if names.contains(&n) {
+                return Err(format!("`{n}` is declared twice (textures, targets and `screen` share one namespace)"));
+            }
+            names.push(n);
+        }
+        for t in &self.textures {
+            match (&t.pattern, &t.image) {
+                (Some(_), None) | (None, Some(_)) => {}
+                _ => return Err(format!("texture `{}` needs exactly one of `pattern` and `image`", t.name)),
+            }
+            if t.size[0] == 0 || t.size[1] == 0 || t.size[0] > 8192 || t.size[1] > 8192 {
+                return Err(format!("texture `{}` is {}x{}: sizes go from 1 to 8192", t.name, t.size[0], t.size[1]));
+            }
+        }
+        for t in &self.targets {
+            if let Some([w, h]) = t.size {
+                if w == 0 || h == 0 || w > 8192 || h > 8192 {
+                    return Err(format!("target `{}` is {w}x{h}: sizes go from 1 to 8192", t.name));
+                }
+            }
+        }
+        let target = |n: &str| self.targets.iter().find(|t| t.name == n);
+        if self.output != SCREEN && target(&self.output).is_none() {
+            return Err(format!("`output = \"{}\"` names no render target", self.output));
+        }
+        if self.passes.is_empty() {
+            return Err("a scene needs at least one pass".into());
+        }
+        for p in &self.passes {
+            match p.color.as_deref() {
+                None | Some(SCREEN) => {}
+                Some(c) => match target(c) {
+                    Some(t) if !t.format.is_depth() => {}
+                    Some(_) => return Err(format!("pass `{}` draws colour into the depth target `{c}`", p.name)),
+                    None => return Err(format!("pass `{}`: `color = \"{c}\"` names no render target", p.name)),
+                },
+            }
+            if let Some(d) = p.depth.as_deref() {
+                match target(d) {
+                    Some(t) if t.format.is_depth() => {}
+                    Some(_) => return Err(format!("pass `{}` tests depth against the colour target `{d}`", p.name)),
+                    None => return Err(format!("pass `{}`: `depth = \"{d}\"` names no render target", p.name)),
+                }
+            }
+            if p.color.is_none() && p.depth.is_none() {
+                return Err(format!("pass `{}` has neither `color` nor `depth`", p.name));
+            }
+            for (s, input) in &p.samplers {
+                if !names[1..].contains(&input.texture.as_str()) {
+                    return Err(format!("pass `{}`: sampler `{s}` reads `{}`, which is no texture or render target", p.name, input.texture));
+                }
+                if p.color.as_deref() == Some(input.texture.as_str()) || p.depth.as_deref() == Some(input.texture.as_str()) {
+                    return Err(format!("pass `{}` samples `{}`, which it draws into", p.name, input.texture));
+                }
+            }
+            for d in &p.draws {
+                match (d.mesh, d.vertices) {
+                    (MeshKind::None, Some(n)) if n > 0 => {}
+                    (MeshKind::None, _) => return Err(format!("pass `{}`: a draw with `mesh = \"none\"` needs `vertices` (at least 1)", p.name)),
+                    (_, Some(_)) => return Err(format!("pass `{}`: `vertices` goes with `mesh = \"none\"` only", p.name)),
+                    _ => {}
+                }
+                if let Some(g) = &d.instances {
+                    if g.total() == 0 || g.total() > 65536 {
+                        return Err(format!("pass `{}`: an instance grid of {} instances (1 to 65536)", p.name, g.total()));
+                    }
+                }
+                if d.instances.is_none() {
+                    if let Some((a, _)) = d.attributes.iter().find(|(_, a)| a.per_instance()) {
+                        return Err(format!("pass `{}`: attribute `{a}` is per instance, but the draw has no `instances`", p.name));
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The value `name` has in a draw: the draw's, else its pass's, else
+    /// the scene's.
+    pub fn value<'a>(&'a self, pass: &'a Pass, draw: &'a Draw, name: &str) -> Option<&'a ValueSpec> {
+        draw.values.get(name).or_else(|| pass.values.get(name)).or_else(|| self.values.get(name))
+    }
+}
+
+/// 1-based line and column of a byte offset.
+fn line_col(text: &str, offset: usize) -> (usize, usize) {
+    let before = &text[..offset.min(text.len())];
+    let line = before.matches('\n').count() + 1;
+    let col = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
+    (line, col)
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,263 @@
+//! The scene format and inference, from programs compiled here.
+
+use super::*;
+
+fn manifest(src: &str) -> crate::Reflection {
+    let c = crate::compile_source("t.das", src, &crate::Options::default());
+    assert!(!c.has_errors(), "{}", c.render_diagnostics());
+    c.result.unwrap().reflection
+}
+
+const SCREEN_UV: &str = "var @in @location v_position : float2
+var @uniform u_time : float
+var @uniform u_res : float2
+var @uniform u_tint : float3
+var @uniform u_gain : float = 3.0
+var @uniform u_on : bool
+var @inout f_uv : float2
+var @out f_color : float4
+[vertex_program]
+def vs {
+    f_uv = v_position
+    gl_Position = float4(v_position, 0.0, 1.0)
+}
+[fragment_program]
+def fs {
+    let k = u_on ? 1.0 : 0.5
+    f_color = float4(u_tint * u_gain * k * sin(u_time) + float3(f_uv / u_res, 0.0), 1.0)
+}
+";
+
+#[test]
+fn a_fragment_program_over_screen_coordinates_draws_a_fullscreen_triangle() {
+    let s = Scene::infer(&manifest(SCREEN_UV)).unwrap();
+    assert_eq!(s.passes.len(), 1);
+    let p = &s.passes[0];
+    assert_eq!((p.vertex.as_str(), p.fragment.as_deref(), p.color.as_deref(), p.depth.as_deref()), ("vs", Some("fs"), Some(SCREEN), None));
+    let d = &p.draws[0];
+    assert_eq!(d.mesh, MeshKind::FullscreenTriangle);
+    assert_eq!(d.attributes["v_position"], Attribute::Position);
+    assert_eq!(s.values["u_time"], ValueSpec::Convention(Convention::Time));
+    assert_eq!(s.values["u_res"], ValueSpec::Convention(Convention::Resolution));
+    assert_eq!(s.values["u_gain"], ValueSpec::Number(3.0), "the manifest's default");
+    let kind = |n: &str| infer::control(&s, n).unwrap().kind;
+    assert_eq!(kind("u_tint"), ControlKind::Color);
+    assert_eq!(kind("u_on"), ControlKind::Checkbox);
+    assert_eq!(kind("u_time"), ControlKind::Convention);
+    let gain = infer::control(&s, "u_gain").unwrap();
+    assert_eq!((gain.kind, gain.min, gain.max), (ControlKind::Slider, Some(0.0), Some(6.0)));
+    s.check().unwrap();
+}
+
+#[test]
+fn a_vertex_program_without_inputs_draws_three_vertices() {
+    let src = "var @out f_color : float4
+[vertex_program]
+def vs {
+    let x = float(gl_VertexID & 1) * 4.0 - 1.0
+    let y = float(gl_VertexID & 2) * 2.0 - 1.0
+    gl_Position = float4(x, y, 0.0, 1.0)
+}
+[fragment_program]
+def fs {
+    f_color = float4(gl_FragCoord.xy / 64.0, 0.0, 1.0)
+}
+";
+    let s = Scene::infer(&manifest(src)).unwrap();
+    assert_eq!((s.passes[0].draws[0].mesh, s.passes[0].draws[0].vertices), (MeshKind::None, Some(3)));
+}
+
+const LIT_MESH: &str = "var @in a_pos : float3
+var @in a_normal : float3
+var @in a_uv : float2
+var @uniform u_model : float4x4
+var @uniform u_view : float4x4
+var @uniform u_proj : float4x4
+var @uniform u_cam_pos : float3
+var @uniform @stage = 0 u_albedo : sampler2D
+var @uniform @stage = 1 u_normal_map : sampler2D
+var @inout w_normal : float3
+var @inout w_uv : float2
+var @out f_color : float4
+[vertex_program]
+def vs {
+    w_normal = (u_model * float4(a_normal, 0.0)).xyz
+    w_uv = a_uv
+    gl_Position = u_proj * u_view * u_model * float4(a_pos, 1.0)
+}
+[fragment_program]
+def fs {
+    let n = normalize(w_normal + texture(u_normal_map, w_uv).xyz * 0.1)
+    f_color = texture(u_albedo, w_uv) * max(dot(n, normalize(u_cam_pos)), 0.1)
+}
+";
+
+#[test]
+fn a_vertex_program_with_mesh_attributes_draws_the_cube_with_the_orbit_camera() {
+    let s = Scene::infer(&manifest(LIT_MESH)).unwrap();
+    let p = &s.passes[0];
+    assert_eq!(p.draws[0].mesh, MeshKind::Cube);
+    assert_eq!(p.depth.as_deref(), Some("depth"));
+    assert!(s.targets.iter().any(|t| t.name == "depth" && t.format.is_depth()));
+    let a = &p.draws[0].attributes;
+    assert_eq!((a["a_pos"], a["a_normal"], a["a_uv"]), (Attribute::Position, Attribute::Normal, Attribute::Uv));
+    for (n, c) in [("u_model", Convention::Model), ("u_view", Convention::View), ("u_proj", Convention::Projection), ("u_cam_pos", Convention::CameraPosition)] {
+        assert_eq!(s.values[n], ValueSpec::Convention(c), "{n}");
+    }
+    let tex = |sampler: &str| {
+        let name = &p.samplers[sampler].texture;
+        s.textures.iter().find(|t| &t.name == name).unwrap().pattern.unwrap()
+    };
+    assert_eq!((tex("u_albedo"), tex("u_normal_map")), (Pattern::Checker, Pattern::FlatNormal));
+    s.check().unwrap();
+}
+
+#[test]
+fn instanced_attributes_get_an_instance_grid() {
+    let src = "var @in a_pos : float3
+var @in a_offset : float3
+var @in a_color : float3
+var @in a_phase : float
+var @uniform u_view_proj : float4x4
+var @inout w_color : float3
+var @out f_color : float4
+[vertex_program]
+def vs {
+    w_color = a_color * a_phase
+    gl_Position = u_view_proj * float4(a_pos * 0.5 + a_offset, 1.0)
+}
+[fragment_program]
+def fs {
+    f_color = float4(w_color, 1.0)
+}
+";
+    let s = Scene::infer(&manifest(src)).unwrap();
+    let d = &s.passes[0].draws[0];
+    assert_eq!(d.instances.as_ref().map(|g| g.total()), Some(9));
+    let a = &d.attributes;
+    assert_eq!((a["a_offset"], a["a_color"], a["a_phase"]), (Attribute::InstanceOffset, Attribute::InstanceColor, Attribute::InstancePhase));
+    assert_eq!(s.values["u_view_proj"], ValueSpec::Convention(Convention::ViewProjection));
+}
+
+#[test]
+fn a_shadow_sampler_reads_a_cleared_depth_target() {
+    let src = "var @in a_pos : float3
+var @uniform u_mvp : float4x4
+var @uniform @stage = 0 shadow_map : sampler2DShadow
+var @inout v_ls : float3
+var @out f_color : float4
+[vertex_program]
+def vs {
+    v_ls = a_pos * 0.5 + float3(0.5)
+    gl_Position = u_mvp * float4(a_pos, 1.0)
+}
+[fragment_program]
+def fs {
+    f_color = float4(float3(textureCompare(shadow_map, v_ls.xy, v_ls.z)), 1.0)
+}
+";
+    let s = Scene::infer(&manifest(src)).unwrap();
+    assert_eq!(s.passes.len(), 2);
+    let clear = &s.passes[0];
+    assert!(clear.draws.is_empty() && clear.fragment.is_none());
+    assert_eq!(clear.depth.as_deref(), Some(s.passes[1].samplers["shadow_map"].texture.as_str()));
+    s.check().unwrap();
+}
+
+#[test]
+fn a_compute_only_program_has_no_scene() {
+    let src = "[compute_program(local_size_x = 1)]\ndef cs {\n}\n";
+    let e = Scene::infer(&manifest(src)).unwrap_err();
+    assert!(e.0.contains("compute"), "{e}");
+}
+
+#[test]
+fn a_scene_round_trips_through_json() {
+    let s = Scene::infer(&manifest(LIT_MESH)).unwrap();
+    let json = serde_json::to_string_pretty(&s.to_json()).unwrap();
+    assert_eq!(Scene::parse("s.json", &json).unwrap(), s);
+}
+
+const TWO_PASSES: &str = r#"
+output = "screen"
+
+[camera]
+distance = 4.0
+spin = 20.0
+
+[[textures]]
+name = "bricks"
+pattern = "checker"
+
+[[targets]]
+name = "scene"
+format = "rgba8"
+size = [128, 128]
+
+[[targets]]
+name = "depth"
+format = "depth32float"
+size = [128, 128]
+
+[[passes]]
+name = "scene"
+vertex = "vs"
+fragment = "fs"
+color = "scene"
+depth = "depth"
+clear = [0.1, 0.1, 0.2, 1.0]
+samplers = { u_albedo = { texture = "bricks" } }
+[[passes.draws]]
+mesh = "sphere"
+attributes = { a_pos = "position", a_normal = "normal", a_uv = "uv" }
+values = { u_model = "model" }
+
+[[passes]]
+name = "post"
+vertex = "post_vs"
+fragment = "post_fs"
+color = "screen"
+samplers = { u_src = { texture = "scene", filter = "nearest" } }
+[[passes.draws]]
+mesh = "fullscreen_triangle"
+attributes = { q_pos = "position" }
+
+[values]
+u_exposure = 1.5
+u_view = "view"
+"#;
+
+#[test]
+fn a_two_pass_scene_file_parses() {
+    let s = Scene::parse("two.toml", TWO_PASSES).unwrap();
+    assert_eq!(s.passes.len(), 2);
+    assert_eq!(s.passes[1].samplers["u_src"].filter, Filter::Nearest);
+    assert_eq!(s.passes[0].draws[0].values["u_model"], ValueSpec::Convention(Convention::Model));
+    assert_eq!(s.values["u_exposure"], ValueSpec::Number(1.5));
+    assert_eq!(s.camera.distance, 4.0);
+    assert_eq!(s.camera.fov_y, 45.0, "unnamed camera fields keep their defaults");
+}
+
+#[test]
+fn scene_file_errors_name_the_line_or_the_mistake() {
+    let e = Scene::parse("bad.toml", "[[passes]]\nname = \"p\"\nvertex = 3\n").unwrap_err();
+    assert!(e.starts_with("bad.toml:3:"), "{e}");
+    let e = Scene::parse("bad.toml", &TWO_PASSES.replace("texture = \"bricks\"", "texture = \"brick\"")).unwrap_err();
+    assert!(e.contains("`brick`"), "{e}");
+    let e = Scene::parse("bad.toml", &TWO_PASSES.replace("color = \"scene\"", "color = \"depth\"")).unwrap_err();
+    assert!(e.contains("depth target"), "{e}");
+    let e = Scene::parse("bad.toml", &TWO_PASSES.replace("mesh = \"sphere\"", "mesh = \"teapot\"")).unwrap_err();
+    assert!(e.contains("teapot"), "{e}");
+    let e = Scene::parse("bad.json", "{\"passes\": []}").unwrap_err();
+    assert!(e.contains("at least one pass"), "{e}");
+}
+
+#[test]
+fn patterns_have_their_documented_texels() {
+    let c = Pattern::Checker.texels(16, 16);
+    assert_eq!((&c[0..4], &c[8 * 4..8 * 4 + 4]), (&[200, 200, 200, 255][..], &[60, 60, 60, 255][..]));
+    let uv = Pattern::Uv.texels(2, 2);
+    assert_eq!(&uv[..], &[0, 0, 128, 255, 255, 0, 128, 255, 0, 255, 128, 255, 255, 255, 128, 255]);
+    assert_eq!(Pattern::Noise.texels(8, 8), Pattern::Noise.texels(8, 8));
+    assert!(Pattern::Noise.texels(32, 32).chunks(4).any(|p| p[0] != Pattern::Noise.texels(32, 32)[0]));
+}

@@ -1,0 +1,657 @@
+// Draws one umbrac program in a canvas, with WebGL2 from its GLSL ES 3.00
+// outputs or WebGPU from its WGSL, bound by its reflection manifest.
+// The preview page (umbrac preview) and the playground both use it.
+//
+//   import { createRenderer, planOf, uniformBuffers, DrawError } from './draw.js';
+//   const r = await createRenderer(canvas, 'webgl2');   // or 'webgpu'
+//   r.load(bundle, planOf(bundle));   // compiles; throws DrawError, the last load stays
+//   r.frame({ buffers, textures });   // draws: buffers from uniformBuffers(),
+//                                     // textures { samplerName: {width, height, data} }
+//   const rgba = await r.read();      // Uint8Array, rows bottom first (GL's order)
+//
+// A bundle is src/bundle.rs's JSON (docs/preview.md). What is drawn
+// comes from planOf: the manifest's first vertex/fragment program over a
+// full-screen quad whose attributes are made up from their names, or a
+// lone fragment entry point over a full-screen triangle whose varyings
+// are made up the same way. Uniform values live in one word array per
+// uniform buffer of the manifest, laid out as the manifest says (WGSL's
+// buffers; GLSL's std140 blocks; GLSL's loose uniforms are read back
+// from the same words), so both APIs draw the same values.
+
+export class DrawError extends Error {
+  constructor(kind, message) {
+    super(message);
+    this.kind = kind;
+  }
+}
+
+// ---- what to draw -------------------------------------------------------
+
+// 'float3' -> { scalar: 'float', n: 3 }; 'float4x4' -> { cols: 4, rows: 4 };
+// 'bool' -> { scalar: 'bool', n: 1 }; anything else (structs, arrays): null.
+export function parseType(t) {
+  let m = /^(float|int|uint|bool|half)([234])?$/.exec(t);
+  if (m) return { scalar: m[1] === 'half' ? 'float' : m[1], n: m[2] ? +m[2] : 1 };
+  m = /^float([234])x([234])$/.exec(t);
+  if (m) return { scalar: 'float', cols: +m[1], rows: +m[2], n: +m[1] * +m[2] };
+  return null;
+}
+
+// What an attribute or varying of this name and type is made up as, on
+// a full-screen shape whose corner is `p` (GL clip space, -1..1).
+function madeUp(name, t) {
+  const n = name.toLowerCase();
+  if (t.scalar !== 'float') return 'zero';
+  if (/pos|vertex|coord(?!s?_?uv)/.test(n) && !/uv|tex/.test(n)) return 'position';
+  if (/uv|tex|st$/.test(n)) return 'uv';
+  if (/norm/.test(n)) return 'normal';
+  if (/col/.test(n)) return 'colour';
+  return t.n === 2 ? 'uv' : 'zero';
+}
+
+function madeUpValues(kind, n, p) {
+  const v = { position: [p[0], p[1], 0, 1], uv: [p[0] * 0.5 + 0.5, p[1] * 0.5 + 0.5, 0, 1], normal: [0, 0, 1, 0], colour: [1, 1, 1, 1], zero: [0, 0, 0, 0] }[kind];
+  // A vec4 position's w is 1; a 3-component one ends at z.
+  return v.slice(0, n);
+}
+
+// The same, as shader expressions of the corner `p` (GLSL and WGSL alike).
+function madeUpExprs(kind, t) {
+  if (t.scalar !== 'float') return Array(t.n).fill('0');
+  const v = { position: ['p.x', 'p.y', '0.0', '1.0'], uv: ['p.x * 0.5 + 0.5', 'p.y * 0.5 + 0.5', '0.0', '1.0'], normal: ['0.0', '0.0', '1.0', '0.0'], colour: ['1.0', '1.0', '1.0', '1.0'], zero: ['0.0', '0.0', '0.0', '0.0'] }[kind];
+  return v.slice(0, t.n);
+}
+
+const QUAD = [[-1, -1], [1, -1], [1, 1], [-1, -1], [1, 1], [-1, 1]];
+
+// The draw a bundle gets: { vertex (entry point or null), fragment,
+// attributes: [{ name, glsl_name, location, type, format, data }], count }.
+export function planOf(bundle, programIndex = 0) {
+  const m = bundle.manifest;
+  if (!m) throw new DrawError('plan', 'the bundle has no manifest (the program did not compile)');
+  const entry = (name) => m.entry_points.find((e) => e.name === name);
+  const prog = m.programs[programIndex];
+  let vertex = null;
+  let fragment;
+  if (prog) {
+    vertex = entry(prog.vertex);
+    fragment = entry(prog.fragment);
+  } else {
+    fragment = m.entry_points.find((e) => e.stage === 'fragment');
+  }
+  if (!fragment) throw new DrawError('plan', 'the program has no fragment entry point to draw');
+  const out0 = fragment.outputs.find((o) => o.location === 0) ?? fragment.outputs[0];
+  if (!out0 || parseType(out0.type)?.scalar !== 'float') {
+    throw new DrawError('plan', `the preview draws a float colour output at location 0; \`${fragment.name}\` has ${out0 ? `\`${out0.name} : ${out0.type}\`` : 'none'}`);
+  }
+  const attributes = [];
+  if (vertex) {
+    for (const a of vertex.inputs) {
+      const t = parseType(a.type);
+      if (!t || t.cols) throw new DrawError('plan', `the preview cannot make up vertex attribute \`${a.name} : ${a.type}\``);
+      const kind = madeUp(a.name, t);
+      const data = QUAD.flatMap((p) => madeUpValues(kind, t.n, p));
+      attributes.push({ name: a.name, glsl_name: a.glsl_name ?? a.name, location: a.glsl_location ?? a.location, wgsl_location: a.location, type: t, format: a.vertex_format, kind, data });
+    }
+  }
+  return { vertex, fragment, attributes, count: vertex ? QUAD.length : 3, entries: [vertex, fragment].filter(Boolean) };
+}
+
+// ---- uniform values -----------------------------------------------------
+
+// One Uint32Array per uniform buffer of the manifest, holding its
+// defaults ({ name -> words }).
+export function uniformBuffers(manifest) {
+  const out = {};
+  for (const b of manifest.uniform_buffers ?? []) {
+    const words = new Uint32Array(Math.ceil(b.size / 4));
+    for (const m of b.members) if (m.default) words.set(m.default, m.offset / 4);
+    out[b.name] = words;
+  }
+  return out;
+}
+
+// The words of `values` (numbers, a matrix column by column) at a member.
+export function writeMember(words, member, values) {
+  const t = parseType(member.type);
+  if (!t) return;
+  const f = new Float32Array(words.buffer, words.byteOffset, words.length);
+  const i = new Int32Array(words.buffer, words.byteOffset, words.length);
+  const base = member.offset / 4;
+  const put = (at, v) => {
+    if (t.scalar === 'float') f[at] = v;
+    else if (t.scalar === 'bool') words[at] = v ? 1 : 0;
+    else if (t.scalar === 'int') i[at] = v;
+    else words[at] = v >>> 0;
+  };
+  if (t.cols) {
+    const stride = (member.matrix_stride ?? 16) / 4;
+    for (let c = 0; c < t.cols; c++) for (let r = 0; r < t.rows; r++) put(base + c * stride + r, values[c * t.rows + r]);
+  } else for (let k = 0; k < t.n; k++) put(base + k, values[k]);
+}
+
+// A member's values read back from the words (matrices column by column).
+export function readMember(words, member) {
+  const t = parseType(member.type);
+  const f = new Float32Array(words.buffer, words.byteOffset, words.length);
+  const i = new Int32Array(words.buffer, words.byteOffset, words.length);
+  const base = member.offset / 4;
+  const get = (at) => (t.scalar === 'float' ? f[at] : t.scalar === 'int' ? i[at] : words[at]);
+  const out = [];
+  if (t.cols) {
+    const stride = (member.matrix_stride ?? 16) / 4;
+    for (let c = 0; c < t.cols; c++) for (let r = 0; r < t.rows; r++) out.push(get(base + c * stride + r));
+  } else for (let k = 0; k < t.n; k++) out.push(get(base + k));
+  return out;
+}
+
+// ---- built-in textures --------------------------------------------------
+
+// RGBA8 images, memory row 0 first (texture coordinate v = 0).
+export function pattern(kind, size = 256) {
+  const data = new Uint8Array(size * size * 4);
+  let seed = 0x9e3779b9;
+  for (let y = 0; y < size; y++) {
+    for (let x = 0; x < size; x++) {
+      const o = 4 * (y * size + x);
+      let rgb;
+      if (kind === 'uv') rgb = [x * 255 / (size - 1), y * 255 / (size - 1), 0];
+      else if (kind === 'noise') {
+        seed ^= seed << 13; seed ^= seed >>> 17; seed ^= seed << 5;
+        const v = (seed >>> 24) & 255;
+        rgb = [v, v, v];
+      } else {
+        const on = ((x >> 5) + (y >> 5)) & 1;
+        rgb = on ? [230, 230, 230] : [40, 40, 40];
+      }
+      data.set([rgb[0], rgb[1], rgb[2], 255], o);
+    }
+  }
+  return { width: size, height: size, data };
+}
+
+// What this preview cannot bind yet, named, rather than drawn wrong.
+function refuseUnsupported(m, entries) {
+  const used = new Set(entries.flatMap((e) => [...(e.uniform_buffers ?? []), ...(e.samplers ?? []), ...(e.storage_buffers ?? []), ...(e.images ?? [])]));
+  for (const s of m.samplers ?? []) {
+    if (!used.has(s.name)) continue;
+    if (s.dimension !== '2d' || s.comparison || s.sample_type !== 'float' || s.array_size) {
+      throw new DrawError('plan', `the preview binds built-in 2D colour textures only; \`${s.name} : ${s.type}\` is not one`);
+    }
+  }
+  for (const b of m.uniform_buffers ?? []) {
+    if (used.has(b.name) && b.push_constant) throw new DrawError('plan', `the preview does not bind push constants (\`${b.name}\`)`);
+  }
+  for (const key of ['storage_buffers', 'images']) {
+    for (const b of m[key] ?? []) if (used.has(b.name)) throw new DrawError('plan', `the preview does not bind ${key.replace('_', ' ')} (\`${b.name}\`)`);
+  }
+}
+
+// ---- WebGL2 -------------------------------------------------------------
+
+function glslVaryingType(t) {
+  const s = { float: 'float', int: 'int', uint: 'uint', bool: 'bool' }[t.scalar];
+  if (t.n === 1) return s;
+  return { float: 'vec', int: 'ivec', uint: 'uvec', bool: 'bvec' }[t.scalar] + t.n;
+}
+
+// The vertex shader a lone fragment entry point is drawn with.
+function glslFullScreen(fragment) {
+  const lines = ['#version 300 es', 'precision highp float;', 'precision highp int;'];
+  const body = [];
+  for (const v of fragment.inputs) {
+    const t = parseType(v.type);
+    if (!t || t.cols) throw new DrawError('plan', `the preview cannot make up varying \`${v.name} : ${v.type}\``);
+    const flat = t.scalar !== 'float' || v.interpolation === 'flat';
+    lines.push(`${flat ? 'flat ' : ''}out ${glslVaryingType(t)} ${v.glsl_name ?? v.name};`);
+    body.push(`  ${v.glsl_name ?? v.name} = ${glslVaryingType(t)}(${madeUpExprs(madeUp(v.name, t), t).join(', ')});`);
+  }
+  lines.push('void main() {', '  vec2 p = vec2(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0);', ...body, '  gl_Position = vec4(p, 0.0, 1.0);', '}');
+  return lines.join('\n') + '\n';
+}
+
+function fileOf(bundle, entry, target) {
+  const name = entry.files[target];
+  const f = bundle.files.find((x) => x.name === name);
+  if (!f) throw new DrawError('plan', `the bundle lacks ${name}, the ${target} output of \`${entry.name}\``);
+  return f.text;
+}
+
+class WebGL2Renderer {
+  constructor(canvas) {
+    this.api = 'webgl2';
+    this.canvas = canvas;
+    const gl = canvas.getContext('webgl2', { antialias: false, alpha: false, depth: false, preserveDrawingBuffer: true });
+    if (!gl) throw new DrawError('api', 'this browser gives no WebGL2 context');
+    this.gl = gl;
+    this.loaded = null;
+  }
+
+  describe() {
+    const gl = this.gl;
+    const info = gl.getExtension('WEBGL_debug_renderer_info');
+    return gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER);
+  }
+
+  compile(type, file, source) {
+    const gl = this.gl;
+    const s = gl.createShader(type);
+    gl.shaderSource(s, source);
+    gl.compileShader(s);
+    if (!gl.getShaderParameter(s, gl.COMPILE_STATUS)) {
+      const log = gl.getShaderInfoLog(s).trim();
+      gl.deleteShader(s);
+      throw new DrawError('compile', `${file} does not compile on WebGL2: ${log}`);
+    }
+    return s;
+  }
+
+  load(bundle, plan) {
+    const gl = this.gl;
+    const m = bundle.manifest;
+    refuseUnsupported(m, plan.entries);
+    const vsText = plan.vertex ? fileOf(bundle, plan.vertex, 'gles300') : glslFullScreen(plan.fragment);
+    const vs = this.compile(gl.VERTEX_SHADER, plan.vertex ? plan.vertex.files.gles300 : 'the full-screen vertex shader', vsText);
+    const fs = this.compile(gl.FRAGMENT_SHADER, plan.fragment.files.gles300, fileOf(bundle, plan.fragment, 'gles300'));
+    const program = gl.createProgram();
+    gl.attachShader(program, vs);
+    gl.attachShader(program, fs);
+    for (const a of plan.attributes) if (a.location !== null && a.location !== undefined) gl.bindAttribLocation(program, a.location, a.glsl_name);
+    gl.linkProgram(program);
+    gl.deleteShader(vs);
+    gl.deleteShader(fs);
+    if (!gl.getProgramParameter(program, gl.LINK_STATUS)) {
+      const log = gl.getProgramInfoLog(program).trim();
+      gl.deleteProgram(program);
+      throw new DrawError('link', `the program does not link on WebGL2: ${log}`);
+    }
+    const used = new Set(plan.entries.flatMap((e) => [...e.uniform_buffers, ...e.uniforms, ...e.samplers]));
+    gl.useProgram(program);
+    const blocks = [];
+    const loose = [];
+    for (const b of m.uniform_buffers ?? []) {
+      if (!used.has(b.name) && !(b.loose && b.members.some((x) => used.has(x.name)))) continue;
+      if (b.glsl_block) {
+        const index = gl.getUniformBlockIndex(program, b.glsl_block);
+        if (index === gl.INVALID_INDEX) continue; // dropped by the driver
+        gl.uniformBlockBinding(program, index, b.glsl_binding);
+        const size = Math.max(b.size, gl.getActiveUniformBlockParameter(program, index, gl.UNIFORM_BLOCK_DATA_SIZE));
+        blocks.push({ name: b.name, point: b.glsl_binding, size, ubo: gl.createBuffer() });
+      } else {
+        for (const x of b.members) {
+          // An array of numbers, vectors or matrices is set whole: its elements
+          // read at the array stride.
+          const arr = /^(.+)\[(\d+)\]$/.exec(x.type);
+          const t = parseType(arr ? arr[1] : x.type);
+          const loc = gl.getUniformLocation(program, x.glsl_name ?? x.name);
+          if (loc === null) continue;
+          if (!t) throw new DrawError('plan', `the preview does not set the loose uniform \`${x.name} : ${x.type}\` on WebGL2 yet`);
+          const elements = arr ? Array.from({ length: +arr[2] }, (_, k) => ({ ...x, type: arr[1], offset: x.offset + k * x.array_stride })) : [x];
+          loose.push({ buffer: b.name, elements, t, loc });
+        }
+      }
+    }
+    const samplers = [];
+    for (const s of m.samplers ?? []) {
+      const loc = gl.getUniformLocation(program, s.glsl_name);
+      if (loc === null) continue;
+      gl.uniform1i(loc, s.texture_unit);
+      samplers.push({ name: s.name, unit: s.texture_unit, texture: gl.createTexture() });
+    }
+    gl.useProgram(null);
+    const vao = gl.createVertexArray();
+    gl.bindVertexArray(vao);
+    const vbos = [];
+    for (const a of plan.attributes) {
+      const loc = gl.getAttribLocation(program, a.glsl_name);
+      if (loc < 0) continue;
+      if (a.type.scalar !== 'float') {
+        gl.disableVertexAttribArray(loc);
+        continue; // a constant 0, the default attribute value
+      }
+      const vbo = gl.createBuffer();
+      gl.bindBuffer(gl.ARRAY_BUFFER, vbo);
+      gl.bufferData(gl.ARRAY_BUFFER, new Float32Array(a.data), gl.STATIC_DRAW);
+      gl.enableVertexAttribArray(loc);
+      gl.vertexAttribPointer(loc, a.type.n, gl.FLOAT, false, 0, 0);
+      vbos.push(vbo);
+    }
+    gl.bindVertexArray(null);
+    gl.bindBuffer(gl.ARRAY_BUFFER, null);
+    this.unload();
+    this.loaded = { program, blocks, loose, samplers, vao, vbos, count: plan.count, textureOf: new Map() };
+  }
+
+  unload() {
+    const l = this.loaded;
+    if (!l) return;
+    const gl = this.gl;
+    gl.deleteProgram(l.program);
+    gl.deleteVertexArray(l.vao);
+    l.vbos.forEach((b) => gl.deleteBuffer(b));
+    l.blocks.forEach((b) => gl.deleteBuffer(b.ubo));
+    l.samplers.forEach((s) => gl.deleteTexture(s.texture));
+    this.loaded = null;
+  }
+
+  frame({ buffers, textures }) {
+    const l = this.loaded;
+    if (!l) return;
+    const gl = this.gl;
+    gl.viewport(0, 0, this.canvas.width, this.canvas.height);
+    gl.clearColor(0, 0, 0, 1);
+    gl.clear(gl.COLOR_BUFFER_BIT);
+    gl.useProgram(l.program);
+    for (const b of l.blocks) {
+      const bytes = new Uint8Array(b.size);
+      bytes.set(new Uint8Array(buffers[b.name].buffer, buffers[b.name].byteOffset, Math.min(b.size, buffers[b.name].byteLength)));
+      gl.bindBuffer(gl.UNIFORM_BUFFER, b.ubo);
+      gl.bufferData(gl.UNIFORM_BUFFER, bytes, gl.DYNAMIC_DRAW);
+      gl.bindBufferBase(gl.UNIFORM_BUFFER, b.point, b.ubo);
+    }
+    for (const u of l.loose) {
+      const v = u.elements.flatMap((e) => readMember(buffers[u.buffer], e));
+      const { t, loc } = u;
+      if (t.cols) {
+        const fn = t.cols === t.rows ? `uniformMatrix${t.cols}fv` : `uniformMatrix${t.cols}x${t.rows}fv`;
+        gl[fn](loc, false, new Float32Array(v));
+      } else if (t.scalar === 'float') gl[`uniform${t.n}fv`](loc, new Float32Array(v));
+      else if (t.scalar === 'uint') gl[`uniform${t.n}uiv`](loc, new Uint32Array(v));
+      else gl[`uniform${t.n}iv`](loc, new Int32Array(v));
+    }
+    for (const s of l.samplers) {
+      const img = textures[s.name];
+      gl.activeTexture(gl.TEXTURE0 + s.unit);
+      gl.bindTexture(gl.TEXTURE_2D, s.texture);
+      if (img && l.textureOf.get(s.name) !== img) {
+        gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, img.width, img.height, 0, gl.RGBA, gl.UNSIGNED_BYTE, img.data);
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.LINEAR);
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.LINEAR);
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.REPEAT);
+        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.REPEAT);
+        l.textureOf.set(s.name, img);
+      }
+    }
+    gl.activeTexture(gl.TEXTURE0);
+    gl.bindVertexArray(l.vao);
+    gl.drawArrays(gl.TRIANGLES, 0, l.count);
+    gl.bindVertexArray(null);
+    gl.useProgram(null);
+    const err = gl.getError();
+    if (err !== gl.NO_ERROR) throw new DrawError('api', `WebGL error ${err}`);
+  }
+
+  async read() {
+    const gl = this.gl;
+    const { width, height } = this.canvas;
+    const px = new Uint8Array(width * height * 4);
+    gl.pixelStorei(gl.PACK_ALIGNMENT, 1);
+    gl.readPixels(0, 0, width, height, gl.RGBA, gl.UNSIGNED_BYTE, px);
+    return px;
+  }
+}
+
+// ---- WebGPU -------------------------------------------------------------
+
+function wgslType(t) {
+  const s = { float: 'f32', int: 'i32', uint: 'u32' }[t.scalar];
+  if (!s) throw new DrawError('plan', 'a bool varying cannot cross stages in WGSL');
+  return t.n === 1 ? s : `vec${t.n}<${s}>`;
+}
+
+// A vertex entry point appended to the module for a lone fragment entry
+// point: its varyings at their locations, the clip-space adaptation of
+// umbrac's portable conventions (y flipped, so rows come out as GL's).
+function wgslFullScreen(fragment) {
+  const fields = ['  @builtin(position) umbrac_preview_position: vec4<f32>,'];
+  const body = [];
+  for (const v of fragment.inputs) {
+    const t = parseType(v.type);
+    if (!t || t.cols) throw new DrawError('plan', `the preview cannot make up varying \`${v.name} : ${v.type}\``);
+    const flat = t.scalar !== 'float' || v.interpolation === 'flat';
+    const interp = flat ? ' @interpolate(flat)' : v.interpolation === 'linear' ? ' @interpolate(linear)' : '';
+    fields.push(`  @location(${v.location})${interp} umbrac_preview_${v.location}: ${wgslType(t)},`);
+    body.push(`  o.umbrac_preview_${v.location} = ${wgslType(t)}(${madeUpExprs(madeUp(v.name, t), t).join(', ')});`);
+  }
+  return `
+struct UmbracPreviewVaryings {
+${fields.join('\n')}
+}
+
+@vertex
+fn umbrac_preview_vs(@builtin(vertex_index) i: u32) -> UmbracPreviewVaryings {
+  let p = vec2<f32>(select(-1.0, 3.0, i == 1u), select(-1.0, 3.0, i == 2u));
+  var o: UmbracPreviewVaryings;
+${body.join('\n')}
+  o.umbrac_preview_position = vec4<f32>(p.x, -p.y, 0.5, 1.0);
+  return o;
+}
+`;
+}
+
+class WebGPURenderer {
+  static async create(canvas) {
+    if (!navigator.gpu) throw new DrawError('api', 'this browser has no WebGPU (navigator.gpu)');
+    const adapter = await navigator.gpu.requestAdapter();
+    if (!adapter) throw new DrawError('api', 'this browser offers no WebGPU adapter');
+    const device = await adapter.requestDevice();
+    const r = new WebGPURenderer(canvas, adapter, device);
+    return r;
+  }
+
+  constructor(canvas, adapter, device) {
+    this.api = 'webgpu';
+    this.canvas = canvas;
+    this.adapter = adapter;
+    this.device = device;
+    // The picture is drawn offscreen, read back and put in a 2D canvas: in
+    // headless chromium 156 (SwiftShader) a configured WebGPU canvas
+    // context makes every later mapAsync fail ("A valid external Instance
+    // reference no longer exists"), so no frame could be compared.
+    this.context = canvas.getContext('2d');
+    if (!this.context) throw new DrawError('api', 'the canvas gives no 2D context to show the WebGPU picture in');
+    this.busy = false;
+    this.loaded = null;
+    this.lost = null;
+    device.lost.then((i) => { this.lost = i.message; });
+  }
+
+  describe() {
+    const i = this.adapter.info ?? {};
+    return [i.vendor, i.architecture, i.description].filter(Boolean).join(' / ') || 'WebGPU';
+  }
+
+  async load(bundle, plan) {
+    const device = this.device;
+    const m = bundle.manifest;
+    refuseUnsupported(m, plan.entries);
+    const wgsl = bundle.files.find((f) => f.target === 'wgsl');
+    if (!wgsl) throw new DrawError('plan', 'the bundle has no WGSL output');
+    const code = plan.vertex ? wgsl.text : wgsl.text + wgslFullScreen(plan.fragment);
+    device.pushErrorScope('validation');
+    const module = device.createShaderModule({ code });
+    const info = await module.getCompilationInfo();
+    const errors = info.messages.filter((x) => x.type === 'error');
+    await device.popErrorScope();
+    if (errors.length) throw new DrawError('compile', `${wgsl.name} does not compile on WebGPU: ${errors.map((e) => `${e.lineNum}:${e.linePos}: ${e.message}`).join('\n')}`);
+
+    const used = new Set(plan.entries.flatMap((e) => [...e.uniform_buffers, ...e.uniforms, ...e.samplers]));
+    const vis = GPUShaderStage.VERTEX | GPUShaderStage.FRAGMENT;
+    const groups = [];
+    const group = (g) => (groups[g] ??= []);
+    const buffers = [];
+    for (const b of m.uniform_buffers ?? []) {
+      if (!used.has(b.name) && !(b.loose && b.members.some((x) => used.has(x.name)))) continue;
+      const size = Math.max(16, Math.ceil(b.size / 16) * 16);
+      const buffer = device.createBuffer({ size, usage: GPUBufferUsage.UNIFORM | GPUBufferUsage.COPY_DST });
+      group(b.group).push({ layout: { binding: b.binding, visibility: vis, buffer: { type: 'uniform' } }, resource: { buffer } });
+      buffers.push({ name: b.name, buffer, size });
+    }
+    const samplers = [];
+    for (const s of m.samplers ?? []) {
+      if (!used.has(s.name)) continue;
+      const texture = device.createTexture({ size: [1, 1], format: 'rgba8unorm', usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST });
+      const sampler = device.createSampler({ magFilter: 'linear', minFilter: 'linear', addressModeU: 'repeat', addressModeV: 'repeat' });
+      const entry = { name: s.name, group: s.group, binding: s.texture_binding, texture, image: null };
+      group(s.group).push({ layout: { binding: s.texture_binding, visibility: vis, texture: { sampleType: 'float', viewDimension: '2d' } }, sampler: entry });
+      group(s.group).push({ layout: { binding: s.sampler_binding, visibility: vis, sampler: { type: 'filtering' } }, resource: sampler });
+      samplers.push(entry);
+    }
+    const layouts = [];
+    for (let g = 0; g < groups.length; g++) layouts.push(device.createBindGroupLayout({ entries: (groups[g] ?? []).map((e) => e.layout) }));
+
+    const vertexBuffers = [];
+    const vbos = [];
+    for (const a of plan.attributes) {
+      const t = a.type;
+      const format = (a.format ?? `Float32x${t.n}`).toLowerCase().replace(/x1$/, '');
+      const data = t.scalar === 'float' ? new Float32Array(a.data) : new Int32Array(a.data.length);
+      const buf = device.createBuffer({ size: Math.max(16, data.byteLength), usage: GPUBufferUsage.VERTEX | GPUBufferUsage.COPY_DST });
+      device.queue.writeBuffer(buf, 0, data);
+      vbos.push(buf);
+      vertexBuffers.push({ arrayStride: 4 * t.n, attributes: [{ shaderLocation: a.wgsl_location, offset: 0, format }] });
+    }
+    device.pushErrorScope('validation');
+    const pipeline = device.createRenderPipeline({
+      layout: device.createPipelineLayout({ bindGroupLayouts: layouts }),
+      vertex: { module, entryPoint: plan.vertex ? plan.vertex.name : 'umbrac_preview_vs', buffers: vertexBuffers },
+      fragment: { module, entryPoint: plan.fragment.name, targets: [{ format: 'rgba8unorm' }] },
+      // umbrac's portable WGSL flips y, so GL's counter-clockwise fronts arrive clockwise.
+      primitive: { topology: 'triangle-list', frontFace: 'cw', cullMode: 'none' },
+    });
+    const err = await device.popErrorScope();
+    if (err) throw new DrawError('link', `the WebGPU pipeline is refused: ${err.message}`);
+    this.unload();
+    this.loaded = { pipeline, groups, layouts, buffers, samplers, vbos, count: plan.count, bindGroups: null };
+  }
+
+  unload() {
+    const l = this.loaded;
+    if (!l) return;
+    l.buffers.forEach((b) => b.buffer.destroy());
+    l.samplers.forEach((s) => s.texture.destroy());
+    l.vbos.forEach((b) => b.destroy());
+    this.loaded = null;
+  }
+
+  bindGroups() {
+    const l = this.loaded;
+    return l.layouts.map((layout, g) => this.device.createBindGroup({
+      layout,
+      entries: (l.groups[g] ?? []).map((e) => ({ binding: e.layout.binding, resource: e.sampler ? e.sampler.texture.createView() : e.resource })),
+    }));
+  }
+
+  frame({ buffers, textures }, readback = null) {
+    const l = this.loaded;
+    if (!l) return;
+    if (this.lost) throw new DrawError('api', `the WebGPU device was lost: ${this.lost}`);
+    if (!readback) {
+      // Shown when read back; a frame that comes while one is read is dropped.
+      if (this.busy) return;
+      this.busy = true;
+      this.read({ buffers, textures }).then((px) => this.present(px), (e) => { this.lost ??= e.message; }).finally(() => { this.busy = false; });
+      return;
+    }
+    const device = this.device;
+    for (const b of l.buffers) {
+      const bytes = new Uint8Array(b.size);
+      const w = buffers[b.name];
+      bytes.set(new Uint8Array(w.buffer, w.byteOffset, Math.min(b.size, w.byteLength)));
+      device.queue.writeBuffer(b.buffer, 0, bytes);
+    }
+    let rebind = !l.bindGroups;
+    for (const s of l.samplers) {
+      const img = textures[s.name];
+      if (!img || s.image === img) continue;
+      s.texture.destroy();
+      s.texture = device.createTexture({ size: [img.width, img.height], format: 'rgba8unorm', usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST });
+      device.queue.writeTexture({ texture: s.texture }, img.data, { bytesPerRow: img.width * 4 }, [img.width, img.height]);
+      s.image = img;
+      rebind = true;
+    }
+    if (rebind) l.bindGroups = this.bindGroups();
+    const target = readback.texture;
+    const enc = device.createCommandEncoder();
+    const pass = enc.beginRenderPass({ colorAttachments: [{ view: target.createView(), loadOp: 'clear', storeOp: 'store', clearValue: [0, 0, 0, 1] }] });
+    pass.setPipeline(l.pipeline);
+    l.bindGroups.forEach((g, i) => pass.setBindGroup(i, g));
+    l.vbos.forEach((b, i) => pass.setVertexBuffer(i, b));
+    pass.draw(l.count);
+    pass.end();
+    if (readback) {
+      enc.copyTextureToBuffer({ texture: target }, { buffer: readback.buffer, bytesPerRow: readback.bytesPerRow }, [target.width, target.height]);
+    }
+    device.queue.submit([enc.finish()]);
+  }
+
+  // Rows bottom first (GL's order) into the 2D canvas, top first.
+  present(px) {
+    const { width, height } = this.canvas;
+    const img = this.context.createImageData(width, height);
+    for (let y = 0; y < height; y++) img.data.set(px.subarray((height - 1 - y) * width * 4, (height - y) * width * 4), y * width * 4);
+    this.context.putImageData(img, 0, 0);
+  }
+
+  // Draws a frame into a texture of its own and reads it back.
+  async read(inputs) {
+    const { width, height } = this.canvas;
+    const bytesPerRow = Math.ceil((width * 4) / 256) * 256;
+    const buffer = this.device.createBuffer({ size: bytesPerRow * height, usage: GPUBufferUsage.COPY_DST | GPUBufferUsage.MAP_READ });
+    const texture = this.device.createTexture({ size: [width, height], format: 'rgba8unorm', usage: GPUTextureUsage.RENDER_ATTACHMENT | GPUTextureUsage.COPY_SRC });
+    this.frame(inputs, { buffer, bytesPerRow, texture });
+    await buffer.mapAsync(GPUMapMode.READ);
+    const src = new Uint8Array(buffer.getMappedRange());
+    const px = new Uint8Array(width * height * 4);
+    // Memory row 0 holds the bottom of the GL picture (the y flip): already GL's order.
+    for (let y = 0; y < height; y++) px.set(src.subarray(y * bytesPerRow, y * bytesPerRow + width * 4), y * width * 4);
+    buffer.unmap();
+    buffer.destroy();
+    texture.destroy();
+    return px;
+  }
+}
+
+// A renderer of `api` ('webgl2' or 'webgpu') on `canvas`; throws
+// DrawError('api') where the browser has none.
+export async function createRenderer(canvas, api) {
+  if (api === 'webgl2') {
+    const r = new WebGL2Renderer(canvas);
+    const read = r.read.bind(r);
+    r.read = async (inputs) => {
+      if (inputs) r.frame(inputs);
+      return read();
+    };
+    return r;
+  }
+  if (api === 'webgpu') return WebGPURenderer.create(canvas);
+  throw new DrawError('api', `unknown API ${api}`);
+}
+
+// The share of pixels whose channels differ by more than `tolerance`
+// (0..255) between two RGBA images of one size, and the worst channel difference.
+export function compare(a, b, tolerance = 2) {
+  let differ = 0;
+  let worst = 0;
+  for (let i = 0; i < a.length; i += 4) {
+    let d = 0;
+    for (let c = 0; c < 3; c++) d = Math.max(d, Math.abs(a[i + c] - b[i + c]));
+    if (d > tolerance) differ++;
+    worst = Math.max(worst, d);
+  }
+  return { share: differ / (a.length / 4), differ, worst, tolerance };
+}
+
+// One picture of a bundle in a fresh renderer: the convenience the
+// playground's one-shot view wants. `inputs` defaults to the manifest's
+// default uniform values and checker textures.
+export async function draw(bundle, canvas, { api = 'webgl2', inputs = null } = {}) {
+  const r = await createRenderer(canvas, api);
+  const plan = planOf(bundle);
+  await r.load(bundle, plan);
+  const textures = {};
+  for (const s of bundle.manifest.samplers ?? []) textures[s.name] = pattern('checker');
+  const given = inputs ?? { buffers: uniformBuffers(bundle.manifest), textures };
+  r.frame(given);
+  return r;
+}

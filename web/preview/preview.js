@@ -1,0 +1,188 @@
+// The page of `umbrac preview` (docs/preview.md): receives the program's
+// bundles over Server-Sent Events, draws the last good one with WebGL2 and
+// WebGPU side by side (draw.js) with the inputs of controls.js, shows the
+// share of pixels that differ, and shows a failed compile's diagnostics
+// over the last good picture.
+//
+// Query parameters: `time=T` fixes the clock at T seconds (and frame 0);
+// `api=webgl2` or `api=webgpu` draws with one only.
+//
+// window.umbracPreview is the state a test reads: { received, drawn (the
+// bundle numbers last received and last drawn), ok, diagnostics, errors
+// { webgl2, webgpu }, renderers, snapshot() }.
+
+import { createRenderer, planOf, compare, DrawError } from './draw.js';
+import { Inputs, Orbit } from './controls.js';
+
+const $ = (id) => document.getElementById(id);
+const query = new URLSearchParams(location.search);
+const fixedTime = query.has('time') ? parseFloat(query.get('time')) : null;
+const apis = query.has('api') ? [query.get('api')] : ['webgl2', 'webgpu'];
+if (fixedTime !== null) $('paused').checked = true;
+
+const state = (window.umbracPreview = {
+  received: 0, drawn: 0, ok: null, diagnostics: [], errors: {}, renderers: {}, diff: null, snapshot,
+});
+
+const panes = { webgl2: { canvas: $('gl'), status: $('gl-status'), info: $('gl-info') }, webgpu: { canvas: $('gpu'), status: $('gpu-status'), info: $('gpu-info') } };
+const renderers = {};
+let inputs = null;
+let lastGood = null;
+let programIndex = 0;
+const orbit = new Orbit();
+const clock = { start: performance.now(), time: fixedTime ?? 0, frame: 0, mouse: [0, 0, 0, 0] };
+
+function setError(api, message) {
+  state.errors[api] = message;
+  panes[api].status.textContent = message ?? '';
+}
+
+async function start() {
+  for (const api of ['webgl2', 'webgpu']) {
+    if (!apis.includes(api)) {
+      setError(api, `not drawn (api=${apis.join(',')})`);
+      continue;
+    }
+    try {
+      renderers[api] = await createRenderer(panes[api].canvas, api);
+      state.renderers[api] = renderers[api].describe();
+      panes[api].info.textContent = `on ${state.renderers[api]}`;
+    } catch (e) {
+      setError(api, e.message);
+    }
+  }
+  // Mouse by convention: pixels from the bottom left, the last click in .zw.
+  for (const { canvas } of Object.values(panes)) {
+    orbit.attach(canvas);
+    const at = (e) => {
+      const r = canvas.getBoundingClientRect();
+      return [(e.clientX - r.left) * canvas.width / r.width, (1 - (e.clientY - r.top) / r.height) * canvas.height];
+    };
+    canvas.addEventListener('pointermove', (e) => { if (e.buttons) clock.mouse.splice(0, 2, ...at(e)); });
+    canvas.addEventListener('pointerdown', (e) => { const p = at(e); clock.mouse = [p[0], p[1], p[0], p[1]]; });
+  }
+  $('program').addEventListener('change', () => {
+    programIndex = +$('program').value;
+    if (lastGood) show(lastGood.bundle, lastGood.generation);
+  });
+  const events = new EventSource('events');
+  events.addEventListener('bundle', (e) => {
+    const generation = +e.lastEventId;
+    state.received = generation;
+    receive(JSON.parse(e.data), generation);
+  });
+  requestAnimationFrame(tick);
+}
+
+// Serialises loads: a bundle that arrives while one loads waits for it.
+let loading = Promise.resolve();
+
+function receive(bundle, generation) {
+  loading = loading.then(() => (bundle.ok ? show(bundle, generation) : fail(bundle))).catch((e) => console.error(e));
+}
+
+function fail(bundle) {
+  state.ok = false;
+  state.diagnostics = bundle.diagnostics;
+  $('diagnostics').textContent = bundle.diagnostics.map((d) => d.rendered).join('\n');
+  $('overlay').hidden = false;
+}
+
+async function show(bundle, generation) {
+  state.ok = true;
+  state.diagnostics = bundle.diagnostics;
+  $('overlay').hidden = true;
+  $('source').textContent = bundle.manifest?.source ?? '';
+  const programs = bundle.manifest?.programs ?? [];
+  $('program').replaceChildren(...programs.map((p, i) => new Option(`${p.vertex} + ${p.fragment}`, i)));
+  $('program').hidden = programs.length < 2;
+  if (programIndex >= programs.length) programIndex = 0;
+  $('program').value = programIndex;
+  let plan;
+  try {
+    plan = planOf(bundle, programIndex);
+  } catch (e) {
+    for (const api of Object.keys(renderers)) setError(api, e.message);
+    state.drawn = generation;
+    return;
+  }
+  for (const [api, r] of Object.entries(renderers)) {
+    try {
+      await r.load(bundle, plan);
+      setError(api, null);
+    } catch (e) {
+      // The last program that loaded keeps drawing in this pane.
+      setError(api, e instanceof DrawError ? e.message : `${e}`);
+    }
+  }
+  inputs = new Inputs(bundle.manifest, $('controls'), inputs, orbit);
+  lastGood = { bundle, generation };
+  drawFrame();
+  await measure().catch((e) => { $('diff').textContent = `cannot compare: ${e.message}`; });
+  state.drawn = generation;
+}
+
+function frameInputs() {
+  const { width, height } = panes.webgl2.canvas;
+  return inputs.frame({ ...clock, width, height });
+}
+
+function drawFrame() {
+  if (!inputs) return;
+  const given = frameInputs();
+  for (const [api, r] of Object.entries(renderers)) {
+    try {
+      r.frame(given);
+    } catch (e) {
+      setError(api, e.message);
+    }
+  }
+}
+
+// Both pictures of the current inputs, and how far they agree.
+async function snapshot() {
+  const given = frameInputs();
+  const out = { width: panes.webgl2.canvas.width, height: panes.webgl2.canvas.height };
+  for (const [api, r] of Object.entries(renderers)) {
+    if (!r.loaded) continue;
+    out[api] = await r.read(given);
+  }
+  out.diff = out.webgl2 && out.webgpu ? compare(out.webgl2, out.webgpu) : null;
+  return out;
+}
+
+async function measure() {
+  const s = await snapshot();
+  state.diff = s.diff;
+  $('diff').textContent = s.diff
+    ? `${(100 * s.diff.share).toFixed(2)}% of pixels differ (worst channel: ${s.diff.worst}/255)`
+    : 'one picture: nothing to compare';
+}
+
+let lastMeasure = 0;
+function tick(now) {
+  if (!$('paused').checked) {
+    clock.time = (now - clock.start) / 1000;
+    clock.frame++;
+  } else if (fixedTime !== null) clock.time = fixedTime;
+  if (!$('paused').checked || fixedTime === null) drawFrame();
+  if (now - lastMeasure > 1000 && lastGood && !$('paused').checked) {
+    lastMeasure = now;
+    measure().catch(() => {});
+  }
+  requestAnimationFrame(tick);
+}
+
+// For tests: the pictures as base64.
+window.umbracSnapshot = async () => {
+  const s = await snapshot();
+  const b64 = (px) => {
+    if (!px) return null;
+    let bin = '';
+    for (let i = 0; i < px.length; i += 0x8000) bin += String.fromCharCode.apply(null, px.subarray(i, i + 0x8000));
+    return btoa(bin);
+  };
+  return { width: s.width, height: s.height, webgl2: b64(s.webgl2), webgpu: b64(s.webgpu), diff: s.diff };
+};
+
+start();
