@@ -1,13 +1,14 @@
 // The playground page: a CodeMirror 6 editor over umbrac's compiler in
 // WebAssembly (worker.js), every output side by side, examples, share
-// links, and a canvas panel that each good bundle is handed to (the live
-// preview's mount point). docs/preview.md, "Playground".
+// links, and the live preview (preview.js), which each good bundle is
+// handed to. docs/preview.md, "Playground".
 import { EditorView, basicSetup } from 'codemirror';
 import { EditorState } from '@codemirror/state';
 import { StreamLanguage } from '@codemirror/language';
 import { python } from '@codemirror/legacy-modes/mode/python';
 import { setDiagnostics, forEachDiagnostic, lintGutter } from '@codemirror/lint';
 import LZString from 'lz-string';
+import { mountPreview } from './preview.js';
 
 // Quiet time after the last keystroke before a compile starts.
 const DEBOUNCE_MS = 250;
@@ -293,11 +294,13 @@ function setSource(text) {
 }
 
 const previewPanel = $('preview');
+const preview = mountPreview(previewPanel);
 
 // What tests and the preview module read; nothing here changes the page.
 window.umbracPlayground = {
   view,
   state,
+  preview,
   get lastGood() { return lastGood; },
   setSource,
   source: () => view.state.doc.toString(),

@@ -89,7 +89,8 @@ let browser;
 try {
   browser = await chromium.launchPersistentContext(profile, {
     executablePath, headless: true, timeout: 60000,
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run'],
+    // WebGPU, where this chromium offers it (docs/preview.md), for the preview.
+    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run', '--enable-unsafe-webgpu'],
   });
   const page = await browser.newPage();
   page.on('pageerror', (e) => failures.push(`page error: ${e.message}`));
@@ -113,6 +114,18 @@ try {
   check('tutorial compiles in the page', bundle.ok && (await page.evaluate(() => window.umbracPlayground.source())) === example.source, { example: example.name, load_to_outputs_ms: loadMs, compile_ms: await page.evaluate(() => window.umbracPlayground.state.lastMs) });
   check('every output is shown', texts.glsl330.startsWith('#version 330') && texts.gles300.startsWith('#version 300 es') && texts.wgsl.includes('@fragment') && texts.spirv.includes('OpEntryPoint') && texts.manifest.includes('"entry_points"'),
     { heads: Object.fromEntries(Object.entries(texts).map(([k, v]) => [k, v.slice(0, 40)])) });
+
+  // The preview draws it: a picture that is not one flat colour, and the
+  // two APIs agree where WebGPU is there (the tolerance is draw.js's).
+  await page.waitForFunction(() => window.umbracPlayground.preview.drawn > 0, null, { timeout: SETTLE_MS, polling: 100 });
+  const pic = await page.evaluate(async () => {
+    const s = await window.umbracPlayground.preview.snapshot();
+    const px = s.webgl2;
+    const colours = new Set();
+    for (let i = 0; px && i < px.length; i += 4 * 97) colours.add(`${px[i]},${px[i + 1]},${px[i + 2]}`);
+    return { colours: colours.size, webgpu: !!s.webgpu, diff: s.diff, errors: window.umbracPlayground.preview.errors };
+  });
+  check('the preview draws the tutorial', pic.colours > 8 && (!pic.diff || pic.diff.share < 0.01), { ...pic, max_share: 0.01 });
 
   // The same text as the native compiler writes, file for file.
   if (process.env.UMBRAC) {
