@@ -45,8 +45,10 @@ esbuild=web/playground/node_modules/.bin/esbuild
 cp web/playground/worker.js "$stage/worker.src.js"
 "$esbuild" "$stage/worker.src.js" --bundle --format=esm --minify --log-level=warning --outfile="$stage/worker.js"
 rm "$stage/worker.src.js"
-# The worker bundle carries the glue; the wasm file sits beside it.
-mv "$stage/pkg/umbrac_web_bg.wasm" "$stage/"
+# The worker bundle carries the glue; the wasm file sits beside it. The
+# glue is kept too, for scripts that load the compiler in node
+# (web/playground/bench.mjs).
+mv "$stage/pkg/umbrac_web_bg.wasm" "$stage/pkg/umbrac_web.js" "$stage/"
 rm -rf "$stage/pkg"
 cp web/playground/index.html web/playground/style.css "$stage/"
 node web/playground/examples.mjs "$root" "$stage/examples.json"

@@ -69,6 +69,13 @@ pub fn compile(name: &str, source: &str, options_json: &str) -> String {
     Bundle::of(&compilation).to_json()
 }
 
+/// Compiles `source` and says whether it compiled, without making the
+/// bundle: what web/playground/bench.mjs times against the native library.
+#[wasm_bindgen]
+pub fn compile_only(name: &str, source: &str) -> bool {
+    !umbrac::compile_source(name, source, &Options::default()).has_errors()
+}
+
 fn parse_options(json: &str) -> Result<(Options, umbrac::syntax::overlay::Texts), String> {
     let v: Value = if json.trim().is_empty() { Value::Object(Default::default()) } else { serde_json::from_str(json).map_err(|e| e.to_string())? };
     let obj = v.as_object().ok_or("expected a JSON object")?;
