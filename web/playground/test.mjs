@@ -118,6 +118,7 @@ try {
   // The preview draws it: a picture that is not one flat colour, and the
   // two APIs agree where WebGPU is there (the tolerance is draw.js's).
   await page.waitForFunction(() => window.umbracPlayground.preview.drawn > 0, null, { timeout: SETTLE_MS, polling: 100 });
+  const firstFrameMs = Date.now() - t0;
   const pic = await page.evaluate(async () => {
     const s = await window.umbracPlayground.preview.snapshot();
     const px = s.webgl2;
@@ -125,7 +126,7 @@ try {
     for (let i = 0; px && i < px.length; i += 4 * 97) colours.add(`${px[i]},${px[i + 1]},${px[i + 2]}`);
     return { colours: colours.size, webgpu: !!s.webgpu, diff: s.diff, errors: window.umbracPlayground.preview.errors };
   });
-  check('the preview draws the tutorial', pic.colours > 8 && (!pic.diff || pic.diff.share < 0.01), { ...pic, max_share: 0.01 });
+  check('the preview draws the tutorial', pic.colours > 8 && (!pic.diff || pic.diff.share < 0.01), { ...pic, max_share: 0.01, load_to_first_frame_ms: firstFrameMs });
 
   // The same text as the native compiler writes, file for file.
   if (process.env.UMBRAC) {
