@@ -65,6 +65,7 @@ function onResult(msg) {
   running = null;
   if (msg.dead) startWorker();
   if (msg.error) {
+    state.lastVersion = version;
     showStatus(msg.error, 'error');
   } else {
     const bundle = JSON.parse(msg.bundle);
@@ -305,7 +306,6 @@ window.umbracPlayground = {
   setSource,
   source: () => view.state.doc.toString(),
   shareLink,
-  busy: () => running !== null || waiting !== null || timer !== null && state.lastVersion !== docVersion,
   settled: () => running === null && waiting === null && state.lastVersion === docVersion,
   // The editor's own lint marks: [{ line, severity, message }].
   marks: () => {
