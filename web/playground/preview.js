@@ -20,6 +20,12 @@ export function mountPreview(panel) {
   let loading = Promise.resolve();
   let generation = 0;
 
+  // controls.js's Inputs takes the plan as its second argument on the
+  // preview branch since the scene files (after the merge this page was
+  // built on); until both meet on main, either form is served.
+  const inputsFor = (manifest, plan, previous) =>
+    Inputs.length >= 3 ? new Inputs(manifest, plan, controls, previous, orbit) : new Inputs(manifest, controls, previous, orbit);
+
   const setError = (api, message) => {
     state.errors[api] = message;
     statusOf[api].textContent = message ?? '';
@@ -55,7 +61,7 @@ export function mountPreview(panel) {
         setError(api, e instanceof DrawError ? e.message : `${e}`);
       }
     }
-    inputs = new Inputs(bundle.manifest, controls, inputs, orbit);
+    inputs = inputsFor(bundle.manifest, plan, inputs);
     drawFrame();
     const s = await snapshot().catch(() => null);
     state.diff = s && s.diff;
