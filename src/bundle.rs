@@ -22,6 +22,8 @@ pub struct BundleFile {
     pub entry: Option<String>,
     pub text: Option<String>,
     pub words: Option<Vec<u32>>,
+    /// SPIR-V in assembly text (feature `spirv-text`), for reading.
+    pub disassembly: Option<String>,
 }
 
 serialize_struct!(BundleFile {
@@ -30,6 +32,7 @@ serialize_struct!(BundleFile {
     "entry": entry?,
     "text": text?,
     "words": words?,
+    "disassembly": disassembly?,
 });
 
 /// A compilation as a page reads it.
@@ -91,13 +94,28 @@ fn scene_of(_: &Compilation) -> Option<serde_json::Value> {
 
 fn file_of(a: &Artifact) -> BundleFile {
     let binary = a.target == Some(crate::Target::Spirv);
+    let words: Option<Vec<u32>> = binary.then(|| a.contents.chunks_exact(4).map(|w| u32::from_le_bytes([w[0], w[1], w[2], w[3]])).collect());
     BundleFile {
         name: a.file_name.clone(),
         target: a.target.map(|t| t.name()),
         entry: a.entry.clone(),
         text: (!binary).then(|| a.text().into_owned()),
-        words: binary.then(|| a.contents.chunks_exact(4).map(|w| u32::from_le_bytes([w[0], w[1], w[2], w[3]])).collect()),
+        disassembly: words.as_deref().and_then(disassemble),
+        words,
     }
+}
+
+/// SPIR-V words as assembly text; `None` where the feature is off (or, a
+/// bug, the words umbrac wrote do not parse).
+#[cfg(feature = "spirv-text")]
+fn disassemble(words: &[u32]) -> Option<String> {
+    use rspirv::binary::Disassemble;
+    rspirv::dr::load_words(words).ok().map(|m| m.disassemble())
+}
+
+#[cfg(not(feature = "spirv-text"))]
+fn disassemble(_: &[u32]) -> Option<String> {
+    None
 }
 
 #[cfg(test)]
@@ -113,6 +131,9 @@ mod tests {
         assert!(b.files.iter().any(|f| f.name.ends_with(".wgsl") && f.text.as_deref().is_some_and(|t| t.contains("@fragment"))));
         assert!(b.files.iter().filter(|f| f.words.is_some()).all(|f| f.words.as_ref().unwrap()[0] == 0x0723_0203));
         assert!(b.manifest.is_some());
+        // Assembly text only where the feature asks for it.
+        let spv = b.files.iter().find(|f| f.words.is_some()).unwrap();
+        assert_eq!(spv.disassembly.as_deref().is_some_and(|d| d.contains("OpEntryPoint Fragment")), cfg!(feature = "spirv-text"));
         let json: serde_json::Value = serde_json::from_str(&b.to_json()).unwrap();
         assert_eq!(json["ok"], true);
     }

@@ -58,6 +58,9 @@ pub use lower::{Conventions, GlUniforms, Lowered};
 pub use source::{SourceMap, Span};
 pub use target::{Artifact, Target};
 
+/// umbrac's version (what the playground page shows).
+pub const VERSION: &str = env!("CARGO_PKG_VERSION");
+
 /// What to compile and how.
 #[derive(Clone, Debug, Default)]
 pub struct Options {
@@ -204,8 +207,10 @@ pub const COMPILER_STACK_SIZE: usize = 32 << 20;
 /// between threads (and cores) costs. Unoptimised builds need more than a
 /// 2 MiB thread has and start a [`COMPILER_STACK_SIZE`] thread instead.
 /// (A build with debug assertions off *and* no optimisation would be
-/// misjudged; cargo's default profiles never combine them.)
-const RUNS_ON_CALLERS_STACK: bool = !cfg!(debug_assertions);
+/// misjudged; cargo's default profiles never combine them.) WebAssembly
+/// (the playground) has no threads to start: there the module links with
+/// a stack sized for the compiler (web/playground/wasm/build.rs).
+const RUNS_ON_CALLERS_STACK: bool = !cfg!(debug_assertions) || cfg!(target_family = "wasm");
 
 thread_local! {
     /// Set on threads started by [`spawn_compiler_thread`]: they have the
@@ -237,7 +242,13 @@ fn on_compiler_stack<F: FnOnce() -> Compilation + Send>(name: &str, job: F) -> C
         catch_unwind(AssertUnwindSafe(job))
     } else {
         let mut job = Some(job);
-        let ran = std::thread::scope(|s| spawn_compiler_thread(s, || job.take().map(|j| j())).ok().map(|h| h.join()));
+        // The caller's open documents stand for files on the new thread too.
+        let texts = syntax::overlay::current();
+        let run = |j: F| match texts.clone() {
+            Some(t) => syntax::overlay::with(t, j),
+            None => j(),
+        };
+        let ran = std::thread::scope(|s| spawn_compiler_thread(s, || job.take().map(run)).ok().map(|h| h.join()));
         match (ran, job) {
             (Some(joined), _) => joined.map(|c| c.unwrap_or_else(|| panicked("the compilation did not run"))),
             (None, Some(job)) => catch_unwind(AssertUnwindSafe(job)),

@@ -379,6 +379,7 @@ impl Drop for TempFile {
 }
 
 /// Outputs are ordinary readable files (`rw-r--r--`), whatever the umask.
+#[cfg(unix)]
 const OUTPUT_MODE: u32 = 0o644;
 
 /// Whether the process's umask clears none of [`OUTPUT_MODE`]'s bits, so
@@ -386,6 +387,7 @@ const OUTPUT_MODE: u32 = 0o644;
 /// system call per output). Read once from `/proc/self/status` (setting
 /// the umask to read it would race other threads' file creation); where
 /// it cannot be read, every file is given its mode explicitly.
+#[cfg(unix)]
 fn umask_keeps_output_mode() -> bool {
     static KEEPS: std::sync::OnceLock<bool> = std::sync::OnceLock::new();
     *KEEPS.get_or_init(|| {

@@ -40,6 +40,19 @@ pub(crate) fn text_of(path: &Path) -> Option<String> {
     })
 }
 
+/// The texts installed on this thread, for a thread that runs a
+/// compilation on its behalf ([`crate::compile_source`] in an unoptimised
+/// build) to install in turn.
+pub(crate) fn current() -> Option<Texts> {
+    CURRENT.with(|c| c.borrow().clone())
+}
+
+/// Whether a text stands for `path` (a file that may exist nowhere else:
+/// the playground's includes, which has no file system).
+pub(crate) fn holds(path: &Path) -> bool {
+    CURRENT.with(|c| c.borrow().as_ref().is_some_and(|t| t.contains_key(&normalize(path))))
+}
+
 /// `path` made absolute (against the working directory) with `.` and `..`
 /// resolved lexically: an include found as `dir/../inc/a.das` is the open
 /// document `inc/a.das`. Symbolic links are not followed (the file may not
@@ -73,5 +86,16 @@ mod tests {
             assert_eq!(text_of(Path::new("/x/y.das")).as_deref(), Some("hi"));
         });
         assert_eq!(text_of(Path::new("/x/y.das")), None);
+    }
+
+    #[test]
+    fn an_include_may_exist_only_as_a_text() {
+        // The playground has no file system: its includes are texts alone,
+        // seen on the thread an unoptimised build compiles on too.
+        let main = "#include \"inc/colour.das\"\nvar @out f_color : float4\n[fragment_program]\ndef main_fs {\n    f_color = COLOUR\n}\n";
+        let texts: Texts = Arc::new([(normalize(Path::new("nowhere/inc/colour.das")), "#define COLOUR float4(1.0)\n".to_string())].into_iter().collect());
+        let opts = crate::Options { allow_outside_includes: true, ..Default::default() };
+        let c = with(texts, || crate::compile_source("nowhere/main.das", main, &opts));
+        assert!(!c.has_errors(), "{}", c.render_diagnostics());
     }
 }

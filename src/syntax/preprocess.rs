@@ -481,6 +481,10 @@ impl Pp<'_> {
         let mut found = None;
         for d in dirs {
             let cand = if d.as_os_str().is_empty() { name_path.to_path_buf() } else { d.join(name_path) };
+            if super::overlay::holds(&cand) {
+                found = Some(cand);
+                break;
+            }
             match std::fs::metadata(&cand) {
                 Ok(m) if m.is_file() => {
                     found = Some(cand);
@@ -509,6 +513,8 @@ impl Pp<'_> {
         };
         let canon = match std::fs::canonicalize(&path) {
             Ok(c) => c,
+            // A text only the overlay has is known by its normalized path.
+            Err(_) if super::overlay::holds(&path) => super::overlay::normalize(&path),
             Err(e) => {
                 let msg = format!("cannot resolve include file `{}`: {e}", path.display());
                 self.diags.push(Diagnostic::error(msg, target.span).with_label("cannot resolve"));

@@ -1,0 +1,340 @@
+// The playground page: a CodeMirror 6 editor over umbrac's compiler in
+// WebAssembly (worker.js), every output side by side, examples, share
+// links, and the live preview (preview.js), which each good bundle is
+// handed to. docs/preview.md, "Playground".
+import { EditorView, basicSetup } from 'codemirror';
+import { EditorState } from '@codemirror/state';
+import { StreamLanguage } from '@codemirror/language';
+import { python } from '@codemirror/legacy-modes/mode/python';
+import { setDiagnostics, forEachDiagnostic, lintGutter } from '@codemirror/lint';
+import LZString from 'lz-string';
+import { mountPreview } from './preview.js';
+
+// Quiet time after the last keystroke before a compile starts.
+const DEBOUNCE_MS = 250;
+// A compile still running this long while newer text waits is cut off
+// (the worker is replaced), so a pathological program cannot stall edits.
+const STALE_COMPILE_MS = 5000;
+
+const $ = (id) => document.getElementById(id);
+
+// ---- the compiler worker ------------------------------------------------
+
+let worker = null;
+let running = null; // { id, version, started }
+let waiting = null; // the newest request not yet sent
+let nextId = 1;
+let docVersion = 0;
+let lastGood = null;
+
+function startWorker() {
+  worker = new Worker('worker.js', { type: 'module' });
+  worker.onmessage = (e) => onResult(e.data);
+  worker.onerror = (e) => onResult({ id: running && running.id, error: `the compiler worker failed: ${e.message}`, dead: true });
+}
+
+function request() {
+  const source = view.state.doc.toString();
+  waiting = { name: fileName, source, options: options(), version: docVersion };
+  pump();
+}
+
+function pump() {
+  if (running) {
+    if (waiting && performance.now() - running.started > STALE_COMPILE_MS) {
+      worker.terminate();
+      startWorker();
+      showStatus(`a compile ran over ${STALE_COMPILE_MS / 1000} s and was stopped`, 'warn');
+      running = null;
+    } else {
+      return;
+    }
+  }
+  if (!waiting) return;
+  const req = waiting;
+  waiting = null;
+  running = { id: nextId++, version: req.version, started: performance.now() };
+  worker.postMessage({ id: running.id, name: req.name, source: req.source, options: req.options });
+}
+
+setInterval(() => { if (running && waiting) pump(); }, 500);
+
+function onResult(msg) {
+  if (!running || msg.id !== running.id) return;
+  const version = running.version;
+  running = null;
+  if (msg.dead) startWorker();
+  if (msg.error) {
+    state.lastVersion = version;
+    showStatus(msg.error, 'error');
+  } else {
+    const bundle = JSON.parse(msg.bundle);
+    state.compiles += 1;
+    state.lastMs = msg.ms;
+    state.lastBundle = bundle;
+    state.lastVersion = version;
+    if (msg.version) $('version').textContent = `umbrac ${msg.version}`;
+    // Positions are only good for the text they were computed from.
+    if (version === docVersion) showDiagnostics(bundle);
+    showOutputs(bundle);
+    const errors = bundle.diagnostics.filter((d) => d.severity === 'error' || d.severity === 'bug').length;
+    showStatus(bundle.ok ? `compiled in ${msg.ms.toFixed(1)} ms` : `${errors} error${errors === 1 ? '' : 's'} (${msg.ms.toFixed(1)} ms)`, bundle.ok ? 'ok' : 'error');
+    if (bundle.ok) {
+      lastGood = bundle;
+      previewPanel.dispatchEvent(new CustomEvent('umbrac-bundle', { detail: bundle }));
+    }
+  }
+  pump();
+}
+
+// ---- options ------------------------------------------------------------
+
+let fileName = 'playground.das';
+let exampleFiles = {};
+
+function options() {
+  return { conventions: $('conventions').value, files: exampleFiles };
+}
+
+// ---- diagnostics in the editor --------------------------------------------
+
+// umbrac's columns count characters; CodeMirror's offsets count UTF-16 units.
+function offsetOf(doc, line, column) {
+  if (line < 1) return 0;
+  if (line > doc.lines) return doc.length;
+  const l = doc.line(line);
+  let off = 0;
+  let chars = 1;
+  while (chars < column && off < l.length) {
+    const code = l.text.charCodeAt(off);
+    off += code >= 0xd800 && code < 0xdc00 ? 2 : 1;
+    chars += 1;
+  }
+  return l.from + off;
+}
+
+// Where a diagnostic shows in the edited file: its own place, or (in an
+// included file) the `#include` that brought it in; a file-less one at the top.
+function placeOf(d) {
+  const here = (loc) => loc && loc.file === fileName;
+  if (here(d.location)) return d.location;
+  return (d.include_chain || []).find(here) || null;
+}
+
+function showDiagnostics(bundle) {
+  const doc = view.state.doc;
+  const list = [];
+  for (const d of bundle.diagnostics) {
+    const loc = placeOf(d);
+    let from = 0;
+    let to = 0;
+    if (loc) {
+      from = offsetOf(doc, loc.line, loc.column);
+      to = Math.max(from, offsetOf(doc, loc.end_line, loc.end_column));
+    }
+    const severity = d.severity === 'warning' ? 'warning' : d.severity === 'note' ? 'info' : 'error';
+    const notes = d.notes && d.notes.length ? `\n${d.notes.join('\n')}` : '';
+    list.push({ from, to, severity, message: `${d.message}${d.label ? ` (${d.label})` : ''}${notes}`, source: 'umbrac' });
+  }
+  view.dispatch(setDiagnostics(view.state, list));
+  $('diagnostics').textContent = bundle.diagnostics.map((d) => d.rendered).join('');
+}
+
+// ---- outputs ---------------------------------------------------------------
+
+const PANELS = [
+  { key: 'glsl330', title: 'GLSL 330', pick: (f) => f.target === 'glsl330' || f.target === 'glsl430' },
+  { key: 'gles300', title: 'GLSL ES 3.00', pick: (f) => f.target === 'gles300' || f.target === 'gles310' },
+  { key: 'wgsl', title: 'WGSL', pick: (f) => f.target === 'wgsl' },
+  { key: 'spirv', title: 'SPIR-V', pick: (f) => f.target === 'spirv' },
+  { key: 'manifest', title: 'Manifest', pick: (f) => !f.target },
+];
+
+function buildPanels() {
+  const host = $('outputs');
+  for (const p of PANELS) {
+    const sec = document.createElement('section');
+    sec.className = 'panel';
+    sec.id = `out-${p.key}`;
+    sec.innerHTML = `<header><span class="title">${p.title}</span><select></select></header><pre class="code"></pre>`;
+    host.appendChild(sec);
+    p.select = sec.querySelector('select');
+    p.pre = sec.querySelector('pre');
+    p.files = [];
+    p.select.onchange = () => showFile(p);
+  }
+}
+
+function textOf(f) {
+  if (f.text !== undefined) return f.text;
+  if (f.disassembly !== undefined) return f.disassembly;
+  if (f.words) return `; ${f.words.length} words (no disassembly in this build)`;
+  return '';
+}
+
+function showFile(p) {
+  const f = p.files[p.select.selectedIndex];
+  p.pre.textContent = f ? textOf(f) : '';
+}
+
+function showOutputs(bundle) {
+  for (const p of PANELS) {
+    const files = bundle.files.filter(p.pick);
+    // A failed compile leaves the last good outputs, dimmed.
+    p.pre.parentElement.classList.toggle('stale', !bundle.ok);
+    if (!bundle.ok) continue;
+    const chosen = p.select.value;
+    p.files = files;
+    p.select.innerHTML = '';
+    for (const f of files) p.select.add(new Option(f.name, f.name));
+    p.select.hidden = files.length < 2;
+    if (files.some((f) => f.name === chosen)) p.select.value = chosen;
+    if (files.length === 0) p.pre.textContent = '(no output for this target)';
+    else showFile(p);
+  }
+}
+
+// ---- status, examples, share links --------------------------------------
+
+function showStatus(text, kind) {
+  const s = $('status');
+  s.textContent = text;
+  s.className = kind;
+}
+
+let examples = [];
+let sharedFiles = {};
+
+async function loadExamples() {
+  try {
+    const r = await fetch('examples.json');
+    const data = await r.json();
+    examples = data.examples || [];
+    sharedFiles = data.files || {};
+  } catch (_) {
+    examples = [];
+  }
+  const sel = $('examples');
+  sel.add(new Option('(a shared program)', ''));
+  const groups = new Map();
+  for (const [i, ex] of examples.entries()) {
+    if (!groups.has(ex.group)) {
+      const g = document.createElement('optgroup');
+      g.label = ex.group;
+      groups.set(ex.group, g);
+      sel.appendChild(g);
+    }
+    groups.get(ex.group).appendChild(new Option(ex.name, String(i)));
+  }
+  sel.onchange = () => {
+    const ex = sel.value === '' ? null : examples[Number(sel.value)];
+    if (ex) openExample(ex);
+  };
+}
+
+function openExample(ex) {
+  // The example's path and the files it includes, by their paths beside it.
+  fileName = ex.path;
+  exampleFiles = ex.shared ? sharedFiles : {};
+  $('examples').value = String(examples.indexOf(ex));
+  setSource(ex.source);
+  history.replaceState(null, '', `#example=${encodeURIComponent(ex.name)}`);
+}
+
+function shareLink() {
+  const packed = LZString.compressToEncodedURIComponent(view.state.doc.toString());
+  const url = new URL(location.href);
+  url.hash = `code=${packed}&name=${encodeURIComponent(fileName)}`;
+  return url.toString();
+}
+
+function fromHash() {
+  const params = new URLSearchParams(location.hash.slice(1));
+  if (params.has('code')) {
+    const text = LZString.decompressFromEncodedURIComponent(params.get('code'));
+    if (text !== null) {
+      fileName = params.get('name') || 'playground.das';
+      exampleFiles = {};
+      $('examples').value = '';
+      return { source: text };
+    }
+    showStatus('the share link is damaged', 'error');
+  }
+  if (params.has('example')) {
+    const ex = examples.find((e) => e.name === params.get('example'));
+    if (ex) return { example: ex };
+  }
+  return null;
+}
+
+// ---- the editor ------------------------------------------------------------
+
+let timer = null;
+const state = { compiles: 0, lastMs: 0, lastBundle: null, lastVersion: -1 };
+
+const view = new EditorView({
+  parent: $('editor'),
+  state: EditorState.create({
+    doc: '',
+    extensions: [
+      basicSetup,
+      StreamLanguage.define(python),
+      lintGutter(),
+      EditorView.updateListener.of((u) => {
+        if (!u.docChanged) return;
+        docVersion += 1;
+        clearTimeout(timer);
+        timer = setTimeout(request, DEBOUNCE_MS);
+      }),
+    ],
+  }),
+});
+
+function setSource(text) {
+  view.dispatch({ changes: { from: 0, to: view.state.doc.length, insert: text } });
+}
+
+const previewPanel = $('preview');
+const preview = mountPreview(previewPanel);
+
+// What tests and the preview module read; nothing here changes the page.
+window.umbracPlayground = {
+  view,
+  state,
+  preview,
+  get lastGood() { return lastGood; },
+  setSource,
+  source: () => view.state.doc.toString(),
+  shareLink,
+  settled: () => running === null && waiting === null && state.lastVersion === docVersion,
+  // The editor's own lint marks: [{ line, severity, message }].
+  marks: () => {
+    const out = [];
+    forEachDiagnostic(view.state, (d, from) => out.push({ line: view.state.doc.lineAt(from).number, severity: d.severity, message: d.message }));
+    return out;
+  },
+};
+
+async function main() {
+  buildPanels();
+  startWorker();
+  $('conventions').onchange = request;
+  $('share').onclick = async () => {
+    const link = shareLink();
+    history.replaceState(null, '', link);
+    $('share-link').value = link;
+    try { await navigator.clipboard.writeText(link); showStatus('share link copied', 'ok'); } catch (_) { /* no clipboard: the field shows it */ }
+  };
+  await loadExamples();
+  const start = fromHash();
+  if (start && start.source !== undefined) setSource(start.source);
+  else if (start && start.example) openExample(start.example);
+  else if (examples.length) openExample(examples[0]);
+  else setSource('var @out f_color : float4\n\n[fragment_program]\ndef main_fs {\n    f_color = float4(1.0, 0.5, 0.25, 1.0)\n}\n');
+  window.addEventListener('hashchange', () => {
+    const again = fromHash();
+    if (again && again.source !== undefined && again.source !== view.state.doc.toString()) setSource(again.source);
+  });
+}
+
+main();
