@@ -16,6 +16,10 @@
 //! - each uniform: a per-frame convention its name asks for, else the
 //!   manifest's default, else a convention for the camera and light
 //!   names, else a fallback (`names::fallback`); and a control.
+//!
+//! A vertex stage that writes no `gl_Position` (transform feedback) and a
+//! fragment stage that reads `gl_PointCoord` (a point sprite) are
+//! refused: scenes draw triangle lists only.
 
 use std::collections::BTreeMap;
 
@@ -72,6 +76,14 @@ impl Scene {
                 .ok_or_else(|| InferError(format!("{} has no {stage} entry point `{name}`", r.source)))
         };
         let (vs, fs) = (entry(vertex, "vertex")?, entry(fragment, "fragment")?);
+        if !vs.builtins.iter().any(|b| b == "gl_Position") {
+            return Err(InferError(format!("`{vertex}` writes no gl_Position (a transform-feedback stage?): it places nothing to draw")));
+        }
+        if fs.builtins.iter().any(|b| b == "gl_PointCoord") {
+            return Err(InferError(format!(
+                "`{fragment}` reads gl_PointCoord, a point sprite's: the runner's scenes draw triangles only (no point lists yet)"
+            )));
+        }
         let mut scene = Scene {
             camera: OrbitCamera::default(),
             textures: Vec::new(),

@@ -121,8 +121,12 @@ pub fn mesh(kind: MeshKind, inputs: &[Input], grid: Option<&InstanceGrid>) -> Op
     if let Some(m) = CACHE.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
         return Some(m);
     }
-    let built: &'static Mesh = Box::leak(Box::new(build(geometry(kind)?, kind, inputs, grid)));
-    CACHE.lock().unwrap_or_else(|e| e.into_inner()).insert(key, built);
+    let mut cache = CACHE.lock().unwrap_or_else(|e| e.into_inner());
+    let mut mesh = build(geometry(kind)?, kind, inputs, grid);
+    // Executors may key uploads by name: one name per layout.
+    mesh.name = leak(&format!("{} #{}", kind.name(), cache.len()));
+    let built: &'static Mesh = Box::leak(Box::new(mesh));
+    cache.insert(key, built);
     Some(built)
 }
 
