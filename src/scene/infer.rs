@@ -63,7 +63,12 @@ impl Scene {
         let (vertex, fragment) = programs(r)
             .into_iter()
             .next()
-            .ok_or_else(|| InferError(format!("{} has no vertex and fragment entry points to draw (a compute program runs no scene)", r.source)))?;
+            .ok_or_else(|| {
+                InferError(format!(
+                    "{} has no vertex and fragment entry points to draw (a compute program runs no scene; a lone fragment program is drawn with `fullscreen_vertex` appended)",
+                    r.source
+                ))
+            })?;
         Scene::infer_program(r, &vertex, &fragment)
     }
 
@@ -241,8 +246,37 @@ fn infer_draw(vs: &EntryPoint) -> Draw {
         };
         attributes.insert(name.clone(), a);
     }
-    let instances = (instanced || by_id).then(|| InstanceGrid { count: [3, 3, 1], spacing: 1.6 });
+    let instances = (instanced || by_id).then_some(InstanceGrid { count: [3, 3, 1], spacing: 1.6 });
     Draw { mesh, vertices: None, attributes, instances, values: BTreeMap::new() }
+}
+
+/// The name of the vertex program [`fullscreen_vertex`] writes.
+pub const FULLSCREEN_VS: &str = "umbrac_fullscreen_vs";
+
+/// For a GL-dialect file with fragment entry points and no vertex one (a
+/// lone fragment program, as Shadertoy's), the DSL text of a vertex program
+/// to append to it: [`FULLSCREEN_VS`] places a full-screen triangle from
+/// `gl_VertexID` and writes each varying the first fragment entry point
+/// reads: a `float2` the uv in [0, 1] over the screen, a `float3` / `float4`
+/// that uv with z 0 (and w 1), a `float` 0. The file compiled with it is
+/// drawn by the inferred scene (three vertices). `None` for any other file.
+pub fn fullscreen_vertex(r: &Reflection) -> Option<String> {
+    if r.entry_points.iter().any(|e| e.stage == "vertex" || e.dialect.is_some()) {
+        return None;
+    }
+    let fs = r.entry_points.iter().find(|e| e.stage == "fragment")?;
+    let mut body = String::from("    let umbrac_p = float2(float((gl_VertexID & 1) * 4) - 1.0, float((gl_VertexID & 2) * 2) - 1.0)\n");
+    for i in &fs.inputs {
+        let value = match i.ty.as_str() {
+            "float2" => "umbrac_p * 0.5 + float2(0.5)",
+            "float3" => "float3(umbrac_p * 0.5 + float2(0.5), 0.0)",
+            "float4" => "float4(umbrac_p * 0.5 + float2(0.5), 0.0, 1.0)",
+            "float" => "0.0",
+            _ => return None,
+        };
+        body.push_str(&format!("    {} = {value}\n", i.name));
+    }
+    Some(format!("\n[vertex_program]\ndef {FULLSCREEN_VS} {{\n{body}    gl_Position = float4(umbrac_p, 0.0, 1.0)\n}}\n"))
 }
 
 /// The controls of a scene's uniforms, by name (for a page).

@@ -261,3 +261,22 @@ fn patterns_have_their_documented_texels() {
     assert_eq!(Pattern::Noise.texels(8, 8), Pattern::Noise.texels(8, 8));
     assert!(Pattern::Noise.texels(32, 32).chunks(4).any(|p| p[0] != Pattern::Noise.texels(32, 32)[0]));
 }
+
+#[test]
+fn a_lone_fragment_program_gets_a_fullscreen_vertex_program_to_append() {
+    let src = "var @inout v_uv : float2
+var @uniform u_time : float
+var @out f_color : float4
+[fragment_program]
+def fs {
+    f_color = float4(v_uv, sin(u_time), 1.0)
+}
+";
+    let r = manifest(src);
+    assert!(Scene::infer(&r).is_err());
+    let vs = infer::fullscreen_vertex(&r).unwrap();
+    let whole = manifest(&format!("{src}{vs}"));
+    let s = Scene::infer(&whole).unwrap();
+    assert_eq!((s.passes[0].vertex.as_str(), s.passes[0].draws[0].vertices), (infer::FULLSCREEN_VS, Some(3)));
+    assert_eq!(infer::fullscreen_vertex(&whole), None, "it has a vertex program now");
+}

@@ -7,7 +7,7 @@
 use std::path::{Path, PathBuf};
 
 use umbrac::render::command::any::{self, DELTA};
-use umbrac::render::consumers::{Consumer, Programs, Status};
+use umbrac::render::consumers::{Programs, Status};
 use umbrac::render::plan::scene_file::{FrameInputs, ScenePlanner};
 use umbrac::scene::{infer, Scene};
 
@@ -234,6 +234,15 @@ fn the_cli_draws_any_program() {
     assert_eq!(img.dimensions(), (64, 48));
     let distinct: std::collections::HashSet<[u8; 4]> = img.pixels().map(|p| p.0).collect();
     assert!(distinct.len() > 20, "a flat picture: {} colours", distinct.len());
+    // A lone fragment program gets a full-screen vertex program: its uv
+    // runs from 0 at the bottom left to 1 at the top right.
+    let lone = dir.path().join("lone.das");
+    std::fs::write(&lone, "var @inout v_uv : float2\nvar @out f_color : float4\n[fragment_program]\ndef fs {\n    f_color = float4(v_uv, 0.0, 1.0)\n}\n").unwrap();
+    let run = crate::support::umbrac(&["render", lone.to_str().unwrap(), "--size", "32x32", "--out", out.to_str().unwrap()], dir.path());
+    assert!(run.status.success(), "{}", String::from_utf8_lossy(&run.stderr));
+    let img = image::open(&out).unwrap().to_rgba8();
+    let (bl, tr) = (img.get_pixel(0, 31), img.get_pixel(31, 0));
+    assert!(bl[0] < 10 && bl[1] < 10 && tr[0] > 245 && tr[1] > 245, "bottom left {bl:?}, top right {tr:?}");
     let bad = crate::support::umbrac(&["render", &sdf, "--program", "nope_vs", "--out", out.to_str().unwrap()], dir.path());
     assert_eq!(bad.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&bad.stderr).contains("vs_main:fs_main"), "{}", String::from_utf8_lossy(&bad.stderr));

@@ -80,10 +80,20 @@ fn compile(opts: &RenderOptions, targets: Vec<Target>) -> Result<(String, crate:
         return Err(format!("a scene draws a .das program compiled in process, not a .{ext} file"));
     }
     let o = crate::Options { targets, daslang_root: opts.daslang_root.clone(), ..Default::default() };
-    match compile_program(opts.file.as_deref(), &o) {
-        (name, Some(c)) => Ok((name, c)),
-        (name, None) => Err(format!("{name} did not compile")),
+    let (name, compiled) = match compile_program(opts.file.as_deref(), &o) {
+        (name, Some(c)) => (name, c),
+        (name, None) => return Err(format!("{name} did not compile")),
+    };
+    // A lone fragment program: drawn with a full-screen vertex program appended.
+    let (Some(vs), Some(file)) = (scene::infer::fullscreen_vertex(&compiled.reflection), opts.file.as_deref()) else {
+        return Ok((name, compiled));
+    };
+    let text = std::fs::read_to_string(file).map_err(|e| format!("reading {}: {e}", file.display()))?;
+    let c = crate::compile_source(&name, &format!("{text}{vs}"), &o);
+    if c.has_errors() {
+        return Err(format!("{name} with a full-screen vertex program appended did not compile:\n{}", c.render_diagnostics()));
     }
+    c.result.map(|compiled| (name.clone(), compiled)).ok_or_else(|| format!("{name}: no outputs"))
 }
 
 fn inputs(p: &FrameParams, opts: &RenderOptions) -> FrameInputs {
