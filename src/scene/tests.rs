@@ -242,8 +242,11 @@ fn a_two_pass_scene_file_parses() {
 fn scene_file_errors_name_the_line_or_the_mistake() {
     let e = Scene::parse("bad.toml", "[[passes]]\nname = \"p\"\nvertex = 3\n").unwrap_err();
     assert!(e.starts_with("bad.toml:3:"), "{e}");
+    assert!(e.ends_with("vertex = 3\n  |          ^"), "a caret under the value:\n{e}");
     let e = Scene::parse("bad.toml", &TWO_PASSES.replace("texture = \"bricks\"", "texture = \"brick\"")).unwrap_err();
     assert!(e.contains("`brick`"), "{e}");
+    let line = TWO_PASSES.lines().position(|l| l.contains("u_albedo")).unwrap() + 1;
+    assert!(e.starts_with(&format!("bad.toml:{line}:")), "placed where the name is quoted:\n{e}");
     let e = Scene::parse("bad.toml", &TWO_PASSES.replace("color = \"scene\"", "color = \"depth\"")).unwrap_err();
     assert!(e.contains("depth target"), "{e}");
     let e = Scene::parse("bad.toml", &TWO_PASSES.replace("mesh = \"sphere\"", "mesh = \"teapot\"")).unwrap_err();

@@ -243,6 +243,13 @@ fn the_cli_draws_any_program() {
     let img = image::open(&out).unwrap().to_rgba8();
     let (bl, tr) = (img.get_pixel(0, 31), img.get_pixel(31, 0));
     assert!(bl[0] < 10 && bl[1] < 10 && tr[0] > 245 && tr[1] > 245, "bottom left {bl:?}, top right {tr:?}");
+    // A scene file that does not fit the program: the place in the file.
+    let scene = dir.path().join("bad.toml");
+    std::fs::write(&scene, "[[passes]]\nname = \"p\"\nvertex = \"vs_mian\"\nfragment = \"fs_main\"\ncolor = \"screen\"\ndraws = []\n").unwrap();
+    let bad = crate::support::umbrac(&["render", &sdf, "--scene", scene.to_str().unwrap(), "--out", out.to_str().unwrap()], dir.path());
+    let err = String::from_utf8_lossy(&bad.stderr);
+    assert_eq!(bad.status.code(), Some(1), "{err}");
+    assert!(err.contains("bad.toml:3:10: the program has no vertex entry point `vs_mian`") && err.contains("^"), "{err}");
     let bad = crate::support::umbrac(&["render", &sdf, "--program", "nope_vs", "--out", out.to_str().unwrap()], dir.path());
     assert_eq!(bad.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&bad.stderr).contains("vs_main:fs_main"), "{}", String::from_utf8_lossy(&bad.stderr));

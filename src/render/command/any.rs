@@ -55,8 +55,12 @@ fn is_shadow_scene(r: &crate::Reflection) -> bool {
 pub fn scene_for(opts: &RenderOptions, name: &str, r: &crate::Reflection) -> Result<ScenePlanner, String> {
     if let Some(path) = &opts.scene_file {
         let text = std::fs::read_to_string(path).map_err(|e| format!("reading {}: {e}", path.display()))?;
-        let scene = Scene::parse(&path.display().to_string(), &text)?;
-        return ScenePlanner::new(&format!("{name} with {}", path.display()), scene, r, path.parent());
+        let file = path.display().to_string();
+        let scene = Scene::parse(&file, &text)?;
+        // What does not fit the program is placed in the file too.
+        let label = format!("{name} with {file}");
+        return ScenePlanner::new(&label, scene, r, path.parent())
+            .map_err(|e| scene::locate(&file, &text, e.strip_prefix(&format!("{label}: ")).unwrap_or(&e)));
     }
     let scene = match opts.program.as_deref() {
         None => Scene::infer(r),
