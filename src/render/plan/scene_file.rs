@@ -311,6 +311,26 @@ mod tests {
     }
 
     #[test]
+    fn textures_come_from_patterns_and_image_files_relative_to_the_scene() {
+        let src = "var @in q_pos : float2\nvar @uniform @stage = 0 u_a : sampler2D\nvar @uniform @stage = 1 u_b : sampler2D\nvar @inout v_uv : float2\nvar @out f_color : float4\n[vertex_program]\ndef vs {\n    v_uv = q_pos\n    gl_Position = float4(q_pos, 0.0, 1.0)\n}\n[fragment_program]\ndef fs {\n    f_color = texture(u_a, v_uv) + texture(u_b, v_uv)\n}\n";
+        let c = crate::compile_source("t.das", src, &crate::Options::default());
+        let r = c.result.unwrap().reflection;
+        let dir = tempfile::tempdir().unwrap();
+        let img = image::RgbaImage::from_fn(3, 2, |x, y| image::Rgba([x as u8 * 80, y as u8 * 200, 7, 255]));
+        img.save(dir.path().join("tex.png")).unwrap();
+        let toml = "[[textures]]\nname = \"a\"\npattern = \"uv\"\nsize = [4, 4]\n[[textures]]\nname = \"b\"\nimage = \"tex.png\"\n[[passes]]\nname = \"p\"\nvertex = \"vs\"\nfragment = \"fs\"\ncolor = \"screen\"\nsamplers = { u_a = { texture = \"a\" }, u_b = { texture = \"b\", filter = \"nearest\" } }\n[[passes.draws]]\nmesh = \"fullscreen_triangle\"\nattributes = { q_pos = \"position\" }\n";
+        let scene = Scene::parse("s.toml", toml).unwrap();
+        let planner = ScenePlanner::new("s", scene.clone(), &r, Some(dir.path())).unwrap();
+        let plan = planner.plan(&f()).unwrap();
+        let target = |n: &str| plan.targets.iter().find(|t| t.name == n).unwrap();
+        assert_eq!(target("a").contents.as_deref(), Some(&scene::Pattern::Uv.texels(4, 4)[..]));
+        assert_eq!((target("b").width, target("b").height, target("b").contents.as_deref()), (3, 2, Some(img.as_raw().as_slice())));
+        assert!(!plan.passes[0].textures.iter().find(|t| t.sampler == "u_b").unwrap().sampling.linear);
+        let err = ScenePlanner::new("s", scene, &r, Some(Path::new("/nonexistent"))).unwrap_err();
+        assert!(err.contains("texture `b`") && err.contains("tex.png"), "{err}");
+    }
+
+    #[test]
     fn numbers_and_bools_take_the_uniforms_type() {
         let (cam, f) = (OrbitCamera::default(), f());
         assert_eq!(value("float3", &ValueSpec::Number(0.5), &cam, &f).unwrap().as_f32(), vec![0.5; 3]);
