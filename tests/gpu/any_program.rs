@@ -61,54 +61,61 @@ fn every_tutorial_program_draws_alike_on_every_consumer() {
     let mut refused = Vec::new();
     let mut report = String::new();
     let mut failures = Vec::new();
+    // Every program's scene first, then every frame drawn (WebGL2's in one browser).
+    let mut all_programs = Vec::new();
+    let mut scenes = Vec::new();
     for file in &files {
         let name = file.file_name().unwrap().to_string_lossy().to_string();
         let c = umbrac::compile_file(file, &umbrac::Options::default());
         let compiled = c.result.as_ref().filter(|_| !c.has_errors()).unwrap_or_else(|| panic!("{name}:\n{}", c.render_diagnostics()));
-        let programs = Programs::from_compiled(&name, compiled).unwrap();
+        all_programs.push(Programs::from_compiled(&name, compiled).unwrap());
         for (vs, fs) in infer::programs(&compiled.reflection) {
             let label = format!("{name} {vs}+{fs}");
-            let scene = match Scene::infer_program(&compiled.reflection, &vs, &fs) {
-                Ok(s) => s,
-                Err(e) => {
-                    refused.push((vs.clone(), e.0.clone()));
-                    continue;
+            match Scene::infer_program(&compiled.reflection, &vs, &fs) {
+                Ok(scene) => {
+                    let planner = ScenePlanner::new(&label, scene, &compiled.reflection, None).unwrap();
+                    scenes.push((name.clone(), vs, fs, all_programs.len() - 1, planner));
                 }
-            };
-            let planner = ScenePlanner::new(&label, scene, &compiled.reflection, None).unwrap();
-            let cmp = any::compare(&programs, &planner, &FrameInputs { time: TIME, frame: 0, width: w, height: h }).unwrap();
-            let mut images = 0;
-            for (c, s) in &cmp.results {
-                match s {
-                    Status::Rendered { image, .. } => {
-                        images += 1;
-                        let out = gpu::artifacts_dir("any-program").join(format!("{}_{vs}_{fs}.{}.png", name.trim_end_matches(".das"), c.name()));
-                        umbrac::render::image_ops::save_png(image, &out).unwrap();
-                    }
-                    Status::Unavailable { why, .. } => ci::skip(format!("{}: {why}", c.name())),
-                    Status::Failed(e) => failures.push(format!("{label} on {}: {e}", c.name())),
-                }
+                Err(e) => refused.push((vs.clone(), e.0.clone())),
             }
-            for (a, b, d) in &cmp.pairs {
-                report.push_str(&format!("{label}: {} vs {}: {:.4} over, max {}\n", a.name(), b.name(), d.fraction_over, d.max));
-            }
-            let worst = cmp.pairs.iter().max_by(|x, y| x.2.fraction_over.total_cmp(&y.2.fraction_over));
-            let portable = !NOT_PORTABLE.contains(&(name.as_str(), fs.as_str()));
-            if let Some((a, b, d)) = worst.filter(|(_, _, d)| portable && d.fraction_over > TUTORIAL_SHARE) {
-                failures.push(format!(
-                    "{label}: {} and {} differ at {} of {} pixels (over {DELTA}/255, max {}); allowed {:.1} %\n{}",
-                    a.name(),
-                    b.name(),
-                    d.over,
-                    d.pixels,
-                    d.max,
-                    100.0 * TUTORIAL_SHARE,
-                    any::table(&cmp.pairs)
-                ));
-            }
-            assert!(images > 0 || cmp.results.iter().all(|(_, s)| matches!(s, Status::Unavailable { .. })));
-            drawn += 1;
         }
+    }
+    let f = FrameInputs { time: TIME, frame: 0, width: w, height: h };
+    let jobs: Vec<_> = scenes.iter().map(|(_, _, _, p, planner)| (&all_programs[*p], planner, f)).collect();
+    let comparisons = any::compare_many(&jobs).unwrap();
+    for ((name, vs, fs, _, planner), cmp) in scenes.iter().zip(&comparisons) {
+        let label = &planner.label;
+        let mut images = 0;
+        for (c, s) in &cmp.results {
+            match s {
+                Status::Rendered { image, .. } => {
+                    images += 1;
+                    let out = gpu::artifacts_dir("any-program").join(format!("{}_{vs}_{fs}.{}.png", name.trim_end_matches(".das"), c.name()));
+                    umbrac::render::image_ops::save_png(image, &out).unwrap();
+                }
+                Status::Unavailable { why, .. } => ci::skip(format!("{}: {why}", c.name())),
+                Status::Failed(e) => failures.push(format!("{label} on {}: {e}", c.name())),
+            }
+        }
+        for (a, b, d) in &cmp.pairs {
+            report.push_str(&format!("{label}: {} vs {}: {:.4} over, max {}\n", a.name(), b.name(), d.fraction_over, d.max));
+        }
+        let worst = cmp.pairs.iter().max_by(|x, y| x.2.fraction_over.total_cmp(&y.2.fraction_over));
+        let portable = !NOT_PORTABLE.contains(&(name.as_str(), fs.as_str()));
+        if let Some((a, b, d)) = worst.filter(|(_, _, d)| portable && d.fraction_over > TUTORIAL_SHARE) {
+            failures.push(format!(
+                "{label}: {} and {} differ at {} of {} pixels (over {DELTA}/255, max {}); allowed {:.1} %\n{}",
+                a.name(),
+                b.name(),
+                d.over,
+                d.pixels,
+                d.max,
+                100.0 * TUTORIAL_SHARE,
+                any::table(&cmp.pairs)
+            ));
+        }
+        assert!(images > 0 || cmp.results.iter().all(|(_, s)| matches!(s, Status::Unavailable { .. })));
+        drawn += 1;
     }
     eprint!("{report}");
     assert!(failures.is_empty(), "{}", failures.join("\n"));
@@ -194,8 +201,9 @@ fn a_two_pass_scene_file_feeds_the_first_pass_to_the_second() {
     let mut first = screen.clone();
     first.output = "scene".into();
     let f = FrameInputs { time: 0.7, frame: 0, width: 40, height: 30 };
-    let a = any::compare(&programs, &ScenePlanner::new("screen", screen, &compiled.reflection, None).unwrap(), &f).unwrap();
-    let b = any::compare(&programs, &ScenePlanner::new("first pass", first, &compiled.reflection, None).unwrap(), &f).unwrap();
+    let (pa, pb) = (ScenePlanner::new("screen", screen, &compiled.reflection, None).unwrap(), ScenePlanner::new("first pass", first, &compiled.reflection, None).unwrap());
+    let mut both = any::compare_many(&[(&programs, &pa, f), (&programs, &pb, f)]).unwrap();
+    let (b, a) = (both.pop().unwrap(), both.pop().unwrap());
     for ((c, sa), (_, sb)) in a.results.iter().zip(&b.results) {
         let (Some(inverted), Some(scene)) = (sa.image(), sb.image()) else {
             ci::skip(format!("{}: {:?}", c.name(), sa));
@@ -272,8 +280,9 @@ fn the_shadow_scene_as_a_file_casts_its_shadow_on_every_consumer() {
     let mut lit = scene.clone();
     lit.passes[0].draws.clear();
     let f = FrameInputs { time: 0.0, frame: 0, width: 64, height: 48 };
-    let shadowed = any::compare(&programs, &ScenePlanner::new("shadow.toml", scene, &compiled.reflection, None).unwrap(), &f).unwrap();
-    let unshadowed = any::compare(&programs, &ScenePlanner::new("lit", lit, &compiled.reflection, None).unwrap(), &f).unwrap();
+    let (ps, pl) = (ScenePlanner::new("shadow.toml", scene, &compiled.reflection, None).unwrap(), ScenePlanner::new("lit", lit, &compiled.reflection, None).unwrap());
+    let mut both = any::compare_many(&[(&programs, &ps, f), (&programs, &pl, f)]).unwrap();
+    let (unshadowed, shadowed) = (both.pop().unwrap(), both.pop().unwrap());
     for (x, y, d) in &shadowed.pairs {
         assert!(d.fraction_over <= 0.01, "{} vs {}: {:.4}\n{}", x.name(), y.name(), d.fraction_over, any::table(&shadowed.pairs));
     }

@@ -160,26 +160,61 @@ pub struct Comparison {
 /// compiled programs (every one but the CPU reference), the same plan on
 /// each, and compares every pair.
 pub fn compare(programs: &Programs, planner: &ScenePlanner, f: &FrameInputs) -> Result<Comparison, String> {
-    let plan = planner.plan(f)?;
-    let mut results = Vec::new();
+    Ok(compare_many(&[(programs, planner, *f)])?.pop().expect("one job, one comparison"))
+}
+
+/// [`compare`] for several frames, with every WebGL2 frame drawn in one
+/// browser (its start is most of a small frame's time).
+pub fn compare_many(jobs: &[(&Programs, &ScenePlanner, FrameInputs)]) -> Result<Vec<Comparison>, String> {
+    let plans = jobs.iter().map(|(_, planner, f)| planner.plan(f)).collect::<Result<Vec<_>, String>>()?;
+    let mut results: Vec<Vec<(Consumer, Status)>> = jobs.iter().map(|_| Vec::new()).collect();
     for c in Consumer::ALL {
-        let Some(set) = programs.for_consumer(c) else { continue };
-        let started = Instant::now();
-        let status = match consumers::run(c, set, &plan) {
-            Ok((r, device)) => Status::Rendered { image: r.into_image(), device, ms: started.elapsed().as_secs_f64() * 1e3 },
-            Err(e) => e.into(),
-        };
-        results.push((c, status));
-    }
-    let mut pairs = Vec::new();
-    for (i, (a, sa)) in results.iter().enumerate() {
-        for (b, sb) in &results[i + 1..] {
-            if let (Some(ia), Some(ib)) = (sa.image(), sb.image()) {
-                pairs.push((*a, *b, image_ops::diff_masked(ia, ib, DELTA, None)));
+        if c == Consumer::WebGl2 {
+            let webgl = match crate::render::exec::webgl::WebGl::find() {
+                Ok(w) => w,
+                Err(e) => {
+                    results.iter_mut().for_each(|r| r.push((c, e.clone().into())));
+                    continue;
+                }
+            };
+            let started = Instant::now();
+            let batch: Vec<(&ShaderSet, &crate::render::plan::FramePlan)> =
+                jobs.iter().zip(&plans).map(|((p, _, _), plan)| (p.for_consumer(c).expect("WebGL2 runs GLSL ES"), plan)).collect();
+            let outs = webgl.run_batch(&batch);
+            let ms = started.elapsed().as_secs_f64() * 1e3;
+            for (r, out) in results.iter_mut().zip(outs) {
+                let status = match out {
+                    Ok(readback) => Status::Rendered { image: readback.into_image(), device: webgl.device_name(), ms: ms / jobs.len() as f64 },
+                    Err(e) => e.into(),
+                };
+                r.push((c, status));
             }
+            continue;
+        }
+        for (((programs, _, _), plan), r) in jobs.iter().zip(&plans).zip(results.iter_mut()) {
+            let Some(set) = programs.for_consumer(c) else { continue };
+            let started = Instant::now();
+            let status = match consumers::run(c, set, plan) {
+                Ok((out, device)) => Status::Rendered { image: out.into_image(), device, ms: started.elapsed().as_secs_f64() * 1e3 },
+                Err(e) => e.into(),
+            };
+            r.push((c, status));
         }
     }
-    Ok(Comparison { results, pairs })
+    Ok(results
+        .into_iter()
+        .map(|results| {
+            let mut pairs = Vec::new();
+            for (i, (a, sa)) in results.iter().enumerate() {
+                for (b, sb) in &results[i + 1..] {
+                    if let (Some(ia), Some(ib)) = (sa.image(), sb.image()) {
+                        pairs.push((*a, *b, image_ops::diff_masked(ia, ib, DELTA, None)));
+                    }
+                }
+            }
+            Comparison { results, pairs }
+        })
+        .collect())
 }
 
 fn compare_backends(opts: &RenderOptions) -> Result<(), String> {
