@@ -283,3 +283,13 @@ def fs {
     assert_eq!((s.passes[0].vertex.as_str(), s.passes[0].draws[0].vertices), (infer::FULLSCREEN_VS, Some(3)));
     assert_eq!(infer::fullscreen_vertex(&whole), None, "it has a vertex program now");
 }
+
+#[test]
+fn the_documented_example_parses() {
+    let doc = include_str!("../../docs/runner.md");
+    let start = doc.find("```toml\n").expect("docs/runner.md has a TOML scene") + "```toml\n".len();
+    let text = &doc[start..start + doc[start..].find("```").unwrap()];
+    let s = Scene::parse("runner.md", text).unwrap();
+    assert_eq!((s.passes.len(), s.textures.len(), s.targets.len()), (2, 1, 2));
+    assert_eq!(s.passes[0].draws[0].instances.as_ref().map(InstanceGrid::total), Some(9));
+}
