@@ -20,12 +20,14 @@ const VIAS: [&str; 2] = ["wgsl", "spirv"];
 
 /// Arguments of `umbrac render`.
 #[derive(Debug, Clone, clap::Args)]
-#[command(about = "Render the shadow scene from a shader program, headless, on any consumer")]
+#[command(about = "Draw a shader program headless to PNG, on any consumer: the shadow scene, a scene file, or the scene inferred for it")]
 pub struct RenderArgs {
-    /// The scene program: a .das file compiled in process (default
-    /// shaders/shadow.das), or a ready .wgsl / .spv file with the scene's
-    /// binding model (see --reflection; a .spv file always goes to the
-    /// driver unchanged, as with --via spirv).
+    /// The program: a .das file compiled in process (default
+    /// shaders/shadow.das), or a ready .wgsl / .spv file with the shadow
+    /// scene's binding model (see --reflection; a .spv file always goes to
+    /// the driver unchanged, as with --via spirv). A .das program that is
+    /// not a shadow scene's is drawn with --scene FILE, or with the scene
+    /// inferred for it (docs/runner.md, "Scene files").
     pub file: Option<PathBuf>,
     /// Output PNG for a single frame.
     #[arg(long, short, default_value = "frame.png")]
@@ -104,12 +106,18 @@ pub struct RenderArgs {
     /// print their pairwise differences and write OUT.CONSUMER.png for each.
     #[arg(long, conflicts_with_all = ["reference", "compare", "frames"])]
     pub compare_backends: bool,
-    /// A shadow technique scene instead of the tutorial's (docs/gallery.md):
-    /// spot, pcf, cascades, proj, cull, rgba8-depth. Each has its own shadow
-    /// setup, so it takes none of --quality, --filter, --fit,
+    /// A scene file (NAME.toml or NAME.json: docs/runner.md, "Scene files")
+    /// to draw FILE with, or a shadow technique scene instead of the
+    /// tutorial's (docs/gallery.md): spot, pcf, cascades, proj, cull,
+    /// rgba8-depth. A technique scene has its own program and shadow setup,
+    /// so it takes no FILE and none of --quality, --filter, --fit,
     /// --depth-format and --casters-only.
-    #[arg(long, value_name = "NAME", conflicts_with_all = ["file", "compare_backends", "reflection"])]
+    #[arg(long, value_name = "FILE|NAME")]
     pub scene: Option<String>,
+    /// Draw this program of FILE (its vertex entry point, or VS:FS) with
+    /// the scene inferred for it, instead of the first.
+    #[arg(long, value_name = "VS[:FS]", conflicts_with = "scene")]
+    pub program: Option<String>,
     /// Render, then again whenever the program or a file it includes
     /// changes, until interrupted; a failed compile or render keeps the
     /// last good picture.
@@ -164,6 +172,14 @@ impl RenderArgs {
         if let Some(c) = self.casters_only {
             setup.shadow.casters_only = c;
         }
+        // A scene file is a path that says so; anything else names a technique.
+        let (scene, scene_file) = match &self.scene {
+            Some(s) if s.ends_with(".toml") || s.ends_with(".json") => (None, Some(PathBuf::from(s))),
+            other => (other.clone(), None),
+        };
+        if scene.is_some() && (self.file.is_some() || self.compare_backends || self.reflection.is_some()) {
+            return Err("--scene NAME draws a technique scene with its own program: it takes no FILE, --compare-backends or --reflection (a scene file, --scene FILE.toml, does)".into());
+        }
         Ok(RenderOptions {
             file: self.file.clone(),
             out: self.out.clone(),
@@ -180,7 +196,9 @@ impl RenderArgs {
             compare: self.compare,
             setup,
             compare_backends: self.compare_backends,
-            scene: self.scene.clone(),
+            scene,
+            scene_file,
+            program: self.program.clone(),
             pcf_taps: self.pcf_taps,
             daslang_root: self.daslang_root.clone(),
         })
@@ -292,6 +310,10 @@ mod tests {
         let err = parse(&["--backend", "gl", "--via", "spirv"]).unwrap_err();
         assert!(err.contains("only the Vulkan backend"), "{err}");
         assert!(parse(&["--backend", "gl330", "--via", "spirv"]).is_err());
+        let a = parse(&["x.das", "--scene", "two.toml", "--compare-backends"]).unwrap();
+        assert_eq!((a.scene, a.scene_file), (None, Some(PathBuf::from("two.toml"))));
+        assert!(parse(&["x.das", "--scene", "spot"]).is_err(), "a technique scene brings its own program");
+        assert_eq!(parse(&["x.das", "--program", "post_vs:bright_fs"]).unwrap().program.as_deref(), Some("post_vs:bright_fs"));
     }
 
     #[test]

@@ -16,6 +16,10 @@
 //! - each uniform: a per-frame convention its name asks for, else the
 //!   manifest's default, else a convention for the camera and light
 //!   names, else a fallback (`names::fallback`); and a control.
+//!
+//! A vertex stage that writes no `gl_Position` (transform feedback) and a
+//! fragment stage that reads `gl_PointCoord` (a point sprite) are
+//! refused: scenes draw triangle lists only.
 
 use std::collections::BTreeMap;
 
@@ -59,7 +63,12 @@ impl Scene {
         let (vertex, fragment) = programs(r)
             .into_iter()
             .next()
-            .ok_or_else(|| InferError(format!("{} has no vertex and fragment entry points to draw (a compute program runs no scene)", r.source)))?;
+            .ok_or_else(|| {
+                InferError(format!(
+                    "{} has no vertex and fragment entry points to draw (a compute program runs no scene; a lone fragment program is drawn with `fullscreen_vertex` appended)",
+                    r.source
+                ))
+            })?;
         Scene::infer_program(r, &vertex, &fragment)
     }
 
@@ -72,6 +81,14 @@ impl Scene {
                 .ok_or_else(|| InferError(format!("{} has no {stage} entry point `{name}`", r.source)))
         };
         let (vs, fs) = (entry(vertex, "vertex")?, entry(fragment, "fragment")?);
+        if !vs.builtins.iter().any(|b| b == "gl_Position") {
+            return Err(InferError(format!("`{vertex}` writes no gl_Position (a transform-feedback stage?): it places nothing to draw")));
+        }
+        if fs.builtins.iter().any(|b| b == "gl_PointCoord") {
+            return Err(InferError(format!(
+                "`{fragment}` reads gl_PointCoord, a point sprite's: the runner's scenes draw triangles only (no point lists yet)"
+            )));
+        }
         let mut scene = Scene {
             camera: OrbitCamera::default(),
             textures: Vec::new(),
@@ -229,8 +246,37 @@ fn infer_draw(vs: &EntryPoint) -> Draw {
         };
         attributes.insert(name.clone(), a);
     }
-    let instances = (instanced || by_id).then(|| InstanceGrid { count: [3, 3, 1], spacing: 1.6 });
+    let instances = (instanced || by_id).then_some(InstanceGrid { count: [3, 3, 1], spacing: 1.6 });
     Draw { mesh, vertices: None, attributes, instances, values: BTreeMap::new() }
+}
+
+/// The name of the vertex program [`fullscreen_vertex`] writes.
+pub const FULLSCREEN_VS: &str = "umbrac_fullscreen_vs";
+
+/// For a GL-dialect file with fragment entry points and no vertex one (a
+/// lone fragment program, as Shadertoy's), the DSL text of a vertex program
+/// to append to it: [`FULLSCREEN_VS`] places a full-screen triangle from
+/// `gl_VertexID` and writes each varying the first fragment entry point
+/// reads: a `float2` the uv in [0, 1] over the screen, a `float3` / `float4`
+/// that uv with z 0 (and w 1), a `float` 0. The file compiled with it is
+/// drawn by the inferred scene (three vertices). `None` for any other file.
+pub fn fullscreen_vertex(r: &Reflection) -> Option<String> {
+    if r.entry_points.iter().any(|e| e.stage == "vertex" || e.dialect.is_some()) {
+        return None;
+    }
+    let fs = r.entry_points.iter().find(|e| e.stage == "fragment")?;
+    let mut body = String::from("    let umbrac_p = float2(float((gl_VertexID & 1) * 4) - 1.0, float((gl_VertexID & 2) * 2) - 1.0)\n");
+    for i in &fs.inputs {
+        let value = match i.ty.as_str() {
+            "float2" => "umbrac_p * 0.5 + float2(0.5)",
+            "float3" => "float3(umbrac_p * 0.5 + float2(0.5), 0.0)",
+            "float4" => "float4(umbrac_p * 0.5 + float2(0.5), 0.0, 1.0)",
+            "float" => "0.0",
+            _ => return None,
+        };
+        body.push_str(&format!("    {} = {value}\n", i.name));
+    }
+    Some(format!("\n[vertex_program]\ndef {FULLSCREEN_VS} {{\n{body}    gl_Position = float4(umbrac_p, 0.0, 1.0)\n}}\n"))
 }
 
 /// The controls of a scene's uniforms, by name (for a page).

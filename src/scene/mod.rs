@@ -492,19 +492,22 @@ pub enum ControlKind {
 impl Scene {
     /// Reads a scene file: TOML, or JSON when `name` ends in `.json`.
     /// The error names the file and, where the parser knows it, the line.
+    ///
+    /// A mistake the checks find after parsing ([`Scene::check`]) is placed
+    /// where the text first quotes the name it is about.
     pub fn parse(name: &str, text: &str) -> Result<Scene, String> {
         let scene: Scene = if name.ends_with(".json") {
-            serde_json::from_str(text).map_err(|e| format!("{name}:{}:{}: {e}", e.line(), e.column()))?
+            serde_json::from_str(text).map_err(|e| located(name, text, e.line(), e.column(), &e.to_string()))?
         } else {
             toml::from_str(text).map_err(|e| match e.span() {
                 Some(span) => {
                     let (line, col) = line_col(text, span.start);
-                    format!("{name}:{line}:{col}: {}", e.message())
+                    located(name, text, line, col, e.message())
                 }
                 None => format!("{name}: {}", e.message()),
             })?
         };
-        scene.check().map_err(|e| format!("{name}: {e}"))?;
+        scene.check().map_err(|e| locate(name, text, &e))?;
         Ok(scene)
     }
 
@@ -600,6 +603,32 @@ impl Scene {
     pub fn value<'a>(&'a self, pass: &'a Pass, draw: &'a Draw, name: &str) -> Option<&'a ValueSpec> {
         draw.values.get(name).or_else(|| pass.values.get(name)).or_else(|| self.values.get(name))
     }
+}
+
+/// A message about a scene file placed where the text first quotes the
+/// name it is about: the last one it quotes (`pass `p`: sampler `s` reads
+/// `t``) that the text has, `FILE: message` where none is found.
+pub fn locate(name: &str, text: &str, message: &str) -> String {
+    let names: Vec<&str> = message.split('`').skip(1).step_by(2).collect();
+    let quoted = names.iter().rev().find_map(|n| if n.contains('=') { text.find(n) } else { text.find(&format!("\"{n}\"")) });
+    match quoted {
+        Some(at) => {
+            let (line, col) = line_col(text, at);
+            located(name, text, line, col, message)
+        }
+        None => format!("{name}: {message}"),
+    }
+}
+
+/// `FILE:LINE:COL: message`, then the line with a caret under the column.
+fn located(name: &str, text: &str, line: usize, col: usize, message: &str) -> String {
+    let message = message.trim_end();
+    let Some(source) = text.lines().nth(line.saturating_sub(1)) else {
+        return format!("{name}:{line}:{col}: {message}");
+    };
+    let gutter = " ".repeat(line.to_string().len());
+    let pad: String = source.chars().take(col.saturating_sub(1)).map(|c| if c == '\t' { '\t' } else { ' ' }).collect();
+    format!("{name}:{line}:{col}: {message}\n{gutter} |\n{line} | {source}\n{gutter} | {pad}^")
 }
 
 /// 1-based line and column of a byte offset.

@@ -242,8 +242,11 @@ fn a_two_pass_scene_file_parses() {
 fn scene_file_errors_name_the_line_or_the_mistake() {
     let e = Scene::parse("bad.toml", "[[passes]]\nname = \"p\"\nvertex = 3\n").unwrap_err();
     assert!(e.starts_with("bad.toml:3:"), "{e}");
+    assert!(e.ends_with("vertex = 3\n  |          ^"), "a caret under the value:\n{e}");
     let e = Scene::parse("bad.toml", &TWO_PASSES.replace("texture = \"bricks\"", "texture = \"brick\"")).unwrap_err();
     assert!(e.contains("`brick`"), "{e}");
+    let line = TWO_PASSES.lines().position(|l| l.contains("u_albedo")).unwrap() + 1;
+    assert!(e.starts_with(&format!("bad.toml:{line}:")), "placed where the name is quoted:\n{e}");
     let e = Scene::parse("bad.toml", &TWO_PASSES.replace("color = \"scene\"", "color = \"depth\"")).unwrap_err();
     assert!(e.contains("depth target"), "{e}");
     let e = Scene::parse("bad.toml", &TWO_PASSES.replace("mesh = \"sphere\"", "mesh = \"teapot\"")).unwrap_err();
@@ -260,4 +263,33 @@ fn patterns_have_their_documented_texels() {
     assert_eq!(&uv[..], &[0, 0, 128, 255, 255, 0, 128, 255, 0, 255, 128, 255, 255, 255, 128, 255]);
     assert_eq!(Pattern::Noise.texels(8, 8), Pattern::Noise.texels(8, 8));
     assert!(Pattern::Noise.texels(32, 32).chunks(4).any(|p| p[0] != Pattern::Noise.texels(32, 32)[0]));
+}
+
+#[test]
+fn a_lone_fragment_program_gets_a_fullscreen_vertex_program_to_append() {
+    let src = "var @inout v_uv : float2
+var @uniform u_time : float
+var @out f_color : float4
+[fragment_program]
+def fs {
+    f_color = float4(v_uv, sin(u_time), 1.0)
+}
+";
+    let r = manifest(src);
+    assert!(Scene::infer(&r).is_err());
+    let vs = infer::fullscreen_vertex(&r).unwrap();
+    let whole = manifest(&format!("{src}{vs}"));
+    let s = Scene::infer(&whole).unwrap();
+    assert_eq!((s.passes[0].vertex.as_str(), s.passes[0].draws[0].vertices), (infer::FULLSCREEN_VS, Some(3)));
+    assert_eq!(infer::fullscreen_vertex(&whole), None, "it has a vertex program now");
+}
+
+#[test]
+fn the_documented_example_parses() {
+    let doc = include_str!("../../docs/runner.md");
+    let start = doc.find("```toml\n").expect("docs/runner.md has a TOML scene") + "```toml\n".len();
+    let text = &doc[start..start + doc[start..].find("```").unwrap()];
+    let s = Scene::parse("runner.md", text).unwrap();
+    assert_eq!((s.passes.len(), s.textures.len(), s.targets.len()), (2, 1, 2));
+    assert_eq!(s.passes[0].draws[0].instances.as_ref().map(InstanceGrid::total), Some(9));
 }

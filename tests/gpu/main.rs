@@ -12,6 +12,8 @@
 mod support;
 
 #[cfg(all(feature = "render", feature = "gl"))]
+mod any_program;
+#[cfg(all(feature = "render", feature = "gl"))]
 mod compute;
 #[cfg(feature = "gl")]
 mod consumers;

@@ -5,8 +5,11 @@
 //!
 //! Data flows one way: the options -> [`program`] (what to draw) -> an
 //! executor -> [`frames`] (what is written). `--compare-backends` is in
-//! `consumers`, the technique scenes (`--scene`) in `techniques`.
+//! `consumers`, the technique scenes (`--scene NAME`) in `techniques`, any
+//! other program (a scene file, `--scene FILE`, or the inferred scene) in
+//! [`any`].
 
+pub mod any;
 mod consumers;
 pub mod frames;
 pub mod program;
@@ -60,6 +63,10 @@ pub struct RenderOptions {
     pub pcf_taps: u32,
     /// Where a .das program's `require`d daslang modules are (`--daslang-root`).
     pub daslang_root: Option<PathBuf>,
+    /// A scene file (`--scene FILE.toml`) the program is drawn with.
+    pub scene_file: Option<PathBuf>,
+    /// The program (`VS` or `VS:FS`) drawn with its inferred scene.
+    pub program: Option<String>,
 }
 
 impl Default for RenderOptions {
@@ -83,6 +90,8 @@ impl Default for RenderOptions {
             scene: None,
             pcf_taps: 9,
             daslang_root: None,
+            scene_file: None,
+            program: None,
         }
     }
 }
@@ -109,6 +118,9 @@ pub fn run(opts: &RenderOptions, progress: &mut dyn Progress) -> Result<(), Stri
             return Err("--fit visible fits the tutorial scene's sun box; the technique scenes (--scene) make their own light boxes".into());
         }
         return techniques::run(opts);
+    }
+    if any::wants_scene(opts) {
+        return any::run(opts, progress);
     }
     let (width, height) = opts.size;
     let mut params = FrameParams::new(opts.time, width, height);
@@ -214,5 +226,6 @@ pub fn watched(opts: &RenderOptions) -> crate::watch::Watched {
         files.extend(crate::preprocess_file(&file, &options).files_read());
     }
     files.extend(opts.reflection.iter().cloned());
+    files.extend(any::scene_path(opts).map(std::path::Path::to_path_buf));
     crate::watch::Watched { files, dirs: Vec::new() }
 }

@@ -81,40 +81,109 @@ impl WebGl {
         }
     }
 
-    /// Runs the page on `data` (which holds `plan.json` and the sources)
-    /// and returns what it reported.
-    fn drive(&self, data: &Path) -> Result<Value, ExecError> {
-        let server = Server::start(self.web_dir.clone(), data.to_path_buf()).map_err(ExecError::Api)?;
-        let url = format!("http://{}/index.html", server.addr);
-        let out = data.join("result.json");
-        let mut child = Command::new(&self.node)
-            .arg(self.web_dir.join("drive.mjs"))
-            .arg(&url)
-            .arg(&out)
-            .env("UMBRAC_CHROMIUM", &self.chromium)
-            .stdin(Stdio::null())
-            .stdout(Stdio::piped())
-            .stderr(Stdio::piped())
-            .spawn()
-            .map_err(|e| ExecError::Api(format!("starting node: {e}")))?;
-        let started = Instant::now();
-        let status = loop {
-            if let Some(s) = child.try_wait().map_err(|e| ExecError::Api(e.to_string()))? {
-                break s;
+    /// Runs the page on each of `data` (each holds a `plan.json` and its
+    /// sources), one after the other in one browser, and returns what each
+    /// reported.
+    fn drive(&self, data: &[&Path]) -> Vec<Result<Value, ExecError>> {
+        let mut servers = Vec::new();
+        for d in data {
+            match Server::start(self.web_dir.clone(), d.to_path_buf()) {
+                Ok(s) => servers.push(s),
+                Err(e) => return data.iter().map(|_| Err(ExecError::Api(e.clone()))).collect(),
             }
-            if started.elapsed() > Duration::from_secs(240) {
+        }
+        let mut cmd = Command::new(&self.node);
+        cmd.arg(self.web_dir.join("drive.mjs"));
+        for (server, d) in servers.iter().zip(data) {
+            cmd.arg(format!("http://{}/index.html", server.addr)).arg(d.join("result.json"));
+        }
+        let child = cmd.env("UMBRAC_CHROMIUM", &self.chromium).stdin(Stdio::null()).stdout(Stdio::piped()).stderr(Stdio::piped()).spawn();
+        let mut child = match child {
+            Ok(c) => c,
+            Err(e) => return data.iter().map(|_| Err(ExecError::Api(format!("starting node: {e}")))).collect(),
+        };
+        let started = Instant::now();
+        let limit = Duration::from_secs(240 + 60 * data.len().saturating_sub(1) as u64);
+        let status = loop {
+            match child.try_wait() {
+                Ok(Some(s)) => break s,
+                Ok(None) => {}
+                Err(e) => return data.iter().map(|_| Err(ExecError::Api(e.to_string()))).collect(),
+            }
+            if started.elapsed() > limit {
                 let _ = child.kill();
                 let _ = child.wait();
-                return Err(ExecError::Api("chromium did not finish the frame in 240 s".into()));
+                return data.iter().map(|_| Err(ExecError::Api(format!("chromium did not finish the frames in {} s", limit.as_secs())))).collect();
             }
             std::thread::sleep(Duration::from_millis(20));
         };
         let log = child.wait_with_output().map(|o| String::from_utf8_lossy(&o.stderr).into_owned()).unwrap_or_default();
-        drop(server);
-        let text = std::fs::read_to_string(&out)
-            .map_err(|_| ExecError::Api(format!("the browser driver wrote no result (exit {status}):\n{}", tail(&log))))?;
-        serde_json::from_str(&text).map_err(|e| ExecError::Api(format!("the driver's result is not JSON: {e}")))
+        drop(servers);
+        data.iter()
+            .map(|d| {
+                let text = std::fs::read_to_string(d.join("result.json"))
+                    .map_err(|_| ExecError::Api(format!("the browser driver wrote no result (exit {status}):\n{}", tail(&log))))?;
+                serde_json::from_str(&text).map_err(|e| ExecError::Api(format!("the driver's result is not JSON: {e}")))
+            })
+            .collect()
     }
+
+    /// Runs several frames in one browser (a browser start is most of a
+    /// small frame's time): each plan with its program, as [`Executor::run`]
+    /// would, one result each.
+    pub fn run_batch(&self, jobs: &[(&ShaderSet, &FramePlan)]) -> Vec<Result<Readback, ExecError>> {
+        let written: Vec<Result<(tempfile::TempDir, Value), ExecError>> = jobs.iter().map(|(set, plan)| write_job(set, plan)).collect();
+        let dirs: Vec<&Path> = written.iter().filter_map(|w| w.as_ref().ok().map(|(d, _)| d.path())).collect();
+        let mut results = self.drive(&dirs).into_iter();
+        written
+            .iter()
+            .zip(jobs)
+            .map(|(w, (_, plan))| {
+                let (_, doc) = w.as_ref().map_err(Clone::clone)?;
+                let result = results.next().expect("one result per page")?;
+                self.readback(doc, &result, plan)
+            })
+            .collect()
+    }
+
+    /// The image (or words) a page reported for `plan`.
+    fn readback(&self, doc: &Value, result: &Value, plan: &FramePlan) -> Result<Readback, ExecError> {
+        if result["ok"] != json!(true) {
+            return Err(page_error(result));
+        }
+        *self.last_device.lock().unwrap_or_else(|p| p.into_inner()) =
+            format!("{} (chromium {})", result["renderer"].as_str().unwrap_or("?"), result["browser"].as_str().unwrap_or("?"));
+        let read = plan.target(plan.readback);
+        let (w, h) = (read.width, read.height);
+        let bytes = base64_decode(result["pixels"].as_str().unwrap_or("")).map_err(ExecError::Api)?;
+        let texel = if read.format == crate::render::plan::Format::Rgba32Uint { 16 } else { 4 };
+        if bytes.len() != (w * h) as usize * texel {
+            return Err(ExecError::Api(format!("the page sent {} bytes for a {w}x{h} target", bytes.len())));
+        }
+        // readPixels gives rows bottom first, as GL does: GL-dialect pictures are top row first.
+        let top_first = doc["top_first"] == json!(true);
+        let rows: Vec<u8> = if top_first { bytes } else { bytes.chunks_exact(w as usize * texel).rev().flatten().copied().collect() };
+        Ok(if texel == 16 {
+            Readback::Words { width: w, height: h, words: bytemuck::cast_slice(&rows).to_vec() }
+        } else {
+            Readback::Rgba8(RgbaImage::from_raw(w, h, rows).expect("sized above"))
+        })
+    }
+}
+
+/// A directory holding `plan.json` and the sources of one frame, and the plan's JSON.
+fn write_job(set: &ShaderSet, plan: &FramePlan) -> Result<(tempfile::TempDir, Value), ExecError> {
+    super::check_sizes(plan, 16384)?;
+    if plan.target(plan.readback).format.is_depth() {
+        return Err(ExecError::Unsupported("WebGL2 cannot read depth back: no --view shadow-map on webgl2".into()));
+    }
+    let (doc, files) = plan_json(set, plan)?;
+    let data = tempfile::tempdir().map_err(|e| ExecError::Api(format!("temporary directory: {e}")))?;
+    for (file, text) in &files {
+        std::fs::write(data.path().join(file), text).map_err(|e| ExecError::Api(format!("writing {file}: {e}")))?;
+    }
+    std::fs::write(data.path().join("plan.json"), doc.to_string()).map_err(|e| ExecError::Api(format!("writing plan.json: {e}")))?;
+    Ok((data, doc))
 }
 
 fn tail(log: &str) -> String {
@@ -249,37 +318,7 @@ impl Executor for WebGl {
     }
 
     fn run(&self, prepared: &WebGlProgram, plan: &FramePlan) -> Result<Readback, ExecError> {
-        super::check_sizes(plan, 16384)?;
-        let read = plan.target(plan.readback);
-        if read.format.is_depth() {
-            return Err(ExecError::Unsupported("WebGL2 cannot read depth back: no --view shadow-map on webgl2".into()));
-        }
-        let (doc, files) = plan_json(&prepared.set, plan)?;
-        let data = tempfile::tempdir().map_err(|e| ExecError::Api(format!("temporary directory: {e}")))?;
-        for (file, text) in &files {
-            std::fs::write(data.path().join(file), text).map_err(|e| ExecError::Api(format!("writing {file}: {e}")))?;
-        }
-        std::fs::write(data.path().join("plan.json"), doc.to_string()).map_err(|e| ExecError::Api(format!("writing plan.json: {e}")))?;
-        let result = self.drive(data.path())?;
-        if result["ok"] != json!(true) {
-            return Err(page_error(&result));
-        }
-        *self.last_device.lock().unwrap_or_else(|p| p.into_inner()) =
-            format!("{} (chromium {})", result["renderer"].as_str().unwrap_or("?"), result["browser"].as_str().unwrap_or("?"));
-        let (w, h) = (read.width, read.height);
-        let bytes = base64_decode(result["pixels"].as_str().unwrap_or("")).map_err(ExecError::Api)?;
-        let texel = if read.format == crate::render::plan::Format::Rgba32Uint { 16 } else { 4 };
-        if bytes.len() != (w * h) as usize * texel {
-            return Err(ExecError::Api(format!("the page sent {} bytes for a {w}x{h} target", bytes.len())));
-        }
-        // readPixels gives rows bottom first, as GL does: GL-dialect pictures are top row first.
-        let top_first = doc["top_first"] == json!(true);
-        let rows: Vec<u8> = if top_first { bytes } else { bytes.chunks_exact(w as usize * texel).rev().flatten().copied().collect() };
-        Ok(if texel == 16 {
-            Readback::Words { width: w, height: h, words: bytemuck::cast_slice(&rows).to_vec() }
-        } else {
-            Readback::Rgba8(RgbaImage::from_raw(w, h, rows).expect("sized above"))
-        })
+        self.run_batch(&[(&prepared.set, plan)]).pop().expect("one job, one result")
     }
 
     fn device_name(&self) -> String {

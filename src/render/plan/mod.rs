@@ -12,6 +12,8 @@
 
 pub mod checks;
 pub mod compute;
+pub mod meshes;
+pub mod scene_file;
 pub mod tutorial;
 pub mod vk_shadow;
 pub mod vk_tutorials;
@@ -116,6 +118,7 @@ pub enum VertexFormat {
     Float32,
     Float32x2,
     Float32x3,
+    Float32x4,
 }
 
 impl VertexFormat {
@@ -125,6 +128,7 @@ impl VertexFormat {
             VertexFormat::Float32 => "Float32",
             VertexFormat::Float32x2 => "Float32x2",
             VertexFormat::Float32x3 => "Float32x3",
+            VertexFormat::Float32x4 => "Float32x4",
         }
     }
 
@@ -133,6 +137,7 @@ impl VertexFormat {
             VertexFormat::Float32 => 1,
             VertexFormat::Float32x2 => 2,
             VertexFormat::Float32x3 => 3,
+            VertexFormat::Float32x4 => 4,
         }
     }
 }

@@ -36,6 +36,7 @@ fn vertex_format(f: VertexFormat) -> wgpu::VertexFormat {
         VertexFormat::Float32 => wgpu::VertexFormat::Float32,
         VertexFormat::Float32x2 => wgpu::VertexFormat::Float32x2,
         VertexFormat::Float32x3 => wgpu::VertexFormat::Float32x3,
+        VertexFormat::Float32x4 => wgpu::VertexFormat::Float32x4,
     }
 }
 

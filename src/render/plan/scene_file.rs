@@ -1,0 +1,341 @@
+//! A [`Scene`] (a scene file, or the one inferred for a program) as a
+//! frame plan: its textures made once ([`ScenePlanner::new`]: patterns,
+//! image files), then per frame its targets at the output's size, its
+//! passes, the built-in meshes laid out for each draw's inputs and every
+//! value resolved against the manifest's types, conventions computed from
+//! the time, the size and the orbit camera (docs/runner.md, "Scene files").
+
+use std::path::Path;
+
+use glam::{Mat3, Mat4, Vec3};
+
+use super::meshes::{self, Input};
+use super::{Attachment, Cull, Draw, Format, FramePlan, Geometry, Pass, Sampling, TargetId, TextureInput, Unset, Value, Values};
+use crate::emit::reflect_types::Reflection;
+use crate::scene::{self, Convention, MeshKind, OrbitCamera, Scene, TargetFormat, ValueSpec, SCREEN};
+
+/// A scene ready to be planned each frame for one program.
+#[derive(Clone, Debug)]
+pub struct ScenePlanner {
+    pub scene: Scene,
+    reflection: Reflection,
+    /// Each texture's size and texels, in `scene.textures`' order.
+    textures: Vec<(u32, u32, Vec<u8>)>,
+    /// Names the scene in messages.
+    pub label: String,
+}
+
+/// What a frame's conventions are computed from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct FrameInputs {
+    pub time: f32,
+    pub frame: u32,
+    pub width: u32,
+    pub height: u32,
+}
+
+impl ScenePlanner {
+    /// Makes the textures (an `image` relative to `base`, the scene file's
+    /// directory) and checks that the scene fits the program: its entry
+    /// points, its values' names and shapes, each draw's vertex inputs.
+    pub fn new(label: &str, scene: Scene, reflection: &Reflection, base: Option<&Path>) -> Result<ScenePlanner, String> {
+        scene.check().map_err(|e| format!("{label}: {e}"))?;
+        let mut textures = Vec::new();
+        for t in &scene.textures {
+            textures.push(match (&t.pattern, &t.image) {
+                (Some(p), _) => (t.size[0], t.size[1], p.texels(t.size[0], t.size[1])),
+                (None, Some(file)) => {
+                    let path = base.map_or_else(|| Path::new(file).to_path_buf(), |b| b.join(file));
+                    let img = image::open(&path).map_err(|e| format!("{label}: texture `{}`: {}: {e}", t.name, path.display()))?.to_rgba8();
+                    (img.width(), img.height(), img.into_raw())
+                }
+                (None, None) => unreachable!("checked: a texture has a pattern or an image"),
+            });
+        }
+        let planner = ScenePlanner { scene, reflection: reflection.clone(), textures, label: label.to_string() };
+        planner.plan(&FrameInputs { time: 0.0, frame: 0, width: 4, height: 4 })?;
+        Ok(planner)
+    }
+
+    /// The frame plan at `f`.
+    pub fn plan(&self, f: &FrameInputs) -> Result<FramePlan, String> {
+        let s = &self.scene;
+        let label = &self.label;
+        let mut plan = FramePlan {
+            scene: label.clone(),
+            targets: Vec::new(),
+            passes: Vec::new(),
+            readback: TargetId(0),
+            required: Vec::new(),
+            unset: Unset::Zero,
+        };
+        let mut ids: Vec<(&str, TargetId)> = vec![(SCREEN, plan.add_target(SCREEN, f.width, f.height, Format::Rgba8))];
+        for (t, (w, h, texels)) in s.textures.iter().zip(&self.textures) {
+            ids.push((&t.name, plan.add_texture(&t.name, *w, *h, texels.clone())));
+        }
+        for t in &s.targets {
+            let [w, h] = t.size.unwrap_or([f.width, f.height]);
+            let format = match t.format {
+                TargetFormat::Rgba8 => Format::Rgba8,
+                TargetFormat::Depth32float => Format::Depth32Float,
+                TargetFormat::Depth24plus => Format::Depth24Plus,
+                TargetFormat::Depth16 => Format::Depth16,
+            };
+            ids.push((&t.name, plan.add_target(&t.name, w, h, format)));
+        }
+        let id = |n: &str| ids.iter().find(|(name, _)| *name == n).map(|(_, id)| *id).expect("checked: every name is declared");
+        for p in &s.passes {
+            let vs = self.entry(&p.vertex, "vertex")?;
+            if let Some(fs) = &p.fragment {
+                self.entry(fs, "fragment")?;
+            }
+            let mut textures = Vec::new();
+            for (sampler, input) in &p.samplers {
+                let decl = self.reflection.samplers.iter().find(|d| &d.name == sampler);
+                let Some(decl) = decl else {
+                    return Err(format!("{label}: pass `{}` binds sampler `{sampler}`, which the program does not declare", p.name));
+                };
+                let linear = input.filter == scene::Filter::Linear;
+                textures.push(TextureInput { sampler: sampler.clone(), target: id(&input.texture), sampling: Sampling { compare: decl.comparison, linear, border: false } });
+            }
+            let mut draws = Vec::new();
+            for d in &p.draws {
+                let mut values = Values::new();
+                for (name, spec) in &d.values {
+                    values.set(name, self.value(name, spec, f)?);
+                }
+                draws.push(Draw { geometry: self.geometry(vs, d, &p.name)?, values });
+            }
+            let mut values = Values::new();
+            for (name, spec) in s.values.iter().filter(|(n, _)| !p.values.contains_key(*n)).chain(&p.values) {
+                values.set(name, self.value(name, spec, f)?);
+            }
+            plan.passes.push(Pass {
+                name: p.name.clone(),
+                vertex: p.vertex.clone(),
+                fragment: p.fragment.clone(),
+                color: p.color.as_deref().map(|c| Attachment { target: id(c), clear: p.clear.map(f64::from) }),
+                depth: p.depth.as_deref().map(|d| Attachment { target: id(d), clear: 1.0 }),
+                cull: match p.cull {
+                    scene::Cull::None => Cull::None,
+                    scene::Cull::Front => Cull::Front,
+                    scene::Cull::Back => Cull::Back,
+                },
+                depth_bias: p.depth_bias,
+                textures,
+                values,
+                draws,
+            });
+        }
+        plan.readback = id(&s.output);
+        plan.check().map_err(|e| format!("{label}: {e}"))?;
+        Ok(plan)
+    }
+
+    fn entry(&self, name: &str, stage: &str) -> Result<&crate::emit::reflect_types::EntryPoint, String> {
+        self.reflection
+            .entry_points
+            .iter()
+            .find(|e| e.name == name && e.stage == stage)
+            .ok_or_else(|| format!("{}: the program has no {stage} entry point `{name}`", self.label))
+    }
+
+    /// A draw's geometry: its mesh laid out for the vertex program's inputs.
+    fn geometry(&self, vs: &crate::emit::reflect_types::EntryPoint, d: &scene::Draw, pass: &str) -> Result<Geometry, String> {
+        if d.mesh == MeshKind::None {
+            return Ok(Geometry::Vertices(d.vertices.unwrap_or(3)));
+        }
+        let mut inputs = Vec::new();
+        for i in &vs.inputs {
+            let Some(attribute) = d.attributes.get(&i.name) else {
+                let have: Vec<&str> = d.attributes.keys().map(String::as_str).collect();
+                return Err(format!(
+                    "{}: pass `{pass}`: vertex input `{}` of `{}` is fed by none of the draw's attributes (it maps {})",
+                    self.label,
+                    i.name,
+                    vs.name,
+                    if have.is_empty() { "none".to_string() } else { have.join(", ") }
+                ));
+            };
+            let components = match i.ty.as_str() {
+                "float" => 1,
+                "float2" => 2,
+                "float3" => 3,
+                "float4" => 4,
+                other => return Err(format!("{}: vertex input `{}` is a {other}: the built-in meshes give floats", self.label, i.name)),
+            };
+            inputs.push(Input { name: i.name.clone(), attribute: *attribute, components });
+        }
+        Ok(Geometry::Mesh(meshes::mesh(d.mesh, &inputs, d.instances.as_ref()).expect("a mesh other than `none`")))
+    }
+
+    /// The DSL type of a uniform or uniform block member named `name`.
+    fn type_of(&self, name: &str) -> Option<&str> {
+        let r = &self.reflection;
+        r.uniforms
+            .iter()
+            .find(|u| u.name == name)
+            .map(|u| u.ty.as_str())
+            .or_else(|| r.uniform_buffers.iter().flat_map(|b| &b.members).find(|m| m.name == name).map(|m| m.ty.as_str()))
+    }
+
+    fn value(&self, name: &str, spec: &ValueSpec, f: &FrameInputs) -> Result<Value, String> {
+        let ty = self.type_of(name).ok_or_else(|| format!("{}: the scene sets `{name}`, which is no uniform of the program", self.label))?;
+        value(ty, spec, &self.scene.camera, f).map_err(|e| format!("{}: `{name}` ({ty}): {e}", self.label))
+    }
+}
+
+/// A value of DSL type `ty` from a scene's spec.
+pub fn value(ty: &str, spec: &ValueSpec, camera: &OrbitCamera, f: &FrameInputs) -> Result<Value, String> {
+    let numbers: Vec<f64> = match spec {
+        ValueSpec::Bool(b) => vec![*b as u8 as f64],
+        ValueSpec::Number(x) => {
+            let n = components(ty).ok_or_else(|| format!("a number does not fit a {ty}"))?;
+            vec![*x; n]
+        }
+        ValueSpec::Numbers(v) => v.clone(),
+        ValueSpec::Convention(c) => convention(*c, ty, camera, f)?.into_iter().map(f64::from).collect(),
+    };
+    let words: Vec<u32> = numbers
+        .iter()
+        .map(|x| {
+            if ty.starts_with("float") {
+                (*x as f32).to_bits()
+            } else if ty.starts_with("int") {
+                *x as i32 as u32
+            } else if ty.starts_with("bool") {
+                (*x != 0.0) as u32
+            } else {
+                *x as u32
+            }
+        })
+        .collect();
+    Value::from_words(ty, &words).ok_or_else(|| format!("{} numbers do not fit a {ty}", words.len()))
+}
+
+/// Components of a scalar or vector type.
+fn components(ty: &str) -> Option<usize> {
+    let rest = ["float", "uint", "int", "bool"].into_iter().find_map(|s| ty.strip_prefix(s))?;
+    match rest {
+        "" => Some(1),
+        "2" => Some(2),
+        "3" => Some(3),
+        "4" => Some(4),
+        _ => None,
+    }
+}
+
+/// The orbit camera's matrices at `time`: (view, projection).
+pub fn camera_matrices(c: &OrbitCamera, f: &FrameInputs) -> (Mat4, Mat4) {
+    let eye = Vec3::from(c.eye(f.time));
+    let view = glam::camera::rh::view::look_at_mat4(eye, Vec3::from(c.target), Vec3::Y);
+    let aspect = f.width as f32 / f.height.max(1) as f32;
+    let proj = glam::camera::rh::proj::opengl::perspective(c.fov_y.to_radians(), aspect, c.near, c.far);
+    (view, proj)
+}
+
+fn light_direction() -> Vec3 {
+    Vec3::new(0.4, 0.8, 0.45).normalize()
+}
+
+/// A convention's floats for a uniform of type `ty`.
+fn convention(c: Convention, ty: &str, camera: &OrbitCamera, f: &FrameInputs) -> Result<Vec<f32>, String> {
+    let (w, h) = (f.width as f32, f.height as f32);
+    let (view, proj) = camera_matrices(camera, f);
+    let model = Mat4::from_rotation_y(0.5 * f.time);
+    let matrix = |m: Mat4| -> Result<Vec<f32>, String> {
+        match ty {
+            "float4x4" => Ok(m.to_cols_array().to_vec()),
+            "float3x3" => Ok(Mat3::from_mat4(m).to_cols_array().to_vec()),
+            _ => Err(format!("a matrix convention needs a float4x4 or float3x3, not a {ty}")),
+        }
+    };
+    let vector = |v: &[f32]| -> Result<Vec<f32>, String> {
+        let n = components(ty).filter(|_| ty.starts_with("float") || ty.starts_with("int") || ty.starts_with("uint")).ok_or_else(|| format!("`{}` does not fit a {ty}", name(c)))?;
+        Ok((0..n).map(|i| v.get(i).copied().unwrap_or(0.0)).collect())
+    };
+    match c {
+        Convention::Time => vector(&[f.time]),
+        Convention::Frame => vector(&[f.frame as f32]),
+        Convention::Resolution => vector(&[w, h, 1.0, f.time]),
+        Convention::Aspect => vector(&[w / h.max(1.0)]),
+        Convention::Mouse => vector(&[w / 2.0, h / 2.0, 0.0, 0.0]),
+        Convention::TexelSize => vector(&[1.0 / w.max(1.0), 1.0 / h.max(1.0)]),
+        Convention::CameraPosition => vector(&[camera.eye(f.time)[0], camera.eye(f.time)[1], camera.eye(f.time)[2], 1.0]),
+        Convention::LightDirection => vector(&light_direction().extend(0.0).to_array()),
+        Convention::View => matrix(view),
+        Convention::ViewRotation => matrix(Mat4::from_mat3(Mat3::from_mat4(view))),
+        Convention::Projection => matrix(proj),
+        Convention::ViewProjection => matrix(proj * view),
+        Convention::Model => matrix(model),
+        Convention::ModelViewProjection => matrix(proj * view * model),
+        Convention::NormalMatrix => {
+            let n = Mat3::from_mat4(model).inverse().transpose();
+            matrix(Mat4::from_mat3(n))
+        }
+        Convention::LightViewProjection => {
+            let l = light_direction();
+            let lv = glam::camera::rh::view::look_at_mat4(l * 10.0, Vec3::ZERO, Vec3::Y);
+            let lp = glam::camera::rh::proj::opengl::orthographic(-4.0, 4.0, -4.0, 4.0, 0.1, 20.0);
+            matrix(lp * lv)
+        }
+    }
+}
+
+fn name(c: Convention) -> String {
+    serde_json::to_value(c).ok().and_then(|v| v.as_str().map(str::to_string)).unwrap_or_default()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn f() -> FrameInputs {
+        FrameInputs { time: 2.0, frame: 5, width: 200, height: 100 }
+    }
+
+    #[test]
+    fn conventions_fit_their_types() {
+        let cam = OrbitCamera::default();
+        let v = |ty: &str, c: Convention| value(ty, &ValueSpec::Convention(c), &cam, &f()).unwrap();
+        assert_eq!(v("float", Convention::Time), Value::float(2.0));
+        assert_eq!(v("int", Convention::Frame), Value::int(5));
+        assert_eq!(v("float2", Convention::Resolution).as_f32(), vec![200.0, 100.0]);
+        assert_eq!(v("float3", Convention::Resolution).as_f32(), vec![200.0, 100.0, 1.0]);
+        assert_eq!(v("float", Convention::Aspect), Value::float(2.0));
+        assert_eq!(v("float3x3", Convention::NormalMatrix).words.len(), 9);
+        let eye = Vec3::from(cam.eye(2.0));
+        let (view, _) = camera_matrices(&cam, &f());
+        assert!(view.transform_point3(eye).length() < 1e-4, "the view puts the eye at the origin");
+        assert!(value("float2", &ValueSpec::Convention(Convention::View), &cam, &f()).is_err());
+    }
+
+    #[test]
+    fn textures_come_from_patterns_and_image_files_relative_to_the_scene() {
+        let src = "var @in q_pos : float2\nvar @uniform @stage = 0 u_a : sampler2D\nvar @uniform @stage = 1 u_b : sampler2D\nvar @inout v_uv : float2\nvar @out f_color : float4\n[vertex_program]\ndef vs {\n    v_uv = q_pos\n    gl_Position = float4(q_pos, 0.0, 1.0)\n}\n[fragment_program]\ndef fs {\n    f_color = texture(u_a, v_uv) + texture(u_b, v_uv)\n}\n";
+        let c = crate::compile_source("t.das", src, &crate::Options::default());
+        let r = c.result.unwrap().reflection;
+        let dir = tempfile::tempdir().unwrap();
+        let img = image::RgbaImage::from_fn(3, 2, |x, y| image::Rgba([x as u8 * 80, y as u8 * 200, 7, 255]));
+        img.save(dir.path().join("tex.png")).unwrap();
+        let toml = "[[textures]]\nname = \"a\"\npattern = \"uv\"\nsize = [4, 4]\n[[textures]]\nname = \"b\"\nimage = \"tex.png\"\n[[passes]]\nname = \"p\"\nvertex = \"vs\"\nfragment = \"fs\"\ncolor = \"screen\"\nsamplers = { u_a = { texture = \"a\" }, u_b = { texture = \"b\", filter = \"nearest\" } }\n[[passes.draws]]\nmesh = \"fullscreen_triangle\"\nattributes = { q_pos = \"position\" }\n";
+        let scene = Scene::parse("s.toml", toml).unwrap();
+        let planner = ScenePlanner::new("s", scene.clone(), &r, Some(dir.path())).unwrap();
+        let plan = planner.plan(&f()).unwrap();
+        let target = |n: &str| plan.targets.iter().find(|t| t.name == n).unwrap();
+        assert_eq!(target("a").contents.as_deref(), Some(&scene::Pattern::Uv.texels(4, 4)[..]));
+        assert_eq!((target("b").width, target("b").height, target("b").contents.as_deref()), (3, 2, Some(img.as_raw().as_slice())));
+        assert!(!plan.passes[0].textures.iter().find(|t| t.sampler == "u_b").unwrap().sampling.linear);
+        let err = ScenePlanner::new("s", scene, &r, Some(Path::new("/nonexistent"))).unwrap_err();
+        assert!(err.contains("texture `b`") && err.contains("tex.png"), "{err}");
+    }
+
+    #[test]
+    fn numbers_and_bools_take_the_uniforms_type() {
+        let (cam, f) = (OrbitCamera::default(), f());
+        assert_eq!(value("float3", &ValueSpec::Number(0.5), &cam, &f).unwrap().as_f32(), vec![0.5; 3]);
+        assert_eq!(value("bool", &ValueSpec::Bool(true), &cam, &f).unwrap(), Value::bool(true));
+        assert_eq!(value("int2", &ValueSpec::Numbers(vec![-1.0, 2.0]), &cam, &f).unwrap().words, vec![(-1i32) as u32, 2]);
+        assert!(value("float3", &ValueSpec::Numbers(vec![1.0]), &cam, &f).is_err());
+    }
+}
