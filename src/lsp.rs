@@ -5,15 +5,17 @@
 //!
 //! Diagnostics are the compiler's own (one source of truth with the CLI).
 //! Edits are coalesced: a document is checked once no message is waiting,
-//! so a result is never published over a newer version. A panic while
-//! answering a request answers it with an error; the server goes on.
+//! and a result is never published while a newer version of its document
+//! waits to be read. A request cancelled (`$/cancelRequest`) before it is
+//! answered answers `RequestCanceled`. A panic while answering a request
+//! answers it with an error; the server goes on.
 
-use std::collections::{HashMap, HashSet};
+use std::collections::{HashMap, HashSet, VecDeque};
 use std::error::Error;
 use std::path::{Path, PathBuf};
 
 use crossbeam_channel::TryRecvError;
-use lsp_server::{Connection, ErrorCode, Message, Notification, Request, Response};
+use lsp_server::{Connection, ErrorCode, Message, Notification, Request, RequestId, Response};
 use lsp_types as lt;
 
 use crate::diag::Severity;
@@ -81,7 +83,16 @@ pub fn serve(connection: Connection) -> Result<()> {
     let params = connection.initialize(caps)?;
     let init: lt::InitializeParams = serde_json::from_value(params).unwrap_or_default();
     let (options, problems) = options_from(init.initialization_options.as_ref());
-    let mut server = Server { connection: &connection, ws: Workspace::new(options), dirty: HashSet::new(), reads: HashMap::new(), published: HashMap::new() };
+    let mut server = Server {
+        connection: &connection,
+        ws: Workspace::new(options),
+        dirty: HashSet::new(),
+        reads: HashMap::new(),
+        published: HashMap::new(),
+        pending: VecDeque::new(),
+        current: None,
+        cancelled: HashSet::new(),
+    };
     for p in problems {
         server.show_message(lt::MessageType::WARNING, format!("umbrac: {p}"));
     }
@@ -99,6 +110,13 @@ struct Server<'a> {
     /// diagnostics with its version, and by root, those of the programs
     /// that include or require it, at their place in it.
     published: HashMap<PathBuf, Published>,
+    /// Messages read off the connection but not yet handled (read ahead
+    /// to see cancellations and newer versions), in order.
+    pending: VecDeque<Message>,
+    /// The request being answered.
+    current: Option<RequestId>,
+    /// Requests cancelled before they were answered.
+    cancelled: HashSet<RequestId>,
 }
 
 #[derive(Default)]
@@ -111,29 +129,36 @@ struct Published {
 impl Server<'_> {
     fn main_loop(&mut self) -> Result<()> {
         loop {
-            let msg = if self.dirty.is_empty() {
-                match self.connection.receiver.recv() {
-                    Ok(m) => m,
+            let msg = match self.pending.pop_front() {
+                Some(m) => m,
+                None if self.dirty.is_empty() => match self.connection.receiver.recv() {
+                    Ok(m) => {
+                        self.take(m);
+                        continue;
+                    }
                     Err(_) => return Ok(()),
-                }
-            } else {
-                match self.connection.receiver.try_recv() {
-                    Ok(m) => m,
+                },
+                None => match self.connection.receiver.try_recv() {
+                    Ok(m) => {
+                        self.take(m);
+                        continue;
+                    }
                     Err(TryRecvError::Empty) => {
                         self.check_dirty()?;
                         continue;
                     }
                     Err(TryRecvError::Disconnected) => return Ok(()),
-                }
+                },
             };
             match msg {
+                Message::Request(req) if req.method == "shutdown" => {
+                    self.connection.sender.send(Message::Response(Response::new_ok(req.id, ())))?;
+                    return self.await_exit();
+                }
                 Message::Request(req) => {
-                    if self.connection.handle_shutdown(&req)? {
-                        return Ok(());
-                    }
-                    // Queries answer from the last analysis: bring it up to date.
-                    self.check_dirty()?;
-                    let resp = self.answer(req);
+                    self.current = Some(req.id.clone());
+                    let resp = self.answer_unless_cancelled(req)?;
+                    self.current = None;
                     self.connection.sender.send(Message::Response(resp))?;
                 }
                 Message::Notification(n) => {
@@ -146,6 +171,88 @@ impl Server<'_> {
                 Message::Response(_) => {}
             }
         }
+    }
+
+    /// After `shutdown`: waits for `exit` (or the client hanging up).
+    fn await_exit(&mut self) -> Result<()> {
+        loop {
+            let m = match self.pending.pop_front() {
+                Some(m) => m,
+                None => match self.connection.receiver.recv() {
+                    Ok(m) => m,
+                    Err(_) => return Ok(()),
+                },
+            };
+            match m {
+                Message::Notification(n) if n.method == "exit" => return Ok(()),
+                Message::Request(r) => {
+                    let resp = Response::new_err(r.id, ErrorCode::InvalidRequest as i32, "the server is shutting down".into());
+                    self.connection.sender.send(Message::Response(resp))?;
+                }
+                _ => {}
+            }
+        }
+    }
+
+    /// A message read off the connection: a cancellation is noted (when
+    /// its request is still to be answered), anything else waits its turn.
+    fn take(&mut self, m: Message) {
+        if let Message::Notification(n) = &m {
+            if n.method == <lt::notification::Cancel as lt::notification::Notification>::METHOD {
+                if let Ok(p) = serde_json::from_value::<lt::CancelParams>(n.params.clone()) {
+                    let id = match p.id {
+                        lt::NumberOrString::Number(n) => RequestId::from(n),
+                        lt::NumberOrString::String(s) => RequestId::from(s),
+                    };
+                    let waiting = self.current.as_ref() == Some(&id) || self.pending.iter().any(|m| matches!(m, Message::Request(r) if r.id == id));
+                    if waiting {
+                        self.cancelled.insert(id);
+                    }
+                }
+                return;
+            }
+        }
+        self.pending.push_back(m);
+    }
+
+    /// Reads ahead every message already sent.
+    fn read_ahead(&mut self) {
+        while let Ok(m) = self.connection.receiver.try_recv() {
+            self.take(m);
+        }
+    }
+
+    /// Answers a request from analyses brought up to date, or with
+    /// `RequestCanceled` when it was cancelled before or while they were.
+    fn answer_unless_cancelled(&mut self, req: Request) -> Result<Response> {
+        let canceled = |id: RequestId| Response::new_err(id, ErrorCode::RequestCanceled as i32, "cancelled".into());
+        self.read_ahead();
+        if self.cancelled.remove(&req.id) {
+            return Ok(canceled(req.id));
+        }
+        // Queries answer from the last analysis: bring it up to date.
+        self.check_dirty()?;
+        self.read_ahead();
+        if self.cancelled.remove(&req.id) {
+            return Ok(canceled(req.id));
+        }
+        Ok(self.answer(req))
+    }
+
+    /// The documents a message read ahead changes, opens or closes: what
+    /// is published of them now would be stale.
+    fn superseded(&self) -> HashSet<PathBuf> {
+        use lt::notification::{DidChangeTextDocument, DidCloseTextDocument, DidOpenTextDocument, Notification as _};
+        self.pending
+            .iter()
+            .filter_map(|m| match m {
+                Message::Notification(n) if [DidChangeTextDocument::METHOD, DidCloseTextDocument::METHOD, DidOpenTextDocument::METHOD].contains(&n.method.as_str()) => {
+                    let uri: lt::Uri = serde_json::from_value(n.params.get("textDocument")?.get("uri")?.clone()).ok()?;
+                    Some(crate::syntax::overlay::normalize(&path_of(&uri)?))
+                }
+                _ => None,
+            })
+            .collect()
     }
 
     /// Answers one request; a panic is an error response.
@@ -262,8 +369,10 @@ impl Server<'_> {
         }
         touched.sort();
         touched.dedup();
-        for file in touched {
-            self.republish(&file);
+        // A document whose newer text waits is published once that is checked.
+        let superseded = self.superseded();
+        for file in touched.iter().filter(|f| !superseded.contains(*f)) {
+            self.republish(file);
         }
         Ok(())
     }

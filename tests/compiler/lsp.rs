@@ -50,21 +50,46 @@ impl Client {
         c
     }
 
+    /// A client whose first messages (`queue`) all wait on the connection
+    /// before the server reads any: what it does with a backlog is then
+    /// the same on every run.
+    fn start_queued(init: Value, queue: impl FnOnce(&mut Client)) -> Client {
+        let (server, conn) = Connection::memory();
+        let mut c = Client { conn, server: None, next_id: 0 };
+        let init_id = c.send("initialize", json!({"capabilities": {}, "initializationOptions": init}));
+        c.notify("initialized", json!({}));
+        queue(&mut c);
+        c.server = Some(std::thread::spawn(move || umbrac::lsp::serve(server).expect("the server ends cleanly")));
+        assert!(c.response(&init_id).error.is_none());
+        c
+    }
+
+    /// Sends a request; its id.
+    fn send(&mut self, method: &str, params: Value) -> RequestId {
+        self.next_id += 1;
+        let id = RequestId::from(self.next_id);
+        self.conn.sender.send(Message::Request(Request::new(id.clone(), method.into(), params))).unwrap();
+        id
+    }
+
+    /// The response to `id` (what comes before it is dropped).
+    fn response(&self, id: &RequestId) -> Response {
+        loop {
+            match self.conn.receiver.recv_timeout(Duration::from_secs(60)).expect("a response") {
+                Message::Response(r) if &r.id == id => return r,
+                _ => continue,
+            }
+        }
+    }
+
     fn notify(&self, method: &str, params: Value) {
         self.conn.sender.send(Message::Notification(Notification::new(method.into(), params))).unwrap();
     }
 
     /// Sends a request and waits for its response (notifications on the way are dropped).
     fn request_raw(&mut self, method: &str, params: Value) -> Response {
-        self.next_id += 1;
-        let id = RequestId::from(self.next_id);
-        self.conn.sender.send(Message::Request(Request::new(id.clone(), method.into(), params))).unwrap();
-        loop {
-            match self.conn.receiver.recv_timeout(Duration::from_secs(60)).expect("a response") {
-                Message::Response(r) if r.id == id => return r,
-                _ => continue,
-            }
-        }
+        let id = self.send(method, params);
+        self.response(&id)
     }
 
     fn request(&mut self, method: &str, params: Value) -> Value {
@@ -359,6 +384,66 @@ fn bad_input_never_stops_the_server() {
     c.open("untitled:Untitled-1", "def", 1);
     assert!(c.request("textDocument/hover", Client::at(&uri(&root.join("never.das")), 0, 0)).is_null());
     drop(d);
+    c.finish();
+}
+
+/// `$/cancelRequest` before the answer: `RequestCanceled` (-32800); the
+/// next request is answered; a cancellation of nothing waiting is ignored.
+#[test]
+fn a_cancelled_request_answers_request_canceled() {
+    let (_d, root) = temp_with(&[("a.das", SHADER)]);
+    let u = uri(&root.join("a.das"));
+    let (line, col) = pos(SHADER, "light : float3");
+    let (mut cancelled, mut answered) = (None, None);
+    let mut c = Client::start_queued(json!({"targets": ["wgsl"]}), |c| {
+        c.open(&u, SHADER, 1);
+        let id = c.send("textDocument/hover", Client::at(&u, line, col));
+        c.notify("$/cancelRequest", json!({"id": 1}));
+        c.notify("$/cancelRequest", json!({"id": 99}));
+        c.notify("$/cancelRequest", serde_json::to_value(&id).map(|id| json!({"id": id})).unwrap());
+        cancelled = Some(id);
+        answered = Some(c.send("textDocument/hover", Client::at(&u, line, col)));
+    });
+    let r = c.response(&cancelled.unwrap());
+    assert_eq!(r.error.as_ref().map(|e| e.code), Some(-32800), "{r:?}");
+    let r = c.response(&answered.unwrap());
+    assert!(r.result.as_ref().unwrap()["contents"]["value"].as_str().unwrap().contains("light : float3"), "{r:?}");
+    // Cancelling what was answered changes nothing.
+    c.notify("$/cancelRequest", json!({"id": 3}));
+    assert!(c.request("textDocument/hover", Client::at(&u, line, col))["contents"]["value"].as_str().unwrap().contains("float3"));
+    c.finish();
+}
+
+/// A request between edits is answered from the version before it, but
+/// nothing is published for a version a newer one already waits behind.
+#[test]
+fn nothing_is_published_over_a_newer_version() {
+    let (_d, root) = temp_with(&[("a.das", SHADER)]);
+    let u = uri(&root.join("a.das"));
+    let (line, col) = pos(SHADER, "light : float3");
+    let bad = SHADER.replace("c * light", "c * lihgt");
+    let mut hover = None;
+    let c = Client::start_queued(json!({"targets": ["wgsl"]}), |c| {
+        c.open(&u, &bad, 1);
+        c.change(&u, &bad.replace("lihgt", "lgiht"), 2);
+        hover = Some(c.send("textDocument/hover", Client::at(&u, line, col)));
+        c.change(&u, SHADER, 3);
+    });
+    let hover = hover.unwrap();
+    let mut versions = Vec::new();
+    let mut answered = false;
+    while versions.last() != Some(&json!(3)) {
+        match c.conn.receiver.recv_timeout(Duration::from_secs(60)).expect("diagnostics are published") {
+            Message::Notification(n) if n.method == "textDocument/publishDiagnostics" => {
+                assert_eq!(n.params["diagnostics"], json!([]), "{}", n.params);
+                versions.push(n.params["version"].clone());
+            }
+            Message::Response(r) if r.id == hover => answered = true,
+            _ => {}
+        }
+    }
+    assert!(answered);
+    assert_eq!(versions, [json!(3)]);
     c.finish();
 }
 
