@@ -28,6 +28,8 @@ pub mod emit;
 pub mod golden;
 pub mod lower;
 pub mod output;
+#[cfg(feature = "spec")]
+pub mod project;
 pub mod rerun;
 pub mod run;
 mod sealed;

@@ -51,9 +51,16 @@ fn capabilities() -> lt::ServerCapabilities {
         })),
         completion_provider: Some(lt::CompletionOptions { trigger_characters: Some(vec![".".into(), "@".into()]), ..Default::default() }),
         position_encoding: Some(lt::PositionEncodingKind::UTF16),
+        execute_command_provider: Some(lt::ExecuteCommandOptions { commands: vec![OUTPUT_COMMAND.into()], ..Default::default() }),
         ..Default::default()
     }
 }
+
+/// `workspace/executeCommand` `umbrac.output` with arguments `[URI,
+/// TARGET]`: what the target writes for the document as it is now,
+/// `{"files": [{"name", "text"}]}` (the VS Code extension's "Show a
+/// target's output").
+pub const OUTPUT_COMMAND: &str = "umbrac.output";
 
 /// The semantic token types, indexed by `token_type`.
 const TOKEN_TYPES: [lt::SemanticTokenType; 5] =
@@ -604,6 +611,24 @@ fn dispatch(ws: &Workspace, req: Request) -> Answer {
             }
             json(serde_json::to_value(actions).map_err(bad_params)?)
         }
+        ExecuteCommand::METHOD => {
+            let p: lt::ExecuteCommandParams = serde_json::from_value(req.params).map_err(bad_params)?;
+            if p.command != OUTPUT_COMMAND {
+                return Err((ErrorCode::InvalidParams, format!("umbrac has no command `{}`", p.command)));
+            }
+            let arg = |i: usize| p.arguments.get(i).and_then(|v| v.as_str());
+            let usage = || bad_params(format!("`{OUTPUT_COMMAND}` takes [URI, TARGET]"));
+            let uri: lt::Uri = arg(0).ok_or_else(usage)?.parse().map_err(|_| usage())?;
+            let path = path_of(&uri).ok_or_else(|| bad_params(format!("`{}` is not a file", uri.as_str())))?;
+            let target = arg(1).and_then(Target::from_name).ok_or_else(usage)?;
+            match ws.output(&path, target) {
+                Ok(files) => json(serde_json::json!({ "files": files.into_iter().map(|(name, text)| serde_json::json!({"name": name, "text": text})).collect::<Vec<_>>() })),
+                Err(diags) => {
+                    let first = diags.iter().find(|d| matches!(d.severity, Severity::Error | Severity::Bug)).or(diags.first()).map_or("it does not compile".to_string(), |d| d.message.clone());
+                    Err((ErrorCode::RequestFailed, format!("no {} output: {first}", target.name())))
+                }
+            }
+        }
         other => Err((ErrorCode::MethodNotFound, format!("umbrac does not answer `{other}`"))),
     }
 }
@@ -660,8 +685,10 @@ fn to_lsp_diagnostic(d: &workspace::FileDiagnostic, text: &str, ws: &Workspace) 
 
 /// Options from `initializationOptions`:
 /// `{"targets": ["wgsl", ...], "includeDirs": [...], "daslangRoot": "...",
-/// "daslib": "...", "defines": ["NAME", "NAME=VALUE"] | {"NAME": "VALUE"}}`,
-/// and what in them was not understood.
+/// "daslib": "...", "modules": {"PREFIX": "DIR"}, "defines": ["NAME",
+/// "NAME=VALUE"] | {"NAME": "VALUE"}, "limits": {"NAME": N},
+/// "strictLimits": true}`, and what in them was not understood. They are
+/// laid over each file's project file ([`crate::project::Project::under`]).
 pub fn options_from(v: Option<&serde_json::Value>) -> (Options, Vec<String>) {
     let mut opts = Options::default();
     let mut problems = Vec::new();
@@ -679,6 +706,15 @@ pub fn options_from(v: Option<&serde_json::Value>) -> (Options, Vec<String>) {
     if let Some(m) = v.get("modules").and_then(|x| x.as_object()) {
         opts.modules = m.iter().filter_map(|(prefix, dir)| Some((prefix.clone(), PathBuf::from(dir.as_str()?)))).collect();
     }
+    if let Some(m) = v.get("limits").and_then(|x| x.as_object()) {
+        for (name, n) in m {
+            match (crate::Limit::from_name(name), n.as_u64()) {
+                (Some(l), Some(n)) => opts.limits.push((l, n)),
+                _ => problems.push(format!("initializationOptions.limits: `{name}` = {n} is not a limit and a count")),
+            }
+        }
+    }
+    opts.strict_limits = v.get("strictLimits").and_then(|x| x.as_bool()).unwrap_or(false);
     match v.get("defines") {
         Some(serde_json::Value::Object(m)) => {
             opts.defines = m.iter().map(|(k, val)| (k.clone(), val.as_str().map(String::from).or_else(|| (!val.is_null()).then(|| val.to_string())))).collect();

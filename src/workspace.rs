@@ -138,13 +138,18 @@ impl Workspace {
     /// is not `Send`): the placed diagnostics, the files read, the index.
     fn compile(&self, path: &Path) -> (Vec<FileDiagnostic>, Vec<PathBuf>, Option<Index>) {
         let texts: overlay::Texts = Arc::new(self.docs.iter().map(|(p, d)| (p.clone(), d.text.clone())).collect());
-        let opts = &self.options;
+        let (opts, project) = match self.options_for(path) {
+            Ok(o) => o,
+            Err(e) => return (vec![project_error(&e)], e.0.files().filter_map(|(_, f)| f.path.clone()).collect(), None),
+        };
+        let opts = &opts;
         let failed = |msg: &str| (place_diagnostics(&crate::panicked(msg), path), Vec::new(), None);
         let run = || {
             let job = || {
                 let (c, program) = overlay::with(texts, || crate::analyze_file(path, opts));
                 let diagnostics = place_diagnostics(&c, path);
-                let files_read = c.files_read();
+                let mut files_read = c.files_read();
+                files_read.extend(project.clone());
                 (diagnostics, files_read, program.map(|p| Index::new(&p, c)))
             };
             std::panic::catch_unwind(std::panic::AssertUnwindSafe(job)).unwrap_or_else(|payload| {
@@ -156,6 +161,69 @@ impl Workspace {
             Err(e) => failed(&format!("cannot start a compilation thread: {e}")),
         })
     }
+}
+
+impl Workspace {
+    /// What `target` writes for `path`, the open documents standing for
+    /// their files: each output's file name and text; when it does not
+    /// compile, its diagnostics as a check places them. SPIR-V is binary
+    /// and is refused.
+    pub fn output(&self, path: &Path, target: crate::Target) -> Result<Vec<(String, String)>, Vec<FileDiagnostic>> {
+        let path = overlay::normalize(path);
+        let nowhere = |msg: String| vec![FileDiagnostic { severity: Severity::Error, start: 0, end: 0, message: msg, related: Vec::new(), origin: None }];
+        if target == crate::Target::Spirv {
+            return Err(nowhere("SPIR-V is binary: choose a text target (glsl330, gles300, glsl430, gles310, wgsl)".into()));
+        }
+        let texts: overlay::Texts = Arc::new(self.docs.iter().map(|(p, d)| (p.clone(), d.text.clone())).collect());
+        let mut opts = self.options_for(&path).map_err(|e| vec![project_error(&e)])?.0;
+        opts.targets = vec![target];
+        let run = || {
+            let job = || {
+                let c = overlay::with(texts, || crate::compile_file(&path, &opts));
+                match &c.result {
+                    Some(r) if !c.has_errors() => Ok(r
+                        .artifacts
+                        .iter()
+                        .filter(|a| a.target == Some(target))
+                        .map(|a| (a.file_name.clone(), String::from_utf8_lossy(&a.contents).into_owned()))
+                        .collect()),
+                    _ => Err(place_diagnostics(&c, &path)),
+                }
+            };
+            std::panic::catch_unwind(std::panic::AssertUnwindSafe(job))
+                .unwrap_or_else(|payload| Err(nowhere(format!("the compiler panicked while compiling `{}`: {}", path.display(), crate::diag::panic_message(&*payload)))))
+        };
+        std::thread::scope(|s| match crate::spawn_compiler_thread(s, run) {
+            Ok(h) => h.join().unwrap_or_else(|_| Err(nowhere("the compilation thread failed".into()))),
+            Err(e) => Err(nowhere(format!("cannot start a compilation thread: {e}"))),
+        })
+    }
+
+    /// The workspace's options over the project file found from `path`
+    /// (`crate::project`: what the workspace's options set wins), and
+    /// which file that was.
+    #[cfg(feature = "spec")]
+    pub fn options_for(&self, path: &Path) -> Result<(Options, Option<PathBuf>), crate::project::Error> {
+        crate::project::options_for(path, self.options.clone())
+    }
+
+    /// Without the TOML reader there is no project file.
+    #[cfg(not(feature = "spec"))]
+    pub fn options_for(&self, _path: &Path) -> Result<(Options, Option<PathBuf>), Box<(SourceMap, Diagnostic)>> {
+        Ok((self.options.clone(), None))
+    }
+}
+
+/// A project file that cannot be used, at the start of the file checked.
+fn project_error(e: &(SourceMap, Diagnostic)) -> FileDiagnostic {
+    let (map, d) = e;
+    let mut fd = place(d, map, &|_| None);
+    if let Some((id, r)) = d.span.and_then(|s| map.locate(s)) {
+        let (_, line, col) = map.line_col(d.span.unwrap_or_default()).unwrap_or_default();
+        fd.origin = map.file(id).path.as_deref().map(|p| (overlay::normalize(p), r.start, r.end, fd.message.clone()));
+        fd.message = format!("{}:{line}:{col}: {}", map.file(id).name, fd.message);
+    }
+    fd
 }
 
 /// How the front end's refusal of a file without entry points begins

@@ -447,6 +447,43 @@ fn nothing_is_published_over_a_newer_version() {
     c.finish();
 }
 
+/// The server reads the project file above a document; its
+/// initializationOptions win key by key; a bad project file is a
+/// diagnostic naming its line and column.
+#[test]
+fn the_project_file_and_the_settings_over_it() {
+    let shader = "var @out f_color : float4\n\n[fragment_program]\ndef fs {\n    f_color = float4(TINT)\n}\n";
+    let (_d, root) = temp_with(&[("umbrac.toml", "targets = [\"wgsl\"]\n[defines]\nTINT = \"0.5\"\n")]);
+    std::fs::create_dir(root.join("sub")).unwrap();
+    std::fs::write(root.join("sub/a.das"), shader).unwrap();
+    let u = uri(&root.join("sub/a.das"));
+    let mut c = Client::start(Value::Null);
+    c.open(&u, shader, 1);
+    assert_eq!(c.diagnostics(&u)["diagnostics"], json!([]));
+    // The project's target is the one whose output the command shows.
+    let out = c.request("workspace/executeCommand", json!({"command": "umbrac.output", "arguments": [u, "wgsl"]}));
+    assert_eq!(out["files"][0]["name"], json!("a.wgsl"), "{out}");
+    assert!(out["files"][0]["text"].as_str().unwrap().contains("@fragment"), "{out}");
+    let glsl = c.request("workspace/executeCommand", json!({"command": "umbrac.output", "arguments": [u, "gles300"]}));
+    assert!(glsl["files"][0]["text"].as_str().unwrap().contains("#version 300 es"), "{glsl}");
+    let spirv = c.request_raw("workspace/executeCommand", json!({"command": "umbrac.output", "arguments": [u, "spirv"]}));
+    assert!(spirv.error.unwrap().message.contains("binary"));
+    // A bad project file: where it is wrong, at the top of the document.
+    std::fs::write(root.join("umbrac.toml"), "targets = [\"wgsl\"]\n[defines]\nTINT = [1]\n").unwrap();
+    c.notify("workspace/didChangeWatchedFiles", json!({"changes": [{"uri": uri(&root.join("umbrac.toml")), "type": 2}]}));
+    let d = c.diagnostics(&u);
+    let msg = d["diagnostics"][0]["message"].as_str().unwrap_or_default();
+    assert!(msg.contains("umbrac.toml:3:8:") && msg.contains("one-line string"), "{d}");
+    c.finish();
+    // The settings' define wins over the project's.
+    std::fs::write(root.join("umbrac.toml"), "[defines]\nTINT = \"0.5\"\n").unwrap();
+    let c = Client::start(json!({"defines": ["TINT=nope"]}));
+    c.open(&u, shader, 1);
+    let d = c.diagnostics(&u);
+    assert!(d["diagnostics"][0]["message"].as_str().unwrap_or_default().contains("nope"), "{d}");
+    c.finish();
+}
+
 #[test]
 fn host_code_says_nothing() {
     let host = "options gen2\n\n[export]\ndef main {\n    print(\"hello\")\n}\n";
