@@ -565,3 +565,46 @@ fn neovim_jumps_renames_across_files_and_completes_a_field() {
     assert_eq!(get("lib_after"), lib.replace("tint(", "shade_it(").trim_end(), "{seen:?}");
     assert_eq!(get("completion"), "albedo,rough", "{seen:?}");
 }
+
+/// The VS Code extension (editors/vscode/) type-checks, bundles and
+/// packages with `@vscode/vsce` (VS Code itself cannot run here); its
+/// settings are the initialization options the server reads, and the
+/// command it sends is the server's.
+#[test]
+fn the_vscode_extension_builds_and_packages() {
+    let ext = support::repo().join("editors/vscode");
+    let vsce = ext.join("node_modules/.bin/vsce");
+    if !vsce.exists() {
+        return support::skip("editors/vscode/node_modules is not installed (npm ci --prefix editors/vscode)");
+    }
+    let out_dir = tempfile::tempdir().unwrap();
+    let vsix = out_dir.path().join("umbrac.vsix");
+    // `vsce package` runs `vscode:prepublish`: tsc --noEmit, then esbuild.
+    let out = std::process::Command::new(&vsce)
+        .args(["package", "--no-dependencies", "--out"])
+        .arg(&vsix)
+        .current_dir(&ext)
+        .stdin(std::process::Stdio::null())
+        .output()
+        .expect("run vsce");
+    assert!(out.status.success(), "vsce package failed:\n{}\n{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+    let bytes = std::fs::read(&vsix).unwrap();
+    assert_eq!(&bytes[..2], b"PK", "a .vsix is a zip");
+    let has = |name: &str| bytes.windows(name.len()).any(|w| w == name.as_bytes());
+    assert!(has("extension/dist/extension.js") && has("extension/package.json"), "the package holds the bundle and its manifest");
+    let bundle = std::fs::read_to_string(ext.join("dist/extension.js")).unwrap();
+    assert!(bundle.contains(umbrac::lsp::OUTPUT_COMMAND), "the extension sends the server's output command");
+    // Every setting is an initialization option the server understands.
+    let manifest: Value = serde_json::from_str(&std::fs::read_to_string(ext.join("package.json")).unwrap()).unwrap();
+    let props = manifest["contributes"]["configuration"]["properties"].as_object().unwrap();
+    let keys: Vec<&str> = props.keys().filter_map(|k| k.strip_prefix("umbrac.")).filter(|k| *k != "path").collect();
+    assert_eq!(keys.len(), 8, "{keys:?}");
+    let example = json!({"targets": ["wgsl"], "includeDirs": ["inc"], "daslangRoot": "/d", "daslib": "/d/daslib", "modules": {"geometry": "g"}, "defines": ["A=1"], "limits": {"uniform-blocks": 16}, "strictLimits": true});
+    for k in &keys {
+        assert!(example.get(k).is_some(), "setting umbrac.{k} is no initialization option");
+        assert!(bundle.contains(&format!("\"{k}\"")), "the extension does not send {k}");
+    }
+    let (opts, problems) = umbrac::lsp::options_from(Some(&example));
+    assert!(problems.is_empty(), "{problems:?}");
+    assert!(opts.strict_limits && opts.limits.len() == 1 && opts.modules.len() == 1 && opts.daslib.is_some());
+}
