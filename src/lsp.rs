@@ -578,11 +578,27 @@ fn dispatch(ws: &Workspace, req: Request) -> Answer {
             let Some((sigs, active)) = index.signature_help(&text, offset) else { return Ok(None) };
             let signatures = sigs
                 .into_iter()
-                .map(|(label, params)| lt::SignatureInformation {
-                    label,
-                    documentation: None,
-                    parameters: Some(params.into_iter().map(|p| lt::ParameterInformation { label: lt::ParameterLabel::Simple(p), documentation: None }).collect()),
-                    active_parameter: None,
+                .map(|(label, params)| {
+                    let name = label.split('(').next().unwrap_or("");
+                    let documentation = crate::sema::builtin_docs::meaning(name).filter(|_| crate::sema::builtins::signatures(name).iter().any(|(l, _)| *l == label)).map(|m| lt::Documentation::String(m.to_string()));
+                    // Parameters by their place in the label: `floatN, floatN` names two.
+                    let mut from = label.find('(').map_or(0, |i| i + 1);
+                    let parameters = params
+                        .into_iter()
+                        .map(|p| {
+                            let at = label[from..].find(&p).map(|i| i + from);
+                            let plabel = match at {
+                                Some(s) => {
+                                    from = s + p.len();
+                                    let utf16 = |b: usize| label[..b].encode_utf16().count() as u32;
+                                    lt::ParameterLabel::LabelOffsets([utf16(s), utf16(s + p.len())])
+                                }
+                                None => lt::ParameterLabel::Simple(p),
+                            };
+                            lt::ParameterInformation { label: plabel, documentation: None }
+                        })
+                        .collect();
+                    lt::SignatureInformation { label, documentation, parameters: Some(parameters), active_parameter: None }
                 })
                 .collect();
             json(serde_json::to_value(lt::SignatureHelp { signatures, active_signature: Some(0), active_parameter: Some(active as u32) }).map_err(bad_params)?)

@@ -559,7 +559,8 @@ impl Index {
         let (span, symbol, occ) = self.at(path, offset)?;
         let mut parts = Vec::new();
         if let Some(b) = occ.and_then(|o| o.builtin.as_ref()) {
-            parts.push(format!("```das\n{b}\n```\nbuiltin"));
+            parts.push(format!("```das\n{b}\n```"));
+            parts.push(builtin_doc(b.split('(').next().unwrap_or("")));
         } else if let Some((dspan, name, detail)) = symbol.and_then(|s| self.decls.get(&s)) {
             let what = match symbol {
                 Some(Symbol::Struct(_)) => format!("struct {name}"),
@@ -737,8 +738,12 @@ impl Index {
         };
         let before = text[..open].trim_end();
         let name = &before[before.trim_end_matches(|c: char| c.is_ascii_alphanumeric() || c == '_').len()..];
-        let sigs = self.signatures.get(name)?;
-        Some((sigs.clone(), commas))
+        // A helper of the program's hides a builtin of the same name.
+        if let Some(sigs) = self.signatures.get(name) {
+            return Some((sigs.clone(), commas));
+        }
+        let builtin = crate::sema::builtins::signatures(name);
+        (!builtin.is_empty()).then_some((builtin, commas))
     }
 
     /// Inlay hints for `path`: after each local whose type is inferred
@@ -876,12 +881,29 @@ impl Index {
             };
             out.push(Completion { label: name.clone(), kind, detail: detail.clone() });
         }
-        out.extend(crate::sema::builtins::all_names().map(|n| Completion { label: n.to_string(), kind: CompletionKind::Builtin, detail: "builtin".into() }));
+        out.extend(crate::sema::builtins::all_names().map(|n| {
+            let sigs = crate::sema::builtins::signatures(n);
+            let more = if sigs.len() > 1 { format!(" (+{} more)", sigs.len() - 1) } else { String::new() };
+            let detail = sigs.first().map_or_else(|| "builtin".to_string(), |(s, _)| format!("{s}{more}"));
+            Completion { label: n.to_string(), kind: CompletionKind::Builtin, detail }
+        }));
         out.extend(type_names().into_iter().map(|n| Completion { label: n.to_string(), kind: CompletionKind::Type, detail: "type".into() }));
         out.sort_by(|a, b| (a.kind as u8, &a.label).cmp(&(b.kind as u8, &b.label)));
         out.dedup_by(|a, b| a.label == b.label);
         out
     }
+}
+
+/// What a builtin function means and its overloads, for a hover.
+fn builtin_doc(name: &str) -> String {
+    let mut doc = format!("builtin: {}", crate::sema::builtin_docs::meaning(name).unwrap_or("a builtin function"));
+    let sigs = crate::sema::builtins::signatures(name);
+    if sigs.len() > 1 {
+        doc.push_str("\n\n```das\n");
+        doc.push_str(&sigs.iter().map(|(s, _)| s.as_str()).collect::<Vec<_>>().join("\n"));
+        doc.push_str("\n```");
+    }
+    doc
 }
 
 /// The objects of a manifest whose `name` is `name`, as compact JSON.

@@ -237,6 +237,7 @@ fn hover_definition_references_and_symbols() {
     let (bl, bc) = pos(SHADER, "length(");
     let b = c.request("textDocument/hover", Client::at(&u, bl, bc + 1));
     assert!(b["contents"]["value"].as_str().unwrap().contains("length(float3) : float"), "{b}");
+    assert!(b["contents"]["value"].as_str().unwrap().contains("builtin: the length of a vector"), "{b}");
     let def = c.request("textDocument/definition", Client::at(&u, line, col));
     let (dl, dc) = pos(SHADER, "light :");
     assert_eq!(def["range"]["start"], json!({"line": dl, "character": dc}), "{def}");
@@ -335,6 +336,37 @@ fn completion_in_scope_and_after_a_dot() {
     let comps = c.request("textDocument/completion", Client::at(&u, line, col + 6));
     let labels: Vec<&str> = comps.as_array().unwrap().iter().map(|i| i["label"].as_str().unwrap()).collect();
     assert_eq!(labels, ["x", "y", "z", "r", "g", "b"], "{comps}");
+    c.finish();
+}
+
+/// A builtin's overloads and meaning in signature help (the parameter at
+/// the cursor by its place in the label) and in completion.
+#[test]
+fn builtins_in_signature_help_and_completion() {
+    let (_d, root) = temp_with(&[("a.das", SHADER)]);
+    let u = uri(&root.join("a.das"));
+    let mut c = Client::start(Value::Null);
+    c.open(&u, SHADER, 1);
+    c.diagnostics(&u);
+    let typed = SHADER.replace("let k = length(light)", "let k = mix(light, light, ");
+    c.change(&u, &typed, 2);
+    let (line, col) = pos(&typed, "mix(");
+    let help = c.request("textDocument/signatureHelp", Client::at(&u, line, col + 26));
+    let sigs = help["signatures"].as_array().unwrap();
+    assert_eq!(sigs.len(), 2, "{help}");
+    assert_eq!(sigs[0]["label"], json!("mix(floatN, floatN, floatN) : floatN"), "{help}");
+    assert!(sigs[0]["documentation"].as_str().unwrap().contains("linear blend"), "{help}");
+    assert_eq!(help["activeParameter"], json!(2), "{help}");
+    // The third `floatN`, not the first.
+    assert_eq!(sigs[0]["parameters"][2]["label"], json!([20, 26]), "{help}");
+    let tex = SHADER.replace("let k = length(light)", "let k = textureLod(");
+    c.change(&u, &tex, 3);
+    let (line, col) = pos(&tex, "textureLod(");
+    let help = c.request("textDocument/signatureHelp", Client::at(&u, line, col + 11));
+    assert!(help["signatures"][0]["label"].as_str().unwrap().starts_with("textureLod(s : sampler, uv : floatN, lod : float)"), "{help}");
+    let all = c.request("textDocument/completion", Client::at(&u, line, col));
+    let smooth = all.as_array().unwrap().iter().find(|i| i["label"] == "smoothstep").unwrap();
+    assert!(smooth["detail"].as_str().unwrap().starts_with("smoothstep(floatN, floatN, floatN) : floatN (+1 more)"), "{smooth}");
     c.finish();
 }
 
