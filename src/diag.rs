@@ -35,6 +35,16 @@ pub struct Diagnostic {
     pub secondary: Vec<(Span, String)>,
     /// Trailing `= note:` / `= help:` lines.
     pub notes: Vec<String>,
+    /// What kind of diagnostic it is, for a tool that acts on a kind
+    /// rather than on wording (one of [`codes`]); most have none.
+    pub code: Option<&'static str>,
+}
+
+/// The kinds of diagnostic a tool may act on ([`Diagnostic::code`]).
+pub mod codes {
+    /// A file without entry points: no program (the CLI refuses it as an
+    /// input; an editor says nothing of host code, includes and modules).
+    pub const NO_ENTRY_POINTS: &str = "no-entry-points";
 }
 
 impl Diagnostic {
@@ -46,6 +56,7 @@ impl Diagnostic {
             label: String::new(),
             secondary: Vec::new(),
             notes: Vec::new(),
+            code: None,
         }
     }
 
@@ -77,6 +88,11 @@ impl Diagnostic {
 
     pub fn with_secondary(mut self, span: Span, label: impl Into<String>) -> Self {
         self.secondary.push((span, label.into()));
+        self
+    }
+
+    pub fn with_code(mut self, code: &'static str) -> Self {
+        self.code = Some(code);
         self
     }
 
