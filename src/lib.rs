@@ -224,6 +224,13 @@ pub fn spawn_compiler_thread<'scope, T: Send + 'scope>(
     })
 }
 
+/// Whether a compilation may run on the calling thread (the rule of
+/// [`on_compiler_stack`]): a thread kept between compilations keeps the
+/// validator and SPIR-V writer each thread holds (`crate::workspace`).
+pub(crate) fn stack_suffices() -> bool {
+    RUNS_ON_CALLERS_STACK || HAS_COMPILER_STACK.get()
+}
+
 /// Runs `job` where its stack is sure to suffice: on the calling thread
 /// when [`RUNS_ON_CALLERS_STACK`] or the thread is one of umbrac's,
 /// otherwise on a new [`COMPILER_STACK_SIZE`] thread (or the current one if

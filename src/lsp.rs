@@ -27,7 +27,12 @@ type Result<T> = std::result::Result<T, Box<dyn Error + Send + Sync>>;
 /// Serves over stdin/stdout until the client says `exit`.
 pub fn run_stdio() -> Result<()> {
     let (connection, io) = Connection::stdio();
-    serve(connection)?;
+    // On a compiler thread, checks run on it directly, keeping what the
+    // thread holds between compilations (the validator, the SPIR-V writer).
+    std::thread::scope(|s| match crate::spawn_compiler_thread(s, || serve(connection).map_err(|e| e.to_string())) {
+        Ok(h) => h.join().unwrap_or_else(|_| Err("the server's thread panicked".into())),
+        Err(e) => Err(format!("cannot start the server's thread: {e}")),
+    })?;
     io.join()?;
     Ok(())
 }

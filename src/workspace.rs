@@ -134,8 +134,11 @@ impl Workspace {
         self.analyses.remove(&overlay::normalize(path));
     }
 
-    /// Compiles on a compiler thread (the checked program stays there: it
-    /// is not `Send`): the placed diagnostics, the files read, the index.
+    /// Compiles where the stack suffices (this thread when it may, as
+    /// `compile_source` does, keeping the thread's validator and SPIR-V
+    /// writer; otherwise a compiler thread, where the checked program,
+    /// which is not `Send`, stays): the placed diagnostics, the files
+    /// read, the index.
     fn compile(&self, path: &Path) -> (Vec<FileDiagnostic>, Vec<PathBuf>, Option<Index>) {
         let texts: overlay::Texts = Arc::new(self.docs.iter().map(|(p, d)| (p.clone(), d.text.clone())).collect());
         let (opts, project) = match self.options_for(path) {
@@ -156,6 +159,9 @@ impl Workspace {
                 failed(&format!("the compiler panicked while compiling `{}`: {}", path.display(), crate::diag::panic_message(&*payload)))
             })
         };
+        if crate::stack_suffices() {
+            return run();
+        }
         std::thread::scope(|s| match crate::spawn_compiler_thread(s, run) {
             Ok(h) => h.join().unwrap_or_else(|_| failed("the compilation thread failed")),
             Err(e) => failed(&format!("cannot start a compilation thread: {e}")),
@@ -193,6 +199,9 @@ impl Workspace {
             std::panic::catch_unwind(std::panic::AssertUnwindSafe(job))
                 .unwrap_or_else(|payload| Err(nowhere(format!("the compiler panicked while compiling `{}`: {}", path.display(), crate::diag::panic_message(&*payload)))))
         };
+        if crate::stack_suffices() {
+            return run();
+        }
         std::thread::scope(|s| match crate::spawn_compiler_thread(s, run) {
             Ok(h) => h.join().unwrap_or_else(|_| Err(nowhere("the compilation thread failed".into()))),
             Err(e) => Err(nowhere(format!("cannot start a compilation thread: {e}"))),
@@ -348,8 +357,10 @@ pub struct Index {
     functions: Vec<(Span, usize)>,
     /// Field names of each struct.
     fields: Vec<Vec<(String, String)>>,
-    /// The reflection manifest, when the compilation emitted one.
-    manifest: Option<serde_json::Value>,
+    /// The reflection manifest's text, when the compilation emitted one,
+    /// parsed on the first hover that needs it (not on every edit).
+    manifest: Option<String>,
+    manifest_parsed: std::sync::OnceLock<Option<serde_json::Value>>,
     /// The text outputs: entry point (`None`: the whole module), target, code.
     emitted: Vec<(Option<String>, crate::Target, String)>,
     /// Helper functions by name (overloads): label and parameter labels.
@@ -500,18 +511,14 @@ impl Index {
         }
         let mut occurrences = w.occurrences;
         occurrences.sort_by_key(|o| (o.span.start, std::cmp::Reverse(o.span.end)));
-        let manifest = compilation
-            .result
-            .as_ref()
-            .and_then(|r| r.artifacts.iter().find(|a| a.target.is_none()))
-            .and_then(|a| serde_json::from_slice(&a.contents).ok());
+        let manifest = compilation.result.as_ref().and_then(|r| r.artifacts.iter().find(|a| a.target.is_none())).and_then(|a| String::from_utf8(a.contents.clone()).ok());
         let emitted = compilation
             .result
-            .iter()
-            .flat_map(|r| &r.artifacts)
-            .filter_map(|a| Some((a.entry.clone(), a.target.filter(|t| *t != crate::Target::Spirv)?, String::from_utf8(a.contents.clone()).ok()?)))
+            .into_iter()
+            .flat_map(|r| r.artifacts)
+            .filter_map(|a| Some((a.entry, a.target.filter(|t| *t != crate::Target::Spirv)?, String::from_utf8(a.contents).ok()?)))
             .collect();
-        Index { sources, occurrences, decls, shapes, functions, fields, manifest, emitted, signatures }
+        Index { sources, occurrences, decls, shapes, functions, fields, manifest, manifest_parsed: Default::default(), emitted, signatures }
     }
 
     /// The id and text of a file this analysis read.
@@ -577,7 +584,9 @@ impl Index {
                     }
                 }
             }
-            if let (Some(Symbol::Global(_)), Some(m)) = (symbol, &self.manifest) {
+            let global = matches!(symbol, Some(Symbol::Global(_)));
+            let manifest = || self.manifest_parsed.get_or_init(|| self.manifest.as_deref().and_then(|m| serde_json::from_str(m).ok())).as_ref();
+            if let Some(m) = global.then(manifest).flatten() {
                 let mut found = Vec::new();
                 manifest_entries(m, name, &mut found);
                 if !found.is_empty() {
@@ -876,17 +885,31 @@ impl Index {
             };
             out.push(Completion { label: name.clone(), kind, detail: detail.clone() });
         }
-        out.extend(crate::sema::builtins::all_names().map(|n| {
-            let sigs = crate::sema::builtins::signatures(n);
-            let more = if sigs.len() > 1 { format!(" (+{} more)", sigs.len() - 1) } else { String::new() };
-            let detail = sigs.first().map_or_else(|| "builtin".to_string(), |(s, _)| format!("{s}{more}"));
-            Completion { label: n.to_string(), kind: CompletionKind::Builtin, detail }
-        }));
-        out.extend(type_names().into_iter().map(|n| Completion { label: n.to_string(), kind: CompletionKind::Type, detail: "type".into() }));
         out.sort_by(|a, b| (a.kind as u8, &a.label).cmp(&(b.kind as u8, &b.label)));
+        // Builtins sort after every declared kind: appended, in order.
+        out.extend(builtin_completions().iter().cloned());
         out.dedup_by(|a, b| a.label == b.label);
         out
     }
+}
+
+/// The builtin functions (each with its first signature) and types, in
+/// completion order: the same in every completion, so made once.
+fn builtin_completions() -> &'static [Completion] {
+    static ALL: std::sync::OnceLock<Vec<Completion>> = std::sync::OnceLock::new();
+    ALL.get_or_init(|| {
+        let mut out: Vec<Completion> = crate::sema::builtins::all_names()
+            .map(|n| {
+                let sigs = crate::sema::builtins::signatures(n);
+                let more = if sigs.len() > 1 { format!(" (+{} more)", sigs.len() - 1) } else { String::new() };
+                let detail = sigs.first().map_or_else(|| "builtin".to_string(), |(s, _)| format!("{s}{more}"));
+                Completion { label: n.to_string(), kind: CompletionKind::Builtin, detail }
+            })
+            .collect();
+        out.extend(type_names().into_iter().map(|n| Completion { label: n.to_string(), kind: CompletionKind::Type, detail: "type".into() }));
+        out.sort_by(|a, b| (a.kind as u8, &a.label).cmp(&(b.kind as u8, &b.label)));
+        out
+    })
 }
 
 /// What a builtin function means and its overloads, for a hover.
