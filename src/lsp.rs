@@ -503,27 +503,14 @@ fn dispatch(ws: &Workspace, req: Request) -> Answer {
             let Some(path) = path_of(&tdp.text_document.uri) else { return Ok(None) };
             let (Some(index), Some(text)) = (ws.index(&path), ws.text(&path)) else { return Ok(None) };
             let offset = workspace::position_to_offset(&text, tdp.position.line, tdp.position.character);
-            let items: Vec<lt::CompletionItem> = index
-                .completions(&path, &text, offset)
-                .into_iter()
-                .map(|c| lt::CompletionItem {
-                    label: c.label,
-                    detail: Some(c.detail),
-                    kind: Some(match c.kind {
-                        workspace::CompletionKind::Local => lt::CompletionItemKind::VARIABLE,
-                        workspace::CompletionKind::Global => lt::CompletionItemKind::VARIABLE,
-                        workspace::CompletionKind::Constant => lt::CompletionItemKind::CONSTANT,
-                        workspace::CompletionKind::Function => lt::CompletionItemKind::FUNCTION,
-                        workspace::CompletionKind::Struct => lt::CompletionItemKind::STRUCT,
-                        workspace::CompletionKind::Field => lt::CompletionItemKind::FIELD,
-                        workspace::CompletionKind::Builtin => lt::CompletionItemKind::FUNCTION,
-                        workspace::CompletionKind::Annotation => lt::CompletionItemKind::KEYWORD,
-                        workspace::CompletionKind::Type => lt::CompletionItemKind::TYPE_PARAMETER,
-                    }),
-                    ..Default::default()
-                })
-                .collect();
-            json(serde_json::to_value(lt::CompletionResponse::Array(items)).map_err(bad_params)?)
+            let (here, builtins) = index.completions_here(&path, &text, offset);
+            let mut items: Vec<serde_json::Value> = here.iter().map(completion_item).collect();
+            if builtins {
+                // The builtins, the same in every answer, as JSON once.
+                static BUILTINS: std::sync::OnceLock<Vec<serde_json::Value>> = std::sync::OnceLock::new();
+                items.extend(BUILTINS.get_or_init(|| workspace::builtin_completions().iter().map(completion_item).collect()).iter().cloned());
+            }
+            json(serde_json::Value::Array(items))
         }
         InlayHintRequest::METHOD => {
             let p: lt::InlayHintParams = serde_json::from_value(req.params).map_err(bad_params)?;
@@ -652,6 +639,20 @@ fn dispatch(ws: &Workspace, req: Request) -> Answer {
         }
         other => Err((ErrorCode::MethodNotFound, format!("umbrac does not answer `{other}`"))),
     }
+}
+
+/// A completion as the protocol's `CompletionItem`, in JSON.
+fn completion_item(c: &workspace::Completion) -> serde_json::Value {
+    let kind = match c.kind {
+        workspace::CompletionKind::Local | workspace::CompletionKind::Global => lt::CompletionItemKind::VARIABLE,
+        workspace::CompletionKind::Constant => lt::CompletionItemKind::CONSTANT,
+        workspace::CompletionKind::Function | workspace::CompletionKind::Builtin => lt::CompletionItemKind::FUNCTION,
+        workspace::CompletionKind::Struct => lt::CompletionItemKind::STRUCT,
+        workspace::CompletionKind::Field => lt::CompletionItemKind::FIELD,
+        workspace::CompletionKind::Annotation => lt::CompletionItemKind::KEYWORD,
+        workspace::CompletionKind::Type => lt::CompletionItemKind::TYPE_PARAMETER,
+    };
+    serde_json::json!({ "label": c.label, "kind": kind, "detail": c.detail })
 }
 
 /// The name a diagnostic's "help: did you mean `NAME`?" suggests.

@@ -838,6 +838,18 @@ impl Index {
     /// the analysis may be older): after `name.`, its fields or swizzle
     /// components; otherwise the names in scope and the builtins.
     pub fn completions(&self, path: &Path, text: &str, offset: usize) -> Vec<Completion> {
+        let (mut out, builtins) = self.completions_here(path, text, offset);
+        if builtins {
+            out.extend(builtin_completions().iter().cloned());
+            out.dedup_by(|a, b| a.label == b.label);
+        }
+        out
+    }
+
+    /// [`Index::completions`] without the builtins, which are the same
+    /// everywhere ([`builtin_completions`]): what this place adds, and
+    /// whether the builtins follow it.
+    pub fn completions_here(&self, path: &Path, text: &str, offset: usize) -> (Vec<Completion>, bool) {
         let mut offset = offset.min(text.len());
         while !text.is_char_boundary(offset) {
             offset -= 1;
@@ -848,7 +860,7 @@ impl Index {
         let at = self.global_offset(path, start).unwrap_or(u32::MAX);
         let func = self.functions.iter().filter(|(s, _)| s.start <= at && at <= s.end).min_by_key(|(s, _)| s.end - s.start).map(|(_, k)| *k);
         if before[..start].ends_with('@') {
-            return ANNOTATIONS.iter().map(|a| Completion { label: a.to_string(), kind: CompletionKind::Annotation, detail: "annotation".into() }).collect();
+            return (ANNOTATIONS.iter().map(|a| Completion { label: a.to_string(), kind: CompletionKind::Annotation, detail: "annotation".into() }).collect(), false);
         }
         if let Some(dotted) = before[..start].strip_suffix('.') {
             let name = &dotted[dotted.trim_end_matches(word).len()..];
@@ -863,7 +875,7 @@ impl Index {
                 .filter(|(sym, (_, n, _))| n == name && visible(sym))
                 .min_by_key(|(sym, _)| !matches!(sym, Symbol::Local(..)))
                 .and_then(|(sym, _)| self.shapes.get(sym));
-            return match shape {
+            let fields = match shape {
                 Some(Shape::Struct(s)) => self.fields[*s].iter().map(|(n, t)| Completion { label: n.clone(), kind: CompletionKind::Field, detail: t.clone() }).collect(),
                 Some(Shape::Vector(n)) => ["xyzw", "rgba"]
                     .iter()
@@ -872,6 +884,7 @@ impl Index {
                     .collect(),
                 None => Vec::new(),
             };
+            return (fields, false);
         }
         let mut out: Vec<Completion> = Vec::new();
         for (sym, (_, name, detail)) in &self.decls {
@@ -885,17 +898,16 @@ impl Index {
             };
             out.push(Completion { label: name.clone(), kind, detail: detail.clone() });
         }
-        out.sort_by(|a, b| (a.kind as u8, &a.label).cmp(&(b.kind as u8, &b.label)));
         // Builtins sort after every declared kind: appended, in order.
-        out.extend(builtin_completions().iter().cloned());
+        out.sort_by(|a, b| (a.kind as u8, &a.label).cmp(&(b.kind as u8, &b.label)));
         out.dedup_by(|a, b| a.label == b.label);
-        out
+        (out, true)
     }
 }
 
 /// The builtin functions (each with its first signature) and types, in
 /// completion order: the same in every completion, so made once.
-fn builtin_completions() -> &'static [Completion] {
+pub fn builtin_completions() -> &'static [Completion] {
     static ALL: std::sync::OnceLock<Vec<Completion>> = std::sync::OnceLock::new();
     ALL.get_or_init(|| {
         let mut out: Vec<Completion> = crate::sema::builtins::all_names()
