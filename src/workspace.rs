@@ -337,7 +337,7 @@ pub struct DocumentSymbol {
 #[derive(Clone, Debug)]
 struct Occurrence {
     span: Span,
-    ty: String,
+    ty: Arc<str>,
     symbol: Option<Symbol>,
     /// A builtin call's name and signature.
     builtin: Option<String>,
@@ -487,7 +487,7 @@ impl Index {
             }
         }
         let nf = p.functions.len();
-        let mut w = Walker { occurrences: Vec::new(), show: &show, func: 0 };
+        let mut w = Walker { occurrences: Vec::new(), show: &show, types: HashMap::new(), func: 0 };
         let mut functions = Vec::new();
         let funcs = p.functions.iter().enumerate().chain(p.entry_points.iter().enumerate().map(|(i, e)| (nf + i, &e.func)));
         for (key, f) in funcs {
@@ -970,14 +970,21 @@ fn name_within(sources: &SourceMap, span: Span, name: &str) -> Span {
 }
 
 /// Collects every expression of the checked functions.
-struct Walker<'a> {
+struct Walker<'a, 'p> {
     occurrences: Vec<Occurrence>,
     show: &'a dyn Fn(&Ty) -> String,
+    /// Each type's text, made once: most expressions share a few types.
+    types: HashMap<&'p Ty, Arc<str>>,
     func: usize,
 }
 
-impl Walker<'_> {
-    fn function(&mut self, key: usize, f: &tree::Function, decls: &mut HashMap<Symbol, (Span, String, String)>) {
+impl<'p> Walker<'_, 'p> {
+    fn ty(&mut self, ty: &'p Ty) -> Arc<str> {
+        let show = self.show;
+        self.types.entry(ty).or_insert_with(|| Arc::from(show(ty))).clone()
+    }
+
+    fn function(&mut self, key: usize, f: &'p tree::Function, decls: &mut HashMap<Symbol, (Span, String, String)>) {
         self.func = key;
         for (id, l) in f.locals.iter().enumerate() {
             decls.insert(Symbol::Local(key, id), (l.span, l.name.as_str().to_string(), (self.show)(&l.ty)));
@@ -985,7 +992,7 @@ impl Walker<'_> {
         self.stmts(&f.body);
     }
 
-    fn stmts(&mut self, body: &[Stmt]) {
+    fn stmts(&mut self, body: &'p [Stmt]) {
         for s in body {
             match s {
                 Stmt::Local { init, .. } => init.iter().for_each(|e| self.expr(e)),
@@ -1014,7 +1021,7 @@ impl Walker<'_> {
         }
     }
 
-    fn expr(&mut self, e: &tree::Expr) {
+    fn expr(&mut self, e: &'p tree::Expr) {
         let mut builtin = None;
         let symbol = match &e.kind {
             ExprKind::Local(id) => Some(Symbol::Local(self.func, *id)),
@@ -1033,7 +1040,8 @@ impl Walker<'_> {
             _ => None,
         };
         if !e.span.is_empty() {
-            self.occurrences.push(Occurrence { span: e.span, ty: (self.show)(&e.ty), symbol, builtin });
+            let ty = self.ty(&e.ty);
+            self.occurrences.push(Occurrence { span: e.span, ty, symbol, builtin });
         }
         match &e.kind {
             ExprKind::Unary(_, x) | ExprKind::Swizzle(x, _) | ExprKind::Field(x, _) => self.expr(x),
