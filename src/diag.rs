@@ -36,15 +36,26 @@ pub struct Diagnostic {
     /// Trailing `= note:` / `= help:` lines.
     pub notes: Vec<String>,
     /// What kind of diagnostic it is, for a tool that acts on a kind
-    /// rather than on wording (one of [`codes`]); most have none.
-    pub code: Option<&'static str>,
+    /// rather than on wording; most have none.
+    pub code: Option<Code>,
 }
 
-/// The kinds of diagnostic a tool may act on ([`Diagnostic::code`]).
-pub mod codes {
+/// The kinds of diagnostic a tool may act on ([`Diagnostic::code`]); one
+/// byte, so a diagnostic stays as small as it was.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Code {
     /// A file without entry points: no program (the CLI refuses it as an
     /// input; an editor says nothing of host code, includes and modules).
-    pub const NO_ENTRY_POINTS: &str = "no-entry-points";
+    NoEntryPoints,
+}
+
+impl Code {
+    /// Its name, as tools see it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Code::NoEntryPoints => "no-entry-points",
+        }
+    }
 }
 
 impl Diagnostic {
@@ -91,7 +102,7 @@ impl Diagnostic {
         self
     }
 
-    pub fn with_code(mut self, code: &'static str) -> Self {
+    pub fn with_code(mut self, code: Code) -> Self {
         self.code = Some(code);
         self
     }

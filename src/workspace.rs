@@ -241,7 +241,7 @@ fn place_diagnostics(c: &Compilation, root: &Path) -> Vec<FileDiagnostic> {
     let in_root = |span: Span| map.locate(span).filter(|(id, _)| map.file(*id).path.as_deref().map(overlay::normalize).as_deref() == Some(root));
     // A file without entry points (host code, an include, a module) is no
     // program: the CLI refuses it as an input, an editor says nothing.
-    let not_a_program = |d: &&Diagnostic| d.code == Some(crate::diag::codes::NO_ENTRY_POINTS);
+    let not_a_program = |d: &&Diagnostic| d.code == Some(crate::diag::Code::NoEntryPoints);
     let mut out: Vec<FileDiagnostic> = c.diagnostics.iter().filter(|d| !not_a_program(d)).map(|d| place(d, map, &in_root)).collect();
     if c.suppressed_errors > 0 {
         let note = Diagnostic::suppressed(c.suppressed_errors);
