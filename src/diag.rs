@@ -35,6 +35,27 @@ pub struct Diagnostic {
     pub secondary: Vec<(Span, String)>,
     /// Trailing `= note:` / `= help:` lines.
     pub notes: Vec<String>,
+    /// What kind of diagnostic it is, for a tool that acts on a kind
+    /// rather than on wording; most have none.
+    pub code: Option<Code>,
+}
+
+/// The kinds of diagnostic a tool may act on ([`Diagnostic::code`]); one
+/// byte, so a diagnostic stays as small as it was.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Code {
+    /// A file without entry points: no program (the CLI refuses it as an
+    /// input; an editor says nothing of host code, includes and modules).
+    NoEntryPoints,
+}
+
+impl Code {
+    /// Its name, as tools see it.
+    pub fn name(self) -> &'static str {
+        match self {
+            Code::NoEntryPoints => "no-entry-points",
+        }
+    }
 }
 
 impl Diagnostic {
@@ -46,6 +67,7 @@ impl Diagnostic {
             label: String::new(),
             secondary: Vec::new(),
             notes: Vec::new(),
+            code: None,
         }
     }
 
@@ -77,6 +99,11 @@ impl Diagnostic {
 
     pub fn with_secondary(mut self, span: Span, label: impl Into<String>) -> Self {
         self.secondary.push((span, label.into()));
+        self
+    }
+
+    pub fn with_code(mut self, code: Code) -> Self {
+        self.code = Some(code);
         self
     }
 

@@ -28,6 +28,8 @@ pub mod emit;
 pub mod golden;
 pub mod lower;
 pub mod output;
+#[cfg(feature = "spec")]
+pub mod project;
 pub mod rerun;
 pub mod run;
 mod sealed;
@@ -229,6 +231,13 @@ pub fn spawn_compiler_thread<'scope, T: Send + 'scope>(
         HAS_COMPILER_STACK.set(true);
         f()
     })
+}
+
+/// Whether a compilation may run on the calling thread (the rule of
+/// [`on_compiler_stack`]): a thread kept between compilations keeps the
+/// validator and SPIR-V writer each thread holds (`crate::workspace`).
+pub(crate) fn stack_suffices() -> bool {
+    RUNS_ON_CALLERS_STACK || HAS_COMPILER_STACK.get()
 }
 
 /// Runs `job` where its stack is sure to suffice: on the calling thread

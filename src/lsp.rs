@@ -5,15 +5,17 @@
 //!
 //! Diagnostics are the compiler's own (one source of truth with the CLI).
 //! Edits are coalesced: a document is checked once no message is waiting,
-//! so a result is never published over a newer version. A panic while
-//! answering a request answers it with an error; the server goes on.
+//! and a result is never published while a newer version of its document
+//! waits to be read. A request cancelled (`$/cancelRequest`) before it is
+//! answered answers `RequestCanceled`. A panic while answering a request
+//! answers it with an error; the server goes on.
 
-use std::collections::{HashMap, HashSet};
+use std::collections::{HashMap, HashSet, VecDeque};
 use std::error::Error;
 use std::path::{Path, PathBuf};
 
 use crossbeam_channel::TryRecvError;
-use lsp_server::{Connection, ErrorCode, Message, Notification, Request, Response};
+use lsp_server::{Connection, ErrorCode, Message, Notification, Request, RequestId, Response};
 use lsp_types as lt;
 
 use crate::diag::Severity;
@@ -25,7 +27,12 @@ type Result<T> = std::result::Result<T, Box<dyn Error + Send + Sync>>;
 /// Serves over stdin/stdout until the client says `exit`.
 pub fn run_stdio() -> Result<()> {
     let (connection, io) = Connection::stdio();
-    serve(connection)?;
+    // On a compiler thread, checks run on it directly, keeping what the
+    // thread holds between compilations (the validator, the SPIR-V writer).
+    std::thread::scope(|s| match crate::spawn_compiler_thread(s, || serve(connection).map_err(|e| e.to_string())) {
+        Ok(h) => h.join().unwrap_or_else(|_| Err("the server's thread panicked".into())),
+        Err(e) => Err(format!("cannot start the server's thread: {e}")),
+    })?;
     io.join()?;
     Ok(())
 }
@@ -49,9 +56,16 @@ fn capabilities() -> lt::ServerCapabilities {
         })),
         completion_provider: Some(lt::CompletionOptions { trigger_characters: Some(vec![".".into(), "@".into()]), ..Default::default() }),
         position_encoding: Some(lt::PositionEncodingKind::UTF16),
+        execute_command_provider: Some(lt::ExecuteCommandOptions { commands: vec![OUTPUT_COMMAND.into()], ..Default::default() }),
         ..Default::default()
     }
 }
+
+/// `workspace/executeCommand` `umbrac.output` with arguments `[URI,
+/// TARGET]`: what the target writes for the document as it is now,
+/// `{"files": [{"name", "text"}]}` (the VS Code extension's "Show a
+/// target's output").
+pub const OUTPUT_COMMAND: &str = "umbrac.output";
 
 /// The semantic token types, indexed by `token_type`.
 const TOKEN_TYPES: [lt::SemanticTokenType; 5] =
@@ -81,7 +95,16 @@ pub fn serve(connection: Connection) -> Result<()> {
     let params = connection.initialize(caps)?;
     let init: lt::InitializeParams = serde_json::from_value(params).unwrap_or_default();
     let (options, problems) = options_from(init.initialization_options.as_ref());
-    let mut server = Server { connection: &connection, ws: Workspace::new(options), dirty: HashSet::new(), reads: HashMap::new(), published: HashMap::new() };
+    let mut server = Server {
+        connection: &connection,
+        ws: Workspace::new(options),
+        dirty: HashSet::new(),
+        reads: HashMap::new(),
+        published: HashMap::new(),
+        pending: VecDeque::new(),
+        current: None,
+        cancelled: HashSet::new(),
+    };
     for p in problems {
         server.show_message(lt::MessageType::WARNING, format!("umbrac: {p}"));
     }
@@ -99,6 +122,13 @@ struct Server<'a> {
     /// diagnostics with its version, and by root, those of the programs
     /// that include or require it, at their place in it.
     published: HashMap<PathBuf, Published>,
+    /// Messages read off the connection but not yet handled (read ahead
+    /// to see cancellations and newer versions), in order.
+    pending: VecDeque<Message>,
+    /// The request being answered.
+    current: Option<RequestId>,
+    /// Requests cancelled before they were answered.
+    cancelled: HashSet<RequestId>,
 }
 
 #[derive(Default)]
@@ -111,29 +141,36 @@ struct Published {
 impl Server<'_> {
     fn main_loop(&mut self) -> Result<()> {
         loop {
-            let msg = if self.dirty.is_empty() {
-                match self.connection.receiver.recv() {
-                    Ok(m) => m,
+            let msg = match self.pending.pop_front() {
+                Some(m) => m,
+                None if self.dirty.is_empty() => match self.connection.receiver.recv() {
+                    Ok(m) => {
+                        self.take(m);
+                        continue;
+                    }
                     Err(_) => return Ok(()),
-                }
-            } else {
-                match self.connection.receiver.try_recv() {
-                    Ok(m) => m,
+                },
+                None => match self.connection.receiver.try_recv() {
+                    Ok(m) => {
+                        self.take(m);
+                        continue;
+                    }
                     Err(TryRecvError::Empty) => {
                         self.check_dirty()?;
                         continue;
                     }
                     Err(TryRecvError::Disconnected) => return Ok(()),
-                }
+                },
             };
             match msg {
+                Message::Request(req) if req.method == "shutdown" => {
+                    self.connection.sender.send(Message::Response(Response::new_ok(req.id, ())))?;
+                    return self.await_exit();
+                }
                 Message::Request(req) => {
-                    if self.connection.handle_shutdown(&req)? {
-                        return Ok(());
-                    }
-                    // Queries answer from the last analysis: bring it up to date.
-                    self.check_dirty()?;
-                    let resp = self.answer(req);
+                    self.current = Some(req.id.clone());
+                    let resp = self.answer_unless_cancelled(req)?;
+                    self.current = None;
                     self.connection.sender.send(Message::Response(resp))?;
                 }
                 Message::Notification(n) => {
@@ -146,6 +183,88 @@ impl Server<'_> {
                 Message::Response(_) => {}
             }
         }
+    }
+
+    /// After `shutdown`: waits for `exit` (or the client hanging up).
+    fn await_exit(&mut self) -> Result<()> {
+        loop {
+            let m = match self.pending.pop_front() {
+                Some(m) => m,
+                None => match self.connection.receiver.recv() {
+                    Ok(m) => m,
+                    Err(_) => return Ok(()),
+                },
+            };
+            match m {
+                Message::Notification(n) if n.method == "exit" => return Ok(()),
+                Message::Request(r) => {
+                    let resp = Response::new_err(r.id, ErrorCode::InvalidRequest as i32, "the server is shutting down".into());
+                    self.connection.sender.send(Message::Response(resp))?;
+                }
+                _ => {}
+            }
+        }
+    }
+
+    /// A message read off the connection: a cancellation is noted (when
+    /// its request is still to be answered), anything else waits its turn.
+    fn take(&mut self, m: Message) {
+        if let Message::Notification(n) = &m {
+            if n.method == <lt::notification::Cancel as lt::notification::Notification>::METHOD {
+                if let Ok(p) = serde_json::from_value::<lt::CancelParams>(n.params.clone()) {
+                    let id = match p.id {
+                        lt::NumberOrString::Number(n) => RequestId::from(n),
+                        lt::NumberOrString::String(s) => RequestId::from(s),
+                    };
+                    let waiting = self.current.as_ref() == Some(&id) || self.pending.iter().any(|m| matches!(m, Message::Request(r) if r.id == id));
+                    if waiting {
+                        self.cancelled.insert(id);
+                    }
+                }
+                return;
+            }
+        }
+        self.pending.push_back(m);
+    }
+
+    /// Reads ahead every message already sent.
+    fn read_ahead(&mut self) {
+        while let Ok(m) = self.connection.receiver.try_recv() {
+            self.take(m);
+        }
+    }
+
+    /// Answers a request from analyses brought up to date, or with
+    /// `RequestCanceled` when it was cancelled before or while they were.
+    fn answer_unless_cancelled(&mut self, req: Request) -> Result<Response> {
+        let canceled = |id: RequestId| Response::new_err(id, ErrorCode::RequestCanceled as i32, "cancelled".into());
+        self.read_ahead();
+        if self.cancelled.remove(&req.id) {
+            return Ok(canceled(req.id));
+        }
+        // Queries answer from the last analysis: bring it up to date.
+        self.check_dirty()?;
+        self.read_ahead();
+        if self.cancelled.remove(&req.id) {
+            return Ok(canceled(req.id));
+        }
+        Ok(self.answer(req))
+    }
+
+    /// The documents a message read ahead changes, opens or closes: what
+    /// is published of them now would be stale.
+    fn superseded(&self) -> HashSet<PathBuf> {
+        use lt::notification::{DidChangeTextDocument, DidCloseTextDocument, DidOpenTextDocument, Notification as _};
+        self.pending
+            .iter()
+            .filter_map(|m| match m {
+                Message::Notification(n) if [DidChangeTextDocument::METHOD, DidCloseTextDocument::METHOD, DidOpenTextDocument::METHOD].contains(&n.method.as_str()) => {
+                    let uri: lt::Uri = serde_json::from_value(n.params.get("textDocument")?.get("uri")?.clone()).ok()?;
+                    Some(crate::syntax::overlay::normalize(&path_of(&uri)?))
+                }
+                _ => None,
+            })
+            .collect()
     }
 
     /// Answers one request; a panic is an error response.
@@ -262,8 +381,10 @@ impl Server<'_> {
         }
         touched.sort();
         touched.dedup();
-        for file in touched {
-            self.republish(&file);
+        // A document whose newer text waits is published once that is checked.
+        let superseded = self.superseded();
+        for file in touched.iter().filter(|f| !superseded.contains(*f)) {
+            self.republish(file);
         }
         Ok(())
     }
@@ -382,27 +503,14 @@ fn dispatch(ws: &Workspace, req: Request) -> Answer {
             let Some(path) = path_of(&tdp.text_document.uri) else { return Ok(None) };
             let (Some(index), Some(text)) = (ws.index(&path), ws.text(&path)) else { return Ok(None) };
             let offset = workspace::position_to_offset(&text, tdp.position.line, tdp.position.character);
-            let items: Vec<lt::CompletionItem> = index
-                .completions(&path, &text, offset)
-                .into_iter()
-                .map(|c| lt::CompletionItem {
-                    label: c.label,
-                    detail: Some(c.detail),
-                    kind: Some(match c.kind {
-                        workspace::CompletionKind::Local => lt::CompletionItemKind::VARIABLE,
-                        workspace::CompletionKind::Global => lt::CompletionItemKind::VARIABLE,
-                        workspace::CompletionKind::Constant => lt::CompletionItemKind::CONSTANT,
-                        workspace::CompletionKind::Function => lt::CompletionItemKind::FUNCTION,
-                        workspace::CompletionKind::Struct => lt::CompletionItemKind::STRUCT,
-                        workspace::CompletionKind::Field => lt::CompletionItemKind::FIELD,
-                        workspace::CompletionKind::Builtin => lt::CompletionItemKind::FUNCTION,
-                        workspace::CompletionKind::Annotation => lt::CompletionItemKind::KEYWORD,
-                        workspace::CompletionKind::Type => lt::CompletionItemKind::TYPE_PARAMETER,
-                    }),
-                    ..Default::default()
-                })
-                .collect();
-            json(serde_json::to_value(lt::CompletionResponse::Array(items)).map_err(bad_params)?)
+            let (here, builtins) = index.completions_here(&path, &text, offset);
+            let mut items: Vec<serde_json::Value> = here.iter().map(completion_item).collect();
+            if builtins {
+                // The builtins, the same in every answer, as JSON once.
+                static BUILTINS: std::sync::OnceLock<Vec<serde_json::Value>> = std::sync::OnceLock::new();
+                items.extend(BUILTINS.get_or_init(|| workspace::builtin_completions().iter().map(completion_item).collect()).iter().cloned());
+            }
+            json(serde_json::Value::Array(items))
         }
         InlayHintRequest::METHOD => {
             let p: lt::InlayHintParams = serde_json::from_value(req.params).map_err(bad_params)?;
@@ -462,11 +570,27 @@ fn dispatch(ws: &Workspace, req: Request) -> Answer {
             let Some((sigs, active)) = index.signature_help(&text, offset) else { return Ok(None) };
             let signatures = sigs
                 .into_iter()
-                .map(|(label, params)| lt::SignatureInformation {
-                    label,
-                    documentation: None,
-                    parameters: Some(params.into_iter().map(|p| lt::ParameterInformation { label: lt::ParameterLabel::Simple(p), documentation: None }).collect()),
-                    active_parameter: None,
+                .map(|(label, params)| {
+                    let name = label.split('(').next().unwrap_or("");
+                    let documentation = crate::sema::builtin_docs::meaning(name).filter(|_| crate::sema::builtins::signatures(name).iter().any(|(l, _)| *l == label)).map(|m| lt::Documentation::String(m.to_string()));
+                    // Parameters by their place in the label: `floatN, floatN` names two.
+                    let mut from = label.find('(').map_or(0, |i| i + 1);
+                    let parameters = params
+                        .into_iter()
+                        .map(|p| {
+                            let at = label[from..].find(&p).map(|i| i + from);
+                            let plabel = match at {
+                                Some(s) => {
+                                    from = s + p.len();
+                                    let utf16 = |b: usize| label[..b].encode_utf16().count() as u32;
+                                    lt::ParameterLabel::LabelOffsets([utf16(s), utf16(s + p.len())])
+                                }
+                                None => lt::ParameterLabel::Simple(p),
+                            };
+                            lt::ParameterInformation { label: plabel, documentation: None }
+                        })
+                        .collect();
+                    lt::SignatureInformation { label, documentation, parameters: Some(parameters), active_parameter: None }
                 })
                 .collect();
             json(serde_json::to_value(lt::SignatureHelp { signatures, active_signature: Some(0), active_parameter: Some(active as u32) }).map_err(bad_params)?)
@@ -495,8 +619,40 @@ fn dispatch(ws: &Workspace, req: Request) -> Answer {
             }
             json(serde_json::to_value(actions).map_err(bad_params)?)
         }
+        ExecuteCommand::METHOD => {
+            let p: lt::ExecuteCommandParams = serde_json::from_value(req.params).map_err(bad_params)?;
+            if p.command != OUTPUT_COMMAND {
+                return Err((ErrorCode::InvalidParams, format!("umbrac has no command `{}`", p.command)));
+            }
+            let arg = |i: usize| p.arguments.get(i).and_then(|v| v.as_str());
+            let usage = || bad_params(format!("`{OUTPUT_COMMAND}` takes [URI, TARGET]"));
+            let uri: lt::Uri = arg(0).ok_or_else(usage)?.parse().map_err(|_| usage())?;
+            let path = path_of(&uri).ok_or_else(|| bad_params(format!("`{}` is not a file", uri.as_str())))?;
+            let target = arg(1).and_then(Target::from_name).ok_or_else(usage)?;
+            match ws.output(&path, target) {
+                Ok(files) => json(serde_json::json!({ "files": files.into_iter().map(|(name, text)| serde_json::json!({"name": name, "text": text})).collect::<Vec<_>>() })),
+                Err(diags) => {
+                    let first = diags.iter().find(|d| matches!(d.severity, Severity::Error | Severity::Bug)).or(diags.first()).map_or("it does not compile".to_string(), |d| d.message.clone());
+                    Err((ErrorCode::RequestFailed, format!("no {} output: {first}", target.name())))
+                }
+            }
+        }
         other => Err((ErrorCode::MethodNotFound, format!("umbrac does not answer `{other}`"))),
     }
+}
+
+/// A completion as the protocol's `CompletionItem`, in JSON.
+fn completion_item(c: &workspace::Completion) -> serde_json::Value {
+    let kind = match c.kind {
+        workspace::CompletionKind::Local | workspace::CompletionKind::Global => lt::CompletionItemKind::VARIABLE,
+        workspace::CompletionKind::Constant => lt::CompletionItemKind::CONSTANT,
+        workspace::CompletionKind::Function | workspace::CompletionKind::Builtin => lt::CompletionItemKind::FUNCTION,
+        workspace::CompletionKind::Struct => lt::CompletionItemKind::STRUCT,
+        workspace::CompletionKind::Field => lt::CompletionItemKind::FIELD,
+        workspace::CompletionKind::Annotation => lt::CompletionItemKind::KEYWORD,
+        workspace::CompletionKind::Type => lt::CompletionItemKind::TYPE_PARAMETER,
+    };
+    serde_json::json!({ "label": c.label, "kind": kind, "detail": c.detail })
 }
 
 /// The name a diagnostic's "help: did you mean `NAME`?" suggests.
@@ -551,8 +707,10 @@ fn to_lsp_diagnostic(d: &workspace::FileDiagnostic, text: &str, ws: &Workspace) 
 
 /// Options from `initializationOptions`:
 /// `{"targets": ["wgsl", ...], "includeDirs": [...], "daslangRoot": "...",
-/// "daslib": "...", "defines": ["NAME", "NAME=VALUE"] | {"NAME": "VALUE"}}`,
-/// and what in them was not understood.
+/// "daslib": "...", "modules": {"PREFIX": "DIR"}, "defines": ["NAME",
+/// "NAME=VALUE"] | {"NAME": "VALUE"}, "limits": {"NAME": N},
+/// "strictLimits": true}`, and what in them was not understood. They are
+/// laid over each file's project file ([`crate::project::Project::under`]).
 pub fn options_from(v: Option<&serde_json::Value>) -> (Options, Vec<String>) {
     let mut opts = Options::default();
     let mut problems = Vec::new();
@@ -570,6 +728,15 @@ pub fn options_from(v: Option<&serde_json::Value>) -> (Options, Vec<String>) {
     if let Some(m) = v.get("modules").and_then(|x| x.as_object()) {
         opts.modules = m.iter().filter_map(|(prefix, dir)| Some((prefix.clone(), PathBuf::from(dir.as_str()?)))).collect();
     }
+    if let Some(m) = v.get("limits").and_then(|x| x.as_object()) {
+        for (name, n) in m {
+            match (crate::Limit::from_name(name), n.as_u64()) {
+                (Some(l), Some(n)) => opts.limits.push((l, n)),
+                _ => problems.push(format!("initializationOptions.limits: `{name}` = {n} is not a limit and a count")),
+            }
+        }
+    }
+    opts.strict_limits = v.get("strictLimits").and_then(|x| x.as_bool()).unwrap_or(false);
     match v.get("defines") {
         Some(serde_json::Value::Object(m)) => {
             opts.defines = m.iter().map(|(k, val)| (k.clone(), val.as_str().map(String::from).or_else(|| (!val.is_null()).then(|| val.to_string())))).collect();

@@ -272,6 +272,9 @@ struct CommonArgs {
     /// How diagnostics are printed.
     #[arg(long, value_enum, default_value_t = MessageFormat::Human)]
     message_format: MessageFormat,
+    /// Do not read the project file (`umbrac.toml` at or above the first input).
+    #[arg(long)]
+    no_project: bool,
 }
 
 #[derive(Clone, Debug)]
@@ -357,6 +360,17 @@ impl CommonArgs {
             source_name: None,
         }
     }
+}
+
+/// `opts` over the project file found from the first input (flags win;
+/// docs/editor.md, "The project file"), unless `--no-project`; a bad
+/// project file is reported and is the exit status.
+fn with_project(common: &CommonArgs, opts: Options, files: &[PathBuf]) -> Result<Options, u8> {
+    let Some(first) = files.first().filter(|_| !common.no_project) else { return Ok(opts) };
+    umbrac::project::options_for(first, opts).map(|(o, _)| o).map_err(|e| {
+        Reporter::new(common.message_format).diagnostic(&e.1, &e.0);
+        EXIT_ERROR
+    })
 }
 
 fn main() -> ExitCode {
@@ -543,9 +557,13 @@ fn compile(args: &CompileArgs) -> u8 {
 
 /// One `compile` run ([`umbrac::run`]): the exit code, and what `--watch` waits on.
 fn compile_once(args: &CompileArgs) -> (u8, umbrac::watch::Watched) {
+    let options = match with_project(&args.common, args.common.options(targets_of(&args.targets)), &args.files) {
+        Ok(o) => o,
+        Err(code) => return (code, umbrac::watch::Watched { files: args.files.clone(), dirs: Vec::new() }),
+    };
     let req = umbrac::run::Request {
         files: &args.files,
-        options: args.common.options(targets_of(&args.targets)),
+        options,
         out: args.out.clone(),
         variants: args.variants.clone(),
         load_variants: &load_spec,
@@ -589,7 +607,10 @@ fn load_spec(path: &Path) -> Result<Vec<umbrac::variants::Variant>, Box<(SourceM
 }
 
 fn check(args: &CheckArgs) -> u8 {
-    let opts = args.common.options(Vec::new());
+    let opts = match with_project(&args.common, args.common.options(Vec::new()), &args.files) {
+        Ok(o) => o,
+        Err(code) => return code,
+    };
     let inputs = match umbrac::jobs::inputs_of(&args.files) {
         Ok(i) => i,
         Err(e) => return usage_error(&e),
@@ -608,7 +629,10 @@ fn check(args: &CheckArgs) -> u8 {
 }
 
 fn reflect(args: &ReflectArgs) -> u8 {
-    let mut opts = args.common.options(Vec::new());
+    let mut opts = match with_project(&args.common, args.common.options(Vec::new()), std::slice::from_ref(&args.file)) {
+        Ok(o) => o,
+        Err(code) => return code,
+    };
     opts.source_name = file_name_of(&args.file);
     let comps = compile_all(std::slice::from_ref(&args.file), &opts);
     let c = &comps[0];
@@ -658,7 +682,10 @@ fn preview(args: &PreviewArgs) -> u8 {
 /// `compile --check`: every difference between the outputs and the files in
 /// the directory, as unified diffs on stdout; nothing is written.
 fn compile_check(args: &CompileArgs, targets: Vec<Target>, inputs: Vec<umbrac::jobs::Input>) -> u8 {
-    let opts = args.common.options(targets);
+    let opts = match with_project(&args.common, args.common.options(targets), &args.files) {
+        Ok(o) => o,
+        Err(code) => return code,
+    };
     let cache = args.batch.cache();
     let settings = umbrac::jobs::Settings { options: &opts, workers: args.batch.workers(), cache: cache.as_ref(), process_ends: false };
     let batch = umbrac::jobs::Batch::compile(inputs, Vec::new(), &settings, None);
@@ -702,7 +729,10 @@ fn compile_check(args: &CompileArgs, targets: Vec<Target>, inputs: Vec<umbrac::j
 }
 
 fn bindgen(args: &BindgenArgs) -> u8 {
-    let mut opts = args.common.options(Vec::new());
+    let mut opts = match with_project(&args.common, args.common.options(Vec::new()), std::slice::from_ref(&args.file)) {
+        Ok(o) => o,
+        Err(code) => return code,
+    };
     opts.source_name = file_name_of(&args.file);
     let comps = compile_all(std::slice::from_ref(&args.file), &opts);
     let c = &comps[0];

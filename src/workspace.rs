@@ -134,23 +134,34 @@ impl Workspace {
         self.analyses.remove(&overlay::normalize(path));
     }
 
-    /// Compiles on a compiler thread (the checked program stays there: it
-    /// is not `Send`): the placed diagnostics, the files read, the index.
+    /// Compiles where the stack suffices (this thread when it may, as
+    /// `compile_source` does, keeping the thread's validator and SPIR-V
+    /// writer; otherwise a compiler thread, where the checked program,
+    /// which is not `Send`, stays): the placed diagnostics, the files
+    /// read, the index.
     fn compile(&self, path: &Path) -> (Vec<FileDiagnostic>, Vec<PathBuf>, Option<Index>) {
         let texts: overlay::Texts = Arc::new(self.docs.iter().map(|(p, d)| (p.clone(), d.text.clone())).collect());
-        let opts = &self.options;
+        let (opts, project) = match self.options_for(path) {
+            Ok(o) => o,
+            Err(e) => return (vec![project_error(&e)], e.0.files().filter_map(|(_, f)| f.path.clone()).collect(), None),
+        };
+        let opts = &opts;
         let failed = |msg: &str| (place_diagnostics(&crate::panicked(msg), path), Vec::new(), None);
         let run = || {
             let job = || {
                 let (c, program) = overlay::with(texts, || crate::analyze_file(path, opts));
                 let diagnostics = place_diagnostics(&c, path);
-                let files_read = c.files_read();
+                let mut files_read = c.files_read();
+                files_read.extend(project.clone());
                 (diagnostics, files_read, program.map(|p| Index::new(&p, c)))
             };
             std::panic::catch_unwind(std::panic::AssertUnwindSafe(job)).unwrap_or_else(|payload| {
                 failed(&format!("the compiler panicked while compiling `{}`: {}", path.display(), crate::diag::panic_message(&*payload)))
             })
         };
+        if crate::stack_suffices() {
+            return run();
+        }
         std::thread::scope(|s| match crate::spawn_compiler_thread(s, run) {
             Ok(h) => h.join().unwrap_or_else(|_| failed("the compilation thread failed")),
             Err(e) => failed(&format!("cannot start a compilation thread: {e}")),
@@ -158,10 +169,71 @@ impl Workspace {
     }
 }
 
-/// How the front end's refusal of a file without entry points begins
-/// (`syntax::items::select`; `host_code_says_nothing` in tests/compiler/lsp.rs
-/// fails if it changes).
-const NO_ENTRY_POINTS: &str = "no entry points:";
+impl Workspace {
+    /// What `target` writes for `path`, the open documents standing for
+    /// their files: each output's file name and text; when it does not
+    /// compile, its diagnostics as a check places them. SPIR-V is binary
+    /// and is refused.
+    pub fn output(&self, path: &Path, target: crate::Target) -> Result<Vec<(String, String)>, Vec<FileDiagnostic>> {
+        let path = overlay::normalize(path);
+        let nowhere = |msg: String| vec![FileDiagnostic { severity: Severity::Error, start: 0, end: 0, message: msg, related: Vec::new(), origin: None }];
+        if target == crate::Target::Spirv {
+            return Err(nowhere("SPIR-V is binary: choose a text target (glsl330, gles300, glsl430, gles310, wgsl)".into()));
+        }
+        let texts: overlay::Texts = Arc::new(self.docs.iter().map(|(p, d)| (p.clone(), d.text.clone())).collect());
+        let mut opts = self.options_for(&path).map_err(|e| vec![project_error(&e)])?.0;
+        opts.targets = vec![target];
+        let run = || {
+            let job = || {
+                let c = overlay::with(texts, || crate::compile_file(&path, &opts));
+                match &c.result {
+                    Some(r) if !c.has_errors() => Ok(r
+                        .artifacts
+                        .iter()
+                        .filter(|a| a.target == Some(target))
+                        .map(|a| (a.file_name.clone(), String::from_utf8_lossy(&a.contents).into_owned()))
+                        .collect()),
+                    _ => Err(place_diagnostics(&c, &path)),
+                }
+            };
+            std::panic::catch_unwind(std::panic::AssertUnwindSafe(job))
+                .unwrap_or_else(|payload| Err(nowhere(format!("the compiler panicked while compiling `{}`: {}", path.display(), crate::diag::panic_message(&*payload)))))
+        };
+        if crate::stack_suffices() {
+            return run();
+        }
+        std::thread::scope(|s| match crate::spawn_compiler_thread(s, run) {
+            Ok(h) => h.join().unwrap_or_else(|_| Err(nowhere("the compilation thread failed".into()))),
+            Err(e) => Err(nowhere(format!("cannot start a compilation thread: {e}"))),
+        })
+    }
+
+    /// The workspace's options over the project file found from `path`
+    /// (`crate::project`: what the workspace's options set wins), and
+    /// which file that was.
+    #[cfg(feature = "spec")]
+    pub fn options_for(&self, path: &Path) -> Result<(Options, Option<PathBuf>), crate::project::Error> {
+        crate::project::options_for(path, self.options.clone())
+    }
+
+    /// Without the TOML reader there is no project file.
+    #[cfg(not(feature = "spec"))]
+    pub fn options_for(&self, _path: &Path) -> Result<(Options, Option<PathBuf>), Box<(SourceMap, Diagnostic)>> {
+        Ok((self.options.clone(), None))
+    }
+}
+
+/// A project file that cannot be used, at the start of the file checked.
+fn project_error(e: &(SourceMap, Diagnostic)) -> FileDiagnostic {
+    let (map, d) = e;
+    let mut fd = place(d, map, &|_| None);
+    if let Some((id, r)) = d.span.and_then(|s| map.locate(s)) {
+        let (_, line, col) = map.line_col(d.span.unwrap_or_default()).unwrap_or_default();
+        fd.origin = map.file(id).path.as_deref().map(|p| (overlay::normalize(p), r.start, r.end, fd.message.clone()));
+        fd.message = format!("{}:{line}:{col}: {}", map.file(id).name, fd.message);
+    }
+    fd
+}
 
 /// Places each diagnostic of a compilation of `root` in `root`.
 fn place_diagnostics(c: &Compilation, root: &Path) -> Vec<FileDiagnostic> {
@@ -169,7 +241,7 @@ fn place_diagnostics(c: &Compilation, root: &Path) -> Vec<FileDiagnostic> {
     let in_root = |span: Span| map.locate(span).filter(|(id, _)| map.file(*id).path.as_deref().map(overlay::normalize).as_deref() == Some(root));
     // A file without entry points (host code, an include, a module) is no
     // program: the CLI refuses it as an input, an editor says nothing.
-    let not_a_program = |d: &&Diagnostic| d.message.starts_with(NO_ENTRY_POINTS);
+    let not_a_program = |d: &&Diagnostic| d.code == Some(crate::diag::Code::NoEntryPoints);
     let mut out: Vec<FileDiagnostic> = c.diagnostics.iter().filter(|d| !not_a_program(d)).map(|d| place(d, map, &in_root)).collect();
     if c.suppressed_errors > 0 {
         let note = Diagnostic::suppressed(c.suppressed_errors);
@@ -265,7 +337,7 @@ pub struct DocumentSymbol {
 #[derive(Clone, Debug)]
 struct Occurrence {
     span: Span,
-    ty: String,
+    ty: Arc<str>,
     symbol: Option<Symbol>,
     /// A builtin call's name and signature.
     builtin: Option<String>,
@@ -285,8 +357,10 @@ pub struct Index {
     functions: Vec<(Span, usize)>,
     /// Field names of each struct.
     fields: Vec<Vec<(String, String)>>,
-    /// The reflection manifest, when the compilation emitted one.
-    manifest: Option<serde_json::Value>,
+    /// The reflection manifest's text, when the compilation emitted one,
+    /// parsed on the first hover that needs it (not on every edit).
+    manifest: Option<String>,
+    manifest_parsed: std::sync::OnceLock<Option<serde_json::Value>>,
     /// The text outputs: entry point (`None`: the whole module), target, code.
     emitted: Vec<(Option<String>, crate::Target, String)>,
     /// Helper functions by name (overloads): label and parameter labels.
@@ -413,7 +487,7 @@ impl Index {
             }
         }
         let nf = p.functions.len();
-        let mut w = Walker { occurrences: Vec::new(), show: &show, func: 0 };
+        let mut w = Walker { occurrences: Vec::new(), show: &show, types: HashMap::new(), func: 0 };
         let mut functions = Vec::new();
         let funcs = p.functions.iter().enumerate().chain(p.entry_points.iter().enumerate().map(|(i, e)| (nf + i, &e.func)));
         for (key, f) in funcs {
@@ -437,18 +511,14 @@ impl Index {
         }
         let mut occurrences = w.occurrences;
         occurrences.sort_by_key(|o| (o.span.start, std::cmp::Reverse(o.span.end)));
-        let manifest = compilation
-            .result
-            .as_ref()
-            .and_then(|r| r.artifacts.iter().find(|a| a.target.is_none()))
-            .and_then(|a| serde_json::from_slice(&a.contents).ok());
+        let manifest = compilation.result.as_ref().and_then(|r| r.artifacts.iter().find(|a| a.target.is_none())).and_then(|a| String::from_utf8(a.contents.clone()).ok());
         let emitted = compilation
             .result
-            .iter()
-            .flat_map(|r| &r.artifacts)
-            .filter_map(|a| Some((a.entry.clone(), a.target.filter(|t| *t != crate::Target::Spirv)?, String::from_utf8(a.contents.clone()).ok()?)))
+            .into_iter()
+            .flat_map(|r| r.artifacts)
+            .filter_map(|a| Some((a.entry, a.target.filter(|t| *t != crate::Target::Spirv)?, String::from_utf8(a.contents).ok()?)))
             .collect();
-        Index { sources, occurrences, decls, shapes, functions, fields, manifest, emitted, signatures }
+        Index { sources, occurrences, decls, shapes, functions, fields, manifest, manifest_parsed: Default::default(), emitted, signatures }
     }
 
     /// The id and text of a file this analysis read.
@@ -491,7 +561,8 @@ impl Index {
         let (span, symbol, occ) = self.at(path, offset)?;
         let mut parts = Vec::new();
         if let Some(b) = occ.and_then(|o| o.builtin.as_ref()) {
-            parts.push(format!("```das\n{b}\n```\nbuiltin"));
+            parts.push(format!("```das\n{b}\n```"));
+            parts.push(builtin_doc(b.split('(').next().unwrap_or("")));
         } else if let Some((dspan, name, detail)) = symbol.and_then(|s| self.decls.get(&s)) {
             let what = match symbol {
                 Some(Symbol::Struct(_)) => format!("struct {name}"),
@@ -513,7 +584,9 @@ impl Index {
                     }
                 }
             }
-            if let (Some(Symbol::Global(_)), Some(m)) = (symbol, &self.manifest) {
+            let global = matches!(symbol, Some(Symbol::Global(_)));
+            let manifest = || self.manifest_parsed.get_or_init(|| self.manifest.as_deref().and_then(|m| serde_json::from_str(m).ok())).as_ref();
+            if let Some(m) = global.then(manifest).flatten() {
                 let mut found = Vec::new();
                 manifest_entries(m, name, &mut found);
                 if !found.is_empty() {
@@ -669,8 +742,12 @@ impl Index {
         };
         let before = text[..open].trim_end();
         let name = &before[before.trim_end_matches(|c: char| c.is_ascii_alphanumeric() || c == '_').len()..];
-        let sigs = self.signatures.get(name)?;
-        Some((sigs.clone(), commas))
+        // A helper of the program's hides a builtin of the same name.
+        if let Some(sigs) = self.signatures.get(name) {
+            return Some((sigs.clone(), commas));
+        }
+        let builtin = crate::sema::builtins::signatures(name);
+        (!builtin.is_empty()).then_some((builtin, commas))
     }
 
     /// Inlay hints for `path`: after each local whose type is inferred
@@ -761,6 +838,18 @@ impl Index {
     /// the analysis may be older): after `name.`, its fields or swizzle
     /// components; otherwise the names in scope and the builtins.
     pub fn completions(&self, path: &Path, text: &str, offset: usize) -> Vec<Completion> {
+        let (mut out, builtins) = self.completions_here(path, text, offset);
+        if builtins {
+            out.extend(builtin_completions().iter().cloned());
+            out.dedup_by(|a, b| a.label == b.label);
+        }
+        out
+    }
+
+    /// [`Index::completions`] without the builtins, which are the same
+    /// everywhere ([`builtin_completions`]): what this place adds, and
+    /// whether the builtins follow it.
+    pub fn completions_here(&self, path: &Path, text: &str, offset: usize) -> (Vec<Completion>, bool) {
         let mut offset = offset.min(text.len());
         while !text.is_char_boundary(offset) {
             offset -= 1;
@@ -771,7 +860,7 @@ impl Index {
         let at = self.global_offset(path, start).unwrap_or(u32::MAX);
         let func = self.functions.iter().filter(|(s, _)| s.start <= at && at <= s.end).min_by_key(|(s, _)| s.end - s.start).map(|(_, k)| *k);
         if before[..start].ends_with('@') {
-            return ANNOTATIONS.iter().map(|a| Completion { label: a.to_string(), kind: CompletionKind::Annotation, detail: "annotation".into() }).collect();
+            return (ANNOTATIONS.iter().map(|a| Completion { label: a.to_string(), kind: CompletionKind::Annotation, detail: "annotation".into() }).collect(), false);
         }
         if let Some(dotted) = before[..start].strip_suffix('.') {
             let name = &dotted[dotted.trim_end_matches(word).len()..];
@@ -786,7 +875,7 @@ impl Index {
                 .filter(|(sym, (_, n, _))| n == name && visible(sym))
                 .min_by_key(|(sym, _)| !matches!(sym, Symbol::Local(..)))
                 .and_then(|(sym, _)| self.shapes.get(sym));
-            return match shape {
+            let fields = match shape {
                 Some(Shape::Struct(s)) => self.fields[*s].iter().map(|(n, t)| Completion { label: n.clone(), kind: CompletionKind::Field, detail: t.clone() }).collect(),
                 Some(Shape::Vector(n)) => ["xyzw", "rgba"]
                     .iter()
@@ -795,6 +884,7 @@ impl Index {
                     .collect(),
                 None => Vec::new(),
             };
+            return (fields, false);
         }
         let mut out: Vec<Completion> = Vec::new();
         for (sym, (_, name, detail)) in &self.decls {
@@ -808,12 +898,42 @@ impl Index {
             };
             out.push(Completion { label: name.clone(), kind, detail: detail.clone() });
         }
-        out.extend(crate::sema::builtins::all_names().map(|n| Completion { label: n.to_string(), kind: CompletionKind::Builtin, detail: "builtin".into() }));
-        out.extend(type_names().into_iter().map(|n| Completion { label: n.to_string(), kind: CompletionKind::Type, detail: "type".into() }));
+        // Builtins sort after every declared kind: appended, in order.
         out.sort_by(|a, b| (a.kind as u8, &a.label).cmp(&(b.kind as u8, &b.label)));
         out.dedup_by(|a, b| a.label == b.label);
-        out
+        (out, true)
     }
+}
+
+/// The builtin functions (each with its first signature) and types, in
+/// completion order: the same in every completion, so made once.
+pub fn builtin_completions() -> &'static [Completion] {
+    static ALL: std::sync::OnceLock<Vec<Completion>> = std::sync::OnceLock::new();
+    ALL.get_or_init(|| {
+        let mut out: Vec<Completion> = crate::sema::builtins::all_names()
+            .map(|n| {
+                let sigs = crate::sema::builtins::signatures(n);
+                let more = if sigs.len() > 1 { format!(" (+{} more)", sigs.len() - 1) } else { String::new() };
+                let detail = sigs.first().map_or_else(|| "builtin".to_string(), |(s, _)| format!("{s}{more}"));
+                Completion { label: n.to_string(), kind: CompletionKind::Builtin, detail }
+            })
+            .collect();
+        out.extend(type_names().into_iter().map(|n| Completion { label: n.to_string(), kind: CompletionKind::Type, detail: "type".into() }));
+        out.sort_by(|a, b| (a.kind as u8, &a.label).cmp(&(b.kind as u8, &b.label)));
+        out
+    })
+}
+
+/// What a builtin function means and its overloads, for a hover.
+fn builtin_doc(name: &str) -> String {
+    let mut doc = format!("builtin: {}", crate::sema::builtin_docs::meaning(name).unwrap_or("a builtin function"));
+    let sigs = crate::sema::builtins::signatures(name);
+    if sigs.len() > 1 {
+        doc.push_str("\n\n```das\n");
+        doc.push_str(&sigs.iter().map(|(s, _)| s.as_str()).collect::<Vec<_>>().join("\n"));
+        doc.push_str("\n```");
+    }
+    doc
 }
 
 /// The objects of a manifest whose `name` is `name`, as compact JSON.
@@ -850,14 +970,21 @@ fn name_within(sources: &SourceMap, span: Span, name: &str) -> Span {
 }
 
 /// Collects every expression of the checked functions.
-struct Walker<'a> {
+struct Walker<'a, 'p> {
     occurrences: Vec<Occurrence>,
     show: &'a dyn Fn(&Ty) -> String,
+    /// Each type's text, made once: most expressions share a few types.
+    types: HashMap<&'p Ty, Arc<str>>,
     func: usize,
 }
 
-impl Walker<'_> {
-    fn function(&mut self, key: usize, f: &tree::Function, decls: &mut HashMap<Symbol, (Span, String, String)>) {
+impl<'p> Walker<'_, 'p> {
+    fn ty(&mut self, ty: &'p Ty) -> Arc<str> {
+        let show = self.show;
+        self.types.entry(ty).or_insert_with(|| Arc::from(show(ty))).clone()
+    }
+
+    fn function(&mut self, key: usize, f: &'p tree::Function, decls: &mut HashMap<Symbol, (Span, String, String)>) {
         self.func = key;
         for (id, l) in f.locals.iter().enumerate() {
             decls.insert(Symbol::Local(key, id), (l.span, l.name.as_str().to_string(), (self.show)(&l.ty)));
@@ -865,7 +992,7 @@ impl Walker<'_> {
         self.stmts(&f.body);
     }
 
-    fn stmts(&mut self, body: &[Stmt]) {
+    fn stmts(&mut self, body: &'p [Stmt]) {
         for s in body {
             match s {
                 Stmt::Local { init, .. } => init.iter().for_each(|e| self.expr(e)),
@@ -894,7 +1021,7 @@ impl Walker<'_> {
         }
     }
 
-    fn expr(&mut self, e: &tree::Expr) {
+    fn expr(&mut self, e: &'p tree::Expr) {
         let mut builtin = None;
         let symbol = match &e.kind {
             ExprKind::Local(id) => Some(Symbol::Local(self.func, *id)),
@@ -913,7 +1040,8 @@ impl Walker<'_> {
             _ => None,
         };
         if !e.span.is_empty() {
-            self.occurrences.push(Occurrence { span: e.span, ty: (self.show)(&e.ty), symbol, builtin });
+            let ty = self.ty(&e.ty);
+            self.occurrences.push(Occurrence { span: e.span, ty, symbol, builtin });
         }
         match &e.kind {
             ExprKind::Unary(_, x) | ExprKind::Swizzle(x, _) | ExprKind::Field(x, _) => self.expr(x),

@@ -652,6 +652,21 @@ fn pattern_text(p: &str) -> &'static str {
     }
 }
 
+/// A builtin function's overloads, as editors show them: each one's text
+/// and its parameters' (`[]` for a name that is no builtin function).
+pub fn signatures(name: &str) -> Vec<(String, Vec<String>)> {
+    if let Some(e) = entry(name) {
+        return e.sigs.iter().map(|s| (format_sig(e.name, s), s.args.iter().map(|a| pattern_text(a).to_string()).collect())).collect();
+    }
+    super::builtin_docs::texture_signatures(name)
+        .iter()
+        .map(|sig| {
+            let inner = sig.split_once('(').and_then(|(_, rest)| rest.rsplit_once(')')).map_or("", |(args, _)| args);
+            (sig.to_string(), inner.split(", ").map(String::from).collect())
+        })
+        .collect()
+}
+
 fn format_sig(name: &str, sig: &Sig) -> String {
     let args: Vec<&str> = sig.args.iter().map(|a| pattern_text(a)).collect();
     format!("{name}({}) : {}", args.join(", "), pattern_text(sig.ret))

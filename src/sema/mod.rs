@@ -5,6 +5,7 @@
 //! typed, and every rule of the language checked, so that lowering cannot
 //! meet a user error.
 
+pub mod builtin_docs;
 pub mod builtins;
 mod check;
 pub mod consts;

@@ -480,6 +480,7 @@ pub fn select(
         if !diags.has_errors() {
             diags.push(
                 Diagnostic::error("no entry points: no function is annotated `[vertex_program]` or `[fragment_program]`", root_span)
+                    .with_code(crate::diag::Code::NoEntryPoints)
                     .with_label("in this file")
                     .with_note("help: annotate a shader function, e.g. `[vertex_program]` on the line before `def main_vs {`")
                     .with_note("the Vulkan dialect's stages are `[vertex_shader]`, `[fragment_shader]`, `[compute_shader]` and their `[vulkan_*_shader]` forms"),

@@ -50,21 +50,46 @@ impl Client {
         c
     }
 
+    /// A client whose first messages (`queue`) all wait on the connection
+    /// before the server reads any: what it does with a backlog is then
+    /// the same on every run.
+    fn start_queued(init: Value, queue: impl FnOnce(&mut Client)) -> Client {
+        let (server, conn) = Connection::memory();
+        let mut c = Client { conn, server: None, next_id: 0 };
+        let init_id = c.send("initialize", json!({"capabilities": {}, "initializationOptions": init}));
+        c.notify("initialized", json!({}));
+        queue(&mut c);
+        c.server = Some(std::thread::spawn(move || umbrac::lsp::serve(server).expect("the server ends cleanly")));
+        assert!(c.response(&init_id).error.is_none());
+        c
+    }
+
+    /// Sends a request; its id.
+    fn send(&mut self, method: &str, params: Value) -> RequestId {
+        self.next_id += 1;
+        let id = RequestId::from(self.next_id);
+        self.conn.sender.send(Message::Request(Request::new(id.clone(), method.into(), params))).unwrap();
+        id
+    }
+
+    /// The response to `id` (what comes before it is dropped).
+    fn response(&self, id: &RequestId) -> Response {
+        loop {
+            match self.conn.receiver.recv_timeout(Duration::from_secs(60)).expect("a response") {
+                Message::Response(r) if &r.id == id => return r,
+                _ => continue,
+            }
+        }
+    }
+
     fn notify(&self, method: &str, params: Value) {
         self.conn.sender.send(Message::Notification(Notification::new(method.into(), params))).unwrap();
     }
 
     /// Sends a request and waits for its response (notifications on the way are dropped).
     fn request_raw(&mut self, method: &str, params: Value) -> Response {
-        self.next_id += 1;
-        let id = RequestId::from(self.next_id);
-        self.conn.sender.send(Message::Request(Request::new(id.clone(), method.into(), params))).unwrap();
-        loop {
-            match self.conn.receiver.recv_timeout(Duration::from_secs(60)).expect("a response") {
-                Message::Response(r) if r.id == id => return r,
-                _ => continue,
-            }
-        }
+        let id = self.send(method, params);
+        self.response(&id)
     }
 
     fn request(&mut self, method: &str, params: Value) -> Value {
@@ -212,6 +237,7 @@ fn hover_definition_references_and_symbols() {
     let (bl, bc) = pos(SHADER, "length(");
     let b = c.request("textDocument/hover", Client::at(&u, bl, bc + 1));
     assert!(b["contents"]["value"].as_str().unwrap().contains("length(float3) : float"), "{b}");
+    assert!(b["contents"]["value"].as_str().unwrap().contains("builtin: the length of a vector"), "{b}");
     let def = c.request("textDocument/definition", Client::at(&u, line, col));
     let (dl, dc) = pos(SHADER, "light :");
     assert_eq!(def["range"]["start"], json!({"line": dl, "character": dc}), "{def}");
@@ -313,6 +339,37 @@ fn completion_in_scope_and_after_a_dot() {
     c.finish();
 }
 
+/// A builtin's overloads and meaning in signature help (the parameter at
+/// the cursor by its place in the label) and in completion.
+#[test]
+fn builtins_in_signature_help_and_completion() {
+    let (_d, root) = temp_with(&[("a.das", SHADER)]);
+    let u = uri(&root.join("a.das"));
+    let mut c = Client::start(Value::Null);
+    c.open(&u, SHADER, 1);
+    c.diagnostics(&u);
+    let typed = SHADER.replace("let k = length(light)", "let k = mix(light, light, ");
+    c.change(&u, &typed, 2);
+    let (line, col) = pos(&typed, "mix(");
+    let help = c.request("textDocument/signatureHelp", Client::at(&u, line, col + 26));
+    let sigs = help["signatures"].as_array().unwrap();
+    assert_eq!(sigs.len(), 2, "{help}");
+    assert_eq!(sigs[0]["label"], json!("mix(floatN, floatN, floatN) : floatN"), "{help}");
+    assert!(sigs[0]["documentation"].as_str().unwrap().contains("linear blend"), "{help}");
+    assert_eq!(help["activeParameter"], json!(2), "{help}");
+    // The third `floatN`, not the first.
+    assert_eq!(sigs[0]["parameters"][2]["label"], json!([20, 26]), "{help}");
+    let tex = SHADER.replace("let k = length(light)", "let k = textureLod(");
+    c.change(&u, &tex, 3);
+    let (line, col) = pos(&tex, "textureLod(");
+    let help = c.request("textDocument/signatureHelp", Client::at(&u, line, col + 11));
+    assert!(help["signatures"][0]["label"].as_str().unwrap().starts_with("textureLod(s : sampler, uv : floatN, lod : float)"), "{help}");
+    let all = c.request("textDocument/completion", Client::at(&u, line, col));
+    let smooth = all.as_array().unwrap().iter().find(|i| i["label"] == "smoothstep").unwrap();
+    assert!(smooth["detail"].as_str().unwrap().starts_with("smoothstep(floatN, floatN, floatN) : floatN (+1 more)"), "{smooth}");
+    c.finish();
+}
+
 #[test]
 fn bad_input_never_stops_the_server() {
     let (d, root) = temp_with(&[("a.das", SHADER)]);
@@ -359,6 +416,103 @@ fn bad_input_never_stops_the_server() {
     c.open("untitled:Untitled-1", "def", 1);
     assert!(c.request("textDocument/hover", Client::at(&uri(&root.join("never.das")), 0, 0)).is_null());
     drop(d);
+    c.finish();
+}
+
+/// `$/cancelRequest` before the answer: `RequestCanceled` (-32800); the
+/// next request is answered; a cancellation of nothing waiting is ignored.
+#[test]
+fn a_cancelled_request_answers_request_canceled() {
+    let (_d, root) = temp_with(&[("a.das", SHADER)]);
+    let u = uri(&root.join("a.das"));
+    let (line, col) = pos(SHADER, "light : float3");
+    let (mut cancelled, mut answered) = (None, None);
+    let mut c = Client::start_queued(json!({"targets": ["wgsl"]}), |c| {
+        c.open(&u, SHADER, 1);
+        let id = c.send("textDocument/hover", Client::at(&u, line, col));
+        c.notify("$/cancelRequest", json!({"id": 1}));
+        c.notify("$/cancelRequest", json!({"id": 99}));
+        c.notify("$/cancelRequest", serde_json::to_value(&id).map(|id| json!({"id": id})).unwrap());
+        cancelled = Some(id);
+        answered = Some(c.send("textDocument/hover", Client::at(&u, line, col)));
+    });
+    let r = c.response(&cancelled.unwrap());
+    assert_eq!(r.error.as_ref().map(|e| e.code), Some(-32800), "{r:?}");
+    let r = c.response(&answered.unwrap());
+    assert!(r.result.as_ref().unwrap()["contents"]["value"].as_str().unwrap().contains("light : float3"), "{r:?}");
+    // Cancelling what was answered changes nothing.
+    c.notify("$/cancelRequest", json!({"id": 3}));
+    assert!(c.request("textDocument/hover", Client::at(&u, line, col))["contents"]["value"].as_str().unwrap().contains("float3"));
+    c.finish();
+}
+
+/// A request between edits is answered from the version before it, but
+/// nothing is published for a version a newer one already waits behind.
+#[test]
+fn nothing_is_published_over_a_newer_version() {
+    let (_d, root) = temp_with(&[("a.das", SHADER)]);
+    let u = uri(&root.join("a.das"));
+    let (line, col) = pos(SHADER, "light : float3");
+    let bad = SHADER.replace("c * light", "c * lihgt");
+    let mut hover = None;
+    let c = Client::start_queued(json!({"targets": ["wgsl"]}), |c| {
+        c.open(&u, &bad, 1);
+        c.change(&u, &bad.replace("lihgt", "lgiht"), 2);
+        hover = Some(c.send("textDocument/hover", Client::at(&u, line, col)));
+        c.change(&u, SHADER, 3);
+    });
+    let hover = hover.unwrap();
+    let mut versions = Vec::new();
+    let mut answered = false;
+    while versions.last() != Some(&json!(3)) {
+        match c.conn.receiver.recv_timeout(Duration::from_secs(60)).expect("diagnostics are published") {
+            Message::Notification(n) if n.method == "textDocument/publishDiagnostics" => {
+                assert_eq!(n.params["diagnostics"], json!([]), "{}", n.params);
+                versions.push(n.params["version"].clone());
+            }
+            Message::Response(r) if r.id == hover => answered = true,
+            _ => {}
+        }
+    }
+    assert!(answered);
+    assert_eq!(versions, [json!(3)]);
+    c.finish();
+}
+
+/// The server reads the project file above a document; its
+/// initializationOptions win key by key; a bad project file is a
+/// diagnostic naming its line and column.
+#[test]
+fn the_project_file_and_the_settings_over_it() {
+    let shader = "var @out f_color : float4\n\n[fragment_program]\ndef fs {\n    f_color = float4(TINT)\n}\n";
+    let (_d, root) = temp_with(&[("umbrac.toml", "targets = [\"wgsl\"]\n[defines]\nTINT = \"0.5\"\n")]);
+    std::fs::create_dir(root.join("sub")).unwrap();
+    std::fs::write(root.join("sub/a.das"), shader).unwrap();
+    let u = uri(&root.join("sub/a.das"));
+    let mut c = Client::start(Value::Null);
+    c.open(&u, shader, 1);
+    assert_eq!(c.diagnostics(&u)["diagnostics"], json!([]));
+    // The project's target is the one whose output the command shows.
+    let out = c.request("workspace/executeCommand", json!({"command": "umbrac.output", "arguments": [u, "wgsl"]}));
+    assert_eq!(out["files"][0]["name"], json!("a.wgsl"), "{out}");
+    assert!(out["files"][0]["text"].as_str().unwrap().contains("@fragment"), "{out}");
+    let glsl = c.request("workspace/executeCommand", json!({"command": "umbrac.output", "arguments": [u, "gles300"]}));
+    assert!(glsl["files"][0]["text"].as_str().unwrap().contains("#version 300 es"), "{glsl}");
+    let spirv = c.request_raw("workspace/executeCommand", json!({"command": "umbrac.output", "arguments": [u, "spirv"]}));
+    assert!(spirv.error.unwrap().message.contains("binary"));
+    // A bad project file: where it is wrong, at the top of the document.
+    std::fs::write(root.join("umbrac.toml"), "targets = [\"wgsl\"]\n[defines]\nTINT = [1]\n").unwrap();
+    c.notify("workspace/didChangeWatchedFiles", json!({"changes": [{"uri": uri(&root.join("umbrac.toml")), "type": 2}]}));
+    let d = c.diagnostics(&u);
+    let msg = d["diagnostics"][0]["message"].as_str().unwrap_or_default();
+    assert!(msg.contains("umbrac.toml:3:8:") && msg.contains("one-line string"), "{d}");
+    c.finish();
+    // The settings' define wins over the project's.
+    std::fs::write(root.join("umbrac.toml"), "[defines]\nTINT = \"0.5\"\n").unwrap();
+    let c = Client::start(json!({"defines": ["TINT=nope"]}));
+    c.open(&u, shader, 1);
+    let d = c.diagnostics(&u);
+    assert!(d["diagnostics"][0]["message"].as_str().unwrap_or_default().contains("nope"), "{d}");
     c.finish();
 }
 
@@ -442,4 +596,47 @@ fn neovim_jumps_renames_across_files_and_completes_a_field() {
     assert_eq!(get("main_after"), main.replace("tint(", "shade_it(").trim_end(), "{seen:?}");
     assert_eq!(get("lib_after"), lib.replace("tint(", "shade_it(").trim_end(), "{seen:?}");
     assert_eq!(get("completion"), "albedo,rough", "{seen:?}");
+}
+
+/// The VS Code extension (editors/vscode/) type-checks, bundles and
+/// packages with `@vscode/vsce` (VS Code itself cannot run here); its
+/// settings are the initialization options the server reads, and the
+/// command it sends is the server's.
+#[test]
+fn the_vscode_extension_builds_and_packages() {
+    let ext = support::repo().join("editors/vscode");
+    let vsce = ext.join("node_modules/.bin/vsce");
+    if !vsce.exists() {
+        return support::skip("editors/vscode/node_modules is not installed (npm ci --prefix editors/vscode)");
+    }
+    let out_dir = tempfile::tempdir().unwrap();
+    let vsix = out_dir.path().join("umbrac.vsix");
+    // `vsce package` runs `vscode:prepublish`: tsc --noEmit, then esbuild.
+    let out = std::process::Command::new(&vsce)
+        .args(["package", "--no-dependencies", "--out"])
+        .arg(&vsix)
+        .current_dir(&ext)
+        .stdin(std::process::Stdio::null())
+        .output()
+        .expect("run vsce");
+    assert!(out.status.success(), "vsce package failed:\n{}\n{}", String::from_utf8_lossy(&out.stdout), String::from_utf8_lossy(&out.stderr));
+    let bytes = std::fs::read(&vsix).unwrap();
+    assert_eq!(&bytes[..2], b"PK", "a .vsix is a zip");
+    let has = |name: &str| bytes.windows(name.len()).any(|w| w == name.as_bytes());
+    assert!(has("extension/dist/extension.js") && has("extension/package.json"), "the package holds the bundle and its manifest");
+    let bundle = std::fs::read_to_string(ext.join("dist/extension.js")).unwrap();
+    assert!(bundle.contains(umbrac::lsp::OUTPUT_COMMAND), "the extension sends the server's output command");
+    // Every setting is an initialization option the server understands.
+    let manifest: Value = serde_json::from_str(&std::fs::read_to_string(ext.join("package.json")).unwrap()).unwrap();
+    let props = manifest["contributes"]["configuration"]["properties"].as_object().unwrap();
+    let keys: Vec<&str> = props.keys().filter_map(|k| k.strip_prefix("umbrac.")).filter(|k| *k != "path").collect();
+    assert_eq!(keys.len(), 8, "{keys:?}");
+    let example = json!({"targets": ["wgsl"], "includeDirs": ["inc"], "daslangRoot": "/d", "daslib": "/d/daslib", "modules": {"geometry": "g"}, "defines": ["A=1"], "limits": {"uniform-blocks": 16}, "strictLimits": true});
+    for k in &keys {
+        assert!(example.get(k).is_some(), "setting umbrac.{k} is no initialization option");
+        assert!(bundle.contains(&format!("\"{k}\"")), "the extension does not send {k}");
+    }
+    let (opts, problems) = umbrac::lsp::options_from(Some(&example));
+    assert!(problems.is_empty(), "{problems:?}");
+    assert!(opts.strict_limits && opts.limits.len() == 1 && opts.modules.len() == 1 && opts.daslib.is_some());
 }

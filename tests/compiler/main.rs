@@ -37,6 +37,8 @@ mod language_f;
 #[cfg(feature = "cli")]
 mod hostile_inputs;
 mod limits;
+#[cfg(feature = "cli")]
+mod project;
 #[cfg(feature = "lsp")]
 mod lsp;
 mod lowering;
