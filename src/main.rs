@@ -76,7 +76,7 @@ enum Command {
     Reflect(ReflectArgs),
     /// Write the Rust bindings module of a shader file (what umbrac::build generates).
     Bindgen(BindgenArgs),
-    /// Render the shadow scene from compiled shaders.
+    /// Render a program headless to PNG: the shadow scene, a scene file, or the scene inferred for any program.
     #[cfg(feature = "render")]
     Render(cli::render::RenderArgs),
     /// Serve the Language Server Protocol over stdin/stdout (docs/editor.md).
