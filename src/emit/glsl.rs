@@ -55,6 +55,8 @@ use naga::back::glsl::{Options, PipelineOptions, Version, WriterFlags};
 use naga::proc::{BoundsCheckPolicies, BoundsCheckPolicy};
 
 use super::{glsl_names, guard, text};
+// The block names are the name picker's to know (it keeps varyings off them).
+pub use glsl_names::{block_name, storage_block_name};
 use crate::diag::Diagnostic;
 use crate::lower::{EntryInterface, Lowered};
 
@@ -188,9 +190,9 @@ pub fn vulkan_varying_name(location: u32) -> String {
 }
 
 /// The GLSL name of each attribute, varying and colour output of a
-/// compile, by source name: chosen once against what naga can call
-/// anything in the GL modules that have them ([`glsl_names::NamerLabels`]),
-/// so that both stages of a program, and every profile, agree.
+/// compile, by source name: chosen once ([`glsl_names::pick_names`])
+/// against everything the GL texts that have them can hold, so that both
+/// stages of a program, and every profile, agree.
 pub struct VaryingNames<'a> {
     names: Vec<(&'a str, String)>,
     /// The plain uniforms naga's namer would rename in some GL module
@@ -202,19 +204,14 @@ pub struct VaryingNames<'a> {
 impl<'a> VaryingNames<'a> {
     pub fn of(lowered: &'a Lowered) -> VaryingNames<'a> {
         let with_io = || lowered.interface.entry_points.iter().filter(|ep| !ep.inputs.is_empty() || !ep.outputs.is_empty());
-        let vars = || with_io().flat_map(|ep| ep.inputs.iter().chain(&ep.outputs));
-        // The names asked about: the stage I/O's, and the Vulkan dialect's
-        // location names (`vk_location0`), whatever the I/O is called.
-        let vulkan = with_io().any(|ep| ep.dialect == crate::syntax::ast::Dialect::Vulkan);
-        let location_name = vulkan.then(|| vulkan_varying_name(0));
-        let mut labels = glsl_names::NamerLabels::for_initials(vars().map(|v| v.name.as_str()).chain(location_name.as_deref()));
-        for gl in with_io().filter_map(|ep| lowered.gl.get(ep.index)) {
-            labels.add_module(&gl.module);
-        }
-        let mut names: Vec<(&str, String)> = Vec::new();
-        // The Vulkan dialect links varyings by location, under two source
-        // names: GL links by name, so both sides take one made of the
-        // location (`vk_location1`), which either side can derive.
+        // What is named, in order, each once: by source name, and for the
+        // Vulkan dialect's varyings, which link by location under two
+        // source names, by location: GL links by name, so both sides take
+        // one made of the location (`vk_location1`), which either side can
+        // derive.
+        let mut named: Vec<(&str, usize)> = Vec::new();
+        let mut wanted: Vec<std::borrow::Cow<'_, str>> = Vec::new();
+        let mut locations: Vec<u32> = Vec::new();
         for ep in with_io().filter(|ep| ep.dialect == crate::syntax::ast::Dialect::Vulkan) {
             let varyings = match ep.stage {
                 naga::ShaderStage::Vertex => &ep.outputs,
@@ -222,18 +219,31 @@ impl<'a> VaryingNames<'a> {
                 _ => continue,
             };
             for var in varyings {
-                if names.iter().any(|(n, _)| *n == var.name) {
+                if named.iter().any(|(n, _)| *n == var.name) {
                     continue;
                 }
-                names.push((&var.name, glsl_names::glsl_name(&vulkan_varying_name(var.location), |n| labels.taken(n))));
+                let at = locations.iter().position(|&l| l == var.location).unwrap_or_else(|| {
+                    locations.push(var.location);
+                    wanted.push(vulkan_varying_name(var.location).into());
+                    wanted.len() - 1
+                });
+                named.push((&var.name, at));
             }
         }
-        for var in vars() {
-            if !names.iter().any(|(n, _)| *n == var.name) {
-                names.push((&var.name, glsl_names::glsl_name(&var.name, |n| labels.taken(n))));
+        for var in with_io().flat_map(|ep| ep.inputs.iter().chain(&ep.outputs)) {
+            if !named.iter().any(|(n, _)| *n == var.name) {
+                named.push((&var.name, wanted.len()));
+                wanted.push(var.name.as_str().into());
             }
         }
-        VaryingNames { names, uniforms: renamed_uniforms(lowered) }
+        let uniforms = renamed_uniforms(lowered);
+        let modules: Vec<&naga::Module> = with_io().filter_map(|ep| lowered.gl.get(ep.index)).map(|gl| &gl.module).collect();
+        let taken: Vec<&str> = uniforms.iter().map(|(_, n)| n.as_str()).collect();
+        let wanted: Vec<&str> = wanted.iter().map(|w| w.as_ref()).collect();
+        let picked = glsl_names::pick_names(&modules, &taken, &wanted);
+        // (Two source names of one location share its name.)
+        let names = named.into_iter().map(|(n, at)| (n, picked[at].clone())).collect();
+        VaryingNames { names, uniforms }
     }
 
     /// The compile's GLSL name of plain uniform `source`, where naga would
@@ -563,10 +573,6 @@ fn struct_bodies(src: &str) -> Vec<Range<usize>> {
     starts.filter_map(|open| STRUCT_END.find(&b[open..]).map(|end| open..open + end + STRUCT_END.needle().len())).collect()
 }
 
-/// The GLSL block name of storage buffer `name`: `<name>_ssbo`.
-pub fn storage_block_name(name: &str) -> String {
-    [name, "_ssbo"].concat()
-}
 
 /// [`with_gl_bindings`]' module, binding map and renamed images.
 type GlBound = (naga::Module, naga::back::glsl::BindingMap, Vec<(String, String)>);
@@ -636,11 +642,6 @@ fn renamed_uniforms(lowered: &Lowered) -> Vec<(&str, String)> {
     chosen
 }
 
-/// The GLSL block name of uniform buffer `name` (the struct uniform's, or
-/// the loose buffer's): `<name>_ubo`.
-pub fn block_name(name: &str) -> String {
-    [name, "_ubo"].concat()
-}
 
 /// Gives a global its source name back where naga's namer changed it (it
 /// appends `_` to names ending in a digit, `layers_0` becoming

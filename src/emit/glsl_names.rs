@@ -10,8 +10,10 @@
 //! becomes the name followed by `_` (naga's own rule for the names it
 //! makes), then `_1`, `_2` ... until it is free. The choice depends on the
 //! compile, not on one file, so both stages of a program give a varying
-//! the same name. The manifest records every GLSL name (`glsl_name`), so a
-//! host never guesses.
+//! the same name. [`pick_names`] names a compile's stage I/O so, also off
+//! the names the fix-ups after naga write (block names `light_ubo`) and
+//! off each other. The manifest records every GLSL name (`glsl_name`), so
+//! a host never guesses.
 
 /// Keywords, reserved words and builtin function names of GLSL 330 core and
 /// GLSL ES 3.00 (their specifications, sections 3.6 and 8), and the builtin
@@ -214,6 +216,71 @@ impl<'a> NamerLabels<'a> {
         let repeat = (!digits.is_empty() && !digits.starts_with('0') && digits.bytes().all(|b| b.is_ascii_digit())).then(|| digits.parse::<u32>().ok()).flatten();
         repeat.is_some_and(|n| n < self.count(&name[..at]))
     }
+}
+
+/// The GLSL names of a compile's attributes, varyings and colour outputs:
+/// for each of `wanted` (one source name per thing named, in order), the
+/// [`glsl_name`] free of everything the GL text of `modules` can hold
+/// outside struct members: what naga can write ([`NamerLabels`]), the
+/// names the fix-ups after it write ([`fixup_names`]), `also_taken` (names
+/// chosen elsewhere for the compile) and the names given to the wanted
+/// before it. The names the labels are asked about are derived from
+/// `wanted` here, so no caller can leave a family of them out.
+pub fn pick_names(modules: &[&naga::Module], also_taken: &[&str], wanted: &[&str]) -> Vec<String> {
+    let mut labels = NamerLabels::for_initials(wanted.iter().copied());
+    for m in modules {
+        labels.add_module(m);
+    }
+    // Every name asked about starts with one of the initials: the fixed
+    // names that cannot are not kept (a module holds many, a compile asks
+    // about a few).
+    let asked = |n: &str| labels.initials.as_deref().is_none_or(|i| n.as_bytes().first().is_none_or(|&b| i[b as usize]));
+    // (name, suffix) pairs: nothing is formatted for a name never asked about.
+    let mut fixed: Vec<(&str, &str)> = also_taken.iter().filter(|n| asked(n)).map(|&n| (n, "")).collect();
+    for m in modules {
+        fixup_names(m, |n, suffix| {
+            if asked(n) {
+                fixed.push((n, suffix));
+            }
+        });
+    }
+    let is_fixed = |n: &str| fixed.iter().any(|&(f, suffix)| n.len() == f.len() + suffix.len() && n.starts_with(f) && n.ends_with(suffix));
+    let mut chosen: Vec<String> = Vec::with_capacity(wanted.len());
+    for source in wanted {
+        let name = glsl_name(source, |n| labels.taken(n) || is_fixed(n) || chosen.iter().any(|c| c == n));
+        chosen.push(name);
+    }
+    chosen
+}
+
+/// The names the GL fix-ups give the globals of `module` besides naga's,
+/// each as a global's name and a suffix: the name itself (a uniform,
+/// sampler or image given its source name back), and the block name of a
+/// uniform or storage buffer ([`block_name`], [`storage_block_name`]).
+pub fn fixup_names<'m>(module: &'m naga::Module, mut each: impl FnMut(&'m str, &'static str)) {
+    for (_, g) in module.global_variables.iter() {
+        let Some(name) = g.name.as_deref() else { continue };
+        match g.space {
+            naga::AddressSpace::Uniform => each(name, UBO),
+            naga::AddressSpace::Storage { .. } => each(name, SSBO),
+            _ => {}
+        }
+        each(name, "");
+    }
+}
+
+const UBO: &str = "_ubo";
+const SSBO: &str = "_ssbo";
+
+/// The GLSL block name of uniform buffer `name` (the struct uniform's, or
+/// the loose buffer's): `<name>_ubo`.
+pub fn block_name(name: &str) -> String {
+    [name, UBO].concat()
+}
+
+/// The GLSL block name of storage buffer `name`: `<name>_ssbo`.
+pub fn storage_block_name(name: &str) -> String {
+    [name, SSBO].concat()
 }
 
 /// Every name of `module` naga's namer names something by (struct
@@ -470,5 +537,19 @@ mod tests {
             assert_eq!(glsl_name(source, |n| l.taken(n)), got);
         }
         assert_eq!(namer_base("3x__y:z"), "x_y_z");
+    }
+
+    #[test]
+    fn picked_names_keep_off_fixups_and_each_other() {
+        let mut module = naga::Module::default();
+        let f32 = module.types.insert(naga::Type { name: None, inner: naga::TypeInner::Scalar(naga::Scalar::F32) }, naga::Span::UNDEFINED);
+        for (name, space) in [("light", naga::AddressSpace::Uniform), ("data", naga::AddressSpace::Storage { access: naga::StorageAccess::LOAD }), ("tint", naga::AddressSpace::Private)] {
+            module.global_variables.append(naga::GlobalVariable { name: Some(name.into()), space, binding: None, ty: f32, init: None, memory_decorations: Default::default() }, naga::Span::UNDEFINED);
+        }
+        // The block names the fix-ups give, names chosen elsewhere, and
+        // the names picked before; the rest as `glsl_name` has them.
+        let wanted = ["light_ubo", "data_ssbo", "taken", "input", "input_", "vk_location1", "vk_location1", "a_pos", "tint"];
+        let picked = pick_names(&[&module], &["taken"], &wanted);
+        assert_eq!(picked, ["light_ubo_", "data_ssbo_", "taken_", "input_", "input__", "vk_location1", "vk_location1_", "a_pos", "tint_1"]);
     }
 }

@@ -172,6 +172,39 @@ fn varyings_named_as_naga_names_its_own_end() {
     }
 }
 
+/// The GLSL name of a stage input or output was chosen against naga's
+/// names only, from initials the caller listed: it could be a name the
+/// fix-ups after naga give (a uniform block `light_ubo`: a debug
+/// assertion, an invalid shader in a release build), or the name chosen
+/// for another input or output (`input` and `input_` both `input_`; a
+/// Vulkan-dialect attribute `vk_location1` and the varying at location 1
+/// both `vk_location1`): glslang, "redefinition". The name picker now
+/// gathers every such name itself.
+#[test]
+fn varyings_keep_off_every_name_the_gl_text_holds() {
+    let block = "struct Light {\n    dir : float3\n}\nvar @uniform light : Light\nvar @in a_pos : float3\nvar @inout light_ubo : float3\nvar @out f_color : float4\n\
+        [vertex_program]\ndef vs {\n    light_ubo = a_pos\n    gl_Position = float4(a_pos, 1.0)\n}\n\
+        [fragment_program]\ndef fs {\n    f_color = float4(light_ubo * light.dir, 1.0)\n}\n";
+    let underscored = "var @in a_pos : float3\nvar @inout input : float3\nvar @inout input_ : float3\nvar @out f_color : float4\n\
+        [vertex_program]\ndef vs {\n    input = a_pos\n    input_ = a_pos * 2.0\n    gl_Position = float4(a_pos, 1.0)\n}\n\
+        [fragment_program]\ndef fs {\n    f_color = float4(input + input_, 1.0)\n}\n";
+    let located = "var @in @location = 1 vk_location1 : float2\nvar @out @location = 1 n_out : float2\n\
+        [vertex_shader]\ndef vs {\n    n_out = vk_location1\n    gl_Position = float4(vk_location1, 0.0, 1.0)\n}\n\
+        var @in @location = 1 f_n : float2\nvar @out @location = 0 o_color : float4\n\
+        [fragment_shader]\ndef fs {\n    o_color = float4(f_n, 0.0, 1.0)\n}\n";
+    for (name, src, want) in [("block", block, &["a_pos", "light_ubo_"][..]), ("underscored", underscored, &["a_pos", "input_", "input__"]), ("located", located, &["vk_location1_", "vk_location1"])] {
+        let c = accepted_everywhere(name, src);
+        let vs = c.reflection.entry_points.iter().find(|e| e.name == "vs").unwrap();
+        let names: Vec<&str> = vs.inputs.iter().chain(&vs.outputs).map(|io| io.glsl_name.as_str()).collect();
+        // Apart from each other and from the block, as the rule names them.
+        let blocks: Vec<&str> = c.reflection.uniform_buffers.iter().filter_map(|u| u.glsl_block.as_deref()).collect();
+        for (i, n) in names.iter().enumerate() {
+            assert!(!names[..i].contains(n) && !blocks.contains(n), "{name}: `{n}` twice in {names:?} / {blocks:?}");
+        }
+        assert_eq!(names, want, "{name}");
+    }
+}
+
 /// A vertex and a compute entry point without a fragment one were linked
 /// as a program ("does not link a vertex and a fragment entry point"): a
 /// compute entry point is a program alone, next to any vertex/fragment.
