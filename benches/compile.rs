@@ -84,7 +84,7 @@ fn stages(c: &mut C) {
 criterion_group! {
     name = benches;
     // Process CPU time, not wall time: the machine's cores are shared.
-    config = Criterion::default().with_measurement(CpuTime)
+    config = Criterion::default().with_measurement(CpuTime::PROCESS)
         .warm_up_time(std::time::Duration::from_millis(500))
         .measurement_time(std::time::Duration::from_secs(3))
         .sample_size(50);

@@ -32,44 +32,6 @@ use support::*;
 
 type C = Criterion<CpuTime>;
 
-/// A criterion measurement of one thread's CPU time (the server's), by
-/// its clock (`pthread_getcpuclockid`).
-struct ThreadCpuTime(libc::clockid_t);
-
-impl ThreadCpuTime {
-    fn now(&self) -> Duration {
-        let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
-        // SAFETY: a valid pointer to a timespec; the clock is a live thread's.
-        unsafe { libc::clock_gettime(self.0, &mut ts) };
-        Duration::new(ts.tv_sec as u64, ts.tv_nsec as u32)
-    }
-}
-
-static WALL: criterion::measurement::WallTime = criterion::measurement::WallTime;
-
-impl criterion::measurement::Measurement for ThreadCpuTime {
-    type Intermediate = Duration;
-    type Value = Duration;
-    fn start(&self) -> Duration {
-        self.now()
-    }
-    fn end(&self, i: Duration) -> Duration {
-        self.now().saturating_sub(i)
-    }
-    fn add(&self, a: &Duration, b: &Duration) -> Duration {
-        *a + *b
-    }
-    fn zero(&self) -> Duration {
-        Duration::ZERO
-    }
-    fn to_f64(&self, v: &Duration) -> f64 {
-        v.as_nanos() as f64
-    }
-    fn formatter(&self) -> &dyn criterion::measurement::ValueFormatter {
-        criterion::measurement::Measurement::formatter(&WALL)
-    }
-}
-
 /// A server on a thread with one document open, and the client's end.
 struct Server {
     conn: Connection,
@@ -185,7 +147,7 @@ fn program(c: &mut C, name: &str, text: &str) {
     drop(ws);
 
     let mut server = Server::open(&path, text);
-    let mut sc = Criterion::default().with_measurement(ThreadCpuTime(server.clock)).configure_from_args();
+    let mut sc = Criterion::default().with_measurement(CpuTime(server.clock)).configure_from_args();
     let mut g = sc.benchmark_group(&group);
     configure(&mut g);
     g.bench_function("diagnostics_after_edit", |b| b.iter(|| server.edit(text)));
@@ -215,7 +177,7 @@ fn lines_2000(c: &mut C) {
 
 criterion_group! {
     name = benches;
-    config = Criterion::default().with_measurement(CpuTime);
+    config = Criterion::default().with_measurement(CpuTime::PROCESS);
     targets = shadow, lines_2000
 }
 criterion_main!(benches);

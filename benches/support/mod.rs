@@ -95,14 +95,24 @@ pub fn scaled_source(factor: usize) -> String {
 /// summed: what the work costs, including umbrac's compiler and job threads,
 /// without the time the scheduler gave the cores to other processes.
 pub fn cpu_time() -> Duration {
-    let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
-    // SAFETY: a valid pointer to a timespec; the clock id is a constant.
-    unsafe { libc::clock_gettime(libc::CLOCK_PROCESS_CPUTIME_ID, &mut ts) };
-    Duration::new(ts.tv_sec as u64, ts.tv_nsec as u32)
+    CpuTime::PROCESS.now()
 }
 
-/// A criterion measurement of process CPU time.
-pub struct CpuTime;
+/// A criterion measurement of CPU time by one clock: the whole process's
+/// ([`CpuTime::PROCESS`]) or one thread's (`pthread_getcpuclockid`).
+pub struct CpuTime(pub libc::clockid_t);
+
+impl CpuTime {
+    pub const PROCESS: CpuTime = CpuTime(libc::CLOCK_PROCESS_CPUTIME_ID);
+
+    pub fn now(&self) -> Duration {
+        let mut ts = libc::timespec { tv_sec: 0, tv_nsec: 0 };
+        // SAFETY: a valid pointer to a timespec; the clock is the process's
+        // or a live thread's.
+        unsafe { libc::clock_gettime(self.0, &mut ts) };
+        Duration::new(ts.tv_sec as u64, ts.tv_nsec as u32)
+    }
+}
 
 static WALL: criterion::measurement::WallTime = criterion::measurement::WallTime;
 
@@ -110,10 +120,10 @@ impl criterion::measurement::Measurement for CpuTime {
     type Intermediate = Duration;
     type Value = Duration;
     fn start(&self) -> Duration {
-        cpu_time()
+        self.now()
     }
     fn end(&self, i: Duration) -> Duration {
-        cpu_time().saturating_sub(i)
+        self.now().saturating_sub(i)
     }
     fn add(&self, a: &Duration, b: &Duration) -> Duration {
         *a + *b
