@@ -139,7 +139,7 @@ function fromServer(bundle, id) {
   showDiagnostics(bundle);
   showOutputs(bundle);
   const errors = bundle.diagnostics.filter((d) => d.severity === 'error' || d.severity === 'bug').length;
-  showStatus(bundle.ok ? `${fileName}: compiled by umbrac preview (save ${id})` : `${fileName}: ${errors} error${errors === 1 ? '' : 's'} (save ${id})`, bundle.ok ? 'ok' : 'error');
+  showStatus(bundle.ok ? `${fileName}: compiled by umbrac preview (compile ${id})` : `${fileName}: ${errors} error${errors === 1 ? '' : 's'} (compile ${id})`, bundle.ok ? 'ok' : 'error');
   if (bundle.ok) draw(bundle);
 }
 
