@@ -51,6 +51,10 @@ pub struct Bundle {
     /// files"): absent on errors, and for a program no scene draws (a
     /// compute program).
     pub scene: Option<serde_json::Value>,
+    /// The program's text and its included files' (`{name, text, files}`):
+    /// set by the preview server for the playground it serves, whose
+    /// editor shows them (docs/preview.md); absent elsewhere.
+    pub source: Option<serde_json::Value>,
 }
 
 serialize_struct!(Bundle {
@@ -59,6 +63,7 @@ serialize_struct!(Bundle {
     "files": files,
     "manifest": manifest?,
     "scene": scene?,
+    "source": source?,
 });
 
 impl Bundle {
@@ -73,7 +78,7 @@ impl Bundle {
             .iter()
             .find(|a| a.target.is_none())
             .and_then(|a| serde_json::from_slice(&a.contents).ok());
-        Bundle { ok: !c.has_errors(), diagnostics, files, manifest, scene: scene_of(c) }
+        Bundle { ok: !c.has_errors(), diagnostics, files, manifest, scene: scene_of(c), source: None }
     }
 
     pub fn to_json(&self) -> String {

@@ -95,9 +95,14 @@ struct PreviewArgs {
     /// The port on 127.0.0.1; default: any free one (the URL is printed).
     #[arg(long, value_name = "N", default_value_t = 0)]
     port: u16,
-    /// Start the desktop's browser on the page.
+    /// Start the desktop's browser on the page (the playground's, when served).
     #[arg(long)]
     open: bool,
+    /// Also serve this built playground (scripts/build-playground.sh) at
+    /// /playground/ with FILE loaded; default: target/playground/ beside
+    /// the binary, when it has been built.
+    #[arg(long, value_name = "DIR")]
+    playground: Option<PathBuf>,
     #[command(flatten)]
     common: CommonArgs,
 }
@@ -657,7 +662,21 @@ fn preview(args: &PreviewArgs) -> u8 {
         eprintln!("error: cannot read `{}`: not a file", args.file.display());
         return EXIT_ERROR;
     }
-    let opts = umbrac::preview::options_for(&args.file, &args.common.options(Vec::new()));
+    let mut opts = umbrac::preview::options_for(&args.file, &args.common.options(Vec::new()));
+    let playground = match &args.playground {
+        Some(dir) => match umbrac::preview::Playground::load(dir) {
+            Ok(p) => Some(p),
+            Err(e) => {
+                eprintln!("error: {e}");
+                return EXIT_ERROR;
+            }
+        },
+        None => umbrac::preview::Playground::beside_executable().and_then(|d| umbrac::preview::Playground::load(&d).ok()),
+    };
+    if playground.is_some() {
+        // The playground shows every output, not only what the page draws.
+        opts.targets.clear();
+    }
     let server = match umbrac::preview::Server::bind(args.port) {
         Ok(s) => s,
         Err(e) => {
@@ -666,15 +685,23 @@ fn preview(args: &PreviewArgs) -> u8 {
         }
     };
     let url = server.url();
-    if write_stdout(format!("umbrac preview: {} at {url}\n", args.file.display()).as_bytes()).is_err() {
+    let mut said = format!("umbrac preview: {} at {url}\n", args.file.display());
+    let page = match &playground {
+        Some(p) => {
+            said += &format!("umbrac preview: the playground ({}) with {} at {url}playground/\n", p.dir().display(), args.file.display());
+            format!("{url}playground/")
+        }
+        None => url.clone(),
+    };
+    if write_stdout(said.as_bytes()).is_err() {
         return EXIT_ERROR;
     }
     if args.open {
-        if let Err(e) = umbrac::preview::open_browser(&url) {
+        if let Err(e) = umbrac::preview::open_browser(&page) {
             eprintln!("warning: {e}");
         }
     }
-    let e = server.serve(args.file.clone(), opts).err().unwrap_or_default();
+    let e = server.serve(args.file.clone(), opts, playground).err().unwrap_or_default();
     eprintln!("error: umbrac preview: {e}");
     EXIT_ERROR
 }

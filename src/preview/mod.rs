@@ -10,7 +10,12 @@
 //! file it read changes and hands the new bundle to every open stream;
 //! a failed compile is sent too (its diagnostics), and the page keeps
 //! drawing the last good one.
+//!
+//! With a built playground ([`Playground`]) it also serves that page under
+//! `/playground/`, with the file loaded: the bundles then carry the
+//! file's text for its editor.
 
+mod playground;
 mod routes;
 
 use std::path::{Path, PathBuf};
@@ -21,6 +26,7 @@ use crate::bundle::Bundle;
 use crate::run::Watched;
 use crate::{Options, Target};
 
+pub use playground::{Playground, FILES as PLAYGROUND_FILES};
 pub use routes::{route, Route};
 
 /// The targets a preview compiles: what the page draws from (the manifest
@@ -88,6 +94,11 @@ pub fn options_for(file: &Path, base: &Options) -> Options {
 /// terminal), and what to watch (every file read, and the paths an
 /// `#include` or `require` looked for and did not find).
 pub fn compile(file: &Path, opts: &Options) -> (Bundle, String, Watched) {
+    compile_for(file, opts, false)
+}
+
+/// [`compile`], the bundle carrying the file's text (`source`) when asked.
+fn compile_for(file: &Path, opts: &Options, with_source: bool) -> (Bundle, String, Watched) {
     let pre = crate::preprocess_file(file, opts);
     let mut files = pre.files_read();
     // A probe in a directory that does not exist (a daslang module root
@@ -100,7 +111,11 @@ pub fn compile(file: &Path, opts: &Options) -> (Bundle, String, Watched) {
     files.extend(c.files_read());
     files.sort();
     files.dedup();
-    (Bundle::of(&c), c.render_diagnostics(), Watched { files, dirs: Vec::new() })
+    let mut bundle = Bundle::of(&c);
+    if with_source {
+        bundle.source = Some(playground::source_of(file, &c));
+    }
+    (bundle, c.render_diagnostics(), Watched { files, dirs: Vec::new() })
 }
 
 /// A bound server, not yet answering.
@@ -127,16 +142,19 @@ impl Server {
     }
 
     /// Compiles `file` now and on every change (diagnostics to stderr),
-    /// and answers requests until the process ends. Returns only if the
-    /// watcher or the listening socket fails.
-    pub fn serve(self, file: PathBuf, opts: Options) -> Result<(), String> {
+    /// and answers requests until the process ends; with `playground`,
+    /// serves it too, and every bundle carries the file's text. Returns
+    /// only if the watcher or the listening socket fails.
+    pub fn serve(self, file: PathBuf, opts: Options, playground: Option<Playground>) -> Result<(), String> {
         let published = Published::default();
         let p = published.clone();
+        let with_source = playground.is_some();
+        let site = Arc::new(Site { live: playground::live_json(&file, &opts), playground });
         let watcher = std::thread::Builder::new()
             .name("preview-watch".into())
             .spawn(move || {
                 crate::watch::watch(|| {
-                    let (bundle, text, watched) = compile(&file, &opts);
+                    let (bundle, text, watched) = compile_for(&file, &opts, with_source);
                     eprint!("{text}");
                     let code = if bundle.ok { 0 } else { crate::run::EXIT_ERROR };
                     p.publish(bundle.to_json());
@@ -149,9 +167,10 @@ impl Server {
                 break;
             }
             let published = published.clone();
+            let site = site.clone();
             let port = self.port;
             // An event stream holds its thread for as long as the tab is open.
-            let _ = std::thread::Builder::new().name("preview-request".into()).spawn(move || answer(request, port, &published));
+            let _ = std::thread::Builder::new().name("preview-request".into()).spawn(move || answer(request, port, &published, &site));
         }
         match watcher.join() {
             Ok(Err(e)) => Err(e),
@@ -160,7 +179,14 @@ impl Server {
     }
 }
 
-fn answer(request: tiny_http::Request, port: u16, published: &Published) {
+/// What is served besides the built-in page and the bundles.
+struct Site {
+    /// `/playground/live.json`.
+    live: String,
+    playground: Option<Playground>,
+}
+
+fn answer(request: tiny_http::Request, port: u16, published: &Published, site: &Site) {
     let host = request.headers().iter().find(|h| h.field.equiv("Host")).map(|h| h.value.as_str().to_string());
     let get = matches!(request.method(), tiny_http::Method::Get | tiny_http::Method::Head);
     let r = route(get, request.url(), host.as_deref(), port);
@@ -169,6 +195,7 @@ fn answer(request: tiny_http::Request, port: u16, published: &Published) {
         let no_store = tiny_http::Header::from_bytes("Cache-Control", "no-store").expect("a valid header");
         let _ = request.respond(tiny_http::Response::from_data(body).with_status_code(status).with_header(header).with_header(no_store));
     };
+    let not_built = |request| respond(request, 404, "text/plain; charset=utf-8", b"no playground is served: build it with scripts/build-playground.sh, or give --playground DIR\n".to_vec());
     match r {
         Route::Refused(status, why) => respond(request, status, "text/plain; charset=utf-8", format!("{why}\n").into_bytes()),
         Route::Static(name) => match routes::asset(name) {
@@ -180,6 +207,16 @@ fn answer(request: tiny_http::Request, port: u16, published: &Published) {
             (_, json) => respond(request, 200, "application/json", json.as_bytes().to_vec()),
         },
         Route::Events => stream(request, published),
+        Route::Playground(name) => match site.playground.as_ref().and_then(|p| p.file(name)) {
+            Some((kind, body)) => respond(request, 200, kind, body.to_vec()),
+            None => not_built(request),
+        },
+        Route::Live if site.playground.is_some() => respond(request, 200, "application/json", site.live.clone().into_bytes()),
+        Route::Live => not_built(request),
+        Route::Redirect(to) => {
+            let location = tiny_http::Header::from_bytes("Location", to).expect("a valid header");
+            let _ = request.respond(tiny_http::Response::empty(301).with_header(location));
+        }
     }
 }
 

@@ -21,6 +21,12 @@ pub enum Route {
     Bundle,
     /// The Server-Sent Events stream of bundles.
     Events,
+    /// A file of the built playground, by its name in [`super::playground::FILES`].
+    Playground(&'static str),
+    /// `/playground/live.json`: the page is under a preview server.
+    Live,
+    /// `/playground` without its slash: the page's relative URLs need it.
+    Redirect(&'static str),
     /// An error status and why.
     Refused(u16, &'static str),
 }
@@ -47,6 +53,13 @@ pub fn route(get: bool, url: &str, host: Option<&str>, port: u16) -> Route {
         "/" => Route::Static("index.html"),
         "/bundle.json" => Route::Bundle,
         "/events" => Route::Events,
+        "/playground" => Route::Redirect("/playground/"),
+        "/playground/" => Route::Playground("index.html"),
+        "/playground/live.json" => Route::Live,
+        _ if path.starts_with("/playground/") => match super::playground::FILES.iter().find(|(name, _)| path["/playground/".len()..] == **name) {
+            Some((name, _)) => Route::Playground(name),
+            None => Route::Refused(404, "not found"),
+        },
         _ => match ASSETS.iter().find(|(name, _, _)| path[1..] == **name) {
             Some((name, _, _)) => Route::Static(name),
             None => Route::Refused(404, "not found"),
@@ -77,6 +90,10 @@ mod tests {
         assert_eq!(route(true, "/draw.js?v=2", H, 8000), Route::Static("draw.js"));
         assert_eq!(route(true, "/bundle.json", H, 8000), Route::Bundle);
         assert_eq!(route(true, "/events", Some("localhost:8000"), 8000), Route::Events);
+        assert_eq!(route(true, "/playground/", H, 8000), Route::Playground("index.html"));
+        assert_eq!(route(true, "/playground/umbrac_web_bg.wasm", H, 8000), Route::Playground("umbrac_web_bg.wasm"));
+        assert_eq!(route(true, "/playground/live.json?x", H, 8000), Route::Live);
+        assert_eq!(route(true, "/playground", H, 8000), Route::Redirect("/playground/"));
         for (name, _, _) in ASSETS {
             assert!(asset(name).is_some_and(|(_, b)| !b.is_empty()), "{name}");
         }
@@ -84,7 +101,7 @@ mod tests {
 
     #[test]
     fn nothing_else_is() {
-        for url in ["/../Cargo.toml", "/%2e%2e/Cargo.toml", "/..%2fCargo.toml", "/draw.js/../../x", "//etc/passwd", "/etc/passwd", "/web/preview/draw.js", "\\..\\x", "http://evil/", "/index.html%00"] {
+        for url in ["/../Cargo.toml", "/%2e%2e/Cargo.toml", "/..%2fCargo.toml", "/draw.js/../../x", "//etc/passwd", "/etc/passwd", "/web/preview/draw.js", "\\..\\x", "http://evil/", "/index.html%00", "/playground/../Cargo.toml", "/playground/umbrac_web.js", "/playground/pkg/umbrac_web.js", "/playground//etc/passwd", "/playground/index.html/", "/playground/draw.js", "/main.js"] {
             assert!(matches!(route(true, url, H, 8000), Route::Refused(403 | 404, _)), "{url}");
         }
         assert!(matches!(route(false, "/", H, 8000), Route::Refused(405, _)));

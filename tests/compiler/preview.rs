@@ -76,3 +76,75 @@ fn a_missing_file_is_an_error_not_a_server() {
     assert_eq!(out.status.code(), Some(1));
     assert!(String::from_utf8_lossy(&out.stderr).contains("no/such/file.das"));
 }
+
+/// A folder standing for a built playground: each of its six files says
+/// its own name; beside them, files no URL may reach.
+fn fake_playground(dir: &std::path::Path) -> std::path::PathBuf {
+    let pg = dir.join("pg");
+    std::fs::create_dir_all(pg.join("pkg")).unwrap();
+    for name in ["index.html", "style.css", "main.js", "worker.js", "umbrac_web_bg.wasm", "examples.json"] {
+        std::fs::write(pg.join(name), format!("PLAYGROUND {name}")).unwrap();
+    }
+    std::fs::write(pg.join("umbrac_web.js"), "SECRET glue").unwrap();
+    std::fs::write(pg.join("pkg/umbrac_web.js"), "SECRET pkg").unwrap();
+    std::fs::write(pg.join("secret.txt"), "SECRET").unwrap();
+    pg
+}
+
+#[test]
+fn with_a_playground_it_serves_its_files_and_the_file_s_text_and_nothing_else() {
+    let (dir, _) = server();
+    let pg = fake_playground(dir.path());
+    let s = PreviewServer::start_with(&dir.path().join("p.das"), &[std::ffi::OsStr::new("--playground"), pg.as_os_str()]);
+    let host = s.host();
+    assert!(s.get("/playground/", &host).1.contains("PLAYGROUND index.html"));
+    for name in ["index.html", "style.css", "main.js", "worker.js", "umbrac_web_bg.wasm", "examples.json"] {
+        let (status, body) = s.get(&format!("/playground/{name}"), &host);
+        assert_eq!((status, body.as_str()), (200, format!("PLAYGROUND {name}").as_str()));
+    }
+    assert_eq!(s.get("/playground", &host).0, 301);
+    let (status, live) = s.get("/playground/live.json", &host);
+    assert_eq!(status, 200);
+    let live: serde_json::Value = serde_json::from_str(&live).unwrap();
+    assert!(live["file"].as_str().unwrap().ends_with("p.das") && live["events"] == "/events", "{live}");
+    for target in [
+        "/playground/secret.txt",
+        "/playground/umbrac_web.js",
+        "/playground/pkg/umbrac_web.js",
+        "/playground/../secret.txt",
+        "/playground/%2e%2e/secret.txt",
+        "/playground/..%2fsecret.txt",
+        "/playground/p.das",
+        "/playground//etc/passwd",
+        "/playground/index.html/../secret.txt",
+    ] {
+        let (status, body) = s.get(target, &host);
+        assert!(status == 403 || status == 404, "{target}: {status}");
+        assert!(!body.contains("SECRET") && !body.contains("root:"), "{target}: {body}");
+    }
+    assert_eq!(s.get("/playground/", &format!("evil.example:{}", s.port)).0, 403);
+    // The bundle carries the program's text for the editor.
+    let started = std::time::Instant::now();
+    let bundle = loop {
+        let (status, body) = s.get("/bundle.json", &host);
+        if status != 503 || started.elapsed().as_secs() > 30 {
+            break body;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(50));
+    };
+    let json: serde_json::Value = serde_json::from_str(&bundle).expect("the bundle is JSON");
+    assert_eq!(json["source"]["text"], PROGRAM, "{json}");
+    // Every default output, for the playground's panels.
+    assert!(json["files"].as_array().unwrap().iter().any(|f| f["target"] == "spirv"), "{json}");
+}
+
+#[test]
+fn a_folder_that_is_not_a_built_playground_is_an_error() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("p.das");
+    std::fs::write(&file, PROGRAM).unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_umbrac")).arg("preview").arg("--playground").arg(dir.path()).arg(&file).output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("is not a built playground") && err.contains(&dir.path().display().to_string()), "{err}");
+}

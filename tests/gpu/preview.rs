@@ -261,3 +261,88 @@ fn every_colour_output_and_the_depth_of_a_g_buffer_are_viewable() {
         assert!(share <= TUTORIAL_AGREEMENT, "depth: {:.2}% of the pixels differ: {}", share * 100.0, s["diff"]);
     }
 }
+
+/// The built playground (scripts/build-playground.sh, target/playground/),
+/// or a skip (a failure under `CI=true`) without it.
+fn built_playground() -> Option<PathBuf> {
+    let dir = Path::new(env!("CARGO_MANIFEST_DIR")).join("target/playground");
+    if dir.join("umbrac_web_bg.wasm").is_file() {
+        return Some(dir);
+    }
+    skip(format!("no built playground at {} (bash scripts/build-playground.sh)", dir.display()));
+    None
+}
+
+/// The main file's edits: the picture mirrored in x; its channels turned
+/// around (an edit typed in the page, compiled in its WebAssembly with the
+/// include the server sent); an error on line 8.
+const MAIN_MIRRORED: &str = "#include \"tint.das\"\nvar @uniform u_blue : float = 0.25\nvar @inout v_uv : float2\nvar @out f_color : float4\n\n[fragment_program]\ndef preview_fs {\n    f_color = float4(tint(float2(1.0 - v_uv.x, v_uv.y)), 1.0)\n}\n";
+const MAIN_TYPED: &str = "#include \"tint.das\"\nvar @uniform u_blue : float = 0.25\nvar @inout v_uv : float2\nvar @out f_color : float4\n\n[fragment_program]\ndef preview_fs {\n    f_color = float4(tint(float2(1.0 - v_uv.x, v_uv.y)).zyx, 1.0)\n}\n";
+const MAIN_BROKEN: &str = "#include \"tint.das\"\nvar @uniform u_blue : float = 0.25\nvar @inout v_uv : float2\nvar @out f_color : float4\n\n[fragment_program]\ndef preview_fs {\n    f_color = float4(tint(v_uv) * nope, 1.0)\n}\n";
+
+/// `umbrac preview FILE` serves the playground with FILE loaded: the
+/// editor holds the file's text and the server's bundle is drawn; a save
+/// on disk reaches the editor and the picture without a reload; an edit
+/// typed in the page compiles there (its include from the server's
+/// bundle) and draws; a broken save is marked in the editor at its line.
+#[test]
+fn the_playground_under_preview_holds_the_file_and_follows_its_saves() {
+    if !browser_ready() {
+        return;
+    }
+    let Some(playground) = built_playground() else { return };
+    let dir = tempfile::tempdir().unwrap();
+    let main = dir.path().join("main.das");
+    std::fs::write(&main, MAIN).unwrap();
+    std::fs::write(dir.path().join("tint.das"), TINT).unwrap();
+    let out = dir.path().join("out");
+    std::fs::create_dir(&out).unwrap();
+    let server = PreviewServer::start_with(&main, &[std::ffi::OsStr::new("--playground"), playground.as_os_str()]);
+    let steps = serde_json::json!([
+        { "save": main, "text": MAIN_MIRRORED },
+        { "type": MAIN_TYPED },
+        { "save": main, "text": MAIN_BROKEN },
+    ]);
+    let steps_file = dir.path().join("steps.json");
+    std::fs::write(&steps_file, steps.to_string()).unwrap();
+    let status = Command::new("node")
+        .arg(web_dir().join("playground/live-drive.mjs"))
+        .arg(format!("{}playground/", server.url()))
+        .arg(&out)
+        .arg(&steps_file)
+        .stdin(Stdio::null())
+        .status()
+        .expect("node runs");
+    let result: serde_json::Value = serde_json::from_slice(&std::fs::read(out.join("result.json")).expect("the driver writes its result")).unwrap();
+    assert!(status.success(), "the driver failed: {result}");
+    let read = |name: String| std::fs::read(out.join(name)).ok();
+    let step = |i: usize| {
+        let s = result["steps"][i].clone();
+        Step { webgl2: read(format!("{i}.webgl2.rgba")), webgpu: read(format!("{i}.webgpu.rgba")), state: s }
+    };
+
+    let s0 = step(0);
+    assert_eq!(s0.state["editor"], MAIN, "the editor holds the file: {}", s0.state);
+    assert_eq!(s0.state["ok"], true, "{}", s0.state);
+    assert_eq!(s0.state["errors"]["webgl2"], serde_json::Value::Null, "{}", s0.state);
+    check_picture(&s0, "the file's picture", |u, v| [u, v, 0.25]);
+
+    let s1 = step(1);
+    assert_eq!(s1.state["editor"], MAIN_MIRRORED, "the save reached the editor: {}", s1.state);
+    assert_eq!(s1.state["notReloaded"], true);
+    check_picture(&s1, "after the save", |u, v| [1.0 - u, v, 0.25]);
+
+    let s2 = step(2);
+    assert_eq!(s2.state["editor"], MAIN_TYPED);
+    assert_eq!(s2.state["ok"], true, "the typed edit compiles in the page with the include: {}", s2.state);
+    assert_eq!(s2.state["live"]["received"], s1.state["live"]["received"], "compiled in the page, not by the server");
+    check_picture(&s2, "after the typed edit", |u, v| [0.25, v, 1.0 - u]);
+
+    let s3 = step(3);
+    assert_eq!(s3.state["editor"], MAIN_BROKEN, "the broken save reached the editor: {}", s3.state);
+    assert_eq!(s3.state["ok"], false);
+    let marks = s3.state["marks"].as_array().unwrap();
+    assert!(marks.iter().any(|m| m["line"] == 8 && m["severity"] == "error" && m["message"].as_str().unwrap().contains("nope")), "{marks:?}");
+    // The last good program still draws: the typed edit's picture.
+    check_picture(&s3, "after the broken save", |u, v| [0.25, v, 1.0 - u]);
+}

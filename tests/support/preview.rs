@@ -13,8 +13,14 @@ pub struct PreviewServer {
 impl PreviewServer {
     /// Starts `umbrac preview FILE --port 0` and reads the URL it prints.
     pub fn start(file: &Path) -> PreviewServer {
+        Self::start_with(file, &[])
+    }
+
+    /// [`Self::start`] with more arguments (`--playground DIR`).
+    pub fn start_with(file: &Path, more: &[&std::ffi::OsStr]) -> PreviewServer {
         let mut child = Command::new(env!("CARGO_BIN_EXE_umbrac"))
             .args(["preview", "--port", "0"])
+            .args(more)
             .arg(file)
             .stdin(Stdio::null())
             .stdout(Stdio::piped())

@@ -2,6 +2,12 @@
 // WebAssembly (worker.js), every output side by side, examples, share
 // links, and the live preview (preview.js), which each good bundle is
 // handed to. docs/preview.md, "Playground".
+//
+// Served by `umbrac preview FILE` (under /playground/, with a
+// `live.json` beside it), the page holds FILE: each bundle the server
+// compiles from disk (its Server-Sent Events) puts the file's text in the
+// editor and is shown and drawn as it is; edits typed here compile in the
+// page's WebAssembly as anywhere else.
 import { EditorView, basicSetup } from 'codemirror';
 import { EditorState } from '@codemirror/state';
 import { StreamLanguage } from '@codemirror/language';
@@ -26,6 +32,12 @@ let waiting = null; // the newest request not yet sent
 let nextId = 1;
 let docVersion = 0;
 let lastGood = null;
+// Results of compiles asked for before this id are dropped: the file was
+// reloaded from disk since.
+let dropBefore = 0;
+// Set while the editor's text is replaced by the file's from disk, so
+// that the change does not start a compile of its own.
+let fromDisk = false;
 
 function startWorker() {
   worker = new Worker('worker.js', { type: 'module' });
@@ -64,6 +76,10 @@ function onResult(msg) {
   const version = running.version;
   running = null;
   if (msg.dead) startWorker();
+  if (msg.id < dropBefore) {
+    pump();
+    return;
+  }
   if (msg.error) {
     state.lastVersion = version;
     showStatus(msg.error, 'error');
@@ -79,21 +95,74 @@ function onResult(msg) {
     showOutputs(bundle);
     const errors = bundle.diagnostics.filter((d) => d.severity === 'error' || d.severity === 'bug').length;
     showStatus(bundle.ok ? `compiled in ${msg.ms.toFixed(1)} ms` : `${errors} error${errors === 1 ? '' : 's'} (${msg.ms.toFixed(1)} ms)`, bundle.ok ? 'ok' : 'error');
-    if (bundle.ok) {
-      lastGood = bundle;
-      previewPanel.dispatchEvent(new CustomEvent('umbrac-bundle', { detail: bundle }));
-    }
+    if (bundle.ok) draw(bundle);
   }
   pump();
+}
+
+function draw(bundle) {
+  lastGood = bundle;
+  previewPanel.dispatchEvent(new CustomEvent('umbrac-bundle', { detail: bundle }));
+}
+
+// ---- under `umbrac preview`: the file on disk ---------------------------------
+
+// live.json's contents when served by `umbrac preview`, else null.
+let live = null;
+
+async function findLive() {
+  try {
+    const r = await fetch('live.json', { cache: 'no-store' });
+    return r.ok ? await r.json() : null;
+  } catch (_) {
+    return null;
+  }
+}
+
+// A bundle the server compiled from disk: its text replaces the editor's
+// (unsaved edits typed here give way to the saved file, as in an editor
+// that reloads a file changed on disk), and it is shown and drawn as is.
+function fromServer(bundle, id) {
+  const src = bundle.source || {};
+  fileName = src.name || live.file;
+  exampleFiles = src.files || {};
+  clearTimeout(timer);
+  waiting = null;
+  dropBefore = nextId;
+  if (typeof src.text === 'string' && src.text !== view.state.doc.toString()) {
+    fromDisk = true;
+    try { setSource(src.text); } finally { fromDisk = false; }
+  }
+  state.lastVersion = docVersion;
+  state.lastBundle = bundle;
+  live.received = id;
+  showDiagnostics(bundle);
+  showOutputs(bundle);
+  const errors = bundle.diagnostics.filter((d) => d.severity === 'error' || d.severity === 'bug').length;
+  showStatus(bundle.ok ? `${fileName}: compiled by umbrac preview (compile ${id})` : `${fileName}: ${errors} error${errors === 1 ? '' : 's'} (compile ${id})`, bundle.ok ? 'ok' : 'error');
+  if (bundle.ok) draw(bundle);
+}
+
+function startLive(cfg) {
+  live = { file: cfg.file, received: 0 };
+  fileName = cfg.file;
+  defines = cfg.defines || {};
+  if (cfg.conventions) $('conventions').value = cfg.conventions;
+  $('examples').value = '';
+  showStatus(`waiting for umbrac preview's compile of ${cfg.file}`, 'warn');
+  const events = new EventSource(cfg.events);
+  events.addEventListener('bundle', (e) => fromServer(JSON.parse(e.data), +e.lastEventId));
 }
 
 // ---- options ------------------------------------------------------------
 
 let fileName = 'playground.das';
 let exampleFiles = {};
+// `-D`s of the preview server's compiles, for the page's own.
+let defines = {};
 
 function options() {
-  return { conventions: $('conventions').value, files: exampleFiles };
+  return { conventions: $('conventions').value, files: exampleFiles, defines };
 }
 
 // ---- diagnostics in the editor --------------------------------------------
@@ -283,6 +352,7 @@ const view = new EditorView({
       EditorView.updateListener.of((u) => {
         if (!u.docChanged) return;
         docVersion += 1;
+        if (fromDisk) return;
         clearTimeout(timer);
         timer = setTimeout(request, DEBOUNCE_MS);
       }),
@@ -307,6 +377,8 @@ window.umbracPlayground = {
   source: () => view.state.doc.toString(),
   shareLink,
   settled: () => running === null && waiting === null && state.lastVersion === docVersion,
+  // Under `umbrac preview`: { file, received (the last bundle's number) }; else null.
+  get live() { return live; },
   // The editor's own lint marks: [{ line, severity, message }].
   marks: () => {
     const out = [];
@@ -325,7 +397,11 @@ async function main() {
     $('share-link').value = link;
     try { await navigator.clipboard.writeText(link); showStatus('share link copied', 'ok'); } catch (_) { /* no clipboard: the field shows it */ }
   };
-  await loadExamples();
+  const [cfg] = await Promise.all([findLive(), loadExamples()]);
+  if (cfg) {
+    startLive(cfg);
+    return;
+  }
   const start = fromHash();
   if (start && start.source !== undefined) setSource(start.source);
   else if (start && start.example) openExample(start.example);
