@@ -66,7 +66,9 @@ const RESERVED: &[&str] = &[
 pub fn is_reserved(name: &str) -> bool {
     // Asked for every name of every GL module: a set, not a scan of the list.
     static SET: std::sync::OnceLock<rustc_hash::FxHashSet<&'static str>> = std::sync::OnceLock::new();
-    name.starts_with("gl_") || SET.get_or_init(|| RESERVED.iter().copied().collect()).contains(name)
+    // GLSL ES reserves every name holding `__`, and WebGL2 (ANGLE) refuses
+    // them; desktop GLSL only warns.
+    name.starts_with("gl_") || name.contains("__") || SET.get_or_init(|| RESERVED.iter().copied().collect()).contains(name)
 }
 
 /// The GLSL name of a source name: itself, or itself followed by `_`,
@@ -78,11 +80,16 @@ pub fn glsl_name(source: &str, taken: impl Fn(&str) -> bool) -> String {
     if free(&base) {
         return base;
     }
-    let under = [base.as_str(), "_"].concat();
-    if free(&under) {
-        return under;
+    // No name tried may hold `__`: after a base ending in `_` come the
+    // digits alone (`input_1`, not `input__`).
+    let sep = if base.ends_with('_') { "" } else { "_" };
+    if sep == "_" {
+        let under = [base.as_str(), "_"].concat();
+        if free(&under) {
+            return under;
+        }
     }
-    (1u32..).map(|k| format!("{base}_{k}")).find(|n| free(n)).expect("a free name")
+    (1u32..).map(|k| format!("{base}{sep}{k}")).find(|n| free(n)).expect("a free name")
 }
 
 /// The first name [`glsl_name`] tries for `source`, which every other it
@@ -92,10 +99,22 @@ fn glsl_base(source: &str) -> std::borrow::Cow<'_, str> {
     // starts so, but the rule must end for any name. Every name tried for
     // a source name starting as the writer's own (`_group_0_binding_1_fs`,
     // `const_float`) is one of those: it would never end.
-    if ["gl_", "_group_", "_immediates_binding_", "const_"].iter().any(|p| source.starts_with(p)) {
-        ["u", source].concat().into()
+    let source: std::borrow::Cow<'_, str> = if source.contains("__") {
+        // Runs of `_` become one: a name holding `__` is reserved.
+        let mut s = String::with_capacity(source.len());
+        for c in source.chars() {
+            if !(c == '_' && s.ends_with('_')) {
+                s.push(c);
+            }
+        }
+        s.into()
     } else {
         source.into()
+    };
+    if ["gl_", "_group_", "_immediates_binding_", "const_"].iter().any(|p| source.starts_with(p)) {
+        ["u", &source].concat().into()
+    } else {
+        source
     }
 }
 
@@ -482,6 +501,12 @@ mod tests {
         assert_eq!(glsl_name("sample", |_| false), "sample_");
         assert_eq!(glsl_name("gl_x", |_| false), "ugl_x");
         assert!(is_reserved("gl_Thing") && !is_reserved("a_b"));
+        // `__` is reserved in GLSL ES (WebGL2 refuses it): never made, and
+        // a source name holding it is given one without.
+        assert!(is_reserved("a__b"));
+        assert_eq!(glsl_name("input_", |n| n == "input_"), "input_1");
+        assert_eq!(glsl_name("my__u", |_| false), "my_u");
+        assert_eq!(glsl_name("a___b_", |n| n == "a_b_"), "a_b_1");
     }
 
     #[test]
@@ -550,6 +575,6 @@ mod tests {
         // the names picked before; the rest as `glsl_name` has them.
         let wanted = ["light_ubo", "data_ssbo", "taken", "input", "input_", "vk_location1", "vk_location1", "a_pos", "tint"];
         let picked = pick_names(&[&module], &["taken"], &wanted);
-        assert_eq!(picked, ["light_ubo_", "data_ssbo_", "taken_", "input_", "input__", "vk_location1", "vk_location1_", "a_pos", "tint_1"]);
+        assert_eq!(picked, ["light_ubo_", "data_ssbo_", "taken_", "input_", "input_1", "vk_location1", "vk_location1_", "a_pos", "tint_1"]);
     }
 }

@@ -192,7 +192,7 @@ fn varyings_keep_off_every_name_the_gl_text_holds() {
         [vertex_shader]\ndef vs {\n    n_out = vk_location1\n    gl_Position = float4(vk_location1, 0.0, 1.0)\n}\n\
         var @in @location = 1 f_n : float2\nvar @out @location = 0 o_color : float4\n\
         [fragment_shader]\ndef fs {\n    o_color = float4(f_n, 0.0, 1.0)\n}\n";
-    for (name, src, want) in [("block", block, &["a_pos", "light_ubo_"][..]), ("underscored", underscored, &["a_pos", "input_", "input__"]), ("located", located, &["vk_location1_", "vk_location1"])] {
+    for (name, src, want) in [("block", block, &["a_pos", "light_ubo_"][..]), ("underscored", underscored, &["a_pos", "input_", "input_1"]), ("located", located, &["vk_location1_", "vk_location1"])] {
         let c = accepted_everywhere(name, src);
         let vs = c.reflection.entry_points.iter().find(|e| e.name == "vs").unwrap();
         let names: Vec<&str> = vs.inputs.iter().chain(&vs.outputs).map(|io| io.glsl_name.as_str()).collect();
@@ -203,6 +203,28 @@ fn varyings_keep_off_every_name_the_gl_text_holds() {
         }
         assert_eq!(names, want, "{name}");
     }
+}
+
+/// GLSL ES reserves every identifier holding `__`, and WebGL2 (ANGLE)
+/// refuses a shader with one ("identifiers containing two consecutive
+/// underscores are reserved"), though glslang only warns. The name picker
+/// made `input__` for a varying `input_` beside `input`, and a source name
+/// holding `__` (a uniform, a varying) was written as it is. No GL output
+/// may hold one; the manifest gives the names the GL host binds by.
+#[test]
+fn no_gl_name_holds_a_double_underscore() {
+    let src = "var @uniform my__u : float\nvar @in a__pos : float3\nvar @inout input : float3\nvar @inout input_ : float3\nvar @inout v__n : float3\nvar @out f_color : float4\n\
+        [vertex_program]\ndef vs {\n    input = a__pos\n    input_ = a__pos * my__u\n    v__n = a__pos\n    gl_Position = float4(a__pos, 1.0)\n}\n\
+        [fragment_program]\ndef fs {\n    f_color = float4(input + input_ + v__n * my__u, 1.0)\n}\n";
+    let c = accepted_everywhere("double_underscore", src);
+    for a in c.artifacts.iter().filter(|a| a.target.is_some_and(|t| t.is_glsl())) {
+        assert!(!a.text().contains("__"), "{} holds `__`:\n{}", a.file_name, a.text());
+    }
+    let vs = c.reflection.entry_points.iter().find(|e| e.name == "vs").unwrap();
+    let names: Vec<&str> = vs.inputs.iter().chain(&vs.outputs).map(|io| io.glsl_name.as_str()).collect();
+    assert_eq!(names, ["a_pos", "input_", "input_1", "v_n"]);
+    let json = String::from_utf8(c.artifacts.iter().find(|a| a.target.is_none()).unwrap().contents.clone()).unwrap();
+    assert!(json.contains("\"glsl_name\": \"my_u\""), "the manifest names the uniform's GL name:\n{json}");
 }
 
 /// A vertex and a compute entry point without a fragment one were linked
