@@ -66,16 +66,10 @@ pub fn programs_under(dir: &Path) -> Result<Vec<Found>, ListError> {
             let meta = std::fs::metadata(&path);
             let is_das = path.extension().is_some_and(|x| x == "das");
             match meta {
-                Ok(m) if m.is_dir() => {
-                    if name != "include" {
-                        pending.push(path);
-                    }
-                }
-                Ok(m) if m.is_file() => {
-                    if is_das {
-                        found.push(path);
-                    }
-                }
+                Ok(m) if m.is_dir() && name != "include" => pending.push(path),
+                Ok(m) if m.is_dir() => {}
+                Ok(m) if m.is_file() && is_das => found.push(path),
+                Ok(m) if m.is_file() => {}
                 Ok(_) if is_das => return Err(err(&path, "is not a regular file (a FIFO, socket or device?)".into())),
                 Err(e) if is_das => return Err(err(&path, format!("cannot read: {e}"))),
                 _ => {}

@@ -248,7 +248,7 @@ mod tests {
         let rec = Recorder::default();
         let pre = crate::preprocess_file(&main, &opts);
         assert!(!pre.has_errors());
-        assert_eq!(pre.probed(), [probe.clone()]);
+        assert_eq!(pre.probed(), std::slice::from_ref(&probe));
         rec.unit(1, Key([1; 32]), &pre);
         rec.unit(0, Key([0; 32]), &pre);
         let m = Recorder::finish(rec, 2).unwrap();

@@ -199,7 +199,7 @@ fn member(module: &Module, layouter: &Layouter, name: String, ty_name: String, t
 
 /// `v`, a value of type `ty`, as the 32-bit words of its layout (`out`
 /// holds `ty`'s size; `at` is a word index into it).
-fn value_words(module: &Module, layouter: &Layouter, ty: Handle<Type>, v: &ConstValue, out: &mut [u32], at: usize) -> Result<(), String> {
+fn value_words(module: &Module, ty: Handle<Type>, v: &ConstValue, out: &mut [u32], at: usize) -> Result<(), String> {
     let word = |v: &ConstValue| match *v {
         ConstValue::Float(f) => Ok((f as f32).to_bits()),
         ConstValue::Int(i) => Ok(i as i32 as u32),
@@ -237,13 +237,13 @@ fn value_words(module: &Module, layouter: &Layouter, ty: Handle<Type>, v: &Const
         }
         TypeInner::Array { base, stride, .. } => {
             for (i, e) in parts(v)?.iter().enumerate() {
-                value_words(module, layouter, *base, e, out, at + i * *stride as usize / 4)?;
+                value_words(module, *base, e, out, at + i * *stride as usize / 4)?;
             }
             Ok(())
         }
         TypeInner::Struct { members, .. } => {
             for (m, f) in members.iter().zip(parts(v)?.iter()) {
-                value_words(module, layouter, m.ty, f, out, at + m.offset as usize / 4)?;
+                value_words(module, m.ty, f, out, at + m.offset as usize / 4)?;
             }
             Ok(())
         }
@@ -271,7 +271,7 @@ fn flat_words(v: &ConstValue) -> Vec<u32> {
 /// The default words of a member of type `ty` holding `v`.
 fn default_words(module: &Module, layouter: &Layouter, ty: Handle<Type>, v: &ConstValue) -> Result<Vec<u32>, String> {
     let mut out = vec![0u32; layouter[ty].size as usize / 4];
-    value_words(module, layouter, ty, v, &mut out, 0)?;
+    value_words(module, ty, v, &mut out, 0)?;
     Ok(out)
 }
 

@@ -357,7 +357,7 @@ pub(super) fn lower_entry<'p>(m: &mut ModuleBuilder<'p>, ep: &'p sema::EntryPoin
         let ty = b.m.ty(&Ty::Scalar(Scalar::Uint));
         b.func.arguments.push(naga::FunctionArgument { name: Some("local_invocation_index".into()), ty, binding: Some(naga::Binding::BuiltIn(naga::BuiltIn::LocalInvocationIndex)) });
     }
-    b.stmts_into(&ep.func.body.as_slice(), &mut body);
+    b.stmts_into(ep.func.body.as_slice(), &mut body);
     if !matches!(body.last(), Some(naga::Statement::Return { .. })) {
         let end = Span::new(ep.func.span.end.saturating_sub(1), ep.func.span.end);
         b.entry_return(&mut body, end);

@@ -624,6 +624,44 @@ fn pack(name: &str, f: Mf, v: &ConstValue) -> Result<ConstValue, String> {
     })
 }
 
+/// A scalar conversion as the constructors `float(x)`, `int(x)`, `uint(x)`,
+/// `bool(x)` define it: int <-> uint keep the bits (two's complement);
+/// float -> int/uint truncates toward zero after clamping to the largest
+/// f32 values inside the type's range (2147483520.0, 4294967040.0; what
+/// WGSL defines and naga's WGSL and SPIR-V outputs compute; GLSL leaves
+/// out-of-range conversions undefined); to float rounds to nearest f32;
+/// to bool is `!= 0`.
+pub fn convert(c: &ConstValue, to: Scalar) -> Option<ConstValue> {
+    // To its own type: the value as it is (an `int` above 2^24 does not
+    // survive a trip through f32).
+    match (c, to) {
+        (ConstValue::Int(_), Scalar::Int) | (ConstValue::Uint(_), Scalar::Uint) | (ConstValue::Bool(_), Scalar::Bool) => return Some(c.clone()),
+        _ => {}
+    }
+    let f = match *c {
+        ConstValue::Float(f) => f,
+        ConstValue::Int(i) => i as f64,
+        ConstValue::Uint(u) => u as f64,
+        ConstValue::Bool(b) => b as u8 as f64,
+        ConstValue::Composite(_) => return None,
+    };
+    Some(match to {
+        Scalar::Float => ConstValue::Float(f as f32 as f64),
+        Scalar::Int => ConstValue::Int(match *c {
+            ConstValue::Uint(u) => u as u32 as i32 as i64,
+            // WGSL: clamp to the f32 values that fit, then truncate.
+            _ => (f as f32).clamp(-2147483648.0, 2147483520.0) as i32 as i64,
+        }),
+        Scalar::Uint => ConstValue::Uint(match *c {
+            ConstValue::Int(i) => i as i32 as u32 as u64,
+            _ => (f as f32).clamp(0.0, 4294967040.0) as u32 as u64,
+        }),
+        Scalar::Bool => ConstValue::Bool(f != 0.0),
+        // Rounded once, to nearest even (from an f32 value or an integer).
+        Scalar::Half => ConstValue::Float(half::f16::from_f64(f).to_f64()),
+    })
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -678,42 +716,4 @@ mod tests {
         let (u, _) = call("unpackSnorm4x8", &[(ConstValue::Uint(0x0000_0080), Ty::Scalar(Scalar::Uint))]).unwrap().unwrap();
         assert_eq!(components(&u)[0], ConstValue::Float(-1.0));
     }
-}
-
-/// A scalar conversion as the constructors `float(x)`, `int(x)`, `uint(x)`,
-/// `bool(x)` define it: int <-> uint keep the bits (two's complement);
-/// float -> int/uint truncates toward zero after clamping to the largest
-/// f32 values inside the type's range (2147483520.0, 4294967040.0; what
-/// WGSL defines and naga's WGSL and SPIR-V outputs compute; GLSL leaves
-/// out-of-range conversions undefined); to float rounds to nearest f32;
-/// to bool is `!= 0`.
-pub fn convert(c: &ConstValue, to: Scalar) -> Option<ConstValue> {
-    // To its own type: the value as it is (an `int` above 2^24 does not
-    // survive a trip through f32).
-    match (c, to) {
-        (ConstValue::Int(_), Scalar::Int) | (ConstValue::Uint(_), Scalar::Uint) | (ConstValue::Bool(_), Scalar::Bool) => return Some(c.clone()),
-        _ => {}
-    }
-    let f = match *c {
-        ConstValue::Float(f) => f,
-        ConstValue::Int(i) => i as f64,
-        ConstValue::Uint(u) => u as f64,
-        ConstValue::Bool(b) => b as u8 as f64,
-        ConstValue::Composite(_) => return None,
-    };
-    Some(match to {
-        Scalar::Float => ConstValue::Float(f as f32 as f64),
-        Scalar::Int => ConstValue::Int(match *c {
-            ConstValue::Uint(u) => u as u32 as i32 as i64,
-            // WGSL: clamp to the f32 values that fit, then truncate.
-            _ => (f as f32).clamp(-2147483648.0, 2147483520.0) as i32 as i64,
-        }),
-        Scalar::Uint => ConstValue::Uint(match *c {
-            ConstValue::Int(i) => i as i32 as u32 as u64,
-            _ => (f as f32).clamp(0.0, 4294967040.0) as u32 as u64,
-        }),
-        Scalar::Bool => ConstValue::Bool(f != 0.0),
-        // Rounded once, to nearest even (from an f32 value or an integer).
-        Scalar::Half => ConstValue::Float(half::f16::from_f64(f).to_f64()),
-    })
 }

@@ -646,7 +646,7 @@ fn include_depth_limit() {
     let d = Dir::new();
     // Distinct files, each including the next: no cycle, just depth.
     for i in 0..70 {
-        d.write(&format!("f{i}.das"), &format!("#include \"f{}.das\"\n", i + 1));
+        d.write(&format!("f{i}.das"), format!("#include \"f{}.das\"\n", i + 1));
     }
     d.write("f70.das", "");
     let root = d.write("main.das", "#include \"f0.das\"\nvar @out col : float4\n".to_owned() + MAIN_FS);

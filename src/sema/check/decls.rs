@@ -1016,7 +1016,7 @@ impl<'a, 'd> Checker<'a, 'd> {
         let decl: &'a ast::ConstDecl = self.const_decls.get(name)?;
         // Keys borrow the declaration's own name.
         let name: &'a str = &decl.name.name;
-        if self.const_in_progress.iter().any(|n| *n == name) {
+        if self.const_in_progress.contains(&name) {
             let d = Diagnostic::error(format!("constant `{name}` depends on itself"), use_span).with_secondary(decl.name.span, "defined here");
             self.diags.push(d);
             return None;
