@@ -2,8 +2,9 @@
 // web/preview-drive.mjs, web/playground/live-drive.mjs, test.mjs,
 // web/bench-load.mjs): the browser's launch, a page with its console
 // forwarded, pixels out of a page (window.umbracBase64) into RGBA files,
-// and a save as editors make it. (PNGs of pictures are written by the Rust
-// tests that read the RGBA, with the image crate.)
+// a save as editors make it, and a static server for the built playground.
+// (PNGs of pictures are written by the Rust tests that read the RGBA, with
+// the image crate.)
 //
 // The browser is Debian's /usr/bin/chromium (or $UMBRAC_CHROMIUM), never a
 // downloaded one, with a fresh temporary profile removed at the end.
@@ -14,7 +15,7 @@ import { tmpdir } from 'node:os';
 import { dirname, extname, join, normalize } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
-export const executablePath = process.env.UMBRAC_CHROMIUM || '/usr/bin/chromium';
+const executablePath = process.env.UMBRAC_CHROMIUM || '/usr/bin/chromium';
 
 // How long a launch or a navigation may take, and a wait for the page.
 export const LAUNCH_MS = 60000;
@@ -32,7 +33,7 @@ const FLAGS = [
 const WEBGPU = ['--enable-unsafe-webgpu'];
 
 // playwright-core from web/node_modules, whichever folder the driver is in.
-export function playwright() {
+function playwright() {
   return createRequire(join(dirname(fileURLToPath(import.meta.url)), 'package.json'))('playwright-core');
 }
 
@@ -90,16 +91,6 @@ export async function launch({ webgpu = false, quiet = [], profilePrefix = 'umbr
       rmSync(profile, { recursive: true, force: true });
     },
   };
-}
-
-// Runs `body(browser)` with a launched browser, closed whatever happens.
-export async function withChromium(options, body) {
-  const browser = await launch(options);
-  try {
-    return await body(browser);
-  } finally {
-    await browser.close();
-  }
 }
 
 // Writes RGBA bytes (a Buffer, a Uint8Array or base64 text) to `path`;
