@@ -202,9 +202,11 @@ async function main() {
     const filter = t.linear ? gl.LINEAR : gl.NEAREST;
     gl.samplerParameteri(s, gl.TEXTURE_MIN_FILTER, filter);
     gl.samplerParameteri(s, gl.TEXTURE_MAG_FILTER, filter);
-    // WebGL2 has no clamp to border: lookups outside clamp to the edge.
-    gl.samplerParameteri(s, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
-    gl.samplerParameteri(s, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
+    // WebGL2 has no clamp to border: lookups outside clamp to the edge,
+    // or repeat (a scene's pattern texture).
+    const wrap = t.repeat ? gl.REPEAT : gl.CLAMP_TO_EDGE;
+    gl.samplerParameteri(s, gl.TEXTURE_WRAP_S, wrap);
+    gl.samplerParameteri(s, gl.TEXTURE_WRAP_T, wrap);
     if (t.compare) {
       gl.samplerParameteri(s, gl.TEXTURE_COMPARE_MODE, gl.COMPARE_REF_TO_TEXTURE);
       gl.samplerParameteri(s, gl.TEXTURE_COMPARE_FUNC, gl.LEQUAL);

@@ -9,46 +9,30 @@
 // writes OUTDIR/STEP.webgl2.rgba and STEP.webgpu.rgba (rows bottom first,
 // when drawn) and, at the end, OUTDIR/result.json: per step the page's
 // state (ok, diagnostics, errors, renderers, diff, overlay shown, whether
-// the page was reloaded). WebGPU is asked for with --enable-unsafe-webgpu.
-import { chromium } from 'playwright-core';
-import { mkdtempSync, readFileSync, renameSync, rmSync, writeFileSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+// the page was reloaded). The browser (with WebGPU asked for): chromium.mjs.
+import { readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
+import { launch, saveAsEditor, writeRgba, LAUNCH_MS, WAIT } from './chromium.mjs';
 
 const [url, program, outDir, ...saves] = process.argv.slice(2);
 if (!url || !program || !outDir) {
   console.error('usage: node preview-drive.mjs URL PROGRAM OUTDIR SAVE...');
   process.exit(2);
 }
-const executablePath = process.env.UMBRAC_CHROMIUM || '/usr/bin/chromium';
-const profile = mkdtempSync(join(tmpdir(), 'umbrac-preview-'));
-const args = [
-  '--headless', '--no-sandbox', '--disable-gpu',
-  '--disable-background-networking', '--disable-component-update',
-  '--disable-sync', '--no-first-run',
-  // WebGPU on SwiftShader (docs/preview.md, "WebGPU in headless chromium").
-  '--enable-unsafe-webgpu',
-];
 
 const result = { ok: false, steps: [] };
 let browser;
 try {
-  browser = await chromium.launchPersistentContext(profile, { executablePath, args, headless: true, timeout: 60000 });
-  result.browser = browser.browser()?.version();
-  const page = await browser.newPage();
   // ANGLE's "GPU stall due to ReadPixels" is expected: the test reads pixels.
-  page.on('console', (m) => { if (!m.text().includes('GPU stall')) console.error(`[page ${m.type()}] ${m.text()}`); });
-  page.on('pageerror', (e) => console.error(`[page error] ${e.message}`));
-  await page.goto(url, { timeout: 60000 });
+  browser = await launch({ webgpu: true, quiet: ['GPU stall'], profilePrefix: 'umbrac-preview-' });
+  result.browser = browser.version;
+  const page = await browser.newPage();
+  await page.goto(url, { timeout: LAUNCH_MS });
   // A mark that a reload would lose.
   await page.evaluate(() => { window.umbracNotReloaded = true; });
   let seen = 0;
   for (let step = 0; step <= saves.length; step++) {
-    if (step > 0) {
-      // Saved as editors save: a whole new file renamed over the old one.
-      writeFileSync(`${program}.saving`, readFileSync(saves[step - 1]));
-      renameSync(`${program}.saving`, program);
-    }
+    if (step > 0) saveAsEditor(program, readFileSync(saves[step - 1]));
     // The next bundle, drawn (ok) or shown (an error): received past `seen`
     // and, when ok, drawn.
     await page.waitForFunction(
@@ -57,7 +41,7 @@ try {
         return s && s.received > seen && (s.ok === false || s.drawn === s.received);
       },
       seen,
-      { timeout: 120000, polling: 50 },
+      WAIT,
     );
     const state = await page.evaluate(async () => {
       const s = window.umbracPreview;
@@ -72,10 +56,7 @@ try {
       };
     });
     seen = state.received;
-    for (const api of ['webgl2', 'webgpu']) {
-      if (state[api]) writeFileSync(join(outDir, `${step}.${api}.rgba`), Buffer.from(state[api], 'base64'));
-      state[api] = !!state[api];
-    }
+    for (const api of ['webgl2', 'webgpu']) state[api] = writeRgba(join(outDir, `${step}.${api}.rgba`), state[api]);
     result.steps.push(state);
     // UMBRAC_PREVIEW_CONTROL=NAME=VALUE: after the first picture, the first
     // slider of NAME's control is moved to VALUE as a user would, and the
@@ -86,7 +67,7 @@ try {
       const slider = page.locator('fieldset.control', { has: page.locator(`legend:text-matches("^${name} :")`) }).locator('input[type=range]').first();
       await slider.evaluate((el, v) => { el.value = v; el.dispatchEvent(new Event('input', { bubbles: true })); }, value);
       const snap = await page.evaluate(() => window.umbracSnapshot());
-      for (const api of ['webgl2', 'webgpu']) if (snap[api]) writeFileSync(join(outDir, `control.${api}.rgba`), Buffer.from(snap[api], 'base64'));
+      for (const api of ['webgl2', 'webgpu']) writeRgba(join(outDir, `control.${api}.rgba`), snap[api]);
       result.control = { name, value, diff: snap.diff };
     }
   }
@@ -94,8 +75,7 @@ try {
 } catch (e) {
   result.error = `driving chromium: ${e.message}`;
 } finally {
-  if (browser) await browser.close().catch(() => {});
-  rmSync(profile, { recursive: true, force: true });
+  if (browser) await browser.close();
 }
 writeFileSync(join(outDir, 'result.json'), JSON.stringify(result, null, 1));
 process.exit(result.ok ? 0 : 1);

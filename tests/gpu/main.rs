@@ -28,6 +28,8 @@ mod language_f;
 mod features_l;
 #[cfg(feature = "render")]
 mod numerics;
+#[cfg(all(feature = "preview", feature = "render"))]
+mod page_vs_render;
 #[cfg(feature = "preview")]
 mod preview;
 #[cfg(feature = "render")]

@@ -35,7 +35,7 @@ fn web_dir() -> PathBuf {
 }
 
 /// Whether node, chromium and playwright-core are here (else skipped).
-fn browser_ready() -> bool {
+pub(crate) fn browser_ready() -> bool {
     let chromium = std::env::var_os("UMBRAC_CHROMIUM").map_or_else(|| PathBuf::from("/usr/bin/chromium"), PathBuf::from);
     let node = Command::new("node").arg("--version").output().is_ok_and(|o| o.status.success());
     let playwright = web_dir().join("node_modules/playwright-core/package.json").is_file();
@@ -52,10 +52,10 @@ fn browser_ready() -> bool {
 
 /// The page's state after each step (the first picture, then one per save)
 /// and its pictures, rows bottom first.
-struct Step {
-    state: serde_json::Value,
-    webgl2: Option<Vec<u8>>,
-    webgpu: Option<Vec<u8>>,
+pub(crate) struct Step {
+    pub(crate) state: serde_json::Value,
+    pub(crate) webgl2: Option<Vec<u8>>,
+    pub(crate) webgpu: Option<Vec<u8>>,
 }
 
 fn drive(server: &PreviewServer, saved: &Path, saves: &[&str], out: &Path) -> Vec<Step> {
@@ -64,7 +64,7 @@ fn drive(server: &PreviewServer, saved: &Path, saves: &[&str], out: &Path) -> Ve
 
 /// `query`: the page's (docs/preview.md); `control`: NAME=VALUE, a slider
 /// moved after the first picture (`control.API.rgba` in `out`).
-fn drive_with(server: &PreviewServer, query: &str, saved: &Path, saves: &[&str], out: &Path, control: Option<&str>) -> Vec<Step> {
+pub(crate) fn drive_with(server: &PreviewServer, query: &str, saved: &Path, saves: &[&str], out: &Path, control: Option<&str>) -> Vec<Step> {
     let mut files = Vec::new();
     for (i, text) in saves.iter().enumerate() {
         let f = out.join(format!("save{i}.das"));

@@ -12,10 +12,9 @@
 // comparison, whether the page was reloaded) in OUTDIR/result.json and
 // the pictures as OUTDIR/STEP.webgl2.rgba, STEP.webgpu.rgba (rows bottom
 // first).
-import { chromium } from 'playwright-core';
-import { mkdtempSync, readFileSync, renameSync, rmSync, writeFileSync } from 'node:fs';
-import { tmpdir } from 'node:os';
+import { readFileSync, writeFileSync } from 'node:fs';
 import { join } from 'node:path';
+import { launch, saveAsEditor, writeRgba, LAUNCH_MS, WAIT } from '../chromium.mjs';
 
 const [url, outDir, stepsFile] = process.argv.slice(2);
 if (!url || !outDir || !stepsFile) {
@@ -23,26 +22,13 @@ if (!url || !outDir || !stepsFile) {
   process.exit(2);
 }
 const steps = JSON.parse(readFileSync(stepsFile, 'utf8'));
-const executablePath = process.env.UMBRAC_CHROMIUM || '/usr/bin/chromium';
-const profile = mkdtempSync(join(tmpdir(), 'umbrac-live-'));
-const args = [
-  '--headless', '--no-sandbox', '--disable-gpu',
-  '--disable-background-networking', '--disable-component-update',
-  '--disable-sync', '--no-first-run', '--enable-unsafe-webgpu',
-];
-const WAIT = { timeout: 120000, polling: 50 };
 
 // What the page shows now, once the preview has drawn the last bundle.
 async function record(page, step) {
   const s = await page.evaluate(async () => {
     const pg = window.umbracPlayground;
     const snap = await pg.preview.snapshot();
-    const b64 = (px) => {
-      if (!px) return null;
-      let bin = '';
-      for (let i = 0; i < px.length; i += 0x8000) bin += String.fromCharCode.apply(null, px.subarray(i, i + 0x8000));
-      return btoa(bin);
-    };
+    const b64 = window.umbracBase64;
     return {
       editor: pg.source(), live: pg.live, ok: pg.state.lastBundle ? pg.state.lastBundle.ok : null,
       marks: pg.marks(), drawn: pg.preview.drawn, errors: pg.preview.errors, diff: snap.diff,
@@ -51,21 +37,16 @@ async function record(page, step) {
       notReloaded: window.umbracNotReloaded === true,
     };
   });
-  for (const api of ['webgl2', 'webgpu']) {
-    if (s[api]) writeFileSync(join(outDir, `${step}.${api}.rgba`), Buffer.from(s[api], 'base64'));
-    s[api] = !!s[api];
-  }
+  for (const api of ['webgl2', 'webgpu']) s[api] = writeRgba(join(outDir, `${step}.${api}.rgba`), s[api]);
   return s;
 }
 
 const result = { ok: false, steps: [] };
 let browser;
 try {
-  browser = await chromium.launchPersistentContext(profile, { executablePath, args, headless: true, timeout: 60000 });
+  browser = await launch({ webgpu: true, quiet: ['GPU stall'], profilePrefix: 'umbrac-live-' });
   const page = await browser.newPage();
-  page.on('console', (m) => { if (!m.text().includes('GPU stall')) console.error(`[page ${m.type()}] ${m.text()}`); });
-  page.on('pageerror', (e) => console.error(`[page error] ${e.message}`));
-  await page.goto(url, { timeout: 60000 });
+  await page.goto(url, { timeout: LAUNCH_MS });
   await page.evaluate(() => { window.umbracNotReloaded = true; });
   // The server's first bundle, drawn.
   await page.waitForFunction(() => {
@@ -76,8 +57,7 @@ try {
   for (const [i, step] of steps.entries()) {
     const before = await page.evaluate(() => ({ received: window.umbracPlayground.live.received, drawn: window.umbracPlayground.preview.drawn }));
     if (step.save) {
-      writeFileSync(`${step.save}.saving`, step.text);
-      renameSync(`${step.save}.saving`, step.save);
+      saveAsEditor(step.save, step.text);
       await page.waitForFunction(({ before, text }) => {
         const pg = window.umbracPlayground;
         if (pg.live.received <= before.received || pg.source() !== text) return false;
@@ -97,8 +77,7 @@ try {
 } catch (e) {
   result.error = `driving chromium: ${e.message}`;
 } finally {
-  if (browser) await browser.close().catch(() => {});
-  rmSync(profile, { recursive: true, force: true });
+  if (browser) await browser.close();
 }
 writeFileSync(join(outDir, 'result.json'), JSON.stringify(result, null, 1));
 process.exit(result.ok ? 0 : 1);

@@ -8,17 +8,14 @@
 // is marked at its line and clears when fixed; a 1 MB paste leaves the page
 // answering; a share link round-trips. Chromium is /usr/bin/chromium (or
 // $UMBRAC_CHROMIUM); without it the test skips, or fails with CI=true.
-import { createServer } from 'node:http';
-import { createRequire } from 'node:module';
 import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
-import { join, normalize, dirname, extname, resolve } from 'node:path';
+import { join, resolve } from 'node:path';
 import { execFileSync } from 'node:child_process';
-import { fileURLToPath } from 'node:url';
+import { launch, missing, serveStatic } from '../chromium.mjs';
 
 const dir = process.argv[2];
 const ci = process.env.CI === 'true';
-const executablePath = process.env.UMBRAC_CHROMIUM || '/usr/bin/chromium';
 function skip(why) {
   if (ci) {
     console.error(`FAIL: ${why} (CI=true)`);
@@ -28,32 +25,15 @@ function skip(why) {
   process.exit(0);
 }
 if (!dir || !existsSync(join(dir, 'index.html'))) skip(`no built playground at ${dir} (bash scripts/build-playground.sh)`);
-if (!existsSync(executablePath)) skip(`no chromium at ${executablePath}`);
-// playwright-core is the WebGL2 consumer's (web/node_modules).
-const here = dirname(fileURLToPath(import.meta.url));
-let chromium;
-try {
-  ({ chromium } = createRequire(join(here, '..', 'package.json'))('playwright-core'));
-} catch (e) {
-  skip(`playwright-core is not installed in web/ (npm ci --prefix web): ${e.message}`);
-}
+const cannot = missing();
+if (cannot) skip(cannot);
 
 // Seconds the page may take to answer while a 1 MB paste compiles.
 const ANSWER_MS = 1000;
 const SETTLE_MS = 60000;
 
-const MIME = { '.html': 'text/html', '.js': 'text/javascript', '.css': 'text/css', '.json': 'application/json', '.wasm': 'application/wasm' };
-const server = createServer((req, res) => {
-  const path = normalize(decodeURIComponent(new URL(req.url, 'http://x').pathname)).replace(/^(\.\.[/\\])+/, '');
-  const file = join(dir, path === '/' ? 'index.html' : path);
-  if (!file.startsWith(normalize(dir)) || !existsSync(file)) {
-    res.writeHead(404).end();
-    return;
-  }
-  res.writeHead(200, { 'content-type': MIME[extname(file)] || 'application/octet-stream' }).end(readFileSync(file));
-});
-await new Promise((r) => server.listen(0, '127.0.0.1', r));
-const base = `http://127.0.0.1:${server.address().port}/`;
+const server = await serveStatic(dir);
+const base = server.url;
 
 const failures = [];
 const results = {};
@@ -84,14 +64,10 @@ function sameInstructions(a, b) {
 
 const PROGRAM = 'var @out f_color : float4\n\n[fragment_program]\ndef main_fs {\n    f_color = float4(1.0, 0.5, 0.25, 1.0)\n}\n';
 
-const profile = mkdtempSync(join(tmpdir(), 'umbrac-playground-'));
 let browser;
 try {
-  browser = await chromium.launchPersistentContext(profile, {
-    executablePath, headless: true, timeout: 60000,
-    // WebGPU, where this chromium offers it (docs/preview.md), for the preview.
-    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update', '--disable-sync', '--no-first-run', '--enable-unsafe-webgpu'],
-  });
+  // WebGPU, where this chromium offers it (docs/preview.md), for the preview.
+  browser = await launch({ webgpu: true, quiet: ['GPU stall'], profilePrefix: 'umbrac-playground-' });
   const page = await browser.newPage();
   page.on('pageerror', (e) => failures.push(`page error: ${e.message}`));
 
@@ -208,9 +184,8 @@ try {
 } catch (e) {
   failures.push(`driving chromium: ${e.stack || e.message}`);
 } finally {
-  if (browser) await browser.close().catch(() => {});
+  if (browser) await browser.close();
   server.close();
-  rmSync(profile, { recursive: true, force: true });
 }
 if (failures.length) {
   console.error(`playground test failed:\n${failures.join('\n')}`);

@@ -56,6 +56,7 @@ async function start() {
       setError(api, e.message);
     }
   }
+  performance.mark('umbrac:renderers'); // web/bench-load.mjs reads the marks
   // Mouse by convention: pixels from the bottom left, the last click in .zw.
   for (const { canvas } of Object.values(panes)) {
     orbit.attach(canvas);
@@ -78,6 +79,7 @@ async function start() {
   events.addEventListener('bundle', (e) => {
     const generation = +e.lastEventId;
     state.received = generation;
+    performance.mark('umbrac:bundle');
     receive(JSON.parse(e.data), generation);
   });
   requestAnimationFrame(tick);
@@ -109,6 +111,7 @@ async function show(bundle, generation) {
     switching = false;
   }
   drawFrame();
+  performance.mark('umbrac:frame');
   await measure().catch((e) => { $('diff').textContent = `cannot compare: ${e.message}`; });
   state.drawn = generation;
 }

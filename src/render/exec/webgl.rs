@@ -246,7 +246,7 @@ pub fn plan_json(set: &ShaderSet, plan: &FramePlan) -> Result<(Value, Vec<(Strin
             .into_iter()
             .map(|(unit, t)| {
                 let input = &pass.textures[t];
-                json!({ "unit": unit, "target": input.target.0, "compare": input.sampling.compare, "linear": input.sampling.linear })
+                json!({ "unit": unit, "target": input.target.0, "compare": input.sampling.compare, "linear": input.sampling.linear, "repeat": input.sampling.repeat })
             })
             .collect();
         let mut draws = Vec::new();

@@ -86,13 +86,16 @@ pub struct Sampling {
     /// Clamp to a white (depth 1) border instead of the edge texels, where
     /// the consumer has it (the others clamp to the edge).
     pub border: bool,
+    /// Repeat outside 0..1 (a scene's pattern or image texture, as GL's
+    /// default wrap and the preview page do); `border` and edge otherwise.
+    pub repeat: bool,
 }
 
 impl Sampling {
     /// The tutorial's shadow lookup: linear compare, clamped to the edge.
-    pub const SHADOW: Sampling = Sampling { compare: true, linear: true, border: false };
+    pub const SHADOW: Sampling = Sampling { compare: true, linear: true, border: false, repeat: false };
     /// Plain texel reads, clamped to the edge.
-    pub const NEAREST: Sampling = Sampling { compare: false, linear: false, border: false };
+    pub const NEAREST: Sampling = Sampling { compare: false, linear: false, border: false, repeat: false };
 }
 
 /// A target a pass samples: the program's sampler `sampler` (its DSL name;

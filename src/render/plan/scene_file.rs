@@ -96,7 +96,9 @@ impl ScenePlanner {
                     return Err(format!("{label}: pass `{}` binds sampler `{sampler}`, which the program does not declare", p.name));
                 };
                 let linear = input.filter == scene::Filter::Linear;
-                textures.push(TextureInput { sampler: sampler.clone(), target: id(&input.texture), sampling: Sampling { compare: decl.comparison, linear, border: false } });
+                // A texture (pattern or image) repeats, as on the page; a target clamps.
+                let repeat = s.textures.iter().any(|t| t.name == input.texture);
+                textures.push(TextureInput { sampler: sampler.clone(), target: id(&input.texture), sampling: Sampling { compare: decl.comparison, linear, border: false, repeat } });
             }
             let mut draws = Vec::new();
             for d in &p.draws {

@@ -90,7 +90,7 @@ pub fn plan(params: &FrameParams) -> FramePlan {
         textures: vec![TextureInput {
             sampler: SHADOW_SAMPLER.into(),
             target: shadow_map,
-            sampling: Sampling { compare: true, linear: setup.shadow.filter.linear(), border },
+            sampling: Sampling { compare: true, linear: setup.shadow.filter.linear(), border, repeat: false },
         }],
         values,
         draws,

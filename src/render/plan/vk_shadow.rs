@@ -74,7 +74,7 @@ pub fn plan(params: &FrameParams) -> FramePlan {
         .map(|&name| TextureInput {
             sampler: name.into(),
             target: plan.add_texture(name, TEXTURE_SIZE, TEXTURE_SIZE, brick_texture(name)),
-            sampling: Sampling { compare: false, linear: true, border: false },
+            sampling: Sampling { compare: false, linear: true, border: false, repeat: false },
         })
         .collect();
 
@@ -110,7 +110,7 @@ pub fn plan(params: &FrameParams) -> FramePlan {
         sampler: "shadow_map".into(),
         target: shadow_map,
         // dasVulkan's shadow sampler: linear compare, white border (lit outside).
-        sampling: Sampling { compare: true, linear: true, border: true },
+        sampling: Sampling { compare: true, linear: true, border: true, repeat: false },
     }];
     textures.extend(bricks);
     plan.passes.push(Pass {

@@ -150,7 +150,7 @@ pub fn cube(vs: &str, fs: &str, t: f32, width: u32, height: u32, cull: Cull) -> 
         depth: Some(Attachment { target: depth, clear: 1.0 }),
         cull,
         depth_bias: false,
-        textures: vec![TextureInput { sampler: "tex".into(), target: tex, sampling: Sampling { compare: false, linear: true, border: false } }],
+        textures: vec![TextureInput { sampler: "tex".into(), target: tex, sampling: Sampling { compare: false, linear: true, border: false, repeat: false } }],
         values: Values::new()
             .with("view", Value::mat4(view))
             .with("proj", Value::mat4(proj))

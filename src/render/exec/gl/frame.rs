@@ -252,7 +252,13 @@ impl GlExecutor {
             let sampler = Obj::new(&self.ctx, gl.create_sampler().map_err(ExecError::Api)?);
             let raw = sampler.raw();
             let filter = if s.linear { glow::LINEAR } else { glow::NEAREST } as i32;
-            let wrap = if border { glow::CLAMP_TO_BORDER } else { glow::CLAMP_TO_EDGE } as i32;
+            let wrap = if border {
+                glow::CLAMP_TO_BORDER
+            } else if s.repeat {
+                glow::REPEAT
+            } else {
+                glow::CLAMP_TO_EDGE
+            } as i32;
             gl.sampler_parameter_i32(raw, glow::TEXTURE_MIN_FILTER, filter);
             gl.sampler_parameter_i32(raw, glow::TEXTURE_MAG_FILTER, filter);
             gl.sampler_parameter_i32(raw, glow::TEXTURE_WRAP_S, wrap);

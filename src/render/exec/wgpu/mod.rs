@@ -223,7 +223,13 @@ impl WgpuExecutor {
             .entry(key)
             .or_insert_with(|| {
                 let filter = if s.linear { wgpu::FilterMode::Linear } else { wgpu::FilterMode::Nearest };
-                let address = if border { wgpu::AddressMode::ClampToBorder } else { wgpu::AddressMode::ClampToEdge };
+                let address = if border {
+                    wgpu::AddressMode::ClampToBorder
+                } else if s.repeat {
+                    wgpu::AddressMode::Repeat
+                } else {
+                    wgpu::AddressMode::ClampToEdge
+                };
                 Arc::new(self.device.create_sampler(&wgpu::SamplerDescriptor {
                     label: Some("plan sampler"),
                     address_mode_u: address,
