@@ -150,7 +150,7 @@ fn vector(ty: &str) -> Option<(&'static str, usize)> {
 /// the scene sets (which decides a slider's range).
 pub fn control(name: &str, ty: &str, value: Option<&ValueSpec>) -> Control {
     let mut c = Control { name: name.to_string(), ty: ty.to_string(), kind: ControlKind::None, min: None, max: None, step: None };
-    if let Some(ValueSpec::Convention(_)) = value {
+    if let Some(ValueSpec::Convention(_) | ValueSpec::Element(_)) = value {
         c.kind = ControlKind::Convention;
         return c;
     }
@@ -197,7 +197,7 @@ pub fn fallback(name: &str, ty: &str) -> Option<ValueSpec> {
             ValueSpec::Number(x) => vec![x],
             ValueSpec::Numbers(v) => v,
             ValueSpec::Bool(b) => vec![b as u8 as f64],
-            ValueSpec::Convention(_) => return None,
+            ValueSpec::Convention(_) | ValueSpec::Element(_) => return None,
         };
         return Some(ValueSpec::Numbers(one.iter().copied().cycle().take(one.len() * n).collect()));
     }
