@@ -403,3 +403,15 @@ fn the_projects_scene_files_parse() {
     }
     assert!(n >= 7, "shadow.toml and the six technique scenes: {n}");
 }
+
+#[test]
+fn the_documented_light_and_transform_parse() {
+    let doc = include_str!("../../docs/runner.md");
+    let at = doc.find("### Lights and transforms").expect("docs/runner.md says how lights and transforms are written");
+    let start = at + doc[at..].find("```toml\n").unwrap() + "```toml\n".len();
+    let text = &doc[start..start + doc[start..].find("```").unwrap()];
+    let s = Scene::parse("runner.md", text).unwrap();
+    let l = s.light.unwrap();
+    assert_eq!((l.kind, l.boxes()), (LightKind::Sun, vec![2.0, 4.0, 7.5]));
+    assert_eq!(s.passes[0].draws[0].transform.as_ref().map(|t| t.spin), Some(40.0));
+}
