@@ -415,3 +415,12 @@ fn the_documented_light_and_transform_parse() {
     assert_eq!((l.kind, l.boxes()), (LightKind::Sun, vec![2.0, 4.0, 7.5]));
     assert_eq!(s.passes[0].draws[0].transform.as_ref().map(|t| t.spin), Some(40.0));
 }
+
+#[test]
+fn every_convention_is_in_the_documented_table() {
+    let doc = include_str!("../../docs/runner.md");
+    for c in Convention::ALL {
+        let name = serde_json::to_value(c).unwrap();
+        assert!(doc.contains(&format!("| `{}` |", name.as_str().unwrap())), "docs/runner.md's conventions table lacks {name}");
+    }
+}
