@@ -96,6 +96,7 @@ impl Scene {
             passes: Vec::new(),
             output: SCREEN.to_string(),
             values: BTreeMap::new(),
+            light: None,
             controls: Vec::new(),
         };
         let draw = infer_draw(vs);
@@ -220,7 +221,7 @@ fn pattern_for(sampler: &str) -> Pattern {
 /// The draw of a vertex program (module docs).
 fn infer_draw(vs: &EntryPoint) -> Draw {
     if vs.inputs.is_empty() {
-        return Draw { mesh: MeshKind::None, vertices: Some(3), attributes: BTreeMap::new(), instances: None, values: BTreeMap::new() };
+        return Draw { mesh: MeshKind::None, vertices: Some(3), attributes: BTreeMap::new(), instances: None, values: BTreeMap::new(), transform: None };
     }
     let named: Vec<(String, &str, Option<Attribute>)> = vs.inputs.iter().map(|i| (i.name.clone(), i.ty.as_str(), names::attribute(&i.name))).collect();
     let by_id = vs.builtins.iter().any(|b| b == "gl_InstanceID" || b == "gl_InstanceIndex");
@@ -247,7 +248,7 @@ fn infer_draw(vs: &EntryPoint) -> Draw {
         attributes.insert(name.clone(), a);
     }
     let instances = (instanced || by_id).then_some(InstanceGrid { count: [3, 3, 1], spacing: 1.6 });
-    Draw { mesh, vertices: None, attributes, instances, values: BTreeMap::new() }
+    Draw { mesh, vertices: None, attributes, instances, values: BTreeMap::new(), transform: None }
 }
 
 /// The name of the vertex program [`fullscreen_vertex`] writes.

@@ -46,6 +46,10 @@ pub struct Scene {
     /// Values every pass sets, by uniform (or uniform block member) name.
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub values: BTreeMap<String, ValueSpec>,
+    /// The light the `light_*` conventions describe; none: [`Light`]'s
+    /// default, a still sun.
+    #[serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "checked")]
+    pub light: Option<Light>,
     /// One per uniform the program reads: how a page lets the user set it.
     #[serde(default, skip_serializing_if = "Vec::is_empty")]
     pub controls: Vec<Control>,
@@ -289,6 +293,185 @@ pub struct Draw {
     /// This draw's values (over the pass's).
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub values: BTreeMap<String, ValueSpec>,
+    /// Where the mesh is, maybe moving with `time`: the `model` conventions
+    /// of this draw (none: a slow turn about y).
+    #[serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "checked")]
+    pub transform: Option<Transform>,
+}
+
+/// A table whose values must make sense together, checked as it is read,
+/// so that a mistake is placed at the table (the parser knows where).
+trait Check {
+    fn check(&self) -> Result<(), String>;
+}
+
+fn checked<'de, D: serde::Deserializer<'de>, T: Deserialize<'de> + Check>(d: D) -> Result<Option<T>, D::Error> {
+    let t = T::deserialize(d)?;
+    t.check().map_err(serde::de::Error::custom)?;
+    Ok(Some(t))
+}
+
+impl Check for Transform {
+    fn check(&self) -> Result<(), String> {
+        if self.axis == [0.0; 3] {
+            return Err("a transform turns about `axis = [0, 0, 0]`".into());
+        }
+        if self.scale.axes().contains(&0.0) {
+            return Err("a transform has a `scale` of 0, which no normal survives".into());
+        }
+        Ok(())
+    }
+}
+
+/// A draw's object-to-world matrix: `translate * rotate * scale`, the turn
+/// `angle + spin * time` degrees about `axis`.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Transform {
+    pub translate: [f32; 3],
+    /// Need not be unit length; not zero.
+    pub axis: [f32; 3],
+    /// Degrees at time 0.
+    pub angle: f32,
+    /// Degrees a second of `time`.
+    pub spin: f32,
+    pub scale: Scale,
+}
+
+impl Default for Transform {
+    fn default() -> Transform {
+        Transform { translate: [0.0; 3], axis: [0.0, 1.0, 0.0], angle: 0.0, spin: 0.0, scale: Scale::Uniform(1.0) }
+    }
+}
+
+/// One factor for every axis, or one per axis.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(untagged)]
+pub enum Scale {
+    Uniform(f32),
+    Axes([f32; 3]),
+}
+
+impl Scale {
+    pub fn axes(self) -> [f32; 3] {
+        match self {
+            Scale::Uniform(s) => [s; 3],
+            Scale::Axes(a) => a,
+        }
+    }
+}
+
+/// What the `light_*` conventions are computed from: a sun (a direction,
+/// an orthographic shadow box, maybe several for cascades) or a spot (a
+/// position and a perspective shadow frustum), both aimed at `target`,
+/// turning `spin` degrees a second of `time` about the world's +y axis.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, default)]
+pub struct Light {
+    pub kind: LightKind,
+    /// A sun's direction towards the light at time 0 (normalised).
+    pub direction: [f32; 3],
+    /// A spot's position at time 0.
+    pub position: [f32; 3],
+    /// What the light looks at: the centre of a sun's box, a spot's aim.
+    pub target: [f32; 3],
+    pub spin: f32,
+    /// A sun's eye: `distance` from `target` along the direction.
+    pub distance: f32,
+    /// A sun's box: x and y from `-half_size` to `half_size`.
+    pub half_size: f32,
+    /// A sun's cascades: one box half-size each, finest first; none: the
+    /// one `half_size` box.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub cascades: Vec<f32>,
+    /// A spot's full vertical field of view, degrees (its map is square).
+    pub fov_y: f32,
+    pub near: f32,
+    pub far: f32,
+}
+
+impl Default for Light {
+    fn default() -> Light {
+        Light {
+            kind: LightKind::Sun,
+            direction: [0.4, 0.8, 0.45],
+            position: [0.0, 5.0, 0.0],
+            target: [0.0; 3],
+            spin: 0.0,
+            distance: 10.0,
+            half_size: 4.0,
+            cascades: Vec::new(),
+            fov_y: 60.0,
+            near: 0.1,
+            far: 20.0,
+        }
+    }
+}
+
+/// `a > b`, false for NaN.
+fn above(a: f32, b: f32) -> bool {
+    a > b
+}
+
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum LightKind {
+    /// Directional; orthographic shadow boxes.
+    #[default]
+    Sun,
+    /// A point aimed at `target`; a perspective shadow frustum.
+    Spot,
+}
+
+impl Light {
+    /// The shadow boxes' half-sizes: `cascades`, else `half_size` alone
+    /// (a spot has one frustum).
+    pub fn boxes(&self) -> Vec<f32> {
+        match self.kind {
+            LightKind::Sun if !self.cascades.is_empty() => self.cascades.clone(),
+            _ => vec![self.half_size],
+        }
+    }
+}
+
+impl Check for Light {
+    fn check(&self) -> Result<(), String> {
+        let zero = |v: [f32; 3]| v.iter().all(|x| *x == 0.0);
+        if !above(self.near, 0.0) {
+            return Err(format!("the light's `near = {}` is not above 0", self.near));
+        }
+        if !above(self.far, self.near) {
+            return Err(format!("the light's `far = {}` is not beyond its near plane ({})", self.far, self.near));
+        }
+        match self.kind {
+            LightKind::Sun => {
+                if zero(self.direction) {
+                    return Err("the light's `direction = [0, 0, 0]` points nowhere".into());
+                }
+                if !above(self.half_size, 0.0) {
+                    return Err(format!("the light's `half_size = {}` is not above 0", self.half_size));
+                }
+                if let Some(h) = self.cascades.iter().find(|h| !above(**h, 0.0)) {
+                    return Err(format!("the light's `cascades =` hold a box of half-size {h}, not above 0"));
+                }
+                if self.cascades.len() > 8 {
+                    return Err(format!("the light's `cascades =` are {} boxes (at most 8)", self.cascades.len()));
+                }
+            }
+            LightKind::Spot => {
+                if self.position == self.target {
+                    return Err("the spot light aims nowhere: its `position =` is its `target =`".into());
+                }
+                if !(above(self.fov_y, 0.0) && above(180.0, self.fov_y)) {
+                    return Err(format!("the spot light's `fov_y = {}` is not between 0 and 180 degrees", self.fov_y));
+                }
+                if !self.cascades.is_empty() {
+                    return Err("the spot light has `cascades =`, which a sun has (`kind = \"sun\"`)".into());
+                }
+            }
+        }
+        Ok(())
+    }
 }
 
 /// The built-in meshes (docs/runner.md: their vertices).
@@ -391,6 +574,16 @@ pub enum ValueSpec {
     Number(f64),
     Numbers(Vec<f64>),
     Convention(Convention),
+    /// One element of an array convention: `{ convention =
+    /// "light_view_projections", index = 1 }`.
+    Element(ConventionElement),
+}
+
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct ConventionElement {
+    pub convention: Convention,
+    pub index: u32,
 }
 
 /// Values the host computes each frame (docs/runner.md, "Conventions").
@@ -425,17 +618,28 @@ pub enum Convention {
     NormalMatrix,
     /// The orbit camera's eye, in world space.
     CameraPosition,
-    /// A sun's direction towards the light: normalize(0.4, 0.8, 0.45).
+    /// The unit vector towards the light (the scene's `light`; by default
+    /// a still sun towards normalize(0.4, 0.8, 0.45)).
     LightDirection,
-    /// The sun's orthographic `projection * view`, a box of half-size 4
-    /// around the origin looking down `-light_direction`.
+    /// The light's `projection * view`: a sun's orthographic box of
+    /// `half_size` (4) seen from `distance` (10) along `light_direction`,
+    /// a spot's perspective frustum.
     LightViewProjection,
     /// 1 / `resolution` (x, y).
     TexelSize,
+    /// The light's position: a spot's, a sun's eye.
+    LightPosition,
+    /// The unit vector from the light towards its target (a spot's axis).
+    SpotDirection,
+    /// One `light_view_projection` per shadow box (the sun's `cascades`).
+    LightViewProjections,
+    /// `light_view_projection` then clip space to texture space
+    /// (`x * 0.5 + 0.5` for x, y and z): a `textureProj` coordinate.
+    ShadowMatrix,
 }
 
 impl Convention {
-    pub const ALL: [Convention; 16] = [
+    pub const ALL: [Convention; 20] = [
         Convention::Time,
         Convention::Frame,
         Convention::Resolution,
@@ -452,7 +656,16 @@ impl Convention {
         Convention::LightDirection,
         Convention::LightViewProjection,
         Convention::TexelSize,
+        Convention::LightPosition,
+        Convention::SpotDirection,
+        Convention::LightViewProjections,
+        Convention::ShadowMatrix,
     ];
+
+    /// Whether its value depends on the draw's `transform`.
+    pub fn per_draw(self) -> bool {
+        matches!(self, Convention::Model | Convention::ModelViewProjection | Convention::NormalMatrix)
+    }
 }
 
 /// How a page lets the user set one uniform.
@@ -546,6 +759,9 @@ impl Scene {
         if self.output != SCREEN && target(&self.output).is_none() {
             return Err(format!("`output = \"{}\"` names no render target", self.output));
         }
+        if let Some(l) = &self.light {
+            l.check()?;
+        }
         if self.passes.is_empty() {
             return Err("a scene needs at least one pass".into());
         }
@@ -587,6 +803,9 @@ impl Scene {
                     if g.total() == 0 || g.total() > 65536 {
                         return Err(format!("pass `{}`: an instance grid of {} instances (1 to 65536)", p.name, g.total()));
                     }
+                }
+                if let Some(t) = &d.transform {
+                    t.check().map_err(|e| format!("pass `{}`: {e}", p.name))?;
                 }
                 if d.instances.is_none() {
                     if let Some((a, _)) = d.attributes.iter().find(|(_, a)| a.per_instance()) {

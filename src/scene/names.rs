@@ -109,6 +109,10 @@ pub fn convention(name: &str, ty: &str) -> Option<Convention> {
                 Some(Convention::Resolution)
             } else if ty == "float3" && has(&w, &["light", "sun"]) && has(&w, &["dir", "direction"]) {
                 Some(Convention::LightDirection)
+            } else if ty == "float3" && has(&w, &["light", "lamp"]) && has(&w, &["pos", "position"]) {
+                Some(Convention::LightPosition)
+            } else if ty == "float3" && has(&w, &["spot"]) && has(&w, &["dir", "direction", "axis"]) {
+                Some(Convention::SpotDirection)
             } else if ty == "float3" && has(&w, &["cam", "camera", "eye", "view"]) && has(&w, &["pos", "position", "origin"])
                 || ty == "float3" && has(&w, &["eye"])
             {
@@ -150,7 +154,7 @@ fn vector(ty: &str) -> Option<(&'static str, usize)> {
 /// the scene sets (which decides a slider's range).
 pub fn control(name: &str, ty: &str, value: Option<&ValueSpec>) -> Control {
     let mut c = Control { name: name.to_string(), ty: ty.to_string(), kind: ControlKind::None, min: None, max: None, step: None };
-    if let Some(ValueSpec::Convention(_)) = value {
+    if let Some(ValueSpec::Convention(_) | ValueSpec::Element(_)) = value {
         c.kind = ControlKind::Convention;
         return c;
     }
@@ -197,7 +201,7 @@ pub fn fallback(name: &str, ty: &str) -> Option<ValueSpec> {
             ValueSpec::Number(x) => vec![x],
             ValueSpec::Numbers(v) => v,
             ValueSpec::Bool(b) => vec![b as u8 as f64],
-            ValueSpec::Convention(_) => return None,
+            ValueSpec::Convention(_) | ValueSpec::Element(_) => return None,
         };
         return Some(ValueSpec::Numbers(one.iter().copied().cycle().take(one.len() * n).collect()));
     }
@@ -273,6 +277,8 @@ mod tests {
         assert_eq!(convention("u_normal_matrix", "float3x3"), Some(Convention::NormalMatrix));
         assert_eq!(convention("u_cam_pos", "float3"), Some(Convention::CameraPosition));
         assert_eq!(convention("u_light_dir", "float3"), Some(Convention::LightDirection));
+        assert_eq!(convention("u_light_pos", "float3"), Some(Convention::LightPosition));
+        assert_eq!(convention("u_spot_dir", "float3"), Some(Convention::SpotDirection));
         assert_eq!(convention("u_src_rcp", "float2"), Some(Convention::TexelSize));
         assert_eq!(convention("u_time", "float4"), None, "a name fits only with its type");
         assert_eq!(convention("u_strength", "float"), None);

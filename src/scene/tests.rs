@@ -293,3 +293,134 @@ fn the_documented_example_parses() {
     assert_eq!((s.passes.len(), s.textures.len(), s.targets.len()), (2, 1, 2));
     assert_eq!(s.passes[0].draws[0].instances.as_ref().map(InstanceGrid::total), Some(9));
 }
+
+const LIT: &str = "[light]
+kind = \"spot\"
+position = [2.0, 4.0, 1.0]
+target = [0.0, 0.5, 0.0]
+spin = -20.0
+fov_y = 70.0
+near = 1.0
+far = 20.0
+
+[[passes]]
+name = \"p\"
+vertex = \"vs\"
+color = \"screen\"
+values = { u_vp = { convention = \"light_view_projections\", index = 0 } }
+[[passes.draws]]
+mesh = \"cube\"
+transform = { translate = [0.0, 1.5, 0.0], axis = [0.3, 1.0, 0.2], angle = 10.0, spin = 40.0, scale = 1.1 }
+[[passes.draws]]
+mesh = \"plane\"
+transform = { scale = [5.0, 1.0, 5.0] }
+";
+
+#[test]
+fn lights_transforms_and_array_elements_parse_and_round_trip() {
+    let s = Scene::parse("lit.toml", LIT).unwrap();
+    let l = s.light.as_ref().unwrap();
+    assert_eq!((l.kind, l.position, l.spin, l.fov_y), (LightKind::Spot, [2.0, 4.0, 1.0], -20.0, 70.0));
+    assert_eq!(l.boxes(), vec![l.half_size], "a spot has one frustum");
+    let t = s.passes[0].draws[0].transform.as_ref().unwrap();
+    assert_eq!((t.translate, t.angle, t.spin, t.scale.axes()), ([0.0, 1.5, 0.0], 10.0, 40.0, [1.1; 3]));
+    let floor = s.passes[0].draws[1].transform.as_ref().unwrap();
+    assert_eq!((floor.scale.axes(), floor.axis, floor.spin), ([5.0, 1.0, 5.0], [0.0, 1.0, 0.0], 0.0), "defaults");
+    assert_eq!(s.passes[0].values["u_vp"], ValueSpec::Element(ConventionElement { convention: Convention::LightViewProjections, index: 0 }));
+    let json = s.to_json().to_string();
+    assert_eq!(Scene::parse("lit.json", &json).unwrap(), s, "the JSON a page reads parses back the same");
+    let sun = Scene::parse("sun.toml", "[light]\ncascades = [2.0, 4.0]\n[[passes]]\nname = \"p\"\nvertex = \"vs\"\ncolor = \"screen\"\ndraws = []\n").unwrap();
+    assert_eq!(sun.light.unwrap().boxes(), vec![2.0, 4.0]);
+    assert!(Scene::infer(&manifest(SCREEN_UV)).unwrap().light.is_none(), "an inferred scene has the default light");
+    for c in ["light_position", "spot_direction", "light_view_projections", "shadow_matrix"] {
+        assert!(Convention::ALL.iter().any(|x| serde_json::to_value(x).unwrap() == c), "{c}");
+    }
+}
+
+#[test]
+fn light_and_transform_mistakes_are_located() {
+    // The parser places each at the table or the value it is about.
+    let bad = |from: &str, to: &str| Scene::parse("lit.toml", &LIT.replacen(from, to, 1)).unwrap_err();
+    let on = |e: &str, needle: &str| {
+        let lines: Vec<usize> = LIT.lines().enumerate().filter(|(_, l)| l.contains(needle)).map(|(i, _)| i + 1).collect();
+        assert!(lines.iter().any(|n| e.starts_with(&format!("lit.toml:{n}:"))), "placed on a line with `{needle}` ({lines:?}):\n{e}");
+        assert!(e.contains(" | ") && e.contains('^'), "with the line and a caret:\n{e}");
+    };
+    let light = |e: &str| {
+        let n = LIT.lines().position(|l| l == "[light]").unwrap() + 1;
+        let line: usize = e.split(':').nth(1).unwrap().parse().unwrap();
+        assert!((n..n + 9).contains(&line), "placed in the [light] table (lines {n}..):\n{e}");
+    };
+    let e = bad("kind = \"spot\"", "kind = \"lamp\"");
+    assert!(e.contains("lamp"), "{e}");
+    on(&e, "kind =");
+    let e = bad("spin = -20.0", "spinn = -20.0");
+    assert!(e.contains("spinn"), "unknown keys are refused:\n{e}");
+    light(&e);
+    let e = bad("fov_y = 70.0", "fov_y = 200.0");
+    assert!(e.contains("fov_y = 200") && e.contains("between 0 and 180"), "{e}");
+    light(&e);
+    let e = bad("near = 1.0", "near = 0.0");
+    assert!(e.contains("`near = 0` is not above 0"), "{e}");
+    light(&e);
+    let e = bad("far = 20.0", "far = 0.5");
+    assert!(e.contains("far = 0.5"), "{e}");
+    let e = bad("position = [2.0, 4.0, 1.0]", "position = [0.0, 0.5, 0.0]");
+    assert!(e.contains("aims nowhere"), "{e}");
+    light(&e);
+    let e = bad("far = 20.0", "far = 20.0\ncascades = [1.0]");
+    assert!(e.contains("cascades"), "{e}");
+    let e = bad("axis = [0.3, 1.0, 0.2]", "axis = [0.0, 0.0, 0.0]");
+    assert!(e.contains("axis = [0, 0, 0]"), "{e}");
+    on(&e, "axis =");
+    let e = bad("scale = [5.0, 1.0, 5.0]", "scale = [5.0, 0.0, 5.0]");
+    assert!(e.contains("scale"), "{e}");
+    on(&e, "scale = [5.0, 1.0, 5.0]");
+    let e = bad("spin = 40.0", "spin = 40.0, twist = 1.0");
+    assert!(e.contains("twist"), "unknown transform keys are refused:\n{e}");
+    on(&e, "spin = 40.0");
+    let e = bad("index = 0 }", "index = 0, of = 1 }");
+    on(&e, "index = 0");
+    let sun = |extra: &str| Scene::parse("sun.toml", &format!("[light]\n{extra}\n[[passes]]\nname = \"p\"\nvertex = \"vs\"\ncolor = \"screen\"\ndraws = []\n")).unwrap_err();
+    assert!(sun("direction = [0.0, 0.0, 0.0]").contains("points nowhere"));
+    assert!(sun("half_size = -1.0").contains("half_size = -1"));
+    assert!(sun("cascades = [2.0, 0.0]").contains("half-size 0"));
+    assert!(sun("cascades = [1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0, 1.0]").contains("at most 8"));
+    let e = Scene::parse("sun.json", "{\"light\": {\"near\": -1}, \"passes\": [{\"name\": \"p\", \"vertex\": \"vs\", \"color\": \"screen\", \"draws\": []}]}").unwrap_err();
+    assert!(e.starts_with("sun.json:1:") && e.contains("not above 0"), "JSON too:\n{e}");
+}
+
+#[test]
+fn the_projects_scene_files_parse() {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("shaders/scenes");
+    let mut n = 0;
+    for e in std::fs::read_dir(&dir).unwrap() {
+        let path = e.unwrap().path();
+        let text = std::fs::read_to_string(&path).unwrap();
+        let s = Scene::parse(&path.display().to_string(), &text).unwrap_or_else(|e| panic!("{e}"));
+        assert!(s.light.is_some() && s.passes.iter().all(|p| p.draws.iter().all(|d| d.transform.is_some())), "{}: animated", path.display());
+        n += 1;
+    }
+    assert!(n >= 7, "shadow.toml and the six technique scenes: {n}");
+}
+
+#[test]
+fn the_documented_light_and_transform_parse() {
+    let doc = include_str!("../../docs/runner.md");
+    let at = doc.find("### Lights and transforms").expect("docs/runner.md says how lights and transforms are written");
+    let start = at + doc[at..].find("```toml\n").unwrap() + "```toml\n".len();
+    let text = &doc[start..start + doc[start..].find("```").unwrap()];
+    let s = Scene::parse("runner.md", text).unwrap();
+    let l = s.light.unwrap();
+    assert_eq!((l.kind, l.boxes()), (LightKind::Sun, vec![2.0, 4.0, 7.5]));
+    assert_eq!(s.passes[0].draws[0].transform.as_ref().map(|t| t.spin), Some(40.0));
+}
+
+#[test]
+fn every_convention_is_in_the_documented_table() {
+    let doc = include_str!("../../docs/runner.md");
+    for c in Convention::ALL {
+        let name = serde_json::to_value(c).unwrap();
+        assert!(doc.contains(&format!("| `{}` |", name.as_str().unwrap())), "docs/runner.md's conventions table lacks {name}");
+    }
+}

@@ -37,6 +37,8 @@ mod programs;
 #[cfg(feature = "render")]
 mod render;
 #[cfg(all(feature = "render", feature = "gl"))]
+mod scene_files;
+#[cfg(all(feature = "render", feature = "gl"))]
 mod techniques;
 #[cfg(feature = "render")]
 mod uniforms;

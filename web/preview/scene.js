@@ -173,9 +173,11 @@ function orthographic(l, r, b, t, n, f) {
 const rad = (d) => (d * Math.PI) / 180;
 
 // Every convention's value at `clock` = { time, frame, width, height,
-// mouse: [x, y, z, w] or null } with `camera` (the scene's, as dragged):
-// numbers in order, matrices 4 x 4 column by column.
-export function conventions(camera, clock) {
+// mouse: [x, y, z, w] or null } with `camera` (the scene's, as dragged)
+// and `light` (the scene's `light`, or none: the default still sun):
+// numbers in order, matrices 4 x 4 column by column. The `model` ones are
+// the default slow turn's; drawConventions gives a draw's own.
+export function conventions(camera, clock, light = null) {
   const c = { ...CAMERA, ...camera };
   const yaw = rad(c.yaw + c.spin * clock.time);
   const pitch = rad(c.pitch);
@@ -187,7 +189,7 @@ export function conventions(camera, clock) {
   const model = [Math.cos(a), 0, -Math.sin(a), 0, 0, 1, 0, 0, Math.sin(a), 0, Math.cos(a), 0, 0, 0, 0, 1];
   const viewRotation = view.slice();
   viewRotation.splice(12, 3, 0, 0, 0);
-  const light = normalize([0.4, 0.8, 0.45]);
+  const lit = lightConventions(light, clock.time);
   const viewProjection = mul(projection, view);
   return {
     time: [clock.time],
@@ -205,9 +207,95 @@ export function conventions(camera, clock) {
     // A turn's inverse transpose is itself.
     normal_matrix: model,
     camera_position: [...eye, 1],
-    light_direction: light,
-    light_view_projection: mul(orthographic(-4, 4, -4, 4, 0.1, 20), lookAt(light.map((x) => 10 * x), [0, 0, 0], [0, 1, 0])),
+    ...lit,
   };
+}
+
+// ---- lights and transforms (docs/runner.md, "Lights and transforms") ---------
+
+export const LIGHT = {
+  kind: 'sun', direction: [0.4, 0.8, 0.45], position: [0, 5, 0], target: [0, 0, 0], spin: 0,
+  distance: 10, half_size: 4, cascades: [], fov_y: 60, near: 0.1, far: 20,
+};
+
+// A turn of `a` radians about +y, applied to a point (glam's from_rotation_y).
+const turnY = (a, p) => [p[0] * Math.cos(a) + p[2] * Math.sin(a), p[1], -p[0] * Math.sin(a) + p[2] * Math.cos(a)];
+
+// The light conventions of `light` (a scene's `light`, or none) at `time`:
+// light_direction, light_position, spot_direction, light_view_projection,
+// light_view_projections (the boxes' matrices one after another) and
+// shadow_matrix, as src/render/plan/scene_file.rs computes them.
+export function lightConventions(light, time) {
+  const l = { ...LIGHT, ...(light ?? {}) };
+  const a = rad(l.spin * time);
+  let dir;
+  let eye;
+  if (l.kind === 'spot') {
+    eye = turnY(a, l.position);
+    dir = normalize(sub(eye, l.target));
+  } else {
+    dir = normalize(turnY(a, l.direction));
+    eye = l.target.map((x, k) => x + dir[k] * l.distance);
+  }
+  const view = lookAt(eye, l.target, Math.abs(dir[1]) > 0.999 ? [0, 0, 1] : [0, 1, 0]);
+  const boxes = l.kind === 'sun' && l.cascades.length ? l.cascades : [l.half_size];
+  const matrices = l.kind === 'spot'
+    ? [mul(perspective(rad(l.fov_y), 1, l.near, l.far), view)]
+    : boxes.map((h) => mul(orthographic(-h, h, -h, h, l.near, l.far), view));
+  const bias = [0.5, 0, 0, 0, 0, 0.5, 0, 0, 0, 0, 0.5, 0, 0.5, 0.5, 0.5, 1];
+  return {
+    light_direction: dir,
+    light_position: [...eye, 1],
+    spot_direction: dir.map((x) => -x),
+    light_view_projection: matrices[0],
+    light_view_projections: matrices.flat(),
+    shadow_matrix: mul(bias, matrices[0]),
+  };
+}
+
+// A draw's model matrix at `time`: translate * rotate(axis, angle + spin
+// * time degrees) * scale; none: the default slow turn about +y.
+export function modelMatrix(transform, time) {
+  if (!transform) {
+    const a = 0.5 * time;
+    return [Math.cos(a), 0, -Math.sin(a), 0, 0, 1, 0, 0, Math.sin(a), 0, Math.cos(a), 0, 0, 0, 0, 1];
+  }
+  const t = { translate: [0, 0, 0], axis: [0, 1, 0], angle: 0, spin: 0, scale: 1, ...transform };
+  const [x, y, z] = normalize(t.axis);
+  const a = rad(t.angle + t.spin * time);
+  const [c, s, k] = [Math.cos(a), Math.sin(a), 1 - Math.cos(a)];
+  const sc = typeof t.scale === 'number' ? [t.scale, t.scale, t.scale] : t.scale;
+  const r = [
+    [c + x * x * k, y * x * k + z * s, z * x * k - y * s],
+    [x * y * k - z * s, c + y * y * k, z * y * k + x * s],
+    [x * z * k + y * s, y * z * k - x * s, c + z * z * k],
+  ];
+  return [...r[0].map((v) => v * sc[0]), 0, ...r[1].map((v) => v * sc[1]), 0, ...r[2].map((v) => v * sc[2]), 0, ...t.translate, 1];
+}
+
+// `conv` (conventions()) with a draw's own `model`,
+// `model_view_projection` and `normal_matrix`, from its `transform`.
+export function drawConventions(conv, transform, time) {
+  const model = modelMatrix(transform, time);
+  // The inverse transpose of R * S is R * S^-1: each column over its scale squared.
+  const normal = model.slice();
+  for (let col = 0; col < 3; col++) {
+    const len2 = normal[col * 4] ** 2 + normal[col * 4 + 1] ** 2 + normal[col * 4 + 2] ** 2;
+    for (let r = 0; r < 3; r++) normal[col * 4 + r] /= len2;
+  }
+  normal.splice(12, 3, 0, 0, 0);
+  return { ...conv, model, model_view_projection: mul(conv.view_projection, model), normal_matrix: normal };
+}
+
+// The numbers a scene value names in `conv`: a convention's (a string),
+// one element of an array convention ({ convention, index }), or null.
+export function conventionValue(spec, conv) {
+  if (typeof spec === 'string') return conv[spec] ?? null;
+  if (spec && typeof spec === 'object' && !Array.isArray(spec) && typeof spec.convention === 'string') {
+    const all = conv[spec.convention];
+    return all && all.length >= 16 * (spec.index + 1) ? all.slice(16 * spec.index, 16 * (spec.index + 1)) : null;
+  }
+  return null;
 }
 
 // A value (a convention's or a scene's numbers) fitted to a member of

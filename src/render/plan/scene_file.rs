@@ -7,12 +7,12 @@
 
 use std::path::Path;
 
-use glam::{Mat3, Mat4, Vec3};
+use glam::{Mat3, Mat4, Quat, Vec3};
 
 use super::meshes::{self, Input};
 use super::{Attachment, Cull, Draw, Format, FramePlan, Geometry, Pass, Sampling, TargetId, TextureInput, Unset, Value, Values};
 use crate::emit::reflect_types::Reflection;
-use crate::scene::{self, Convention, MeshKind, OrbitCamera, Scene, TargetFormat, ValueSpec, SCREEN};
+use crate::scene::{self, Convention, Light, LightKind, MeshKind, OrbitCamera, Scene, TargetFormat, Transform, ValueSpec, SCREEN};
 
 /// A scene ready to be planned each frame for one program.
 #[derive(Clone, Debug)]
@@ -91,7 +91,7 @@ impl ScenePlanner {
             }
             let mut textures = Vec::new();
             for (sampler, input) in &p.samplers {
-                let decl = self.reflection.samplers.iter().find(|d| &d.name == sampler);
+                let decl = self.reflection.samplers.iter().find(|d| &d.name == sampler).or_else(|| self.array_element(sampler));
                 let Some(decl) = decl else {
                     return Err(format!("{label}: pass `{}` binds sampler `{sampler}`, which the program does not declare", p.name));
                 };
@@ -103,14 +103,17 @@ impl ScenePlanner {
             let mut draws = Vec::new();
             for d in &p.draws {
                 let mut values = Values::new();
-                for (name, spec) in &d.values {
-                    values.set(name, self.value(name, spec, f)?);
+                // A model convention the pass or the scene sets follows each
+                // draw's own transform.
+                let inherited = s.values.iter().chain(&p.values).filter(|(n, v)| !d.values.contains_key(*n) && d.transform.is_some() && per_draw(v));
+                for (name, spec) in inherited.chain(&d.values) {
+                    values.set(name, self.value(name, spec, d.transform.as_ref(), f)?);
                 }
                 draws.push(Draw { geometry: self.geometry(vs, d, &p.name)?, values });
             }
             let mut values = Values::new();
             for (name, spec) in s.values.iter().filter(|(n, _)| !p.values.contains_key(*n)).chain(&p.values) {
-                values.set(name, self.value(name, spec, f)?);
+                values.set(name, self.value(name, spec, None, f)?);
             }
             plan.passes.push(Pass {
                 name: p.name.clone(),
@@ -140,6 +143,13 @@ impl ScenePlanner {
             .iter()
             .find(|e| e.name == name && e.stage == stage)
             .ok_or_else(|| format!("{}: the program has no {stage} entry point `{name}`", self.label))
+    }
+
+    /// `name[i]` of a sampler array `name` that has an element `i`.
+    fn array_element(&self, sampler: &str) -> Option<&crate::emit::reflect_types::Sampler> {
+        let (base, i) = sampler.strip_suffix(']')?.split_once('[')?;
+        let i: u32 = i.parse().ok()?;
+        self.reflection.samplers.iter().find(|d| d.name == base && d.count.is_some_and(|n| i < n))
     }
 
     /// A draw's geometry: its mesh laid out for the vertex program's inputs.
@@ -181,14 +191,36 @@ impl ScenePlanner {
             .or_else(|| r.uniform_buffers.iter().flat_map(|b| &b.members).find(|m| m.name == name).map(|m| m.ty.as_str()))
     }
 
-    fn value(&self, name: &str, spec: &ValueSpec, f: &FrameInputs) -> Result<Value, String> {
+    fn value(&self, name: &str, spec: &ValueSpec, transform: Option<&Transform>, f: &FrameInputs) -> Result<Value, String> {
         let ty = self.type_of(name).ok_or_else(|| format!("{}: the scene sets `{name}`, which is no uniform of the program", self.label))?;
-        value(ty, spec, &self.scene.camera, f).map_err(|e| format!("{}: `{name}` ({ty}): {e}", self.label))
+        let light = self.scene.light.clone().unwrap_or_default();
+        let cx = Context { camera: &self.scene.camera, light: &light, transform };
+        value_in(ty, spec, &cx, f).map_err(|e| format!("{}: `{name}` ({ty}): {e}", self.label))
     }
 }
 
-/// A value of DSL type `ty` from a scene's spec.
+fn per_draw(v: &ValueSpec) -> bool {
+    matches!(v, ValueSpec::Convention(c) if c.per_draw())
+}
+
+/// What a value's conventions are computed from besides the frame: the
+/// scene's camera and light, and the draw's transform (none: the default
+/// slow turn).
+#[derive(Clone, Copy, Debug)]
+pub struct Context<'a> {
+    pub camera: &'a OrbitCamera,
+    pub light: &'a Light,
+    pub transform: Option<&'a Transform>,
+}
+
+/// A value of DSL type `ty` from a scene's spec, with the default light and
+/// no transform.
 pub fn value(ty: &str, spec: &ValueSpec, camera: &OrbitCamera, f: &FrameInputs) -> Result<Value, String> {
+    value_in(ty, spec, &Context { camera, light: &Light::default(), transform: None }, f)
+}
+
+/// A value of DSL type `ty` from a scene's spec.
+pub fn value_in(ty: &str, spec: &ValueSpec, cx: &Context, f: &FrameInputs) -> Result<Value, String> {
     let numbers: Vec<f64> = match spec {
         ValueSpec::Bool(b) => vec![*b as u8 as f64],
         ValueSpec::Number(x) => {
@@ -196,7 +228,12 @@ pub fn value(ty: &str, spec: &ValueSpec, camera: &OrbitCamera, f: &FrameInputs) 
             vec![*x; n]
         }
         ValueSpec::Numbers(v) => v.clone(),
-        ValueSpec::Convention(c) => convention(*c, ty, camera, f)?.into_iter().map(f64::from).collect(),
+        ValueSpec::Convention(c) => convention(*c, ty, cx, f)?.into_iter().map(f64::from).collect(),
+        ValueSpec::Element(e) => {
+            let all = elements(e.convention, cx, f).ok_or_else(|| format!("`{}` is no array: it has no `index`", name(e.convention)))?;
+            let m = all.get(e.index as usize).ok_or_else(|| format!("`{}` has {} elements: no `index = {}`", name(e.convention), all.len(), e.index))?;
+            matrix_for(*m, ty)?.into_iter().map(f64::from).collect()
+        }
     };
     let words: Vec<u32> = numbers
         .iter()
@@ -236,22 +273,69 @@ pub fn camera_matrices(c: &OrbitCamera, f: &FrameInputs) -> (Mat4, Mat4) {
     (view, proj)
 }
 
-fn light_direction() -> Vec3 {
-    Vec3::new(0.4, 0.8, 0.45).normalize()
+/// A draw's model matrix at `time`: its transform, else a turn about y of
+/// 0.5 rad a second.
+pub fn model_matrix(t: Option<&Transform>, time: f32) -> Mat4 {
+    let Some(t) = t else {
+        return Mat4::from_rotation_y(0.5 * time);
+    };
+    let turn = Quat::from_axis_angle(Vec3::from(t.axis).normalize(), (t.angle + t.spin * time).to_radians());
+    Mat4::from_scale_rotation_translation(Vec3::from(t.scale.axes()), turn, Vec3::from(t.translate))
+}
+
+/// Where the light is at `time`: (direction towards it, its position), a
+/// sun's position being its eye.
+pub fn light_place(l: &Light, time: f32) -> (Vec3, Vec3) {
+    let turn = Mat3::from_rotation_y((l.spin * time).to_radians());
+    let target = Vec3::from(l.target);
+    match l.kind {
+        LightKind::Sun => {
+            let dir = (turn * Vec3::from(l.direction)).normalize();
+            (dir, target + dir * l.distance)
+        }
+        LightKind::Spot => {
+            let pos = turn * Vec3::from(l.position);
+            ((pos - target).normalize(), pos)
+        }
+    }
+}
+
+/// The light's `projection * view` per shadow box ([`Light::boxes`]).
+pub fn light_matrices(l: &Light, time: f32) -> Vec<Mat4> {
+    let (dir, eye) = light_place(l, time);
+    // An up vector never parallel to the view.
+    let up = if dir.y.abs() > 0.999 { Vec3::Z } else { Vec3::Y };
+    let view = glam::camera::rh::view::look_at_mat4(eye, Vec3::from(l.target), up);
+    match l.kind {
+        LightKind::Sun => l.boxes().iter().map(|&h| glam::camera::rh::proj::opengl::orthographic(-h, h, -h, h, l.near, l.far) * view).collect(),
+        LightKind::Spot => vec![glam::camera::rh::proj::opengl::perspective(l.fov_y.to_radians(), 1.0, l.near, l.far) * view],
+    }
+}
+
+/// An array convention's elements.
+fn elements(c: Convention, cx: &Context, f: &FrameInputs) -> Option<Vec<Mat4>> {
+    (c == Convention::LightViewProjections).then(|| light_matrices(cx.light, f.time))
+}
+
+/// A matrix's floats for a uniform of type `ty` (a `float3x3` gets the
+/// upper 3 x 3).
+fn matrix_for(m: Mat4, ty: &str) -> Result<Vec<f32>, String> {
+    match ty {
+        "float4x4" => Ok(m.to_cols_array().to_vec()),
+        "float3x3" => Ok(Mat3::from_mat4(m).to_cols_array().to_vec()),
+        _ => Err(format!("a matrix convention needs a float4x4 or float3x3, not a {ty}")),
+    }
 }
 
 /// A convention's floats for a uniform of type `ty`.
-fn convention(c: Convention, ty: &str, camera: &OrbitCamera, f: &FrameInputs) -> Result<Vec<f32>, String> {
+fn convention(c: Convention, ty: &str, cx: &Context, f: &FrameInputs) -> Result<Vec<f32>, String> {
+    let camera = cx.camera;
     let (w, h) = (f.width as f32, f.height as f32);
     let (view, proj) = camera_matrices(camera, f);
-    let model = Mat4::from_rotation_y(0.5 * f.time);
-    let matrix = |m: Mat4| -> Result<Vec<f32>, String> {
-        match ty {
-            "float4x4" => Ok(m.to_cols_array().to_vec()),
-            "float3x3" => Ok(Mat3::from_mat4(m).to_cols_array().to_vec()),
-            _ => Err(format!("a matrix convention needs a float4x4 or float3x3, not a {ty}")),
-        }
-    };
+    let model = model_matrix(cx.transform, f.time);
+    let (light_dir, light_pos) = light_place(cx.light, f.time);
+    let light_vp = || light_matrices(cx.light, f.time)[0];
+    let matrix = |m: Mat4| matrix_for(m, ty);
     let vector = |v: &[f32]| -> Result<Vec<f32>, String> {
         let n = components(ty).filter(|_| ty.starts_with("float") || ty.starts_with("int") || ty.starts_with("uint")).ok_or_else(|| format!("`{}` does not fit a {ty}", name(c)))?;
         Ok((0..n).map(|i| v.get(i).copied().unwrap_or(0.0)).collect())
@@ -264,7 +348,9 @@ fn convention(c: Convention, ty: &str, camera: &OrbitCamera, f: &FrameInputs) ->
         Convention::Mouse => vector(&[w / 2.0, h / 2.0, 0.0, 0.0]),
         Convention::TexelSize => vector(&[1.0 / w.max(1.0), 1.0 / h.max(1.0)]),
         Convention::CameraPosition => vector(&[camera.eye(f.time)[0], camera.eye(f.time)[1], camera.eye(f.time)[2], 1.0]),
-        Convention::LightDirection => vector(&light_direction().extend(0.0).to_array()),
+        Convention::LightDirection => vector(&light_dir.extend(0.0).to_array()),
+        Convention::LightPosition => vector(&light_pos.extend(1.0).to_array()),
+        Convention::SpotDirection => vector(&(-light_dir).extend(0.0).to_array()),
         Convention::View => matrix(view),
         Convention::ViewRotation => matrix(Mat4::from_mat3(Mat3::from_mat4(view))),
         Convention::Projection => matrix(proj),
@@ -275,11 +361,17 @@ fn convention(c: Convention, ty: &str, camera: &OrbitCamera, f: &FrameInputs) ->
             let n = Mat3::from_mat4(model).inverse().transpose();
             matrix(Mat4::from_mat3(n))
         }
-        Convention::LightViewProjection => {
-            let l = light_direction();
-            let lv = glam::camera::rh::view::look_at_mat4(l * 10.0, Vec3::ZERO, Vec3::Y);
-            let lp = glam::camera::rh::proj::opengl::orthographic(-4.0, 4.0, -4.0, 4.0, 0.1, 20.0);
-            matrix(lp * lv)
+        Convention::LightViewProjection => matrix(light_vp()),
+        Convention::ShadowMatrix => {
+            let bias = Mat4::from_translation(Vec3::splat(0.5)) * Mat4::from_scale(Vec3::splat(0.5));
+            matrix(bias * light_vp())
+        }
+        Convention::LightViewProjections => {
+            let all = light_matrices(cx.light, f.time);
+            if ty != format!("float4x4[{}]", all.len()) {
+                return Err(format!("`light_view_projections` is {} matrices (one per shadow box): it fits a float4x4[{}], not a {ty}", all.len(), all.len()));
+            }
+            Ok(all.iter().flat_map(|m| m.to_cols_array()).collect())
         }
     }
 }
@@ -339,5 +431,61 @@ mod tests {
         assert_eq!(value("bool", &ValueSpec::Bool(true), &cam, &f).unwrap(), Value::bool(true));
         assert_eq!(value("int2", &ValueSpec::Numbers(vec![-1.0, 2.0]), &cam, &f).unwrap().words, vec![(-1i32) as u32, 2]);
         assert!(value("float3", &ValueSpec::Numbers(vec![1.0]), &cam, &f).is_err());
+    }
+
+    #[test]
+    fn transforms_and_lights_give_the_builtin_scenes_numbers() {
+        use crate::render::{scene as tutorial, techniques};
+        use crate::scene::Scale;
+        let cube = Transform { translate: [0.0, 1.5, 0.0], axis: [0.3, 1.0, 0.2], angle: 0.0, spin: 0.7f32.to_degrees(), scale: Scale::Uniform(1.1) };
+        let sun = Light { direction: [1.0, 1.4, 0.0], spin: -0.6f32.to_degrees(), distance: 8.0, ..Light::default() };
+        let spot = Light { kind: LightKind::Spot, position: techniques::spot_position(0.0).into(), target: [0.0, 0.3, 0.0], spin: -0.4f32.to_degrees(), ..Light::default() };
+        for t in [0.0, 1.0, 4.0] {
+            // The file's cube is half the built-in one's size.
+            let builtin = tutorial::cube_model(t) * Mat4::from_scale(Vec3::splat(2.0));
+            assert!(model_matrix(Some(&cube), t).abs_diff_eq(builtin, 1e-5), "t = {t}");
+            assert!(light_place(&sun, t).0.abs_diff_eq(tutorial::light_dir(t), 1e-5), "t = {t}");
+            let f = tutorial::Frame::at(t, 1.0);
+            assert!(light_matrices(&Light { half_size: 4.0, far: 20.0, ..sun.clone() }, t)[0].abs_diff_eq(f.light_vp, 1e-5), "t = {t}");
+            assert!(light_place(&spot, t).1.abs_diff_eq(techniques::spot_position(t), 1e-5), "t = {t}");
+        }
+        assert_eq!(model_matrix(None, 2.0), Mat4::from_rotation_y(1.0), "no transform: the slow turn");
+    }
+
+    #[test]
+    fn light_conventions_fit_their_types_and_elements_their_arrays() {
+        let light = Light { cascades: vec![2.0, 4.0, 7.5], ..Light::default() };
+        let (cam, f) = (OrbitCamera::default(), f());
+        let cx = Context { camera: &cam, light: &light, transform: None };
+        let all = value_in("float4x4[3]", &ValueSpec::Convention(Convention::LightViewProjections), &cx, &f).unwrap();
+        assert_eq!(all.words.len(), 48);
+        let one = |i| ValueSpec::Element(scene::ConventionElement { convention: Convention::LightViewProjections, index: i });
+        assert_eq!(value_in("float4x4", &one(2), &cx, &f).unwrap().words, all.words[32..]);
+        assert_eq!(value_in("float4x4", &ValueSpec::Convention(Convention::LightViewProjection), &cx, &f).unwrap().words, all.words[..16], "the finest box");
+        let e = value_in("float4x4", &one(3), &cx, &f).unwrap_err();
+        assert!(e.contains("3 elements"), "{e}");
+        let e = value_in("float4x4[2]", &ValueSpec::Convention(Convention::LightViewProjections), &cx, &f).unwrap_err();
+        assert!(e.contains("float4x4[3]"), "{e}");
+        let e = value_in("float4x4", &ValueSpec::Element(scene::ConventionElement { convention: Convention::View, index: 0 }), &cx, &f).unwrap_err();
+        assert!(e.contains("no array"), "{e}");
+        let pos = value_in("float3", &ValueSpec::Convention(Convention::LightPosition), &cx, &f).unwrap().as_f32();
+        let dir = value_in("float3", &ValueSpec::Convention(Convention::LightDirection), &cx, &f).unwrap().as_f32();
+        let axis = value_in("float3", &ValueSpec::Convention(Convention::SpotDirection), &cx, &f).unwrap().as_f32();
+        assert!((0..3).all(|i| (pos[i] - 10.0 * dir[i]).abs() < 1e-5 && (axis[i] + dir[i]).abs() < 1e-6), "{pos:?} {dir:?} {axis:?}");
+        // The shadow matrix takes what the light sees to [0, 1].
+        let sm = Mat4::from_cols_array(&value_in("float4x4", &ValueSpec::Convention(Convention::ShadowMatrix), &cx, &f).unwrap().as_f32().try_into().unwrap());
+        let p = sm * Vec3::ZERO.extend(1.0);
+        assert!((p.x - 0.5).abs() < 1e-5 && (p.y - 0.5).abs() < 1e-5 && p.z > 0.0 && p.z < 1.0, "{p}");
+    }
+
+    #[test]
+    fn a_scene_wide_model_follows_each_draws_transform() {
+        let src = "var @in a_pos : float3\nvar @uniform u_model : float4x4\nvar @out f_color : float4\n[vertex_program]\ndef vs {\n    gl_Position = u_model * float4(a_pos, 1.0)\n}\n[fragment_program]\ndef fs {\n    f_color = float4(1.0)\n}\n";
+        let r = crate::compile_source("t.das", src, &crate::Options::default()).result.unwrap().reflection;
+        let toml = "[values]\nu_model = \"model\"\n[[passes]]\nname = \"p\"\nvertex = \"vs\"\nfragment = \"fs\"\ncolor = \"screen\"\n[[passes.draws]]\nmesh = \"cube\"\nattributes = { a_pos = \"position\" }\ntransform = { translate = [1.0, 2.0, 3.0] }\n[[passes.draws]]\nmesh = \"cube\"\nattributes = { a_pos = \"position\" }\n";
+        let plan = ScenePlanner::new("s", Scene::parse("s.toml", toml).unwrap(), &r, None).unwrap().plan(&f()).unwrap();
+        let p = &plan.passes[0];
+        assert_eq!(p.value(&p.draws[0], "u_model").unwrap().as_f32()[12..15], [1.0, 2.0, 3.0]);
+        assert_eq!(*p.value(&p.draws[1], "u_model").unwrap(), Value::mat4(Mat4::from_rotation_y(1.0)), "no transform: the slow turn");
     }
 }
