@@ -30,6 +30,8 @@ mod features_l;
 mod numerics;
 #[cfg(feature = "preview")]
 mod preview;
+#[cfg(all(feature = "preview", feature = "render"))]
+mod preview_passes;
 #[cfg(feature = "render")]
 mod programs;
 #[cfg(feature = "render")]
