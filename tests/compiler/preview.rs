@@ -162,15 +162,19 @@ fn with_a_scene_file_only_the_images_it_names_are_served() {
     std::fs::write(sub.join("tex.png"), "IMAGE tex").unwrap();
     std::fs::write(sub.join("other.png"), "SECRET other").unwrap();
     std::fs::write(dir.path().join("outside.png"), "SECRET outside").unwrap();
+    // A link beside the scene that leads out of its directory.
+    #[cfg(unix)]
+    std::os::unix::fs::symlink(dir.path().join("outside.png"), sub.join("link.png")).unwrap();
     let scene = sub.join("s.toml");
     let text = "[[textures]]\nname = \"tex\"\nimage = \"tex.png\"\n\n[[textures]]\nname = \"out\"\nimage = \"../outside.png\"\n\n\
+        [[textures]]\nname = \"link\"\nimage = \"link.png\"\n\n\
         [[passes]]\nname = \"main\"\nvertex = \"main_vs\"\nfragment = \"main_fs\"\ncolor = \"screen\"\nsamplers = { u_tex = { texture = \"tex\" } }\n[[passes.draws]]\nmesh = \"none\"\nvertices = 3\n";
     std::fs::write(&scene, text).unwrap();
     let s = PreviewServer::start_with(&dir.path().join("p.das"), &[std::ffi::OsStr::new("--scene"), scene.as_os_str()]);
     let host = s.host();
     let (status, body) = s.get("/scene/tex.png", &host);
     assert_eq!((status, body.as_str()), (200, "IMAGE tex"));
-    for target in ["/scene/other.png", "/scene/../outside.png", "/scene/..%2foutside.png", "/scene/%2e%2e/outside.png", "/scene/s.toml", "/scene/", "/scene//etc/passwd", "/scene/..\\outside.png"] {
+    for target in ["/scene/link.png", "/scene/other.png", "/scene/../outside.png", "/scene/..%2foutside.png", "/scene/%2e%2e/outside.png", "/scene/s.toml", "/scene/", "/scene//etc/passwd", "/scene/..\\outside.png"] {
         let (status, body) = s.get(target, &host);
         assert!(status == 403 || status == 404, "{target}: {status}");
         assert!(!body.contains("SECRET") && !body.contains("root:"), "{target}: {body}");
