@@ -69,6 +69,7 @@ export function passesPlan(m, scene) {
     const fragment = p.fragment ? entryOf(m, p.fragment) : null;
     if (!vertex || vertex.stage !== 'vertex') throw new DrawError('plan', `pass \`${p.name}\`: the program has no vertex entry point \`${p.vertex}\``);
     if (p.fragment && (!fragment || fragment.stage !== 'fragment')) throw new DrawError('plan', `pass \`${p.name}\`: the program has no fragment entry point \`${p.fragment}\``);
+    if (!p.color && !p.depth) throw new DrawError('plan', `pass \`${p.name}\` draws into nothing (no \`color\`, no \`depth\`)`);
     const entries = [vertex, fragment].filter(Boolean);
     const samplers = [];
     for (const [name, input] of Object.entries(p.samplers ?? {})) {
