@@ -165,7 +165,7 @@ fn tutorial_08_draws_from_its_scene_file() {
 /// scene. Alike on both APIs; the bloom the last pass reads from the
 /// chain shows (against the same scene with `u_bloom_strength = 0`, at
 /// least 1% of the pixels brighter by more than 12/255 summed), and
-/// nothing is darker.
+/// nothing is darker; with `output = "bright"` the page shows that target.
 #[test]
 fn a_post_processing_chain_reads_the_targets_drawn_before() {
     if !browser_ready() {
@@ -186,4 +186,12 @@ fn a_post_processing_chain_reads_the_targets_drawn_before() {
     let brighter = darker_share(&plain.webgl2, &bloom.webgl2, 12);
     assert!(brighter >= 0.01, "only {:.2}% of the pixels are brighter with the bloom", brighter * 100.0);
     assert_eq!(darker_share(&bloom.webgl2, &plain.webgl2, 6), 0.0, "the bloom only adds light");
+
+    // `output` naming a target: the bright pass's, scaled to the canvas;
+    // dark but for the image's bright spots.
+    let bright_scene = edited(&scene, dir.path(), "bright.json", |s| s.output = "bright".into());
+    let bright = picture(&program, &bright_scene, &dir.path().join("bright"));
+    let dark = bright.webgl2.chunks(4).filter(|p| p[..3].iter().map(|&c| c as u32).sum::<u32>() < 30).count();
+    let share = dark as f64 / (bright.webgl2.len() / 4) as f64;
+    assert!((0.8..1.0).contains(&share), "{:.1}% of the bright target is dark", share * 100.0);
 }
