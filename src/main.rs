@@ -103,6 +103,11 @@ struct PreviewArgs {
     /// the binary, when it has been built.
     #[arg(long, value_name = "DIR")]
     playground: Option<PathBuf>,
+    /// Draw FILE with this scene file (NAME.toml or NAME.json: passes,
+    /// render targets, draws, values; docs/runner.md, "Scene files")
+    /// instead of the scene inferred for it, as `umbrac render --scene`.
+    #[arg(long, value_name = "FILE")]
+    scene: Option<PathBuf>,
     #[command(flatten)]
     common: CommonArgs,
 }
@@ -663,6 +668,13 @@ fn preview(args: &PreviewArgs) -> u8 {
         return EXIT_ERROR;
     }
     let mut opts = umbrac::preview::options_for(&args.file, &args.common.options(Vec::new()));
+    let scene = match args.scene.as_deref().map(umbrac::preview::SceneFile::open).transpose() {
+        Ok(s) => s,
+        Err(e) => {
+            eprintln!("error: {e}");
+            return EXIT_ERROR;
+        }
+    };
     let playground = match &args.playground {
         Some(dir) => match umbrac::preview::Playground::load(dir) {
             Ok(p) => Some(p),
@@ -701,7 +713,7 @@ fn preview(args: &PreviewArgs) -> u8 {
             eprintln!("warning: {e}");
         }
     }
-    let e = server.serve(args.file.clone(), opts, playground).err().unwrap_or_default();
+    let e = server.serve(args.file.clone(), opts, playground, scene).err().unwrap_or_default();
     eprintln!("error: umbrac preview: {e}");
     EXIT_ERROR
 }

@@ -4,8 +4,10 @@
 //! A blocking HTTP server (tiny_http) on 127.0.0.1 answers a fixed table
 //! of names: the page's files (`web/preview/`, built into the binary) and
 //! the program's [`Bundle`] (`/bundle.json`, and `/events`, a Server-Sent
-//! Events stream that carries each new one). Nothing is read from disk
-//! on a request's behalf, so no URL reaches another file. A watch thread
+//! Events stream that carries each new one). Nothing else is read from
+//! disk on a request's behalf, so no URL reaches another file, except,
+//! with a scene file ([`SceneFile`]), the image files its textures name
+//! under `/scene/NAME`. A watch thread
 //! ([`crate::watch`], what `--watch` uses) recompiles the program when a
 //! file it read changes and hands the new bundle to every open stream;
 //! a failed compile is sent too (its diagnostics), and the page keeps
@@ -17,6 +19,7 @@
 
 mod playground;
 mod routes;
+mod scene_file;
 
 use std::path::{Path, PathBuf};
 use std::sync::{Arc, Condvar, Mutex};
@@ -28,6 +31,7 @@ use crate::{Options, Target};
 
 pub use playground::{Playground, FILES as PLAYGROUND_FILES};
 pub use routes::{route, Route};
+pub use scene_file::SceneFile;
 
 /// The targets a preview compiles: what the page draws from (the manifest
 /// comes with every compile).
@@ -94,11 +98,12 @@ pub fn options_for(file: &Path, base: &Options) -> Options {
 /// terminal), and what to watch (every file read, and the paths an
 /// `#include` or `require` looked for and did not find).
 pub fn compile(file: &Path, opts: &Options) -> (Bundle, String, Watched) {
-    compile_for(file, opts, false)
+    compile_for(file, opts, false, None)
 }
 
-/// [`compile`], the bundle carrying the file's text (`source`) when asked.
-fn compile_for(file: &Path, opts: &Options, with_source: bool) -> (Bundle, String, Watched) {
+/// [`compile`], the bundle carrying the file's text (`source`) when asked,
+/// and `scene`'s scene instead of the inferred one.
+fn compile_for(file: &Path, opts: &Options, with_source: bool, scene: Option<&SceneFile>) -> (Bundle, String, Watched) {
     let pre = crate::preprocess_file(file, opts);
     let mut files = pre.files_read();
     // A probe in a directory that does not exist (a daslang module root
@@ -115,7 +120,22 @@ fn compile_for(file: &Path, opts: &Options, with_source: bool) -> (Bundle, Strin
     if with_source {
         bundle.source = Some(playground::source_of(file, &c));
     }
-    (bundle, c.render_diagnostics(), Watched { files, dirs: Vec::new() })
+    let mut text = c.render_diagnostics();
+    if let Some(sf) = scene {
+        files.push(sf.path().to_path_buf());
+        if bundle.ok {
+            match sf.load() {
+                Ok(s) => bundle.scene = Some(s.to_json()),
+                // Drawn as a failed compile: the page keeps the last good picture.
+                Err(e) => {
+                    bundle.ok = false;
+                    bundle.diagnostics.push(SceneFile::diagnostic(&e));
+                    text += &format!("error: {e}\n");
+                }
+            }
+        }
+    }
+    (bundle, text, Watched { files, dirs: Vec::new() })
 }
 
 /// A bound server, not yet answering.
@@ -143,18 +163,19 @@ impl Server {
 
     /// Compiles `file` now and on every change (diagnostics to stderr),
     /// and answers requests until the process ends; with `playground`,
-    /// serves it too, and every bundle carries the file's text. Returns
-    /// only if the watcher or the listening socket fails.
-    pub fn serve(self, file: PathBuf, opts: Options, playground: Option<Playground>) -> Result<(), String> {
+    /// serves it too, and every bundle carries the file's text; with
+    /// `scene`, the program is drawn with that scene file. Returns only if
+    /// the watcher or the listening socket fails.
+    pub fn serve(self, file: PathBuf, opts: Options, playground: Option<Playground>, scene: Option<SceneFile>) -> Result<(), String> {
         let published = Published::default();
         let p = published.clone();
         let with_source = playground.is_some();
-        let site = Arc::new(Site { live: playground::live_json(&file, &opts), playground });
+        let site = Arc::new(Site { live: playground::live_json(&file, &opts), playground, scene: scene.clone() });
         let watcher = std::thread::Builder::new()
             .name("preview-watch".into())
             .spawn(move || {
                 crate::watch::watch(|| {
-                    let (bundle, text, watched) = compile_for(&file, &opts, with_source);
+                    let (bundle, text, watched) = compile_for(&file, &opts, with_source, scene.as_ref());
                     eprint!("{text}");
                     let code = if bundle.ok { 0 } else { crate::run::EXIT_ERROR };
                     p.publish(bundle.to_json());
@@ -184,6 +205,8 @@ struct Site {
     /// `/playground/live.json`.
     live: String,
     playground: Option<Playground>,
+    /// `--scene`: its images under `/scene/NAME`.
+    scene: Option<SceneFile>,
 }
 
 fn answer(request: tiny_http::Request, port: u16, published: &Published, site: &Site) {
@@ -213,6 +236,11 @@ fn answer(request: tiny_http::Request, port: u16, published: &Published, site: &
         },
         Route::Live if site.playground.is_some() => respond(request, 200, "application/json", site.live.clone().into_bytes()),
         Route::Live => not_built(request),
+        Route::SceneImage(name) => match site.scene.as_ref().map(|s| s.image(&name)) {
+            Some(Ok((kind, body))) => respond(request, 200, kind, body),
+            Some(Err((status, why))) => respond(request, status, "text/plain; charset=utf-8", format!("{why}\n").into_bytes()),
+            None => respond(request, 404, "text/plain; charset=utf-8", b"no scene file is drawn (umbrac preview FILE --scene SCENE)\n".to_vec()),
+        },
         Route::Redirect(to) => {
             let location = tiny_http::Header::from_bytes("Location", to).expect("a valid header");
             let _ = request.respond(tiny_http::Response::empty(301).with_header(location));

@@ -9,6 +9,7 @@ const ASSETS: &[(&str, &str, &str)] = &[
     ("draw.js", "text/javascript; charset=utf-8", include_str!("../../web/preview/draw.js")),
     ("controls.js", "text/javascript; charset=utf-8", include_str!("../../web/preview/controls.js")),
     ("scene.js", "text/javascript; charset=utf-8", include_str!("../../web/preview/scene.js")),
+    ("passes.js", "text/javascript; charset=utf-8", include_str!("../../web/preview/passes.js")),
     ("preview.css", "text/css; charset=utf-8", include_str!("../../web/preview/preview.css")),
 ];
 
@@ -25,6 +26,9 @@ pub enum Route {
     Playground(&'static str),
     /// `/playground/live.json`: the page is under a preview server.
     Live,
+    /// `/scene/NAME`: an image file the scene file names (checked by
+    /// [`super::SceneFile::image`] against the scene and its directory).
+    SceneImage(String),
     /// `/playground` without its slash: the page's relative URLs need it.
     Redirect(&'static str),
     /// An error status and why.
@@ -56,6 +60,7 @@ pub fn route(get: bool, url: &str, host: Option<&str>, port: u16) -> Route {
         "/playground" => Route::Redirect("/playground/"),
         "/playground/" => Route::Playground("index.html"),
         "/playground/live.json" => Route::Live,
+        _ if path.starts_with("/scene/") && path.len() > "/scene/".len() => Route::SceneImage(path["/scene/".len()..].to_string()),
         _ if path.starts_with("/playground/") => match super::playground::FILES.iter().find(|(name, _)| path["/playground/".len()..] == **name) {
             Some((name, _)) => Route::Playground(name),
             None => Route::Refused(404, "not found"),
@@ -94,6 +99,8 @@ mod tests {
         assert_eq!(route(true, "/playground/umbrac_web_bg.wasm", H, 8000), Route::Playground("umbrac_web_bg.wasm"));
         assert_eq!(route(true, "/playground/live.json?x", H, 8000), Route::Live);
         assert_eq!(route(true, "/playground", H, 8000), Route::Redirect("/playground/"));
+        assert_eq!(route(true, "/scene/brick.png?x", H, 8000), Route::SceneImage("brick.png".into()));
+        assert_eq!(route(true, "/scene/maps/brick.png", H, 8000), Route::SceneImage("maps/brick.png".into()));
         for (name, _, _) in ASSETS {
             assert!(asset(name).is_some_and(|(_, b)| !b.is_empty()), "{name}");
         }
@@ -101,7 +108,7 @@ mod tests {
 
     #[test]
     fn nothing_else_is() {
-        for url in ["/../Cargo.toml", "/%2e%2e/Cargo.toml", "/..%2fCargo.toml", "/draw.js/../../x", "//etc/passwd", "/etc/passwd", "/web/preview/draw.js", "\\..\\x", "http://evil/", "/index.html%00", "/playground/../Cargo.toml", "/playground/umbrac_web.js", "/playground/pkg/umbrac_web.js", "/playground//etc/passwd", "/playground/index.html/", "/playground/draw.js", "/main.js"] {
+        for url in ["/../Cargo.toml", "/%2e%2e/Cargo.toml", "/..%2fCargo.toml", "/draw.js/../../x", "//etc/passwd", "/etc/passwd", "/web/preview/draw.js", "\\..\\x", "http://evil/", "/index.html%00", "/playground/../Cargo.toml", "/playground/umbrac_web.js", "/playground/pkg/umbrac_web.js", "/playground//etc/passwd", "/playground/index.html/", "/playground/draw.js", "/main.js", "/scene/", "/scene/../Cargo.toml", "/scene/%2e%2e/x.png", "/scene/..%2fx.png", "/scene/a\\..\\b.png"] {
             assert!(matches!(route(true, url, H, 8000), Route::Refused(403 | 404, _)), "{url}");
         }
         assert!(matches!(route(false, "/", H, 8000), Route::Refused(405, _)));

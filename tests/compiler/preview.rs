@@ -148,3 +148,60 @@ fn a_folder_that_is_not_a_built_playground_is_an_error() {
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(err.contains("is not a built playground") && err.contains(&dir.path().display().to_string()), "{err}");
 }
+
+/// `--scene FILE`: the bundle carries the scene file's scene, and the
+/// image files its textures name are served under /scene/NAME; nothing
+/// else is: not a file beside it that it does not name, not a name that
+/// leaves its directory (even one the scene names), not any without
+/// `--scene`.
+#[test]
+fn with_a_scene_file_only_the_images_it_names_are_served() {
+    let (dir, plain) = server();
+    let sub = dir.path().join("scene");
+    std::fs::create_dir(&sub).unwrap();
+    std::fs::write(sub.join("tex.png"), "IMAGE tex").unwrap();
+    std::fs::write(sub.join("other.png"), "SECRET other").unwrap();
+    std::fs::write(dir.path().join("outside.png"), "SECRET outside").unwrap();
+    // A link beside the scene that leads out of its directory.
+    #[cfg(unix)]
+    std::os::unix::fs::symlink(dir.path().join("outside.png"), sub.join("link.png")).unwrap();
+    let scene = sub.join("s.toml");
+    let text = "[[textures]]\nname = \"tex\"\nimage = \"tex.png\"\n\n[[textures]]\nname = \"out\"\nimage = \"../outside.png\"\n\n\
+        [[textures]]\nname = \"link\"\nimage = \"link.png\"\n\n\
+        [[passes]]\nname = \"main\"\nvertex = \"main_vs\"\nfragment = \"main_fs\"\ncolor = \"screen\"\nsamplers = { u_tex = { texture = \"tex\" } }\n[[passes.draws]]\nmesh = \"none\"\nvertices = 3\n";
+    std::fs::write(&scene, text).unwrap();
+    let s = PreviewServer::start_with(&dir.path().join("p.das"), &[std::ffi::OsStr::new("--scene"), scene.as_os_str()]);
+    let host = s.host();
+    let (status, body) = s.get("/scene/tex.png", &host);
+    assert_eq!((status, body.as_str()), (200, "IMAGE tex"));
+    for target in ["/scene/link.png", "/scene/other.png", "/scene/../outside.png", "/scene/..%2foutside.png", "/scene/%2e%2e/outside.png", "/scene/s.toml", "/scene/", "/scene//etc/passwd", "/scene/..\\outside.png"] {
+        let (status, body) = s.get(target, &host);
+        assert!(status == 403 || status == 404, "{target}: {status}");
+        assert!(!body.contains("SECRET") && !body.contains("root:"), "{target}: {body}");
+    }
+    assert_eq!(plain.get("/scene/tex.png", &plain.host()).0, 404, "no scene file, no images");
+    assert_eq!(s.get("/passes.js", &host).0, 200);
+    let started = std::time::Instant::now();
+    let json = loop {
+        let (status, body) = s.get("/bundle.json", &host);
+        if status == 200 {
+            break serde_json::from_str::<serde_json::Value>(&body).unwrap();
+        }
+        assert!(started.elapsed().as_secs() < 30, "no bundle: {status}");
+        std::thread::sleep(std::time::Duration::from_millis(100));
+    };
+    assert_eq!(json["scene"]["passes"][0]["samplers"]["u_tex"]["texture"], "tex", "the file's scene, not the inferred one: {}", json["scene"]);
+}
+
+#[test]
+fn a_broken_scene_file_is_an_error_not_a_server() {
+    let dir = tempfile::tempdir().unwrap();
+    let file = dir.path().join("p.das");
+    std::fs::write(&file, PROGRAM).unwrap();
+    let scene = dir.path().join("s.toml");
+    std::fs::write(&scene, "[[passes]]\nname = \"main\"\nvertex = 3\n").unwrap();
+    let out = std::process::Command::new(env!("CARGO_BIN_EXE_umbrac")).arg("preview").arg(&file).arg("--scene").arg(&scene).output().unwrap();
+    assert_eq!(out.status.code(), Some(1));
+    let err = String::from_utf8_lossy(&out.stderr);
+    assert!(err.contains("s.toml:3:10") && err.contains('^'), "{err}");
+}

@@ -32,6 +32,8 @@ mod numerics;
 mod page_vs_render;
 #[cfg(feature = "preview")]
 mod preview;
+#[cfg(all(feature = "preview", feature = "render"))]
+mod preview_passes;
 #[cfg(feature = "render")]
 mod programs;
 #[cfg(feature = "render")]

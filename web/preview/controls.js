@@ -113,6 +113,10 @@ export class Inputs {
         const key = `${b.name}.${m.name}`;
         const spec = plan.values[m.name];
         const control = plan.controls.find((c) => c.name === m.name);
+        if (plan.perDraw?.has(m.name)) {
+          panel.append(note(`${m.name}: set by the scene's passes and draws`));
+          continue;
+        }
         if (typeof spec === 'string') {
           this.bound.push({ buffer: b.name, member: m, t, convention: spec });
           const orbits = /^(view|view_rotation|projection|view_projection|model_view_projection|camera_position)$/.test(spec);
@@ -239,6 +243,7 @@ export class Inputs {
       if (!this.images.has(ikey)) this.images.set(ikey, { ...this.images.get(key), filter: tex.filter });
       textures[s] = this.images.get(ikey);
     }
-    return { buffers, textures };
+    // The conventions too: a scene's passes and draws set values of their own (passes.js).
+    return { buffers, textures, conventions: conv };
   }
 }

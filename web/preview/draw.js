@@ -22,6 +22,7 @@
 // from the same words), so both APIs draw the same values.
 
 import { pattern, mesh, instance, fit, PATTERNS } from './scene.js';
+import { needsPasses, passesPlan, GLPasses, GPUPasses } from './passes.js';
 
 export { pattern, PATTERNS };
 
@@ -89,7 +90,7 @@ export function planOf(bundle, programIndex = 0) {
   return madeUpPlan(m, programIndex);
 }
 
-const entryOf = (m, name) => m.entry_points.find((e) => e.name === name);
+export const entryOf = (m, name) => m.entry_points.find((e) => e.name === name);
 
 function checkColourOutput(fragment) {
   const out0 = fragment.outputs.find((o) => o.location === 0) ?? fragment.outputs[0];
@@ -100,32 +101,17 @@ function checkColourOutput(fragment) {
 
 // The fragment's float colour outputs by location (MRT): which one is
 // shown is the renderer's `view`.
-function colourOutputs(fragment) {
+export function colourOutputs(fragment) {
   return fragment.outputs.filter((o) => parseType(o.type)?.scalar === 'float').map((o) => ({ name: o.name, location: o.location })).sort((a, b) => a.location - b.location);
 }
 
-function planOfScene(m, scene) {
-  const passes = scene.passes ?? [];
-  // Passes that only clear a depth target (what a shadow sampler reads when
-  // nothing draws its map) are the depth texture itself, cleared to 1.
-  const clearOnly = passes.filter((p) => p.draws.length === 0 && p.depth && !p.color);
-  const drawn = passes.filter((p) => !clearOnly.includes(p));
-  // What this page does not draw yet is named, never skipped.
-  if (drawn.length !== 1 || drawn[0].color !== 'screen') {
-    throw new DrawError('plan', `the preview draws scenes of one pass to the screen (and depth targets cleared); this one has ${drawn.length} (${drawn.map((p) => p.name).join(', ')})`);
-  }
-  const pass = drawn[0];
-  const cleared = new Set(clearOnly.map((p) => p.depth));
-  if (pass.draws.length !== 1) throw new DrawError('plan', `the preview draws one draw a pass; pass \`${pass.name}\` has ${pass.draws.length}`);
-  const draw = pass.draws[0];
-  const vertex = entryOf(m, pass.vertex);
-  const fragment = pass.fragment ? entryOf(m, pass.fragment) : null;
-  if (!vertex || !fragment) throw new DrawError('plan', `pass \`${pass.name}\` names an entry point the manifest lacks`);
-  checkColourOutput(fragment);
+// A scene draw's vertex attributes for `vertex`'s inputs (one record per
+// vertex or instance), its vertex count and its instances.
+export function drawGeometry(vertex, draw) {
   const vertices = mesh(draw.mesh);
   const instances = draw.instances ? draw.instances.count.reduce((a, b) => a * b, 1) : 1;
   const attributes = [];
-  for (const a of vertex.inputs) {
+  for (const a of draw.mesh === 'none' ? [] : vertex.inputs) {
     const t = parseType(a.type);
     const source = draw.attributes?.[a.name];
     if (!t || t.cols || !source) throw new DrawError('plan', `the scene feeds no attribute to the vertex input \`${a.name} : ${a.type}\``);
@@ -134,6 +120,26 @@ function planOfScene(m, scene) {
     const records = perInstance ? Array.from({ length: instances }, (_, i) => instance(draw.instances, i)[source]) : vertices.map((v) => v[source]);
     attributes.push({ name: a.name, glsl_name: a.glsl_name ?? a.name, location: a.glsl_location ?? a.location, wgsl_location: a.location, type: t, format: a.vertex_format, perInstance, data: records.flatMap((r) => fit(r, t.n)) });
   }
+  return { attributes, count: draw.mesh === 'none' ? draw.vertices ?? 3 : vertices.length, instances };
+}
+
+function planOfScene(m, scene) {
+  const passes = scene.passes ?? [];
+  // Passes that only clear a depth target (what a shadow sampler reads when
+  // nothing draws its map) are the depth texture itself, cleared to 1.
+  const clearOnly = passes.filter((p) => p.draws.length === 0 && p.depth && !p.color);
+  const drawn = passes.filter((p) => !clearOnly.includes(p));
+  // Anything more than one draw of one pass to the screen (sampling at
+  // most cleared depth targets and patterns) is passes.js's.
+  if (needsPasses(scene, drawn, clearOnly)) return passesPlan(m, scene);
+  const pass = drawn[0];
+  const cleared = new Set(clearOnly.map((p) => p.depth));
+  const draw = pass.draws[0];
+  const vertex = entryOf(m, pass.vertex);
+  const fragment = pass.fragment ? entryOf(m, pass.fragment) : null;
+  if (!vertex || !fragment) throw new DrawError('plan', `pass \`${pass.name}\` names an entry point the manifest lacks`);
+  checkColourOutput(fragment);
+  const { attributes, count, instances } = drawGeometry(vertex, draw);
   const textures = {};
   for (const [sampler, input] of Object.entries(pass.samplers ?? {})) {
     if (cleared.has(input.texture)) {
@@ -142,12 +148,11 @@ function planOfScene(m, scene) {
       continue;
     }
     const tex = (scene.textures ?? []).find((x) => x.name === input.texture);
-    if (!tex || !tex.pattern) throw new DrawError('plan', `sampler \`${sampler}\` reads \`${input.texture}\`, which is not a built-in pattern (render targets and image files are not drawn by the preview yet)`);
     textures[sampler] = { pattern: tex.pattern, size: tex.size ?? [64, 64], filter: input.filter ?? 'linear' };
   }
   return {
     vertex, fragment, attributes,
-    count: draw.mesh === 'none' ? draw.vertices ?? 3 : vertices.length,
+    count,
     instances,
     depth: !!pass.depth,
     cull: pass.cull ?? 'none',
@@ -280,11 +285,11 @@ export function readMember(words, member) {
 }
 
 // What this preview cannot bind yet, named, rather than drawn wrong.
-function refuseUnsupported(m, plan) {
+export function refuseUnsupported(m, plan) {
   const entries = plan.entries;
   const used = new Set(entries.flatMap((e) => [...(e.uniform_buffers ?? []), ...(e.samplers ?? []), ...(e.storage_buffers ?? []), ...(e.images ?? [])]));
   for (const s of m.samplers ?? []) {
-    if (!used.has(s.name)) continue;
+    if (!used.has(s.name) || plan.passes) continue;
     const depth = plan.textures[s.name]?.depthCleared;
     if (s.dimension !== '2d' || s.array_size || (depth ? !s.comparison : s.comparison || s.sample_type !== 'float')) {
       throw new DrawError('plan', `the preview binds built-in 2D colour textures and cleared depth targets only; \`${s.name} : ${s.type}\` is not one here`);
@@ -321,7 +326,7 @@ function glslFullScreen(fragment) {
   return lines.join('\n') + '\n';
 }
 
-function fileOf(bundle, entry, target) {
+export function fileOf(bundle, entry, target) {
   const name = entry.files[target];
   const f = bundle.files.find((x) => x.name === name);
   if (!f) throw new DrawError('plan', `the bundle lacks ${name}, the ${target} output of \`${entry.name}\``);
@@ -331,12 +336,12 @@ function fileOf(bundle, entry, target) {
 // The depth view's shaders (a full-screen triangle, each pixel its depth
 // texel as grey, raised to the 32nd power: a perspective depth buffer is
 // nearly all above 0.9).
-const DEPTH_VIEW_GLSL = [
+export const DEPTH_VIEW_GLSL = [
   '#version 300 es\nvoid main() { gl_Position = vec4(gl_VertexID == 1 ? 3.0 : -1.0, gl_VertexID == 2 ? 3.0 : -1.0, 0.0, 1.0); }\n',
   '#version 300 es\nprecision highp float;\nuniform highp sampler2D depth_view;\nout vec4 colour;\nvoid main() { float z = pow(texelFetch(depth_view, ivec2(gl_FragCoord.xy), 0).r, 32.0); colour = vec4(vec3(z), 1.0); }\n',
 ];
 
-const DEPTH_VIEW_WGSL = `
+export const DEPTH_VIEW_WGSL = `
 @group(0) @binding(0) var depth_view: texture_depth_2d;
 @vertex fn vs(@builtin(vertex_index) i: u32) -> @builtin(position) vec4<f32> {
   return vec4<f32>(select(-1.0, 3.0, i == 1u), select(-1.0, 3.0, i == 2u), 0.0, 1.0);
@@ -346,6 +351,57 @@ const DEPTH_VIEW_WGSL = `
   return vec4<f32>(vec3<f32>(z), 1.0);
 }
 `;
+
+// The uniform blocks (bound to their points) and loose uniforms of a
+// linked `program` that `used` names; `program` is in use.
+export function glUniformsOf(gl, program, m, used) {
+  const blocks = [];
+  const loose = [];
+  for (const b of m.uniform_buffers ?? []) {
+    if (!used.has(b.name) && !(b.loose && b.members.some((x) => used.has(x.name)))) continue;
+    if (b.glsl_block) {
+      const index = gl.getUniformBlockIndex(program, b.glsl_block);
+      if (index === gl.INVALID_INDEX) continue; // dropped by the driver
+      gl.uniformBlockBinding(program, index, b.glsl_binding);
+      const size = Math.max(b.size, gl.getActiveUniformBlockParameter(program, index, gl.UNIFORM_BLOCK_DATA_SIZE));
+      blocks.push({ name: b.name, point: b.glsl_binding, size, ubo: gl.createBuffer() });
+    } else {
+      for (const x of b.members) {
+        // An array of numbers, vectors or matrices is set whole: its elements
+        // read at the array stride.
+        const arr = /^(.+)\[(\d+)\]$/.exec(x.type);
+        const t = parseType(arr ? arr[1] : x.type);
+        const loc = gl.getUniformLocation(program, x.glsl_name ?? x.name);
+        if (loc === null) continue;
+        if (!t) throw new DrawError('plan', `the preview does not set the loose uniform \`${x.name} : ${x.type}\` on WebGL2 yet`);
+        const elements = arr ? Array.from({ length: +arr[2] }, (_, k) => ({ ...x, type: arr[1], offset: x.offset + k * x.array_stride })) : [x];
+        loose.push({ buffer: b.name, elements, t, loc });
+      }
+    }
+  }
+  return { blocks, loose };
+}
+
+// Sets them from the words of each uniform buffer.
+export function setGLUniforms(gl, { blocks, loose }, buffers) {
+  for (const b of blocks) {
+    const bytes = new Uint8Array(b.size);
+    bytes.set(new Uint8Array(buffers[b.name].buffer, buffers[b.name].byteOffset, Math.min(b.size, buffers[b.name].byteLength)));
+    gl.bindBuffer(gl.UNIFORM_BUFFER, b.ubo);
+    gl.bufferData(gl.UNIFORM_BUFFER, bytes, gl.DYNAMIC_DRAW);
+    gl.bindBufferBase(gl.UNIFORM_BUFFER, b.point, b.ubo);
+  }
+  for (const u of loose) {
+    const v = u.elements.flatMap((e) => readMember(buffers[u.buffer], e));
+    const { t, loc } = u;
+    if (t.cols) {
+      const fn = t.cols === t.rows ? `uniformMatrix${t.cols}fv` : `uniformMatrix${t.cols}x${t.rows}fv`;
+      gl[fn](loc, false, new Float32Array(v));
+    } else if (t.scalar === 'float') gl[`uniform${t.n}fv`](loc, new Float32Array(v));
+    else if (t.scalar === 'uint') gl[`uniform${t.n}uiv`](loc, new Uint32Array(v));
+    else gl[`uniform${t.n}iv`](loc, new Int32Array(v));
+  }
+}
 
 class WebGL2Renderer {
   constructor(canvas) {
@@ -377,6 +433,7 @@ class WebGL2Renderer {
   }
 
   load(bundle, plan) {
+    if (plan.passes) return this.loadPasses(bundle, plan);
     const gl = this.gl;
     const m = bundle.manifest;
     refuseUnsupported(m, plan);
@@ -397,30 +454,7 @@ class WebGL2Renderer {
     }
     const used = new Set(plan.entries.flatMap((e) => [...e.uniform_buffers, ...e.uniforms, ...e.samplers]));
     gl.useProgram(program);
-    const blocks = [];
-    const loose = [];
-    for (const b of m.uniform_buffers ?? []) {
-      if (!used.has(b.name) && !(b.loose && b.members.some((x) => used.has(x.name)))) continue;
-      if (b.glsl_block) {
-        const index = gl.getUniformBlockIndex(program, b.glsl_block);
-        if (index === gl.INVALID_INDEX) continue; // dropped by the driver
-        gl.uniformBlockBinding(program, index, b.glsl_binding);
-        const size = Math.max(b.size, gl.getActiveUniformBlockParameter(program, index, gl.UNIFORM_BLOCK_DATA_SIZE));
-        blocks.push({ name: b.name, point: b.glsl_binding, size, ubo: gl.createBuffer() });
-      } else {
-        for (const x of b.members) {
-          // An array of numbers, vectors or matrices is set whole: its elements
-          // read at the array stride.
-          const arr = /^(.+)\[(\d+)\]$/.exec(x.type);
-          const t = parseType(arr ? arr[1] : x.type);
-          const loc = gl.getUniformLocation(program, x.glsl_name ?? x.name);
-          if (loc === null) continue;
-          if (!t) throw new DrawError('plan', `the preview does not set the loose uniform \`${x.name} : ${x.type}\` on WebGL2 yet`);
-          const elements = arr ? Array.from({ length: +arr[2] }, (_, k) => ({ ...x, type: arr[1], offset: x.offset + k * x.array_stride })) : [x];
-          loose.push({ buffer: b.name, elements, t, loc });
-        }
-      }
-    }
+    const { blocks, loose } = glUniformsOf(gl, program, m, used);
     const samplers = [];
     for (const s of m.samplers ?? []) {
       const loc = gl.getUniformLocation(program, s.glsl_name);
@@ -469,10 +503,23 @@ class WebGL2Renderer {
     this.loaded = { program, blocks, loose, samplers, vao, vbos, plan, textureOf: new Map(), targets: null };
   }
 
+  // A scene of several passes, targets or draws (passes.js).
+  async loadPasses(bundle, plan) {
+    refuseUnsupported(bundle.manifest, plan);
+    const passes = await GLPasses.load(this, bundle, plan);
+    this.unload();
+    this.loaded = { passes, plan };
+  }
+
   unload() {
     const l = this.loaded;
     if (!l) return;
     const gl = this.gl;
+    if (l.passes) {
+      l.passes.destroy();
+      this.loaded = null;
+      return;
+    }
     gl.deleteProgram(l.program);
     gl.deleteVertexArray(l.vao);
     l.vbos.forEach((b) => gl.deleteBuffer(b));
@@ -558,9 +605,14 @@ class WebGL2Renderer {
     gl.useProgram(null);
   }
 
-  frame({ buffers, textures }) {
+  frame(inputs) {
     const l = this.loaded;
     if (!l) return;
+    if (l.passes) {
+      l.passes.frame(inputs, this.view);
+      return;
+    }
+    const { buffers, textures } = inputs;
     const gl = this.gl;
     const { plan } = l;
     const depthView = this.view === 'depth' && plan.depth;
@@ -581,23 +633,7 @@ class WebGL2Renderer {
       gl.cullFace(plan.cull === 'front' ? gl.FRONT : gl.BACK);
     }
     gl.useProgram(l.program);
-    for (const b of l.blocks) {
-      const bytes = new Uint8Array(b.size);
-      bytes.set(new Uint8Array(buffers[b.name].buffer, buffers[b.name].byteOffset, Math.min(b.size, buffers[b.name].byteLength)));
-      gl.bindBuffer(gl.UNIFORM_BUFFER, b.ubo);
-      gl.bufferData(gl.UNIFORM_BUFFER, bytes, gl.DYNAMIC_DRAW);
-      gl.bindBufferBase(gl.UNIFORM_BUFFER, b.point, b.ubo);
-    }
-    for (const u of l.loose) {
-      const v = u.elements.flatMap((e) => readMember(buffers[u.buffer], e));
-      const { t, loc } = u;
-      if (t.cols) {
-        const fn = t.cols === t.rows ? `uniformMatrix${t.cols}fv` : `uniformMatrix${t.cols}x${t.rows}fv`;
-        gl[fn](loc, false, new Float32Array(v));
-      } else if (t.scalar === 'float') gl[`uniform${t.n}fv`](loc, new Float32Array(v));
-      else if (t.scalar === 'uint') gl[`uniform${t.n}uiv`](loc, new Uint32Array(v));
-      else gl[`uniform${t.n}iv`](loc, new Int32Array(v));
-    }
+    setGLUniforms(gl, l, buffers);
     for (const s of l.samplers) {
       const img = textures[s.name];
       gl.activeTexture(gl.TEXTURE0 + s.unit);
@@ -722,6 +758,13 @@ class WebGPURenderer {
     const device = this.device;
     const m = bundle.manifest;
     refuseUnsupported(m, plan);
+    if (plan.passes) {
+      // A scene of several passes, targets or draws (passes.js).
+      const passes = await GPUPasses.load(this, bundle, plan);
+      this.unload();
+      this.loaded = { passes, plan };
+      return;
+    }
     const wgsl = bundle.files.find((f) => f.target === 'wgsl');
     if (!wgsl) throw new DrawError('plan', 'the bundle has no WGSL output');
     const code = plan.vertex ? wgsl.text : wgsl.text + wgslFullScreen(plan.fragment);
@@ -799,6 +842,11 @@ class WebGPURenderer {
   unload() {
     const l = this.loaded;
     if (!l) return;
+    if (l.passes) {
+      l.passes.destroy();
+      this.loaded = null;
+      return;
+    }
     l.buffers.forEach((b) => b.buffer.destroy());
     l.samplers.forEach((s) => s.texture.destroy());
     l.vbos.forEach((b) => b.destroy());
@@ -818,7 +866,7 @@ class WebGPURenderer {
     }));
   }
 
-  frame({ buffers, textures }, readback = null) {
+  frame({ buffers, textures, conventions }, readback = null) {
     const l = this.loaded;
     if (!l) return;
     if (this.lost) throw new DrawError('api', `the WebGPU device was lost: ${this.lost}`);
@@ -826,7 +874,11 @@ class WebGPURenderer {
       // Shown when read back; a frame that comes while one is read is dropped.
       if (this.busy) return;
       this.busy = true;
-      this.read({ buffers, textures }).then((px) => this.present(px), (e) => { this.lost ??= e.message; }).finally(() => { this.busy = false; });
+      this.read({ buffers, textures, conventions }).then((px) => this.present(px), (e) => { this.lost ??= e.message; }).finally(() => { this.busy = false; });
+      return;
+    }
+    if (l.passes) {
+      l.passes.frame({ buffers, textures, conventions }, this.view, readback);
       return;
     }
     const device = this.device;

@@ -134,7 +134,7 @@ async function switchTo(bundle, generation) {
     return;
   }
   const outputs = plan.outputs;
-  $('output').replaceChildren(...outputs.map((o) => new Option(`${o.name} (location ${o.location})`, o.location)));
+  $('output').replaceChildren(...outputs.map((o) => new Option(plan.passes ? `${o.name} (the scene's output)` : `${o.name} (location ${o.location})`, o.location)));
   if (plan.depth) $('output').append(new Option('depth (z^32: near dark, far white)', 'depth'));
   $('output').hidden = $('output').options.length < 2;
   if (!(view === 'depth' && plan.depth) && !outputs.some((o) => o.location === view)) view = outputs[0]?.location ?? 0;

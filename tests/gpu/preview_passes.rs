@@ -1,0 +1,197 @@
+//! `umbrac preview FILE --scene SCENE` in headless chromium
+//! (web/preview-drive.mjs): scenes of several passes, render targets and
+//! draws, with samplers reading targets drawn earlier, drawn by the page
+//! on WebGL2 and WebGPU (web/preview/passes.js; docs/preview.md).
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Stdio};
+
+use crate::support::preview::PreviewServer;
+use crate::support::skip;
+
+/// At most this share of the pixels may differ by more than 2/255 between
+/// the page's WebGL2 and WebGPU pictures (measured: none).
+const API_AGREEMENT: f64 = 0.001;
+
+fn root() -> PathBuf {
+    PathBuf::from(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// Whether node, chromium and playwright-core are here (else skipped).
+fn browser_ready() -> bool {
+    let chromium = std::env::var_os("UMBRAC_CHROMIUM").map_or_else(|| PathBuf::from("/usr/bin/chromium"), PathBuf::from);
+    let node = Command::new("node").arg("--version").output().is_ok_and(|o| o.status.success());
+    let playwright = root().join("web/node_modules/playwright-core/package.json").is_file();
+    if node && chromium.is_file() && playwright {
+        return true;
+    }
+    skip(format!("the preview page needs node ({node}), {} ({}) and playwright-core in web/node_modules ({playwright}); .ci/run installs them", chromium.display(), chromium.is_file()));
+    false
+}
+
+/// The page's first picture of `program` drawn with `scene`: its state and
+/// its pictures (rows bottom first; WebGPU's absent where chromium has none).
+struct Picture {
+    state: serde_json::Value,
+    webgl2: Vec<u8>,
+    webgpu: Option<Vec<u8>>,
+}
+
+fn picture(program: &Path, scene: &Path, out: &Path) -> Picture {
+    std::fs::create_dir_all(out).unwrap();
+    let server = PreviewServer::start_with(program, &[std::ffi::OsStr::new("--scene"), scene.as_os_str()]);
+    let status = Command::new("node")
+        .arg(root().join("web/preview-drive.mjs"))
+        .arg(format!("{}?time=0", server.url()))
+        .arg(program)
+        .arg(out)
+        .stdin(Stdio::null())
+        .status()
+        .expect("node runs");
+    let result: serde_json::Value = serde_json::from_slice(&std::fs::read(out.join("result.json")).expect("the driver writes its result")).unwrap();
+    assert!(status.success(), "the driver failed: {result}");
+    let state = result["steps"][0].clone();
+    assert_eq!(state["ok"], true, "{}: {state}", scene.display());
+    assert_eq!(state["errors"]["webgl2"], serde_json::Value::Null, "{}: {state}", scene.display());
+    let webgl2 = std::fs::read(out.join("0.webgl2.rgba")).unwrap_or_else(|_| panic!("{}: no WebGL2 picture: {state}", scene.display()));
+    let webgpu = std::fs::read(out.join("0.webgpu.rgba")).ok();
+    match &webgpu {
+        Some(_) => {
+            let share = state["diff"]["share"].as_f64().unwrap();
+            assert!(share <= API_AGREEMENT, "{}: {:.3}% of the pixels differ between WebGL2 and WebGPU: {}", scene.display(), share * 100.0, state["diff"]);
+        }
+        None => skip(format!("{}: headless chromium drew no WebGPU picture: {}", scene.display(), state["errors"]["webgpu"])),
+    }
+    Picture { state, webgl2, webgpu }
+}
+
+/// The share of pixels where `a` is darker than `b` by more than `by`
+/// (of 255, the sum of the colour channels).
+fn darker_share(a: &[u8], b: &[u8], by: i32) -> f64 {
+    assert_eq!(a.len(), b.len());
+    let sum = |p: &[u8]| p[..3].iter().map(|&c| c as i32).sum::<i32>();
+    let n = a.chunks(4).zip(b.chunks(4)).filter(|(p, q)| sum(q) - sum(p) > by).count();
+    n as f64 / (a.len() / 4) as f64
+}
+
+/// The scene file `scene` changed by `edit`, written as JSON into `dir`.
+fn edited(scene: &Path, dir: &Path, name: &str, edit: impl FnOnce(&mut umbrac::scene::Scene)) -> PathBuf {
+    let mut s = umbrac::scene::Scene::parse(&scene.display().to_string(), &std::fs::read_to_string(scene).unwrap()).unwrap();
+    edit(&mut s);
+    let out = dir.join(name);
+    std::fs::write(&out, s.to_json().to_string()).unwrap();
+    out
+}
+
+/// shaders/scenes/shadow.toml: a depth pass of two draws into a 1024 x
+/// 1024 depth target, then the lit pass of two draws reading it through
+/// the comparison sampler. Drawn alike on both APIs; shadowed (against the
+/// same scene with the depth pass drawing nothing, at least 2% of the
+/// pixels darker by more than 30/255 summed; measured 3.4%); and as `umbrac render
+/// --backend webgl2` draws the scene file (at most 0.1% of the pixels over
+/// 8/255: measured none, worst 1).
+#[test]
+fn the_shadow_scene_file_draws_shadowed_on_both_apis() {
+    if !browser_ready() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let program = root().join("shaders/shadow.das");
+    let scene = root().join("shaders/scenes/shadow.toml");
+    let shadowed = picture(&program, &scene, &dir.path().join("shadowed"));
+    let lit_scene = edited(&scene, dir.path(), "lit.json", |s| s.passes[0].draws.clear());
+    let lit = picture(&program, &lit_scene, &dir.path().join("lit"));
+    let share = darker_share(&shadowed.webgl2, &lit.webgl2, 30);
+    assert!(share >= 0.02, "WebGL2: only {:.2}% of the pixels are in shadow", share * 100.0);
+    if let (Some(s), Some(l)) = (&shadowed.webgpu, &lit.webgpu) {
+        let share = darker_share(s, l, 30);
+        assert!(share >= 0.02, "WebGPU: only {:.2}% of the pixels are in shadow", share * 100.0);
+    }
+
+    assert_like_native(&program, &scene, &shadowed, dir.path());
+}
+
+/// Checks that the page's WebGL2 picture is within 8/255 of `umbrac render
+/// --backend webgl2` of the same program and scene file on at least 99.9%
+/// of the pixels.
+fn assert_like_native(program: &Path, scene: &Path, page: &Picture, dir: &Path) {
+    let (w, h) = (page.state["width"].as_u64().unwrap() as u32, page.state["height"].as_u64().unwrap() as u32);
+    let png = dir.join("native.png");
+    let out = Command::new(env!("CARGO_BIN_EXE_umbrac"))
+        .arg("render")
+        .arg(program)
+        .arg("--scene")
+        .arg(scene)
+        .args(["--backend", "webgl2", "--size", &format!("{w}x{h}"), "--out"])
+        .arg(&png)
+        .output()
+        .unwrap();
+    assert!(out.status.success(), "umbrac render: {}", String::from_utf8_lossy(&out.stderr));
+    let native = image::open(&png).unwrap().to_rgba8();
+    let mut off = 0;
+    for y in 0..h {
+        for x in 0..w {
+            // The page's rows are bottom first; the PNG's top first.
+            let px = &page.webgl2[4 * ((h - 1 - y) * w + x) as usize..][..3];
+            let n = native.get_pixel(x, y).0;
+            off += (0..3).any(|c| (px[c] as i32 - n[c] as i32).abs() > 8) as usize;
+        }
+    }
+    assert!(off as f64 <= 0.001 * (w * h) as f64, "{}: {off} of {} pixels differ from umbrac render --backend webgl2 by more than 8/255", scene.display(), w * h);
+}
+
+/// GL tutorial 08 (two programs) drawn with its scene file
+/// (shaders/scenes/tutorial_08.toml): alike on both APIs and as `umbrac
+/// render --backend webgl2` draws it.
+#[test]
+fn tutorial_08_draws_from_its_scene_file() {
+    let program = root().join("../shared/reference/daslang-tutorials/08_shadow.das");
+    if !program.is_file() {
+        skip(format!("{} is missing", program.display()));
+        return;
+    }
+    if !browser_ready() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let scene = root().join("shaders/scenes/tutorial_08.toml");
+    let page = picture(&program, &scene, &dir.path().join("page"));
+    assert_like_native(&program, &scene, &page, dir.path());
+}
+
+/// shaders/scenes/bloom.toml: four full-screen passes, three into 120 x
+/// 90 colour targets each read by the next through a plain sampler, the
+/// first and the last reading an image file the server serves beside the
+/// scene. Alike on both APIs; the bloom the last pass reads from the
+/// chain shows (against the same scene with `u_bloom_strength = 0`, at
+/// least 1% of the pixels brighter by more than 12/255 summed), and
+/// nothing is darker; with `output = "bright"` the page shows that target.
+#[test]
+fn a_post_processing_chain_reads_the_targets_drawn_before() {
+    if !browser_ready() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let program = root().join("shaders/programs/bloom.das");
+    let scene = root().join("shaders/scenes/bloom.toml");
+    let bloom = picture(&program, &scene, &dir.path().join("bloom"));
+    // Beside the original, so that its image file is found.
+    let plain_scene = edited(&scene, dir.path(), "plain.json", |s| {
+        s.values.insert("u_bloom_strength".into(), umbrac::scene::ValueSpec::Number(0.0));
+    });
+    std::fs::copy(root().join("shaders/scenes/bloom_source.png"), dir.path().join("bloom_source.png")).unwrap();
+    let plain = picture(&program, &plain_scene, &dir.path().join("plain"));
+    let distinct: std::collections::HashSet<&[u8]> = bloom.webgl2.chunks(4).collect();
+    assert!(distinct.len() > 100, "only {} colours: the image file was not drawn", distinct.len());
+    let brighter = darker_share(&plain.webgl2, &bloom.webgl2, 12);
+    assert!(brighter >= 0.01, "only {:.2}% of the pixels are brighter with the bloom", brighter * 100.0);
+    assert_eq!(darker_share(&bloom.webgl2, &plain.webgl2, 6), 0.0, "the bloom only adds light");
+
+    // `output` naming a target: the bright pass's, scaled to the canvas;
+    // dark but for the image's bright spots.
+    let bright_scene = edited(&scene, dir.path(), "bright.json", |s| s.output = "bright".into());
+    let bright = picture(&program, &bright_scene, &dir.path().join("bright"));
+    let dark = bright.webgl2.chunks(4).filter(|p| p[..3].iter().map(|&c| c as u32).sum::<u32>() < 30).count();
+    let share = dark as f64 / (bright.webgl2.len() / 4) as f64;
+    assert!((0.8..1.0).contains(&share), "{:.1}% of the bright target is dark", share * 100.0);
+}
