@@ -169,18 +169,32 @@ async function main() {
   const programs = [];
   for (const p of plan.programs) programs.push(await link(gl, p, sources, meshes));
 
+  // A target's GL texture target: only uploaded textures are other than 2D.
+  const kindOf = (t) => ({ cube: gl.TEXTURE_CUBE_MAP, '3d': gl.TEXTURE_3D, '2d-array': gl.TEXTURE_2D_ARRAY })[t.dim] ?? gl.TEXTURE_2D;
   const textures = plan.targets.map((t) => {
     const tex = gl.createTexture();
-    gl.bindTexture(gl.TEXTURE_2D, tex);
+    const kind = kindOf(t);
+    gl.bindTexture(kind, tex);
     const [internal] = formatOf(gl, t.format);
-    gl.texStorage2D(gl.TEXTURE_2D, 1, internal, t.width, t.height);
-    // A texture the host uploads (rgba8, memory row 0 first).
-    if (t.contents) gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, t.width, t.height, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(t.contents));
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+    // A texture the host uploads: rgba8, memory row 0 first, layers (cube
+    // faces +x, -x, +y, -y, +z, -z) one after another.
+    const bytes = t.contents ? new Uint8Array(t.contents) : null;
+    if (kind === gl.TEXTURE_2D || kind === gl.TEXTURE_CUBE_MAP) {
+      gl.texStorage2D(kind, 1, internal, t.width, t.height);
+      const face = t.width * t.height * 4;
+      if (bytes && kind === gl.TEXTURE_2D) gl.texSubImage2D(kind, 0, 0, 0, t.width, t.height, gl.RGBA, gl.UNSIGNED_BYTE, bytes);
+      if (bytes && kind === gl.TEXTURE_CUBE_MAP) {
+        for (let f = 0; f < 6; f++) gl.texSubImage2D(gl.TEXTURE_CUBE_MAP_POSITIVE_X + f, 0, 0, 0, t.width, t.height, gl.RGBA, gl.UNSIGNED_BYTE, bytes.subarray(f * face, (f + 1) * face));
+      }
+    } else {
+      gl.texStorage3D(kind, 1, internal, t.width, t.height, t.layers);
+      if (bytes) gl.texSubImage3D(kind, 0, 0, 0, 0, t.width, t.height, t.layers, gl.RGBA, gl.UNSIGNED_BYTE, bytes);
+    }
+    gl.texParameteri(kind, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+    gl.texParameteri(kind, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+    gl.bindTexture(kind, null);
     return tex;
   });
-  gl.bindTexture(gl.TEXTURE_2D, null);
   const framebuffer = (color, depth) => {
     const fbo = gl.createFramebuffer();
     gl.bindFramebuffer(gl.FRAMEBUFFER, fbo);
@@ -205,6 +219,7 @@ async function main() {
     // WebGL2 has no clamp to border: lookups outside clamp to the edge.
     gl.samplerParameteri(s, gl.TEXTURE_WRAP_S, gl.CLAMP_TO_EDGE);
     gl.samplerParameteri(s, gl.TEXTURE_WRAP_T, gl.CLAMP_TO_EDGE);
+    gl.samplerParameteri(s, gl.TEXTURE_WRAP_R, gl.CLAMP_TO_EDGE);
     if (t.compare) {
       gl.samplerParameteri(s, gl.TEXTURE_COMPARE_MODE, gl.COMPARE_REF_TO_TEXTURE);
       gl.samplerParameteri(s, gl.TEXTURE_COMPARE_FUNC, gl.LEQUAL);
@@ -252,7 +267,7 @@ async function main() {
       const s = sampler(t);
       samplers.push(s);
       gl.activeTexture(gl.TEXTURE0 + t.unit);
-      gl.bindTexture(gl.TEXTURE_2D, textures[t.target]);
+      gl.bindTexture(kindOf(plan.targets[t.target]), textures[t.target]);
       gl.bindSampler(t.unit, s);
     }
     gl.activeTexture(gl.TEXTURE0);
@@ -284,7 +299,7 @@ async function main() {
     }
     for (const t of pass.textures) {
       gl.activeTexture(gl.TEXTURE0 + t.unit);
-      gl.bindTexture(gl.TEXTURE_2D, null);
+      gl.bindTexture(kindOf(plan.targets[t.target]), null);
       gl.bindSampler(t.unit, null);
     }
     gl.activeTexture(gl.TEXTURE0);

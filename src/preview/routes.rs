@@ -9,6 +9,7 @@ const ASSETS: &[(&str, &str, &str)] = &[
     ("draw.js", "text/javascript; charset=utf-8", include_str!("../../web/preview/draw.js")),
     ("controls.js", "text/javascript; charset=utf-8", include_str!("../../web/preview/controls.js")),
     ("scene.js", "text/javascript; charset=utf-8", include_str!("../../web/preview/scene.js")),
+    ("textures.js", "text/javascript; charset=utf-8", include_str!("../../web/preview/textures.js")),
     ("preview.css", "text/css; charset=utf-8", include_str!("../../web/preview/preview.css")),
 ];
 

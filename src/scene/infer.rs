@@ -4,15 +4,19 @@
 //! - a vertex program with no vertex inputs draws three vertices (a
 //!   full-screen triangle placed from `gl_VertexID`); one whose position
 //!   input is a `float2` draws the built-in full-screen triangle; any
-//!   other draws the cube, with a depth buffer;
+//!   other draws the cube, with a depth buffer (none for a skybox: a
+//!   vertex program reading a rotation-only view, `view_rotation`, whose
+//!   camera looks 10 degrees up at the horizon);
 //! - each vertex input is fed by the mesh attribute its name asks for
 //!   (`names::attribute`); when one looks per-instance (`offset`,
 //!   `instance`), the draw is a 3 x 3 instance grid and every input the
 //!   mesh does not have is per instance too;
 //! - colour output 0 goes to the screen;
 //! - each 2D sampler reads a built-in pattern (a flat normal for names
-//!   that say normal, white for occlusion, checker otherwise); a shadow
-//!   sampler reads a depth target cleared to 1 (everything lit);
+//!   that say normal, white for occlusion, checker otherwise), a cube
+//!   sampler the sky, a 3D one 32 slices and an array one 4 layers of
+//!   the name's pattern; a 2D shadow sampler reads a depth target cleared
+//!   to 1 (everything lit);
 //! - each uniform: a per-frame convention its name asks for, else the
 //!   manifest's default, else a convention for the camera and light
 //!   names, else a fallback (`names::fallback`); and a control.
@@ -24,7 +28,7 @@
 use std::collections::BTreeMap;
 
 use super::names;
-use super::{Attribute, Control, Convention, Draw, Filter, InstanceGrid, MeshKind, OrbitCamera, Pass, Pattern, RenderTarget, SamplerInput, Scene, TargetFormat, Texture, ValueSpec, SCREEN};
+use super::{Attribute, Control, Convention, Draw, Filter, InstanceGrid, MeshKind, OrbitCamera, Pass, Pattern, RenderTarget, SamplerInput, Scene, TargetFormat, Texture, TextureKind, ValueSpec, SCREEN};
 use crate::emit::reflect_types::{EntryPoint, Reflection};
 
 /// Why a program gets no inferred scene.
@@ -112,9 +116,17 @@ impl Scene {
             values: BTreeMap::new(),
             draws: Vec::new(),
         };
-        if !matches!(draw.mesh, MeshKind::None | MeshKind::FullscreenTriangle) {
+        // A skybox (its vertex program reads a rotation-only view) puts its
+        // depth at the far plane, which a LESS test against 1 would reject;
+        // seen from inside, the cube needs no depth test.
+        let skybox = uniforms(r, &[vs]).iter().any(|(n, ty, _)| names::convention(n, ty) == Some(Convention::ViewRotation));
+        if !skybox && !matches!(draw.mesh, MeshKind::None | MeshKind::FullscreenTriangle) {
             scene.targets.push(RenderTarget { name: "depth".into(), format: TargetFormat::Depth32float, size: None });
             pass.depth = Some("depth".into());
+        }
+        if skybox {
+            // Looking 10 degrees up: the horizon, sky above and ground below.
+            scene.camera.pitch = -10.0;
         }
         pass.draws.push(draw);
         let mut clears = Vec::new();
@@ -123,21 +135,25 @@ impl Scene {
                 continue;
             }
             let s = r.samplers.iter().find(|s| &s.name == name).ok_or_else(|| InferError(format!("sampler `{name}` is not in the manifest")))?;
-            if s.dimension != "2d" {
-                return Err(InferError(format!(
-                    "sampler `{name}` is a {}: the runner's scenes have 2D textures only (no cube, 3D or array textures yet)",
-                    s.ty
-                )));
-            }
+            let kind = TextureKind::of_dimension(&s.dimension).ok_or_else(|| InferError(format!("sampler `{name}` is a {}: the runner's scenes have no {} textures", s.ty, s.dimension)))?;
             let texture = format!("{name}_texture");
             match s.sample_type.as_str() {
-                "float" => scene.textures.push(Texture { name: texture.clone(), pattern: Some(pattern_for(name)), image: None, size: [64, 64] }),
-                "depth" => {
+                "float" => {
+                    let (pattern, size, layers) = match kind {
+                        TextureKind::D2 => (pattern_for(name), 64, 1),
+                        TextureKind::Cube => (Pattern::Sky, 64, 1),
+                        TextureKind::D3 => (pattern_for(name), 32, 32),
+                        TextureKind::D2Array => (pattern_for(name), 64, 4),
+                    };
+                    scene.textures.push(Texture { name: texture.clone(), pattern: Some(pattern), image: None, size: [size, size], kind, layers });
+                }
+                "depth" if kind == TextureKind::D2 => {
                     // A depth target no pass draws into but one that clears
                     // it: depth 1 everywhere, every compare passes.
                     scene.targets.push(RenderTarget { name: texture.clone(), format: TargetFormat::Depth32float, size: Some([64, 64]) });
                     clears.push(texture.clone());
                 }
+                "depth" => return Err(InferError(format!("sampler `{name}` is a {}: the runner's depth targets are 2D only (no cube or array shadow maps yet)", s.ty))),
                 other => return Err(InferError(format!("sampler `{name}` reads {other} texels: the runner's patterns are float colours"))),
             }
             pass.samplers.insert(name.clone(), SamplerInput { texture, filter: Filter::Linear });

@@ -293,3 +293,83 @@ fn the_documented_example_parses() {
     assert_eq!((s.passes.len(), s.textures.len(), s.targets.len()), (2, 1, 2));
     assert_eq!(s.passes[0].draws[0].instances.as_ref().map(InstanceGrid::total), Some(9));
 }
+
+const EVERY_SAMPLER: &str = "var @in a_pos : float3
+var @uniform u_view_rot : float4x4
+var @uniform u_proj : float4x4
+var @uniform u_sky : samplerCube
+var @uniform u_volume : sampler3D
+var @uniform u_layers : sampler2DArray
+var @inout v_dir : float3
+var @out f_color : float4
+[vertex_program]
+def vs {
+    v_dir = a_pos
+    gl_Position = u_proj * u_view_rot * float4(a_pos, 1.0)
+}
+[fragment_program]
+def fs {
+    f_color = texture(u_sky, v_dir) + texture(u_volume, v_dir) + texture(u_layers, v_dir)
+}
+";
+
+#[test]
+fn cube_3d_and_array_samplers_read_textures_of_their_kind() {
+    let s = Scene::infer(&manifest(EVERY_SAMPLER)).unwrap();
+    let p = &s.passes[0];
+    let tex = |sampler: &str| s.textures.iter().find(|t| t.name == p.samplers[sampler].texture).unwrap().clone();
+    let (sky, volume, layers) = (tex("u_sky"), tex("u_volume"), tex("u_layers"));
+    assert_eq!((sky.kind, sky.pattern, sky.size, sky.layers), (TextureKind::Cube, Some(Pattern::Sky), [64, 64], 1));
+    assert_eq!((volume.kind, volume.layers), (TextureKind::D3, 32));
+    assert_eq!((layers.kind, layers.layers), (TextureKind::D2Array, 4));
+    // A skybox (a rotation-only view): no depth test, the camera looking up.
+    assert_eq!(p.depth, None);
+    assert!(s.camera.pitch < 0.0);
+    // The format's keys round-trip, and a 2D texture writes neither.
+    let back: Scene = serde_json::from_value(s.to_json()).unwrap();
+    assert_eq!(back, s);
+    assert!(s.to_json()["textures"].as_array().unwrap().iter().all(|t| t.get("kind").is_some()));
+    let (texels, n) = sky.pattern_texels(Pattern::Sky);
+    assert_eq!((texels.len(), n), (64 * 64 * 4 * 6, 6));
+    let (texels, n) = volume.pattern_texels(Pattern::Checker);
+    assert_eq!((texels.len(), n), (32 * 32 * 4 * 32, 32));
+}
+
+#[test]
+fn the_sky_is_blue_above_the_horizon_and_coloured_by_direction_below() {
+    let at = |face: usize, x: usize, y: usize| {
+        let t = Texture { name: "s".into(), pattern: Some(Pattern::Sky), image: None, size: [16, 16], kind: TextureKind::Cube, layers: 1 };
+        let (texels, _) = t.pattern_texels(Pattern::Sky);
+        let i = 4 * (face * 256 + y * 16 + x);
+        [texels[i], texels[i + 1], texels[i + 2]]
+    };
+    // +y (face 2): the zenith, deep blue; -y (3): the ground's darkest.
+    let zenith = at(2, 8, 8);
+    assert!(zenith[2] > 200 && zenith[0] < 60, "{zenith:?}");
+    assert!(at(3, 8, 8).iter().all(|&c| c < 40), "{:?}", at(3, 8, 8));
+    // The side faces: pale near the horizon (t = 0.5), ground below it
+    // (t > 0.5, rows further down), each face its compass colour.
+    for (face, strongest) in [(0, 0), (1, 1), (4, 2), (5, 0)] {
+        let horizon = at(face, 8, 7);
+        assert!(horizon.iter().all(|&c| c > 180), "face {face} horizon {horizon:?}");
+        let ground = at(face, 8, 10);
+        assert_eq!(ground.iter().enumerate().max_by_key(|(_, c)| **c).unwrap().0, strongest, "face {face} ground {ground:?}");
+    }
+}
+
+#[test]
+fn texture_kinds_are_checked() {
+    let scene = |texture: &str| format!("[[textures]]\nname = \"t\"\n{texture}\n[[passes]]\nname = \"p\"\nvertex = \"vs\"\ncolor = \"screen\"\ndraws = []\n");
+    for (texture, want) in [
+        ("pattern = \"sky\"", "cube map's"),
+        ("pattern = \"checker\"\nkind = \"cube\"\nsize = [8, 4]", "square"),
+        ("pattern = \"checker\"\nlayers = 3", "layers = 3"),
+        ("image = \"a.png\"\nkind = \"3d\"", "image file makes a 2D texture only"),
+        ("pattern = \"checker\"\nkind = \"2d_array\"\nlayers = 0", "1 to 256"),
+        ("pattern = \"checker\"\nkind = \"sphere\"", "unknown variant"),
+    ] {
+        let err = Scene::parse("s.toml", &scene(texture)).unwrap_err();
+        assert!(err.contains(want) && err.contains("s.toml:"), "{texture}: {err}");
+    }
+    Scene::parse("s.toml", &scene("pattern = \"checker\"\nkind = \"2d_array\"\nlayers = 3")).unwrap();
+}

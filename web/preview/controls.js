@@ -4,7 +4,8 @@
 // matrices, ...), and a pattern for each sampler. docs/preview.md.
 
 import { parseType, writeMember, readMember, uniformBuffers, bareName } from './draw.js';
-import { pattern, PATTERNS, conventions, fitValue } from './scene.js';
+import { PATTERNS, conventions, fitValue } from './scene.js';
+import { texels } from './textures.js';
 
 // The orbit camera: drag on a canvas to turn, wheel to zoom; it moves the
 // scene's camera (umbrac::scene::OrbitCamera, degrees) by what was dragged.
@@ -139,7 +140,9 @@ export class Inputs {
       const row = document.createElement('label');
       row.className = 'control';
       const select = document.createElement('select');
-      for (const p of PATTERNS) select.append(new Option(p, p));
+      // A cube map also offers the sky; image files make 2D textures only.
+      const flat = (tex.kind ?? '2d') === '2d';
+      for (const p of flat ? PATTERNS : ['sky', ...PATTERNS].slice(tex.kind === 'cube' ? 0 : 1)) select.append(new Option(p, p));
       // An image file of the user's (chosen or dropped on the button) joins the menu.
       const kept = previous?.files.get(s);
       if (kept) {
@@ -167,7 +170,7 @@ export class Inputs {
         select.value = 'file';
         this.patterns.set(s, 'file');
       });
-      row.append(document.createTextNode(`${s} `), select, file);
+      row.append(document.createTextNode(`${s} `), select, ...(flat ? [file] : []));
       panel.append(row);
     }
   }
@@ -232,8 +235,8 @@ export class Inputs {
         textures[s] = file;
         continue;
       }
-      const key = `${p}:${tex.size.join('x')}`;
-      if (!this.images.has(key)) this.images.set(key, pattern(p, tex.size[0], tex.size[1]));
+      const key = `${p}:${tex.size.join('x')}:${tex.kind ?? '2d'}:${tex.layers ?? 1}`;
+      if (!this.images.has(key)) this.images.set(key, texels(p, tex));
       // One object per pattern, size and filter: a renderer uploads a texture when its object changes.
       const ikey = `${key}:${tex.filter}`;
       if (!this.images.has(ikey)) this.images.set(ikey, { ...this.images.get(key), filter: tex.filter });

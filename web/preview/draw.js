@@ -22,6 +22,7 @@
 // from the same words), so both APIs draw the same values.
 
 import { pattern, mesh, instance, fit, PATTERNS } from './scene.js';
+import { texels, kindOf, glTarget, glUpload, viewDimension, gpuTexture } from './textures.js';
 
 export { pattern, PATTERNS };
 
@@ -143,7 +144,7 @@ function planOfScene(m, scene) {
     }
     const tex = (scene.textures ?? []).find((x) => x.name === input.texture);
     if (!tex || !tex.pattern) throw new DrawError('plan', `sampler \`${sampler}\` reads \`${input.texture}\`, which is not a built-in pattern (render targets and image files are not drawn by the preview yet)`);
-    textures[sampler] = { pattern: tex.pattern, size: tex.size ?? [64, 64], filter: input.filter ?? 'linear' };
+    textures[sampler] = { pattern: tex.pattern, size: tex.size ?? [64, 64], filter: input.filter ?? 'linear', kind: tex.kind ?? '2d', layers: tex.layers ?? 1 };
   }
   return {
     vertex, fragment, attributes,
@@ -286,8 +287,9 @@ function refuseUnsupported(m, plan) {
   for (const s of m.samplers ?? []) {
     if (!used.has(s.name)) continue;
     const depth = plan.textures[s.name]?.depthCleared;
-    if (s.dimension !== '2d' || s.array_size || (depth ? !s.comparison : s.comparison || s.sample_type !== 'float')) {
-      throw new DrawError('plan', `the preview binds built-in 2D colour textures and cleared depth targets only; \`${s.name} : ${s.type}\` is not one here`);
+    const kind = depth ? '2d' : plan.textures[s.name]?.kind ?? '2d';
+    if (kindOf(s.dimension) !== kind || s.array_size || (depth ? !s.comparison : s.comparison || s.sample_type !== 'float')) {
+      throw new DrawError('plan', `the preview binds built-in colour textures (2D, cube, 3D, 2D array) and cleared 2D depth targets only; \`${s.name} : ${s.type}\` is not one here`);
     }
   }
   for (const b of m.uniform_buffers ?? []) {
@@ -442,7 +444,7 @@ class WebGL2Renderer {
         gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_COMPARE_FUNC, gl.LEQUAL);
         gl.bindTexture(gl.TEXTURE_2D, null);
       }
-      samplers.push({ name: s.name, unit: s.texture_unit, texture });
+      samplers.push({ name: s.name, unit: s.texture_unit, texture, kind: depth ? '2d' : plan.textures[s.name]?.kind ?? '2d' });
     }
     gl.useProgram(null);
     const vao = gl.createVertexArray();
@@ -601,14 +603,9 @@ class WebGL2Renderer {
     for (const s of l.samplers) {
       const img = textures[s.name];
       gl.activeTexture(gl.TEXTURE0 + s.unit);
-      gl.bindTexture(gl.TEXTURE_2D, s.texture);
+      gl.bindTexture(glTarget(gl, s.kind), s.texture);
       if (img && l.textureOf.get(s.name) !== img) {
-        gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, img.width, img.height, 0, gl.RGBA, gl.UNSIGNED_BYTE, img.data);
-        const filter = img.filter === 'nearest' ? gl.NEAREST : gl.LINEAR;
-        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, filter);
-        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, filter);
-        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.REPEAT);
-        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.REPEAT);
+        glUpload(gl, s.texture, { ...img, kind: s.kind });
         l.textureOf.set(s.name, img);
       }
     }
@@ -760,9 +757,10 @@ class WebGPURenderer {
         group(s.group).push({ layout: { binding: s.texture_binding, visibility: vis, texture: { sampleType: 'depth', viewDimension: '2d' } }, texture: entry });
         group(s.group).push({ layout: { binding: s.sampler_binding, visibility: vis, sampler: { type: 'comparison' } }, sampler: entry });
       } else {
-        const texture = device.createTexture({ size: [1, 1], format: 'rgba8unorm', usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST });
-        entry = { name: s.name, texture, sampler: this.sampler('linear'), image: null };
-        group(s.group).push({ layout: { binding: s.texture_binding, visibility: vis, texture: { sampleType: 'float', viewDimension: '2d' } }, texture: entry });
+        const kind = plan.textures[s.name]?.kind ?? '2d';
+        const made = gpuTexture(device, null, kind);
+        entry = { name: s.name, texture: made.texture, view: made.view, kind, sampler: this.sampler('linear', kind), image: null };
+        group(s.group).push({ layout: { binding: s.texture_binding, visibility: vis, texture: { sampleType: 'float', viewDimension: viewDimension(kind) } }, texture: entry });
         group(s.group).push({ layout: { binding: s.sampler_binding, visibility: vis, sampler: { type: 'filtering' } }, sampler: entry });
       }
       samplers.push(entry);
@@ -805,16 +803,18 @@ class WebGPURenderer {
     this.loaded = null;
   }
 
-  sampler(filter) {
+  sampler(filter, kind = '2d') {
     const f = filter === 'nearest' ? 'nearest' : 'linear';
-    return this.device.createSampler({ magFilter: f, minFilter: f, addressModeU: 'repeat', addressModeV: 'repeat' });
+    // 2D textures repeat; the other kinds clamp, as the native runner's.
+    const a = kind === '2d' ? 'repeat' : 'clamp-to-edge';
+    return this.device.createSampler({ magFilter: f, minFilter: f, addressModeU: a, addressModeV: a, addressModeW: a });
   }
 
   bindGroups() {
     const l = this.loaded;
     return l.layouts.map((layout, g) => this.device.createBindGroup({
       layout,
-      entries: (l.groups[g] ?? []).map((e) => ({ binding: e.layout.binding, resource: e.texture ? e.texture.texture.createView() : e.sampler ? e.sampler.sampler : e.resource })),
+      entries: (l.groups[g] ?? []).map((e) => ({ binding: e.layout.binding, resource: e.texture ? (e.texture.view ? e.texture.view() : e.texture.texture.createView()) : e.sampler ? e.sampler.sampler : e.resource })),
     }));
   }
 
@@ -841,9 +841,9 @@ class WebGPURenderer {
       const img = textures[s.name];
       if (!img || s.fixed || s.image === img) continue;
       s.texture.destroy();
-      s.texture = device.createTexture({ size: [img.width, img.height], format: 'rgba8unorm', usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST });
-      device.queue.writeTexture({ texture: s.texture }, img.data, { bytesPerRow: img.width * 4 }, [img.width, img.height]);
-      s.sampler = this.sampler(img.filter);
+      const made = gpuTexture(device, { ...img, kind: s.kind ?? '2d' });
+      [s.texture, s.view] = [made.texture, made.view];
+      s.sampler = this.sampler(img.filter, s.kind);
       s.image = img;
       rebind = true;
     }
@@ -950,7 +950,7 @@ export async function draw(bundle, canvas, { api = 'webgl2', inputs = null } = {
   const plan = planOf(bundle);
   await r.load(bundle, plan);
   const textures = {};
-  for (const [s, t] of Object.entries(plan.textures)) textures[s] = { ...pattern(t.pattern, t.size[0], t.size[1]), filter: t.filter };
+  for (const [s, t] of Object.entries(plan.textures)) textures[s] = { ...texels(t.pattern, t), filter: t.filter };
   const given = inputs ?? { buffers: uniformBuffers(bundle.manifest), textures };
   r.frame(given);
   return r;

@@ -314,8 +314,8 @@ fn fit_pass(r: &Reflection, plan: &FramePlan, pass: &Pass, problems: &mut Vec<St
             };
             let t = &pass.textures[texture];
             let target = plan.target(t.target);
-            if s.dimension != "2d" {
-                problems.push(format!("sampler `{}` is a {}, but the scene's textures are 2D", s.name, s.ty));
+            if s.dimension != target.dim.name() {
+                problems.push(format!("sampler `{}` is a {}, but the scene's `{}` is a {} texture", s.name, s.ty, target.name, target.dim.name()));
             }
             if s.comparison != t.sampling.compare {
                 problems.push(format!(

@@ -288,7 +288,7 @@ pub fn plan_json(set: &ShaderSet, plan: &FramePlan) -> Result<(Value, Vec<(Strin
     let targets: Vec<Value> = plan
         .targets
         .iter()
-        .map(|t| json!({ "name": t.name, "width": t.width, "height": t.height, "format": t.format.name(), "contents": t.contents }))
+        .map(|t| json!({ "name": t.name, "width": t.width, "height": t.height, "format": t.format.name(), "contents": t.contents, "dim": t.dim.name(), "layers": t.dim.layers() }))
         .collect();
     let doc = json!({
         "scene": plan.scene,

@@ -295,9 +295,9 @@ impl WgpuExecutor {
                                 has_dynamic_offset: false,
                                 min_binding_size: NonZeroU64::new(size),
                             },
-                            Resource::Texture { depth, filterable, .. } => wgpu::BindingType::Texture {
+                            Resource::Texture { depth, filterable, dim, .. } => wgpu::BindingType::Texture {
                                 sample_type: if depth { wgpu::TextureSampleType::Depth } else { wgpu::TextureSampleType::Float { filterable } },
-                                view_dimension: wgpu::TextureViewDimension::D2,
+                                view_dimension: frame::view_dimension(dim),
                                 multisampled: false,
                             },
                             Resource::Sampler { comparison, filtering, .. } => wgpu::BindingType::Sampler(if comparison {
