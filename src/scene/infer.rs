@@ -173,7 +173,19 @@ impl Scene {
                 draws: Vec::new(),
             });
         }
+        let grid = pass.draws[0].instances.clone().unwrap_or(InstanceGrid { count: [3, 3, 1], spacing: 1.6 });
         for (name, ty, default) in uniforms(r, &[vs, fs]) {
+            let parts = leaves(r, &name, &ty);
+            if parts.len() != 1 || parts[0].path != name {
+                // A struct (an instance table): each member by its path.
+                scene.controls.push(names::control(&name, &ty, None));
+                for l in parts {
+                    if let Some(v) = leaf_value(&l, &grid) {
+                        scene.values.insert(l.path, v);
+                    }
+                }
+                continue;
+            }
             let value = value_for(&name, &ty, default.as_deref());
             scene.controls.push(names::control(&name, &ty, value.as_ref()));
             if let Some(v) = value {
@@ -195,6 +207,40 @@ fn value_for(name: &str, ty: &str, default: Option<&[u32]>) -> Option<ValueSpec>
         return Some(v);
     }
     convention.map(ValueSpec::Convention).or_else(|| names::fallback(name, ty))
+}
+
+/// The value of a leaf of a struct uniform (`u_instances[3].offset_scale`):
+/// a table indexed by instance reads the instance grid's cell `i mod n` for
+/// element `i`: an offset or position member its centre (a 4th component
+/// 0.45 when the name also says scale, else 1), a colour member its
+/// colour (alpha 1), a scale or size 0.45, a phase its phase; any other
+/// member what a uniform of its name gets.
+fn leaf_value(l: &Leaf, grid: &InstanceGrid) -> Option<ValueSpec> {
+    let member = l.path.rsplit('.').next().unwrap_or(&l.path);
+    let i: u32 = l.path.rsplit_once('[').and_then(|(_, rest)| rest.split(']').next()?.parse().ok()).unwrap_or(0);
+    let (offset, colour, phase) = grid.instance(i % grid.total().max(1));
+    let w = names::words(member);
+    let has = |any: &[&str]| w.iter().any(|x| any.contains(&x.as_str()));
+    let n = match l.ty.as_str() {
+        "float" => 1,
+        "float2" => 2,
+        "float3" => 3,
+        "float4" => 4,
+        _ => return value_for(member, &l.ty, None),
+    };
+    let scale = 0.45;
+    let v: Vec<f64> = if has(&["offset", "position", "pos", "translate", "translation", "center", "centre"]) {
+        vec![offset[0], offset[1], offset[2], if has(&["scale", "size"]) { scale } else { 1.0 }].into_iter().map(f64::from).collect()
+    } else if has(&["color", "colour", "tint", "albedo"]) {
+        vec![colour[0], colour[1], colour[2], 1.0].into_iter().map(f64::from).collect()
+    } else if has(&["scale", "size"]) {
+        vec![f64::from(scale); 4]
+    } else if has(&["phase"]) {
+        vec![f64::from(phase); 4]
+    } else {
+        return value_for(member, &l.ty, None);
+    };
+    Some(if n == 1 { ValueSpec::Number(v[0]) } else { ValueSpec::Numbers(v[..n].to_vec()) })
 }
 
 /// Every uniform the entry points read: loose ones and the members of the
@@ -264,6 +310,52 @@ fn infer_draw(vs: &EntryPoint) -> Draw {
     }
     let instances = (instanced || by_id).then_some(InstanceGrid { count: [3, 3, 1], spacing: 1.6 });
     Draw { mesh, vertices: None, attributes, instances, values: BTreeMap::new() }
+}
+
+/// One value a struct uniform is set by: its path from the uniform
+/// (`u_instances[3].color`), DSL type, byte offset from the uniform's
+/// start and strides.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Leaf {
+    pub path: String,
+    pub ty: String,
+    pub offset: u32,
+    pub array_stride: Option<u32>,
+    pub matrix_stride: Option<u32>,
+}
+
+/// The leaves of a value `name` of type `ty`: itself, unless it is a
+/// struct of the manifest (each member's leaves, `name.member`) or an
+/// array of structs (each element's, `name[i]`). Arrays of plain types
+/// stay one value.
+pub fn leaves(r: &Reflection, name: &str, ty: &str) -> Vec<Leaf> {
+    leaves_at(r, name, ty, None, None)
+}
+
+/// [`leaves`] of a value whose own strides are these (a block member's).
+pub fn leaves_at(r: &Reflection, name: &str, ty: &str, array_stride: Option<u32>, matrix_stride: Option<u32>) -> Vec<Leaf> {
+    let mut out = Vec::new();
+    collect_leaves(r, name, ty, 0, array_stride, matrix_stride, &mut out);
+    out
+}
+
+fn collect_leaves(r: &Reflection, name: &str, ty: &str, offset: u32, array_stride: Option<u32>, matrix_stride: Option<u32>, out: &mut Vec<Leaf>) {
+    let array = ty.strip_suffix(']').and_then(|t| t.rsplit_once('[')).and_then(|(e, n)| Some((e, n.parse::<u32>().ok()?)));
+    let structure = |t: &str| r.structs.iter().find(|s| s.name == t);
+    match (array, structure(ty)) {
+        (Some((element, n)), _) if structure(element).is_some() => {
+            let stride = array_stride.unwrap_or_else(|| structure(element).map_or(16, |s| s.size.next_multiple_of(16)));
+            for i in 0..n {
+                collect_leaves(r, &format!("{name}[{i}]"), element, offset + i * stride, None, None, out);
+            }
+        }
+        (None, Some(s)) => {
+            for m in &s.members {
+                collect_leaves(r, &format!("{name}.{}", m.name), &m.ty, offset + m.offset, m.array_stride, m.matrix_stride, out);
+            }
+        }
+        _ => out.push(Leaf { path: name.to_string(), ty: ty.to_string(), offset, array_stride, matrix_stride }),
+    }
 }
 
 /// The name of the vertex program [`fullscreen_vertex`] writes.

@@ -373,3 +373,42 @@ fn texture_kinds_are_checked() {
     }
     Scene::parse("s.toml", &scene("pattern = \"checker\"\nkind = \"2d_array\"\nlayers = 3")).unwrap();
 }
+
+#[test]
+fn a_uniform_table_of_structs_is_filled_from_the_instance_grid_by_path() {
+    let src = "struct Instance {
+    offset_scale : float4
+    color : float4
+    weight : float
+}
+var @uniform u_view_proj : float4x4
+var @uniform u_instances : Instance[12]
+var @in a_position : float3
+var @inout v_color : float4
+var @out f_color : float4
+[vertex_program]
+def vs {
+    let inst = u_instances[gl_InstanceID % 12]
+    v_color = inst.color * inst.weight
+    gl_Position = u_view_proj * float4(a_position * inst.offset_scale.w + inst.offset_scale.xyz, 1.0)
+}
+[fragment_program]
+def fs {
+    f_color = v_color
+}
+";
+    let r = manifest(src);
+    let s = Scene::infer(&r).unwrap();
+    let grid = s.passes.last().unwrap().draws[0].instances.clone().expect("gl_InstanceID: a grid");
+    // Element 10 is cell 10 mod 9 = 1.
+    let (offset, colour, _) = grid.instance(1);
+    let f = |v: [f32; 3], w: f64| ValueSpec::Numbers(vec![v[0] as f64, v[1] as f64, v[2] as f64, w]);
+    assert_eq!(s.values["u_instances[10].offset_scale"], f(offset, 0.45));
+    assert_eq!(s.values["u_instances[10].color"], f(colour, 1.0));
+    assert_eq!(s.values["u_instances[0].weight"], ValueSpec::Number(0.5));
+    assert!(!s.values.contains_key("u_instances"));
+    let leaves = infer::leaves(&r, "u_instances", "Instance[12]");
+    assert_eq!(leaves.len(), 36);
+    let stride = r.uniform_buffers[0].members.iter().find(|m| m.name == "u_instances").unwrap().array_stride.unwrap();
+    assert_eq!((leaves[4].path.as_str(), leaves[4].offset), ("u_instances[1].color", stride + 16));
+}

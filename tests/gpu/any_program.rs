@@ -365,3 +365,40 @@ fn the_page_makes_the_runners_texels_for_every_kind() {
         assert!(String::from_utf8_lossy(&run.stdout) == want, "{name} {js_kind}: the page's texels differ from the runner's");
     }
 }
+
+/// `shaders/programs/instanced.das` places each instance from a uniform
+/// table of structs (`u_instances : Instance[64]`, read by
+/// `gl_InstanceID`). Its inferred scene fills the table from the instance
+/// grid (`u_instances[i].offset_scale`, `.color`, by path): it drew black
+/// while the table was left zero (every instance scaled to nothing). On
+/// every consumer at least 5 % of the pixels are lit, and the consumers
+/// agree as the tutorials do.
+#[test]
+fn the_instanced_program_draws_its_instance_table_on_every_consumer() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let c = umbrac::compile_file(&root.join("shaders/programs/instanced.das"), &umbrac::Options::default());
+    let compiled = c.result.as_ref().filter(|_| !c.has_errors()).unwrap_or_else(|| panic!("{}", c.render_diagnostics()));
+    let programs = Programs::from_compiled("instanced.das", compiled).unwrap();
+    let scene = Scene::infer(&compiled.reflection).unwrap();
+    assert!(scene.values.contains_key("u_instances[8].offset_scale") && scene.values.contains_key("u_instances[0].color"), "{:?}", scene.values.keys());
+    let planner = ScenePlanner::new("instanced.das", scene, &compiled.reflection, None).unwrap();
+    let f = FrameInputs { time: 0.5, frame: 0, width: 64, height: 48 };
+    let cmp = any::compare_many(&[(&programs, &planner, f)]).unwrap().pop().unwrap();
+    for (c, s) in &cmp.results {
+        let img = match s {
+            Status::Rendered { image, .. } => image,
+            Status::Unavailable { why, .. } => {
+                ci::skip(format!("{}: {why}", c.name()));
+                continue;
+            }
+            Status::Failed(e) => panic!("{}: {e}", c.name()),
+        };
+        let out = gpu::artifacts_dir("any-program").join(format!("instanced.{}.png", c.name()));
+        umbrac::render::image_ops::save_png(img, &out).unwrap();
+        let lit = img.pixels().filter(|p| p[0] > 20 || p[1] > 20 || p[2] > 20).count();
+        assert!(lit * 20 >= (64 * 48) as usize, "{}: {lit} lit pixels of {} ({})", c.name(), 64 * 48, out.display());
+    }
+    for (x, y, d) in &cmp.pairs {
+        assert!(d.fraction_over <= TUTORIAL_SHARE, "{} vs {}: {:.4}\n{}", x.name(), y.name(), d.fraction_over, any::table(&cmp.pairs));
+    }
+}

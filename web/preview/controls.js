@@ -104,6 +104,7 @@ export class Inputs {
     this.values = new Map(); // member key -> numbers
     this.patterns = new Map(); // sampler -> pattern name
     this.bound = []; // { buffer, member, t, convention }
+    this.leaves = []; // { buffer, member, values }: a struct's members the scene sets by path
     this.orbit = orbit;
     this.images = new Map();
     this.files = new Map(); // sampler -> an image file's texels
@@ -123,6 +124,11 @@ export class Inputs {
         if (!t || control?.kind === 'none') {
           // A struct or an array keeps its default (or the scene's numbers).
           if (t && spec !== undefined) this.values.set(key, numbersOf(spec, t));
+          for (const leaf of structLeaves(manifest, m)) {
+            const s = plan.values[leaf.name];
+            const lt = parseType(leaf.type);
+            if (s !== undefined && typeof s !== 'string' && lt) this.leaves.push({ buffer: b.name, member: leaf, values: numbersOf(s, lt) });
+          }
           panel.append(note(`${m.name} : ${m.type}: its default`));
           continue;
         }
@@ -221,6 +227,7 @@ export class Inputs {
         if (v) writeMember(buffers[b.name], m, v);
       }
     }
+    for (const l of this.leaves) writeMember(buffers[l.buffer], l.member, l.values);
     const conv = conventions(this.orbit.camera(this.plan.camera), clock);
     for (const { buffer, member, t, convention } of this.bound) {
       const v = conv[convention];
@@ -244,4 +251,23 @@ export class Inputs {
     }
     return { buffers, textures };
   }
+}
+
+// The leaves of a struct member (or an array of structs) as members of
+// their own: `u_instances[3].color` at its byte offset in the buffer, as
+// the native runner's scene values name them (docs/runner.md, "Inference").
+function structLeaves(manifest, m) {
+  const out = [];
+  const struct = (n) => (manifest.structs ?? []).find((s) => s.name === n);
+  const walk = (name, type, offset, arrayStride, matrixStride) => {
+    const arr = /^(.*)\[(\d+)\]$/.exec(type);
+    if (arr && struct(arr[1])) {
+      const stride = arrayStride ?? Math.ceil(struct(arr[1]).size / 16) * 16;
+      for (let i = 0; i < +arr[2]; i++) walk(`${name}[${i}]`, arr[1], offset + i * stride);
+    } else if (!arr && struct(type)) {
+      for (const x of struct(type).members) walk(`${name}.${x.name}`, x.type, offset + x.offset, x.array_stride, x.matrix_stride);
+    } else if (name !== m.name) out.push({ name, type, offset, array_stride: arrayStride, matrix_stride: matrixStride });
+  };
+  walk(m.name, m.type, m.offset, m.array_stride, m.matrix_stride);
+  return out;
 }

@@ -132,6 +132,6 @@ pub fn groups(r: &Reflection, pass: &Pass, fit: &PassFit, passthrough: bool) -> 
 /// The bytes of uniform block `block` for one draw of `pass`, at the
 /// manifest's offsets (the WGSL uniform layout).
 pub fn buffer_bytes(r: &Reflection, block: usize, pass: &Pass, draw: &Draw, unset: Unset) -> Result<Vec<u8>, String> {
-    let layout = super::manifest_layout(&r.uniform_buffers[block]);
+    let layout = super::manifest_layout(r, &r.uniform_buffers[block]);
     bytes::fill(&layout, |n| pass.value(draw, n), &pass.value_names(draw), unset).map_err(|e| e.join("; "))
 }

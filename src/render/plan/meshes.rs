@@ -116,18 +116,39 @@ pub struct Input {
 /// `kind` laid out for `inputs` (per-instance ones from `grid`). `None`
 /// for `MeshKind::None`, which has no vertices.
 pub fn mesh(kind: MeshKind, inputs: &[Input], grid: Option<&InstanceGrid>) -> Option<&'static Mesh> {
+    mesh_of(kind, inputs, grid, false)
+}
+
+/// [`mesh`], with `unrolled`: every triangle's three vertices its own, in
+/// index order (the indices 0, 1, 2, ...), so that `gl_VertexID % 3` is
+/// the corner, as a non-indexed triangle list (the page's) gives it.
+pub fn mesh_of(kind: MeshKind, inputs: &[Input], grid: Option<&InstanceGrid>, unrolled: bool) -> Option<&'static Mesh> {
     static CACHE: LazyLock<Mutex<HashMap<String, &'static Mesh>>> = LazyLock::new(Default::default);
-    let key = format!("{kind:?}|{inputs:?}|{grid:?}");
+    let key = format!("{kind:?}|{inputs:?}|{grid:?}|{unrolled}");
     if let Some(m) = CACHE.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
         return Some(m);
     }
     let mut cache = CACHE.lock().unwrap_or_else(|e| e.into_inner());
-    let mut mesh = build(geometry(kind)?, kind, inputs, grid);
+    let g = geometry(kind)?;
+    let g = if unrolled { unroll(g) } else { g };
+    let mut mesh = build(g, kind, inputs, grid);
     // Executors may key uploads by name: one name per layout.
     mesh.name = leak(&format!("{} #{}", kind.name(), cache.len()));
     let built: &'static Mesh = Box::leak(Box::new(mesh));
     cache.insert(key, built);
     Some(built)
+}
+
+/// Each index's vertex copied out, the indices counting up.
+fn unroll(g: Geometry) -> Geometry {
+    let pick = |v: &[[f32; 3]]| g.indices.iter().map(|&i| v[i as usize]).collect::<Vec<_>>();
+    Geometry {
+        positions: pick(&g.positions),
+        normals: pick(&g.normals),
+        tangents: pick(&g.tangents),
+        uvs: g.indices.iter().map(|&i| g.uvs[i as usize]).collect(),
+        indices: (0..g.indices.len() as u32).collect(),
+    }
 }
 
 fn leak(s: &str) -> &'static str {

@@ -179,22 +179,32 @@ impl ScenePlanner {
             };
             inputs.push(Input { name: i.name.clone(), attribute: *attribute, components });
         }
-        Ok(Geometry::Mesh(meshes::mesh(d.mesh, &inputs, d.instances.as_ref()).expect("a mesh other than `none`")))
+        // A program reading gl_VertexID over a mesh (a corner's barycentric
+        // from `gl_VertexID % 3`) gets each triangle's vertices its own.
+        let unrolled = vs.builtins.iter().any(|b| b == "gl_VertexID" || b == "gl_VertexIndex");
+        Ok(Geometry::Mesh(meshes::mesh_of(d.mesh, &inputs, d.instances.as_ref(), unrolled).expect("a mesh other than `none`")))
     }
 
-    /// The DSL type of a uniform or uniform block member named `name`.
-    fn type_of(&self, name: &str) -> Option<&str> {
+    /// The DSL type of a uniform or uniform block member named `name`, or
+    /// of a leaf of a struct one (`u_instances[3].color`).
+    fn type_of(&self, name: &str) -> Option<String> {
         let r = &self.reflection;
-        r.uniforms
+        let base = name.split(['[', '.']).next().unwrap_or(name);
+        let ty = r
+            .uniforms
             .iter()
-            .find(|u| u.name == name)
+            .find(|u| u.name == base)
             .map(|u| u.ty.as_str())
-            .or_else(|| r.uniform_buffers.iter().flat_map(|b| &b.members).find(|m| m.name == name).map(|m| m.ty.as_str()))
+            .or_else(|| r.uniform_buffers.iter().flat_map(|b| &b.members).find(|m| m.name == base).map(|m| m.ty.as_str()))?;
+        if base == name {
+            return Some(ty.to_string());
+        }
+        crate::scene::infer::leaves(r, base, ty).into_iter().find(|l| l.path == name).map(|l| l.ty)
     }
 
     fn value(&self, name: &str, spec: &ValueSpec, f: &FrameInputs) -> Result<Value, String> {
         let ty = self.type_of(name).ok_or_else(|| format!("{}: the scene sets `{name}`, which is no uniform of the program", self.label))?;
-        value(ty, spec, &self.scene.camera, f).map_err(|e| format!("{}: `{name}` ({ty}): {e}", self.label))
+        value(&ty, spec, &self.scene.camera, f).map_err(|e| format!("{}: `{name}` ({ty}): {e}", self.label))
     }
 }
 
