@@ -229,12 +229,13 @@ fn leaf_value(l: &Leaf, grid: &InstanceGrid) -> Option<ValueSpec> {
         _ => return value_for(member, &l.ty, None),
     };
     let scale = 0.45;
+    let xyz = |v: [f32; 3], w: f64| vec![f64::from(v[0]), f64::from(v[1]), f64::from(v[2]), w];
     let v: Vec<f64> = if has(&["offset", "position", "pos", "translate", "translation", "center", "centre"]) {
-        vec![offset[0], offset[1], offset[2], if has(&["scale", "size"]) { scale } else { 1.0 }].into_iter().map(f64::from).collect()
+        xyz(offset, if has(&["scale", "size"]) { scale } else { 1.0 })
     } else if has(&["color", "colour", "tint", "albedo"]) {
-        vec![colour[0], colour[1], colour[2], 1.0].into_iter().map(f64::from).collect()
+        xyz(colour, 1.0)
     } else if has(&["scale", "size"]) {
-        vec![f64::from(scale); 4]
+        vec![scale; 4]
     } else if has(&["phase"]) {
         vec![f64::from(phase); 4]
     } else {
