@@ -19,7 +19,9 @@
 //!   to 1 (everything lit);
 //! - each uniform: a per-frame convention its name asks for, else the
 //!   manifest's default, else a convention for the camera and light
-//!   names, else a fallback (`names::fallback`); and a control.
+//!   names, else a fallback (`names::fallback`); and a control; a struct
+//!   uniform member by member, by path (`u_instances[3].color`), an array
+//!   of them as a table of the instance grid's cells ([`leaf_value`]).
 //!
 //! A vertex stage that writes no `gl_Position` (transform feedback) and a
 //! fragment stage that reads `gl_PointCoord` (a point sprite) are
@@ -217,7 +219,10 @@ fn value_for(name: &str, ty: &str, default: Option<&[u32]>) -> Option<ValueSpec>
 /// member what a uniform of its name gets.
 fn leaf_value(l: &Leaf, grid: &InstanceGrid) -> Option<ValueSpec> {
     let member = l.path.rsplit('.').next().unwrap_or(&l.path);
-    let i: u32 = l.path.rsplit_once('[').and_then(|(_, rest)| rest.split(']').next()?.parse().ok()).unwrap_or(0);
+    // Only an array is a table: a lone struct's members are named uniforms.
+    let Some(i) = l.path.rsplit_once('[').and_then(|(_, rest)| rest.split(']').next()?.parse::<u32>().ok()) else {
+        return value_for(member, &l.ty, None);
+    };
     let (offset, colour, phase) = grid.instance(i % grid.total().max(1));
     let w = names::words(member);
     let has = |any: &[&str]| w.iter().any(|x| any.contains(&x.as_str()));
