@@ -122,6 +122,19 @@ async function severalFiles(browser, page) {
   await other.close();
 }
 
+// Every example that `require`s a module of the project's (found among
+// the shared files, as the page passes them) compiles with the page's
+// compiler, here loaded in node.
+async function examplesWithModules() {
+  const { pathToFileURL } = await import('node:url');
+  const glue = await import(pathToFileURL(resolve(dir, 'umbrac_web.js')).href);
+  await glue.default({ module_or_path: readFileSync(join(dir, 'umbrac_web_bg.wasm')) });
+  const data = JSON.parse(readFileSync(join(dir, 'examples.json'), 'utf8'));
+  const requiring = data.examples.filter((e) => e.shared && /^\s*require\s+\S*\//m.test(e.source));
+  const failed = requiring.map((e) => [e.name, JSON.parse(glue.compile(e.path, e.source, JSON.stringify({ files: data.files })))]).filter(([, b]) => !b.ok);
+  check('the examples requiring modules compile in the page', requiring.length > 0 && failed.length === 0, { examples: requiring.map((e) => e.name), failed: failed.map(([n, b]) => [n, b.diagnostics[0]?.message]) });
+}
+
 const profile = mkdtempSync(join(tmpdir(), 'umbrac-playground-'));
 let browser;
 try {
@@ -246,6 +259,7 @@ try {
 
   // 5. Several files.
   await severalFiles(browser, page);
+  await examplesWithModules();
 } catch (e) {
   failures.push(`driving chromium: ${e.stack || e.message}`);
 } finally {
