@@ -163,7 +163,7 @@ async function main() {
     const ibo = gl.createBuffer();
     gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, ibo);
     gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, new Uint32Array(m.indices), gl.STATIC_DRAW);
-    meshes[name] = { vbo, ibo, count: m.indices.length, stride: m.stride, instances: m.instances };
+    meshes[name] = { vbo, ibo, count: m.indices.length, stride: m.stride, instances: m.instances, mode: m.points ? gl.POINTS : gl.TRIANGLES };
   }
   gl.bindBuffer(gl.ARRAY_BUFFER, null);
   const programs = [];
@@ -289,8 +289,8 @@ async function main() {
       if (d.mesh !== null) {
         gl.bindVertexArray(p.vaos[d.mesh]);
         const m = meshes[d.mesh];
-        if (m.instances) gl.drawElementsInstanced(gl.TRIANGLES, m.count, gl.UNSIGNED_INT, 0, m.instances.count);
-        else gl.drawElements(gl.TRIANGLES, m.count, gl.UNSIGNED_INT, 0);
+        if (m.instances) gl.drawElementsInstanced(m.mode, m.count, gl.UNSIGNED_INT, 0, m.instances.count);
+        else gl.drawElements(m.mode, m.count, gl.UNSIGNED_INT, 0);
       } else {
         gl.bindVertexArray(p.vaos['']);
         gl.drawArrays(gl.TRIANGLES, 0, d.vertices);

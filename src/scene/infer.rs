@@ -23,14 +23,14 @@
 //!   uniform member by member, by path (`u_instances[3].color`), an array
 //!   of them as a table of the instance grid's cells ([`leaf_value`]).
 //!
-//! A vertex stage that writes no `gl_Position` (transform feedback) and a
-//! fragment stage that reads `gl_PointCoord` (a point sprite) are
-//! refused: scenes draw triangle lists only.
+//! A program that writes `gl_PointSize` or reads `gl_PointCoord` (a point
+//! sprite) draws the sphere's vertices as points. A vertex stage that
+//! writes no `gl_Position` (transform feedback) is refused.
 
 use std::collections::BTreeMap;
 
 use super::names;
-use super::{Attribute, Control, Convention, Draw, Filter, InstanceGrid, MeshKind, OrbitCamera, Pass, Pattern, RenderTarget, SamplerInput, Scene, TargetFormat, Texture, TextureKind, ValueSpec, SCREEN};
+use super::{Attribute, Control, Convention, Draw, Filter, InstanceGrid, MeshKind, OrbitCamera, Pass, Pattern, Primitive, RenderTarget, SamplerInput, Scene, TargetFormat, Texture, TextureKind, ValueSpec, SCREEN};
 use crate::emit::reflect_types::{EntryPoint, Reflection};
 
 /// Why a program gets no inferred scene.
@@ -90,11 +90,8 @@ impl Scene {
         if !vs.builtins.iter().any(|b| b == "gl_Position") {
             return Err(InferError(format!("`{vertex}` writes no gl_Position (a transform-feedback stage?): it places nothing to draw")));
         }
-        if fs.builtins.iter().any(|b| b == "gl_PointCoord") {
-            return Err(InferError(format!(
-                "`{fragment}` reads gl_PointCoord, a point sprite's: the runner's scenes draw triangles only (no point lists yet)"
-            )));
-        }
+        // A point sprite: the sphere's vertices drawn as points.
+        let points = fs.builtins.iter().any(|b| b == "gl_PointCoord") || vs.builtins.iter().any(|b| b == "gl_PointSize");
         let mut scene = Scene {
             camera: OrbitCamera::default(),
             textures: Vec::new(),
@@ -104,7 +101,16 @@ impl Scene {
             values: BTreeMap::new(),
             controls: Vec::new(),
         };
-        let draw = infer_draw(vs);
+        let mut draw = infer_draw(vs);
+        if points {
+            if draw.mesh != MeshKind::Cube {
+                return Err(InferError(format!(
+                    "`{vertex}` + `{fragment}` draw point sprites with no 3D position input: the runner's point lists are a mesh's vertices"
+                )));
+            }
+            draw.mesh = MeshKind::Sphere;
+            draw.primitive = Primitive::Points;
+        }
         let mut pass = Pass {
             name: format!("{vertex} + {fragment}"),
             vertex: vertex.to_string(),
@@ -288,7 +294,7 @@ fn pattern_for(sampler: &str) -> Pattern {
 /// The draw of a vertex program (module docs).
 fn infer_draw(vs: &EntryPoint) -> Draw {
     if vs.inputs.is_empty() {
-        return Draw { mesh: MeshKind::None, vertices: Some(3), attributes: BTreeMap::new(), instances: None, values: BTreeMap::new() };
+        return Draw { mesh: MeshKind::None, vertices: Some(3), attributes: BTreeMap::new(), instances: None, values: BTreeMap::new(), primitive: Primitive::Triangles };
     }
     let named: Vec<(String, &str, Option<Attribute>)> = vs.inputs.iter().map(|i| (i.name.clone(), i.ty.as_str(), names::attribute(&i.name))).collect();
     let by_id = vs.builtins.iter().any(|b| b == "gl_InstanceID" || b == "gl_InstanceIndex");
@@ -315,7 +321,7 @@ fn infer_draw(vs: &EntryPoint) -> Draw {
         attributes.insert(name.clone(), a);
     }
     let instances = (instanced || by_id).then_some(InstanceGrid { count: [3, 3, 1], spacing: 1.6 });
-    Draw { mesh, vertices: None, attributes, instances, values: BTreeMap::new() }
+    Draw { mesh, vertices: None, attributes, instances, values: BTreeMap::new(), primitive: Primitive::Triangles }
 }
 
 /// One value a struct uniform is set by: its path from the uniform

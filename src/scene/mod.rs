@@ -423,6 +423,24 @@ pub struct Draw {
     /// This draw's values (over the pass's).
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub values: BTreeMap<String, ValueSpec>,
+    /// What the mesh is drawn as: its triangles, or each vertex once as a
+    /// point (sized by `gl_PointSize` where the consumer honours it).
+    #[serde(default, skip_serializing_if = "Primitive::is_triangles")]
+    pub primitive: Primitive,
+}
+
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Primitive {
+    #[default]
+    Triangles,
+    Points,
+}
+
+impl Primitive {
+    fn is_triangles(&self) -> bool {
+        *self == Primitive::Triangles
+    }
 }
 
 /// The built-in meshes (docs/runner.md: their vertices).
@@ -717,6 +735,9 @@ impl Scene {
                     (MeshKind::None, _) => return Err(format!("pass `{}`: a draw with `mesh = \"none\"` needs `vertices` (at least 1)", p.name)),
                     (_, Some(_)) => return Err(format!("pass `{}`: `vertices` goes with `mesh = \"none\"` only", p.name)),
                     _ => {}
+                }
+                if d.primitive == Primitive::Points && d.mesh == MeshKind::None {
+                    return Err(format!("pass `{}`: `primitive = \"points\"` draws a mesh's vertices; `mesh = \"none\"` has none", p.name));
                 }
                 if let Some(g) = &d.instances {
                     if g.total() == 0 || g.total() > 65536 {

@@ -412,3 +412,27 @@ def fs {
     let stride = r.uniform_buffers[0].members.iter().find(|m| m.name == "u_instances").unwrap().array_stride.unwrap();
     assert_eq!((leaves[4].path.as_str(), leaves[4].offset), ("u_instances[1].color", stride + 16));
 }
+
+#[test]
+fn a_point_sprite_draws_the_spheres_vertices_as_points() {
+    let src = "var @uniform u_view_proj : float4x4
+var @in a_pos : float3
+var @out f_color : float4
+[vertex_program]
+def vs {
+    gl_PointSize = 8.0
+    gl_Position = u_view_proj * float4(a_pos, 1.0)
+}
+[fragment_program]
+def fs {
+    f_color = float4(gl_PointCoord, 1.0, 1.0)
+}
+";
+    let s = Scene::infer(&manifest(src)).unwrap();
+    let d = &s.passes.last().unwrap().draws[0];
+    assert_eq!((d.mesh, d.primitive), (MeshKind::Sphere, Primitive::Points));
+    assert_eq!(s.to_json()["passes"][0]["draws"][0]["primitive"], "points");
+    let bad = "[[passes]]\nname = \"p\"\nvertex = \"vs\"\ncolor = \"screen\"\n[[passes.draws]]\nmesh = \"none\"\nvertices = 3\nprimitive = \"points\"\n";
+    let err = Scene::parse("s.toml", bad).unwrap_err();
+    assert!(err.contains("has none") && err.contains("s.toml:"), "{err}");
+}

@@ -149,6 +149,9 @@ function planOfScene(m, scene) {
   return {
     vertex, fragment, attributes,
     count: draw.mesh === 'none' ? draw.vertices ?? 3 : vertices.length,
+    // A point list: each vertex a point (the page's mesh repeats a vertex
+    // per triangle; the repeats land on the same pixels).
+    points: draw.primitive === 'points',
     instances,
     depth: !!pass.depth,
     cull: pass.cull ?? 'none',
@@ -611,7 +614,7 @@ class WebGL2Renderer {
     }
     gl.activeTexture(gl.TEXTURE0);
     gl.bindVertexArray(l.vao);
-    gl.drawArraysInstanced(gl.TRIANGLES, 0, plan.count, plan.instances);
+    gl.drawArraysInstanced(plan.points ? gl.POINTS : gl.TRIANGLES, 0, plan.count, plan.instances);
     gl.bindVertexArray(null);
     gl.useProgram(null);
     if (depthView) {
@@ -785,7 +788,7 @@ class WebGPURenderer {
       vertex: { module, entryPoint: plan.vertex ? plan.vertex.name : 'umbrac_preview_vs', buffers: vertexBuffers },
       fragment: { module, entryPoint: plan.fragment.name, targets: colourTargets(plan) },
       // umbrac's portable WGSL flips y, so GL's counter-clockwise fronts arrive clockwise.
-      primitive: { topology: 'triangle-list', frontFace: 'cw', cullMode: plan.cull ?? 'none' },
+      primitive: { topology: plan.points ? 'point-list' : 'triangle-list', frontFace: 'cw', cullMode: plan.cull ?? 'none' },
       depthStencil: plan.depth ? { format: 'depth24plus', depthWriteEnabled: true, depthCompare: 'less' } : undefined,
     });
     const err = await device.popErrorScope();

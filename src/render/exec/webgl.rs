@@ -211,7 +211,7 @@ fn page_error(result: &Value) -> ExecError {
 fn mesh_json(m: &Mesh) -> Value {
     let floats: Vec<f32> = bytemuck::cast_slice(&m.vertices).to_vec();
     let instances = m.instances.map(|i| json!({ "base": i.base, "stride": i.stride, "count": i.count }));
-    json!({ "vertices": floats, "indices": m.indices, "stride": m.stride, "instances": instances })
+    json!({ "vertices": floats, "indices": m.indices, "stride": m.stride, "instances": instances, "points": m.points })
 }
 
 /// The plan as the page runs it, with everything bound resolved from the

@@ -215,6 +215,8 @@ pub struct Mesh {
     pub position: &'static str,
     /// Drawn instanced, with these per-instance records (none: once).
     pub instances: Option<Instances>,
+    /// Its indices drawn as a point list (each vertex once), not triangles.
+    pub points: bool,
 }
 
 impl Mesh {

@@ -182,7 +182,7 @@ impl ScenePlanner {
         // A program reading gl_VertexID over a mesh (a corner's barycentric
         // from `gl_VertexID % 3`) gets each triangle's vertices its own.
         let unrolled = vs.builtins.iter().any(|b| b == "gl_VertexID" || b == "gl_VertexIndex");
-        Ok(Geometry::Mesh(meshes::mesh_of(d.mesh, &inputs, d.instances.as_ref(), unrolled).expect("a mesh other than `none`")))
+        Ok(Geometry::Mesh(meshes::mesh_of(d.mesh, &inputs, d.instances.as_ref(), unrolled, d.primitive == scene::Primitive::Points).expect("a mesh other than `none`")))
     }
 
     /// The DSL type of a uniform or uniform block member named `name`, or

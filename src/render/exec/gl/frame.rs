@@ -41,6 +41,8 @@ impl GlExecutor {
             // As GLES, WebGL2 and Vulkan always are: cube maps filter across faces.
             if matches!(self.consumer, Consumer::Gl330 | Consumer::Gl430) {
                 gl.enable(glow::TEXTURE_CUBE_MAP_SEAMLESS);
+                // A point's size is its gl_PointSize (always so on ES).
+                gl.enable(glow::PROGRAM_POINT_SIZE);
             }
             gl.front_face(if top_first { glow::CW } else { glow::CCW });
             gl.depth_func(glow::LESS);
@@ -196,10 +198,11 @@ impl GlExecutor {
                         Geometry::Vertices(n) => (None, n as i32),
                     };
                     gl.bind_vertex_array(Some(self.vao(&linked, mesh)?));
+                    let mode = if mesh.is_some_and(|m| m.points) { glow::POINTS } else { glow::TRIANGLES };
                     if let Some(i) = mesh.and_then(|m| m.instances) {
-                        gl.draw_elements_instanced(glow::TRIANGLES, count, glow::UNSIGNED_INT, 0, i.count as i32);
+                        gl.draw_elements_instanced(mode, count, glow::UNSIGNED_INT, 0, i.count as i32);
                     } else if mesh.is_some() {
-                        gl.draw_elements(glow::TRIANGLES, count, glow::UNSIGNED_INT, 0);
+                        gl.draw_elements(mode, count, glow::UNSIGNED_INT, 0);
                     } else {
                         gl.draw_arrays(glow::TRIANGLES, 0, count);
                     }
