@@ -389,3 +389,34 @@ fn the_skybox_tutorial_shows_its_sky_in_the_page() {
     let share = s["diff"]["share"].as_f64().unwrap();
     assert!(share <= TUTORIAL_AGREEMENT, "{:.2}% of the pixels differ: {}", share * 100.0, s["diff"]);
 }
+
+/// `shaders/programs/instanced.das` in the page: its instance table
+/// (`u_instances : Instance[64]`, a loose uniform array of structs) is set
+/// member by member from the scene's paths, on WebGL2 by each leaf's GLSL
+/// name (it was skipped: every instance scaled to nothing, a black
+/// picture). At least 5 % of the WebGL2 pixels are lit, and WebGPU agrees
+/// within [`TUTORIAL_AGREEMENT`].
+#[test]
+fn the_instanced_program_draws_its_instance_table_in_the_page() {
+    if !browser_ready() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let program = dir.path().join("instanced.das");
+    std::fs::copy(Path::new(env!("CARGO_MANIFEST_DIR")).join("shaders/programs/instanced.das"), &program).unwrap();
+    let out = dir.path().join("out");
+    std::fs::create_dir(&out).unwrap();
+    let server = PreviewServer::start(&program);
+    let steps = drive(&server, &program, &[], &out);
+    let s = &steps[0].state;
+    assert_eq!(s["ok"], true, "{s}");
+    let gl = steps[0].webgl2.as_ref().unwrap_or_else(|| panic!("no WebGL2 picture: {s}"));
+    let lit = gl.chunks(4).filter(|p| p[0] > 20 || p[1] > 20 || p[2] > 20).count();
+    assert!(lit * 20 >= gl.len() / 4, "{lit} lit pixels of {}", gl.len() / 4);
+    if steps[0].webgpu.is_none() {
+        skip(format!("headless chromium drew no WebGPU picture: {}", s["errors"]["webgpu"]));
+        return;
+    }
+    let share = s["diff"]["share"].as_f64().unwrap();
+    assert!(share <= TUTORIAL_AGREEMENT, "{:.2}% of the pixels differ: {}", share * 100.0, s["diff"]);
+}

@@ -3,7 +3,7 @@
 // bound to conventions (time, resolution, mouse, frame, the orbit camera's
 // matrices, ...), and a pattern for each sampler. docs/preview.md.
 
-import { parseType, writeMember, readMember, uniformBuffers, bareName } from './draw.js';
+import { parseType, writeMember, readMember, uniformBuffers, bareName, structLeaves } from './draw.js';
 import { PATTERNS, conventions, fitValue } from './scene.js';
 import { texels } from './textures.js';
 
@@ -251,23 +251,4 @@ export class Inputs {
     }
     return { buffers, textures };
   }
-}
-
-// The leaves of a struct member (or an array of structs) as members of
-// their own: `u_instances[3].color` at its byte offset in the buffer, as
-// the native runner's scene values name them (docs/runner.md, "Inference").
-function structLeaves(manifest, m) {
-  const out = [];
-  const struct = (n) => (manifest.structs ?? []).find((s) => s.name === n);
-  const walk = (name, type, offset, arrayStride, matrixStride) => {
-    const arr = /^(.*)\[(\d+)\]$/.exec(type);
-    if (arr && struct(arr[1])) {
-      const stride = arrayStride ?? Math.ceil(struct(arr[1]).size / 16) * 16;
-      for (let i = 0; i < +arr[2]; i++) walk(`${name}[${i}]`, arr[1], offset + i * stride);
-    } else if (!arr && struct(type)) {
-      for (const x of struct(type).members) walk(`${name}.${x.name}`, x.type, offset + x.offset, x.array_stride, x.matrix_stride);
-    } else if (name !== m.name) out.push({ name, type, offset, array_stride: arrayStride, matrix_stride: matrixStride });
-  };
-  walk(m.name, m.type, m.offset, m.array_stride, m.matrix_stride);
-  return out;
 }

@@ -268,6 +268,25 @@ export function writeMember(words, member, values) {
   } else for (let k = 0; k < t.n; k++) put(base + k, values[k]);
 }
 
+// The leaves of a struct member (or an array of structs) as members of
+// their own: `u_instances[3].color` at its byte offset in the buffer, as
+// the native runner's scene values name them (docs/runner.md, "Inference").
+export function structLeaves(manifest, m) {
+  const out = [];
+  const struct = (n) => (manifest.structs ?? []).find((s) => s.name === n);
+  const walk = (name, type, offset, arrayStride, matrixStride) => {
+    const arr = /^(.*)\[(\d+)\]$/.exec(type);
+    if (arr && struct(arr[1])) {
+      const stride = arrayStride ?? Math.ceil(struct(arr[1]).size / 16) * 16;
+      for (let i = 0; i < +arr[2]; i++) walk(`${name}[${i}]`, arr[1], offset + i * stride);
+    } else if (!arr && struct(type)) {
+      for (const x of struct(type).members) walk(`${name}.${x.name}`, x.type, offset + x.offset, x.array_stride, x.matrix_stride);
+    } else if (name !== m.name) out.push({ name, type, offset, array_stride: arrayStride, matrix_stride: matrixStride });
+  };
+  walk(m.name, m.type, m.offset, m.array_stride, m.matrix_stride);
+  return out;
+}
+
 // A member's values read back from the words (matrices column by column).
 export function readMember(words, member) {
   const t = parseType(member.type);
@@ -419,7 +438,15 @@ class WebGL2Renderer {
           const arr = /^(.+)\[(\d+)\]$/.exec(x.type);
           const t = parseType(arr ? arr[1] : x.type);
           const loc = gl.getUniformLocation(program, x.glsl_name ?? x.name);
-          if (loc === null) continue;
+          if (loc === null) {
+            // A struct (an array of them): each leaf by its GLSL path.
+            for (const leaf of structLeaves(m, x)) {
+              const at = gl.getUniformLocation(program, (x.glsl_name ?? x.name) + leaf.name.slice(x.name.length));
+              const lt = parseType(leaf.type);
+              if (at !== null && lt) loose.push({ buffer: b.name, elements: [leaf], t: lt, loc: at });
+            }
+            continue;
+          }
           if (!t) throw new DrawError('plan', `the preview does not set the loose uniform \`${x.name} : ${x.type}\` on WebGL2 yet`);
           const elements = arr ? Array.from({ length: +arr[2] }, (_, k) => ({ ...x, type: arr[1], offset: x.offset + k * x.array_stride })) : [x];
           loose.push({ buffer: b.name, elements, t, loc });
