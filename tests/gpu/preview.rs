@@ -323,6 +323,9 @@ fn the_playground_under_preview_holds_the_file_and_follows_its_saves() {
 
     let s0 = step(0);
     assert_eq!(s0.state["editor"], MAIN, "the editor holds the file: {}", s0.state);
+    // The Example menu names the served file; the File menu lists the include.
+    assert!(s0.state["menu"].as_str().is_some_and(|m| m.ends_with(".das") && !m.contains("shared")), "{}", s0.state["menu"]);
+    assert!(s0.state["fileMenu"].as_array().is_some_and(|f| f.iter().any(|x| x.as_str().is_some_and(|x| x.ends_with("tint.das")))), "{}", s0.state["fileMenu"]);
     assert_eq!(s0.state["ok"], true, "{}", s0.state);
     assert_eq!(s0.state["errors"]["webgl2"], serde_json::Value::Null, "{}", s0.state);
     check_picture(&s0, "the file's picture", |u, v| [u, v, 0.25]);
