@@ -163,24 +163,38 @@ async function main() {
     const ibo = gl.createBuffer();
     gl.bindBuffer(gl.ELEMENT_ARRAY_BUFFER, ibo);
     gl.bufferData(gl.ELEMENT_ARRAY_BUFFER, new Uint32Array(m.indices), gl.STATIC_DRAW);
-    meshes[name] = { vbo, ibo, count: m.indices.length, stride: m.stride, instances: m.instances };
+    meshes[name] = { vbo, ibo, count: m.indices.length, stride: m.stride, instances: m.instances, mode: m.points ? gl.POINTS : gl.TRIANGLES };
   }
   gl.bindBuffer(gl.ARRAY_BUFFER, null);
   const programs = [];
   for (const p of plan.programs) programs.push(await link(gl, p, sources, meshes));
 
+  // A target's GL texture target: only uploaded textures are other than 2D.
+  const kindOf = (t) => ({ cube: gl.TEXTURE_CUBE_MAP, '3d': gl.TEXTURE_3D, '2d-array': gl.TEXTURE_2D_ARRAY })[t.dim] ?? gl.TEXTURE_2D;
   const textures = plan.targets.map((t) => {
     const tex = gl.createTexture();
-    gl.bindTexture(gl.TEXTURE_2D, tex);
+    const kind = kindOf(t);
+    gl.bindTexture(kind, tex);
     const [internal] = formatOf(gl, t.format);
-    gl.texStorage2D(gl.TEXTURE_2D, 1, internal, t.width, t.height);
-    // A texture the host uploads (rgba8, memory row 0 first).
-    if (t.contents) gl.texSubImage2D(gl.TEXTURE_2D, 0, 0, 0, t.width, t.height, gl.RGBA, gl.UNSIGNED_BYTE, new Uint8Array(t.contents));
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
-    gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+    // A texture the host uploads: rgba8, memory row 0 first, layers (cube
+    // faces +x, -x, +y, -y, +z, -z) one after another.
+    const bytes = t.contents ? new Uint8Array(t.contents) : null;
+    if (kind === gl.TEXTURE_2D || kind === gl.TEXTURE_CUBE_MAP) {
+      gl.texStorage2D(kind, 1, internal, t.width, t.height);
+      const face = t.width * t.height * 4;
+      if (bytes && kind === gl.TEXTURE_2D) gl.texSubImage2D(kind, 0, 0, 0, t.width, t.height, gl.RGBA, gl.UNSIGNED_BYTE, bytes);
+      if (bytes && kind === gl.TEXTURE_CUBE_MAP) {
+        for (let f = 0; f < 6; f++) gl.texSubImage2D(gl.TEXTURE_CUBE_MAP_POSITIVE_X + f, 0, 0, 0, t.width, t.height, gl.RGBA, gl.UNSIGNED_BYTE, bytes.subarray(f * face, (f + 1) * face));
+      }
+    } else {
+      gl.texStorage3D(kind, 1, internal, t.width, t.height, t.layers);
+      if (bytes) gl.texSubImage3D(kind, 0, 0, 0, 0, t.width, t.height, t.layers, gl.RGBA, gl.UNSIGNED_BYTE, bytes);
+    }
+    gl.texParameteri(kind, gl.TEXTURE_MIN_FILTER, gl.NEAREST);
+    gl.texParameteri(kind, gl.TEXTURE_MAG_FILTER, gl.NEAREST);
+    gl.bindTexture(kind, null);
     return tex;
   });
-  gl.bindTexture(gl.TEXTURE_2D, null);
   const framebuffer = (color, depth) => {
     const fbo = gl.createFramebuffer();
     gl.bindFramebuffer(gl.FRAMEBUFFER, fbo);
@@ -207,6 +221,7 @@ async function main() {
     const wrap = t.repeat ? gl.REPEAT : gl.CLAMP_TO_EDGE;
     gl.samplerParameteri(s, gl.TEXTURE_WRAP_S, wrap);
     gl.samplerParameteri(s, gl.TEXTURE_WRAP_T, wrap);
+    gl.samplerParameteri(s, gl.TEXTURE_WRAP_R, wrap);
     if (t.compare) {
       gl.samplerParameteri(s, gl.TEXTURE_COMPARE_MODE, gl.COMPARE_REF_TO_TEXTURE);
       gl.samplerParameteri(s, gl.TEXTURE_COMPARE_FUNC, gl.LEQUAL);
@@ -254,7 +269,7 @@ async function main() {
       const s = sampler(t);
       samplers.push(s);
       gl.activeTexture(gl.TEXTURE0 + t.unit);
-      gl.bindTexture(gl.TEXTURE_2D, textures[t.target]);
+      gl.bindTexture(kindOf(plan.targets[t.target]), textures[t.target]);
       gl.bindSampler(t.unit, s);
     }
     gl.activeTexture(gl.TEXTURE0);
@@ -276,8 +291,8 @@ async function main() {
       if (d.mesh !== null) {
         gl.bindVertexArray(p.vaos[d.mesh]);
         const m = meshes[d.mesh];
-        if (m.instances) gl.drawElementsInstanced(gl.TRIANGLES, m.count, gl.UNSIGNED_INT, 0, m.instances.count);
-        else gl.drawElements(gl.TRIANGLES, m.count, gl.UNSIGNED_INT, 0);
+        if (m.instances) gl.drawElementsInstanced(m.mode, m.count, gl.UNSIGNED_INT, 0, m.instances.count);
+        else gl.drawElements(m.mode, m.count, gl.UNSIGNED_INT, 0);
       } else {
         gl.bindVertexArray(p.vaos['']);
         gl.drawArrays(gl.TRIANGLES, 0, d.vertices);
@@ -286,7 +301,7 @@ async function main() {
     }
     for (const t of pass.textures) {
       gl.activeTexture(gl.TEXTURE0 + t.unit);
-      gl.bindTexture(gl.TEXTURE_2D, null);
+      gl.bindTexture(kindOf(plan.targets[t.target]), null);
       gl.bindSampler(t.unit, null);
     }
     gl.activeTexture(gl.TEXTURE0);

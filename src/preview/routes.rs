@@ -10,6 +10,7 @@ const ASSETS: &[(&str, &str, &str)] = &[
     ("controls.js", "text/javascript; charset=utf-8", include_str!("../../web/preview/controls.js")),
     ("scene.js", "text/javascript; charset=utf-8", include_str!("../../web/preview/scene.js")),
     ("passes.js", "text/javascript; charset=utf-8", include_str!("../../web/preview/passes.js")),
+    ("textures.js", "text/javascript; charset=utf-8", include_str!("../../web/preview/textures.js")),
     ("preview.css", "text/css; charset=utf-8", include_str!("../../web/preview/preview.css")),
 ];
 

@@ -108,6 +108,7 @@ fn plan_mesh(name: &'static str, m: Mesh) -> plan::Mesh {
         indices: m.indices,
         position: ATTR_POS,
         instances: None,
+        points: false,
     }
 }
 

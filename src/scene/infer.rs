@@ -4,27 +4,33 @@
 //! - a vertex program with no vertex inputs draws three vertices (a
 //!   full-screen triangle placed from `gl_VertexID`); one whose position
 //!   input is a `float2` draws the built-in full-screen triangle; any
-//!   other draws the cube, with a depth buffer;
+//!   other draws the cube, with a depth buffer (none for a skybox: a
+//!   vertex program reading a rotation-only view, `view_rotation`, whose
+//!   camera looks 10 degrees up at the horizon);
 //! - each vertex input is fed by the mesh attribute its name asks for
 //!   (`names::attribute`); when one looks per-instance (`offset`,
 //!   `instance`), the draw is a 3 x 3 instance grid and every input the
 //!   mesh does not have is per instance too;
 //! - colour output 0 goes to the screen;
 //! - each 2D sampler reads a built-in pattern (a flat normal for names
-//!   that say normal, white for occlusion, checker otherwise); a shadow
-//!   sampler reads a depth target cleared to 1 (everything lit);
+//!   that say normal, white for occlusion, checker otherwise), a cube
+//!   sampler the sky, a 3D one 32 slices and an array one 4 layers of
+//!   the name's pattern; a 2D shadow sampler reads a depth target cleared
+//!   to 1 (everything lit);
 //! - each uniform: a per-frame convention its name asks for, else the
 //!   manifest's default, else a convention for the camera and light
-//!   names, else a fallback (`names::fallback`); and a control.
+//!   names, else a fallback (`names::fallback`); and a control; a struct
+//!   uniform member by member, by path (`u_instances[3].color`), an array
+//!   of them as a table of the instance grid's cells ([`leaf_value`]).
 //!
-//! A vertex stage that writes no `gl_Position` (transform feedback) and a
-//! fragment stage that reads `gl_PointCoord` (a point sprite) are
-//! refused: scenes draw triangle lists only.
+//! A program that writes `gl_PointSize` or reads `gl_PointCoord` (a point
+//! sprite) draws the sphere's vertices as points. A vertex stage that
+//! writes no `gl_Position` (transform feedback) is refused.
 
 use std::collections::BTreeMap;
 
 use super::names;
-use super::{Attribute, Control, Convention, Draw, Filter, InstanceGrid, MeshKind, OrbitCamera, Pass, Pattern, RenderTarget, SamplerInput, Scene, TargetFormat, Texture, ValueSpec, SCREEN};
+use super::{Attribute, Control, Convention, Draw, Filter, InstanceGrid, MeshKind, OrbitCamera, Pass, Pattern, Primitive, RenderTarget, SamplerInput, Scene, TargetFormat, Texture, TextureKind, ValueSpec, SCREEN};
 use crate::emit::reflect_types::{EntryPoint, Reflection};
 
 /// Why a program gets no inferred scene.
@@ -84,11 +90,8 @@ impl Scene {
         if !vs.builtins.iter().any(|b| b == "gl_Position") {
             return Err(InferError(format!("`{vertex}` writes no gl_Position (a transform-feedback stage?): it places nothing to draw")));
         }
-        if fs.builtins.iter().any(|b| b == "gl_PointCoord") {
-            return Err(InferError(format!(
-                "`{fragment}` reads gl_PointCoord, a point sprite's: the runner's scenes draw triangles only (no point lists yet)"
-            )));
-        }
+        // A point sprite: the sphere's vertices drawn as points.
+        let points = fs.builtins.iter().any(|b| b == "gl_PointCoord") || vs.builtins.iter().any(|b| b == "gl_PointSize");
         let mut scene = Scene {
             camera: OrbitCamera::default(),
             textures: Vec::new(),
@@ -99,7 +102,16 @@ impl Scene {
             light: None,
             controls: Vec::new(),
         };
-        let draw = infer_draw(vs);
+        let mut draw = infer_draw(vs);
+        if points {
+            if draw.mesh != MeshKind::Cube {
+                return Err(InferError(format!(
+                    "`{vertex}` + `{fragment}` draw point sprites with no 3D position input: the runner's point lists are a mesh's vertices"
+                )));
+            }
+            draw.mesh = MeshKind::Sphere;
+            draw.primitive = Primitive::Points;
+        }
         let mut pass = Pass {
             name: format!("{vertex} + {fragment}"),
             vertex: vertex.to_string(),
@@ -113,9 +125,17 @@ impl Scene {
             values: BTreeMap::new(),
             draws: Vec::new(),
         };
-        if !matches!(draw.mesh, MeshKind::None | MeshKind::FullscreenTriangle) {
+        // A skybox (its vertex program reads a rotation-only view) puts its
+        // depth at the far plane, which a LESS test against 1 would reject;
+        // seen from inside, the cube needs no depth test.
+        let skybox = uniforms(r, &[vs]).iter().any(|(n, ty, _)| names::convention(n, ty) == Some(Convention::ViewRotation));
+        if !skybox && !matches!(draw.mesh, MeshKind::None | MeshKind::FullscreenTriangle) {
             scene.targets.push(RenderTarget { name: "depth".into(), format: TargetFormat::Depth32float, size: None });
             pass.depth = Some("depth".into());
+        }
+        if skybox {
+            // Looking 10 degrees up: the horizon, sky above and ground below.
+            scene.camera.pitch = -10.0;
         }
         pass.draws.push(draw);
         let mut clears = Vec::new();
@@ -124,21 +144,25 @@ impl Scene {
                 continue;
             }
             let s = r.samplers.iter().find(|s| &s.name == name).ok_or_else(|| InferError(format!("sampler `{name}` is not in the manifest")))?;
-            if s.dimension != "2d" {
-                return Err(InferError(format!(
-                    "sampler `{name}` is a {}: the runner's scenes have 2D textures only (no cube, 3D or array textures yet)",
-                    s.ty
-                )));
-            }
+            let kind = TextureKind::of_dimension(&s.dimension).ok_or_else(|| InferError(format!("sampler `{name}` is a {}: the runner's scenes have no {} textures", s.ty, s.dimension)))?;
             let texture = format!("{name}_texture");
             match s.sample_type.as_str() {
-                "float" => scene.textures.push(Texture { name: texture.clone(), pattern: Some(pattern_for(name)), image: None, size: [64, 64] }),
-                "depth" => {
+                "float" => {
+                    let (pattern, size, layers) = match kind {
+                        TextureKind::D2 => (pattern_for(name), 64, 1),
+                        TextureKind::Cube => (Pattern::Sky, 64, 1),
+                        TextureKind::D3 => (pattern_for(name), 32, 32),
+                        TextureKind::D2Array => (pattern_for(name), 64, 4),
+                    };
+                    scene.textures.push(Texture { name: texture.clone(), pattern: Some(pattern), image: None, size: [size, size], kind, layers });
+                }
+                "depth" if kind == TextureKind::D2 => {
                     // A depth target no pass draws into but one that clears
                     // it: depth 1 everywhere, every compare passes.
                     scene.targets.push(RenderTarget { name: texture.clone(), format: TargetFormat::Depth32float, size: Some([64, 64]) });
                     clears.push(texture.clone());
                 }
+                "depth" => return Err(InferError(format!("sampler `{name}` is a {}: the runner's depth targets are 2D only (no cube or array shadow maps yet)", s.ty))),
                 other => return Err(InferError(format!("sampler `{name}` reads {other} texels: the runner's patterns are float colours"))),
             }
             pass.samplers.insert(name.clone(), SamplerInput { texture, filter: Filter::Linear });
@@ -158,7 +182,19 @@ impl Scene {
                 draws: Vec::new(),
             });
         }
+        let grid = pass.draws[0].instances.clone().unwrap_or(InstanceGrid { count: [3, 3, 1], spacing: 1.6 });
         for (name, ty, default) in uniforms(r, &[vs, fs]) {
+            let parts = leaves(r, &name, &ty);
+            if parts.len() != 1 || parts[0].path != name {
+                // A struct (an instance table): each member by its path.
+                scene.controls.push(names::control(&name, &ty, None));
+                for l in parts {
+                    if let Some(v) = leaf_value(&l, &grid) {
+                        scene.values.insert(l.path, v);
+                    }
+                }
+                continue;
+            }
             let value = value_for(&name, &ty, default.as_deref());
             scene.controls.push(names::control(&name, &ty, value.as_ref()));
             if let Some(v) = value {
@@ -180,6 +216,44 @@ fn value_for(name: &str, ty: &str, default: Option<&[u32]>) -> Option<ValueSpec>
         return Some(v);
     }
     convention.map(ValueSpec::Convention).or_else(|| names::fallback(name, ty))
+}
+
+/// The value of a leaf of a struct uniform (`u_instances[3].offset_scale`):
+/// a table indexed by instance reads the instance grid's cell `i mod n` for
+/// element `i`: an offset or position member its centre (a 4th component
+/// 0.45 when the name also says scale, else 1), a colour member its
+/// colour (alpha 1), a scale or size 0.45, a phase its phase; any other
+/// member what a uniform of its name gets.
+fn leaf_value(l: &Leaf, grid: &InstanceGrid) -> Option<ValueSpec> {
+    let member = l.path.rsplit('.').next().unwrap_or(&l.path);
+    // Only an array is a table: a lone struct's members are named uniforms.
+    let Some(i) = l.path.rsplit_once('[').and_then(|(_, rest)| rest.split(']').next()?.parse::<u32>().ok()) else {
+        return value_for(member, &l.ty, None);
+    };
+    let (offset, colour, phase) = grid.instance(i % grid.total().max(1));
+    let w = names::words(member);
+    let has = |any: &[&str]| w.iter().any(|x| any.contains(&x.as_str()));
+    let n = match l.ty.as_str() {
+        "float" => 1,
+        "float2" => 2,
+        "float3" => 3,
+        "float4" => 4,
+        _ => return value_for(member, &l.ty, None),
+    };
+    let scale = 0.45;
+    let xyz = |v: [f32; 3], w: f64| vec![f64::from(v[0]), f64::from(v[1]), f64::from(v[2]), w];
+    let v: Vec<f64> = if has(&["offset", "position", "pos", "translate", "translation", "center", "centre"]) {
+        xyz(offset, if has(&["scale", "size"]) { scale } else { 1.0 })
+    } else if has(&["color", "colour", "tint", "albedo"]) {
+        xyz(colour, 1.0)
+    } else if has(&["scale", "size"]) {
+        vec![scale; 4]
+    } else if has(&["phase"]) {
+        vec![f64::from(phase); 4]
+    } else {
+        return value_for(member, &l.ty, None);
+    };
+    Some(if n == 1 { ValueSpec::Number(v[0]) } else { ValueSpec::Numbers(v[..n].to_vec()) })
 }
 
 /// Every uniform the entry points read: loose ones and the members of the
@@ -221,7 +295,7 @@ fn pattern_for(sampler: &str) -> Pattern {
 /// The draw of a vertex program (module docs).
 fn infer_draw(vs: &EntryPoint) -> Draw {
     if vs.inputs.is_empty() {
-        return Draw { mesh: MeshKind::None, vertices: Some(3), attributes: BTreeMap::new(), instances: None, values: BTreeMap::new(), transform: None };
+        return Draw { mesh: MeshKind::None, vertices: Some(3), attributes: BTreeMap::new(), instances: None, values: BTreeMap::new(), transform: None, primitive: Primitive::Triangles };
     }
     let named: Vec<(String, &str, Option<Attribute>)> = vs.inputs.iter().map(|i| (i.name.clone(), i.ty.as_str(), names::attribute(&i.name))).collect();
     let by_id = vs.builtins.iter().any(|b| b == "gl_InstanceID" || b == "gl_InstanceIndex");
@@ -248,7 +322,53 @@ fn infer_draw(vs: &EntryPoint) -> Draw {
         attributes.insert(name.clone(), a);
     }
     let instances = (instanced || by_id).then_some(InstanceGrid { count: [3, 3, 1], spacing: 1.6 });
-    Draw { mesh, vertices: None, attributes, instances, values: BTreeMap::new(), transform: None }
+    Draw { mesh, vertices: None, attributes, instances, values: BTreeMap::new(), transform: None, primitive: Primitive::Triangles }
+}
+
+/// One value a struct uniform is set by: its path from the uniform
+/// (`u_instances[3].color`), DSL type, byte offset from the uniform's
+/// start and strides.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Leaf {
+    pub path: String,
+    pub ty: String,
+    pub offset: u32,
+    pub array_stride: Option<u32>,
+    pub matrix_stride: Option<u32>,
+}
+
+/// The leaves of a value `name` of type `ty`: itself, unless it is a
+/// struct of the manifest (each member's leaves, `name.member`) or an
+/// array of structs (each element's, `name[i]`). Arrays of plain types
+/// stay one value.
+pub fn leaves(r: &Reflection, name: &str, ty: &str) -> Vec<Leaf> {
+    leaves_at(r, name, ty, None, None)
+}
+
+/// [`leaves`] of a value whose own strides are these (a block member's).
+pub fn leaves_at(r: &Reflection, name: &str, ty: &str, array_stride: Option<u32>, matrix_stride: Option<u32>) -> Vec<Leaf> {
+    let mut out = Vec::new();
+    collect_leaves(r, name, ty, 0, array_stride, matrix_stride, &mut out);
+    out
+}
+
+fn collect_leaves(r: &Reflection, name: &str, ty: &str, offset: u32, array_stride: Option<u32>, matrix_stride: Option<u32>, out: &mut Vec<Leaf>) {
+    let array = ty.strip_suffix(']').and_then(|t| t.rsplit_once('[')).and_then(|(e, n)| Some((e, n.parse::<u32>().ok()?)));
+    let structure = |t: &str| r.structs.iter().find(|s| s.name == t);
+    match (array, structure(ty)) {
+        (Some((element, n)), _) if structure(element).is_some() => {
+            let stride = array_stride.unwrap_or_else(|| structure(element).map_or(16, |s| s.size.next_multiple_of(16)));
+            for i in 0..n {
+                collect_leaves(r, &format!("{name}[{i}]"), element, offset + i * stride, None, None, out);
+            }
+        }
+        (None, Some(s)) => {
+            for m in &s.members {
+                collect_leaves(r, &format!("{name}.{}", m.name), &m.ty, offset + m.offset, m.array_stride, m.matrix_stride, out);
+            }
+        }
+        _ => out.push(Leaf { path: name.to_string(), ty: ty.to_string(), offset, array_stride, matrix_stride }),
+    }
 }
 
 /// The name of the vertex program [`fullscreen_vertex`] writes.

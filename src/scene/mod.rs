@@ -108,9 +108,70 @@ pub struct Texture {
     /// ... or a PNG or JPEG file, relative to the scene file.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub image: Option<String>,
-    /// Texels of a pattern (an image has its own size).
+    /// Texels of a pattern (an image has its own size); a cube's faces
+    /// are square.
     #[serde(default = "pattern_size")]
     pub size: [u32; 2],
+    /// What a sampler sees: a 2D texture, a cube map, a 3D texture or a
+    /// 2D array (patterns only).
+    #[serde(default, skip_serializing_if = "TextureKind::is_2d")]
+    pub kind: TextureKind,
+    /// Slices of a `3d` texture, layers of a `2d_array` (1 to 256).
+    #[serde(default = "one", skip_serializing_if = "is_one")]
+    pub layers: u32,
+}
+
+fn one() -> u32 {
+    1
+}
+
+fn is_one(n: &u32) -> bool {
+    *n == 1
+}
+
+/// The kinds of texture a sampler reads (a sampler's `dimension` in the
+/// manifest: `2d`, `cube`, `3d`, `2d-array`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum TextureKind {
+    #[default]
+    #[serde(rename = "2d")]
+    D2,
+    Cube,
+    #[serde(rename = "3d")]
+    D3,
+    #[serde(rename = "2d_array")]
+    D2Array,
+}
+
+impl TextureKind {
+    fn is_2d(&self) -> bool {
+        *self == TextureKind::D2
+    }
+
+    /// The kind a manifest's sampler `dimension` asks for.
+    pub fn of_dimension(dimension: &str) -> Option<TextureKind> {
+        match dimension {
+            "2d" => Some(TextureKind::D2),
+            "cube" => Some(TextureKind::Cube),
+            "3d" => Some(TextureKind::D3),
+            "2d-array" => Some(TextureKind::D2Array),
+            _ => None,
+        }
+    }
+}
+
+impl Texture {
+    /// A pattern texture's texels: each layer (a cube's faces +x, -x, +y,
+    /// -y, +z, -z) after the other, each row 0 first; and how many layers.
+    pub fn pattern_texels(&self, pattern: Pattern) -> (Vec<u8>, u32) {
+        let [w, h] = self.size;
+        match self.kind {
+            TextureKind::D2 => (pattern.texels(w, h), 1),
+            TextureKind::Cube => ((0..6).flat_map(|f| pattern.layer(w, h, f)).collect(), 6),
+            TextureKind::D3 | TextureKind::D2Array => ((0..self.layers).flat_map(|l| pattern.layer(w, h, l)).collect(), self.layers),
+        }
+    }
 }
 
 fn pattern_size() -> [u32; 2] {
@@ -131,10 +192,36 @@ pub enum Pattern {
     FlatNormal,
     /// Every texel white.
     White,
+    /// Cube maps only: a sky over a ground whose colour tells the
+    /// compass direction (docs/runner.md, "Textures").
+    Sky,
 }
 
+/// Tints of the layers (cube faces) of a layered pattern, by index mod 6.
+const LAYER_TINTS: [[u32; 3]; 6] = [[255, 120, 120], [120, 255, 255], [120, 255, 120], [255, 120, 255], [120, 120, 255], [255, 255, 120]];
+
 impl Pattern {
-    pub const ALL: [Pattern; 5] = [Pattern::Checker, Pattern::Noise, Pattern::Uv, Pattern::FlatNormal, Pattern::White];
+    pub const ALL: [Pattern; 6] = [Pattern::Checker, Pattern::Noise, Pattern::Uv, Pattern::FlatNormal, Pattern::White, Pattern::Sky];
+
+    /// Layer (cube face) `l` of a layered pattern: the sky's face `l`, or
+    /// the 2D pattern (the checker's squares swapping with each layer)
+    /// times the layer's tint. Integer arithmetic, as [`Pattern::texels`].
+    fn layer(self, width: u32, height: u32, l: u32) -> Vec<u8> {
+        if self == Pattern::Sky {
+            return sky_face(width, l);
+        }
+        let mut out = self.texels(width, height);
+        let swap = self == Pattern::Checker && l % 2 == 1;
+        let tint = LAYER_TINTS[(l % 6) as usize];
+        for px in out.chunks_mut(4) {
+            for k in 0..3 {
+                // The checker's 200 and 60 trade places.
+                let c = if swap { 260 - px[k] as u32 } else { px[k] as u32 };
+                px[k] = (c * tint[k] / 255) as u8;
+            }
+        }
+        out
+    }
 
     /// The RGBA8 texels of a `width` x `height` pattern, top row first.
     /// Pure integer arithmetic, so a page computes the same bytes.
@@ -154,12 +241,59 @@ impl Pattern {
                     Pattern::Uv => [(x * 255 / (width - 1).max(1)) as u8, (y * 255 / (height - 1).max(1)) as u8, 128, 255],
                     Pattern::FlatNormal => [128, 128, 255, 255],
                     Pattern::White => [255; 4],
+                    // Checked: a sky is a cube map's; as 2D, its +z face.
+                    Pattern::Sky => {
+                        let f = sky_face(width, 4);
+                        let i = 4 * (y.min(width - 1) * width + x) as usize;
+                        [f[i], f[i + 1], f[i + 2], 255]
+                    }
                 };
                 out.extend_from_slice(&px);
             }
         }
         out
     }
+}
+
+/// Face `f` (+x, -x, +y, -y, +z, -z) of the sky cube map, `n` x `n`, row 0
+/// at the face's t = 0 (GL's cube map table). The direction through a
+/// texel's centre, times `n`, is integers; its elevation stands in as
+/// `256 * y / (|y| + max(|x|, |z|))`: 0 at the horizon, 128 at a top
+/// face's edge, near 256 overhead. Above it the sky goes from a pale
+/// horizon to blue; below it the ground is darker downwards and coloured
+/// by the compass direction (+x red, -x green, +z blue, -z yellow).
+fn sky_face(n: u32, f: u32) -> Vec<u8> {
+    let n = n as i32;
+    let mut out = Vec::with_capacity((n * n * 4) as usize);
+    for y in 0..n {
+        for x in 0..n {
+            let (a, b) = (2 * x + 1 - n, 2 * y + 1 - n);
+            let (rx, ry, rz) = match f {
+                0 => (n, -b, -a),
+                1 => (-n, -b, a),
+                2 => (a, n, b),
+                3 => (a, -n, -b),
+                4 => (a, -b, n),
+                _ => (-a, -b, -n),
+            };
+            let e = 256 * ry / (ry.abs() + rx.abs().max(rz.abs()));
+            let mix = |from: i32, to: i32, t: i32| (from + (to - from) * t / 256) as u8;
+            let px = if e >= 0 {
+                [mix(215, 40, e), mix(228, 100, e), mix(250, 210, e)]
+            } else {
+                let ground: [i32; 3] = if rx.abs() >= rz.abs() {
+                    if rx > 0 { [170, 70, 50] } else { [60, 150, 60] }
+                } else if rz > 0 {
+                    [60, 90, 170]
+                } else {
+                    [170, 150, 50]
+                };
+                [mix(ground[0], 20, -e), mix(ground[1], 20, -e), mix(ground[2], 20, -e)]
+            };
+            out.extend_from_slice(&[px[0], px[1], px[2], 255]);
+        }
+    }
+    out
 }
 
 /// A hash of the texel's cell corners, blended: 4-texel cells.
@@ -297,6 +431,10 @@ pub struct Draw {
     /// of this draw (none: a slow turn about y).
     #[serde(default, skip_serializing_if = "Option::is_none", deserialize_with = "checked")]
     pub transform: Option<Transform>,
+    /// What the mesh is drawn as: its triangles, or each vertex once as a
+    /// point (sized by `gl_PointSize` where the consumer honours it).
+    #[serde(default, skip_serializing_if = "Primitive::is_triangles")]
+    pub primitive: Primitive,
 }
 
 /// A table whose values must make sense together, checked as it is read,
@@ -471,6 +609,20 @@ impl Check for Light {
             }
         }
         Ok(())
+    }
+}
+
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Primitive {
+    #[default]
+    Triangles,
+    Points,
+}
+
+impl Primitive {
+    fn is_triangles(&self) -> bool {
+        *self == Primitive::Triangles
     }
 }
 
@@ -747,6 +899,7 @@ impl Scene {
             if t.size[0] == 0 || t.size[1] == 0 || t.size[0] > 8192 || t.size[1] > 8192 {
                 return Err(format!("texture `{}` is {}x{}: sizes go from 1 to 8192", t.name, t.size[0], t.size[1]));
             }
+            check_kind(t)?;
         }
         for t in &self.targets {
             if let Some([w, h]) = t.size {
@@ -799,6 +952,9 @@ impl Scene {
                     (_, Some(_)) => return Err(format!("pass `{}`: `vertices` goes with `mesh = \"none\"` only", p.name)),
                     _ => {}
                 }
+                if d.primitive == Primitive::Points && d.mesh == MeshKind::None {
+                    return Err(format!("pass `{}`: `primitive = \"points\"` draws a mesh's vertices; `mesh = \"none\"` has none", p.name));
+                }
                 if let Some(g) = &d.instances {
                     if g.total() == 0 || g.total() > 65536 {
                         return Err(format!("pass `{}`: an instance grid of {} instances (1 to 65536)", p.name, g.total()));
@@ -822,6 +978,27 @@ impl Scene {
     pub fn value<'a>(&'a self, pass: &'a Pass, draw: &'a Draw, name: &str) -> Option<&'a ValueSpec> {
         draw.values.get(name).or_else(|| pass.values.get(name)).or_else(|| self.values.get(name))
     }
+}
+
+/// Whether a texture's `kind`, `layers`, size and pattern go together.
+fn check_kind(t: &Texture) -> Result<(), String> {
+    let layered = matches!(t.kind, TextureKind::D3 | TextureKind::D2Array);
+    if t.kind != TextureKind::D2 && t.image.is_some() {
+        return Err(format!("texture `{}`: an image file makes a 2D texture only; a cube, 3D or array texture takes a `pattern`", t.name));
+    }
+    if t.layers == 0 || t.layers > 256 || (t.layers != 1 && !layered) {
+        return Err(format!("texture `{}` has `layers = {}`: 1 to 256, and other than 1 for a `3d` or `2d_array` texture only", t.name, t.layers));
+    }
+    if t.kind == TextureKind::Cube && (t.size[0] != t.size[1] || t.size[0] > 2048) {
+        return Err(format!("texture `{}` is a cube of {}x{} faces: they are square, at most 2048", t.name, t.size[0], t.size[1]));
+    }
+    if layered && u64::from(t.size[0]) * u64::from(t.size[1]) * u64::from(t.layers) > 1 << 24 {
+        return Err(format!("texture `{}`: {}x{}x{} texels, more than 2^24", t.name, t.size[0], t.size[1], t.layers));
+    }
+    if t.pattern == Some(Pattern::Sky) && t.kind != TextureKind::Cube {
+        return Err(format!("texture `{}`: `pattern = \"sky\"` is a cube map's (`kind = \"cube\"`)", t.name));
+    }
+    Ok(())
 }
 
 /// A message about a scene file placed where the text first quotes the

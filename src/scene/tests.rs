@@ -396,12 +396,20 @@ fn the_projects_scene_files_parse() {
     let mut n = 0;
     for e in std::fs::read_dir(&dir).unwrap() {
         let path = e.unwrap().path();
+        if !path.extension().is_some_and(|x| x == "toml" || x == "json") {
+            continue; // an image a scene names
+        }
         let text = std::fs::read_to_string(&path).unwrap();
         let s = Scene::parse(&path.display().to_string(), &text).unwrap_or_else(|e| panic!("{e}"));
-        assert!(s.light.is_some() && s.passes.iter().all(|p| p.draws.iter().all(|d| d.transform.is_some())), "{}: animated", path.display());
-        n += 1;
+        // The shadow scene and the technique scenes are the built-in ones
+        // as files (tests/gpu/scene_files.rs): lit and moving.
+        let stem = path.file_stem().unwrap().to_string_lossy();
+        if ["shadow", "spot", "pcf", "cascades", "proj", "cull", "rgba8-depth"].contains(&stem.as_ref()) {
+            assert!(s.light.is_some() && s.passes.iter().all(|p| p.draws.iter().all(|d| d.transform.is_some())), "{}: animated", path.display());
+            n += 1;
+        }
     }
-    assert!(n >= 7, "shadow.toml and the six technique scenes: {n}");
+    assert_eq!(n, 7, "shadow.toml and the six technique scenes");
 }
 
 #[test]
@@ -423,4 +431,147 @@ fn every_convention_is_in_the_documented_table() {
         let name = serde_json::to_value(c).unwrap();
         assert!(doc.contains(&format!("| `{}` |", name.as_str().unwrap())), "docs/runner.md's conventions table lacks {name}");
     }
+}
+
+const EVERY_SAMPLER: &str = "var @in a_pos : float3
+var @uniform u_view_rot : float4x4
+var @uniform u_proj : float4x4
+var @uniform u_sky : samplerCube
+var @uniform u_volume : sampler3D
+var @uniform u_layers : sampler2DArray
+var @inout v_dir : float3
+var @out f_color : float4
+[vertex_program]
+def vs {
+    v_dir = a_pos
+    gl_Position = u_proj * u_view_rot * float4(a_pos, 1.0)
+}
+[fragment_program]
+def fs {
+    f_color = texture(u_sky, v_dir) + texture(u_volume, v_dir) + texture(u_layers, v_dir)
+}
+";
+
+#[test]
+fn cube_3d_and_array_samplers_read_textures_of_their_kind() {
+    let s = Scene::infer(&manifest(EVERY_SAMPLER)).unwrap();
+    let p = &s.passes[0];
+    let tex = |sampler: &str| s.textures.iter().find(|t| t.name == p.samplers[sampler].texture).unwrap().clone();
+    let (sky, volume, layers) = (tex("u_sky"), tex("u_volume"), tex("u_layers"));
+    assert_eq!((sky.kind, sky.pattern, sky.size, sky.layers), (TextureKind::Cube, Some(Pattern::Sky), [64, 64], 1));
+    assert_eq!((volume.kind, volume.layers), (TextureKind::D3, 32));
+    assert_eq!((layers.kind, layers.layers), (TextureKind::D2Array, 4));
+    // A skybox (a rotation-only view): no depth test, the camera looking up.
+    assert_eq!(p.depth, None);
+    assert!(s.camera.pitch < 0.0);
+    // The format's keys round-trip, and a 2D texture writes neither.
+    let back: Scene = serde_json::from_value(s.to_json()).unwrap();
+    assert_eq!(back, s);
+    assert!(s.to_json()["textures"].as_array().unwrap().iter().all(|t| t.get("kind").is_some()));
+    let (texels, n) = sky.pattern_texels(Pattern::Sky);
+    assert_eq!((texels.len(), n), (64 * 64 * 4 * 6, 6));
+    let (texels, n) = volume.pattern_texels(Pattern::Checker);
+    assert_eq!((texels.len(), n), (32 * 32 * 4 * 32, 32));
+}
+
+#[test]
+fn the_sky_is_blue_above_the_horizon_and_coloured_by_direction_below() {
+    let at = |face: usize, x: usize, y: usize| {
+        let t = Texture { name: "s".into(), pattern: Some(Pattern::Sky), image: None, size: [16, 16], kind: TextureKind::Cube, layers: 1 };
+        let (texels, _) = t.pattern_texels(Pattern::Sky);
+        let i = 4 * (face * 256 + y * 16 + x);
+        [texels[i], texels[i + 1], texels[i + 2]]
+    };
+    // +y (face 2): the zenith, deep blue; -y (3): the ground's darkest.
+    let zenith = at(2, 8, 8);
+    assert!(zenith[2] > 200 && zenith[0] < 60, "{zenith:?}");
+    assert!(at(3, 8, 8).iter().all(|&c| c < 40), "{:?}", at(3, 8, 8));
+    // The side faces: pale near the horizon (t = 0.5), ground below it
+    // (t > 0.5, rows further down), each face its compass colour.
+    for (face, strongest) in [(0, 0), (1, 1), (4, 2), (5, 0)] {
+        let horizon = at(face, 8, 7);
+        assert!(horizon.iter().all(|&c| c > 180), "face {face} horizon {horizon:?}");
+        let ground = at(face, 8, 10);
+        assert_eq!(ground.iter().enumerate().max_by_key(|(_, c)| **c).unwrap().0, strongest, "face {face} ground {ground:?}");
+    }
+}
+
+#[test]
+fn texture_kinds_are_checked() {
+    let scene = |texture: &str| format!("[[textures]]\nname = \"t\"\n{texture}\n[[passes]]\nname = \"p\"\nvertex = \"vs\"\ncolor = \"screen\"\ndraws = []\n");
+    for (texture, want) in [
+        ("pattern = \"sky\"", "cube map's"),
+        ("pattern = \"checker\"\nkind = \"cube\"\nsize = [8, 4]", "square"),
+        ("pattern = \"checker\"\nlayers = 3", "layers = 3"),
+        ("image = \"a.png\"\nkind = \"3d\"", "image file makes a 2D texture only"),
+        ("pattern = \"checker\"\nkind = \"2d_array\"\nlayers = 0", "1 to 256"),
+        ("pattern = \"checker\"\nkind = \"sphere\"", "unknown variant"),
+    ] {
+        let err = Scene::parse("s.toml", &scene(texture)).unwrap_err();
+        assert!(err.contains(want) && err.contains("s.toml:"), "{texture}: {err}");
+    }
+    Scene::parse("s.toml", &scene("pattern = \"checker\"\nkind = \"2d_array\"\nlayers = 3")).unwrap();
+}
+
+#[test]
+fn a_uniform_table_of_structs_is_filled_from_the_instance_grid_by_path() {
+    let src = "struct Instance {
+    offset_scale : float4
+    color : float4
+    weight : float
+}
+var @uniform u_view_proj : float4x4
+var @uniform u_instances : Instance[12]
+var @in a_position : float3
+var @inout v_color : float4
+var @out f_color : float4
+[vertex_program]
+def vs {
+    let inst = u_instances[gl_InstanceID % 12]
+    v_color = inst.color * inst.weight
+    gl_Position = u_view_proj * float4(a_position * inst.offset_scale.w + inst.offset_scale.xyz, 1.0)
+}
+[fragment_program]
+def fs {
+    f_color = v_color
+}
+";
+    let r = manifest(src);
+    let s = Scene::infer(&r).unwrap();
+    let grid = s.passes.last().unwrap().draws[0].instances.clone().expect("gl_InstanceID: a grid");
+    // Element 10 is cell 10 mod 9 = 1.
+    let (offset, colour, _) = grid.instance(1);
+    let f = |v: [f32; 3], w: f64| ValueSpec::Numbers(vec![v[0] as f64, v[1] as f64, v[2] as f64, w]);
+    assert_eq!(s.values["u_instances[10].offset_scale"], f(offset, 0.45));
+    assert_eq!(s.values["u_instances[10].color"], f(colour, 1.0));
+    assert_eq!(s.values["u_instances[0].weight"], ValueSpec::Number(0.5));
+    assert!(!s.values.contains_key("u_instances"));
+    let leaves = infer::leaves(&r, "u_instances", "Instance[12]");
+    assert_eq!(leaves.len(), 36);
+    let stride = r.uniform_buffers[0].members.iter().find(|m| m.name == "u_instances").unwrap().array_stride.unwrap();
+    assert_eq!((leaves[4].path.as_str(), leaves[4].offset), ("u_instances[1].color", stride + 16));
+}
+
+#[test]
+fn a_point_sprite_draws_the_spheres_vertices_as_points() {
+    let src = "var @uniform u_view_proj : float4x4
+var @in a_pos : float3
+var @out f_color : float4
+[vertex_program]
+def vs {
+    gl_PointSize = 8.0
+    gl_Position = u_view_proj * float4(a_pos, 1.0)
+}
+[fragment_program]
+def fs {
+    f_color = float4(gl_PointCoord, 1.0, 1.0)
+}
+";
+    let s = Scene::infer(&manifest(src)).unwrap();
+    let d = &s.passes.last().unwrap().draws[0];
+    assert_eq!((d.mesh, d.primitive), (MeshKind::Sphere, Primitive::Points));
+    assert_eq!(s.to_json()["passes"][0]["draws"][0]["primitive"], "points");
+    let bad = "[[passes]]\nname = \"p\"\nvertex = \"vs\"\ncolor = \"screen\"\n[[passes.draws]]\nmesh = \"none\"\nvertices = 3\nprimitive = \"points\"\n";
+    let err = Scene::parse("s.toml", bad).unwrap_err();
+    assert!(err.contains("has none") && err.contains("s.toml:"), "{err}");
 }

@@ -315,7 +315,8 @@ pub(super) fn load(map: &mut SourceMap, root: FileId, toks: &mut Vec<Token>, raw
             });
             let requiring_dir = map.file_of(req.span.start).and_then(|f| map.file(f).path.as_deref().map(parent_dir)).unwrap_or_else(|| root_dir.clone());
             let cands = candidates(&req.name, &requiring_dir, roots, opts);
-            let taken = cands.files.iter().position(|p| p.is_file());
+            // A text the host passed in (a page's files) is a file too.
+            let taken = cands.files.iter().position(|p| super::overlay::holds(p) || p.is_file());
             probed.extend(cands.files[..taken.unwrap_or(cands.files.len())].iter().cloned());
             let Some(path) = taken.map(|i| cands.files[i].clone()) else {
                 if let Some(dir) = cands.files.iter().find(|p| p.is_dir()) {
@@ -344,6 +345,8 @@ pub(super) fn load(map: &mut SourceMap, root: FileId, toks: &mut Vec<Token>, raw
             }
             let canon = match std::fs::canonicalize(&path) {
                 Ok(c) => c,
+                // A text only the overlay has is known by its normalized path.
+                Err(_) if super::overlay::holds(&path) => super::overlay::normalize(&path),
                 Err(e) => {
                     diags.push(Diagnostic::error(format!("cannot resolve module `{}`: {e}", path.display()), req.span).with_label("cannot resolve"));
                     continue;

@@ -98,4 +98,15 @@ mod tests {
         let c = with(texts, || crate::compile_source("nowhere/main.das", main, &opts));
         assert!(!c.has_errors(), "{}", c.render_diagnostics());
     }
+
+    #[test]
+    fn a_required_module_may_exist_only_as_a_text() {
+        // The playground's `require`d modules, as its includes.
+        let main = "options gen2\nrequire lib/tint\nvar @out f_color : float4\n[fragment_program]\ndef main_fs {\n    f_color = float4(tint(), 1.0)\n}\n";
+        let tint = "options gen2\nmodule tint public\ndef tint() : float3 {\n    return float3(0.25, 0.5, 0.75)\n}\n";
+        let texts: Texts = Arc::new([(normalize(Path::new("nowhere/lib/tint.das")), tint.to_string())].into_iter().collect());
+        let opts = crate::Options { allow_outside_includes: true, ..Default::default() };
+        let c = with(texts, || crate::compile_source("nowhere/main.das", main, &opts));
+        assert!(!c.has_errors(), "{}", c.render_diagnostics());
+    }
 }

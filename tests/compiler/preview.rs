@@ -23,7 +23,7 @@ fn it_serves_the_page_and_the_bundle() {
     let (status, body) = s.get("/", &host);
     assert_eq!(status, 200);
     assert!(body.contains("preview.js"), "{body}");
-    for f in ["/preview.js", "/draw.js", "/controls.js", "/scene.js", "/preview.css"] {
+    for f in ["/preview.js", "/draw.js", "/controls.js", "/scene.js", "/textures.js", "/preview.css"] {
         assert_eq!(s.get(f, &host).0, 200, "{f}");
     }
     // The first compile may still be running: the bundle is there within seconds.

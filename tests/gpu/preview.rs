@@ -323,6 +323,9 @@ fn the_playground_under_preview_holds_the_file_and_follows_its_saves() {
 
     let s0 = step(0);
     assert_eq!(s0.state["editor"], MAIN, "the editor holds the file: {}", s0.state);
+    // The Example menu names the served file; the File menu lists the include.
+    assert!(s0.state["menu"].as_str().is_some_and(|m| m.ends_with(".das") && !m.contains("shared")), "{}", s0.state["menu"]);
+    assert!(s0.state["fileMenu"].as_array().is_some_and(|f| f.iter().any(|x| x.as_str().is_some_and(|x| x.ends_with("tint.das")))), "{}", s0.state["fileMenu"]);
     assert_eq!(s0.state["ok"], true, "{}", s0.state);
     assert_eq!(s0.state["errors"]["webgl2"], serde_json::Value::Null, "{}", s0.state);
     check_picture(&s0, "the file's picture", |u, v| [u, v, 0.25]);
@@ -345,4 +348,78 @@ fn the_playground_under_preview_holds_the_file_and_follows_its_saves() {
     assert!(marks.iter().any(|m| m["line"] == 8 && m["severity"] == "error" && m["message"].as_str().unwrap().contains("nope")), "{marks:?}");
     // The last good program still draws: the typed edit's picture.
     check_picture(&s3, "after the broken save", |u, v| [0.25, v, 1.0 - u]);
+}
+
+/// Tutorial 06 in the page: its first program, the skybox, reads a
+/// `samplerCube` (the built-in sky, web/preview/textures.js) with the
+/// camera looking up at the horizon. On WebGL2 at least a quarter of the
+/// pixels are sky (blue the largest channel, above 150) and a tenth
+/// ground; WebGPU agrees within [`TUTORIAL_AGREEMENT`]. The picture is
+/// saved as `skybox.page.png` among the test artifacts.
+#[test]
+fn the_skybox_tutorial_shows_its_sky_in_the_page() {
+    let file = Path::new(env!("CARGO_MANIFEST_DIR")).join("../shared/reference/daslang-tutorials/06_skybox.das");
+    if !file.is_file() {
+        skip(format!("{} is missing", file.display()));
+        return;
+    }
+    if !browser_ready() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let program = dir.path().join("06_skybox.das");
+    std::fs::copy(&file, &program).unwrap();
+    let out = dir.path().join("out");
+    std::fs::create_dir(&out).unwrap();
+    let server = PreviewServer::start(&program);
+    let steps = drive(&server, &program, &[], &out);
+    let s = &steps[0].state;
+    assert_eq!(s["ok"], true, "{s}");
+    let gl = steps[0].webgl2.as_ref().unwrap_or_else(|| panic!("no WebGL2 picture: {s}"));
+    let (w, h) = (s["width"].as_u64().unwrap() as u32, s["height"].as_u64().unwrap() as u32);
+    // Rows bottom first: flipped for the PNG.
+    let mut img = image::RgbaImage::from_raw(w, h, gl.clone()).unwrap();
+    image::imageops::flip_vertical_in_place(&mut img);
+    img.save(crate::support::gpu::artifacts_dir("any-program").join("skybox.page.png")).unwrap();
+    let n = gl.len() / 4;
+    let sky = gl.chunks(4).filter(|p| p[2] > 150 && p[2] >= p[0] && p[2] >= p[1]).count();
+    let ground = gl.chunks(4).filter(|p| p[2] < p[0].max(p[1])).count();
+    assert!(sky * 4 >= n && ground * 10 >= n, "{sky} sky and {ground} ground pixels of {n}");
+    if steps[0].webgpu.is_none() {
+        skip(format!("headless chromium drew no WebGPU picture: {}", s["errors"]["webgpu"]));
+        return;
+    }
+    let share = s["diff"]["share"].as_f64().unwrap();
+    assert!(share <= TUTORIAL_AGREEMENT, "{:.2}% of the pixels differ: {}", share * 100.0, s["diff"]);
+}
+
+/// `shaders/programs/instanced.das` in the page: its instance table
+/// (`u_instances : Instance[64]`, a loose uniform array of structs) is set
+/// member by member from the scene's paths, on WebGL2 by each leaf's GLSL
+/// name (it was skipped: every instance scaled to nothing, a black
+/// picture). At least 5 % of the WebGL2 pixels are lit, and WebGPU agrees
+/// within [`TUTORIAL_AGREEMENT`].
+#[test]
+fn the_instanced_program_draws_its_instance_table_in_the_page() {
+    if !browser_ready() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let program = dir.path().join("instanced.das");
+    std::fs::copy(Path::new(env!("CARGO_MANIFEST_DIR")).join("shaders/programs/instanced.das"), &program).unwrap();
+    let out = dir.path().join("out");
+    std::fs::create_dir(&out).unwrap();
+    let server = PreviewServer::start(&program);
+    let steps = drive(&server, &program, &[], &out);
+    let s = &steps[0].state;
+    assert_eq!(s["ok"], true, "{s}");
+    let gl = steps[0].webgl2.as_ref().unwrap_or_else(|| panic!("no WebGL2 picture: {s}"));
+    let lit = gl.chunks(4).filter(|p| p[0] > 20 || p[1] > 20 || p[2] > 20).count();
+    assert!(lit * 20 >= gl.len() / 4, "{lit} lit pixels of {}", gl.len() / 4);
+    if steps[0].webgpu.is_none() {
+        skip(format!("headless chromium drew no WebGPU picture: {}", s["errors"]["webgpu"]));
+        return;
+    }
+    let share = s["diff"]["share"].as_f64().unwrap();
+    assert!(share <= TUTORIAL_AGREEMENT, "{:.2}% of the pixels differ: {}", share * 100.0, s["diff"]);
 }

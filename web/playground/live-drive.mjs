@@ -34,6 +34,8 @@ async function record(page, step) {
       marks: pg.marks(), drawn: pg.preview.drawn, errors: pg.preview.errors, diff: snap.diff,
       width: snap.width, height: snap.height, webgl2: b64(snap.webgl2), webgpu: b64(snap.webgpu),
       status: document.getElementById('status').textContent,
+      menu: document.getElementById('examples').selectedOptions[0]?.textContent ?? null,
+      fileMenu: [...document.getElementById('file').options].map((o) => o.value),
       notReloaded: window.umbracNotReloaded === true,
     };
   });

@@ -46,7 +46,7 @@ function startWorker() {
 }
 
 function request() {
-  const source = view.state.doc.toString();
+  const source = mainSource();
   waiting = { name: fileName, source, options: options(), version: docVersion };
   pump();
 }
@@ -91,7 +91,8 @@ function onResult(msg) {
     state.lastVersion = version;
     if (msg.version) $('version').textContent = `umbrac ${msg.version}`;
     // Positions are only good for the text they were computed from.
-    if (version === docVersion) showDiagnostics(bundle);
+    // (and are the program's: none are marked in another file).
+    if (version === docVersion && !active) showDiagnostics(bundle);
     showOutputs(bundle);
     const errors = bundle.diagnostics.filter((d) => d.severity === 'error' || d.severity === 'bug').length;
     showStatus(bundle.ok ? `compiled in ${msg.ms.toFixed(1)} ms` : `${errors} error${errors === 1 ? '' : 's'} (${msg.ms.toFixed(1)} ms)`, bundle.ok ? 'ok' : 'error');
@@ -126,17 +127,18 @@ function fromServer(bundle, id) {
   const src = bundle.source || {};
   fileName = src.name || live.file;
   exampleFiles = src.files || {};
+  listFiles();
   clearTimeout(timer);
   waiting = null;
   dropBefore = nextId;
-  if (typeof src.text === 'string' && src.text !== view.state.doc.toString()) {
+  if (typeof src.text === 'string' && src.text !== mainSource()) {
     fromDisk = true;
     try { setSource(src.text); } finally { fromDisk = false; }
   }
   state.lastVersion = docVersion;
   state.lastBundle = bundle;
   live.received = id;
-  showDiagnostics(bundle);
+  if (!active) showDiagnostics(bundle);
   showOutputs(bundle);
   const errors = bundle.diagnostics.filter((d) => d.severity === 'error' || d.severity === 'bug').length;
   showStatus(bundle.ok ? `${fileName}: compiled by umbrac preview (compile ${id})` : `${fileName}: ${errors} error${errors === 1 ? '' : 's'} (compile ${id})`, bundle.ok ? 'ok' : 'error');
@@ -148,7 +150,10 @@ function startLive(cfg) {
   fileName = cfg.file;
   defines = cfg.defines || {};
   if (cfg.conventions) $('conventions').value = cfg.conventions;
-  $('examples').value = '';
+  // The menu names the served file, not "(a shared program)".
+  const served = new Option(cfg.file, 'live');
+  $('examples').prepend(served);
+  $('examples').value = 'live';
   showStatus(`waiting for umbrac preview's compile of ${cfg.file}`, 'warn');
   const events = new EventSource(cfg.events);
   events.addEventListener('bundle', (e) => fromServer(JSON.parse(e.data), +e.lastEventId));
@@ -160,6 +165,51 @@ let fileName = 'playground.das';
 let exampleFiles = {};
 // `-D`s of the preview server's compiles, for the page's own.
 let defines = {};
+
+// ---- several files ------------------------------------------------------------
+//
+// The editor holds the program (`fileName`) or one of the files it may
+// `#include` or `require` (`exampleFiles`, by their paths beside it, as the
+// compiler's file seam takes them); the file menu switches. Every compile
+// is of the program, with the files as they are now.
+
+// The path of the file in the editor: '' for the program.
+let active = '';
+// The program's text while another file is in the editor.
+let mainText = '';
+
+function mainSource() {
+  return active ? mainText : view.state.doc.toString();
+}
+
+function listFiles() {
+  const sel = $('file');
+  const paths = Object.keys(exampleFiles).sort();
+  if (active && !paths.includes(active)) openFile('');
+  sel.replaceChildren(new Option(fileName, ''), ...paths.map((p) => new Option(p, p)));
+  sel.value = active;
+  sel.parentElement.hidden = paths.length === 0;
+}
+
+function openFile(path) {
+  if (path === active) return;
+  const text = path ? exampleFiles[path] : mainText;
+  if (text === undefined) return;
+  if (!active) mainText = view.state.doc.toString();
+  active = path;
+  switching = true;
+  try { view.dispatch({ changes: { from: 0, to: view.state.doc.length, insert: text } }); } finally { switching = false; }
+  view.dispatch(setDiagnostics(view.state, []));
+  $('file').value = path;
+}
+
+// Set while openFile swaps the editor's text: no edit, no compile.
+let switching = false;
+
+// An edit to the file in the editor.
+function edited() {
+  if (active) exampleFiles = { ...exampleFiles, [active]: view.state.doc.toString() };
+}
 
 function options() {
   return { conventions: $('conventions').value, files: exampleFiles, defines };
@@ -305,15 +355,19 @@ function openExample(ex) {
   // The example's path and the files it includes, by their paths beside it.
   fileName = ex.path;
   exampleFiles = ex.shared ? sharedFiles : {};
+  openFile('');
+  listFiles();
   $('examples').value = String(examples.indexOf(ex));
   setSource(ex.source);
   history.replaceState(null, '', `#example=${encodeURIComponent(ex.name)}`);
 }
 
 function shareLink() {
-  const packed = LZString.compressToEncodedURIComponent(view.state.doc.toString());
+  const packed = LZString.compressToEncodedURIComponent(mainSource());
   const url = new URL(location.href);
   url.hash = `code=${packed}&name=${encodeURIComponent(fileName)}`;
+  // The files the program may read, one compressed JSON object.
+  if (Object.keys(exampleFiles).length) url.hash += `&files=${LZString.compressToEncodedURIComponent(JSON.stringify(exampleFiles))}`;
   return url.toString();
 }
 
@@ -321,9 +375,18 @@ function fromHash() {
   const params = new URLSearchParams(location.hash.slice(1));
   if (params.has('code')) {
     const text = LZString.decompressFromEncodedURIComponent(params.get('code'));
-    if (text !== null) {
+    let files = {};
+    try {
+      files = params.has('files') ? JSON.parse(LZString.decompressFromEncodedURIComponent(params.get('files'))) : {};
+    } catch (_) {
+      files = null;
+    }
+    const good = files && typeof files === 'object' && Object.values(files).every((t) => typeof t === 'string');
+    if (text !== null && good) {
       fileName = params.get('name') || 'playground.das';
-      exampleFiles = {};
+      exampleFiles = files;
+      openFile('');
+      listFiles();
       $('examples').value = '';
       return { source: text };
     }
@@ -351,7 +414,9 @@ const view = new EditorView({
       lintGutter(),
       EditorView.updateListener.of((u) => {
         if (!u.docChanged) return;
+        if (switching) return;
         docVersion += 1;
+        edited();
         if (fromDisk) return;
         clearTimeout(timer);
         timer = setTimeout(request, DEBOUNCE_MS);
@@ -361,6 +426,7 @@ const view = new EditorView({
 });
 
 function setSource(text) {
+  openFile('');
   view.dispatch({ changes: { from: 0, to: view.state.doc.length, insert: text } });
 }
 
@@ -374,7 +440,13 @@ window.umbracPlayground = {
   preview,
   get lastGood() { return lastGood; },
   setSource,
-  source: () => view.state.doc.toString(),
+  source: mainSource,
+  // The files beside the program ({ path: text }), the one in the editor
+  // ('' for the program), and switching it.
+  files: () => exampleFiles,
+  get active() { return active; },
+  openFile,
+  setFiles(files) { exampleFiles = { ...files }; listFiles(); request(); },
   shareLink,
   settled: () => running === null && waiting === null && state.lastVersion === docVersion,
   // Under `umbrac preview`: { file, received (the last bundle's number) }; else null.
@@ -391,6 +463,7 @@ async function main() {
   buildPanels();
   startWorker();
   $('conventions').onchange = request;
+  $('file').onchange = () => openFile($('file').value);
   $('share').onclick = async () => {
     const link = shareLink();
     history.replaceState(null, '', link);
@@ -409,7 +482,7 @@ async function main() {
   else setSource('var @out f_color : float4\n\n[fragment_program]\ndef main_fs {\n    f_color = float4(1.0, 0.5, 0.25, 1.0)\n}\n');
   window.addEventListener('hashchange', () => {
     const again = fromHash();
-    if (again && again.source !== undefined && again.source !== view.state.doc.toString()) setSource(again.source);
+    if (again && again.source !== undefined && again.source !== mainSource()) setSource(again.source);
   });
 }
 

@@ -6,7 +6,9 @@
 // interface and checks: a tutorial loads and every output shows (equal to
 // the native compiler's when $UMBRAC names an umbrac binary); a typed error
 // is marked at its line and clears when fixed; a 1 MB paste leaves the page
-// answering; a share link round-trips. Chromium is /usr/bin/chromium (or
+// answering; a share link round-trips; a program `require`ing a module
+// of its own compiles, an edit to the module through the File menu
+// recompiles it, and a share link carries both files. Chromium is /usr/bin/chromium (or
 // $UMBRAC_CHROMIUM); without it the test skips, or fails with CI=true.
 import { existsSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
@@ -63,6 +65,55 @@ function sameInstructions(a, b) {
 }
 
 const PROGRAM = 'var @out f_color : float4\n\n[fragment_program]\ndef main_fs {\n    f_color = float4(1.0, 0.5, 0.25, 1.0)\n}\n';
+
+// Several files: a program that `require`s a module of its own (a daslang
+// module, host code and all, in a folder beside it), the module edited
+// through the editor's file menu, and a share link carrying both.
+const REQUIRING = 'options gen2\nrequire lib/tint\n\nvar @out f_color : float4\n\n[fragment_program]\ndef main_fs {\n    f_color = float4(tint(), 1.0)\n}\n';
+const TINT = 'options gen2\nmodule tint public\n\ndef tint() : float3 {\n    return float3(0.25, 0.5, 0.75)\n}\n';
+
+async function severalFiles(browser, page) {
+  const wgsl = () => page.evaluate(() => window.umbracPlayground.state.lastBundle.files.filter((f) => f.name.endsWith('.wgsl')).map((f) => f.text).join('\n'));
+  await page.evaluate(([main, files]) => { window.umbracPlayground.setFiles(files); window.umbracPlayground.setSource(main); }, [REQUIRING, { 'lib/tint.das': TINT }]);
+  await settled(page);
+  const first = await page.evaluate(() => ({ ok: window.umbracPlayground.state.lastBundle.ok, diagnostics: window.umbracPlayground.state.lastBundle.diagnostics.map((d) => d.message) }));
+  const menu = await page.$$eval('#file option', (o) => o.map((x) => x.value));
+  check('a program requiring its own module compiles in the page', first.ok && (await wgsl()).includes('0.25') && menu.includes('lib/tint.das'), { ...first, menu });
+  // The module in the editor, edited: the program compiles with the edit.
+  const compiles = await page.evaluate(() => window.umbracPlayground.state.compiles);
+  await page.selectOption('#file', 'lib/tint.das');
+  await page.evaluate(() => {
+    const v = window.umbracPlayground.view;
+    const at = v.state.doc.toString().indexOf('0.25');
+    v.dispatch({ changes: { from: at, to: at + 4, insert: '0.125' } });
+  });
+  await page.waitForFunction((n) => window.umbracPlayground.state.compiles > n && window.umbracPlayground.settled(), compiles, { timeout: SETTLE_MS, polling: 50 });
+  const edited = await page.evaluate(() => ({ active: window.umbracPlayground.active, source: window.umbracPlayground.source(), ok: window.umbracPlayground.state.lastBundle.ok }));
+  const text = await wgsl();
+  check('an edit to the module recompiles the program', edited.active === 'lib/tint.das' && edited.source === REQUIRING && edited.ok && text.includes('0.125') && !text.includes('0.25'), edited);
+  // The share link: both files, as they are now.
+  await page.click('#share');
+  const link = await page.$eval('#share-link', (e) => e.value);
+  const other = await browser.newPage();
+  await other.goto(link);
+  await settled(other);
+  const back = await other.evaluate(() => ({ source: window.umbracPlayground.source(), files: window.umbracPlayground.files(), ok: window.umbracPlayground.state.lastBundle.ok }));
+  check('a share link carries every file', back.ok && back.source === REQUIRING && Object.keys(back.files).length === 1 && back.files['lib/tint.das'] === TINT.replace('0.25', '0.125'), { link_chars: link.length, ok: back.ok });
+  await other.close();
+}
+
+// Every example that `require`s a module of the project's (found among
+// the shared files, as the page passes them) compiles with the page's
+// compiler, here loaded in node.
+async function examplesWithModules() {
+  const { pathToFileURL } = await import('node:url');
+  const glue = await import(pathToFileURL(resolve(dir, 'umbrac_web.js')).href);
+  await glue.default({ module_or_path: readFileSync(join(dir, 'umbrac_web_bg.wasm')) });
+  const data = JSON.parse(readFileSync(join(dir, 'examples.json'), 'utf8'));
+  const requiring = data.examples.filter((e) => e.shared && /^\s*require\s+\S*\//m.test(e.source));
+  const failed = requiring.map((e) => [e.name, JSON.parse(glue.compile(e.path, e.source, JSON.stringify({ files: data.files })))]).filter(([, b]) => !b.ok);
+  check('the examples requiring modules compile in the page', requiring.length > 0 && failed.length === 0, { examples: requiring.map((e) => e.name), failed: failed.map(([n, b]) => [n, b.diagnostics[0]?.message]) });
+}
 
 let browser;
 try {
@@ -181,6 +232,10 @@ try {
   await settled(other);
   const back = await other.evaluate(() => ({ source: window.umbracPlayground.source(), ok: window.umbracPlayground.state.lastBundle.ok }));
   check('a share link round-trips', back.source === shared && back.ok, { link_chars: link.length });
+
+  // 5. Several files.
+  await severalFiles(browser, page);
+  await examplesWithModules();
 } catch (e) {
   failures.push(`driving chromium: ${e.stack || e.message}`);
 } finally {

@@ -3,8 +3,9 @@
 // bound to conventions (time, resolution, mouse, frame, the orbit camera's
 // matrices, ...), and a pattern for each sampler. docs/preview.md.
 
-import { parseType, writeMember, readMember, uniformBuffers, bareName } from './draw.js';
-import { pattern, PATTERNS, conventions, fitValue } from './scene.js';
+import { parseType, writeMember, readMember, uniformBuffers, bareName, structLeaves } from './draw.js';
+import { PATTERNS, conventions, fitValue } from './scene.js';
+import { texels } from './textures.js';
 
 // The orbit camera: drag on a canvas to turn, wheel to zoom; it moves the
 // scene's camera (umbrac::scene::OrbitCamera, degrees) by what was dragged.
@@ -103,6 +104,7 @@ export class Inputs {
     this.values = new Map(); // member key -> numbers
     this.patterns = new Map(); // sampler -> pattern name
     this.bound = []; // { buffer, member, t, convention }
+    this.leaves = []; // { buffer, member, values }: a struct's members the scene sets by path
     this.orbit = orbit;
     this.images = new Map();
     this.files = new Map(); // sampler -> an image file's texels
@@ -126,6 +128,11 @@ export class Inputs {
         if (!t || control?.kind === 'none') {
           // A struct or an array keeps its default (or the scene's numbers).
           if (t && spec !== undefined) this.values.set(key, numbersOf(spec, t));
+          for (const leaf of structLeaves(manifest, m)) {
+            const s = plan.values[leaf.name];
+            const lt = parseType(leaf.type);
+            if (s !== undefined && typeof s !== 'string' && lt) this.leaves.push({ buffer: b.name, member: leaf, values: numbersOf(s, lt) });
+          }
           panel.append(note(`${m.name} : ${m.type}: its default`));
           continue;
         }
@@ -143,7 +150,9 @@ export class Inputs {
       const row = document.createElement('label');
       row.className = 'control';
       const select = document.createElement('select');
-      for (const p of PATTERNS) select.append(new Option(p, p));
+      // A cube map also offers the sky; image files make 2D textures only.
+      const flat = (tex.kind ?? '2d') === '2d';
+      for (const p of flat ? PATTERNS : ['sky', ...PATTERNS].slice(tex.kind === 'cube' ? 0 : 1)) select.append(new Option(p, p));
       // An image file of the user's (chosen or dropped on the button) joins the menu.
       const kept = previous?.files.get(s);
       if (kept) {
@@ -171,7 +180,7 @@ export class Inputs {
         select.value = 'file';
         this.patterns.set(s, 'file');
       });
-      row.append(document.createTextNode(`${s} `), select, file);
+      row.append(document.createTextNode(`${s} `), select, ...(flat ? [file] : []));
       panel.append(row);
     }
   }
@@ -222,6 +231,7 @@ export class Inputs {
         if (v) writeMember(buffers[b.name], m, v);
       }
     }
+    for (const l of this.leaves) writeMember(buffers[l.buffer], l.member, l.values);
     const conv = conventions(this.orbit.camera(this.plan.camera), clock);
     for (const { buffer, member, t, convention } of this.bound) {
       const v = conv[convention];
@@ -236,8 +246,8 @@ export class Inputs {
         textures[s] = file;
         continue;
       }
-      const key = `${p}:${tex.size.join('x')}`;
-      if (!this.images.has(key)) this.images.set(key, pattern(p, tex.size[0], tex.size[1]));
+      const key = `${p}:${tex.size.join('x')}:${tex.kind ?? '2d'}:${tex.layers ?? 1}`;
+      if (!this.images.has(key)) this.images.set(key, texels(p, tex));
       // One object per pattern, size and filter: a renderer uploads a texture when its object changes.
       const ikey = `${key}:${tex.filter}`;
       if (!this.images.has(ikey)) this.images.set(ikey, { ...this.images.get(key), filter: tex.filter });

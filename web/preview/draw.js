@@ -23,6 +23,7 @@
 
 import { pattern, mesh, instance, fit, PATTERNS } from './scene.js';
 import { needsPasses, passesPlan, GLPasses, GPUPasses } from './passes.js';
+import { texels, kindOf, glTarget, glUpload, viewDimension, gpuTexture } from './textures.js';
 
 export { pattern, PATTERNS };
 
@@ -148,11 +149,14 @@ function planOfScene(m, scene) {
       continue;
     }
     const tex = (scene.textures ?? []).find((x) => x.name === input.texture);
-    textures[sampler] = { pattern: tex.pattern, size: tex.size ?? [64, 64], filter: input.filter ?? 'linear' };
+    textures[sampler] = { pattern: tex.pattern, size: tex.size ?? [64, 64], filter: input.filter ?? 'linear', kind: tex.kind ?? '2d', layers: tex.layers ?? 1 };
   }
   return {
     vertex, fragment, attributes,
     count,
+    // A point list: each vertex a point (the page's mesh repeats a vertex
+    // per triangle; the repeats land on the same pixels).
+    points: draw.primitive === 'points',
     instances,
     depth: !!pass.depth,
     cull: pass.cull ?? 'none',
@@ -269,6 +273,25 @@ export function writeMember(words, member, values) {
   } else for (let k = 0; k < t.n; k++) put(base + k, values[k]);
 }
 
+// The leaves of a struct member (or an array of structs) as members of
+// their own: `u_instances[3].color` at its byte offset in the buffer, as
+// the native runner's scene values name them (docs/runner.md, "Inference").
+export function structLeaves(manifest, m) {
+  const out = [];
+  const struct = (n) => (manifest.structs ?? []).find((s) => s.name === n);
+  const walk = (name, type, offset, arrayStride, matrixStride) => {
+    const arr = /^(.*)\[(\d+)\]$/.exec(type);
+    if (arr && struct(arr[1])) {
+      const stride = arrayStride ?? Math.ceil(struct(arr[1]).size / 16) * 16;
+      for (let i = 0; i < +arr[2]; i++) walk(`${name}[${i}]`, arr[1], offset + i * stride);
+    } else if (!arr && struct(type)) {
+      for (const x of struct(type).members) walk(`${name}.${x.name}`, x.type, offset + x.offset, x.array_stride, x.matrix_stride);
+    } else if (name !== m.name) out.push({ name, type, offset, array_stride: arrayStride, matrix_stride: matrixStride });
+  };
+  walk(m.name, m.type, m.offset, m.array_stride, m.matrix_stride);
+  return out;
+}
+
 // A member's values read back from the words (matrices column by column).
 export function readMember(words, member) {
   const t = parseType(member.type);
@@ -291,8 +314,9 @@ export function refuseUnsupported(m, plan) {
   for (const s of m.samplers ?? []) {
     if (!used.has(s.name) || plan.passes) continue;
     const depth = plan.textures[s.name]?.depthCleared;
-    if (s.dimension !== '2d' || s.array_size || (depth ? !s.comparison : s.comparison || s.sample_type !== 'float')) {
-      throw new DrawError('plan', `the preview binds built-in 2D colour textures and cleared depth targets only; \`${s.name} : ${s.type}\` is not one here`);
+    const kind = depth ? '2d' : plan.textures[s.name]?.kind ?? '2d';
+    if (kindOf(s.dimension) !== kind || s.array_size || (depth ? !s.comparison : s.comparison || s.sample_type !== 'float')) {
+      throw new DrawError('plan', `the preview binds built-in colour textures (2D, cube, 3D, 2D array) and cleared 2D depth targets only; \`${s.name} : ${s.type}\` is not one here`);
     }
   }
   for (const b of m.uniform_buffers ?? []) {
@@ -372,7 +396,15 @@ export function glUniformsOf(gl, program, m, used) {
         const arr = /^(.+)\[(\d+)\]$/.exec(x.type);
         const t = parseType(arr ? arr[1] : x.type);
         const loc = gl.getUniformLocation(program, x.glsl_name ?? x.name);
-        if (loc === null) continue;
+        if (loc === null) {
+          // A struct (an array of them): each leaf by its GLSL path.
+          for (const leaf of structLeaves(m, x)) {
+            const at = gl.getUniformLocation(program, (x.glsl_name ?? x.name) + leaf.name.slice(x.name.length));
+            const lt = parseType(leaf.type);
+            if (at !== null && lt) loose.push({ buffer: b.name, elements: [leaf], t: lt, loc: at });
+          }
+          continue;
+        }
         if (!t) throw new DrawError('plan', `the preview does not set the loose uniform \`${x.name} : ${x.type}\` on WebGL2 yet`);
         const elements = arr ? Array.from({ length: +arr[2] }, (_, k) => ({ ...x, type: arr[1], offset: x.offset + k * x.array_stride })) : [x];
         loose.push({ buffer: b.name, elements, t, loc });
@@ -476,7 +508,7 @@ class WebGL2Renderer {
         gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_COMPARE_FUNC, gl.LEQUAL);
         gl.bindTexture(gl.TEXTURE_2D, null);
       }
-      samplers.push({ name: s.name, unit: s.texture_unit, texture });
+      samplers.push({ name: s.name, unit: s.texture_unit, texture, kind: depth ? '2d' : plan.textures[s.name]?.kind ?? '2d' });
     }
     gl.useProgram(null);
     const vao = gl.createVertexArray();
@@ -637,20 +669,15 @@ class WebGL2Renderer {
     for (const s of l.samplers) {
       const img = textures[s.name];
       gl.activeTexture(gl.TEXTURE0 + s.unit);
-      gl.bindTexture(gl.TEXTURE_2D, s.texture);
+      gl.bindTexture(glTarget(gl, s.kind), s.texture);
       if (img && l.textureOf.get(s.name) !== img) {
-        gl.texImage2D(gl.TEXTURE_2D, 0, gl.RGBA8, img.width, img.height, 0, gl.RGBA, gl.UNSIGNED_BYTE, img.data);
-        const filter = img.filter === 'nearest' ? gl.NEAREST : gl.LINEAR;
-        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MIN_FILTER, filter);
-        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_MAG_FILTER, filter);
-        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_S, gl.REPEAT);
-        gl.texParameteri(gl.TEXTURE_2D, gl.TEXTURE_WRAP_T, gl.REPEAT);
+        glUpload(gl, s.texture, { ...img, kind: s.kind });
         l.textureOf.set(s.name, img);
       }
     }
     gl.activeTexture(gl.TEXTURE0);
     gl.bindVertexArray(l.vao);
-    gl.drawArraysInstanced(gl.TRIANGLES, 0, plan.count, plan.instances);
+    gl.drawArraysInstanced(plan.points ? gl.POINTS : gl.TRIANGLES, 0, plan.count, plan.instances);
     gl.bindVertexArray(null);
     gl.useProgram(null);
     if (depthView) {
@@ -803,9 +830,10 @@ class WebGPURenderer {
         group(s.group).push({ layout: { binding: s.texture_binding, visibility: vis, texture: { sampleType: 'depth', viewDimension: '2d' } }, texture: entry });
         group(s.group).push({ layout: { binding: s.sampler_binding, visibility: vis, sampler: { type: 'comparison' } }, sampler: entry });
       } else {
-        const texture = device.createTexture({ size: [1, 1], format: 'rgba8unorm', usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST });
-        entry = { name: s.name, texture, sampler: this.sampler('linear'), image: null };
-        group(s.group).push({ layout: { binding: s.texture_binding, visibility: vis, texture: { sampleType: 'float', viewDimension: '2d' } }, texture: entry });
+        const kind = plan.textures[s.name]?.kind ?? '2d';
+        const made = gpuTexture(device, null, kind);
+        entry = { name: s.name, texture: made.texture, view: made.view, kind, sampler: this.sampler('linear', kind), image: null };
+        group(s.group).push({ layout: { binding: s.texture_binding, visibility: vis, texture: { sampleType: 'float', viewDimension: viewDimension(kind) } }, texture: entry });
         group(s.group).push({ layout: { binding: s.sampler_binding, visibility: vis, sampler: { type: 'filtering' } }, sampler: entry });
       }
       samplers.push(entry);
@@ -830,7 +858,7 @@ class WebGPURenderer {
       vertex: { module, entryPoint: plan.vertex ? plan.vertex.name : 'umbrac_preview_vs', buffers: vertexBuffers },
       fragment: { module, entryPoint: plan.fragment.name, targets: colourTargets(plan) },
       // umbrac's portable WGSL flips y, so GL's counter-clockwise fronts arrive clockwise.
-      primitive: { topology: 'triangle-list', frontFace: 'cw', cullMode: plan.cull ?? 'none' },
+      primitive: { topology: plan.points ? 'point-list' : 'triangle-list', frontFace: 'cw', cullMode: plan.cull ?? 'none' },
       depthStencil: plan.depth ? { format: 'depth24plus', depthWriteEnabled: true, depthCompare: 'less' } : undefined,
     });
     const err = await device.popErrorScope();
@@ -853,16 +881,18 @@ class WebGPURenderer {
     this.loaded = null;
   }
 
-  sampler(filter) {
+  sampler(filter, kind = '2d') {
     const f = filter === 'nearest' ? 'nearest' : 'linear';
-    return this.device.createSampler({ magFilter: f, minFilter: f, addressModeU: 'repeat', addressModeV: 'repeat' });
+    // 2D textures repeat; the other kinds clamp, as the native runner's.
+    const a = kind === '2d' ? 'repeat' : 'clamp-to-edge';
+    return this.device.createSampler({ magFilter: f, minFilter: f, addressModeU: a, addressModeV: a, addressModeW: a });
   }
 
   bindGroups() {
     const l = this.loaded;
     return l.layouts.map((layout, g) => this.device.createBindGroup({
       layout,
-      entries: (l.groups[g] ?? []).map((e) => ({ binding: e.layout.binding, resource: e.texture ? e.texture.texture.createView() : e.sampler ? e.sampler.sampler : e.resource })),
+      entries: (l.groups[g] ?? []).map((e) => ({ binding: e.layout.binding, resource: e.texture ? (e.texture.view ? e.texture.view() : e.texture.texture.createView()) : e.sampler ? e.sampler.sampler : e.resource })),
     }));
   }
 
@@ -893,9 +923,9 @@ class WebGPURenderer {
       const img = textures[s.name];
       if (!img || s.fixed || s.image === img) continue;
       s.texture.destroy();
-      s.texture = device.createTexture({ size: [img.width, img.height], format: 'rgba8unorm', usage: GPUTextureUsage.TEXTURE_BINDING | GPUTextureUsage.COPY_DST });
-      device.queue.writeTexture({ texture: s.texture }, img.data, { bytesPerRow: img.width * 4 }, [img.width, img.height]);
-      s.sampler = this.sampler(img.filter);
+      const made = gpuTexture(device, { ...img, kind: s.kind ?? '2d' });
+      [s.texture, s.view] = [made.texture, made.view];
+      s.sampler = this.sampler(img.filter, s.kind);
       s.image = img;
       rebind = true;
     }
@@ -1002,7 +1032,7 @@ export async function draw(bundle, canvas, { api = 'webgl2', inputs = null } = {
   const plan = planOf(bundle);
   await r.load(bundle, plan);
   const textures = {};
-  for (const [s, t] of Object.entries(plan.textures)) textures[s] = { ...pattern(t.pattern, t.size[0], t.size[1]), filter: t.filter };
+  for (const [s, t] of Object.entries(plan.textures)) textures[s] = { ...texels(t.pattern, t), filter: t.filter };
   const given = inputs ?? { buffers: uniformBuffers(bundle.manifest), textures };
   r.frame(given);
   return r;

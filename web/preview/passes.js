@@ -95,6 +95,7 @@ export function passesPlan(m, scene) {
     checkValues(p.values, `pass \`${p.name}\``);
     const draws = p.draws.map((d, i) => {
       checkValues(d.values, `draw ${i + 1} of pass \`${p.name}\``);
+      if (d.primitive === 'points') throw new DrawError('plan', `draw ${i + 1} of pass \`${p.name}\` is of points, which the preview draws in scenes of one pass and one draw only`);
       return { ...drawGeometry(vertex, d), values: d.values ?? {} };
     });
     if (fragment && p.color) {

@@ -92,18 +92,26 @@ pub fn program(r: &Reflection, fit: &PassFit) -> GlProgram {
             let block = &r.uniform_buffers[b];
             let glsl_name = block.glsl_block.clone()?;
             let point = block.glsl_binding.unwrap_or(b as u32);
-            Some(GlBlock { glsl_name, point, layout: super::manifest_layout(block) })
+            Some(GlBlock { glsl_name, point, layout: super::manifest_layout(r, block) })
         })
         .collect();
-    let uniforms = fit
-        .uniforms
-        .iter()
-        .filter_map(|&u| {
-            let u = &r.uniforms[u];
-            let default = u.default.as_ref().and_then(|w| Value::from_words(&u.ty, w));
-            Some(GlUniform { glsl_name: u.glsl_name.clone()?, value: u.name.clone(), ty: u.ty.clone(), default })
-        })
-        .collect();
+    let mut uniforms = Vec::new();
+    for &u in &fit.uniforms {
+        let u = &r.uniforms[u];
+        let Some(glsl_name) = u.glsl_name.clone() else { continue };
+        let default = u.default.as_ref().and_then(|w| Value::from_words(&u.ty, w));
+        let leaves = super::leaves(r, &u.name, &u.ty);
+        if leaves.len() == 1 && leaves[0].path == u.name {
+            uniforms.push(GlUniform { glsl_name, value: u.name.clone(), ty: u.ty.clone(), default });
+            continue;
+        }
+        // A struct uniform is set member by member, by its GLSL path
+        // (`u_instances[3].color`: members keep their names in GLSL).
+        for l in leaves {
+            let suffix = &l.path[u.name.len()..];
+            uniforms.push(GlUniform { glsl_name: format!("{glsl_name}{suffix}"), value: l.path.clone(), ty: l.ty, default: None });
+        }
+    }
     let outputs = fit.outputs.iter().filter(|(_, _, declared)| !declared).map(|(name, location, _)| (name.clone(), *location)).collect();
     let samplers = fit
         .samplers

@@ -20,6 +20,7 @@ pub mod wgpu;
 use std::collections::BTreeMap;
 
 use crate::emit::reflect_types::{EntryPoint, Reflection, UniformBuffer};
+pub use crate::scene::infer::{leaves, leaves_at, Leaf};
 
 use super::plan::{Field, FramePlan, Geometry, Pass};
 
@@ -120,19 +121,26 @@ pub fn value_names(b: &UniformBuffer) -> Vec<String> {
 /// member stored as another type (`bool` as `uint`, `float[9]` as
 /// `float4[9]`, `float3x2` as `float4` columns) is written as its own type
 /// at the strides the manifest states for the stored one.
-pub fn manifest_layout(b: &UniformBuffer) -> bytes::BufferLayout {
-    let slots = b
-        .members
-        .iter()
-        .map(|m| bytes::Slot {
-            value: m.name.clone(),
-            ty: m.ty.clone(),
-            offset: m.offset,
-            array_stride: m.array_stride,
-            matrix_stride: m.matrix_stride,
-            default: m.default.clone(),
-        })
-        .collect();
+pub fn manifest_layout(r: &Reflection, b: &UniformBuffer) -> bytes::BufferLayout {
+    let mut slots = Vec::new();
+    for m in &b.members {
+        let leaves = leaves_at(r, &m.name, &m.ty, m.array_stride, m.matrix_stride);
+        if leaves.len() == 1 && leaves[0].path == m.name {
+            slots.push(bytes::Slot {
+                value: m.name.clone(),
+                ty: m.ty.clone(),
+                offset: m.offset,
+                array_stride: m.array_stride,
+                matrix_stride: m.matrix_stride,
+                default: m.default.clone(),
+            });
+            continue;
+        }
+        // A struct (or an array of them): one slot per leaf, by its path.
+        for l in leaves {
+            slots.push(bytes::Slot { value: l.path, ty: l.ty, offset: m.offset + l.offset, array_stride: l.array_stride, matrix_stride: l.matrix_stride, default: None });
+        }
+    }
     bytes::BufferLayout { name: b.name.clone(), size: b.size, slots }
 }
 
@@ -185,7 +193,7 @@ pub fn fit(program: &str, r: &Reflection, plan: &FramePlan) -> Result<Fit, Inter
         for draw in &pass.draws {
             let known = pass.value_names(draw);
             for &(b, _) in &pf.blocks {
-                if let Err(e) = bytes::fill(&manifest_layout(&r.uniform_buffers[b]), |n| pass.value(draw, n), &known, plan.unset) {
+                if let Err(e) = bytes::fill(&manifest_layout(r, &r.uniform_buffers[b]), |n| pass.value(draw, n), &known, plan.unset) {
                     problems.extend(e);
                 }
             }
@@ -314,8 +322,8 @@ fn fit_pass(r: &Reflection, plan: &FramePlan, pass: &Pass, problems: &mut Vec<St
             };
             let t = &pass.textures[texture];
             let target = plan.target(t.target);
-            if s.dimension != "2d" {
-                problems.push(format!("sampler `{}` is a {}, but the scene's textures are 2D", s.name, s.ty));
+            if s.dimension != target.dim.name() {
+                problems.push(format!("sampler `{}` is a {}, but the scene's `{}` is a {} texture", s.name, s.ty, target.name, target.dim.name()));
             }
             if s.comparison != t.sampling.compare {
                 problems.push(format!(

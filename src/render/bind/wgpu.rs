@@ -19,11 +19,32 @@ pub enum Resource {
     /// A sampler's texture: the pass's `textures[i]`, or (`None`) a 1x1
     /// stand-in where a pass binds what it does not read (SPIR-V
     /// passthrough layouts). `depth`: a depth sample type; else floats,
-    /// `filterable` when the plan filters them linearly.
-    Texture { texture: Option<usize>, depth: bool, filterable: bool },
+    /// `filterable` when the plan filters them linearly; `dim`: the
+    /// sampler's dimension.
+    Texture { texture: Option<usize>, depth: bool, filterable: bool, dim: ViewDim },
     /// A sampler's sampler state: of the pass's `textures[i]`, or a
     /// stand-in; `comparison`: a comparison sampler; `filtering`: linear.
     Sampler { texture: Option<usize>, comparison: bool, filtering: bool },
+}
+
+/// A texture binding's view dimension (the manifest's sampler `dimension`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum ViewDim {
+    D2,
+    Cube,
+    D3,
+    D2Array,
+}
+
+impl ViewDim {
+    pub fn of(dimension: &str) -> ViewDim {
+        match dimension {
+            "cube" => ViewDim::Cube,
+            "3d" => ViewDim::D3,
+            "2d-array" => ViewDim::D2Array,
+            _ => ViewDim::D2,
+        }
+    }
 }
 
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -64,7 +85,7 @@ pub fn groups(r: &Reflection, pass: &Pass, fit: &PassFit, passthrough: bool) -> 
     for s in &fit.samplers {
         let m = &r.samplers[s.sampler];
         let linear = !m.comparison && pass.textures[s.texture].sampling.linear;
-        let texture = Resource::Texture { texture: Some(s.texture), depth: m.comparison, filterable: linear };
+        let texture = Resource::Texture { texture: Some(s.texture), depth: m.comparison, filterable: linear, dim: ViewDim::of(&m.dimension) };
         let sampler = Resource::Sampler { texture: Some(s.texture), comparison: m.comparison, filtering: linear };
         add(m.group, m.texture_binding, s.stages, texture, format!("texture of `{}`", m.name), &mut problems);
         add(m.group, m.sampler_binding, s.stages, sampler, format!("sampler of `{}`", m.name), &mut problems);
@@ -80,7 +101,7 @@ pub fn groups(r: &Reflection, pass: &Pass, fit: &PassFit, passthrough: bool) -> 
         for m in &r.samplers {
             let list = groups.entry(m.group).or_default();
             if !list.iter().any(|e| e.binding == m.texture_binding) {
-                list.push(Entry { binding: m.texture_binding, stages: both, resource: Resource::Texture { texture: None, depth: m.comparison, filterable: false } });
+                list.push(Entry { binding: m.texture_binding, stages: both, resource: Resource::Texture { texture: None, depth: m.comparison, filterable: false, dim: ViewDim::of(&m.dimension) } });
             }
             if !list.iter().any(|e| e.binding == m.sampler_binding) {
                 list.push(Entry { binding: m.sampler_binding, stages: both, resource: Resource::Sampler { texture: None, comparison: m.comparison, filtering: false } });
@@ -111,6 +132,6 @@ pub fn groups(r: &Reflection, pass: &Pass, fit: &PassFit, passthrough: bool) -> 
 /// The bytes of uniform block `block` for one draw of `pass`, at the
 /// manifest's offsets (the WGSL uniform layout).
 pub fn buffer_bytes(r: &Reflection, block: usize, pass: &Pass, draw: &Draw, unset: Unset) -> Result<Vec<u8>, String> {
-    let layout = super::manifest_layout(&r.uniform_buffers[block]);
+    let layout = super::manifest_layout(r, &r.uniform_buffers[block]);
     bytes::fill(&layout, |n| pass.value(draw, n), &pass.value_names(draw), unset).map_err(|e| e.join("; "))
 }

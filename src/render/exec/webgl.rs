@@ -211,7 +211,7 @@ fn page_error(result: &Value) -> ExecError {
 fn mesh_json(m: &Mesh) -> Value {
     let floats: Vec<f32> = bytemuck::cast_slice(&m.vertices).to_vec();
     let instances = m.instances.map(|i| json!({ "base": i.base, "stride": i.stride, "count": i.count }));
-    json!({ "vertices": floats, "indices": m.indices, "stride": m.stride, "instances": instances })
+    json!({ "vertices": floats, "indices": m.indices, "stride": m.stride, "instances": instances, "points": m.points })
 }
 
 /// The plan as the page runs it, with everything bound resolved from the
@@ -288,7 +288,7 @@ pub fn plan_json(set: &ShaderSet, plan: &FramePlan) -> Result<(Value, Vec<(Strin
     let targets: Vec<Value> = plan
         .targets
         .iter()
-        .map(|t| json!({ "name": t.name, "width": t.width, "height": t.height, "format": t.format.name(), "contents": t.contents }))
+        .map(|t| json!({ "name": t.name, "width": t.width, "height": t.height, "format": t.format.name(), "contents": t.contents, "dim": t.dim.name(), "layers": t.dim.layers() }))
         .collect();
     let doc = json!({
         "scene": plan.scene,

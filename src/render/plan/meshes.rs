@@ -116,18 +116,45 @@ pub struct Input {
 /// `kind` laid out for `inputs` (per-instance ones from `grid`). `None`
 /// for `MeshKind::None`, which has no vertices.
 pub fn mesh(kind: MeshKind, inputs: &[Input], grid: Option<&InstanceGrid>) -> Option<&'static Mesh> {
+    mesh_of(kind, inputs, grid, false, false)
+}
+
+/// [`mesh`], with `unrolled`: every triangle's three vertices its own, in
+/// index order (the indices 0, 1, 2, ...), so that `gl_VertexID % 3` is
+/// the corner, as a non-indexed triangle list (the page's) gives it; with
+/// `points`, a point list: each vertex once (indices 0, 1, 2, ...).
+pub fn mesh_of(kind: MeshKind, inputs: &[Input], grid: Option<&InstanceGrid>, unrolled: bool, points: bool) -> Option<&'static Mesh> {
     static CACHE: LazyLock<Mutex<HashMap<String, &'static Mesh>>> = LazyLock::new(Default::default);
-    let key = format!("{kind:?}|{inputs:?}|{grid:?}");
+    let key = format!("{kind:?}|{inputs:?}|{grid:?}|{unrolled}|{points}");
     if let Some(m) = CACHE.lock().unwrap_or_else(|e| e.into_inner()).get(&key) {
         return Some(m);
     }
     let mut cache = CACHE.lock().unwrap_or_else(|e| e.into_inner());
-    let mut mesh = build(geometry(kind)?, kind, inputs, grid);
+    let g = geometry(kind)?;
+    let g = if unrolled { unroll(g) } else { g };
+    let vertices = g.positions.len() as u32;
+    let mut mesh = build(g, kind, inputs, grid);
+    if points {
+        mesh.indices = (0..vertices).collect();
+        mesh.points = true;
+    }
     // Executors may key uploads by name: one name per layout.
     mesh.name = leak(&format!("{} #{}", kind.name(), cache.len()));
     let built: &'static Mesh = Box::leak(Box::new(mesh));
     cache.insert(key, built);
     Some(built)
+}
+
+/// Each index's vertex copied out, the indices counting up.
+fn unroll(g: Geometry) -> Geometry {
+    let pick = |v: &[[f32; 3]]| g.indices.iter().map(|&i| v[i as usize]).collect::<Vec<_>>();
+    Geometry {
+        positions: pick(&g.positions),
+        normals: pick(&g.normals),
+        tangents: pick(&g.tangents),
+        uvs: g.indices.iter().map(|&i| g.uvs[i as usize]).collect(),
+        indices: (0..g.indices.len() as u32).collect(),
+    }
 }
 
 fn leak(s: &str) -> &'static str {
@@ -187,6 +214,7 @@ fn build(g: Geometry, kind: MeshKind, inputs: &[Input], grid: Option<&InstanceGr
         indices: g.indices,
         position,
         instances,
+        points: false,
     }
 }
 

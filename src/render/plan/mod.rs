@@ -61,9 +61,47 @@ pub struct Target {
     pub width: u32,
     pub height: u32,
     pub format: Format,
-    /// Texels it starts with (`Rgba8` rows, top row first): a texture the
-    /// host uploads, such as the stand-in images of [`vk_shadow`].
+    /// Texels it starts with (`Rgba8` rows, top row first; layers one
+    /// after another): a texture the host uploads, such as the stand-in
+    /// images of [`vk_shadow`].
     pub contents: Option<Vec<u8>>,
+    /// What a sampler sees of it; only an uploaded `Rgba8` texture is
+    /// other than [`Dim::D2`].
+    pub dim: Dim,
+}
+
+/// A texture's kind (a sampler's `dimension`), with its layer count.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Dim {
+    #[default]
+    D2,
+    /// Six square faces: +x, -x, +y, -y, +z, -z.
+    Cube,
+    /// This many slices.
+    D3(u32),
+    /// This many layers.
+    D2Array(u32),
+}
+
+impl Dim {
+    /// Layers (faces, slices) its contents hold.
+    pub fn layers(self) -> u32 {
+        match self {
+            Dim::D2 => 1,
+            Dim::Cube => 6,
+            Dim::D3(n) | Dim::D2Array(n) => n,
+        }
+    }
+
+    /// The manifest's name of a sampler's dimension.
+    pub fn name(self) -> &'static str {
+        match self {
+            Dim::D2 => "2d",
+            Dim::Cube => "cube",
+            Dim::D3(_) => "3d",
+            Dim::D2Array(_) => "2d-array",
+        }
+    }
 }
 
 /// Which faces are culled.
@@ -180,6 +218,8 @@ pub struct Mesh {
     pub position: &'static str,
     /// Drawn instanced, with these per-instance records (none: once).
     pub instances: Option<Instances>,
+    /// Its indices drawn as a point list (each vertex once), not triangles.
+    pub points: bool,
 }
 
 impl Mesh {
@@ -288,14 +328,20 @@ impl FramePlan {
 
     /// Adds a target and returns its id.
     pub fn add_target(&mut self, name: &str, width: u32, height: u32, format: Format) -> TargetId {
-        self.targets.push(Target { name: name.to_string(), width, height, format, contents: None });
+        self.targets.push(Target { name: name.to_string(), width, height, format, contents: None, dim: Dim::D2 });
         TargetId(self.targets.len() - 1)
     }
 
     /// Adds an `Rgba8` texture holding `texels` (top row first).
     pub fn add_texture(&mut self, name: &str, width: u32, height: u32, texels: Vec<u8>) -> TargetId {
-        debug_assert_eq!(texels.len(), (width * height * 4) as usize);
-        self.targets.push(Target { name: name.to_string(), width, height, format: Format::Rgba8, contents: Some(texels) });
+        self.add_layered(name, width, height, Dim::D2, texels)
+    }
+
+    /// Adds an `Rgba8` texture of kind `dim` holding `texels` (its layers
+    /// one after another, each top row first).
+    pub fn add_layered(&mut self, name: &str, width: u32, height: u32, dim: Dim, texels: Vec<u8>) -> TargetId {
+        debug_assert_eq!(texels.len(), (width * height * dim.layers() * 4) as usize);
+        self.targets.push(Target { name: name.to_string(), width, height, format: Format::Rgba8, contents: Some(texels), dim });
         TargetId(self.targets.len() - 1)
     }
 
@@ -320,6 +366,9 @@ impl FramePlan {
             }
             if p.color.is_none() && p.depth.is_none() {
                 return Err(format!("pass `{}` has no attachment", p.name));
+            }
+            if let Some(t) = [p.color.map(|a| a.target), p.depth.map(|a| a.target)].into_iter().flatten().map(|t| self.target(t)).find(|t| t.dim != Dim::D2) {
+                return Err(format!("pass `{}` draws into the {} texture `{}`: passes draw into 2D targets only", p.name, t.dim.name(), t.name));
             }
         }
         Ok(())

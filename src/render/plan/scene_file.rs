@@ -10,17 +10,17 @@ use std::path::Path;
 use glam::{Mat3, Mat4, Quat, Vec3};
 
 use super::meshes::{self, Input};
-use super::{Attachment, Cull, Draw, Format, FramePlan, Geometry, Pass, Sampling, TargetId, TextureInput, Unset, Value, Values};
+use super::{Attachment, Cull, Dim, Draw, Format, FramePlan, Geometry, Pass, Sampling, TargetId, TextureInput, Unset, Value, Values};
 use crate::emit::reflect_types::Reflection;
-use crate::scene::{self, Convention, Light, LightKind, MeshKind, OrbitCamera, Scene, TargetFormat, Transform, ValueSpec, SCREEN};
+use crate::scene::{self, Convention, Light, LightKind, MeshKind, OrbitCamera, Scene, TargetFormat, TextureKind, Transform, ValueSpec, SCREEN};
 
 /// A scene ready to be planned each frame for one program.
 #[derive(Clone, Debug)]
 pub struct ScenePlanner {
     pub scene: Scene,
     reflection: Reflection,
-    /// Each texture's size and texels, in `scene.textures`' order.
-    textures: Vec<(u32, u32, Vec<u8>)>,
+    /// Each texture's size, kind and texels, in `scene.textures`' order.
+    textures: Vec<(u32, u32, Dim, Vec<u8>)>,
     /// Names the scene in messages.
     pub label: String,
 }
@@ -43,11 +43,20 @@ impl ScenePlanner {
         let mut textures = Vec::new();
         for t in &scene.textures {
             textures.push(match (&t.pattern, &t.image) {
-                (Some(p), _) => (t.size[0], t.size[1], p.texels(t.size[0], t.size[1])),
+                (Some(p), _) => {
+                    let (texels, layers) = t.pattern_texels(*p);
+                    let dim = match t.kind {
+                        TextureKind::D2 => Dim::D2,
+                        TextureKind::Cube => Dim::Cube,
+                        TextureKind::D3 => Dim::D3(layers),
+                        TextureKind::D2Array => Dim::D2Array(layers),
+                    };
+                    (t.size[0], t.size[1], dim, texels)
+                }
                 (None, Some(file)) => {
                     let path = base.map_or_else(|| Path::new(file).to_path_buf(), |b| b.join(file));
                     let img = image::open(&path).map_err(|e| format!("{label}: texture `{}`: {}: {e}", t.name, path.display()))?.to_rgba8();
-                    (img.width(), img.height(), img.into_raw())
+                    (img.width(), img.height(), Dim::D2, img.into_raw())
                 }
                 (None, None) => unreachable!("checked: a texture has a pattern or an image"),
             });
@@ -70,8 +79,8 @@ impl ScenePlanner {
             unset: Unset::Zero,
         };
         let mut ids: Vec<(&str, TargetId)> = vec![(SCREEN, plan.add_target(SCREEN, f.width, f.height, Format::Rgba8))];
-        for (t, (w, h, texels)) in s.textures.iter().zip(&self.textures) {
-            ids.push((&t.name, plan.add_texture(&t.name, *w, *h, texels.clone())));
+        for (t, (w, h, dim, texels)) in s.textures.iter().zip(&self.textures) {
+            ids.push((&t.name, plan.add_layered(&t.name, *w, *h, *dim, texels.clone())));
         }
         for t in &s.targets {
             let [w, h] = t.size.unwrap_or([f.width, f.height]);
@@ -96,6 +105,10 @@ impl ScenePlanner {
                     return Err(format!("{label}: pass `{}` binds sampler `{sampler}`, which the program does not declare", p.name));
                 };
                 let linear = input.filter == scene::Filter::Linear;
+                let dim = plan.target(id(&input.texture)).dim;
+                if dim.name() != decl.dimension {
+                    return Err(format!("{label}: pass `{}`: sampler `{sampler}` is a {} and reads `{}`, a {} texture", p.name, decl.ty, input.texture, dim.name()));
+                }
                 // A texture (pattern or image) repeats, as on the page; a target clamps.
                 let repeat = s.textures.iter().any(|t| t.name == input.texture);
                 textures.push(TextureInput { sampler: sampler.clone(), target: id(&input.texture), sampling: Sampling { compare: decl.comparison, linear, border: false, repeat } });
@@ -178,24 +191,34 @@ impl ScenePlanner {
             };
             inputs.push(Input { name: i.name.clone(), attribute: *attribute, components });
         }
-        Ok(Geometry::Mesh(meshes::mesh(d.mesh, &inputs, d.instances.as_ref()).expect("a mesh other than `none`")))
+        // A program reading gl_VertexID over a mesh (a corner's barycentric
+        // from `gl_VertexID % 3`) gets each triangle's vertices its own.
+        let unrolled = vs.builtins.iter().any(|b| b == "gl_VertexID" || b == "gl_VertexIndex");
+        Ok(Geometry::Mesh(meshes::mesh_of(d.mesh, &inputs, d.instances.as_ref(), unrolled, d.primitive == scene::Primitive::Points).expect("a mesh other than `none`")))
     }
 
-    /// The DSL type of a uniform or uniform block member named `name`.
-    fn type_of(&self, name: &str) -> Option<&str> {
+    /// The DSL type of a uniform or uniform block member named `name`, or
+    /// of a leaf of a struct one (`u_instances[3].color`).
+    fn type_of(&self, name: &str) -> Option<String> {
         let r = &self.reflection;
-        r.uniforms
+        let base = name.split(['[', '.']).next().unwrap_or(name);
+        let ty = r
+            .uniforms
             .iter()
-            .find(|u| u.name == name)
+            .find(|u| u.name == base)
             .map(|u| u.ty.as_str())
-            .or_else(|| r.uniform_buffers.iter().flat_map(|b| &b.members).find(|m| m.name == name).map(|m| m.ty.as_str()))
+            .or_else(|| r.uniform_buffers.iter().flat_map(|b| &b.members).find(|m| m.name == base).map(|m| m.ty.as_str()))?;
+        if base == name {
+            return Some(ty.to_string());
+        }
+        crate::scene::infer::leaves(r, base, ty).into_iter().find(|l| l.path == name).map(|l| l.ty)
     }
 
     fn value(&self, name: &str, spec: &ValueSpec, transform: Option<&Transform>, f: &FrameInputs) -> Result<Value, String> {
         let ty = self.type_of(name).ok_or_else(|| format!("{}: the scene sets `{name}`, which is no uniform of the program", self.label))?;
         let light = self.scene.light.clone().unwrap_or_default();
         let cx = Context { camera: &self.scene.camera, light: &light, transform };
-        value_in(ty, spec, &cx, f).map_err(|e| format!("{}: `{name}` ({ty}): {e}", self.label))
+        value_in(&ty, spec, &cx, f).map_err(|e| format!("{}: `{name}` ({ty}): {e}", self.label))
     }
 }
 

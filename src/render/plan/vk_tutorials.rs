@@ -109,6 +109,7 @@ pub fn uv_cube() -> &'static Mesh {
             indices,
             position: "a_pos",
             instances: None,
+            points: false,
         }
     });
     &CUBE
@@ -245,6 +246,7 @@ pub fn instanced_cubes() -> &'static Mesh {
             indices: cube.indices.clone(),
             position: "a_pos",
             instances: Some(super::Instances { base, stride: 28, count: GRID * GRID }),
+            points: false,
         }
     });
     &MESH

@@ -12,7 +12,7 @@ use image::RgbaImage;
 
 use crate::render::bind::{self, gl::UniformCall};
 use crate::render::consumer::Consumer;
-use crate::render::plan::{Cull, Format, FramePlan, Geometry, Sampling, TargetId, Value};
+use crate::render::plan::{Cull, Dim, Format, FramePlan, Geometry, Sampling, TargetId, Value};
 
 use super::objects::Obj;
 use super::{ExecError, GlExecutor, GlPrepared, Readback};
@@ -38,6 +38,12 @@ impl GlExecutor {
         // SAFETY: state calls on the current context.
         unsafe {
             gl.disable(glow::BLEND);
+            // As GLES, WebGL2 and Vulkan always are: cube maps filter across faces.
+            if matches!(self.consumer, Consumer::Gl330 | Consumer::Gl430) {
+                gl.enable(glow::TEXTURE_CUBE_MAP_SEAMLESS);
+                // A point's size is its gl_PointSize (always so on ES).
+                gl.enable(glow::PROGRAM_POINT_SIZE);
+            }
             gl.front_face(if top_first { glow::CW } else { glow::CCW });
             gl.depth_func(glow::LESS);
             gl.depth_mask(true);
@@ -59,31 +65,34 @@ impl GlExecutor {
         let mut textures = Vec::new();
         for t in &plan.targets {
             let (internal, format, ty, _) = texel_format(t.format);
+            let target = gl_target(t.dim);
             // SAFETY: texture storage on the current context.
             unsafe {
                 let tex = Obj::new(&self.ctx, gl.create_texture().map_err(ExecError::Api)?);
-                gl.bind_texture(glow::TEXTURE_2D, Some(tex.raw()));
+                gl.bind_texture(target, Some(tex.raw()));
                 gl.pixel_store_i32(glow::UNPACK_ALIGNMENT, 1);
-                gl.tex_image_2d(
-                    glow::TEXTURE_2D,
-                    0,
-                    internal as i32,
-                    t.width as i32,
-                    t.height as i32,
-                    0,
-                    format,
-                    ty,
-                    glow::PixelUnpackData::Slice(t.contents.as_deref()),
-                );
+                let (w, h) = (t.width as i32, t.height as i32);
+                match t.dim {
+                    Dim::D2 => gl.tex_image_2d(target, 0, internal as i32, w, h, 0, format, ty, glow::PixelUnpackData::Slice(t.contents.as_deref())),
+                    Dim::Cube => {
+                        let face = (t.width * t.height * 4) as usize;
+                        for f in 0..6 {
+                            let data = t.contents.as_deref().map(|c| &c[f * face..(f + 1) * face]);
+                            gl.tex_image_2d(glow::TEXTURE_CUBE_MAP_POSITIVE_X + f as u32, 0, internal as i32, w, h, 0, format, ty, glow::PixelUnpackData::Slice(data));
+                        }
+                    }
+                    Dim::D3(n) | Dim::D2Array(n) => {
+                        gl.tex_image_3d(target, 0, internal as i32, w, h, n as i32, 0, format, ty, glow::PixelUnpackData::Slice(t.contents.as_deref()))
+                    }
+                }
                 // One level: complete without a sampler object too.
-                gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MIN_FILTER, glow::NEAREST as i32);
-                gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAG_FILTER, glow::NEAREST as i32);
-                gl.tex_parameter_i32(glow::TEXTURE_2D, glow::TEXTURE_MAX_LEVEL, 0);
+                gl.tex_parameter_i32(target, glow::TEXTURE_MIN_FILTER, glow::NEAREST as i32);
+                gl.tex_parameter_i32(target, glow::TEXTURE_MAG_FILTER, glow::NEAREST as i32);
+                gl.tex_parameter_i32(target, glow::TEXTURE_MAX_LEVEL, 0);
+                gl.bind_texture(target, None);
                 textures.push(tex);
             }
         }
-        // SAFETY: unbinding on the current context.
-        unsafe { gl.bind_texture(glow::TEXTURE_2D, None) };
         Ok(textures)
     }
 
@@ -161,7 +170,8 @@ impl GlExecutor {
             gl.use_program(Some(linked.program.raw()));
             for (&(unit, t), sampler) in units.iter().zip(&samplers) {
                 gl.active_texture(glow::TEXTURE0 + unit);
-                gl.bind_texture(glow::TEXTURE_2D, Some(textures[pass.textures[t].target.0].raw()));
+                let target = pass.textures[t].target;
+                gl.bind_texture(gl_target(plan.target(target).dim), Some(textures[target.0].raw()));
                 gl.bind_sampler(unit, Some(sampler.raw()));
             }
             gl.active_texture(glow::TEXTURE0);
@@ -188,10 +198,11 @@ impl GlExecutor {
                         Geometry::Vertices(n) => (None, n as i32),
                     };
                     gl.bind_vertex_array(Some(self.vao(&linked, mesh)?));
+                    let mode = if mesh.is_some_and(|m| m.points) { glow::POINTS } else { glow::TRIANGLES };
                     if let Some(i) = mesh.and_then(|m| m.instances) {
-                        gl.draw_elements_instanced(glow::TRIANGLES, count, glow::UNSIGNED_INT, 0, i.count as i32);
+                        gl.draw_elements_instanced(mode, count, glow::UNSIGNED_INT, 0, i.count as i32);
                     } else if mesh.is_some() {
-                        gl.draw_elements(glow::TRIANGLES, count, glow::UNSIGNED_INT, 0);
+                        gl.draw_elements(mode, count, glow::UNSIGNED_INT, 0);
                     } else {
                         gl.draw_arrays(glow::TRIANGLES, 0, count);
                     }
@@ -201,9 +212,9 @@ impl GlExecutor {
             };
             let result = draws();
             gl.bind_vertex_array(None);
-            for &(unit, _) in &units {
+            for &(unit, t) in &units {
                 gl.active_texture(glow::TEXTURE0 + unit);
-                gl.bind_texture(glow::TEXTURE_2D, None);
+                gl.bind_texture(gl_target(plan.target(pass.textures[t].target).dim), None);
                 gl.bind_sampler(unit, None);
             }
             gl.active_texture(glow::TEXTURE0);
@@ -263,6 +274,7 @@ impl GlExecutor {
             gl.sampler_parameter_i32(raw, glow::TEXTURE_MAG_FILTER, filter);
             gl.sampler_parameter_i32(raw, glow::TEXTURE_WRAP_S, wrap);
             gl.sampler_parameter_i32(raw, glow::TEXTURE_WRAP_T, wrap);
+            gl.sampler_parameter_i32(raw, glow::TEXTURE_WRAP_R, wrap);
             if border {
                 gl.sampler_parameter_f32_slice(raw, glow::TEXTURE_BORDER_COLOR, &[1.0; 4]);
             }
@@ -272,6 +284,16 @@ impl GlExecutor {
             }
             Ok(sampler)
         }
+    }
+}
+
+/// The GL texture target of a plan texture's kind.
+fn gl_target(dim: Dim) -> u32 {
+    match dim {
+        Dim::D2 => glow::TEXTURE_2D,
+        Dim::Cube => glow::TEXTURE_CUBE_MAP,
+        Dim::D3(_) => glow::TEXTURE_3D,
+        Dim::D2Array(_) => glow::TEXTURE_2D_ARRAY,
     }
 }
 

@@ -9,8 +9,8 @@ use std::sync::Arc;
 use image::RgbaImage;
 use wgpu::util::DeviceExt;
 
-use crate::render::bind::{self, wgpu::Resource, Fit};
-use crate::render::plan::{Format, FramePlan, Geometry, Sampling, Unset};
+use crate::render::bind::{self, wgpu::{Resource, ViewDim}, Fit};
+use crate::render::plan::{Dim, Format, FramePlan, Geometry, Sampling, Unset};
 
 use super::{texture_format, PipelineKey, WgpuExecutor, WgpuProgram};
 use crate::render::exec::{ExecError, Readback};
@@ -28,7 +28,11 @@ impl WgpuExecutor {
             return Err(ExecError::Unsupported("a depth24plus target cannot be read back (wgpu cannot copy it)".into()));
         }
         let textures = self.targets(plan);
-        let views: Vec<wgpu::TextureView> = textures.iter().map(|t| t.create_view(&Default::default())).collect();
+        let views: Vec<wgpu::TextureView> = textures
+            .iter()
+            .zip(&plan.targets)
+            .map(|(t, p)| t.create_view(&wgpu::TextureViewDescriptor { dimension: Some(view_dimension(ViewDim::of(p.dim.name()))), ..Default::default() }))
+            .collect();
         let keys = plan.passes.iter().zip(&fit.passes).map(|(pass, pf)| self.key(program, plan, pass, pf)).collect::<Result<Vec<_>, _>>()?;
         let uniforms = self.uniforms(program, plan, fit, &keys)?;
         let mut encoder = self.device.create_command_encoder(&Default::default());
@@ -45,7 +49,8 @@ impl WgpuExecutor {
             .iter()
             .enumerate()
             .map(|(i, t)| {
-                let mut usage = U::RENDER_ATTACHMENT;
+                // Only 2D targets are drawn into (checked by the plan).
+                let mut usage = if t.dim == Dim::D2 { U::RENDER_ATTACHMENT } else { U::empty() };
                 if plan.passes.iter().flat_map(|p| &p.textures).any(|x| x.target.0 == i) {
                     usage |= U::TEXTURE_BINDING;
                 }
@@ -55,19 +60,19 @@ impl WgpuExecutor {
                 if t.contents.is_some() {
                     usage |= U::COPY_DST;
                 }
-                let size = wgpu::Extent3d { width: t.width, height: t.height, depth_or_array_layers: 1 };
+                let size = wgpu::Extent3d { width: t.width, height: t.height, depth_or_array_layers: t.dim.layers() };
                 let texture = self.device.create_texture(&wgpu::TextureDescriptor {
                     label: Some(&t.name),
                     size,
                     mip_level_count: 1,
                     sample_count: 1,
-                    dimension: wgpu::TextureDimension::D2,
+                    dimension: if matches!(t.dim, Dim::D3(_)) { wgpu::TextureDimension::D3 } else { wgpu::TextureDimension::D2 },
                     format: texture_format(t.format),
                     usage,
                     view_formats: &[],
                 });
                 if let Some(texels) = &t.contents {
-                    let layout = wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(t.width * 4), rows_per_image: None };
+                    let layout = wgpu::TexelCopyBufferLayout { offset: 0, bytes_per_row: Some(t.width * 4), rows_per_image: Some(t.height) };
                     self.queue.write_texture(texture.as_image_copy(), texels, layout, size);
                 }
                 texture
@@ -101,21 +106,22 @@ impl WgpuExecutor {
         Ok(Uniforms { buffer, offsets })
     }
 
-    /// A 1x1 texture standing in for one a pass binds but does not read.
-    fn stand_in(&self, depth: bool) -> wgpu::TextureView {
+    /// A 1x1 texture (six faces for a cube) standing in for one a pass
+    /// binds but does not read.
+    fn stand_in(&self, depth: bool, dim: ViewDim) -> wgpu::TextureView {
         let format = if depth { wgpu::TextureFormat::Depth32Float } else { wgpu::TextureFormat::Rgba8Unorm };
         self.device
             .create_texture(&wgpu::TextureDescriptor {
                 label: Some("stand-in"),
-                size: wgpu::Extent3d { width: 1, height: 1, depth_or_array_layers: 1 },
+                size: wgpu::Extent3d { width: 1, height: 1, depth_or_array_layers: if dim == ViewDim::Cube { 6 } else { 1 } },
                 mip_level_count: 1,
                 sample_count: 1,
-                dimension: wgpu::TextureDimension::D2,
+                dimension: if dim == ViewDim::D3 { wgpu::TextureDimension::D3 } else { wgpu::TextureDimension::D2 },
                 format,
                 usage: wgpu::TextureUsages::TEXTURE_BINDING,
                 view_formats: &[],
             })
-            .create_view(&Default::default())
+            .create_view(&wgpu::TextureViewDescriptor { dimension: Some(view_dimension(dim)), ..Default::default() })
     }
 
     #[allow(clippy::too_many_arguments)]
@@ -134,8 +140,16 @@ impl WgpuExecutor {
         // A pass that draws nothing only clears: it needs no pipeline.
         let pipeline = if pass.draws.is_empty() { None } else { Some(self.pipeline(program, key, fit.mirrored_on_webgpu(), &pass.name)?) };
         let samplers: Vec<Arc<wgpu::Sampler>> = pass.textures.iter().map(|t| self.sampler(t.sampling)).collect();
-        let needs_stand_in = key.groups.values().flatten().any(|e| matches!(e.resource, Resource::Texture { texture: None, .. }));
-        let stand_ins = needs_stand_in.then(|| [self.stand_in(false), self.stand_in(true)]);
+        let stand_ins: HashMap<(bool, ViewDim), wgpu::TextureView> = key
+            .groups
+            .values()
+            .flatten()
+            .filter_map(|e| match e.resource {
+                Resource::Texture { texture: None, depth, dim, .. } => Some((depth, dim)),
+                _ => None,
+            })
+            .map(|k| (k, self.stand_in(k.0, k.1)))
+            .collect();
         let stand_in_samplers = [self.sampler(Sampling::NEAREST), self.sampler(Sampling::SHADOW)];
         let groups: Vec<Vec<(u32, wgpu::BindGroup)>> = (0..pass.draws.len())
             .map(|d| {
@@ -154,9 +168,7 @@ impl WgpuExecutor {
                                         size: NonZeroU64::new(size),
                                     }),
                                     Resource::Texture { texture: Some(t), .. } => wgpu::BindingResource::TextureView(&views[pass.textures[t].target.0]),
-                                    Resource::Texture { texture: None, depth, .. } => {
-                                        wgpu::BindingResource::TextureView(&stand_ins.as_ref().expect("made when needed")[depth as usize])
-                                    }
+                                    Resource::Texture { texture: None, depth, dim, .. } => wgpu::BindingResource::TextureView(&stand_ins[&(depth, dim)]),
                                     Resource::Sampler { texture: Some(t), .. } => wgpu::BindingResource::Sampler(&samplers[t]),
                                     Resource::Sampler { texture: None, comparison, .. } => wgpu::BindingResource::Sampler(&stand_in_samplers[comparison as usize]),
                                 },
@@ -263,5 +275,15 @@ impl WgpuExecutor {
             },
             _ => Readback::Depth { width: w, height: h, depths: bytemuck::cast_slice(&bytes).to_vec() },
         })
+    }
+}
+
+/// wgpu's view dimension of a texture binding.
+pub(super) fn view_dimension(dim: ViewDim) -> wgpu::TextureViewDimension {
+    match dim {
+        ViewDim::D2 => wgpu::TextureViewDimension::D2,
+        ViewDim::Cube => wgpu::TextureViewDimension::Cube,
+        ViewDim::D3 => wgpu::TextureViewDimension::D3,
+        ViewDim::D2Array => wgpu::TextureViewDimension::D2Array,
     }
 }

@@ -82,6 +82,8 @@ struct PipelineKey {
     stride: u32,
     /// The instance records' stride (0: not instanced).
     instance_stride: u32,
+    /// A point list (WebGPU's points are one pixel: no point size).
+    points: bool,
     groups: Groups,
 }
 
@@ -265,6 +267,7 @@ impl WgpuExecutor {
             attributes: fit.attributes.iter().map(|a| (a.location, a.field.offset, a.field.format, a.field.per_instance)).collect(),
             stride,
             instance_stride,
+            points: mesh.is_some_and(|m| m.points),
             groups,
         })
     }
@@ -301,9 +304,9 @@ impl WgpuExecutor {
                                 has_dynamic_offset: false,
                                 min_binding_size: NonZeroU64::new(size),
                             },
-                            Resource::Texture { depth, filterable, .. } => wgpu::BindingType::Texture {
+                            Resource::Texture { depth, filterable, dim, .. } => wgpu::BindingType::Texture {
                                 sample_type: if depth { wgpu::TextureSampleType::Depth } else { wgpu::TextureSampleType::Float { filterable } },
-                                view_dimension: wgpu::TextureViewDimension::D2,
+                                view_dimension: frame::view_dimension(dim),
                                 multisampled: false,
                             },
                             Resource::Sampler { comparison, filtering, .. } => wgpu::BindingType::Sampler(if comparison {
@@ -348,7 +351,7 @@ impl WgpuExecutor {
             layout: Some(&layout),
             vertex: wgpu::VertexState { module: module(&key.vertex), entry_point: Some(&key.vertex), compilation_options: Default::default(), buffers },
             primitive: wgpu::PrimitiveState {
-                topology: wgpu::PrimitiveTopology::TriangleList,
+                topology: if key.points { wgpu::PrimitiveTopology::PointList } else { wgpu::PrimitiveTopology::TriangleList },
                 // A mirrored y (portable GL-dialect code): GL's counter-clockwise fronts arrive clockwise.
                 front_face: if mirrored { wgpu::FrontFace::Cw } else { wgpu::FrontFace::Ccw },
                 cull_mode: match key.cull {
