@@ -2,7 +2,8 @@
 // "Scene files"), drawn as the native runner's scene plans are
 // (src/render/plan/scene_file.rs): the passes in order, each into the
 // screen or a target (cleared first; depth test LESS, writes, cleared to
-// 1), each draw with its own mesh, instance grid and values, samplers
+// 1), each draw with its own mesh, instance grid, values and transform
+// (its model conventions; the light's from the scene's `light`), samplers
 // reading patterns, image files (served by `umbrac preview` under
 // scene/NAME) or targets drawn earlier. The target `output` names is
 // shown; `view = 'depth'` shows the depth target of the last pass into it.
