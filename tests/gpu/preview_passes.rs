@@ -123,6 +123,9 @@ fn the_shadow_scene_file_draws_shadowed_on_both_apis() {
 /// 8/255: measured none, worst 1), alike on both APIs, and the two
 /// pictures differ (at least 10% of the pixels by more than 8/255;
 /// measured 42%): the page's light and draw transforms move with time.
+/// Edited: a number for a float3 control fills every component, and one
+/// draw of one pass (draw.js's own path) takes its transform and the
+/// light, each as natively.
 #[test]
 fn the_animated_shadow_scene_file_moves_as_natively() {
     if !browser_ready() {
@@ -146,6 +149,16 @@ fn the_animated_shadow_scene_file_moves_as_natively() {
     });
     let page = picture_at(&program, &number, 1.0, &dir.path().join("number"));
     assert_like_native_at(&program, &number, &page, 1.0, &dir.path().join("number"));
+
+    // One draw (the cube) of one pass, its map only cleared: draw.js's own
+    // path (not passes.js), with the draw's transform and the scene's
+    // light through controls.js (measured: no pixel over 8/255).
+    let single = edited(&scene, dir.path(), "single.json", |s| {
+        s.passes[0].draws.clear();
+        s.passes[1].draws.truncate(1);
+    });
+    let page = picture_at(&program, &single, 3.0, &dir.path().join("single"));
+    assert_like_native_at(&program, &single, &page, 3.0, &dir.path().join("single"));
 }
 
 /// The technique scene files with a light and per-draw transforms
