@@ -38,11 +38,16 @@ struct Picture {
 }
 
 fn picture(program: &Path, scene: &Path, out: &Path) -> Picture {
+    picture_at(program, scene, 0.0, out)
+}
+
+/// The same with the page's clock fixed at `time` seconds.
+fn picture_at(program: &Path, scene: &Path, time: f32, out: &Path) -> Picture {
     std::fs::create_dir_all(out).unwrap();
     let server = PreviewServer::start_with(program, &[std::ffi::OsStr::new("--scene"), scene.as_os_str()]);
     let status = Command::new("node")
         .arg(root().join("web/preview-drive.mjs"))
-        .arg(format!("{}?time=0", server.url()))
+        .arg(format!("{}?time={time}", server.url()))
         .arg(program)
         .arg(out)
         .stdin(Stdio::null())
@@ -85,11 +90,12 @@ fn edited(scene: &Path, dir: &Path, name: &str, edit: impl FnOnce(&mut umbrac::s
 
 /// shaders/scenes/shadow.toml: a depth pass of two draws into a 1024 x
 /// 1024 depth target, then the lit pass of two draws reading it through
-/// the comparison sampler. Drawn alike on both APIs; shadowed (against the
-/// same scene with the depth pass drawing nothing, at least 2% of the
-/// pixels darker by more than 30/255 summed; measured 3.4%); and as `umbrac render
-/// --backend webgl2` draws the scene file (at most 0.1% of the pixels over
-/// 8/255: measured none, worst 1).
+/// the comparison sampler, at 4 s (the scene is animated: at 0 s its
+/// shadow covers only 1.5%). Drawn alike on both APIs; shadowed
+/// (against the same scene with the depth pass drawing nothing, at least
+/// 2% of the pixels darker by more than 30/255 summed; measured 4.0%);
+/// and as `umbrac render --backend webgl2 --time 4` draws the scene file
+/// (at most 0.1% of the pixels over 8/255: measured none, worst 1).
 #[test]
 fn the_shadow_scene_file_draws_shadowed_on_both_apis() {
     if !browser_ready() {
@@ -98,9 +104,9 @@ fn the_shadow_scene_file_draws_shadowed_on_both_apis() {
     let dir = tempfile::tempdir().unwrap();
     let program = root().join("shaders/shadow.das");
     let scene = root().join("shaders/scenes/shadow.toml");
-    let shadowed = picture(&program, &scene, &dir.path().join("shadowed"));
+    let shadowed = picture_at(&program, &scene, 4.0, &dir.path().join("shadowed"));
     let lit_scene = edited(&scene, dir.path(), "lit.json", |s| s.passes[0].draws.clear());
-    let lit = picture(&program, &lit_scene, &dir.path().join("lit"));
+    let lit = picture_at(&program, &lit_scene, 4.0, &dir.path().join("lit"));
     let share = darker_share(&shadowed.webgl2, &lit.webgl2, 30);
     assert!(share >= 0.02, "WebGL2: only {:.2}% of the pixels are in shadow", share * 100.0);
     if let (Some(s), Some(l)) = (&shadowed.webgpu, &lit.webgpu) {
@@ -108,21 +114,93 @@ fn the_shadow_scene_file_draws_shadowed_on_both_apis() {
         assert!(share >= 0.02, "WebGPU: only {:.2}% of the pixels are in shadow", share * 100.0);
     }
 
-    assert_like_native(&program, &scene, &shadowed, dir.path());
+    assert_like_native_at(&program, &scene, &shadowed, 4.0, dir.path());
+}
+
+/// shaders/scenes/shadow.toml is animated (a spinning cube, a turning
+/// sun): at 1 s and at 4 s the page draws it as `umbrac render
+/// --backend webgl2 --time T` does (at most 0.1% of the pixels over
+/// 8/255: measured none, worst 1), alike on both APIs, and the two
+/// pictures differ (at least 10% of the pixels by more than 8/255;
+/// measured 42%): the page's light and draw transforms move with time.
+/// Edited: a number for a float3 control fills every component, and one
+/// draw of one pass (draw.js's own path) takes its transform and the
+/// light, each as natively.
+#[test]
+fn the_animated_shadow_scene_file_moves_as_natively() {
+    if !browser_ready() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let program = root().join("shaders/shadow.das");
+    let scene = root().join("shaders/scenes/shadow.toml");
+    let early = picture_at(&program, &scene, 1.0, &dir.path().join("t1"));
+    assert_like_native_at(&program, &scene, &early, 1.0, dir.path());
+    let late = picture_at(&program, &scene, 4.0, &dir.path().join("t4"));
+    assert_like_native_at(&program, &scene, &late, 4.0, dir.path());
+    let moved = early.webgl2.chunks(4).zip(late.webgl2.chunks(4)).filter(|(a, b)| (0..3).any(|c| (a[c] as i32 - b[c] as i32).abs() > 8)).count();
+    let share = moved as f64 / (early.webgl2.len() / 4) as f64;
+    assert!(share >= 0.1, "only {:.1}% of the pixels change between 1 s and 4 s", share * 100.0);
+
+    // A number for the float3 `u_light_dir` (a control) fills every
+    // component, as natively: a light from (1, 1, 1), not from +x.
+    let number = edited(&scene, dir.path(), "number.json", |s| {
+        s.values.insert("u_light_dir".into(), umbrac::scene::ValueSpec::Number(0.577));
+    });
+    let page = picture_at(&program, &number, 1.0, &dir.path().join("number"));
+    assert_like_native_at(&program, &number, &page, 1.0, &dir.path().join("number"));
+
+    // One draw (the cube) of one pass, its map only cleared: draw.js's own
+    // path (not passes.js), with the draw's transform and the scene's
+    // light through controls.js (measured: no pixel over 8/255).
+    let single = edited(&scene, dir.path(), "single.json", |s| {
+        s.passes[0].draws.clear();
+        s.passes[1].draws.truncate(1);
+    });
+    let page = picture_at(&program, &single, 3.0, &dir.path().join("single"));
+    assert_like_native_at(&program, &single, &page, 3.0, &dir.path().join("single"));
+}
+
+/// The technique scene files with a light and per-draw transforms
+/// (shaders/scenes/, shaders/techniques/): the cascaded sun (three depth
+/// passes, each given one element of `light_view_projections`, and the
+/// whole array read by the lit pass), the spot light (its position and
+/// direction) and the depth packed into an RGBA8 target. Each drawn by
+/// the page alike on both APIs and as `umbrac render --backend webgl2
+/// --time T` draws it (at most 0.1% of the pixels over 8/255: measured
+/// at most 1 pixel, on rgba8-depth's packed-depth edge).
+#[test]
+fn the_technique_scene_files_draw_as_natively() {
+    if !browser_ready() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    for (program, scene, time) in [("cascades", "cascades", 1.0), ("spot_light", "spot", 1.0), ("rgba8_depth", "rgba8-depth", 2.0)] {
+        let program = root().join(format!("shaders/techniques/{program}.das"));
+        let scene = root().join(format!("shaders/scenes/{scene}.toml"));
+        let out = dir.path().join(scene.file_stem().unwrap());
+        let page = picture_at(&program, &scene, time, &out);
+        assert_like_native_at(&program, &scene, &page, time, &out);
+    }
 }
 
 /// Checks that the page's WebGL2 picture is within 8/255 of `umbrac render
 /// --backend webgl2` of the same program and scene file on at least 99.9%
 /// of the pixels.
 fn assert_like_native(program: &Path, scene: &Path, page: &Picture, dir: &Path) {
+    assert_like_native_at(program, scene, page, 0.0, dir);
+}
+
+/// The same at `time` seconds.
+fn assert_like_native_at(program: &Path, scene: &Path, page: &Picture, time: f32, dir: &Path) {
     let (w, h) = (page.state["width"].as_u64().unwrap() as u32, page.state["height"].as_u64().unwrap() as u32);
-    let png = dir.join("native.png");
+    let png = dir.join(format!("native-{time}.png"));
     let out = Command::new(env!("CARGO_BIN_EXE_umbrac"))
         .arg("render")
         .arg(program)
         .arg("--scene")
         .arg(scene)
-        .args(["--backend", "webgl2", "--size", &format!("{w}x{h}"), "--out"])
+        .args(["--backend", "webgl2", "--time", &time.to_string(), "--size", &format!("{w}x{h}"), "--out"])
         .arg(&png)
         .output()
         .unwrap();
@@ -137,7 +215,7 @@ fn assert_like_native(program: &Path, scene: &Path, page: &Picture, dir: &Path) 
             off += (0..3).any(|c| (px[c] as i32 - n[c] as i32).abs() > 8) as usize;
         }
     }
-    assert!(off as f64 <= 0.001 * (w * h) as f64, "{}: {off} of {} pixels differ from umbrac render --backend webgl2 by more than 8/255", scene.display(), w * h);
+    assert!(off as f64 <= 0.001 * (w * h) as f64, "{} at {time} s: {off} of {} pixels differ from umbrac render --backend webgl2 by more than 8/255", scene.display(), w * h);
 }
 
 /// GL tutorial 08 (two programs) drawn with its scene file

@@ -4,7 +4,7 @@
 // matrices, ...), and a pattern for each sampler. docs/preview.md.
 
 import { parseType, writeMember, readMember, uniformBuffers, bareName, structLeaves } from './draw.js';
-import { PATTERNS, conventions, fitValue } from './scene.js';
+import { PATTERNS, conventions, drawConventions, conventionValue, fitValue } from './scene.js';
 import { texels } from './textures.js';
 
 // The orbit camera: drag on a canvas to turn, wheel to zoom; it moves the
@@ -75,7 +75,8 @@ function slider(label, value, range, int, onInput) {
 // A scene value (a number, numbers or a bool) as a member's numbers.
 function numbersOf(spec, t) {
   if (typeof spec === 'boolean') return fitValue([spec ? 1 : 0], t);
-  if (typeof spec === 'number') return fitValue([spec], t);
+  // A number fills every component, as the native runner's (src/render/plan/scene_file.rs).
+  if (typeof spec === 'number') return Array(t.n).fill(spec);
   return fitValue(spec, t);
 }
 
@@ -119,10 +120,11 @@ export class Inputs {
           panel.append(note(`${m.name}: set by the scene's passes and draws`));
           continue;
         }
-        if (typeof spec === 'string') {
+        // A convention's name, or one element of an array convention ({ convention, index }).
+        if (typeof spec === 'string' || (spec && typeof spec === 'object' && !Array.isArray(spec))) {
           this.bound.push({ buffer: b.name, member: m, t, convention: spec });
           const orbits = /^(view|view_rotation|projection|view_projection|model_view_projection|camera_position)$/.test(spec);
-          panel.append(note(`${m.name}: ${spec}${orbits ? ' (orbit camera: drag, wheel)' : ''}`));
+          panel.append(note(`${m.name}: ${typeof spec === 'string' ? spec : `${spec.convention}[${spec.index}]`}${orbits ? ' (orbit camera: drag, wheel)' : ''}`));
           continue;
         }
         if (!t || control?.kind === 'none') {
@@ -232,10 +234,13 @@ export class Inputs {
       }
     }
     for (const l of this.leaves) writeMember(buffers[l.buffer], l.member, l.values);
-    const conv = conventions(this.orbit.camera(this.plan.camera), clock);
+    // With the scene's light, and its one draw's transform (draw.js's
+    // single pass; passes.js sets each draw's own over these).
+    const conv = drawConventions(conventions(this.orbit.camera(this.plan.camera), clock, this.plan.light ?? null), this.plan.transform ?? null, clock.time);
     for (const { buffer, member, t, convention } of this.bound) {
-      const v = conv[convention];
-      if (v && t) writeMember(buffers[buffer], member, fitValue(v, t));
+      const v = conventionValue(convention, conv);
+      // An array member (t null: a light's matrices) takes the numbers whole.
+      if (v) writeMember(buffers[buffer], member, t ? fitValue(v, t) : v);
     }
     const textures = {};
     for (const [s, p] of this.patterns) {

@@ -79,8 +79,10 @@ const QUAD = [[-1, -1], [1, -1], [1, 1], [-1, -1], [1, 1], [-1, 1]];
 //   type, format, data (numbers, one record per vertex or instance),
 //   perInstance }], count (vertices), instances, depth, cull ('none' |
 //   'back' | 'front', counter-clockwise is front), clear, values (name ->
-//   a scene value: numbers, a bool, or a convention's name), textures
-//   (sampler -> { pattern, size, filter }), camera, controls, entries }.
+//   a scene value: numbers, a bool, a convention's name or { convention,
+//   index }), textures (sampler -> { pattern, size, filter }), camera,
+//   light (the scene's, or null), transform (the draw's, or null: the
+//   default slow turn), controls, entries }.
 // From the bundle's scene (umbrac::scene, inferred by the compiler) where
 // it has one; else made up here from the names (a lone fragment entry point,
 // or a program the scene inference refused).
@@ -164,6 +166,9 @@ function planOfScene(m, scene) {
     values: { ...(scene.values ?? {}), ...(pass.values ?? {}), ...(draw.values ?? {}) },
     textures,
     camera: scene.camera ?? {},
+    // The conventions' light and the draw's model (controls.js).
+    light: scene.light ?? null,
+    transform: draw.transform ?? null,
     controls: scene.controls ?? [],
     entries: [vertex, fragment],
     outputs: colourOutputs(fragment),
@@ -256,6 +261,13 @@ export function uniformBuffers(manifest) {
 
 // The words of `values` (numbers, a matrix column by column) at a member.
 export function writeMember(words, member, values) {
+  // An array (a light's matrices): its elements one after another, at the array stride.
+  const arr = /^(.+)\[(\d+)\]$/.exec(member.type);
+  if (arr && member.array_stride) {
+    const n = parseType(arr[1])?.n ?? 0;
+    for (let k = 0; k < +arr[2]; k++) writeMember(words, { ...member, type: arr[1], offset: member.offset + k * member.array_stride }, values.slice(k * n, (k + 1) * n));
+    return;
+  }
   const t = parseType(member.type);
   if (!t) return;
   const f = new Float32Array(words.buffer, words.byteOffset, words.length);

@@ -2,7 +2,8 @@
 // "Scene files"), drawn as the native runner's scene plans are
 // (src/render/plan/scene_file.rs): the passes in order, each into the
 // screen or a target (cleared first; depth test LESS, writes, cleared to
-// 1), each draw with its own mesh, instance grid and values, samplers
+// 1), each draw with its own mesh, instance grid, values and transform
+// (its model conventions; the light's from the scene's `light`), samplers
 // reading patterns, image files (served by `umbrac preview` under
 // scene/NAME) or targets drawn earlier. The target `output` names is
 // shown; `view = 'depth'` shows the depth target of the last pass into it.
@@ -14,7 +15,7 @@
 import {
   DrawError, parseType, writeMember, entryOf, fileOf, drawGeometry, colourOutputs, glUniformsOf, setGLUniforms, DEPTH_VIEW_WGSL,
 } from './draw.js';
-import { pattern, conventions, fitValue } from './scene.js';
+import { pattern, conventions, drawConventions, conventionValue, fitValue } from './scene.js';
 
 // ---- the plan -----------------------------------------------------------
 
@@ -30,13 +31,32 @@ export function needsPasses(scene, drawn, clearOnly) {
     || Object.values(drawn[0].samplers ?? {}).some((i) => !cleared.has(i.texture) && !pattern(i.texture));
 }
 
-// The member of a uniform buffer (or a loose uniform) named `name`.
+// The member of a uniform buffer (or a loose uniform) named `name`, its
+// type an array's whole (`float4x4[3]`: n = 48) where it is one.
 function memberOf(m, name) {
   for (const b of m.uniform_buffers ?? []) {
     const member = b.members.find((x) => x.name === name);
-    if (member) return { buffer: b.name, member, t: parseType(member.type) };
+    if (!member) continue;
+    const arr = /^(.+)\[(\d+)\]$/.exec(member.type);
+    const elem = parseType(arr ? arr[1] : member.type);
+    const t = arr && elem && member.array_stride ? { ...elem, n: elem.n * +arr[2], array: +arr[2] } : arr ? null : elem;
+    return { buffer: b.name, member, t };
   }
   return null;
+}
+
+// Whether a scene value names a convention: its name, or one element of
+// an array convention ({ convention, index }).
+const isConvention = (spec) => typeof spec === 'string' || (!!spec && typeof spec === 'object' && !Array.isArray(spec));
+
+// A scene value's numbers for a member of type `t` in `conv` (a draw's
+// conventions): a number fills every component, as the native runner's
+// scene values (src/render/plan/scene_file.rs).
+function valueOf(spec, t, conv) {
+  if (isConvention(spec)) return conventionValue(spec, conv);
+  if (typeof spec === 'boolean') return [spec ? 1 : 0];
+  if (typeof spec === 'number') return Array(t.n).fill(spec);
+  return spec;
 }
 
 // The plan of a scene for draw.js's renderers: every pass with its
@@ -49,13 +69,16 @@ export function passesPlan(m, scene) {
     throw new DrawError('plan', `the preview shows colour; \`output = "${output}"\` names a depth target`);
   }
   const perDraw = new Set();
+  // Every convention with the scene's light, to check the names against.
+  const known = conventions({}, { time: 0, frame: 0, width: 4, height: 4, mouse: null }, scene.light ?? null);
   const checkValues = (values, where) => {
     for (const [name, spec] of Object.entries(values ?? {})) {
       const at = memberOf(m, name);
       if (!at) throw new DrawError('plan', `${where} sets \`${name}\`, which is no uniform of the program`);
       if (!at.t) throw new DrawError('plan', `${where} sets \`${name} : ${at.member.type}\`, which the preview cannot write`);
-      if (typeof spec === 'string' && !(spec in conventions({}, { time: 0, frame: 0, width: 4, height: 4, mouse: null }))) {
-        throw new DrawError('plan', `${where} sets \`${name}\` to the convention \`${spec}\`, which the preview does not compute`);
+      if (isConvention(spec) && !conventionValue(spec, known)) {
+        const what = typeof spec === 'string' ? `the convention \`${spec}\`` : `element ${spec.index} of \`${spec.convention}\``;
+        throw new DrawError('plan', `${where} sets \`${name}\` to ${what}, which the preview does not compute`);
       }
       perDraw.add(name);
     }
@@ -96,7 +119,7 @@ export function passesPlan(m, scene) {
     const draws = p.draws.map((d, i) => {
       checkValues(d.values, `draw ${i + 1} of pass \`${p.name}\``);
       if (d.primitive === 'points') throw new DrawError('plan', `draw ${i + 1} of pass \`${p.name}\` is of points, which the preview draws in scenes of one pass and one draw only`);
-      return { ...drawGeometry(vertex, d), values: d.values ?? {} };
+      return { ...drawGeometry(vertex, d), values: d.values ?? {}, transform: d.transform ?? null };
     });
     if (fragment && p.color) {
       const out0 = colourOutputs(fragment).find((o) => o.location === 0);
@@ -115,27 +138,31 @@ export function passesPlan(m, scene) {
     vertex: null, fragment: null, attributes: [], count: 0, instances: 1,
     depth: !!last?.depth, cull: 'none', clear: [0, 0, 0, 1],
     values: scene.values ?? {}, perDraw, textures: patterns, camera: scene.camera ?? {}, controls: scene.controls ?? [], entries,
+    light: scene.light ?? null,
+    // The scene's values that name conventions: each draw's own (its transform's model).
+    sceneConventions: Object.entries(scene.values ?? {}).filter(([, spec]) => isConvention(spec)),
     outputs: [{ name: output, location: 0 }],
   };
 }
 
 // A draw's words of each uniform buffer: the frame's (controls and the
-// scene's values), then the pass's values, then the draw's.
-function drawWords(m, base, conv, pass, draw) {
+// scene's values), the scene's conventions again with the draw's
+// transform, then the pass's values, then the draw's.
+function drawWords(m, plan, base, conv, pass, draw) {
   const out = {};
   for (const [name, words] of Object.entries(base)) out[name] = words.slice();
-  for (const [name, spec] of [...Object.entries(pass.values), ...Object.entries(draw.values)]) {
+  const own = drawConventions(conv, draw.transform, conv.time[0]);
+  for (const [name, spec] of [...plan.sceneConventions, ...Object.entries(pass.values), ...Object.entries(draw.values)]) {
     const { buffer, member, t } = memberOf(m, name);
-    // A number fills every component, as the native runner's scene values.
-    const v = typeof spec === 'string' ? conv[spec] : typeof spec === 'boolean' ? [spec ? 1 : 0] : typeof spec === 'number' ? Array(t.n).fill(spec) : spec;
-    writeMember(out[buffer], member, fitValue(v, t));
+    writeMember(out[buffer], member, fitValue(valueOf(spec, t, own), t));
   }
   return out;
 }
 
-// The frame's conventions; the playground's one-shot draw gives none.
+// The frame's conventions with the scene's light; the playground's
+// one-shot draw gives none.
 function conventionsOf(inputs, plan, width, height) {
-  return inputs.conventions ?? conventions(plan.camera, { time: 0, frame: 0, width, height, mouse: null });
+  return inputs.conventions ?? conventions(plan.camera, { time: 0, frame: 0, width, height, mouse: null }, plan.light);
 }
 
 // The scene's image files, fetched from the preview server (scene/NAME):
@@ -395,7 +422,7 @@ export class GLPasses {
         gl.bindSampler(unit, this.sampler(s));
       }
       pass.draws.forEach((d, i) => {
-        setGLUniforms(gl, program.uniforms, drawWords(this.m, inputs.buffers, conv, pass, d));
+        setGLUniforms(gl, program.uniforms, drawWords(this.m, this.plan, inputs.buffers, conv, pass, d));
         gl.bindVertexArray(vaos[i]);
         gl.drawArraysInstanced(gl.TRIANGLES, 0, d.count, d.instances);
       });
@@ -612,7 +639,7 @@ export class GPUPasses {
         return this.uploaded.get(texels);
       };
       for (const { d, vbos, pipeline, uniforms } of draws) {
-        const words = drawWords(this.m, inputs.buffers, conv, pass, d);
+        const words = drawWords(this.m, this.plan, inputs.buffers, conv, pass, d);
         for (const u of uniforms) {
           const bytes = new Uint8Array(u.size);
           const w = words[u.b.name];

@@ -287,11 +287,14 @@ export function drawConventions(conv, transform, time) {
   return { ...conv, model, model_view_projection: mul(conv.view_projection, model), normal_matrix: normal };
 }
 
+// The conventions that are arrays of matrices (an `index` picks one).
+const ARRAY_CONVENTIONS = new Set(['light_view_projections']);
+
 // The numbers a scene value names in `conv`: a convention's (a string),
 // one element of an array convention ({ convention, index }), or null.
 export function conventionValue(spec, conv) {
   if (typeof spec === 'string') return conv[spec] ?? null;
-  if (spec && typeof spec === 'object' && !Array.isArray(spec) && typeof spec.convention === 'string') {
+  if (spec && typeof spec === 'object' && !Array.isArray(spec) && ARRAY_CONVENTIONS.has(spec.convention) && Number.isInteger(spec.index) && spec.index >= 0) {
     const all = conv[spec.convention];
     return all && all.length >= 16 * (spec.index + 1) ? all.slice(16 * spec.index, 16 * (spec.index + 1)) : null;
   }
