@@ -391,23 +391,32 @@ fn the_instanced_program_draws_its_instance_table_on_every_consumer() {
     let planner = ScenePlanner::new("instanced.das", scene, &compiled.reflection, None).unwrap();
     let f = FrameInputs { time: 0.5, frame: 0, width: 64, height: 48 };
     let cmp = any::compare_many(&[(&programs, &planner, f)]).unwrap().pop().unwrap();
-    for (c, s) in &cmp.results {
-        let img = match s {
-            Status::Rendered { image, .. } => image,
-            Status::Unavailable { why, .. } => {
-                ci::skip(format!("{}: {why}", c.name()));
-                continue;
-            }
-            Status::Failed(e) => panic!("{}: {e}", c.name()),
-        };
-        let out = gpu::artifacts_dir("any-program").join(format!("instanced.{}.png", c.name()));
-        umbrac::render::image_ops::save_png(img, &out).unwrap();
+    for (c, img, out) in pictures(&cmp, "instanced") {
         let lit = img.pixels().filter(|p| p[0] > 20 || p[1] > 20 || p[2] > 20).count();
         assert!(lit * 20 >= (64 * 48) as usize, "{}: {lit} lit pixels of {} ({})", c.name(), 64 * 48, out.display());
     }
     for (x, y, d) in &cmp.pairs {
         assert!(d.fraction_over <= TUTORIAL_SHARE, "{} vs {}: {:.4}\n{}", x.name(), y.name(), d.fraction_over, any::table(&cmp.pairs));
     }
+}
+
+/// Each consumer's picture of one comparison, saved as
+/// `STEM.CONSUMER.png` under the test artifacts; a consumer this machine
+/// lacks is skipped (a failure with `CI=true`), one that fails panics.
+fn pictures<'a>(cmp: &'a any::Comparison, stem: &str) -> Vec<(&'a umbrac::render::Consumer, &'a image::RgbaImage, PathBuf)> {
+    let mut out = Vec::new();
+    for (c, s) in &cmp.results {
+        match s {
+            Status::Rendered { image, .. } => {
+                let path = gpu::artifacts_dir("any-program").join(format!("{stem}.{}.png", c.name()));
+                umbrac::render::image_ops::save_png(image, &path).unwrap();
+                out.push((c, image, path));
+            }
+            Status::Unavailable { why, .. } => ci::skip(format!("{}: {why}", c.name())),
+            Status::Failed(e) => panic!("{}: {e}", c.name()),
+        }
+    }
+    out
 }
 
 /// Point sprites (tutorial 07's render program: `gl_PointSize` 9, a disc
@@ -431,17 +440,7 @@ fn point_sprites_are_sized_on_gl_and_single_pixels_on_webgpu() {
     let f = FrameInputs { time: 0.0, frame: 0, width: 96, height: 72 };
     let cmp = any::compare_many(&[(&programs, &planner, f)]).unwrap().pop().unwrap();
     let (mut gl_lit, mut one_px) = (Vec::new(), Vec::new());
-    for (c, s) in &cmp.results {
-        let img = match s {
-            Status::Rendered { image, .. } => image,
-            Status::Unavailable { why, .. } => {
-                ci::skip(format!("{}: {why}", c.name()));
-                continue;
-            }
-            Status::Failed(e) => panic!("{}: {e}", c.name()),
-        };
-        let out = gpu::artifacts_dir("any-program").join(format!("points.{}.png", c.name()));
-        umbrac::render::image_ops::save_png(img, &out).unwrap();
+    for (c, img, _) in pictures(&cmp, "points") {
         let lit = img.pixels().filter(|p| p[0] > 0 || p[1] > 0 || p[2] > 0).count();
         if same_point_family(c.name(), "gl330") { gl_lit.push((c.name(), lit)) } else { one_px.push((c.name(), lit)) }
     }
