@@ -95,8 +95,14 @@ impl ScenePlanner {
         let id = |n: &str| ids.iter().find(|(name, _)| *name == n).map(|(_, id)| *id).expect("checked: every name is declared");
         for p in &s.passes {
             let vs = self.entry(&p.vertex, "vertex")?;
+            let colors = p.color.as_ref().map_or(&[][..], |c| c.names());
             if let Some(fs) = &p.fragment {
-                self.entry(fs, "fragment")?;
+                let fs = self.entry(fs, "fragment")?;
+                // A target with no output to fill is invalid on WebGPU; an
+                // output with no target is discarded on every API.
+                if let Some(i) = (0..colors.len()).find(|&i| colors.len() > 1 && !fs.outputs.iter().any(|o| o.location as usize == i)) {
+                    return Err(format!("{label}: pass `{}`: `color` target `{}` is for output location {i}, which fragment `{}` does not write", p.name, colors[i], fs.name));
+                }
             }
             let mut textures = Vec::new();
             for (sampler, input) in &p.samplers {
@@ -132,7 +138,8 @@ impl ScenePlanner {
                 name: p.name.clone(),
                 vertex: p.vertex.clone(),
                 fragment: p.fragment.clone(),
-                color: p.color.as_deref().map(|c| Attachment { target: id(c), clear: p.clear.map(f64::from) }),
+                color: colors.first().map(|c| Attachment { target: id(c), clear: p.clear.map(f64::from) }),
+                more_colors: colors.iter().skip(1).map(|c| Attachment { target: id(c), clear: p.clear.map(f64::from) }).collect(),
                 depth: p.depth.as_deref().map(|d| Attachment { target: id(d), clear: 1.0 }),
                 cull: match p.cull {
                     scene::Cull::None => Cull::None,
