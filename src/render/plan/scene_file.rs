@@ -454,6 +454,26 @@ mod tests {
         assert!(err.contains("texture `b`") && err.contains("tex.png"), "{err}");
     }
 
+    /// A `color` list becomes the pass's attachments in location order; a
+    /// list reaching a location the fragment does not write is refused.
+    #[test]
+    fn a_color_list_attaches_each_location_to_its_target() {
+        let src = "var @out @location = 0 g_a : float4\nvar @out @location = 1 g_b : float4\n[vertex_program]\ndef vs {\n    gl_Position = float4(0.0, 0.0, 0.0, 1.0)\n}\n[fragment_program]\ndef fs {\n    g_a = float4(1.0)\n    g_b = float4(0.5)\n}\n";
+        let c = crate::compile_source("t.das", src, &crate::Options::default());
+        let r = c.result.unwrap().reflection;
+        let toml = |color: &str| {
+            let targets: String = ["a", "b", "c"].iter().map(|n| format!("[[targets]]\nname = \"{n}\"\nformat = \"rgba8\"\n")).collect();
+            format!("output = \"b\"\n{targets}[[passes]]\nname = \"g\"\nvertex = \"vs\"\nfragment = \"fs\"\ncolor = {color}\n[[passes.draws]]\nmesh = \"none\"\nvertices = 3\n")
+        };
+        let plan = ScenePlanner::new("s", Scene::parse("s.toml", &toml(r#"["a", "b"]"#)).unwrap(), &r, None).unwrap().plan(&f()).unwrap();
+        let id = |n: &str| TargetId(plan.targets.iter().position(|t| t.name == n).unwrap());
+        let p = &plan.passes[0];
+        assert_eq!(p.colors().map(|a| a.target).collect::<Vec<_>>(), [id("a"), id("b")]);
+        assert!(p.writes(id("b")) && !p.writes(id("c")));
+        let err = ScenePlanner::new("s", Scene::parse("s.toml", &toml(r#"["a", "b", "c"]"#)).unwrap(), &r, None).err().unwrap();
+        assert!(err.contains("`c` is for output location 2, which fragment `fs` does not write"), "{err}");
+    }
+
     #[test]
     fn numbers_and_bools_take_the_uniforms_type() {
         let (cam, f) = (OrbitCamera::default(), f());
