@@ -195,17 +195,16 @@ async function main() {
     gl.bindTexture(kind, null);
     return tex;
   });
-  const framebuffer = (color, depth) => {
+  // `colors`: target indices, output location i -> the i-th.
+  const framebuffer = (colors, depth) => {
     const fbo = gl.createFramebuffer();
     gl.bindFramebuffer(gl.FRAMEBUFFER, fbo);
-    if (color !== null) {
-      gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, textures[color], 0);
-      gl.drawBuffers([gl.COLOR_ATTACHMENT0]);
-      gl.readBuffer(gl.COLOR_ATTACHMENT0);
-    } else {
-      gl.drawBuffers([gl.NONE]);
-      gl.readBuffer(gl.NONE);
-    }
+    const buffers = colors.map((c, i) => {
+      gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0 + i, gl.TEXTURE_2D, textures[c], 0);
+      return gl.COLOR_ATTACHMENT0 + i;
+    });
+    gl.drawBuffers(buffers.length ? buffers : [gl.NONE]);
+    gl.readBuffer(buffers.length ? gl.COLOR_ATTACHMENT0 : gl.NONE);
     if (depth !== null) gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.TEXTURE_2D, textures[depth], 0);
     const status = gl.checkFramebufferStatus(gl.FRAMEBUFFER);
     if (status !== gl.FRAMEBUFFER_COMPLETE) throw new PageError('api', `incomplete framebuffer ${status}`);
@@ -238,17 +237,15 @@ async function main() {
   gl.depthMask(true);
   for (const pass of plan.passes) {
     const p = programs[pass.program];
-    const fbo = framebuffer(pass.color ? pass.color.target : null, pass.depth ? pass.depth.target : null);
+    const colors = pass.color ? [pass.color, ...(pass.more_colors ?? [])] : [];
+    const fbo = framebuffer(colors.map((c) => c.target), pass.depth ? pass.depth.target : null);
     const drawn = plan.targets[(pass.color ?? pass.depth).target];
     gl.viewport(0, 0, drawn.width, drawn.height);
-    if (pass.color) {
-      const c = pass.color.clear;
-      if (plan.targets[pass.color.target].format === 'rgba32uint') gl.clearBufferuiv(gl.COLOR, 0, new Uint32Array(c));
-      else {
-        gl.clearColor(c[0], c[1], c[2], c[3]);
-        gl.clear(gl.COLOR_BUFFER_BIT);
-      }
-    }
+    colors.forEach((a, i) => {
+      const c = a.clear;
+      if (plan.targets[a.target].format === 'rgba32uint') gl.clearBufferuiv(gl.COLOR, i, new Uint32Array(c));
+      else gl.clearBufferfv(gl.COLOR, i, new Float32Array(c));
+    });
     if (pass.depth) {
       gl.enable(gl.DEPTH_TEST);
       gl.clearDepth(pass.depth.clear);
@@ -317,7 +314,7 @@ async function main() {
   if (isDepth(readTarget.format)) throw new PageError('api', 'WebGL2 cannot read depth back');
   const [, format, type, texel] = formatOf(gl, readTarget.format);
   const { width, height } = readTarget;
-  const readFbo = framebuffer(plan.readback, null);
+  const readFbo = framebuffer([plan.readback], null);
   gl.pixelStorei(gl.PACK_ALIGNMENT, 1);
   const integer = readTarget.format === 'rgba32uint';
   const fromFbo = integer ? new Uint32Array(width * height * 4) : new Uint8Array(width * height * texel);

@@ -116,7 +116,7 @@ impl Scene {
             name: format!("{vertex} + {fragment}"),
             vertex: vertex.to_string(),
             fragment: Some(fragment.to_string()),
-            color: Some(SCREEN.to_string()),
+            color: Some(SCREEN.into()),
             clear: [0.0, 0.0, 0.0, 1.0],
             depth: None,
             cull: super::Cull::None,

@@ -358,10 +358,11 @@ pub struct Pass {
     /// The fragment entry point; none: a depth-only pass.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub fragment: Option<String>,
-    /// Where colour output 0 goes: [`SCREEN`] or a colour target's name;
-    /// none: no colour.
+    /// Where the colour outputs go: [`SCREEN`] or a colour target's name
+    /// (output 0), or a list of colour targets (output location i -> the
+    /// i-th: a G-buffer); none: no colour.
     #[serde(default, skip_serializing_if = "Option::is_none")]
-    pub color: Option<String>,
+    pub color: Option<ColorTargets>,
     /// The colour it is cleared to first.
     #[serde(default = "black")]
     pub clear: [f32; 4],
@@ -381,6 +382,35 @@ pub struct Pass {
     #[serde(default, skip_serializing_if = "BTreeMap::is_empty")]
     pub values: BTreeMap<String, ValueSpec>,
     pub draws: Vec<Draw>,
+}
+
+/// A pass's `color`: one name, or several colour targets by output location.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(untagged, expecting = "a target name or a list of target names")]
+pub enum ColorTargets {
+    One(String),
+    Many(Vec<String>),
+}
+
+impl ColorTargets {
+    /// The names, output location 0 first.
+    pub fn names(&self) -> &[String] {
+        match self {
+            ColorTargets::One(n) => std::slice::from_ref(n),
+            ColorTargets::Many(v) => v,
+        }
+    }
+
+    /// The name output location 0 goes to (the only one of the single form).
+    pub fn first(&self) -> Option<&str> {
+        self.names().first().map(String::as_str)
+    }
+}
+
+impl From<&str> for ColorTargets {
+    fn from(name: &str) -> Self {
+        ColorTargets::One(name.to_string())
+    }
 }
 
 fn black() -> [f32; 4] {
@@ -919,14 +949,7 @@ impl Scene {
             return Err("a scene needs at least one pass".into());
         }
         for p in &self.passes {
-            match p.color.as_deref() {
-                None | Some(SCREEN) => {}
-                Some(c) => match target(c) {
-                    Some(t) if !t.format.is_depth() => {}
-                    Some(_) => return Err(format!("pass `{}` draws colour into the depth target `{c}`", p.name)),
-                    None => return Err(format!("pass `{}`: `color = \"{c}\"` names no render target", p.name)),
-                },
-            }
+            check_colors(p, &target)?;
             if let Some(d) = p.depth.as_deref() {
                 match target(d) {
                     Some(t) if t.format.is_depth() => {}
@@ -941,7 +964,7 @@ impl Scene {
                 if !names[1..].contains(&input.texture.as_str()) {
                     return Err(format!("pass `{}`: sampler `{s}` reads `{}`, which is no texture or render target", p.name, input.texture));
                 }
-                if p.color.as_deref() == Some(input.texture.as_str()) || p.depth.as_deref() == Some(input.texture.as_str()) {
+                if p.color.as_ref().is_some_and(|c| c.names().contains(&input.texture)) || p.depth.as_deref() == Some(input.texture.as_str()) {
                     return Err(format!("pass `{}` samples `{}`, which it draws into", p.name, input.texture));
                 }
             }
@@ -978,6 +1001,35 @@ impl Scene {
     pub fn value<'a>(&'a self, pass: &'a Pass, draw: &'a Draw, name: &str) -> Option<&'a ValueSpec> {
         draw.values.get(name).or_else(|| pass.values.get(name)).or_else(|| self.values.get(name))
     }
+}
+
+/// Whether a pass's `color` names colour targets: `screen` or one target,
+/// or a list of distinct colour targets of one size (never `screen`).
+fn check_colors<'a>(p: &Pass, target: &impl Fn(&str) -> Option<&'a RenderTarget>) -> Result<(), String> {
+    let Some(colors) = &p.color else { return Ok(()) };
+    let list = matches!(colors, ColorTargets::Many(_));
+    if list && colors.names().is_empty() {
+        return Err(format!("pass `{}`: `color = []` names no target (leave `color` out for a depth-only pass)", p.name));
+    }
+    let mut seen: Vec<&RenderTarget> = Vec::new();
+    for c in colors.names() {
+        let t = match target(c) {
+            _ if c == SCREEN && !list => return Ok(()),
+            _ if c == SCREEN => return Err(format!("pass `{}`: a list of colour targets cannot hold `screen` (draw to targets, then to the screen in a later pass)", p.name)),
+            Some(t) if !t.format.is_depth() => t,
+            Some(_) => return Err(format!("pass `{}` draws colour into the depth target `{c}`", p.name)),
+            None => return Err(format!("pass `{}`: `color` target `{c}` names no render target", p.name)),
+        };
+        if seen.iter().any(|s| s.name == t.name) {
+            return Err(format!("pass `{}` names the colour target `{c}` twice", p.name));
+        }
+        if let Some(first) = seen.first().filter(|f| f.size != t.size) {
+            let size = |t: &RenderTarget| t.size.map_or("the output's size".to_string(), |[w, h]| format!("{w}x{h}"));
+            return Err(format!("pass `{}`: colour targets `{}` ({}) and `{c}` ({}) differ in size", p.name, first.name, size(first), size(t)));
+        }
+        seen.push(t);
+    }
+    Ok(())
 }
 
 /// Whether a texture's `kind`, `layers`, size and pattern go together.

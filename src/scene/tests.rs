@@ -33,7 +33,7 @@ fn a_fragment_program_over_screen_coordinates_draws_a_fullscreen_triangle() {
     let s = Scene::infer(&manifest(SCREEN_UV)).unwrap();
     assert_eq!(s.passes.len(), 1);
     let p = &s.passes[0];
-    assert_eq!((p.vertex.as_str(), p.fragment.as_deref(), p.color.as_deref(), p.depth.as_deref()), ("vs", Some("fs"), Some(SCREEN), None));
+    assert_eq!((p.vertex.as_str(), p.fragment.as_deref(), p.color.as_ref().and_then(ColorTargets::first), p.depth.as_deref()), ("vs", Some("fs"), Some(SCREEN), None));
     let d = &p.draws[0];
     assert_eq!(d.mesh, MeshKind::FullscreenTriangle);
     assert_eq!(d.attributes["v_position"], Attribute::Position);
@@ -574,4 +574,43 @@ def fs {
     let bad = "[[passes]]\nname = \"p\"\nvertex = \"vs\"\ncolor = \"screen\"\n[[passes.draws]]\nmesh = \"none\"\nvertices = 3\nprimitive = \"points\"\n";
     let err = Scene::parse("s.toml", bad).unwrap_err();
     assert!(err.contains("has none") && err.contains("s.toml:"), "{err}");
+}
+
+/// TWO_PASSES with its first pass drawing into `albedo` and `normal` too.
+fn gbuffer(color: &str, normal_size: &str) -> String {
+    TWO_PASSES.replace("color = \"scene\"", &format!("color = {color}")).replace(
+        "[[targets]]\nname = \"depth\"",
+        &format!("[[targets]]\nname = \"normal\"\nformat = \"rgba8\"\nsize = {normal_size}\n\n[[targets]]\nname = \"depth\""),
+    )
+}
+
+#[test]
+fn a_pass_may_draw_into_a_list_of_colour_targets() {
+    let s = Scene::parse("g.toml", &gbuffer(r#"["scene", "normal"]"#, "[128, 128]")).unwrap();
+    let c = s.passes[0].color.as_ref().unwrap();
+    assert_eq!(c.names(), ["scene", "normal"]);
+    assert_eq!(c.first(), Some("scene"));
+    assert_eq!(s.passes[1].color, Some(ColorTargets::One(SCREEN.into())), "the single form stays");
+    assert_eq!(s.to_json()["passes"][0]["color"], serde_json::json!(["scene", "normal"]));
+    assert_eq!(s.to_json()["passes"][1]["color"], "screen");
+}
+
+#[test]
+fn a_list_of_colour_targets_is_checked() {
+    let err = |color: &str, size: &str| Scene::parse("g.toml", &gbuffer(color, size)).unwrap_err();
+    let square = "[128, 128]";
+    let e = err(r#"["scene", "scene"]"#, square);
+    assert!(e.contains("`scene` twice"), "{e}");
+    let e = err(r#"["scene", "screen"]"#, square);
+    assert!(e.contains("cannot hold `screen`"), "{e}");
+    let e = err(r#"["scene", "depth"]"#, square);
+    assert!(e.contains("depth target `depth`"), "{e}");
+    let e = err(r#"["scene", "normals"]"#, square);
+    assert!(e.contains("`normals` names no render target") && e.contains('^'), "located:\n{e}");
+    let e = err(r#"["scene", "normal"]"#, "[64, 64]");
+    assert!(e.contains("differ in size") && e.contains("128x128") && e.contains("64x64"), "{e}");
+    let e = err("[]", square);
+    assert!(e.contains("`color = []`"), "{e}");
+    let e = err("3", square);
+    assert!(e.starts_with("g.toml:") && e.contains("a target name or a list of target names"), "{e}");
 }

@@ -273,3 +273,28 @@ fn a_post_processing_chain_reads_the_targets_drawn_before() {
     let share = dark as f64 / (bright.webgl2.len() / 4) as f64;
     assert!((0.8..1.0).contains(&share), "{:.1}% of the bright target is dark", share * 100.0);
 }
+
+/// shaders/scenes/deferred.toml: a G-buffer pass drawing into three colour
+/// targets at once (`color` as a list: WebGL2's drawBuffers, WebGPU's
+/// three pipeline targets), then a lighting pass reading them. Alike on
+/// both APIs and as `umbrac render --backend webgl2` draws it; with
+/// `output = "normal"` the page shows location 1's target, which differs
+/// from location 0's (`output = "albedo"`) at over 30 % of the pixels.
+#[test]
+fn a_gbuffer_pass_draws_into_several_targets() {
+    if !browser_ready() {
+        return;
+    }
+    let dir = tempfile::tempdir().unwrap();
+    let program = root().join("shaders/programs/deferred.das");
+    let scene = root().join("shaders/scenes/deferred.toml");
+    let lit = picture_at(&program, &scene, 1.0, &dir.path().join("lit"));
+    assert_like_native_at(&program, &scene, &lit, 1.0, &dir.path().join("lit"));
+    let shown = |name: &str| {
+        let file = edited(&scene, dir.path(), &format!("{name}.json"), |s| s.output = name.into());
+        picture_at(&program, &file, 1.0, &dir.path().join(name)).webgl2
+    };
+    let (albedo, normal) = (shown("albedo"), shown("normal"));
+    let differ = albedo.chunks(4).zip(normal.chunks(4)).filter(|(a, n)| (0..3).any(|k| (a[k] as i32 - n[k] as i32).abs() > 8)).count();
+    assert!(differ * 10 >= 3 * albedo.len() / 4, "the normal target differs from the albedo target at only {differ} pixels");
+}

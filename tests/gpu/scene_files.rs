@@ -207,3 +207,104 @@ console.log(JSON.stringify(out));";
     }
     assert!(failures.is_empty(), "{}", failures.join("\n"));
 }
+
+/// shaders/scenes/deferred.toml: a G-buffer pass writes albedo, normal and
+/// position (shaders/programs/deferred.das, output locations 0..2) into
+/// three targets at once (`color` as a list), a lighting pass reads them
+/// onto the screen. Drawn on every consumer at 96 x 72 (the screen, and
+/// each target shown with `output`):
+/// - the consumers agree pairwise: at most 1 % of the pixels differ by more
+///   than `any::DELTA` (as the two-pass scene of tests/gpu/any_program.rs);
+/// - each target holds what its location wrote: every albedo texel is the
+///   cube's, the floor's or the clear (0 with alpha 0), each at least 5 %
+///   of them; under the floor's texels the normal target holds (0, 1, 0)
+///   and the position target y = 0 (both stored biased, within 2/255);
+///   under the cube's, a unit normal (length within 0.05) and a position
+///   above the floor;
+/// - the screen is lit: over 30 % of it brighter than the sky, and it
+///   differs from the albedo target at over 30 % of the pixels.
+#[test]
+fn the_deferred_scene_writes_three_targets_and_lights_them_on_every_consumer() {
+    use umbrac::render::command::any;
+    use umbrac::render::consumers::{Programs, Status};
+    let path = root().join("shaders/programs/deferred.das");
+    let c = umbrac::compile_file(&path, &umbrac::Options::default());
+    let compiled = c.result.as_ref().filter(|_| !c.has_errors()).unwrap_or_else(|| panic!("{}", c.render_diagnostics()));
+    let programs = Programs::from_compiled("deferred.das", compiled).unwrap();
+    let scene_file = scene_path("deferred");
+    let text = std::fs::read_to_string(&scene_file).unwrap();
+    let scene = Scene::parse(&scene_file.display().to_string(), &text).unwrap_or_else(|e| panic!("{e}"));
+    let outputs = ["screen", "albedo", "normal", "position"];
+    let planners: Vec<ScenePlanner> = outputs
+        .iter()
+        .map(|o| {
+            let mut s = scene.clone();
+            s.output = o.to_string();
+            ScenePlanner::new(o, s, &compiled.reflection, scene_file.parent()).unwrap_or_else(|e| panic!("{e}"))
+        })
+        .collect();
+    let f = FrameInputs { time: 1.0, frame: 0, width: 96, height: 72 };
+    let jobs: Vec<_> = planners.iter().map(|p| (&programs, p, f)).collect();
+    let comparisons = any::compare_many(&jobs).unwrap_or_else(|e| panic!("{e}"));
+    for (o, cmp) in outputs.iter().zip(&comparisons) {
+        for (a, b, d) in &cmp.pairs {
+            assert!(d.fraction_over <= 0.01, "{o}: {} vs {}: {:.4} of the pixels over {}/255\n{}", a.name(), b.name(), d.fraction_over, any::DELTA, any::table(&cmp.pairs));
+        }
+    }
+    let mut drawn = 0;
+    for (i, (consumer, _)) in comparisons[0].results.iter().enumerate() {
+        let images: Vec<&image::RgbaImage> = outputs
+            .iter()
+            .zip(&comparisons)
+            .filter_map(|(o, cmp)| match &cmp.results[i].1 {
+                Status::Rendered { image, .. } => Some(image),
+                Status::Unavailable { why, .. } => {
+                    crate::support::skip(format!("{}: {why}", consumer.name()));
+                    None
+                }
+                Status::Failed(e) => panic!("deferred.toml (output {o}) on {}: {e}", consumer.name()),
+            })
+            .collect();
+        let [screen, albedo, normal, position] = images[..] else { continue };
+        for (o, img) in outputs.iter().zip(&images) {
+            image_ops::save_png(img, &gpu::artifacts_dir("scene-files").join(format!("deferred-{o}.{}.png", consumer.name()))).unwrap();
+        }
+        check_gbuffer(consumer.name(), screen, albedo, normal, position);
+        drawn += 1;
+    }
+    eprintln!("the deferred scene drawn on {drawn} consumers");
+}
+
+/// The G-buffer's texels against what deferred.das writes (see the test above).
+fn check_gbuffer(consumer: &str, screen: &image::RgbaImage, albedo: &image::RgbaImage, normal: &image::RgbaImage, position: &image::RgbaImage) {
+    let byte = |x: f32| (x * 255.0).round() as i32;
+    let near = |p: &image::Rgba<u8>, want: [i32; 4], tol: i32| (0..4).all(|k| (p[k] as i32 - want[k]).abs() <= tol);
+    let cube = [byte(0.9), byte(0.45), byte(0.2), 255];
+    let floor = [byte(0.35), byte(0.45), byte(0.6), 255];
+    let n = albedo.pixels().len();
+    let (mut cubes, mut floors, mut clears) = (0, 0, 0);
+    let decode = |p: &image::Rgba<u8>, k: usize| p[k] as f32 / 255.0 * 2.0 - 1.0;
+    for ((a, nm), pos) in albedo.pixels().zip(normal.pixels()).zip(position.pixels()) {
+        if near(a, floor, 1) {
+            floors += 1;
+            assert!(near(nm, [128, 255, 128, 255], 2), "{consumer}: a floor texel's normal is {nm:?}, not (0, 1, 0)");
+            assert!((pos[1] as i32 - 128).abs() <= 2 && pos[3] == 255, "{consumer}: a floor texel's position is {pos:?}, not at y = 0");
+        } else if near(a, cube, 1) {
+            cubes += 1;
+            let len = (0..3).map(|k| decode(nm, k).powi(2)).sum::<f32>().sqrt();
+            assert!((len - 1.0).abs() <= 0.05, "{consumer}: a cube texel's normal {nm:?} is {len} long");
+            assert!(pos[1] as i32 >= 127 && pos[3] == 255, "{consumer}: a cube texel's position {pos:?} is below the floor");
+        } else {
+            assert!(near(a, [0, 0, 0, 0], 0), "{consumer}: an albedo texel {a:?} is neither the cube's, the floor's nor the clear");
+            clears += 1;
+        }
+    }
+    for (what, count) in [("cube", cubes), ("floor", floors), ("clear", clears)] {
+        assert!(count * 20 >= n, "{consumer}: {count} of {n} albedo texels are the {what}'s");
+    }
+    let sky = [byte(0.05), byte(0.06), byte(0.1), 255];
+    let lit = screen.pixels().filter(|p| !near(p, sky, 2) && p[0] as i32 + p[1] as i32 + p[2] as i32 > 60).count();
+    assert!(lit * 10 >= n * 3, "{consumer}: {lit} of {n} screen pixels are lit");
+    let differs = image_ops::diff(screen, albedo, DELTA).fraction_over;
+    assert!(differs >= 0.3, "{consumer}: the screen differs from the albedo target at only {:.1} % of the pixels", 100.0 * differs);
+}

@@ -126,6 +126,7 @@ fn plan(vertex: &str, fragment: &str) -> FramePlan {
         vertex: vertex.into(),
         fragment: Some(fragment.into()),
         color: Some(Attachment { target: image, clear: [0.0, 0.0, 0.0, 1.0] }),
+        more_colors: Vec::new(),
         depth: None,
         cull: Cull::None,
         depth_bias: false,

@@ -93,6 +93,8 @@ export function passesPlan(m, scene) {
     if (!vertex || vertex.stage !== 'vertex') throw new DrawError('plan', `pass \`${p.name}\`: the program has no vertex entry point \`${p.vertex}\``);
     if (p.fragment && (!fragment || fragment.stage !== 'fragment')) throw new DrawError('plan', `pass \`${p.name}\`: the program has no fragment entry point \`${p.fragment}\``);
     if (!p.color && !p.depth) throw new DrawError('plan', `pass \`${p.name}\` draws into nothing (no \`color\`, no \`depth\`)`);
+    // `color`: one name, or a list (output location i -> the i-th target).
+    const colors = p.color == null ? [] : Array.isArray(p.color) ? p.color : [p.color];
     const entries = [vertex, fragment].filter(Boolean);
     const samplers = [];
     for (const [name, input] of Object.entries(p.samplers ?? {})) {
@@ -104,7 +106,7 @@ export function passesPlan(m, scene) {
       if (decl.dimension !== '2d' || decl.array_size) throw new DrawError('plan', `the preview binds 2D textures to scene samplers; \`${name} : ${decl.type}\` is not one`);
       if (decl.comparison && !depth) throw new DrawError('plan', `pass \`${p.name}\`: the comparison sampler \`${name}\` reads \`${input.texture}\`, which is not a depth target`);
       if (!depth && decl.sample_type !== 'float') throw new DrawError('plan', `pass \`${p.name}\`: \`${name} : ${decl.type}\` reads colour as ${decl.sample_type}; the preview's textures are float`);
-      if (target && (target.name === p.color || target.name === p.depth)) throw new DrawError('plan', `pass \`${p.name}\` samples \`${target.name}\`, which it draws into`);
+      if (target && (colors.includes(target.name) || target.name === p.depth)) throw new DrawError('plan', `pass \`${p.name}\` samples \`${target.name}\`, which it draws into`);
       const source = target ? { target: target.name, depth } : texture.pattern ? { pattern: texture.pattern, size: texture.size ?? [64, 64] } : { image: texture.image };
       if (source.image) images.add(source.image);
       const filter = input.filter ?? 'linear';
@@ -121,17 +123,18 @@ export function passesPlan(m, scene) {
       if (d.primitive === 'points') throw new DrawError('plan', `draw ${i + 1} of pass \`${p.name}\` is of points, which the preview draws in scenes of one pass and one draw only`);
       return { ...drawGeometry(vertex, d), values: d.values ?? {}, transform: d.transform ?? null };
     });
-    if (fragment && p.color) {
-      const out0 = colourOutputs(fragment).find((o) => o.location === 0);
-      if (!out0) throw new DrawError('plan', `pass \`${p.name}\` draws colour, and \`${fragment.name}\` has no float colour output at location 0`);
+    if (fragment) {
+      colors.forEach((c, i) => {
+        if (!colourOutputs(fragment).some((o) => o.location === i)) throw new DrawError('plan', `pass \`${p.name}\` draws colour into \`${c}\`, and \`${fragment.name}\` has no float colour output at location ${i}`);
+      });
     }
     return {
-      name: p.name, vertex, fragment, entries, color: p.color ?? null, depth: p.depth ?? null, clear: p.clear ?? [0, 0, 0, 1],
+      name: p.name, vertex, fragment, entries, color: colors[0] ?? null, colors, depth: p.depth ?? null, clear: p.clear ?? [0, 0, 0, 1],
       cull: p.cull ?? 'none', depthBias: !!p.depth_bias, samplers, values: p.values ?? {}, draws,
     };
   });
   // The depth view: the depth target of the last pass into the output.
-  const last = [...passes].reverse().find((p) => (p.color ?? null) === output);
+  const last = [...passes].reverse().find((p) => (p.color ?? null) === output || p.colors.includes(output));
   const entries = [...new Set(passes.flatMap((p) => p.entries))];
   return {
     passes, targets, output, images: [...images], viewDepth: last?.depth ?? null,
@@ -378,19 +381,22 @@ export class GLPasses {
     gl.depthMask(true);
     gl.bindFramebuffer(gl.FRAMEBUFFER, fbo);
     for (const { pass, program, vaos } of this.passes) {
-      const colour = pass.color ? made[pass.color] : null;
+      const colours = pass.colors.map((c) => made[c]);
+      const colour = colours[0] ?? null;
       const depth = pass.depth ? made[pass.depth] : null;
-      gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0, gl.TEXTURE_2D, colour?.texture ?? null, 0);
+      // One framebuffer for every pass: attachment i is location i's target,
+      // those an earlier pass left beyond this pass's list are detached.
+      for (let i = 0; i < Math.max(colours.length, this.attached ?? 1); i++) {
+        gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.COLOR_ATTACHMENT0 + i, gl.TEXTURE_2D, colours[i]?.texture ?? null, 0);
+      }
+      this.attached = colours.length;
       gl.framebufferTexture2D(gl.FRAMEBUFFER, gl.DEPTH_ATTACHMENT, gl.TEXTURE_2D, depth?.texture ?? null, 0);
-      gl.drawBuffers([colour ? gl.COLOR_ATTACHMENT0 : gl.NONE]);
+      gl.drawBuffers(colours.length ? colours.map((_, i) => gl.COLOR_ATTACHMENT0 + i) : [gl.NONE]);
       const status = gl.checkFramebufferStatus(gl.FRAMEBUFFER);
       if (status !== gl.FRAMEBUFFER_COMPLETE) throw new DrawError('api', `pass \`${pass.name}\`: incomplete framebuffer (${status})`);
       const drawn = colour ?? depth;
       gl.viewport(0, 0, drawn.width, drawn.height);
-      if (colour) {
-        gl.clearColor(...pass.clear);
-        gl.clear(gl.COLOR_BUFFER_BIT);
-      }
+      colours.forEach((_, i) => gl.clearBufferfv(gl.COLOR, i, new Float32Array(pass.clear)));
       if (depth) {
         gl.enable(gl.DEPTH_TEST);
         gl.clearDepth(1);
@@ -570,7 +576,7 @@ export class GPUPasses {
     return this.device.createRenderPipeline({
       layout,
       vertex: { module: this.module, entryPoint: pass.vertex.name, buffers },
-      fragment: pass.fragment ? { module: this.module, entryPoint: pass.fragment.name, targets: pass.color ? [{ format: 'rgba8unorm' }] : [] } : undefined,
+      fragment: pass.fragment ? { module: this.module, entryPoint: pass.fragment.name, targets: pass.colors.map(() => ({ format: 'rgba8unorm' })) } : undefined,
       // umbrac's portable WGSL flips y, so GL's counter-clockwise fronts arrive clockwise.
       primitive: { topology: 'triangle-list', frontFace: 'cw', cullMode: pass.cull },
       depthStencil: depth ? {
@@ -625,10 +631,9 @@ export class GPUPasses {
     const conv = conventionsOf(inputs, this.plan, target.width, target.height);
     const enc = device.createCommandEncoder();
     for (const { pass, groups, layouts, draws } of this.passes) {
-      const colour = pass.color ? made[pass.color] : null;
       const depth = pass.depth ? made[pass.depth] : null;
       const rp = enc.beginRenderPass({
-        colorAttachments: colour ? [{ view: colour.texture.createView(), loadOp: 'clear', storeOp: 'store', clearValue: pass.clear }] : [],
+        colorAttachments: pass.colors.map((c) => ({ view: made[c].texture.createView(), loadOp: 'clear', storeOp: 'store', clearValue: pass.clear })),
         depthStencilAttachment: depth ? { view: depth.texture.createView(), depthClearValue: 1, depthLoadOp: 'clear', depthStoreOp: 'store' } : undefined,
       });
       const textureOf = (s) => {

@@ -278,6 +278,7 @@ pub fn plan_json(set: &ShaderSet, plan: &FramePlan) -> Result<(Value, Vec<(Strin
             "name": pass.name,
             "program": programs.len() - 1,
             "color": pass.color.map(|a| json!({ "target": a.target.0, "clear": a.clear })),
+            "more_colors": pass.more_colors.iter().map(|a| json!({ "target": a.target.0, "clear": a.clear })).collect::<Vec<_>>(),
             "depth": pass.depth.map(|a| json!({ "target": a.target.0, "clear": a.clear })),
             "cull": match pass.cull { Cull::None => "none", Cull::Front => "front", Cull::Back => "back" },
             "depth_bias": pass.depth_bias,

@@ -21,6 +21,7 @@ pub fn plan(vertex: &str, fragment: &str, width: u32) -> FramePlan {
         vertex: vertex.into(),
         fragment: Some(fragment.into()),
         color: Some(Attachment { target: out, clear: [0.0; 4] }),
+        more_colors: Vec::new(),
         depth: None,
         cull: Cull::None,
         depth_bias: false,

@@ -255,6 +255,9 @@ pub struct Pass {
     /// a fragment shader on ES, gets an empty one.
     pub fragment: Option<String>,
     pub color: Option<Attachment<[f64; 4]>>,
+    /// Colour attachments for fragment outputs at locations 1, 2, ... (a
+    /// G-buffer pass); empty for a pass with one colour target or none.
+    pub more_colors: Vec<Attachment<[f64; 4]>>,
     /// Depth test LESS with writes, against this attachment.
     pub depth: Option<Attachment<f32>>,
     pub cull: Cull,
@@ -283,7 +286,12 @@ impl Pass {
 
     /// The targets this pass renders into.
     pub fn writes(&self, target: TargetId) -> bool {
-        self.color.is_some_and(|a| a.target == target) || self.depth.is_some_and(|a| a.target == target)
+        self.colors().any(|a| a.target == target) || self.depth.is_some_and(|a| a.target == target)
+    }
+
+    /// Every colour attachment, output location 0 first.
+    pub fn colors(&self) -> impl Iterator<Item = &Attachment<[f64; 4]>> {
+        self.color.iter().chain(&self.more_colors)
     }
 }
 
@@ -354,10 +362,20 @@ impl FramePlan {
             }
         }
         for p in &self.passes {
-            if let Some(c) = p.color {
+            if p.color.is_none() && !p.more_colors.is_empty() {
+                return Err(format!("pass `{}` has colour attachments for locations 1.. but none for location 0", p.name));
+            }
+            for c in p.colors() {
                 if self.target(c.target).format.is_depth() {
                     return Err(format!("pass `{}` draws colour into the depth target `{}`", p.name, self.target(c.target).name));
                 }
+            }
+            let colors: Vec<&Target> = p.colors().map(|c| self.target(c.target)).collect();
+            if let Some(t) = colors.iter().find(|t| (t.width, t.height) != (colors[0].width, colors[0].height)) {
+                return Err(format!("pass `{}` draws into `{}` and `{}`, of different sizes", p.name, colors[0].name, t.name));
+            }
+            if let Some((i, c)) = p.colors().enumerate().find(|(i, c)| p.colors().take(*i).any(|d| d.target == c.target)) {
+                return Err(format!("pass `{}` draws colour location {i} into `{}`, which an earlier location also draws into", p.name, self.target(c.target).name));
             }
             if let Some(d) = p.depth {
                 if !self.target(d.target).format.is_depth() {
@@ -367,7 +385,7 @@ impl FramePlan {
             if p.color.is_none() && p.depth.is_none() {
                 return Err(format!("pass `{}` has no attachment", p.name));
             }
-            if let Some(t) = [p.color.map(|a| a.target), p.depth.map(|a| a.target)].into_iter().flatten().map(|t| self.target(t)).find(|t| t.dim != Dim::D2) {
+            if let Some(t) = p.colors().map(|a| a.target).chain(p.depth.map(|a| a.target)).map(|t| self.target(t)).find(|t| t.dim != Dim::D2) {
                 return Err(format!("pass `{}` draws into the {} texture `{}`: passes draw into 2D targets only", p.name, t.dim.name(), t.name));
             }
         }

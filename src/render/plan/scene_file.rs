@@ -95,8 +95,14 @@ impl ScenePlanner {
         let id = |n: &str| ids.iter().find(|(name, _)| *name == n).map(|(_, id)| *id).expect("checked: every name is declared");
         for p in &s.passes {
             let vs = self.entry(&p.vertex, "vertex")?;
+            let colors = p.color.as_ref().map_or(&[][..], |c| c.names());
             if let Some(fs) = &p.fragment {
-                self.entry(fs, "fragment")?;
+                let fs = self.entry(fs, "fragment")?;
+                // A target with no output to fill is invalid on WebGPU; an
+                // output with no target is discarded on every API.
+                if let Some(i) = (0..colors.len()).find(|&i| colors.len() > 1 && !fs.outputs.iter().any(|o| o.location as usize == i)) {
+                    return Err(format!("{label}: pass `{}`: `color` target `{}` is for output location {i}, which fragment `{}` does not write", p.name, colors[i], fs.name));
+                }
             }
             let mut textures = Vec::new();
             for (sampler, input) in &p.samplers {
@@ -132,7 +138,8 @@ impl ScenePlanner {
                 name: p.name.clone(),
                 vertex: p.vertex.clone(),
                 fragment: p.fragment.clone(),
-                color: p.color.as_deref().map(|c| Attachment { target: id(c), clear: p.clear.map(f64::from) }),
+                color: colors.first().map(|c| Attachment { target: id(c), clear: p.clear.map(f64::from) }),
+                more_colors: colors.iter().skip(1).map(|c| Attachment { target: id(c), clear: p.clear.map(f64::from) }).collect(),
                 depth: p.depth.as_deref().map(|d| Attachment { target: id(d), clear: 1.0 }),
                 cull: match p.cull {
                     scene::Cull::None => Cull::None,
@@ -445,6 +452,26 @@ mod tests {
         assert!(!plan.passes[0].textures.iter().find(|t| t.sampler == "u_b").unwrap().sampling.linear);
         let err = ScenePlanner::new("s", scene, &r, Some(Path::new("/nonexistent"))).unwrap_err();
         assert!(err.contains("texture `b`") && err.contains("tex.png"), "{err}");
+    }
+
+    /// A `color` list becomes the pass's attachments in location order; a
+    /// list reaching a location the fragment does not write is refused.
+    #[test]
+    fn a_color_list_attaches_each_location_to_its_target() {
+        let src = "var @out @location = 0 g_a : float4\nvar @out @location = 1 g_b : float4\n[vertex_program]\ndef vs {\n    gl_Position = float4(0.0, 0.0, 0.0, 1.0)\n}\n[fragment_program]\ndef fs {\n    g_a = float4(1.0)\n    g_b = float4(0.5)\n}\n";
+        let c = crate::compile_source("t.das", src, &crate::Options::default());
+        let r = c.result.unwrap().reflection;
+        let toml = |color: &str| {
+            let targets: String = ["a", "b", "c"].iter().map(|n| format!("[[targets]]\nname = \"{n}\"\nformat = \"rgba8\"\n")).collect();
+            format!("output = \"b\"\n{targets}[[passes]]\nname = \"g\"\nvertex = \"vs\"\nfragment = \"fs\"\ncolor = {color}\n[[passes.draws]]\nmesh = \"none\"\nvertices = 3\n")
+        };
+        let plan = ScenePlanner::new("s", Scene::parse("s.toml", &toml(r#"["a", "b"]"#)).unwrap(), &r, None).unwrap().plan(&f()).unwrap();
+        let id = |n: &str| TargetId(plan.targets.iter().position(|t| t.name == n).unwrap());
+        let p = &plan.passes[0];
+        assert_eq!(p.colors().map(|a| a.target).collect::<Vec<_>>(), [id("a"), id("b")]);
+        assert!(p.writes(id("b")) && !p.writes(id("c")));
+        let err = ScenePlanner::new("s", Scene::parse("s.toml", &toml(r#"["a", "b", "c"]"#)).unwrap(), &r, None).err().unwrap();
+        assert!(err.contains("`c` is for output location 2, which fragment `fs` does not write"), "{err}");
     }
 
     #[test]

@@ -97,22 +97,23 @@ impl GlExecutor {
     }
 
     /// A framebuffer drawing into `color` and / or `depth`, bound.
-    fn framebuffer(&self, textures: &[Obj<glow::Texture>], color: Option<TargetId>, depth: Option<TargetId>) -> Result<Obj<glow::Framebuffer>, ExecError> {
+    fn framebuffer(&self, textures: &[Obj<glow::Texture>], colors: &[TargetId], depth: Option<TargetId>) -> Result<Obj<glow::Framebuffer>, ExecError> {
         let gl = self.ctx.current()?;
         // SAFETY: framebuffer setup on the current context with its textures.
         unsafe {
             let fbo = Obj::new(&self.ctx, gl.create_framebuffer().map_err(ExecError::Api)?);
             gl.bind_framebuffer(glow::FRAMEBUFFER, Some(fbo.raw()));
-            match color {
-                Some(c) => {
-                    gl.framebuffer_texture_2d(glow::FRAMEBUFFER, glow::COLOR_ATTACHMENT0, glow::TEXTURE_2D, Some(textures[c.0].raw()), 0);
-                    gl.draw_buffers(&[glow::COLOR_ATTACHMENT0]);
-                    gl.read_buffer(glow::COLOR_ATTACHMENT0);
-                }
-                None => {
-                    gl.draw_buffers(&[glow::NONE]);
-                    gl.read_buffer(glow::NONE);
-                }
+            // Output location i draws into attachment i.
+            let buffers: Vec<u32> = (0..colors.len() as u32).map(|i| glow::COLOR_ATTACHMENT0 + i).collect();
+            for (&b, c) in buffers.iter().zip(colors) {
+                gl.framebuffer_texture_2d(glow::FRAMEBUFFER, b, glow::TEXTURE_2D, Some(textures[c.0].raw()), 0);
+            }
+            if buffers.is_empty() {
+                gl.draw_buffers(&[glow::NONE]);
+                gl.read_buffer(glow::NONE);
+            } else {
+                gl.draw_buffers(&buffers);
+                gl.read_buffer(glow::COLOR_ATTACHMENT0);
             }
             if let Some(d) = depth {
                 gl.framebuffer_texture_2d(glow::FRAMEBUFFER, glow::DEPTH_ATTACHMENT, glow::TEXTURE_2D, Some(textures[d.0].raw()), 0);
@@ -131,19 +132,19 @@ impl GlExecutor {
         let linked = self.linked(prepared, plan, index)?;
         let units = bind::gl::textures(&linked.binding, pass).map_err(ExecError::Program)?;
         let samplers = units.iter().map(|&(_, t)| self.sampler(pass.textures[t].sampling)).collect::<Result<Vec<_>, _>>()?;
-        let _fbo = self.framebuffer(textures, pass.color.map(|a| a.target), pass.depth.map(|a| a.target))?;
+        let colors: Vec<TargetId> = pass.colors().map(|a| a.target).collect();
+        let _fbo = self.framebuffer(textures, &colors, pass.depth.map(|a| a.target))?;
         let drawn = plan.target(pass.color.map(|a| a.target).or(pass.depth.map(|a| a.target)).expect("a pass has an attachment (checked)"));
         let gl = self.ctx.current()?;
         // SAFETY (whole block): GL calls on the current context with objects
         // made here or held by `linked` and the executor.
         unsafe {
             gl.viewport(0, 0, drawn.width as i32, drawn.height as i32);
-            if let Some(c) = pass.color {
+            for (i, c) in pass.colors().enumerate() {
                 if plan.target(c.target).format == Format::Rgba32Uint {
-                    gl.clear_buffer_u32_slice(glow::COLOR, 0, &c.clear.map(|x| x as u32));
+                    gl.clear_buffer_u32_slice(glow::COLOR, i as u32, &c.clear.map(|x| x as u32));
                 } else {
-                    gl.clear_color(c.clear[0] as f32, c.clear[1] as f32, c.clear[2] as f32, c.clear[3] as f32);
-                    gl.clear(glow::COLOR_BUFFER_BIT);
+                    gl.clear_buffer_f32_slice(glow::COLOR, i as u32, &c.clear.map(|x| x as f32));
                 }
             }
             match pass.depth {
@@ -230,7 +231,7 @@ impl GlExecutor {
     fn read_back(&self, plan: &FramePlan, textures: &[Obj<glow::Texture>], top_first: bool) -> Result<Readback, ExecError> {
         let t = plan.target(plan.readback);
         let depth = t.format.is_depth();
-        let _fbo = if depth { self.framebuffer(textures, None, Some(plan.readback))? } else { self.framebuffer(textures, Some(plan.readback), None)? };
+        let _fbo = if depth { self.framebuffer(textures, &[], Some(plan.readback))? } else { self.framebuffer(textures, &[plan.readback], None)? };
         let (w, h) = (t.width, t.height);
         let (format, ty, texel) = match t.format {
             Format::Rgba8 => (glow::RGBA, glow::UNSIGNED_BYTE, 4),

@@ -342,7 +342,7 @@ impl GlExecutor {
                         gl.bind_attrib_location(program.raw(), location, &a.glsl_name);
                     }
                 }
-                // GLES has no glBindFragDataLocation: its lone output is 0.
+                // GLES has no glBindFragDataLocation: its outputs carry layout locations.
                 if self.consumer != Consumer::Gles300 {
                     for (name, location) in &b.outputs {
                         gl.bind_frag_data_location(program.raw(), *location, name);

@@ -179,18 +179,21 @@ impl WgpuExecutor {
                     .collect()
             })
             .collect();
-        let color_attachment = pass.color.map(|a| {
-            let c = a.clear;
-            [Some(wgpu::RenderPassColorAttachment {
-                view: &views[a.target.0],
-                depth_slice: None,
-                resolve_target: None,
-                ops: wgpu::Operations { load: wgpu::LoadOp::Clear(wgpu::Color { r: c[0], g: c[1], b: c[2], a: c[3] }), store: wgpu::StoreOp::Store },
-            })]
-        });
+        let color_attachments: Vec<_> = pass
+            .colors()
+            .map(|a| {
+                let c = a.clear;
+                Some(wgpu::RenderPassColorAttachment {
+                    view: &views[a.target.0],
+                    depth_slice: None,
+                    resolve_target: None,
+                    ops: wgpu::Operations { load: wgpu::LoadOp::Clear(wgpu::Color { r: c[0], g: c[1], b: c[2], a: c[3] }), store: wgpu::StoreOp::Store },
+                })
+            })
+            .collect();
         let mut rp = encoder.begin_render_pass(&wgpu::RenderPassDescriptor {
             label: Some(&pass.name),
-            color_attachments: color_attachment.as_ref().map_or(&[], |c| c.as_slice()),
+            color_attachments: &color_attachments,
             depth_stencil_attachment: pass.depth.map(|a| wgpu::RenderPassDepthStencilAttachment {
                 view: &views[a.target.0],
                 depth_ops: Some(wgpu::Operations { load: wgpu::LoadOp::Clear(a.clear), store: wgpu::StoreOp::Store }),

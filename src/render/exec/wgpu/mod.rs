@@ -73,7 +73,8 @@ pub struct WgpuExecutor {
 struct PipelineKey {
     vertex: String,
     fragment: Option<String>,
-    color: Option<Format>,
+    /// The colour targets' formats, output location 0 first.
+    color: Vec<Format>,
     depth: Option<Format>,
     cull: Cull,
     depth_bias: bool,
@@ -260,7 +261,7 @@ impl WgpuExecutor {
         Ok(PipelineKey {
             vertex: pass.vertex.clone(),
             fragment: pass.fragment.clone(),
-            color: pass.color.map(|a| plan.target(a.target).format),
+            color: pass.colors().map(|a| plan.target(a.target).format).collect(),
             depth: pass.depth.map(|a| plan.target(a.target).format),
             cull: pass.cull,
             depth_bias: pass.depth_bias,
@@ -344,7 +345,7 @@ impl WgpuExecutor {
             (_, 0) => &buffers[..1],
             _ => &buffers,
         };
-        let color = key.color.map(|f| [Some(wgpu::ColorTargetState { format: texture_format(f), blend: None, write_mask: wgpu::ColorWrites::ALL })]);
+        let color: Vec<_> = key.color.iter().map(|&f| Some(wgpu::ColorTargetState { format: texture_format(f), blend: None, write_mask: wgpu::ColorWrites::ALL })).collect();
         let module = |entry: &str| &program.modules[program.entry_module.get(entry).copied().unwrap_or(0)];
         let pipeline = self.device.create_render_pipeline(&wgpu::RenderPipelineDescriptor {
             label: Some(&key.vertex),
@@ -373,7 +374,7 @@ impl WgpuExecutor {
                 module: module(f),
                 entry_point: Some(f),
                 compilation_options: Default::default(),
-                targets: color.as_ref().map_or(&[], |c| c.as_slice()),
+                targets: &color,
             }),
             multiview_mask: None,
             cache: None,
