@@ -27,7 +27,11 @@ try {
   browser = await launch({ webgpu: true, quiet: ['GPU stall'], profilePrefix: 'umbrac-preview-' });
   result.browser = browser.version;
   const page = await browser.newPage();
-  await page.goto(url, { timeout: LAUNCH_MS });
+  // Committed is enough: the page's own state says when it has drawn (below,
+  // with the longer wait). Waiting for `load` here timed out at 60 s on a
+  // loaded 2-core machine with several browsers drawing at once.
+  await page.goto(url, { timeout: LAUNCH_MS, waitUntil: 'commit' });
+  await page.waitForFunction(() => document.readyState !== 'loading', null, WAIT);
   // A mark that a reload would lose.
   await page.evaluate(() => { window.umbracNotReloaded = true; });
   let seen = 0;
