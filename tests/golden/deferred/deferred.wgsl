@@ -8,24 +8,24 @@ struct Uniforms {
     u_cam_pos: vec3<f32>,
 }
 
-struct gbuffer_vs_out {
+struct deferred_geometry_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_world: vec3<f32>,
     @location(1) v_normal: vec3<f32>,
 }
 
-struct gbuffer_fs_out {
+struct deferred_geometry_fs_out {
     @location(0) g_albedo: vec4<f32>,
     @location(1) g_normal: vec4<f32>,
     @location(2) g_position: vec4<f32>,
 }
 
-struct lighting_vs_out {
+struct deferred_lighting_vs_out {
     @builtin(position) gl_Position: vec4<f32>,
     @location(0) v_uv: vec2<f32>,
 }
 
-struct lighting_fs_out {
+struct deferred_lighting_fs_out {
     @location(0) f_color: vec4<f32>,
 }
 
@@ -47,7 +47,7 @@ var gbuf_position: texture_2d<f32>;
 var gbuf_position_sampler: sampler;
 
 @vertex 
-fn gbuffer_vs(@location(0) a_pos: vec3<f32>, @location(1) a_normal: vec3<f32>) -> gbuffer_vs_out {
+fn deferred_geometry_vs(@location(0) a_pos: vec3<f32>, @location(1) a_normal: vec3<f32>) -> deferred_geometry_vs_out {
     var v_world: vec3<f32>;
     var v_normal: vec3<f32>;
     var gl_Position: vec4<f32>;
@@ -62,11 +62,11 @@ fn gbuffer_vs(@location(0) a_pos: vec3<f32>, @location(1) a_normal: vec3<f32>) -
     let _e21 = gl_Position;
     let _e31 = v_world;
     let _e32 = v_normal;
-    return gbuffer_vs_out(vec4<f32>(_e21.x, -(_e21.y), ((_e21.z + _e21.w) * 0.5f), _e21.w), _e31, _e32);
+    return deferred_geometry_vs_out(vec4<f32>(_e21.x, -(_e21.y), ((_e21.z + _e21.w) * 0.5f), _e21.w), _e31, _e32);
 }
 
 @fragment 
-fn gbuffer_fs(@location(0) v_world_1: vec3<f32>, @location(1) v_normal_1: vec3<f32>) -> gbuffer_fs_out {
+fn deferred_geometry_fs(@location(0) v_world_1: vec3<f32>, @location(1) v_normal_1: vec3<f32>) -> deferred_geometry_fs_out {
     var g_albedo: vec4<f32>;
     var g_normal: vec4<f32>;
     var g_position: vec4<f32>;
@@ -78,11 +78,11 @@ fn gbuffer_fs(@location(0) v_world_1: vec3<f32>, @location(1) v_normal_1: vec3<f
     let _e22 = g_albedo;
     let _e23 = g_normal;
     let _e24 = g_position;
-    return gbuffer_fs_out(_e22, _e23, _e24);
+    return deferred_geometry_fs_out(_e22, _e23, _e24);
 }
 
 @vertex 
-fn lighting_vs(@builtin(vertex_index) VertexID: u32) -> lighting_vs_out {
+fn deferred_lighting_vs(@builtin(vertex_index) VertexID: u32) -> deferred_lighting_vs_out {
     var v_uv: vec2<f32>;
     var gl_Position_1: vec4<f32>;
 
@@ -92,11 +92,11 @@ fn lighting_vs(@builtin(vertex_index) VertexID: u32) -> lighting_vs_out {
     gl_Position_1 = vec4<f32>(((corner * 2f) - vec2(1f)), 0f, 1f);
     let _e20 = gl_Position_1;
     let _e30 = v_uv;
-    return lighting_vs_out(vec4<f32>(_e20.x, -(_e20.y), ((_e20.z + _e20.w) * 0.5f), _e20.w), _e30);
+    return deferred_lighting_vs_out(vec4<f32>(_e20.x, -(_e20.y), ((_e20.z + _e20.w) * 0.5f), _e20.w), _e30);
 }
 
 @fragment 
-fn lighting_fs(@location(0) v_uv_1: vec2<f32>) -> lighting_fs_out {
+fn deferred_lighting_fs(@location(0) v_uv_1: vec2<f32>) -> deferred_lighting_fs_out {
     var f_color: vec4<f32>;
 
     let albedo = textureSample(gbuf_albedo, gbuf_albedo_sampler, v_uv_1);
@@ -115,5 +115,5 @@ fn lighting_fs(@location(0) v_uv_1: vec2<f32>) -> lighting_fs_out {
     let lit = ((albedo.xyz * (0.1f + diffuse)) + vec3(specular));
     f_color = vec4<f32>(mix(vec3<f32>(0.05f, 0.06f, 0.1f), lit, vec3(albedo.w)), 1f);
     let _e65 = f_color;
-    return lighting_fs_out(_e65);
+    return deferred_lighting_fs_out(_e65);
 }

@@ -1,5 +1,9 @@
-#version 330 core
-struct gbuffer_vs_out {
+#version 300 es
+
+precision highp float;
+precision highp int;
+
+struct deferred_geometry_vs_out {
     vec4 gen_gl_Position;
     vec3 v_world;
     vec3 v_normal;
@@ -29,7 +33,7 @@ void main() {
     vec4 _e19 = gen_gl_Position;
     vec3 _e20 = out_v_world;
     vec3 _e21 = out_v_normal;
-    gbuffer_vs_out _tmp_return = gbuffer_vs_out(_e19, _e20, _e21);
+    deferred_geometry_vs_out _tmp_return = deferred_geometry_vs_out(_e19, _e20, _e21);
     gl_Position = _tmp_return.gen_gl_Position;
     v_world = _tmp_return.v_world;
     v_normal = _tmp_return.v_normal;

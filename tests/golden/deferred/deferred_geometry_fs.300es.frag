@@ -3,7 +3,7 @@
 precision highp float;
 precision highp int;
 
-struct gbuffer_fs_out {
+struct deferred_geometry_fs_out {
     vec4 g_albedo;
     vec4 g_normal;
     vec4 g_position;
@@ -31,7 +31,7 @@ void main() {
     vec4 _e21 = out_g_albedo;
     vec4 _e22 = out_g_normal;
     vec4 _e23 = out_g_position;
-    gbuffer_fs_out _tmp_return = gbuffer_fs_out(_e21, _e22, _e23);
+    deferred_geometry_fs_out _tmp_return = deferred_geometry_fs_out(_e21, _e22, _e23);
     g_albedo = _tmp_return.g_albedo;
     g_normal = _tmp_return.g_normal;
     g_position = _tmp_return.g_position;

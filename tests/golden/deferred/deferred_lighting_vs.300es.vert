@@ -1,5 +1,9 @@
-#version 330 core
-struct lighting_vs_out {
+#version 300 es
+
+precision highp float;
+precision highp int;
+
+struct deferred_lighting_vs_out {
     vec4 gen_gl_Position;
     vec2 v_uv;
 };
@@ -15,7 +19,7 @@ void main() {
     gen_gl_Position = vec4(((corner * 2.0) - vec2(1.0)), 0.0, 1.0);
     vec4 _e20 = gen_gl_Position;
     vec2 _e21 = out_v_uv;
-    lighting_vs_out _tmp_return = lighting_vs_out(_e20, _e21);
+    deferred_lighting_vs_out _tmp_return = deferred_lighting_vs_out(_e20, _e21);
     gl_Position = _tmp_return.gen_gl_Position;
     v_uv = _tmp_return.v_uv;
     return;

@@ -1,5 +1,9 @@
-#version 330 core
-struct lighting_fs_out {
+#version 300 es
+
+precision highp float;
+precision highp int;
+
+struct deferred_lighting_fs_out {
     vec4 f_color;
 };
 const float POSITION_RANGE = 8.0;
@@ -8,11 +12,11 @@ uniform vec3 u_light_pos;
 
 uniform vec3 u_cam_pos;
 
-uniform sampler2D gbuf_albedo;
+uniform highp sampler2D gbuf_albedo;
 
-uniform sampler2D gbuf_normal;
+uniform highp sampler2D gbuf_normal;
 
-uniform sampler2D gbuf_position;
+uniform highp sampler2D gbuf_position;
 
 in vec2 v_uv;
 layout(location = 0) out vec4 f_color;
@@ -36,7 +40,7 @@ void main() {
     vec3 lit = ((albedo.xyz * (0.1 + diffuse)) + vec3(specular));
     out_f_color = vec4(mix(vec3(0.05, 0.06, 0.1), lit, vec3(albedo.w)), 1.0);
     vec4 _e64 = out_f_color;
-    lighting_fs_out _tmp_return = lighting_fs_out(_e64);
+    deferred_lighting_fs_out _tmp_return = deferred_lighting_fs_out(_e64);
     f_color = _tmp_return.f_color;
     return;
 }
